@@ -1,0 +1,103 @@
+# peloid — one top-level Makefile (STYLE.md 12).
+#
+#   make run     install dependencies, build, run scenes/quickstart.cfg
+#   make check   install dependencies, build, run the test suite
+#   make bench   kernel and whole-step benchmarks (bench/out/*.tsv)
+#
+# src/ + kernels/ build build/libpeloid.a, which bin/peloid, tests/ and bench/ link.
+
+CC       ?= gcc
+PYTHON   := /usr/bin/python3
+PKGS     := hdf5 gsl hwloc libconfig
+GIT_REV  := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
+OPTFLAGS ?= -O3 -march=native
+WARN     := -Wall -Wextra -Wconversion -Wshadow -Werror
+DEFS     ?=
+CFLAGS_ALL = -std=c11 $(OPTFLAGS) $(WARN) -fno-common -fopenmp -D_GNU_SOURCE \
+             -Iinclude $(shell pkg-config --cflags $(PKGS) 2>/dev/null) $(DEFS) \
+             -DPL_GIT_REV='"$(GIT_REV)"' -DPL_CFLAGS='"$(OPTFLAGS) $(DEFS)"'
+LDLIBS_ALL = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lm -fopenmp
+
+BUILD    ?= build
+LIB_SRC  := $(filter-out src/main.c,$(wildcard src/*.c)) $(wildcard kernels/*.c)
+LIB_OBJ  := $(patsubst %.c,$(BUILD)/%.o,$(LIB_SRC))
+LIB      := $(BUILD)/libpeloid.a
+BIN      := bin/peloid
+TEST_SRC := $(wildcard tests/test_*.c)
+TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
+BENCH_SRC:= $(wildcard bench/*.c)
+BENCH_BIN:= $(patsubst bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
+
+# Debian packages the build, the tests and the tools need.
+DEB_PKGS := libgsl-dev libhwloc-dev librandom123-dev libhdf5-dev libconfig-dev \
+            libcriterion-dev pkg-config hwloc python3-numpy python3-h5py \
+            python3-matplotlib python3-scipy
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+.PHONY: all deps run check check-unit check-cli check-asan bench clean keys
+all: $(BIN)
+
+# Installs only what is missing; a no-op on a machine that has everything.
+deps:
+	@missing=$$(for p in $(DEB_PKGS); do dpkg -s $$p >/dev/null 2>&1 || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+	  echo "installing Debian packages:" $$missing; \
+	  $(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $$missing >/dev/null; \
+	fi
+
+$(BUILD)/%.o: %.c | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) -MMD -MP -c $< -o $@
+
+$(LIB): $(LIB_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(BIN): $(BUILD)/src/main.o $(LIB)
+	@mkdir -p bin
+	$(CC) $(CFLAGS_ALL) -o $@ $^ $(LDLIBS_ALL)
+
+$(BUILD)/tests/%: tests/%.c $(LIB) | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) -MMD -MP -o $@ $< $(LIB) $(LDLIBS_ALL) -lcriterion -lgsl -lgslcblas
+
+$(BUILD)/bench/%: bench/%.c $(LIB) | deps
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS_ALL) -o $@ $< $(LIB) $(LDLIBS_ALL)
+
+run: $(BIN)
+	./$(BIN) run scenes/quickstart.cfg --force
+
+# The suite: Criterion unit + physics tests, then CLI behaviour, then a
+# sanitizer build of the fast unit tests.
+check: check-unit check-cli check-asan
+	@echo "make check: all suites passed"
+
+check-unit: $(TEST_BIN)
+	@set -e; for t in $(TEST_BIN); do echo "== $$t"; $$t --jobs 1 --ascii; done
+
+check-cli: $(BIN)
+	@bash tests/cli.sh ./$(BIN)
+
+# Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
+# shrinks the physics runs; the sanitizers slow code ~3-10x).
+check-asan: | deps
+	@$(MAKE) --no-print-directory BUILD=build-asan \
+	  OPTFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
+	  build-asan/tests/test_scene build-asan/tests/test_collide build-asan/tests/test_sort \
+	  build-asan/tests/test_determinism
+	@set -e; for t in test_scene test_collide test_sort test_determinism; do \
+	  echo "== asan $$t"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$$t --jobs 1 --ascii; done
+
+bench: $(BENCH_BIN)
+	@mkdir -p bench/out
+	@set -e; for b in $(BENCH_BIN); do $$b; done
+
+keys: $(BIN)
+	./$(BIN) keys
+
+clean:
+	rm -rf build build-asan bin
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -1,0 +1,150 @@
+/* The scene: one simulation described in a libconfig file, validated into
+ * plain structs in simulation units (a0 = 1, m_f = 1, kT_ref = 1).
+ *
+ * Parsing is schema driven: every key lives in a table (src/scene_keys*.c)
+ * with its type, range, default, units and meaning.  The same table validates
+ * input, fills defaults and prints the reference (`peloid keys`), so the
+ * documentation cannot drift from the code.  Unknown keys are errors. */
+#ifndef PELOID_SCENE_H
+#define PELOID_SCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "peloid/error.h"
+
+enum { PL_WALLS_NONE = 0, PL_WALLS_NOSLIP = 1, PL_WALLS_SLIP = 2 };
+enum { PL_VEL_GAUSSIAN = 0, PL_VEL_UNIFORM = 1 };
+enum { PL_RULE_RANDOM_AXIS = 0, PL_RULE_HECHT_AXES = 1 };
+enum { PL_THERMO_NONE = 0, PL_THERMO_HEYES = 1, PL_THERMO_RESCALE = 2 };
+
+typedef struct {
+    char name[128];
+    long long seed;
+    long long steps;
+} pl_scene_run_t;
+
+typedef struct {
+    int cells[3];  /* box edge lengths in cells (a0 = 1) */
+    int walls_z;   /* PL_WALLS_*: planar walls at z = 0 and z = Lz */
+} pl_scene_box_t;
+
+typedef struct {
+    double density;        /* gamma: mean particles per cell */
+    double temperature;    /* initial kT */
+    int init_velocity;     /* PL_VEL_* */
+    double body_force[3];  /* acceleration on every fluid particle */
+} pl_scene_fluid_t;
+
+typedef struct {
+    double dt;        /* collision time step Delta t_c (units of t0) */
+    int rule;         /* PL_RULE_* */
+    double alpha_deg; /* rotation angle for the random-axis rule */
+    int grid_shift;   /* random shift of the cell grid each step (bool) */
+} pl_scene_srd_t;
+
+typedef struct {
+    int type;           /* PL_THERMO_* */
+    double temperature; /* target kT* */
+    double heyes_epsilon;
+    long long interval; /* act every `interval` collision steps */
+} pl_scene_thermostat_t;
+
+typedef struct {
+    long long thermo_interval;
+    long long checkpoint_interval; /* 0: only at the end */
+    long long fields_interval;     /* 0: no fields */
+    long long fields_start;
+    int track_fluid;               /* carry ids + unwrapped displacements */
+} pl_scene_output_t;
+
+/* Where each key given in the file stood, so that cross-key checks can name
+ * the line too. */
+typedef struct {
+    size_t offset;
+    int line;
+} pl_scene_origin_t;
+
+enum { PL_SCENE_MAX_KEYS = 256 };
+
+typedef struct pl_scene {
+    char path[512];
+    pl_scene_origin_t origin[PL_SCENE_MAX_KEYS];
+    int norigin;
+    pl_scene_run_t run;
+    pl_scene_box_t box;
+    pl_scene_fluid_t fluid;
+    pl_scene_srd_t srd;
+    pl_scene_thermostat_t thermostat;
+    pl_scene_output_t output;
+} pl_scene_t;
+
+/* ---- schema ---------------------------------------------------------- */
+
+typedef enum {
+    PL_KEY_INT,    /* long long */
+    PL_KEY_INT3,   /* int[3] */
+    PL_KEY_REAL,   /* double */
+    PL_KEY_REAL3,  /* double[3] */
+    PL_KEY_BOOL,   /* int */
+    PL_KEY_STRING, /* char[128] */
+    PL_KEY_CHOICE, /* int: index into choices */
+} pl_key_type_t;
+
+enum { PL_KEY_MIN_OPEN = 1u, PL_KEY_MAX_OPEN = 2u, PL_KEY_INT32 = 4u };
+
+typedef struct {
+    const char *name;
+    pl_key_type_t type;
+    size_t offset;               /* of the value inside pl_scene_t */
+    double min, max;             /* allowed range for numbers */
+    unsigned flags;              /* PL_KEY_* */
+    const char *const *choices;  /* NULL-terminated, for PL_KEY_CHOICE */
+    double def;                  /* default for numbers/bool/choice index */
+    const char *def_str;         /* default for strings ("" = derived) */
+    const char *units;
+    const char *doc;
+} pl_key_t;
+
+typedef struct {
+    const char *name;  /* group name in the file; "" for top level */
+    const char *doc;
+    const pl_key_t *keys;
+    size_t nkeys;
+} pl_section_t;
+
+/* All sections, in documentation order; *count receives their number. */
+const pl_section_t *pl_scene_sections(size_t *count);
+
+/* ---- API --------------------------------------------------------------- */
+
+/* Fills every key with its schema default. */
+void pl_scene_defaults(pl_scene_t *scene);
+
+/* Reads and validates `path`.  On error returns PL_ERR_INPUT with a one-line
+ * message "FILE:LINE: key 'a.b': <what is wrong>; <what is allowed>". */
+int pl_scene_load(const char *path, pl_scene_t *scene, pl_err_t *err);
+
+/* Same, from a string (tests); `label` stands in for the file name. */
+int pl_scene_load_string(const char *text, const char *label, pl_scene_t *scene,
+                         pl_err_t *err);
+
+/* Cross-key checks that a single key's range cannot express. */
+int pl_scene_validate(const pl_scene_t *scene, pl_err_t *err);
+
+/* Line on which the key at `offset` (offsetof(pl_scene_t, ...)) was given,
+ * or 0 when it took its default. */
+int pl_scene_line_of(const pl_scene_t *scene, size_t offset);
+
+/* Formats a cross-key error "FILE:LINE: key 'name': what" (LINE of the key at
+ * `offset`); returns PL_ERR_INPUT. */
+int pl_scene_fail(const pl_scene_t *scene, pl_err_t *err, size_t offset, const char *key,
+                  const char *fmt, ...) __attribute__((format(printf, 5, 6)));
+
+/* Markdown reference of every key (README "Scene file reference"). */
+void pl_scene_print_reference(void *file_ptr);
+
+/* Writes the effective scene as libconfig text (echoed into outputs). */
+void pl_scene_print(const pl_scene_t *scene, void *file_ptr);
+
+#endif

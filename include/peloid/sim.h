@@ -1,0 +1,61 @@
+/* A simulation: scene + state + plan.  The plan is an ordered list of stages,
+ * each with an interval; a stage the scene does not need is not in the plan
+ * (DESIGN.md "Scene -> plan").  pl_sim_step walks the plan once per step. */
+#ifndef PELOID_SIM_H
+#define PELOID_SIM_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+#include "peloid/error.h"
+#include "peloid/fluid.h"
+#include "peloid/grid.h"
+#include "peloid/scene.h"
+#include "peloid/srd_kernels.h"
+
+typedef struct pl_sim pl_sim_t;
+typedef int (*pl_stage_fn)(pl_sim_t *sim, pl_err_t *err);
+
+typedef struct {
+    const char *name;
+    pl_stage_fn fn;
+    long long interval; /* run when step % interval == 0 */
+    double seconds;     /* wall time spent (profile in summary.json) */
+} pl_stage_t;
+
+enum { PL_MAX_STAGES = 32 };
+
+struct pl_sim {
+    pl_scene_t scene;
+    int nthreads;
+    long long step;   /* completed collision steps */
+    /* fluid */
+    pl_fluid_t fluid;
+    pl_grid_t grid;
+    uint32_t *hist;       /* nthreads x ncells */
+    uint32_t *cell_start; /* ncells + 1 */
+    double *block_sum;    /* 2 x ceil(ncells / PL_CELL_BLOCK) */
+    double last_kT_meas;  /* PL Eq. A1 temperature of the last collision */
+    /* time-averaged fields */
+    int64_t *field_acc;   /* 4 x L0 L1 L2, fixed point */
+    long long field_samples;
+    /* plan */
+    pl_stage_t stages[PL_MAX_STAGES];
+    int nstages;
+};
+
+/* Builds state (fresh initialisation) and plan from a validated scene. */
+int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_t *err);
+void pl_sim_free(pl_sim_t *sim);
+
+/* One collision step: every stage whose interval divides the step. */
+int pl_sim_step(pl_sim_t *sim, pl_err_t *err);
+
+/* Observables of the current state (fixed-order reductions). */
+void pl_sim_observe(const pl_sim_t *sim, pl_fluid_obs_t *obs, double *kT);
+
+/* Initial fluid: uniform positions, uniform or Gaussian velocities with zero
+ * total momentum and exactly the scene temperature (src/fluid_init.c). */
+void pl_fluid_init(pl_fluid_t *fluid, const pl_scene_t *scene);
+
+#endif

@@ -1,0 +1,88 @@
+/* The SRD hot kernels (kernels/srd_*.c): OpenMP loops over the fluid arrays.
+ * They see raw arrays and small parameter structs only: no scene, no I/O, no
+ * allocation (DESIGN.md "Layers"). */
+#ifndef PELOID_SRD_KERNELS_H
+#define PELOID_SRD_KERNELS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "peloid/fluid.h"
+#include "peloid/grid.h"
+
+/* ---- streaming fused with cell binning (kernels/srd_stream.c) ---------- */
+typedef struct {
+    double dt;          /* collision time step */
+    double accel[3];    /* body force per unit mass (kick before the drift) */
+    double wall_u[2][3];/* wall velocities (bottom z = 0, top z = Lz) */
+} pl_stream_params_t;
+
+/* r += v dt (after v += accel dt) with periodic wrap or wall reflection,
+ * then the particle's collision cell under grid->shift is stored in
+ * fluid->cell and counted in hist[t * ncells + c] of the thread t that owns
+ * the particle (static partition pl_chunk).  hist: nthreads x ncells. */
+void pl_srd_stream_bin(pl_fluid_t *fluid, const pl_grid_t *grid, const pl_stream_params_t *p,
+                       uint32_t *hist, int nthreads);
+
+/* Cell binning only (no motion): used after initialisation and restart. */
+void pl_srd_bin(pl_fluid_t *fluid, const pl_grid_t *grid, uint32_t *hist, int nthreads);
+
+/* ---- counting sort (kernels/srd_sort.c) ------------------------------- */
+/* Prefix sum over (cell, thread), stable scatter into the twin arrays, swap.
+ * Afterwards the particles of cell c are [cell_start[c], cell_start[c+1]).
+ * The result is the stable sort by cell: independent of nthreads. */
+void pl_srd_sort(pl_fluid_t *fluid, uint32_t *hist, uint32_t *cell_start, size_t ncells,
+                 int nthreads);
+
+/* Static partition of [0, n) among nthreads: thread t owns [lo, hi). */
+static inline void pl_chunk(size_t n, int t, int nthreads, size_t *lo, size_t *hi)
+{
+    *lo = n * (size_t)t / (size_t)nthreads;
+    *hi = n * (size_t)(t + 1) / (size_t)nthreads;
+}
+
+/* ---- collision + local thermostat (kernels/srd_collide.c) ------------- */
+typedef struct {
+    int rule;            /* PL_RULE_* */
+    double cos_a, sin_a; /* rotation angle (random_axis rule) */
+    uint64_t seed, step;
+    int heyes;           /* apply the Heyes MC thermostat this step */
+    double kT_target;    /* thermostat target kT* */
+    double heyes_eps;
+    /* walls: virtual particles fill cells cut by a no-slip wall */
+    int wall_ghosts;
+    double ghost_density; /* gamma */
+    double kT_wall;
+    double wall_u[2][3];
+} pl_collide_params_t;
+
+/* Fixed-order reductions are done over blocks of this many cells. */
+enum { PL_CELL_BLOCK = 2048 };
+
+/* Rotates relative velocities in every cell with >= 2 particles
+ * (PL Eq. 3 / Hecht Eq. 12).  For each block b of PL_CELL_BLOCK cells,
+ * block_sum[2b] receives sum m (v-u)^2 after the collision and
+ * block_sum[2b+1] the degrees of freedom 3(M-1) (PL Eqs. A1-A2). */
+void pl_srd_collide(pl_fluid_t *fluid, const pl_grid_t *grid, const uint32_t *cell_start,
+                    const pl_collide_params_t *p, double *block_sum);
+
+/* PL Appendix A: scale v - u in every cell with >= 2 particles by `factor`. */
+void pl_srd_rescale(pl_fluid_t *fluid, const uint32_t *cell_start, size_t ncells, double factor);
+
+/* ---- observables (kernels/srd_observe.c) ------------------------------ */
+typedef struct {
+    double momentum[3]; /* sum m v */
+    double kinetic;     /* sum m v^2 / 2 */
+    double msd;         /* mean |disp|^2 (tracked fluids; else 0) */
+} pl_fluid_obs_t;
+
+/* Fixed-order (blocked) reductions: bitwise independent of nthreads. */
+void pl_srd_observe(const pl_fluid_t *fluid, pl_fluid_obs_t *obs);
+
+/* Accumulates density and momentum on the unshifted cell grid in 64-bit
+ * fixed point (integer sums are order independent: deterministic for any
+ * thread count).  acc: 4 x ncells_unshifted int64 (count, px, py, pz). */
+enum { PL_FIELD_FIXED_SHIFT = 32 };
+void pl_srd_fields_accumulate(const pl_fluid_t *fluid, const int L[3], int64_t *acc);
+
+#endif

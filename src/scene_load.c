@@ -1,0 +1,310 @@
+/* Scene loading: libconfig file -> validated pl_scene_t.
+ *
+ * Every setting in the file is matched against the schema (scene_keys.c);
+ * unknown keys, wrong types and out-of-range values are refused with
+ * "FILE:LINE: key 'section.key': problem; allowed: ...". */
+#include <errno.h>
+#include <libconfig.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "peloid/scene.h"
+
+static const char *type_name(int t)
+{
+    switch (t) {
+    case CONFIG_TYPE_INT: case CONFIG_TYPE_INT64: return "integer";
+    case CONFIG_TYPE_FLOAT: return "number";
+    case CONFIG_TYPE_STRING: return "string";
+    case CONFIG_TYPE_BOOL: return "boolean";
+    case CONFIG_TYPE_ARRAY: return "array";
+    case CONFIG_TYPE_LIST: return "list";
+    case CONFIG_TYPE_GROUP: return "group";
+    default: return "unknown";
+    }
+}
+
+static const char *expected_name(pl_key_type_t t)
+{
+    switch (t) {
+    case PL_KEY_INT: return "an integer";
+    case PL_KEY_REAL: return "a number";
+    case PL_KEY_BOOL: return "true or false";
+    case PL_KEY_STRING: return "a string";
+    case PL_KEY_CHOICE: return "a string";
+    case PL_KEY_INT3: return "an array of 3 integers [a, b, c]";
+    case PL_KEY_REAL3: return "an array of 3 numbers [a, b, c]";
+    }
+    return "?";
+}
+
+typedef struct {
+    const char *label; /* file name used in messages */
+    pl_err_t *err;
+} ctx_t;
+
+static int where_fail(const ctx_t *c, const config_setting_t *s, const char *sec,
+                      const char *key, const char *what)
+{
+    const char *file = config_setting_source_file(s);
+    return pl_err_set(c->err, PL_ERR_INPUT, "%s:%u: key '%s%s%s': %s", file ? file : c->label,
+                      config_setting_source_line(s), sec, *sec ? "." : "", key, what);
+}
+
+static void range_text(const pl_key_t *k, char *buf, size_t n)
+{
+    const char *lo = (k->flags & PL_KEY_MIN_OPEN) ? ">" : ">=";
+    const char *hi = (k->flags & PL_KEY_MAX_OPEN) ? "<" : "<=";
+    snprintf(buf, n, "%s %g and %s %g", lo, k->min, hi, k->max);
+}
+
+static int in_range(const pl_key_t *k, double v)
+{
+    if (!isfinite(v)) return 0;
+    if ((k->flags & PL_KEY_MIN_OPEN) ? !(v > k->min) : !(v >= k->min)) return 0;
+    if ((k->flags & PL_KEY_MAX_OPEN) ? !(v < k->max) : !(v <= k->max)) return 0;
+    return 1;
+}
+
+static int is_number(int t) { return t == CONFIG_TYPE_INT || t == CONFIG_TYPE_INT64 || t == CONFIG_TYPE_FLOAT; }
+static int is_integer(int t) { return t == CONFIG_TYPE_INT || t == CONFIG_TYPE_INT64; }
+
+static double number_of(const config_setting_t *s)
+{
+    int t = config_setting_type(s);
+    if (t == CONFIG_TYPE_FLOAT) return config_setting_get_float(s);
+    return (double)config_setting_get_int64(s);
+}
+
+static int check_number(const ctx_t *c, const config_setting_t *s, const char *sec,
+                        const pl_key_t *k, double v)
+{
+    if (in_range(k, v)) return 0;
+    char range[128], what[256];
+    range_text(k, range, sizeof range);
+    snprintf(what, sizeof what, "value %g is out of range; allowed: %s%s%s%s", v, range,
+             *k->units && strcmp(k->units, "-") ? " (" : "", strcmp(k->units, "-") ? k->units : "",
+             *k->units && strcmp(k->units, "-") ? ")" : "");
+    return where_fail(c, s, sec, k->name, what);
+}
+
+static int apply_key(const ctx_t *c, const config_setting_t *s, const char *sec,
+                     const pl_key_t *k, pl_scene_t *scene)
+{
+    char *base = (char *)scene + k->offset;
+    int t = config_setting_type(s);
+    char what[512];
+    if (scene->norigin < PL_SCENE_MAX_KEYS) {
+        scene->origin[scene->norigin].offset = k->offset;
+        scene->origin[scene->norigin].line = (int)config_setting_source_line(s);
+        scene->norigin++;
+    }
+    int bad_type = 0;
+    switch (k->type) {
+    case PL_KEY_INT:
+        if (!is_integer(t)) { bad_type = 1; break; }
+        {
+            double v = number_of(s);
+            if (check_number(c, s, sec, k, v)) return PL_ERR_INPUT;
+            *(long long *)base = config_setting_get_int64(s);
+        }
+        return 0;
+    case PL_KEY_REAL:
+        if (!is_number(t)) { bad_type = 1; break; }
+        {
+            double v = number_of(s);
+            if (check_number(c, s, sec, k, v)) return PL_ERR_INPUT;
+            *(double *)base = v;
+        }
+        return 0;
+    case PL_KEY_BOOL:
+        if (t != CONFIG_TYPE_BOOL) { bad_type = 1; break; }
+        *(int *)base = config_setting_get_bool(s);
+        return 0;
+    case PL_KEY_STRING:
+        if (t != CONFIG_TYPE_STRING) { bad_type = 1; break; }
+        {
+            const char *v = config_setting_get_string(s);
+            if (strlen(v) >= 128 || strchr(v, '/')) {
+                return where_fail(c, s, sec, k->name, "string must be shorter than 128 characters and contain no '/'");
+            }
+            snprintf(base, 128, "%s", v);
+        }
+        return 0;
+    case PL_KEY_CHOICE:
+        if (t != CONFIG_TYPE_STRING) { bad_type = 1; break; }
+        {
+            const char *v = config_setting_get_string(s);
+            for (int i = 0; k->choices[i]; ++i)
+                if (!strcmp(v, k->choices[i])) { *(int *)base = i; return 0; }
+            size_t len = (size_t)snprintf(what, sizeof what, "unknown value \"%s\"; allowed:", v);
+            for (int i = 0; k->choices[i] && len < sizeof what; ++i)
+                len += (size_t)snprintf(what + len, sizeof what - len, " \"%s\"", k->choices[i]);
+            return where_fail(c, s, sec, k->name, what);
+        }
+    case PL_KEY_INT3:
+    case PL_KEY_REAL3:
+        if ((t != CONFIG_TYPE_ARRAY && t != CONFIG_TYPE_LIST) || config_setting_length(s) != 3) {
+            bad_type = 1;
+            break;
+        }
+        for (int i = 0; i < 3; ++i) {
+            const config_setting_t *e = config_setting_get_elem(s, (unsigned)i);
+            int et = config_setting_type(e);
+            if (k->type == PL_KEY_INT3 ? !is_integer(et) : !is_number(et)) {
+                snprintf(what, sizeof what, "element %d is a %s; expected %s", i, type_name(et),
+                         expected_name(k->type));
+                return where_fail(c, s, sec, k->name, what);
+            }
+            double v = number_of(e);
+            if (check_number(c, s, sec, k, v)) return PL_ERR_INPUT;
+            if (k->type == PL_KEY_INT3) ((int *)base)[i] = (int)v;
+            else ((double *)base)[i] = v;
+        }
+        return 0;
+    }
+    if (bad_type) {
+        snprintf(what, sizeof what, "wrong type (%s); expected %s", type_name(t), expected_name(k->type));
+        return where_fail(c, s, sec, k->name, what);
+    }
+    return 0;
+}
+
+static const pl_key_t *find_key(const pl_section_t *sec, const char *name)
+{
+    for (size_t i = 0; i < sec->nkeys; ++i)
+        if (!strcmp(sec->keys[i].name, name)) return &sec->keys[i];
+    return NULL;
+}
+
+static int unknown_key(const ctx_t *c, const config_setting_t *s, const char *sec,
+                       const pl_section_t *known)
+{
+    char what[768];
+    size_t len = (size_t)snprintf(what, sizeof what, "unknown key; allowed here:");
+    if (known) {
+        for (size_t i = 0; i < known->nkeys && len < sizeof what; ++i)
+            len += (size_t)snprintf(what + len, sizeof what - len, " %s", known->keys[i].name);
+    }
+    size_t ns;
+    const pl_section_t *all = pl_scene_sections(&ns);
+    if (!*sec) {
+        for (size_t i = 1; i < ns && len < sizeof what; ++i)
+            len += (size_t)snprintf(what + len, sizeof what - len, " %s{}", all[i].name);
+    }
+    return where_fail(c, s, sec, config_setting_name(s) ? config_setting_name(s) : "?", what);
+}
+
+static int apply_section(const ctx_t *c, const config_setting_t *group, const pl_section_t *sec,
+                         pl_scene_t *scene)
+{
+    int n = config_setting_length(group);
+    for (int i = 0; i < n; ++i) {
+        const config_setting_t *s = config_setting_get_elem(group, (unsigned)i);
+        const pl_key_t *k = find_key(sec, config_setting_name(s));
+        if (!k) return unknown_key(c, s, sec->name, sec);
+        if (apply_key(c, s, sec->name, k, scene)) return PL_ERR_INPUT;
+    }
+    return 0;
+}
+
+static int apply_root(const ctx_t *c, const config_setting_t *root, pl_scene_t *scene)
+{
+    size_t ns;
+    const pl_section_t *all = pl_scene_sections(&ns);
+    int n = config_setting_length(root);
+    for (int i = 0; i < n; ++i) {
+        const config_setting_t *s = config_setting_get_elem(root, (unsigned)i);
+        const char *name = config_setting_name(s);
+        if (config_setting_type(s) == CONFIG_TYPE_GROUP) {
+            const pl_section_t *sec = NULL;
+            for (size_t j = 1; j < ns; ++j)
+                if (!strcmp(all[j].name, name)) sec = &all[j];
+            if (!sec) return unknown_key(c, s, "", &all[0]);
+            if (apply_section(c, s, sec, scene)) return PL_ERR_INPUT;
+        } else {
+            const pl_key_t *k = find_key(&all[0], name);
+            if (!k) return unknown_key(c, s, "", &all[0]);
+            if (apply_key(c, s, "", k, scene)) return PL_ERR_INPUT;
+        }
+    }
+    return 0;
+}
+
+void pl_scene_defaults(pl_scene_t *scene)
+{
+    memset(scene, 0, sizeof *scene);
+    size_t ns;
+    const pl_section_t *all = pl_scene_sections(&ns);
+    for (size_t j = 0; j < ns; ++j) {
+        for (size_t i = 0; i < all[j].nkeys; ++i) {
+            const pl_key_t *k = &all[j].keys[i];
+            char *base = (char *)scene + k->offset;
+            switch (k->type) {
+            case PL_KEY_INT: *(long long *)base = (long long)k->def; break;
+            case PL_KEY_REAL: *(double *)base = k->def; break;
+            case PL_KEY_BOOL: case PL_KEY_CHOICE: *(int *)base = (int)k->def; break;
+            case PL_KEY_STRING: snprintf(base, 128, "%s", k->def_str ? k->def_str : ""); break;
+            case PL_KEY_INT3: for (int d = 0; d < 3; ++d) ((int *)base)[d] = (int)k->def; break;
+            case PL_KEY_REAL3: for (int d = 0; d < 3; ++d) ((double *)base)[d] = k->def; break;
+            }
+        }
+    }
+}
+
+static void default_name(pl_scene_t *scene, const char *label)
+{
+    if (scene->run.name[0]) return;
+    const char *slash = strrchr(label, '/');
+    const char *b = slash ? slash + 1 : label;
+    snprintf(scene->run.name, sizeof scene->run.name, "%s", b);
+    char *dot = strrchr(scene->run.name, '.');
+    if (dot && dot != scene->run.name) *dot = '\0';
+}
+
+static int load_common(config_t *cfg, int read_ok, const char *label, pl_scene_t *scene, pl_err_t *err)
+{
+    if (!read_ok) {
+        const char *f = config_error_file(cfg);
+        if (config_error_type(cfg) == CONFIG_ERR_FILE_IO)
+            pl_err_set(err, PL_ERR_INPUT, "%s: cannot read scene file: %s", label, strerror(errno));
+        else
+            pl_err_set(err, PL_ERR_INPUT, "%s:%d: syntax error: %s", f ? f : label,
+                       config_error_line(cfg), config_error_text(cfg));
+        return PL_ERR_INPUT;
+    }
+    pl_scene_defaults(scene);
+    snprintf(scene->path, sizeof scene->path, "%s", label);
+    ctx_t c = {label, err};
+    if (apply_root(&c, config_root_setting(cfg), scene)) return PL_ERR_INPUT;
+    default_name(scene, label);
+    return pl_scene_validate(scene, err);
+}
+
+int pl_scene_load(const char *path, pl_scene_t *scene, pl_err_t *err)
+{
+    config_t cfg;
+    config_init(&cfg);
+    errno = 0;
+    FILE *f = fopen(path, "r");
+    int rc;
+    if (!f) {
+        rc = pl_err_set(err, PL_ERR_INPUT, "%s: cannot open scene file: %s", path, strerror(errno));
+    } else {
+        fclose(f);
+        config_set_include_dir(&cfg, NULL);
+        rc = load_common(&cfg, config_read_file(&cfg, path) == CONFIG_TRUE, path, scene, err);
+    }
+    config_destroy(&cfg);
+    return rc;
+}
+
+int pl_scene_load_string(const char *text, const char *label, pl_scene_t *scene, pl_err_t *err)
+{
+    config_t cfg;
+    config_init(&cfg);
+    int rc = load_common(&cfg, config_read_string(&cfg, text) == CONFIG_TRUE, label, scene, err);
+    config_destroy(&cfg);
+    return rc;
+}

@@ -1,0 +1,102 @@
+/* Printing the scene: the Markdown key reference (README) and the effective
+ * scene as libconfig text (echoed into every run's outputs). */
+#include <stdio.h>
+#include <string.h>
+
+#include "peloid/scene.h"
+
+static void default_text(const pl_key_t *k, char *buf, size_t n)
+{
+    switch (k->type) {
+    case PL_KEY_INT: case PL_KEY_REAL: snprintf(buf, n, "%g", k->def); break;
+    case PL_KEY_BOOL: snprintf(buf, n, "%s", k->def != 0 ? "true" : "false"); break;
+    case PL_KEY_CHOICE: snprintf(buf, n, "\"%s\"", k->choices[(int)k->def]); break;
+    case PL_KEY_STRING: snprintf(buf, n, "%s", k->def_str && *k->def_str ? k->def_str : "(derived)"); break;
+    case PL_KEY_INT3: case PL_KEY_REAL3: snprintf(buf, n, "[%g, %g, %g]", k->def, k->def, k->def); break;
+    }
+}
+
+static const char *type_text(const pl_key_t *k)
+{
+    switch (k->type) {
+    case PL_KEY_INT: return "integer";
+    case PL_KEY_REAL: return "number";
+    case PL_KEY_BOOL: return "bool";
+    case PL_KEY_STRING: return "string";
+    case PL_KEY_CHOICE: return "choice";
+    case PL_KEY_INT3: return "3 integers";
+    case PL_KEY_REAL3: return "3 numbers";
+    }
+    return "?";
+}
+
+void pl_scene_print_reference(void *file_ptr)
+{
+    FILE *f = file_ptr;
+    size_t ns;
+    const pl_section_t *all = pl_scene_sections(&ns);
+    for (size_t j = 0; j < ns; ++j) {
+        const pl_section_t *sec = &all[j];
+        fprintf(f, "\n#### `%s` — %s\n\n", *sec->name ? sec->name : "(top level)", sec->doc);
+        fprintf(f, "| key | type | default | allowed | units | meaning |\n|---|---|---|---|---|---|\n");
+        for (size_t i = 0; i < sec->nkeys; ++i) {
+            const pl_key_t *k = &sec->keys[i];
+            char def[96], allowed[160];
+            default_text(k, def, sizeof def);
+            if (k->type == PL_KEY_CHOICE) {
+                size_t len = 0;
+                allowed[0] = '\0';
+                for (int c = 0; k->choices[c]; ++c)
+                    len += (size_t)snprintf(allowed + len, sizeof allowed - len, "%s`%s`", c ? ", " : "",
+                                            k->choices[c]);
+            } else if (k->type == PL_KEY_BOOL || k->type == PL_KEY_STRING) {
+                snprintf(allowed, sizeof allowed, "-");
+            } else {
+                snprintf(allowed, sizeof allowed, "%s %g, %s %g", (k->flags & PL_KEY_MIN_OPEN) ? ">" : "≥",
+                         k->min, (k->flags & PL_KEY_MAX_OPEN) ? "<" : "≤", k->max);
+            }
+            fprintf(f, "| `%s` | %s | %s | %s | %s | %s |\n", k->name, type_text(k), def, allowed,
+                    k->units, k->doc);
+        }
+    }
+}
+
+static void print_value(FILE *f, const pl_key_t *k, const pl_scene_t *scene)
+{
+    const char *base = (const char *)scene + k->offset;
+    switch (k->type) {
+    case PL_KEY_INT: fprintf(f, "%lld", *(const long long *)base); break;
+    case PL_KEY_REAL: fprintf(f, "%.17g", *(const double *)base); break;
+    case PL_KEY_BOOL: fprintf(f, "%s", *(const int *)base ? "true" : "false"); break;
+    case PL_KEY_STRING: fprintf(f, "\"%s\"", base); break;
+    case PL_KEY_CHOICE: fprintf(f, "\"%s\"", k->choices[*(const int *)base]); break;
+    case PL_KEY_INT3: {
+        const int *v = (const int *)base;
+        fprintf(f, "[%d, %d, %d]", v[0], v[1], v[2]);
+        break;
+    }
+    case PL_KEY_REAL3: {
+        const double *v = (const double *)base;
+        fprintf(f, "[%.17g, %.17g, %.17g]", v[0], v[1], v[2]);
+        break;
+    }
+    }
+}
+
+void pl_scene_print(const pl_scene_t *scene, void *file_ptr)
+{
+    FILE *f = file_ptr;
+    size_t ns;
+    const pl_section_t *all = pl_scene_sections(&ns);
+    for (size_t j = 0; j < ns; ++j) {
+        const pl_section_t *sec = &all[j];
+        const char *indent = *sec->name ? "  " : "";
+        if (*sec->name) fprintf(f, "%s: {\n", sec->name);
+        for (size_t i = 0; i < sec->nkeys; ++i) {
+            fprintf(f, "%s%s = ", indent, sec->keys[i].name);
+            print_value(f, &sec->keys[i], scene);
+            fprintf(f, ";\n");
+        }
+        if (*sec->name) fprintf(f, "};\n");
+    }
+}

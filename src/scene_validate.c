@@ -1,0 +1,54 @@
+/* Cross-key scene checks: what one key's range cannot express. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+
+#include "peloid/scene.h"
+
+int pl_scene_line_of(const pl_scene_t *scene, size_t offset)
+{
+    for (int i = scene->norigin - 1; i >= 0; --i)
+        if (scene->origin[i].offset == offset) return scene->origin[i].line;
+    return 0;
+}
+
+int pl_scene_fail(const pl_scene_t *scene, pl_err_t *err, size_t offset, const char *key,
+                  const char *fmt, ...)
+{
+    char what[768];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    int line = pl_scene_line_of(scene, offset);
+    if (line > 0)
+        return pl_err_set(err, PL_ERR_INPUT, "%s:%d: key '%s': %s", scene->path, line, key, what);
+    return pl_err_set(err, PL_ERR_INPUT, "%s: key '%s' (default): %s", scene->path, key, what);
+}
+
+#define OFF(m) offsetof(pl_scene_t, m)
+
+int pl_scene_validate(const pl_scene_t *scene, pl_err_t *err)
+{
+    const pl_scene_box_t *b = &scene->box;
+    double ncells = (double)b->cells[0] * b->cells[1] * b->cells[2];
+    if (ncells > 1.0e9)
+        return pl_scene_fail(scene, err, OFF(box.cells), "box.cells",
+                             "%g cells is more than the 1e9 supported", ncells);
+    if (b->walls_z != PL_WALLS_NONE && b->cells[2] < 2)
+        return pl_scene_fail(scene, err, OFF(box.cells), "box.cells",
+                             "Lz = %d with walls_z; allowed: Lz >= 2", b->cells[2]);
+    double np = ncells * scene->fluid.density;
+    if (np > 4.0e9)
+        return pl_scene_fail(scene, err, OFF(fluid.density), "fluid.density",
+                             "%.3g fluid particles (density x cells); allowed: < 4e9", np);
+    if (np < 2.0)
+        return pl_scene_fail(scene, err, OFF(fluid.density), "fluid.density",
+                             "%.3g fluid particles in the box; allowed: at least 2", np);
+    if (scene->output.fields_interval > 0 && scene->output.fields_start >= scene->run.steps &&
+        scene->run.steps > 0)
+        return pl_scene_fail(scene, err, OFF(output.fields_start), "output.fields_start",
+                             "%lld is not before the last step %lld; no field sample would be taken",
+                             scene->output.fields_start, scene->run.steps);
+    return 0;
+}
