@@ -34,8 +34,8 @@ static const pl_key_t box_keys[] = {
 };
 
 static const pl_key_t fluid_keys[] = {
-    {"density", PL_KEY_REAL, OFF(fluid.density), 0, 1e4, PL_KEY_MIN_OPEN, NULL, 5, NULL,
-     "particles / a0^3", "gamma: mean number of fluid particles per cell"},
+    {"density", PL_KEY_REAL, OFF(fluid.density), 0, 1e4, 0, NULL, 5, NULL,
+     "particles / a0^3", "gamma: mean number of fluid particles per cell (0: no fluid, colloids only)"},
     {"temperature", PL_KEY_REAL, OFF(fluid.temperature), 0, 1e6, PL_KEY_MIN_OPEN, NULL, 1, NULL,
      "kT_ref", "initial temperature kT (set exactly at start)"},
     {"init_velocity", PL_KEY_CHOICE, OFF(fluid.init_velocity), 0, 0, 0, vel_choices, PL_VEL_GAUSSIAN,
@@ -81,16 +81,22 @@ static const pl_key_t output_keys[] = {
      "-", "carry particle ids and unwrapped displacements (fluid MSD in thermo.tsv); costs bandwidth"},
 };
 
-static const pl_section_t sections[] = {
-    {"", "top level", run_keys, N(run_keys)},
-    {"box", "simulation box", box_keys, N(box_keys)},
-    {"fluid", "SRD fluid particles", fluid_keys, N(fluid_keys)},
-    {"srd", "SRD collision step", srd_keys, N(srd_keys)},
-    {"thermostat", "fluid thermostat", thermostat_keys, N(thermostat_keys)},
-    {"output", "what a run writes", output_keys, N(output_keys)},
+const pl_section_t pl_scene_section_run = {"", "top level", run_keys, N(run_keys)};
+const pl_section_t pl_scene_section_box = {"box", "simulation box", box_keys, N(box_keys)};
+const pl_section_t pl_scene_section_fluid = {"fluid", "SRD fluid particles", fluid_keys, N(fluid_keys)};
+const pl_section_t pl_scene_section_srd = {"srd", "SRD collision step", srd_keys, N(srd_keys)};
+const pl_section_t pl_scene_section_thermostat = {"thermostat", "fluid thermostat", thermostat_keys,
+                                                  N(thermostat_keys)};
+const pl_section_t pl_scene_section_output = {"output", "what a run writes", output_keys, N(output_keys)};
+
+/* Every section, in documentation order.  A module adds its own section
+ * (defined in its own src/scene_keys_<module>.c, declared in scene.h) here. */
+static const pl_section_t *const sections[] = {
+    &pl_scene_section_run,   &pl_scene_section_box,        &pl_scene_section_fluid,
+    &pl_scene_section_srd,   &pl_scene_section_thermostat, &pl_scene_section_output,
 };
 
-const pl_section_t *pl_scene_sections(size_t *count)
+const pl_section_t *const *pl_scene_sections(size_t *count)
 {
     *count = N(sections);
     return sections;

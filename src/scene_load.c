@@ -188,10 +188,10 @@ static int unknown_key(const ctx_t *c, const config_setting_t *s, const char *se
             len += (size_t)snprintf(what + len, sizeof what - len, " %s", known->keys[i].name);
     }
     size_t ns;
-    const pl_section_t *all = pl_scene_sections(&ns);
+    const pl_section_t *const *all = pl_scene_sections(&ns);
     if (!*sec) {
         for (size_t i = 1; i < ns && len < sizeof what; ++i)
-            len += (size_t)snprintf(what + len, sizeof what - len, " %s{}", all[i].name);
+            len += (size_t)snprintf(what + len, sizeof what - len, " %s{}", all[i]->name);
     }
     return where_fail(c, s, sec, config_setting_name(s) ? config_setting_name(s) : "?", what);
 }
@@ -212,7 +212,7 @@ static int apply_section(const ctx_t *c, const config_setting_t *group, const pl
 static int apply_root(const ctx_t *c, const config_setting_t *root, pl_scene_t *scene)
 {
     size_t ns;
-    const pl_section_t *all = pl_scene_sections(&ns);
+    const pl_section_t *const *all = pl_scene_sections(&ns);
     int n = config_setting_length(root);
     for (int i = 0; i < n; ++i) {
         const config_setting_t *s = config_setting_get_elem(root, (unsigned)i);
@@ -220,12 +220,12 @@ static int apply_root(const ctx_t *c, const config_setting_t *root, pl_scene_t *
         if (config_setting_type(s) == CONFIG_TYPE_GROUP) {
             const pl_section_t *sec = NULL;
             for (size_t j = 1; j < ns; ++j)
-                if (!strcmp(all[j].name, name)) sec = &all[j];
-            if (!sec) return unknown_key(c, s, "", &all[0]);
+                if (!strcmp(all[j]->name, name)) sec = all[j];
+            if (!sec) return unknown_key(c, s, "", all[0]);
             if (apply_section(c, s, sec, scene)) return PL_ERR_INPUT;
         } else {
-            const pl_key_t *k = find_key(&all[0], name);
-            if (!k) return unknown_key(c, s, "", &all[0]);
+            const pl_key_t *k = find_key(all[0], name);
+            if (!k) return unknown_key(c, s, "", all[0]);
             if (apply_key(c, s, "", k, scene)) return PL_ERR_INPUT;
         }
     }
@@ -236,10 +236,10 @@ void pl_scene_defaults(pl_scene_t *scene)
 {
     memset(scene, 0, sizeof *scene);
     size_t ns;
-    const pl_section_t *all = pl_scene_sections(&ns);
+    const pl_section_t *const *all = pl_scene_sections(&ns);
     for (size_t j = 0; j < ns; ++j) {
-        for (size_t i = 0; i < all[j].nkeys; ++i) {
-            const pl_key_t *k = &all[j].keys[i];
+        for (size_t i = 0; i < all[j]->nkeys; ++i) {
+            const pl_key_t *k = &all[j]->keys[i];
             char *base = (char *)scene + k->offset;
             switch (k->type) {
             case PL_KEY_INT: *(long long *)base = (long long)k->def; break;

@@ -34,9 +34,9 @@ void pl_scene_print_reference(void *file_ptr)
 {
     FILE *f = file_ptr;
     size_t ns;
-    const pl_section_t *all = pl_scene_sections(&ns);
+    const pl_section_t *const *all = pl_scene_sections(&ns);
     for (size_t j = 0; j < ns; ++j) {
-        const pl_section_t *sec = &all[j];
+        const pl_section_t *sec = all[j];
         fprintf(f, "\n#### `%s` — %s\n\n", *sec->name ? sec->name : "(top level)", sec->doc);
         fprintf(f, "| key | type | default | allowed | units | meaning |\n|---|---|---|---|---|---|\n");
         for (size_t i = 0; i < sec->nkeys; ++i) {
@@ -87,9 +87,9 @@ void pl_scene_print(const pl_scene_t *scene, void *file_ptr)
 {
     FILE *f = file_ptr;
     size_t ns;
-    const pl_section_t *all = pl_scene_sections(&ns);
+    const pl_section_t *const *all = pl_scene_sections(&ns);
     for (size_t j = 0; j < ns; ++j) {
-        const pl_section_t *sec = &all[j];
+        const pl_section_t *sec = all[j];
         const char *indent = *sec->name ? "  " : "";
         if (*sec->name) fprintf(f, "%s: {\n", sec->name);
         for (size_t i = 0; i < sec->nkeys; ++i) {

@@ -42,7 +42,7 @@ int pl_scene_validate(const pl_scene_t *scene, pl_err_t *err)
     if (np > 4.0e9)
         return pl_scene_fail(scene, err, OFF(fluid.density), "fluid.density",
                              "%.3g fluid particles (density x cells); allowed: < 4e9", np);
-    if (np < 2.0)
+    if (scene->fluid.density > 0 && np < 2.0)
         return pl_scene_fail(scene, err, OFF(fluid.density), "fluid.density",
                              "%.3g fluid particles in the box; allowed: at least 2", np);
     if (scene->output.fields_interval > 0 && scene->output.fields_start >= scene->run.steps &&

@@ -114,7 +114,10 @@ typedef struct {
 } pl_section_t;
 
 /* All sections, in documentation order; *count receives their number. */
-const pl_section_t *pl_scene_sections(size_t *count);
+const pl_section_t *const *pl_scene_sections(size_t *count);
+
+extern const pl_section_t pl_scene_section_run, pl_scene_section_box, pl_scene_section_fluid,
+    pl_scene_section_srd, pl_scene_section_thermostat, pl_scene_section_output;
 
 /* ---- API --------------------------------------------------------------- */
 
