@@ -293,7 +293,6 @@ int pl_scene_load(const char *path, pl_scene_t *scene, pl_err_t *err)
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: cannot open scene file: %s", path, strerror(errno));
     } else {
         fclose(f);
-        config_set_include_dir(&cfg, NULL);
         rc = load_common(&cfg, config_read_file(&cfg, path) == CONFIG_TRUE, path, scene, err);
     }
     config_destroy(&cfg);

@@ -100,3 +100,37 @@ void pl_scene_print(const pl_scene_t *scene, void *file_ptr)
         if (*sec->name) fprintf(f, "};\n");
     }
 }
+
+static void json_value(FILE *f, const pl_key_t *k, const pl_scene_t *scene)
+{
+    const char *base = (const char *)scene + k->offset;
+    switch (k->type) {
+    case PL_KEY_BOOL: fprintf(f, "%s", *(const int *)base ? "true" : "false"); break;
+    default: print_value(f, k, scene); break;
+    }
+}
+
+void pl_scene_print_json(const pl_scene_t *scene, void *file_ptr, const char *indent)
+{
+    FILE *f = file_ptr;
+    size_t ns;
+    const pl_section_t *const *all = pl_scene_sections(&ns);
+    const char *sep = "\n";
+    fprintf(f, "{");
+    for (size_t j = 0; j < ns; ++j) {
+        const pl_section_t *sec = all[j];
+        const char *inner = *sec->name ? "    " : "  ";
+        if (*sec->name) {
+            fprintf(f, "%s%s  \"%s\": {", sep, indent, sec->name);
+            sep = "\n";
+        }
+        for (size_t i = 0; i < sec->nkeys; ++i) {
+            fprintf(f, "%s%s%s\"%s\": ", sep, indent, inner, sec->keys[i].name);
+            json_value(f, &sec->keys[i], scene);
+            sep = ",\n";
+        }
+        if (*sec->name) fprintf(f, "\n%s  }", indent);
+        sep = ",\n";
+    }
+    fprintf(f, "\n%s}", indent);
+}
