@@ -189,9 +189,72 @@ int pl_mapping_nwarnings(const pl_mapping_t *m);
 /* Debye-Hueckel: kappa = sqrt(2 N_A e^2 I / (eps_r eps0 kT)), I in mol/m^3. */
 double pl_mapping_debye_kappa(double ionic_strength_molar, double eps_r, double kT);
 
+/* ---- scene front end (sections physical{} and coarse_graining{}) ------- */
+typedef struct {
+    double radius;            /* m */
+    double particle_density;  /* kg/m^3 */
+    double solvent_density;   /* kg/m^3 */
+    double temperature;       /* K */
+    double viscosity;         /* kinematic, m^2/s */
+    double gravity;           /* m/s^2, along -z */
+    double hamaker;           /* J */
+    double surface_potential; /* V */
+    double kappa;             /* 1/m (0: from ionic_strength) */
+    double ionic_strength;    /* mol/L */
+    long long valence;        /* z of the (symmetric) electrolyte */
+    double permittivity;      /* relative, eps_r */
+    double primary_minimum;   /* l, m */
+    double volume_fraction;
+    double box[3];            /* m; 0: box.cells as given */
+    double flow_velocity;     /* m/s */
+    double sound_speed;       /* m/s */
+    double mean_free_path;    /* m */
+    double self_diffusion;    /* m^2/s */
+} pl_scene_physical_t;
+
+typedef struct {
+    int coupling;             /* PL_COUPLING_* */
+    int time_match;           /* PL_MATCH_* */
+    int boundary;             /* PL_BOUNDARY_* */
+    int enskog, fluid_gravity, strict;
+    double cell_size;         /* a0/R; 0: coupling default */
+    double particles_per_cell;
+    double mean_free_path;    /* lambda/a0 */
+    double srd_dt, md_dt;     /* s; 0: derived */
+    double md_resolution;
+} pl_scene_cg_t;
+
+/* Colloid parameters in simulation units, for the colloid module. */
+typedef struct {
+    double radius, mass, gravity;  /* a0, m_f, a0/t0^2 */
+    double hamaker;                /* kT (A_H / kT_real, Hecht Sec. VII.B) */
+    double coulomb;                /* kT/a0: prefactor of Hecht Eq. 1 */
+    double kappa;                  /* 1/a0 */
+    double primary_minimum;        /* a0 */
+    double md_dt;                  /* t0 */
+    long long md_substeps;
+    long long n_colloids;          /* from volume_fraction and the box */
+} pl_mapping_colloid_t;
+
+typedef struct {
+    int enabled;                   /* the scene has a physical{} section */
+    pl_scene_physical_t physical;
+    pl_scene_cg_t cg;
+    double kappa;                  /* 1/m, given or Debye-Hueckel */
+    pl_mapping_t map;              /* filled by pl_mapping_scene_apply */
+    pl_mapping_colloid_t colloid;
+} pl_scene_mapping_t;
+
+/* Runs the mapping for a scene with a physical{} section and writes the
+ * derived values into srd.dt, fluid.density, fluid.temperature and
+ * box.cells (refusing those keys if the file also sets them).  A no-op
+ * without the section.  Called by pl_scene_validate. */
+int pl_mapping_scene_apply(struct pl_scene *scene, pl_err_t *err);
+
 /* ---- reports ----------------------------------------------------------- */
-void pl_mapping_print_text(const pl_mapping_t *m, FILE *out);
-void pl_mapping_print_json(const pl_mapping_t *m, FILE *out);
+/* Readable report / one JSON object; `colloid` may be NULL. */
+void pl_mapping_print_text(const pl_mapping_t *m, const pl_mapping_colloid_t *colloid, FILE *out);
+void pl_mapping_print_json(const pl_mapping_t *m, const pl_mapping_colloid_t *colloid, FILE *out);
 
 /* For `peloid params SCENE` and summary.json: when the scene has a
  * physical{} section, writes the mapping report (text or JSON) to `out`;
