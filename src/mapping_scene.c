@@ -22,10 +22,12 @@ static int section_given(const pl_scene_t *s, const pl_section_t *sec)
     return 0;
 }
 
-/* Keys the mapping derives must not be set in the file as well. */
-static int forbid(const pl_scene_t *s, pl_err_t *err, size_t off, const char *key, double derived)
+/* Keys the mapping derives must not be set in the file as well - unless
+ * with the derived value itself (an echoed effective scene reloads). */
+static int forbid(const pl_scene_t *s, pl_err_t *err, size_t off, const char *key, double derived,
+                  double given)
 {
-    if (pl_scene_line_of(s, off) <= 0) return 0;
+    if (pl_scene_line_of(s, off) <= 0 || fabs(given - derived) <= 1e-12 * fabs(derived)) return 0;
     return pl_scene_fail(s, err, off, key,
                          "is derived from physical{} by the unit mapping (value %g); remove it here "
                          "or remove the physical section",
@@ -105,9 +107,9 @@ static int apply_box(pl_scene_t *s, pl_err_t *err)
     double a0 = s->mapping.map.a0;
     int given = p->box[0] > 0 || p->box[1] > 0 || p->box[2] > 0;
     if (given) {
-        if (forbid(s, err, OFF(box.cells), "box.cells", ceil(p->box[0] / a0))) return PL_ERR_INPUT;
         for (int d = 0; d < 3; ++d) {
             double n = ceil(p->box[d] / a0 - 1e-9);
+            if (forbid(s, err, OFF(box.cells), "box.cells", n, s->box.cells[d])) return PL_ERR_INPUT;
             if (!(p->box[d] > 0) || n > 4096)
                 return pl_scene_fail(s, err, OFF(mapping.physical.box), "physical.box",
                                      "edge %d = %g m gives %g cells of a0 = %g m; allowed: 1..4096 cells", d,
@@ -145,9 +147,9 @@ int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
         return pl_scene_fail(s, err, off, "physical", "%s", e.msg);
     }
     const pl_mapping_t *m = &mp->map;
-    if (forbid(s, err, OFF(srd.dt), "srd.dt", cg.lambda) ||
-        forbid(s, err, OFF(fluid.density), "fluid.density", cg.gamma) ||
-        forbid(s, err, OFF(fluid.temperature), "fluid.temperature", 1.0))
+    if (forbid(s, err, OFF(srd.dt), "srd.dt", cg.lambda, s->srd.dt) ||
+        forbid(s, err, OFF(fluid.density), "fluid.density", cg.gamma, s->fluid.density) ||
+        forbid(s, err, OFF(fluid.temperature), "fluid.temperature", 1.0, s->fluid.temperature))
         return PL_ERR_INPUT;
     s->srd.dt = cg.lambda;              /* PL Eq. 4: dt = lambda t0 */
     s->fluid.density = cg.gamma;

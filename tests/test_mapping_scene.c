@@ -69,7 +69,7 @@ Test(mapping_scene, derived_key_set_twice_is_refused)
     cr_expect_eq(load("dt = 0.1;", "", ""), PL_ERR_INPUT);
     cr_expect(strstr(err.msg, "test.cfg:1: key 'srd.dt'") && strstr(err.msg, "derived from physical"), "%s",
               err.msg);
-    cr_expect_eq(pl_scene_load_string("fluid: { density = 5.0; };\nphysical: { radius = 1e-6; };", "t.cfg",
+    cr_expect_eq(pl_scene_load_string("fluid: { density = 4.0; };\nphysical: { radius = 1e-6; };", "t.cfg",
                                       scene, &err),
                  PL_ERR_INPUT);
     cr_expect(strstr(err.msg, "t.cfg:1: key 'fluid.density'"), "%s", err.msg);
@@ -151,4 +151,21 @@ Test(mapping_scene, coarse_graining_alone_is_an_error)
     cr_expect_eq(pl_scene_load_string("coarse_graining: { particles_per_cell = 5.0; };", "t.cfg", scene, &err),
                  PL_ERR_INPUT);
     cr_expect(strstr(err.msg, "physical"), "%s", err.msg);
+}
+
+Test(mapping_scene, echoed_scene_loads_back)
+{
+    cr_assert_eq(load("", "box = [6.4e-6, 6.4e-6, 12.8e-6];", ""), 0, "%s", err.msg);
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    pl_scene_print(scene, f);
+    fclose(f);
+    pl_scene_t *again = malloc(sizeof *again);
+    cr_assert_eq(pl_scene_load_string(buf, "echo.cfg", again, &err), 0, "%s", err.msg);
+    cr_expect_float_eq(again->srd.dt, scene->srd.dt, 0);
+    cr_expect_eq(again->box.cells[2], 64);
+    cr_expect_float_eq(again->mapping.map.dt, scene->mapping.map.dt, 1e-18);
+    free(again);
+    free(buf);
 }
