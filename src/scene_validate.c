@@ -28,8 +28,9 @@ int pl_scene_fail(const pl_scene_t *scene, pl_err_t *err, size_t offset, const c
 
 #define OFF(m) offsetof(pl_scene_t, m)
 
-int pl_scene_validate(const pl_scene_t *scene, pl_err_t *err)
+int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
 {
+    if (pl_mapping_scene_apply(scene, err)) return PL_ERR_INPUT; /* physical{} -> srd, fluid, box */
     const pl_scene_box_t *b = &scene->box;
     double ncells = (double)b->cells[0] * b->cells[1] * b->cells[2];
     if (ncells > 1.0e9)
