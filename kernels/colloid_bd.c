@@ -33,7 +33,7 @@ void pl_colloid_bd_step(const pl_colloid_bd_params_t *p, size_t n, const double 
                         double *restrict q2, double *restrict q3)
 {
     const double dt = p->dt;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i) {
         double R = rad[i];
         double zt = 6.0 * M_PI * p->eta * R, zr = 8.0 * M_PI * p->eta * R * R * R;

@@ -129,7 +129,7 @@ static inline __attribute__((always_inline)) void pair_loop(const pl_colloid_pai
     double iL[3] = {1.0 / L[0], 1.0 / L[1], 1.0 / L[2]};
     /* static schedule: equal blocks of particles; the cost per particle is
      * nearly uniform at the densities of interest */
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (v->n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < v->n; ++i) {
         acc_t a = {{0}, {0}, {0}, 0.0, 0.0, 0.0, -1, -1, -1};
         int32_t ci = c->cell[i];

@@ -7,6 +7,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* Below this many colloids the kernels run serially: a parallel region costs
+ * more than the work (results are identical either way). */
+#define PL_COLLOID_OMP_MIN 256
+
 /* Pair terms a scene switches on (bit mask). */
 enum {
     PL_CT_DLVO = 1u,
