@@ -1,2 +1,139 @@
-/* peloid command-line driver (placeholder while the core is written). */
-int main(void) { return 0; }
+/* peloid command-line driver: parse arguments, load the scene, dispatch.
+ * Exit codes: 0 ok, 2 bad input (nothing written), 3 stability guard,
+ * 4 I/O failure, 5 out of memory. */
+#include <gsl/gsl_errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "peloid/run.h"
+#include "peloid/scene.h"
+
+static const char *const usage =
+    "usage: peloid COMMAND [ARGS]\n"
+    "\n"
+    "commands:\n"
+    "  run SCENE [--out DIR] [--steps N] [--threads N] [--restart CHECKPOINT] [--force]\n"
+    "        run a scene; writes DIR/{thermo.tsv, summary.json, checkpoint.h5, scene.cfg\n"
+    "        [, fields.h5]}.  DIR defaults to out/<scene name>; an existing DIR is\n"
+    "        refused unless --force.  --steps N runs N steps (default: the scene's\n"
+    "        steps); --restart continues from a checkpoint of the same scene.\n"
+    "        --threads N sets the OpenMP thread count (results do not depend on it).\n"
+    "  check SCENE      validate a scene without running it\n"
+    "  params SCENE [--json]\n"
+    "        print the derived SRD parameters: lambda, nu_kin, nu_col, nu, eta, D_f,\n"
+    "        Sc, tau_f (Padding & Louis 2006, Eqs. 4, 6, 9-15)\n"
+    "  keys             print the scene-file reference (every key) as Markdown\n"
+    "  --help           this text\n"
+    "\n"
+    "exit codes: 0 ok, 2 bad input (nothing written), 3 stability guard tripped,\n"
+    "            4 I/O error, 5 out of memory\n";
+
+static int fail(const pl_err_t *err)
+{
+    fprintf(stderr, "peloid: error: %s\n", err->msg);
+    return err->code ? err->code : 1;
+}
+
+static int bad_usage(const char *what)
+{
+    fprintf(stderr, "peloid: error: %s\n(see peloid --help)\n", what);
+    return PL_ERR_INPUT;
+}
+
+static int parse_ll(const char *s, long long lo, long long *out)
+{
+    char *end;
+    long long v = strtoll(s, &end, 10);
+    if (*s == '\0' || *end != '\0' || v < lo) return -1;
+    *out = v;
+    return 0;
+}
+
+static int cmd_run(int argc, char **argv)
+{
+    pl_run_opts_t o = {NULL, -1, 0, NULL, 0, isatty(2)};
+    const char *scene_path = NULL;
+    char msg[256];
+    for (int i = 0; i < argc; ++i) {
+        const char *a = argv[i];
+        int has = i + 1 < argc;
+        long long v;
+        if (!strcmp(a, "--force")) o.force = 1;
+        else if (!strcmp(a, "--out") && has) o.out_dir = argv[++i];
+        else if (!strcmp(a, "--restart") && has) o.restart = argv[++i];
+        else if (!strcmp(a, "--steps") && has) {
+            if (parse_ll(argv[++i], 0, &o.steps)) {
+                snprintf(msg, sizeof msg, "--steps %s: expected an integer >= 0", argv[i]);
+                return bad_usage(msg);
+            }
+        } else if (!strcmp(a, "--threads") && has) {
+            if (parse_ll(argv[++i], 1, &v) || v > 4096) {
+                snprintf(msg, sizeof msg, "--threads %s: expected an integer in 1..4096", argv[i]);
+                return bad_usage(msg);
+            }
+            o.threads = (int)v;
+        } else if (a[0] == '-') {
+            snprintf(msg, sizeof msg, "run: unknown or incomplete option '%s'", a);
+            return bad_usage(msg);
+        } else if (!scene_path) scene_path = a;
+        else {
+            snprintf(msg, sizeof msg, "run: unexpected argument '%s'", a);
+            return bad_usage(msg);
+        }
+    }
+    if (!scene_path) return bad_usage("run: missing SCENE");
+    pl_scene_t *scene = malloc(sizeof *scene);
+    pl_err_t err = {0, ""};
+    int rc = scene ? pl_scene_load(scene_path, scene, &err) : PL_ERR_NOMEM;
+    if (!rc) rc = pl_run(scene, &o, &err);
+    free(scene);
+    return rc ? fail(&err) : 0;
+}
+
+static int cmd_scene(int argc, char **argv, int params)
+{
+    const char *path = NULL;
+    int json = 0;
+    for (int i = 0; i < argc; ++i) {
+        if (params && !strcmp(argv[i], "--json")) json = 1;
+        else if (argv[i][0] != '-' && !path) path = argv[i];
+        else {
+            char msg[256];
+            snprintf(msg, sizeof msg, "%s: unexpected argument '%s'", params ? "params" : "check", argv[i]);
+            return bad_usage(msg);
+        }
+    }
+    if (!path) return bad_usage("missing SCENE");
+    pl_scene_t *scene = malloc(sizeof *scene);
+    pl_err_t err = {0, ""};
+    if (!scene) return PL_ERR_NOMEM;
+    int rc = pl_scene_load(path, scene, &err);
+    if (!rc) {
+        if (params) pl_params_print(scene, stdout, json);
+        else printf("%s: ok\n", path);
+    }
+    free(scene);
+    return rc ? fail(&err) : 0;
+}
+
+int main(int argc, char **argv)
+{
+    gsl_set_error_handler_off();
+    if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+        fputs(usage, argc < 2 ? stderr : stdout);
+        return argc < 2 ? PL_ERR_INPUT : 0;
+    }
+    const char *cmd = argv[1];
+    if (!strcmp(cmd, "run")) return cmd_run(argc - 2, argv + 2);
+    if (!strcmp(cmd, "check")) return cmd_scene(argc - 2, argv + 2, 0);
+    if (!strcmp(cmd, "params")) return cmd_scene(argc - 2, argv + 2, 1);
+    if (!strcmp(cmd, "keys")) {
+        pl_scene_print_reference(stdout);
+        return 0;
+    }
+    char msg[256];
+    snprintf(msg, sizeof msg, "unknown command '%s'", cmd);
+    return bad_usage(msg);
+}

@@ -157,4 +157,7 @@ void pl_scene_print_reference(void *file_ptr);
 /* Writes the effective scene as libconfig text (echoed into outputs). */
 void pl_scene_print(const pl_scene_t *scene, void *file_ptr);
 
+/* Writes the effective scene as a JSON object (summary.json). */
+void pl_scene_print_json(const pl_scene_t *scene, void *file_ptr, const char *indent);
+
 #endif

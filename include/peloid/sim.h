@@ -35,7 +35,9 @@ struct pl_sim {
     uint32_t *hist;       /* nthreads x ncells */
     uint32_t *cell_start; /* ncells + 1 */
     double *block_sum;    /* 2 x ceil(ncells / PL_CELL_BLOCK) */
+    double *obs_scratch;  /* pl_srd_observe_scratch(n) */
     double last_kT_meas;  /* PL Eq. A1 temperature of the last collision */
+    double wall_u[2][3];  /* wall velocities (bottom, top) */
     /* time-averaged fields */
     int64_t *field_acc;   /* 4 x L0 L1 L2, fixed point */
     long long field_samples;

@@ -76,8 +76,10 @@ typedef struct {
     double msd;         /* mean |disp|^2 (tracked fluids; else 0) */
 } pl_fluid_obs_t;
 
-/* Fixed-order (blocked) reductions: bitwise independent of nthreads. */
-void pl_srd_observe(const pl_fluid_t *fluid, pl_fluid_obs_t *obs);
+/* Fixed-order (blocked) reductions: bitwise independent of nthreads.
+ * scratch: pl_srd_observe_scratch(n) doubles. */
+size_t pl_srd_observe_scratch(size_t n);
+void pl_srd_observe(const pl_fluid_t *fluid, double *scratch, pl_fluid_obs_t *obs);
 
 /* Accumulates density and momentum on the unshifted cell grid in 64-bit
  * fixed point (integer sums are order independent: deterministic for any

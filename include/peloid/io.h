@@ -1,0 +1,35 @@
+/* Output files: directory handling, atomic writes, checkpoints, fields,
+ * thermo log, summary.  All writers go through a temporary name and rename()
+ * so a crash never leaves a half-written file under the final name. */
+#ifndef PELOID_IO_H
+#define PELOID_IO_H
+
+#include <stdio.h>
+
+#include "peloid/error.h"
+#include "peloid/sim.h"
+
+/* Creates `dir` (and parents).  If it exists and !force: PL_ERR_INPUT and
+ * nothing is created or touched. */
+int pl_outdir_prepare(const char *dir, int force, pl_err_t *err);
+
+/* "<dir>/<name>" into buf. */
+void pl_path_join(char *buf, size_t n, const char *dir, const char *name);
+
+/* Atomic text file: open "<path>.tmp", then pl_file_commit renames it. */
+FILE *pl_file_begin(const char *path, char *tmp, size_t ntmp, pl_err_t *err);
+int pl_file_commit(FILE *f, const char *tmp, const char *path, pl_err_t *err);
+
+/* HDF5 checkpoint of the complete dynamic state (src/checkpoint.c). */
+int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err);
+/* Loads a checkpoint into a sim created from the same scene: the scene's
+ * seed, box and particle count must match. */
+int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err);
+
+/* Time-averaged fields in H5MD layout (src/fields_io.c). */
+int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err);
+
+/* hwloc topology summary, e.g. "1 package, 2 cores, 2 PUs, 1 NUMA node". */
+void pl_topology_summary(char *buf, size_t n);
+
+#endif

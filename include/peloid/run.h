@@ -1,0 +1,25 @@
+/* `peloid run`: the run loop with its writers (thermo log, checkpoints,
+ * fields, summary, progress line). */
+#ifndef PELOID_RUN_H
+#define PELOID_RUN_H
+
+#include <stdio.h>
+
+#include "peloid/error.h"
+#include "peloid/scene.h"
+
+typedef struct {
+    const char *out_dir;     /* NULL: out/<scene name> */
+    long long steps;         /* < 0: the scene's run.steps */
+    int threads;             /* <= 0: OpenMP default */
+    const char *restart;     /* checkpoint to continue from, or NULL */
+    int force;               /* write into an existing output directory */
+    int progress;            /* progress line on stderr */
+} pl_run_opts_t;
+
+int pl_run(const pl_scene_t *scene, const pl_run_opts_t *opts, pl_err_t *err);
+
+/* `peloid params`: derived SRD parameters (PL Eqs. 4, 6, 9-15). */
+void pl_params_print(const pl_scene_t *scene, FILE *out, int json);
+
+#endif

@@ -1,0 +1,175 @@
+/* SRD collision step with the optional Heyes Monte Carlo cell thermostat.
+ *
+ * For every cell c (particles contiguous after the counting sort):
+ *   u = mean velocity of the cell, v_i -> u + zeta R (v_i - u)
+ * PL Eq. 3 / Hecht Eq. 12.  R: rotation by alpha about a random axis (PL
+ * Eq. 3, axis uniform on the sphere, Rodrigues' formula) or +-90 degrees
+ * about one of the three coordinate axes, each of the 6 with probability 1/6
+ * (Hecht Sec. III).  Cells with one particle are left as they are.
+ *
+ * Heyes thermostat (Hecht Sec. VIII.B, Eq. 33): eps uniform in [0, eps_max],
+ * zeta = 1+eps or 1/(1+eps) with probability 1/2 each (a proposal symmetric
+ * in ln zeta), accepted with probability
+ *   min(1, zeta^{3(M-1)} exp(-(zeta^2 - 1) K / kT*)),  K = sum m (v-u)^2 / 2.
+ * With Hecht's local temperature T = m sum (v-u)^2 / (2 (M-1) k_B) this is
+ * exactly Eq. 33: (M-1)(zeta^2-1) T/T* = (zeta^2-1) K/kT*.  Only v - u is
+ * scaled, so the cell momentum is unchanged.
+ *
+ * No-slip walls: cells cut by a wall get virtual particles up to the mean
+ * density (Lamura et al. 2001): their summed momentum is drawn from the
+ * Maxwell-Boltzmann distribution of n_ghost particles moving with the wall.
+ *
+ * Random numbers: Philox keyed (seed, purpose), counter (step, cell): the
+ * result does not depend on which thread handles a cell. */
+#include <math.h>
+
+#include "peloid/rng.h"
+#include "peloid/scene.h"
+#include "peloid/srd_kernels.h"
+
+static void rotation_matrix(const pl_collide_params_t *p, uint64_t cell, double R[3][3])
+{
+    pl_rand4_t r = pl_rng_uniform4(p->seed, PL_RNG_COLLIDE, p->step, cell, 0);
+    if (p->rule == PL_RULE_HECHT_AXES) {
+        int k = (int)(r.u[0] * 6.0); /* 0..5: axis k/2, sign by parity */
+        if (k > 5) k = 5;
+        int a = k >> 1;
+        double s = (k & 1) ? -1.0 : 1.0;
+        int b = (a + 1) % 3, c = (a + 2) % 3;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) R[i][j] = 0.0;
+        /* rotation by s*90 deg about axis a: e_b -> s e_c, e_c -> -s e_b */
+        R[a][a] = 1.0;
+        R[c][b] = s;
+        R[b][c] = -s;
+        return;
+    }
+    double cz = 2.0 * r.u[0] - 1.0, sz = sqrt(1.0 - cz * cz);
+    double phi = 6.283185307179586476925 * r.u[1];
+    double n[3] = {sz * cos(phi), sz * sin(phi), cz};
+    double ca = p->cos_a, sa = p->sin_a, oc = 1.0 - ca;
+    R[0][0] = ca + n[0] * n[0] * oc;
+    R[0][1] = n[0] * n[1] * oc - n[2] * sa;
+    R[0][2] = n[0] * n[2] * oc + n[1] * sa;
+    R[1][0] = n[1] * n[0] * oc + n[2] * sa;
+    R[1][1] = ca + n[1] * n[1] * oc;
+    R[1][2] = n[1] * n[2] * oc - n[0] * sa;
+    R[2][0] = n[2] * n[0] * oc - n[1] * sa;
+    R[2][1] = n[2] * n[1] * oc + n[0] * sa;
+    R[2][2] = ca + n[2] * n[2] * oc;
+}
+
+/* Heyes scale factor for a cell with M particles and relative kinetic energy
+ * K (Hecht Eq. 33); 1 when the move is rejected. */
+static double heyes_zeta(const pl_collide_params_t *p, uint64_t cell, size_t M, double K)
+{
+    pl_rand4_t r = pl_rng_uniform4(p->seed, PL_RNG_THERMOSTAT, p->step, cell, 0);
+    double eps = p->heyes_eps * r.u[0];
+    double zeta = r.u[1] < 0.5 ? 1.0 + eps : 1.0 / (1.0 + eps);
+    double dof = 3.0 * (double)(M - 1);
+    double log_acc = dof * log(zeta) - (zeta * zeta - 1.0) * K / p->kT_target;
+    return (log_acc >= 0.0 || log(r.u[2]) < log_acc) ? zeta : 1.0;
+}
+
+/* Number of virtual particles and wall index for a cell in z-layer iz, or 0
+ * when the layer is not cut by a no-slip wall. */
+static int ghost_count(const pl_grid_t *g, const pl_collide_params_t *p, int iz, size_t M,
+                       int *wall)
+{
+    double lo = iz - 1 + g->shift[2], hi = lo + 1.0, Lz = g->L[2];
+    if (lo >= 0.0 && hi <= Lz) return 0;
+    *wall = lo < 0.0 ? 0 : 1;
+    int target = (int)lround(p->ghost_density);
+    return (int)M < target ? target - (int)M : 0;
+}
+
+void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_start,
+                    const pl_collide_params_t *p, double *block_sum)
+{
+    pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
+    const size_t ncells = g->ncells, layer = (size_t)g->n[0] * (size_t)g->n[1];
+    const size_t nblocks = (ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
+    /* Cells are independent; blocks of cells give fixed-order partial sums. */
+#pragma omp parallel for schedule(static)
+    for (size_t b = 0; b < nblocks; ++b) {
+        double sum2 = 0.0, dof = 0.0;
+        size_t c_hi = (b + 1) * PL_CELL_BLOCK < ncells ? (b + 1) * PL_CELL_BLOCK : ncells;
+        for (size_t c = b * PL_CELL_BLOCK; c < c_hi; ++c) {
+            const size_t s = cell_start[c], e = cell_start[c + 1], M = e - s;
+            int wall = 0, ng = 0;
+            if (p->wall_ghosts && M >= 1) ng = ghost_count(g, p, (int)(c / layer), M, &wall);
+            if (M + (size_t)ng < 2) continue;
+            double P[3] = {0.0, 0.0, 0.0};
+            for (size_t i = s; i < e; ++i) {
+                P[0] += vx[i];
+                P[1] += vy[i];
+                P[2] += vz[i];
+            }
+            double u[3], ur[3];
+            for (int d = 0; d < 3; ++d) ur[d] = P[d] / (double)M;
+            if (ng > 0) {
+                pl_rand4_t r = pl_rng_uniform4(p->seed, PL_RNG_WALL_GHOST, p->step, c, 0);
+                double gs[4], sd = sqrt((double)ng * p->kT_wall);
+                pl_rng_gauss2(r.u[0], r.u[1], &gs[0], &gs[1]);
+                pl_rng_gauss2(r.u[2], r.u[3], &gs[2], &gs[3]);
+                for (int d = 0; d < 3; ++d)
+                    u[d] = (P[d] + (double)ng * p->wall_u[wall][d] + sd * gs[d]) / (double)(M + (size_t)ng);
+            } else {
+                for (int d = 0; d < 3; ++d) u[d] = ur[d];
+            }
+            double K2 = 0.0; /* sum (v - u)^2, invariant under rotation */
+            for (size_t i = s; i < e; ++i) {
+                double a = vx[i] - u[0], bb = vy[i] - u[1], cc = vz[i] - u[2];
+                K2 += a * a + bb * bb + cc * cc;
+            }
+            double zeta = 1.0;
+            if (p->heyes && ng == 0 && M >= 2) zeta = heyes_zeta(p, c, M, 0.5 * K2);
+            double R[3][3];
+            rotation_matrix(p, c, R);
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) R[i][j] *= zeta;
+            for (size_t i = s; i < e; ++i) {
+                double a = vx[i] - u[0], bb = vy[i] - u[1], cc = vz[i] - u[2];
+                vx[i] = (pl_real)(u[0] + R[0][0] * a + R[0][1] * bb + R[0][2] * cc);
+                vy[i] = (pl_real)(u[1] + R[1][0] * a + R[1][1] * bb + R[1][2] * cc);
+                vz[i] = (pl_real)(u[2] + R[2][0] * a + R[2][1] * bb + R[2][2] * cc);
+            }
+            if (M < 2) continue;
+            if (ng == 0) {
+                sum2 += zeta * zeta * K2;
+            } else { /* the real particles' own mean moved: measure again */
+                double Q[3] = {0.0, 0.0, 0.0}, S = 0.0;
+                for (size_t i = s; i < e; ++i) {
+                    Q[0] += vx[i]; Q[1] += vy[i]; Q[2] += vz[i];
+                    S += (double)vx[i] * vx[i] + (double)vy[i] * vy[i] + (double)vz[i] * vz[i];
+                }
+                sum2 += S - (Q[0] * Q[0] + Q[1] * Q[1] + Q[2] * Q[2]) / (double)M;
+            }
+            dof += 3.0 * (double)(M - 1);
+        }
+        block_sum[2 * b] = sum2;
+        block_sum[2 * b + 1] = dof;
+    }
+}
+
+void pl_srd_rescale(pl_fluid_t *f, const uint32_t *cell_start, size_t ncells, double factor)
+{
+    pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
+    /* PL Appendix A: v - v_cm scaled by sqrt(T / T_meas) in cells with N > 1. */
+#pragma omp parallel for schedule(static)
+    for (size_t c = 0; c < ncells; ++c) {
+        const size_t s = cell_start[c], e = cell_start[c + 1];
+        if (e - s < 2) continue;
+        double P[3] = {0.0, 0.0, 0.0};
+        for (size_t i = s; i < e; ++i) {
+            P[0] += vx[i]; P[1] += vy[i]; P[2] += vz[i];
+        }
+        const double inv = 1.0 / (double)(e - s);
+        const double u0 = P[0] * inv, u1 = P[1] * inv, u2 = P[2] * inv;
+        for (size_t i = s; i < e; ++i) {
+            vx[i] = (pl_real)(u0 + factor * (vx[i] - u0));
+            vy[i] = (pl_real)(u1 + factor * (vy[i] - u1));
+            vz[i] = (pl_real)(u2 + factor * (vz[i] - u2));
+        }
+    }
+}

@@ -1,0 +1,170 @@
+/* The run loop: step the plan, write thermo rows, checkpoints, fields and the
+ * summary.  Order matters for "nothing written on bad input": the scene is
+ * validated, the sim built and any restart checkpoint read before the output
+ * directory is created. */
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "peloid/io.h"
+#include "peloid/run.h"
+#include "peloid/srd_theory.h"
+
+typedef struct {
+    char dir[1024];
+    FILE *thermo;
+    double t_start, t_last_row;
+    long long step_last_row;
+} writer_t;
+
+static void thermo_header(FILE *f, int tracked)
+{
+    fprintf(f, "step\ttime\ttemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%smupdates_per_s\n",
+            tracked ? "msd\t" : "");
+}
+
+static void thermo_row(writer_t *w, const pl_sim_t *sim)
+{
+    pl_fluid_obs_t o;
+    double kT;
+    pl_sim_observe(sim, &o, &kT);
+    double now = omp_get_wtime();
+    double steps = (double)(sim->step - w->step_last_row);
+    double rate = now > w->t_last_row && steps > 0 ? steps * (double)sim->fluid.n / (now - w->t_last_row) / 1e6 : 0.0;
+    fprintf(w->thermo, "%lld\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t", sim->step,
+            (double)sim->step * sim->scene.srd.dt, kT, sim->last_kT_meas, o.momentum[0], o.momentum[1],
+            o.momentum[2], o.kinetic);
+    if (sim->fluid.tracked) fprintf(w->thermo, "%.10g\t", o.msd);
+    fprintf(w->thermo, "%.4g\n", rate);
+    fflush(w->thermo);
+    w->t_last_row = now;
+    w->step_last_row = sim->step;
+}
+
+static void progress(const pl_sim_t *sim, long long first, long long last, double t0)
+{
+    double el = omp_get_wtime() - t0, done = (double)(sim->step - first), todo = (double)(last - first);
+    double eta = done > 0 ? el * (todo - done) / done : 0.0;
+    double rate = el > 0 ? done * (double)sim->fluid.n / el / 1e6 : 0.0;
+    fprintf(stderr, "\r  step %lld/%lld  %5.1f%%  ETA %6.1f s  %8.2f Mupdates/s ", sim->step, last,
+            todo > 0 ? 100.0 * done / todo : 100.0, eta, rate);
+    fflush(stderr);
+}
+
+static int write_summary(const writer_t *w, const pl_sim_t *sim, long long first, double wall,
+                         pl_err_t *err)
+{
+    char path[1100], tmp[1200], topo[256];
+    pl_path_join(path, sizeof path, w->dir, "summary.json");
+    FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
+    if (!f) return PL_ERR_IO;
+    const pl_scene_t *sc = &sim->scene;
+    pl_topology_summary(topo, sizeof topo);
+    double updates = (double)(sim->step - first) * (double)sim->fluid.n;
+    fprintf(f, "{\n  \"peloid\": {\"git_revision\": \"%s\", \"compiler\": \"%s\", \"cflags\": \"%s\", "
+               "\"real\": \"%s\"},\n",
+            PL_GIT_REV, __VERSION__, PL_CFLAGS, PL_REAL_NAME);
+    fprintf(f, "  \"scene_file\": \"%s\",\n  \"scene\": ", sc->path);
+    pl_scene_print_json(sc, f, "  ");
+    fprintf(f, ",\n  \"derived\": ");
+    pl_params_print(sc, f, 1);
+    fprintf(f, "  ,\"threads\": %d,\n  \"topology\": \"%s\",\n", sim->nthreads, topo);
+    fprintf(f, "  \"fluid_particles\": %zu,\n  \"first_step\": %lld,\n  \"last_step\": %lld,\n",
+            sim->fluid.n, first, sim->step);
+    fprintf(f, "  \"wall_seconds\": %.6g,\n  \"particle_updates_per_second\": %.6g,\n", wall,
+            wall > 0 ? updates / wall : 0.0);
+    fprintf(f, "  \"stage_seconds\": {");
+    for (int k = 0; k < sim->nstages; ++k)
+        fprintf(f, "%s\"%s\": %.6g", k ? ", " : "", sim->stages[k].name, sim->stages[k].seconds);
+    fprintf(f, "}\n}\n");
+    return pl_file_commit(f, tmp, path, err);
+}
+
+static int write_checkpoint(const writer_t *w, const pl_sim_t *sim, pl_err_t *err)
+{
+    char path[1100];
+    pl_path_join(path, sizeof path, w->dir, "checkpoint.h5");
+    return pl_checkpoint_write(sim, path, err);
+}
+
+static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *err)
+{
+    char path[1100], tmp[1200];
+    pl_path_join(path, sizeof path, w->dir, "scene.cfg");
+    FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
+    if (!f) return PL_ERR_IO;
+    fprintf(f, "# effective scene of %s (every key, defaults filled in)\n", sc->path);
+    pl_scene_print(sc, f);
+    return pl_file_commit(f, tmp, path, err);
+}
+
+static int loop(pl_sim_t *sim, writer_t *w, const pl_run_opts_t *o, long long last, pl_err_t *err)
+{
+    const pl_scene_t *sc = &sim->scene;
+    long long first = sim->step;
+    w->t_start = w->t_last_row = omp_get_wtime();
+    w->step_last_row = first;
+    double t_progress = w->t_start;
+    if (first == 0 || first % sc->output.thermo_interval == 0) thermo_row(w, sim);
+    while (sim->step < last) {
+        int rc = pl_sim_step(sim, err);
+        if (rc) return rc;
+        if (sim->step % sc->output.thermo_interval == 0 || sim->step == last) thermo_row(w, sim);
+        if (sc->output.checkpoint_interval > 0 && sim->step % sc->output.checkpoint_interval == 0 &&
+            (rc = write_checkpoint(w, sim, err)))
+            return rc;
+        if (o->progress && omp_get_wtime() - t_progress > 0.25) {
+            progress(sim, first, last, w->t_start);
+            t_progress = omp_get_wtime();
+        }
+    }
+    if (o->progress) {
+        progress(sim, first, last, w->t_start);
+        fputc('\n', stderr);
+    }
+    return 0;
+}
+
+int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
+{
+    pl_sim_t *sim = NULL;
+    int rc = pl_sim_create(scene, o->threads, &sim, err);
+    if (rc) return rc;
+    if (o->restart && (rc = pl_checkpoint_read(sim, o->restart, err))) goto done;
+    writer_t w;
+    memset(&w, 0, sizeof w);
+    if (o->out_dir) snprintf(w.dir, sizeof w.dir, "%s", o->out_dir);
+    else snprintf(w.dir, sizeof w.dir, "out/%s", scene->run.name);
+    if ((rc = pl_outdir_prepare(w.dir, o->force, err))) goto done;
+    if ((rc = write_scene_echo(&w, &sim->scene, err))) goto done;
+    char path[1100];
+    pl_path_join(path, sizeof path, w.dir, "thermo.tsv");
+    if (!(w.thermo = fopen(path, "w"))) {
+        rc = pl_err_set(err, PL_ERR_IO, "%s: cannot write", path);
+        goto done;
+    }
+    thermo_header(w.thermo, sim->fluid.tracked);
+    long long first = sim->step;
+    long long last = first + (o->steps >= 0 ? o->steps : scene->run.steps);
+    fprintf(stderr, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/\n",
+            scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
+    double t0 = omp_get_wtime();
+    rc = loop(sim, &w, o, last, err);
+    double wall = omp_get_wtime() - t0;
+    fclose(w.thermo);
+    if (rc) goto done; /* the last good checkpoint stays as it was */
+    if ((rc = write_checkpoint(&w, sim, err))) goto done;
+    if (sim->field_acc) {
+        pl_path_join(path, sizeof path, w.dir, "fields.h5");
+        if ((rc = pl_fields_write(sim, path, err))) goto done;
+    }
+    rc = write_summary(&w, sim, first, wall, err);
+    if (!rc)
+        fprintf(stderr, "peloid: done in %.3g s, %.4g Mupdates/s\n", wall,
+                wall > 0 ? (double)(last - first) * (double)sim->fluid.n / wall / 1e6 : 0.0);
+done:
+    pl_sim_free(sim);
+    return rc;
+}

@@ -1,0 +1,184 @@
+/* Simulation object: state allocation, the plan (ordered stages, each with an
+ * interval) and the step loop.  A stage the scene does not need is not in
+ * the plan (DESIGN.md "Scene -> plan"): no thermostat stage without a
+ * thermostat, no fluid stages without fluid. */
+#include <math.h>
+#include <omp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "peloid/sim.h"
+
+static const double PI = 3.14159265358979323846;
+
+/* ---- stages ------------------------------------------------------------ */
+
+static int stage_stream(pl_sim_t *sim, pl_err_t *err)
+{
+    (void)err;
+    const pl_scene_t *sc = &sim->scene;
+    pl_grid_draw_shift(&sim->grid, (uint64_t)sc->run.seed, (uint64_t)sim->step, sc->srd.grid_shift);
+    pl_stream_params_t p;
+    memset(&p, 0, sizeof p);
+    p.dt = sc->srd.dt;
+    for (int d = 0; d < 3; ++d) p.accel[d] = sc->fluid.body_force[d];
+    memcpy(p.wall_u, sim->wall_u, sizeof p.wall_u);
+    pl_srd_stream_bin(&sim->fluid, &sim->grid, &p, sim->hist, sim->nthreads);
+    return 0;
+}
+
+static int stage_sort(pl_sim_t *sim, pl_err_t *err)
+{
+    (void)err;
+    pl_srd_sort(&sim->fluid, sim->hist, sim->cell_start, sim->grid.ncells, sim->nthreads);
+    return 0;
+}
+
+static int stage_collide(pl_sim_t *sim, pl_err_t *err)
+{
+    (void)err;
+    const pl_scene_t *sc = &sim->scene;
+    pl_collide_params_t p;
+    memset(&p, 0, sizeof p);
+    p.rule = sc->srd.rule;
+    p.cos_a = cos(sc->srd.alpha_deg * PI / 180.0);
+    p.sin_a = sin(sc->srd.alpha_deg * PI / 180.0);
+    p.seed = (uint64_t)sc->run.seed;
+    p.step = (uint64_t)sim->step;
+    p.heyes = sc->thermostat.type == PL_THERMO_HEYES && sim->step % sc->thermostat.interval == 0;
+    p.kT_target = sc->thermostat.temperature;
+    p.heyes_eps = sc->thermostat.heyes_epsilon;
+    p.wall_ghosts = sc->box.walls_z == PL_WALLS_NOSLIP;
+    p.ghost_density = sc->fluid.density;
+    p.kT_wall = sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature : sc->fluid.temperature;
+    memcpy(p.wall_u, sim->wall_u, sizeof p.wall_u);
+    pl_srd_collide(&sim->fluid, &sim->grid, sim->cell_start, &p, sim->block_sum);
+    /* PL Eqs. A1-A2, summed in block order (deterministic) */
+    size_t nb = (sim->grid.ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
+    double s2 = 0.0, dof = 0.0;
+    for (size_t b = 0; b < nb; ++b) {
+        s2 += sim->block_sum[2 * b];
+        dof += sim->block_sum[2 * b + 1];
+    }
+    sim->last_kT_meas = dof > 0 ? s2 / dof : 0.0;
+    return 0;
+}
+
+static int stage_rescale(pl_sim_t *sim, pl_err_t *err)
+{
+    (void)err;
+    if (sim->last_kT_meas <= 0.0) return 0;
+    double factor = sqrt(sim->scene.thermostat.temperature / sim->last_kT_meas); /* PL App. A */
+    pl_srd_rescale(&sim->fluid, sim->cell_start, sim->grid.ncells, factor);
+    sim->last_kT_meas = sim->scene.thermostat.temperature;
+    return 0;
+}
+
+static int stage_fields(pl_sim_t *sim, pl_err_t *err)
+{
+    (void)err;
+    if (sim->step < sim->scene.output.fields_start) return 0;
+    pl_srd_fields_accumulate(&sim->fluid, sim->grid.L, sim->field_acc);
+    sim->field_samples++;
+    return 0;
+}
+
+static void add_stage(pl_sim_t *sim, const char *name, pl_stage_fn fn, long long interval)
+{
+    pl_stage_t *s = &sim->stages[sim->nstages++];
+    s->name = name;
+    s->fn = fn;
+    s->interval = interval > 0 ? interval : 1;
+    s->seconds = 0.0;
+}
+
+static void build_plan(pl_sim_t *sim)
+{
+    const pl_scene_t *sc = &sim->scene;
+    sim->nstages = 0;
+    if (sim->fluid.n > 0) {
+        add_stage(sim, "stream+bin", stage_stream, 1);
+        add_stage(sim, "sort", stage_sort, 1);
+        add_stage(sim, "collide", stage_collide, 1);
+        if (sc->thermostat.type == PL_THERMO_RESCALE)
+            add_stage(sim, "thermostat-rescale", stage_rescale, sc->thermostat.interval);
+        if (sc->output.fields_interval > 0)
+            add_stage(sim, "fields", stage_fields, sc->output.fields_interval);
+    }
+}
+
+/* ---- lifetime ---------------------------------------------------------- */
+
+int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_t *err)
+{
+    pl_sim_t *sim = calloc(1, sizeof *sim);
+    if (!sim) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
+    sim->scene = *scene;
+    sim->nthreads = nthreads > 0 ? nthreads : omp_get_max_threads();
+    pl_grid_init(&sim->grid, scene->box.cells, scene->box.walls_z);
+    double volume = (double)scene->box.cells[0] * scene->box.cells[1] * scene->box.cells[2];
+    size_t n = (size_t)llround(scene->fluid.density * volume);
+    int rc = pl_fluid_create(n, scene->output.track_fluid, &sim->fluid, err);
+    if (rc) {
+        free(sim);
+        return rc;
+    }
+    size_t nc = sim->grid.ncells, L3 = (size_t)scene->box.cells[0] * (size_t)scene->box.cells[1] *
+                                          (size_t)scene->box.cells[2];
+    size_t nb = (nc + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
+    sim->hist = pl_alloc((size_t)sim->nthreads * nc * sizeof(uint32_t));
+    sim->cell_start = pl_alloc((nc + 1) * sizeof(uint32_t));
+    sim->block_sum = pl_alloc(2 * nb * sizeof(double));
+    sim->obs_scratch = pl_alloc(pl_srd_observe_scratch(n) * sizeof(double));
+    if (scene->output.fields_interval > 0) sim->field_acc = pl_alloc(4 * L3 * sizeof(int64_t));
+    if (!sim->hist || !sim->cell_start || !sim->block_sum || !sim->obs_scratch ||
+        (scene->output.fields_interval > 0 && !sim->field_acc)) {
+        pl_sim_free(sim);
+        return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cell arrays (%zu cells)", nc);
+    }
+    omp_set_num_threads(sim->nthreads);
+    pl_fluid_init(&sim->fluid, scene);
+    build_plan(sim);
+    *out = sim;
+    return 0;
+}
+
+void pl_sim_free(pl_sim_t *sim)
+{
+    if (!sim) return;
+    pl_fluid_free(&sim->fluid);
+    pl_free(sim->hist);
+    pl_free(sim->cell_start);
+    pl_free(sim->block_sum);
+    pl_free(sim->obs_scratch);
+    pl_free(sim->field_acc);
+    free(sim);
+}
+
+int pl_sim_step(pl_sim_t *sim, pl_err_t *err)
+{
+    for (int k = 0; k < sim->nstages; ++k) {
+        pl_stage_t *s = &sim->stages[k];
+        if (sim->step % s->interval) continue;
+        double t0 = omp_get_wtime();
+        int rc = s->fn(sim, err);
+        s->seconds += omp_get_wtime() - t0;
+        if (rc) return rc;
+    }
+    sim->step++;
+    return 0;
+}
+
+void pl_sim_observe(const pl_sim_t *sim, pl_fluid_obs_t *obs, double *kT)
+{
+    pl_srd_observe(&sim->fluid, sim->obs_scratch, obs);
+    /* kT = sum m (v - V)^2 / (3 (N - 1)), V the centre-of-mass velocity */
+    size_t n = sim->fluid.n;
+    if (n < 2) {
+        *kT = 0.0;
+        return;
+    }
+    double p2 = 0.0;
+    for (int d = 0; d < 3; ++d) p2 += obs->momentum[d] * obs->momentum[d];
+    *kT = (2.0 * obs->kinetic - p2 / (double)n) / (3.0 * (double)(n - 1));
+}

@@ -1,0 +1,33 @@
+/* SRD transport coefficients: PL Eqs. 4, 6, 9-15 (random-axis rule). */
+#include "peloid/srd_theory.h"
+
+#include <math.h>
+
+double pl_srd_f_kin(double g, double a)
+{
+    /* PL Eq. 11 */
+    return 15.0 * g / ((g - 1.0 + exp(-g)) * (4.0 - 2.0 * cos(a) - 2.0 * cos(2.0 * a))) - 1.5;
+}
+
+double pl_srd_f_col(double g, double a)
+{
+    /* PL Eq. 12 */
+    return (1.0 - cos(a)) * (1.0 - 1.0 / g + exp(-g) / g);
+}
+
+void pl_srd_theory(double g, double a, double dt, double kT, pl_srd_theory_t *o)
+{
+    /* units: t0 = a0 sqrt(m/kT) with m = a0 = 1 */
+    double t0 = 1.0 / sqrt(kT), nu0 = sqrt(kT);
+    o->lambda = dt / t0;                                     /* PL Eq. 4 */
+    o->f_kin = pl_srd_f_kin(g, a);
+    o->f_col = pl_srd_f_col(g, a);
+    o->nu_kin = nu0 * o->lambda / 3.0 * o->f_kin;            /* PL Eq. 9 */
+    o->nu_col = nu0 / (18.0 * o->lambda) * o->f_col;         /* PL Eq. 10 */
+    o->nu = o->nu_kin + o->nu_col;
+    o->eta = g * o->nu;                                      /* PL Eqs. 14-15 */
+    o->D_f = nu0 * o->lambda * (3.0 / (2.0 * (1.0 - cos(a))) * (g / (g - 1.0)) - 0.5); /* PL Eq. 6 */
+    o->Sc = o->nu / o->D_f;                                  /* PL Eq. 26 */
+    o->tau_f = 1.0 / o->nu;
+    o->c_s = sqrt(5.0 * kT / 3.0);
+}
