@@ -5,7 +5,9 @@
  * (PL Sec. III compares SRD against such BD in Fig. 4).  The noise is
  * counter-based (Philox keyed by the seed and PL_RNG_COLLOID + 1, counter =
  * step, particle, draw), so each particle's kick is independent of the thread
- * count; each loop iteration writes only particle i. */
+ * count; each loop iteration writes only particle i.  An overdamped particle
+ * has no velocity of its own: v and w are set to the drift F/zeta, T/zeta_r
+ * (the noise displacement / dt diverges as dt -> 0). */
 #include <math.h>
 
 #include "peloid/colloid_kernels.h"
@@ -56,12 +58,12 @@ void pl_colloid_bd_step(const pl_colloid_bd_params_t *p, size_t n, const double 
         if (periodic[0]) wrap(&x[i], &ix[i], box[0]);
         if (periodic[1]) wrap(&y[i], &iy[i], box[1]);
         if (periodic[2]) wrap(&z[i], &iz[i], box[2]);
-        vx[i] = dx / dt;
-        vy[i] = dy / dt;
-        vz[i] = dz / dt;
-        wx[i] = px / dt;
-        wy[i] = py / dt;
-        wz[i] = pz / dt;
+        vx[i] = fx[i] / zt;
+        vy[i] = fy[i] / zt;
+        vz[i] = fz[i] / zt;
+        wx[i] = tx[i] / zr;
+        wy[i] = ty[i] / zr;
+        wz[i] = tz[i] / zr;
         double q[4] = {q0[i], q1[i], q2[i], q3[i]};
         pl_colloid_quat_rotate(px, py, pz, q);
         q0[i] = q[0];

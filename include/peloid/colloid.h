@@ -104,8 +104,4 @@ int pl_colloid_traj_write(pl_colloid_traj_t *t, const pl_colloid_t *c, long long
                           pl_err_t *err);
 int pl_colloid_traj_close(pl_colloid_traj_t *t, pl_err_t *err);
 
-/* Self-contained colloid-only driver: create, run scene->run.steps collision
- * steps, write thermo (outdir/colloid_thermo.tsv) and the trajectory. */
-int pl_colloid_run(const pl_scene_t *scene, const char *outdir, int overwrite, pl_err_t *err);
-
 #endif

@@ -111,7 +111,7 @@ typedef struct {
 
 /* One Brownian dynamics step (overdamped Langevin with Stokes friction):
  * x += F dt/zeta + sqrt(2 kT dt/zeta) xi, same for the orientation; v and w
- * are set to the displacement / dt. */
+ * are set to the drift velocities F/zeta, T/zeta_r. */
 void pl_colloid_bd_step(const pl_colloid_bd_params_t *p, size_t n, const double box[3],
                         const int periodic[3], const double *rad, double *x, double *y, double *z,
                         int32_t *ix, int32_t *iy, int32_t *iz, const double *fx, const double *fy,
