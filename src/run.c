@@ -163,6 +163,14 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     long long last = first + (o->steps >= 0 ? o->steps : scene->run.steps);
     fprintf(stderr, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/\n",
             scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
+    if (sim->colloids && (sim->colloids->pair.terms & PL_CT_DLVO)) {
+        const pl_colloid_dlvo_info_t *d = &sim->colloids->dlvo;
+        fprintf(stderr, "peloid: DLVO: primary minimum matched at gap %.4g a0 (curvature %.4g kT/a0^2); "
+                        "barrier %.4g kT at %.4g a0; secondary minimum %.4g kT at %.4g a0; cut-off gap "
+                        "%.4g a0, truncation error |V| = %.3g kT, |F| = %.3g kT/a0\n",
+                d->hm, d->curvature, d->barrier_u, d->barrier_h, d->secmin_u, d->secmin_h, d->hcut,
+                d->trunc_u, d->trunc_f);
+    }
     double t0 = omp_get_wtime();
     rc = loop(sim, &w, o, last, err);
     double wall = omp_get_wtime() - t0;

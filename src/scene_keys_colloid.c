@@ -50,7 +50,7 @@ static const pl_key_t colloid_keys[] = {
      "MD steps", "guard: a collision must last at least this many MD steps (Hecht Sec. II: "
                  "~20), estimated as pi sqrt(m_red / U'') from the actual stiffness (0: off)"},
     {"max_energy_drift", PL_KEY_REAL, OFF(max_energy_drift), 0, 1e9, 0, NULL, 0.05, NULL,
-     "kT_ref per colloid", "guard: |E - E_0| / N allowed in undamped NVE runs (0: off)"},
+     "kT_ref per colloid", "guard: abs(E - E_0) / N allowed in undamped NVE runs (0: off)"},
     {"guard_interval", PL_KEY_INT, OFF(guard_interval), 1, 1e12, 0, NULL, 100, NULL,
      "MD steps", "interval of the energy-drift check (the other guards act every MD step)"},
     {"trajectory_interval", PL_KEY_INT, OFF(trajectory_interval), 0, 1e15, 0, NULL, 0, NULL,
@@ -77,7 +77,7 @@ static const pl_key_t dlvo_keys[] = {
     {"primary_gap", PL_KEY_REAL, OFF(dlvo.primary_gap), 0, 100, 0, NULL, 0, NULL,
      "a0", "surface gap r - 2R at the bottom of the primary minimum"},
     {"cutoff_energy", PL_KEY_REAL, OFF(dlvo.cutoff_energy), 0, 1, PL_KEY_MIN_OPEN, NULL, 1e-3, NULL,
-     "kT_ref", "cut-off where |V_DLVO| has decayed below this (truncation error, reported)"},
+     "kT_ref", "cut-off where abs(V_DLVO) has decayed below this (the truncation error, printed at start)"},
 };
 
 static const pl_key_t hertz_keys[] = {
