@@ -11,6 +11,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "peloid/colloid_scene.h"
 #include "peloid/error.h"
 #include "peloid/mapping.h"
 
@@ -79,6 +80,7 @@ typedef struct pl_scene {
     pl_scene_thermostat_t thermostat;
     pl_scene_output_t output;
     pl_scene_mapping_t mapping; /* physical{} + coarse_graining{} (mapping.h) */
+    pl_scene_colloids_t colloids; /* colloid module (colloid_scene.h) */
 } pl_scene_t;
 
 /* ---- schema ---------------------------------------------------------- */
@@ -121,6 +123,11 @@ const pl_section_t *const *pl_scene_sections(size_t *count);
 extern const pl_section_t pl_scene_section_run, pl_scene_section_box, pl_scene_section_fluid,
     pl_scene_section_srd, pl_scene_section_thermostat, pl_scene_section_output;
 extern const pl_section_t pl_scene_section_physical, pl_scene_section_coarse_graining;
+extern const pl_section_t pl_scene_section_colloids, pl_scene_section_dlvo, pl_scene_section_hertz,
+    pl_scene_section_lubrication, pl_scene_section_wca;
+
+/* Cross-key checks of the colloid sections (src/colloid_scene.c). */
+int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err);
 
 /* ---- API --------------------------------------------------------------- */
 
