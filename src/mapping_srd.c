@@ -5,41 +5,24 @@
  * viscosity for rotation by alpha about a random axis), Hecht Eq. 28 (the
  * viscosity for +-90 deg rotations about the coordinate axes), PL Eq. 40
  * (Enskog friction, slip).
- *
- * Note for the lead: src/srd_theory.c (PL Eqs. 6, 9-15) did not exist when
- * this was written; these functions duplicate it and can be replaced by it. */
+ */
 #include <math.h>
 
 #include "peloid/mapping.h"
+#include "peloid/srd_theory.h"
 
-double pl_mapping_f_kin(double gamma, double alpha)
+/* PL Eqs. 6 and 9-12 live in src/srd_theory.c; these evaluate them in the
+ * mapping's units (kT = 1, dt = lambda). */
+static pl_srd_theory_t srd(double lambda, double gamma, double alpha)
 {
-    /* PL Eq. 11 */
-    return 15.0 * gamma / ((gamma - 1.0 + exp(-gamma)) * (4.0 - 2.0 * cos(alpha) - 2.0 * cos(2.0 * alpha))) -
-           1.5;
+    pl_srd_theory_t t;
+    pl_srd_theory(gamma, alpha, lambda, 1.0, &t);
+    return t;
 }
 
-double pl_mapping_f_col(double gamma, double alpha)
-{
-    /* PL Eq. 12 */
-    return (1.0 - cos(alpha)) * (1.0 - 1.0 / gamma + exp(-gamma) / gamma);
-}
-
-double pl_mapping_nu_kin(double lambda, double gamma, double alpha)
-{
-    return lambda / 3.0 * pl_mapping_f_kin(gamma, alpha); /* PL Eq. 9 */
-}
-
-double pl_mapping_nu_col(double lambda, double gamma, double alpha)
-{
-    return pl_mapping_f_col(gamma, alpha) / (18.0 * lambda); /* PL Eq. 10 */
-}
-
-double pl_mapping_d_fluid(double lambda, double gamma, double alpha)
-{
-    /* PL Eq. 6 */
-    return lambda * (3.0 / (2.0 * (1.0 - cos(alpha))) * (gamma / (gamma - 1.0)) - 0.5);
-}
+double pl_mapping_nu_kin(double lambda, double gamma, double alpha) { return srd(lambda, gamma, alpha).nu_kin; }
+double pl_mapping_nu_col(double lambda, double gamma, double alpha) { return srd(lambda, gamma, alpha).nu_col; }
+double pl_mapping_d_fluid(double lambda, double gamma, double alpha) { return srd(lambda, gamma, alpha).D_f; }
 
 double pl_mapping_nu_hecht(double lambda, double gamma)
 {

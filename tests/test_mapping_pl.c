@@ -12,6 +12,7 @@
 #include "mapping_testutil.h"
 
 #include "peloid/mapping.h"
+#include "peloid/srd_theory.h"
 
 static pl_mapping_cg_t pl_choice(void)
 {
@@ -30,13 +31,13 @@ static pl_mapping_cg_t pl_choice(void)
 
 Test(pl, transport_sec2b)
 {
-    EXPECT_PRINTED(pl_mapping_f_kin(5, M_PI / 2), 1.620, 0.001);
-    EXPECT_PRINTED(pl_mapping_f_col(5, M_PI / 2), 0.801, 0.001);
+    EXPECT_PRINTED(pl_srd_f_kin(5, M_PI / 2), 1.620, 0.001);
+    EXPECT_PRINTED(pl_srd_f_col(5, M_PI / 2), 0.801, 0.001);
     EXPECT_PRINTED(pl_mapping_nu_kin(0.1, 5, M_PI / 2), 0.054, 0.001);
     EXPECT_PRINTED(pl_mapping_nu_col(0.1, 5, M_PI / 2), 0.45, 0.01);
     /* Large gamma: f_kin, f_col -> 1 at alpha = pi/2 (Sec. II.B.3). */
-    EXPECT_WITHIN(pl_mapping_f_kin(1e6, M_PI / 2), 1.0, 1e-5);
-    EXPECT_WITHIN(pl_mapping_f_col(1e6, M_PI / 2), 1.0, 1e-5);
+    EXPECT_WITHIN(pl_srd_f_kin(1e6, M_PI / 2), 1.0, 1e-5);
+    EXPECT_WITHIN(pl_srd_f_col(1e6, M_PI / 2), 1.0, 1e-5);
     /* Eq. 6 at gamma -> infinity, alpha = pi/2: D_f = lambda. */
     EXPECT_WITHIN(pl_mapping_d_fluid(0.1, 1e6, M_PI / 2), 0.1, 1e-6);
     /* Table IV: c_s = 1.29 a0/t0, eta ~ 2.50, nu ~ 0.50 (collisional). */

@@ -42,8 +42,6 @@ enum { PL_VISC_HECHT28 = 0, PL_VISC_PL = 1 };
 
 /* ---- SRD transport (PL Eqs. 6, 9-15; Hecht Eq. 28) ------------------- */
 /* In units a0, t0, m_f; lambda = dt/t0, gamma = particles per cell. */
-double pl_mapping_f_kin(double gamma, double alpha);                    /* PL Eq. 11 */
-double pl_mapping_f_col(double gamma, double alpha);                    /* PL Eq. 12 */
 double pl_mapping_nu_kin(double lambda, double gamma, double alpha);    /* PL Eq. 9 */
 double pl_mapping_nu_col(double lambda, double gamma, double alpha);    /* PL Eq. 10 */
 double pl_mapping_d_fluid(double lambda, double gamma, double alpha);   /* PL Eq. 6 */
