@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "peloid/h5.h"
 #include "peloid/io.h"
 
 #define H5_REAL (sizeof(pl_real) == sizeof(double) ? H5T_NATIVE_DOUBLE : H5T_NATIVE_FLOAT)
@@ -18,15 +19,7 @@ static const char *const dnames[3] = {"disp_x", "disp_y", "disp_z"};
 static int write_1d(hid_t g, const char *name, hid_t type, const void *data, size_t n)
 {
     hsize_t dims[1] = {n};
-    hid_t sp = H5Screate_simple(1, dims, NULL);
-    hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
-    H5Pset_obj_track_times(dcpl, 0); /* no time stamps: same state => same bytes */
-    hid_t ds = H5Dcreate2(g, name, type, sp, H5P_DEFAULT, dcpl, H5P_DEFAULT);
-    H5Pclose(dcpl);
-    herr_t st = ds >= 0 ? H5Dwrite(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) : -1;
-    if (ds >= 0) H5Dclose(ds);
-    H5Sclose(sp);
-    return st < 0 ? -1 : 0;
+    return pl_h5_write(g, name, type, 1, dims, data);
 }
 
 static int read_1d(hid_t g, const char *name, hid_t type, void *data, size_t n)
@@ -73,10 +66,7 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
                          sc->box.cells[2], fl->tracked, (long long)sizeof(pl_real)};
     int bad = attr_i64(f, "peloid_checkpoint", meta, 8, 1);
     bad |= attr_i64(f, "field_samples", &sim->field_samples, 1, 1);
-    hid_t gcpl = H5Pcreate(H5P_GROUP_CREATE);
-    H5Pset_obj_track_times(gcpl, 0);
-    hid_t g = H5Gcreate2(f, "fluid", H5P_DEFAULT, gcpl, H5P_DEFAULT);
-    H5Pclose(gcpl);
+    hid_t g = pl_h5_group(f, "fluid");
     for (int d = 0; d < 3 && g >= 0; ++d) {
         bad |= write_1d(g, rnames[d], H5_REAL, fl->r[d], fl->n);
         bad |= write_1d(g, vnames[d], H5_REAL, fl->v[d], fl->n);

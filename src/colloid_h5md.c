@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "peloid/colloid.h"
+#include "peloid/h5.h"
 
 enum { NTS = 5 };
 static const char *const TS_NAMES[NTS] = {"position", "velocity", "orientation", "angular_velocity", "image"};
@@ -27,18 +28,6 @@ struct pl_colloid_traj {
     double *buf;
     int *ibuf;
 };
-
-static void attr_str(hid_t loc, const char *name, const char *val)
-{
-    hid_t t = H5Tcopy(H5T_C_S1);
-    H5Tset_size(t, strlen(val) + 1);
-    hid_t sp = H5Screate(H5S_SCALAR);
-    hid_t a = H5Acreate2(loc, name, t, sp, H5P_DEFAULT, H5P_DEFAULT);
-    H5Awrite(a, t, val);
-    H5Aclose(a);
-    H5Sclose(sp);
-    H5Tclose(t);
-}
 
 static hid_t ext_dataset(hid_t g, const char *name, hid_t type, int rank, hsize_t n, hsize_t w)
 {
@@ -81,22 +70,8 @@ int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, int overwrite,
         free(t);
         return pl_err_set(err, PL_ERR_IO, "%s: cannot create HDF5 file", path);
     }
-    hid_t h5 = H5Gcreate2(t->file, "h5md", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    int ver[2] = {1, 1};
-    hsize_t two = 2;
-    hid_t sp = H5Screate_simple(1, &two, NULL);
-    hid_t a = H5Acreate2(h5, "version", H5T_NATIVE_INT, sp, H5P_DEFAULT, H5P_DEFAULT);
-    H5Awrite(a, H5T_NATIVE_INT, ver);
-    H5Aclose(a);
-    H5Sclose(sp);
-    hid_t g = H5Gcreate2(h5, "author", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    attr_str(g, "name", "peloid");
-    H5Gclose(g);
-    g = H5Gcreate2(h5, "creator", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    attr_str(g, "name", "peloid");
-    attr_str(g, "version", PL_GIT_REV);
-    H5Gclose(g);
-    H5Gclose(h5);
+    pl_h5_h5md_header(t->file);
+    hid_t sp, a;
     hid_t parts = H5Gcreate2(t->file, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     hid_t col = H5Gcreate2(parts, "colloids", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     hid_t box = H5Gcreate2(col, "box", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
