@@ -87,12 +87,13 @@ check-cli: $(BIN)
 
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
 # shrinks the physics runs; the sanitizers slow code ~3-10x).
+ASAN_TESTS := test_scene test_collide test_sort test_determinism test_colloid_forces \
+              test_colloid_guards test_colloid_md test_colloid_restart
 check-asan: | deps
 	@$(MAKE) --no-print-directory BUILD=build-asan \
 	  OPTFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
-	  build-asan/tests/test_scene build-asan/tests/test_collide build-asan/tests/test_sort \
-	  build-asan/tests/test_determinism
-	@set -e; for t in test_scene test_collide test_sort test_determinism; do \
+	  $(patsubst %,build-asan/tests/%,$(ASAN_TESTS))
+	@set -e; for t in $(ASAN_TESTS); do \
 	  echo "== asan $$t"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$$t --jobs 1; done
 
 bench: $(BENCH_BIN)

@@ -1,12 +1,15 @@
 /* HDF5 checkpoint: the complete dynamic state, so that N steps + restart +
  * N steps equals 2N steps bitwise.  Random numbers are counter based (keyed
  * by step), so the state is positions, velocities (in their sorted order:
- * the stable sort depends on it), tracking arrays, step, field accumulators.
- * Written to "<path>.tmp" and renamed. */
+ * the stable sort depends on it), tracking arrays, step, field accumulators,
+ * and with colloids the group /colloids (src/checkpoint_colloid.c).
+ * Written to "<path>.tmp" and renamed.  No object carries a time stamp, so
+ * the same state gives the same bytes. */
 #include <hdf5.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "checkpoint_h5.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
 
@@ -16,13 +19,21 @@ static const char *const rnames[3] = {"x", "y", "z"};
 static const char *const vnames[3] = {"vx", "vy", "vz"};
 static const char *const dnames[3] = {"disp_x", "disp_y", "disp_z"};
 
-static int write_1d(hid_t g, const char *name, hid_t type, const void *data, size_t n)
+int pl_ckpt_write_1d(hid_t g, const char *name, hid_t type, const void *data, size_t n)
 {
     hsize_t dims[1] = {n};
-    return pl_h5_write(g, name, type, 1, dims, data);
+    hid_t sp = H5Screate_simple(1, dims, NULL);
+    hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+    H5Pset_obj_track_times(dcpl, 0); /* no time stamps: same state => same bytes */
+    hid_t ds = H5Dcreate2(g, name, type, sp, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+    H5Pclose(dcpl);
+    herr_t st = ds < 0 ? -1 : n ? H5Dwrite(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) : 0;
+    if (ds >= 0) H5Dclose(ds);
+    H5Sclose(sp);
+    return st < 0 ? -1 : 0;
 }
 
-static int read_1d(hid_t g, const char *name, hid_t type, void *data, size_t n)
+int pl_ckpt_read_1d(hid_t g, const char *name, hid_t type, void *data, size_t n)
 {
     hid_t ds = H5Dopen2(g, name, H5P_DEFAULT);
     if (ds < 0) return -1;
@@ -30,19 +41,21 @@ static int read_1d(hid_t g, const char *name, hid_t type, void *data, size_t n)
     hsize_t dims[1] = {0};
     int ok = H5Sget_simple_extent_ndims(sp) == 1 && H5Sget_simple_extent_dims(sp, dims, NULL) == 1 &&
              dims[0] == n;
-    herr_t st = ok ? H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) : -1;
+    herr_t st = !ok ? -1 : n ? H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) : 0;
     H5Sclose(sp);
     H5Dclose(ds);
     return st < 0 ? -1 : 0;
 }
 
-static int attr_i64(hid_t obj, const char *name, const long long *v, int n, int write)
+int pl_ckpt_attr_i64(hid_t obj, const char *name, long long *v, int n, int write)
 {
     hsize_t dims[1] = {(hsize_t)n};
     if (!write) {
         hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
         if (a < 0) return -1;
-        herr_t st = H5Aread(a, H5T_NATIVE_LLONG, (void *)v);
+        hid_t sp = H5Aget_space(a);
+        herr_t st = H5Sget_simple_extent_npoints(sp) == n ? H5Aread(a, H5T_NATIVE_LLONG, v) : -1;
+        H5Sclose(sp);
         H5Aclose(a);
         return st < 0 ? -1 : 0;
     }
@@ -54,6 +67,8 @@ static int attr_i64(hid_t obj, const char *name, const long long *v, int n, int 
     return st < 0 ? -1 : 0;
 }
 
+hid_t pl_ckpt_group_create(hid_t f, const char *name) { return pl_h5_group(f, name); }
+
 int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
 {
     char tmp[1100];
@@ -64,21 +79,25 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
     const pl_scene_t *sc = &sim->scene;
     long long meta[8] = {sim->step, sc->run.seed, (long long)fl->n, sc->box.cells[0], sc->box.cells[1],
                          sc->box.cells[2], fl->tracked, (long long)sizeof(pl_real)};
-    int bad = attr_i64(f, "peloid_checkpoint", meta, 8, 1);
-    bad |= attr_i64(f, "field_samples", &sim->field_samples, 1, 1);
-    hid_t g = pl_h5_group(f, "fluid");
+    long long ncol = sim->colloids ? (long long)sim->colloids->n : 0;
+    long long samples = sim->field_samples;
+    int bad = pl_ckpt_attr_i64(f, "peloid_checkpoint", meta, 8, 1);
+    bad |= pl_ckpt_attr_i64(f, "field_samples", &samples, 1, 1);
+    bad |= pl_ckpt_attr_i64(f, "colloid_count", &ncol, 1, 1);
+    hid_t g = pl_ckpt_group_create(f, "fluid");
     for (int d = 0; d < 3 && g >= 0; ++d) {
-        bad |= write_1d(g, rnames[d], H5_REAL, fl->r[d], fl->n);
-        bad |= write_1d(g, vnames[d], H5_REAL, fl->v[d], fl->n);
-        if (fl->tracked) bad |= write_1d(g, dnames[d], H5T_NATIVE_DOUBLE, fl->disp[d], fl->n);
+        bad |= pl_ckpt_write_1d(g, rnames[d], H5_REAL, fl->r[d], fl->n);
+        bad |= pl_ckpt_write_1d(g, vnames[d], H5_REAL, fl->v[d], fl->n);
+        if (fl->tracked) bad |= pl_ckpt_write_1d(g, dnames[d], H5T_NATIVE_DOUBLE, fl->disp[d], fl->n);
     }
-    if (fl->tracked && g >= 0) bad |= write_1d(g, "id", H5T_NATIVE_UINT32, fl->id, fl->n);
+    if (fl->tracked && g >= 0) bad |= pl_ckpt_write_1d(g, "id", H5T_NATIVE_UINT32, fl->id, fl->n);
     if (sim->field_acc) {
         size_t L3 = (size_t)sc->box.cells[0] * (size_t)sc->box.cells[1] * (size_t)sc->box.cells[2];
-        bad |= write_1d(f, "field_accumulator", H5T_NATIVE_INT64, sim->field_acc, 4 * L3);
+        bad |= pl_ckpt_write_1d(f, "field_accumulator", H5T_NATIVE_INT64, sim->field_acc, 4 * L3);
     }
     if (g >= 0) H5Gclose(g);
     else bad = 1;
+    if (sim->colloids) bad |= pl_ckpt_colloid_write(f, sim->colloids);
     if (H5Fclose(f) < 0) bad = 1;
     if (bad) return pl_err_set(err, PL_ERR_IO, "%s: writing the checkpoint failed", tmp);
     if (rename(tmp, path)) return pl_err_set(err, PL_ERR_IO, "%s: cannot rename to %s", tmp, path);
@@ -100,7 +119,7 @@ int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err)
     long long meta[8];
     pl_fluid_t *fl = &sim->fluid;
     const pl_scene_t *sc = &sim->scene;
-    if (attr_i64(f, "peloid_checkpoint", meta, 8, 0)) {
+    if (pl_ckpt_attr_i64(f, "peloid_checkpoint", meta, 8, 0)) {
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: not a peloid checkpoint", path);
         goto close;
     }
@@ -114,25 +133,41 @@ int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err)
                         fl->tracked, meta[7], sizeof(pl_real));
         goto close;
     }
+    /* fluid-only checkpoints written before colloids existed have no count */
+    long long ncol = 0, nscene = sim->colloids ? (long long)sim->colloids->n : 0;
+    if (H5Aexists(f, "colloid_count") > 0 && pl_ckpt_attr_i64(f, "colloid_count", &ncol, 1, 0)) {
+        rc = pl_err_set(err, PL_ERR_INPUT, "%s: unreadable attribute colloid_count", path);
+        goto close;
+    }
+    if (ncol != nscene) {
+        rc = pl_err_set(err, PL_ERR_INPUT,
+                        "%s: checkpoint does not match the scene: it holds %lld colloids, the scene "
+                        "has %lld (colloids.count)", path, ncol, nscene);
+        goto close;
+    }
     sim->step = meta[0];
-    int bad = attr_i64(f, "field_samples", &sim->field_samples, 1, 0);
+    int bad = pl_ckpt_attr_i64(f, "field_samples", &sim->field_samples, 1, 0);
     hid_t g = H5Gopen2(f, "fluid", H5P_DEFAULT);
     for (int d = 0; d < 3 && g >= 0; ++d) {
-        bad |= read_1d(g, rnames[d], H5_REAL, fl->r[d], fl->n);
-        bad |= read_1d(g, vnames[d], H5_REAL, fl->v[d], fl->n);
-        if (fl->tracked) bad |= read_1d(g, dnames[d], H5T_NATIVE_DOUBLE, fl->disp[d], fl->n);
+        bad |= pl_ckpt_read_1d(g, rnames[d], H5_REAL, fl->r[d], fl->n);
+        bad |= pl_ckpt_read_1d(g, vnames[d], H5_REAL, fl->v[d], fl->n);
+        if (fl->tracked) bad |= pl_ckpt_read_1d(g, dnames[d], H5T_NATIVE_DOUBLE, fl->disp[d], fl->n);
     }
-    if (fl->tracked && g >= 0) bad |= read_1d(g, "id", H5T_NATIVE_UINT32, fl->id, fl->n);
+    if (fl->tracked && g >= 0) bad |= pl_ckpt_read_1d(g, "id", H5T_NATIVE_UINT32, fl->id, fl->n);
     if (g >= 0) H5Gclose(g);
     else bad = 1;
     if (sim->field_acc) {
         size_t L3 = (size_t)sc->box.cells[0] * (size_t)sc->box.cells[1] * (size_t)sc->box.cells[2];
         if (H5Lexists(f, "field_accumulator", H5P_DEFAULT) > 0)
-            bad |= read_1d(f, "field_accumulator", H5T_NATIVE_INT64, sim->field_acc, 4 * L3);
+            bad |= pl_ckpt_read_1d(f, "field_accumulator", H5T_NATIVE_INT64, sim->field_acc, 4 * L3);
         else
             sim->field_samples = 0;
     }
-    if (bad) rc = pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint is incomplete or corrupt", path);
+    if (bad) {
+        rc = pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint is incomplete or corrupt", path);
+        goto close;
+    }
+    if (sim->colloids) rc = pl_ckpt_colloid_read(f, sim->colloids, sc, path, err);
 close:
     H5Fclose(f);
 out:

@@ -20,10 +20,11 @@ void pl_path_join(char *buf, size_t n, const char *dir, const char *name);
 FILE *pl_file_begin(const char *path, char *tmp, size_t ntmp, pl_err_t *err);
 int pl_file_commit(FILE *f, const char *tmp, const char *path, pl_err_t *err);
 
-/* HDF5 checkpoint of the complete dynamic state (src/checkpoint.c). */
+/* HDF5 checkpoint of the complete dynamic state: fluid (src/checkpoint.c)
+ * and colloids (src/checkpoint_colloid.c). */
 int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err);
 /* Loads a checkpoint into a sim created from the same scene: the scene's
- * seed, box and particle count must match. */
+ * seed, box, particle count and colloid count must match (else PL_ERR_INPUT). */
 int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err);
 
 /* Time-averaged fields in H5MD layout (src/fields_io.c). */
