@@ -35,8 +35,11 @@ typedef struct pl_colloid {
     double *rad, *mass, *inertia;
     long long md_step;
     double e0;             /* energy at the start (drift guard) */
-    /* per-step scratch */
-    double *fx, *fy, *fz, *tx, *ty, *tz, *zu, *epot;
+    /* forces and torques carry over between steps (velocity Verlet's second
+     * half kick, Brownian step): checkpointed too (src/checkpoint_colloid.c) */
+    double *fx, *fy, *fz, *tx, *ty, *tz;
+    /* per-step scratch, rebuilt by the next force evaluation */
+    double *zu, *epot;
     double *g_overlap, *g_omega2, *g_damp;
     int32_t *g_partner;
     pl_colloid_cells_t cells;
