@@ -33,7 +33,7 @@ int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err)
 pl_coupling_colloids_t pl_coupling_view(const pl_colloid_t *c)
 {
     pl_coupling_colloids_t v = {c->n, c->x, c->y, c->z, c->vx, c->vy, c->vz,
-                                c->wx, c->wy, c->wz, c->rad};
+                                c->wx, c->wy, c->wz, c->rad, c->mass, c->inertia};
     return v;
 }
 
@@ -107,9 +107,9 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         p->seed = cp->seed;
         size_t L3 = (size_t)sim->grid.L[0] * (size_t)sim->grid.L[1] * (size_t)sim->grid.L[2];
         cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t));
-        cp->acc = pl_alloc((size_t)cp->nthreads * nc * 6 * sizeof(int64_t) + 64);
+        cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t));
         cp->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t));
-        if (!cp->lk_start || !cp->acc || !cp->counts) rc = PL_ERR_NOMEM;
+        if (!cp->lk_start || !cp->found || !cp->counts) rc = PL_ERR_NOMEM;
         if (!rc && !(rc = pl_coupling_lookup_update(cp, sim, err))) clear_interiors(cp, sim);
     } else if (cp->method == PL_COUPLE_HECHT2) {
         pl_coupling2_params_t *p = &cp->p2;
@@ -143,7 +143,7 @@ void pl_coupling_free(pl_coupling_t *cp)
     if (!cp) return;
     pl_free(cp->lk_start);
     pl_free(cp->lk_list);
-    pl_free(cp->acc);
+    pl_free(cp->found);
     pl_free(cp->counts);
     free(cp->keys);
     free(cp->occ_cell);

@@ -9,8 +9,8 @@
 #include "peloid/coupling.h"
 #include "peloid/sim.h"
 
-/* Coupling I after stream+bin: reflections, then the summed fixed-point
- * impulses kick the colloids (V += P/M, w += L/I). */
+/* Coupling I after stream+bin: reflections with their impulses on the
+ * colloids, event counters. */
 int pl_coupling_stage_reflect(pl_sim_t *sim, pl_err_t *err)
 {
     pl_coupling_t *cp = sim->coupling;
@@ -19,25 +19,11 @@ int pl_coupling_stage_reflect(pl_sim_t *sim, pl_err_t *err)
     if (rc) return rc;
     cp->p1.step = (uint64_t)sim->step;
     pl_coupling_colloids_t v = pl_coupling_view(c);
-    pl_coupling1_reflect(&sim->fluid, &sim->grid, &cp->p1, &v, cp->lk_start, cp->lk_list, sim->hist,
-                         cp->nthreads, cp->acc, cp->counts);
-    const double unfix = ldexp(1.0, -PL_COUPLING_FIX_BITS);
-    for (size_t k = 0; k < c->n; ++k) {
-        int64_t s[6] = {0, 0, 0, 0, 0, 0};
-        for (int t = 0; t < cp->nthreads; ++t)
-            for (int j = 0; j < 6; ++j) s[j] += cp->acc[((size_t)t * c->n + k) * 6 + (size_t)j];
-        if (!(s[0] | s[1] | s[2] | s[3] | s[4] | s[5])) continue;
-        c->vx[k] += (double)s[0] * unfix / c->mass[k];
-        c->vy[k] += (double)s[1] * unfix / c->mass[k];
-        c->vz[k] += (double)s[2] * unfix / c->mass[k];
-        c->wx[k] += (double)s[3] * unfix / c->inertia[k];
-        c->wy[k] += (double)s[4] * unfix / c->inertia[k];
-        c->wz[k] += (double)s[5] * unfix / c->inertia[k];
-    }
-    for (int t = 0; t < cp->nthreads; ++t) {
-        cp->events += cp->counts[(size_t)t * 8];
-        cp->truncations += cp->counts[(size_t)t * 8 + 1];
-    }
+    double *const vel[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
+    pl_coupling1_reflect(&sim->fluid, &sim->grid, &cp->p1, &v, vel, cp->lk_start, cp->lk_list,
+                         sim->hist, cp->nthreads, cp->found, cp->counts);
+    cp->events += cp->counts[0];
+    cp->truncations += cp->counts[1];
     return 0;
 }
 

@@ -19,9 +19,10 @@ static const pl_key_t coupling_keys[] = {
           "collision of their cell with mass-weighted mean velocity (Hecht Sec. V, Eq. 15)"},
     {"boundary", PL_KEY_CHOICE, OFF(boundary), 0, 0, 0, boundary_choices,
      PL_BOUND_STICK_STOCHASTIC, NULL,
-     "-", "hecht1 surface rule in the frame of the surface: slip (new normal velocity from "
-          "Hecht Eq. 13, tangential kept: no torque), stick_stochastic (normal Eq. 13, "
-          "tangential Eq. 14 = PL Eqs. 20-21: force and torque), stick_bounce (v - U -> U - v)"},
+     "-", "hecht1 surface rule for the velocity g relative to the surface point: slip (new "
+          "normal g from Hecht Eq. 13, tangential kept: no torque), stick_stochastic (normal "
+          "Eq. 13, tangential Eq. 14 = PL Eqs. 20-21: force and torque), stick_bounce (g -> -g); "
+          "beta uses the contact's effective mass (m_f for heavy colloids)"},
     {"placement", PL_KEY_CHOICE, OFF(placement), 0, 0, 0, placement_choices, PL_PLACE_ENTRY, NULL,
      "-", "hecht1 restart point: nearest (method i: nearest surface point, then half a step "
           "with the new velocity), entry (method ii: back to the entry point, then the rest of "

@@ -26,7 +26,7 @@ typedef struct pl_coupling {
     pl_coupling1_params_t p1;
     int32_t *lk_start, *lk_list;
     size_t lk_cap;
-    int64_t *acc;        /* nthreads x ncolloids x 6 fixed-point impulses */
+    uint32_t *found;     /* fluid n: particles found inside (scratch) */
     uint64_t *counts;    /* nthreads x 8 */
     unsigned long long events, truncations; /* since the start of this run */
     /* coupling II */

@@ -13,7 +13,7 @@
 /* Colloid arrays the coupling kernels read (length n). */
 typedef struct {
     size_t n;
-    const double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *rad;
+    const double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *rad, *mass, *inertia;
 } pl_coupling_colloids_t;
 
 /* Collision cell of a point under the grid's current shift: the same formula
@@ -35,8 +35,6 @@ int32_t pl_coupling_inside(const pl_coupling_colloids_t *c, const int L[3], int 
                            double p[3]);
 
 /* ---- coupling I: reflection off colloid surfaces (coupling_reflect.c) -- */
-enum { PL_COUPLING_FIX_BITS = 36 }; /* fixed-point impulses: 2^-36 m_f a0/t0 */
-
 typedef struct {
     double dt;        /* collision step (the streaming that just happened) */
     double kT;        /* temperature of the thermal surface, Hecht Eqs. 13-14 */
@@ -47,18 +45,17 @@ typedef struct {
 } pl_coupling1_params_t;
 
 /* After stream+bin: every fluid particle found inside a colloid is moved out
- * and given a new velocity (Hecht Sec. IV), up to max_refl times; its cell
- * index and the owning thread's histogram row are updated, so the counting
- * sort that follows stays consistent.  Thread t handles pl_chunk(t) as in the
- * streaming.  The impulse given to colloid k (momentum 0..2, angular momentum
- * about its centre 3..5) is accumulated in 64-bit fixed point in
- * acc[(t * nc + k) * 6 + j] (integer sums: independent of the thread count);
- * the fluid velocity change is the same quantised impulse, so momentum is
- * conserved to round-off.  counts[t * 8 + 0] events, [t * 8 + 1] truncations. */
+ * and given a new velocity (Hecht Sec. IV), up to max_refl times; the colloid
+ * velocities vel = {vx, vy, vz, wx, wy, wz} (the arrays c points to) receive
+ * the opposite impulse and angular impulse.  The particle's cell index and
+ * the histogram row of the thread that streamed it (static chunks pl_chunk,
+ * as in the streaming) are updated, so the counting sort that follows stays
+ * consistent.  found: n scratch indices.  counts[0] events (reflections),
+ * counts[1] truncations (still inside after max_refl). */
 void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *p,
-                          const pl_coupling_colloids_t *c, const int32_t *lk_start,
-                          const int32_t *lk_list, uint32_t *hist, int nthreads, int64_t *acc,
-                          uint64_t *counts);
+                          const pl_coupling_colloids_t *c, double *const vel[6],
+                          const int32_t *lk_start, const int32_t *lk_list, uint32_t *hist,
+                          int nthreads, uint32_t *found, uint64_t *counts);
 
 /* ---- coupling II: colloids in the collision (coupling_collide.c) ------- */
 typedef struct {
