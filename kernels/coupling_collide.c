@@ -69,7 +69,7 @@ void pl_coupling2_save(const pl_fluid_t *f, const uint32_t *cell_start,
     const pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
     /* Occupied cells are independent: static split over cells (serial when
      * they are few: a parallel region would cost more than the work). */
-#pragma omp parallel for schedule(static) if (oc->nocc >= 64)
+#pragma omp parallel for schedule(static) if (oc->nocc >= 256)
     for (size_t j = 0; j < oc->nocc; ++j) {
         const uint32_t c = oc->occ_cell[j];
         double *w = vsave + 3 * oc->occ_save[j];
@@ -86,7 +86,7 @@ void pl_coupling2_collide(const pl_coupling2_params_t *p, const pl_coupling2_cel
                           const double *cmass, double *cvx, double *cvy, double *cvz)
 {
     pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
-#pragma omp parallel for schedule(static) if (oc->nocc >= 64)
+#pragma omp parallel for schedule(static) if (oc->nocc >= 256)
     for (size_t j = 0; j < oc->nocc; ++j) {
         const uint32_t c = oc->occ_cell[j];
         const uint32_t s = cell_start[c], e = cell_start[c + 1];
