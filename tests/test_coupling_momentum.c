@@ -83,3 +83,33 @@ Test(coupling_momentum, hecht2_heyes, .timeout = 120)
         cr_expect_lt(fabs(P[d] - P0[d]) / sqrt(M), TOL, "axis %d: %.3g", d, fabs(P[d] - P0[d]));
     pl_sim_free(sim);
 }
+
+/* Coupling I detects the right number of wall collisions: for a heavy colloid
+ * the rate is the kinetic-theory flux n sqrt(kT / 2 pi m_f) 4 pi R^2 per
+ * unit time (n the fluid density outside the colloids).  Tolerance 3%: the
+ * count is ~1.6e4 events (Poisson error 0.8%); a sphere test that misses
+ * grazing particles or counts a particle twice misses by more. */
+Test(coupling_momentum, hecht1_collision_rate, .timeout = 60)
+{
+    const char *text =
+        "seed = 17;\n"
+        "box: { cells = [16, 16, 16]; };\n"
+        "fluid: { density = 5.0; temperature = 1.0; };\n"
+        "srd: { dt = 0.1; };\n"
+        "colloids: { count = 8; radius = 2.0; mass_density = 1000.0; temperature = 1.0;\n"
+        "  init = \"lattice\"; pairs = \"\"; substeps = 1; };\n"
+        "coupling: { method = \"hecht1\"; boundary = \"slip\"; };\n";
+    long long steps = pl_test_quick() ? 20 : 200;
+    pl_sim_t *sim = pl_test_sim(text, 2);
+    pl_test_steps(sim, steps);
+    const double PI = 3.14159265358979323846, R = 2.0, L3 = 16.0 * 16.0 * 16.0;
+    double n_out = (double)sim->fluid.n / (L3 - 8.0 * 4.0 / 3.0 * PI * R * R * R);
+    double expect = n_out * sqrt(1.0 / (2.0 * PI)) * 4.0 * PI * R * R * 0.1 * 8.0 * (double)steps;
+    double got = (double)sim->coupling->events;
+    cr_log_info("coupling I events: %.0f, kinetic theory %.0f (%+.2f%%)", got, expect,
+                100.0 * (got / expect - 1.0));
+    if (!pl_test_quick())
+        cr_expect_lt(fabs(got / expect - 1.0), 0.03, "events %.0f vs flux %.0f", got, expect);
+    cr_expect_eq(sim->coupling->truncations, 0);
+    pl_sim_free(sim);
+}
