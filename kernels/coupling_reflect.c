@@ -178,20 +178,8 @@ void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_
                           int nthreads, uint32_t *found, uint64_t *counts)
 {
     /* Detection, the full pass, in parallel: thread t lists the particles of
-     * its static chunk (the one of the streaming) found inside a colloid in
-     * found[lo .. lo + count). */
-#pragma omp parallel num_threads(nthreads)
-    {
-        int t = omp_get_thread_num();
-        size_t lo, hi, m = 0;
-        pl_chunk(f->n, t, nthreads, &lo, &hi);
-        for (size_t i = lo; i < hi; ++i) {
-            double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, q[3];
-            if (pl_coupling_inside(c, g->L, g->walls_z, lk_start, lk_list, r, q) >= 0)
-                found[lo + m++] = (uint32_t)i;
-        }
-        counts[(size_t)t * 8 + 2] = m;
-    }
+     * its static chunk (the one of the streaming) found inside a colloid. */
+    pl_coupling_find(f, g, c, lk_start, lk_list, nthreads, found, counts);
     /* The events, serially in particle order: each sees the colloid velocity
      * left by the one before (collisions are sequential impulses; with a
      * stale velocity light colloids would overheat), and the order does not

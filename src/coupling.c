@@ -52,12 +52,14 @@ int pl_coupling_lookup_update(pl_coupling_t *cp, const pl_sim_t *sim, pl_err_t *
     }
 }
 
-/* Coupling I starts without fluid inside colloids: such particles get a new
- * uniform position (draws keyed by particle index: thread independent). */
-static void clear_interiors(pl_coupling_t *cp, pl_sim_t *sim)
+/* Couplings I and potential start without fluid inside colloids (radius R,
+ * or sigma_cf when rad is given): such particles get a new uniform position
+ * (draws keyed by particle index: thread independent). */
+static void clear_interiors(pl_coupling_t *cp, pl_sim_t *sim, const double *rad)
 {
     pl_fluid_t *f = &sim->fluid;
     pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
+    if (rad) v.rad = rad;
     const int *L = sim->grid.L;
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < f->n; ++i) {
@@ -94,6 +96,10 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
     }
     /* coupled colloids exchange energy with the fluid: no NVE drift guard */
     if (cp->method != PL_COUPLE_NONE) sim->colloids->nve = 0;
+    cp->pinned = cp->method != PL_COUPLE_NONE && sc->coupling.pinned;
+    if (cp->pinned) /* held fixed from the start */
+        for (size_t k = 0; k < nc; ++k)
+            col->vx[k] = col->vy[k] = col->vz[k] = col->wx[k] = col->wy[k] = col->wz[k] = 0.0;
     int rc = 0;
     if (cp->method == PL_COUPLE_HECHT1) {
         pl_coupling1_params_t *p = &cp->p1;
@@ -110,7 +116,7 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t));
         cp->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t));
         if (!cp->lk_start || !cp->found || !cp->counts) rc = PL_ERR_NOMEM;
-        if (!rc && !(rc = pl_coupling_lookup_update(cp, sim, err))) clear_interiors(cp, sim);
+        if (!rc && !(rc = pl_coupling_lookup_update(cp, sim, err))) clear_interiors(cp, sim, NULL);
     } else if (cp->method == PL_COUPLE_HECHT2) {
         pl_coupling2_params_t *p = &cp->p2;
         p->rule = sc->srd.rule;
@@ -128,6 +134,22 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         cp->vsave = pl_alloc(cp->save_cap * sizeof(double));
         if (!cp->keys || !cp->occ_cell || !cp->occ_save || !cp->occ_col || !cp->col_idx || !cp->vsave)
             rc = PL_ERR_NOMEM;
+    }
+    else if (cp->method == PL_COUPLE_POTENTIAL && !(rc = pl_coupling_potential_setup(cp, sim, err))) {
+        for (size_t k = 0; k < nc; ++k) cp->rad_big[k] = cp->wca.sigma;
+        pl_coupling_colloids_t v = pl_coupling_view(col);
+        v.rad = cp->rad_big;
+        size_t need;
+        while ((need = pl_coupling_lookup_build(&v, sim->grid.L, sim->grid.walls_z, cp->lk_start,
+                                                cp->lk_list, cp->lk_cap)) > cp->lk_cap) {
+            pl_free(cp->lk_list);
+            cp->lk_cap = need;
+            if (!(cp->lk_list = pl_alloc(need * sizeof(int32_t)))) {
+                rc = PL_ERR_NOMEM;
+                break;
+            }
+        }
+        if (!rc) clear_interiors(cp, sim, cp->rad_big);
     }
     if (rc) {
         pl_coupling_free(cp);
@@ -151,5 +173,10 @@ void pl_coupling_free(pl_coupling_t *cp)
     free(cp->occ_col);
     free(cp->col_idx);
     pl_free(cp->vsave);
+    free(cp->rad_big);
+    free(cp->cf);
+    free(cp->near_idx);
+    free(cp->near_owner);
+    free(cp->near_buf);
     free(cp);
 }

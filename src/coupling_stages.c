@@ -24,7 +24,20 @@ int pl_coupling_stage_reflect(pl_sim_t *sim, pl_err_t *err)
                          sim->hist, cp->nthreads, cp->found, cp->counts);
     cp->events += cp->counts[0];
     cp->truncations += cp->counts[1];
+    if (cp->pinned) pl_coupling_absorb_pinned(cp, c, sim->scene.srd.dt);
     return 0;
+}
+
+void pl_coupling_absorb_pinned(pl_coupling_t *cp, pl_colloid_t *c, double dt)
+{
+    for (size_t k = 0; k < c->n; ++k) { /* fixed order */
+        double *v[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
+        for (int j = 0; j < 6; ++j) {
+            cp->impulse[j] += (j < 3 ? c->mass[k] : c->inertia[k]) * v[j][k];
+            v[j][k] = 0.0;
+        }
+    }
+    cp->pinned_time += dt;
 }
 
 static int cmp_u64(const void *a, const void *b)
@@ -82,6 +95,7 @@ int pl_coupling_stage_collide(pl_sim_t *sim, pl_err_t *err)
     pl_coupling2_cells_t oc = {cp->nocc, cp->occ_cell, cp->occ_save, cp->occ_col, cp->col_idx};
     pl_coupling2_collide(&cp->p2, &oc, sim->cell_start, cp->vsave, &sim->fluid, c->mass, c->vx,
                          c->vy, c->vz);
+    if (cp->pinned) pl_coupling_absorb_pinned(cp, c, sim->scene.srd.dt);
     return 0;
 }
 

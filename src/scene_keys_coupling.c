@@ -8,7 +8,7 @@
 #define OFF(member) offsetof(pl_scene_t, coupling.member)
 #define N(a) (sizeof(a) / sizeof((a)[0]))
 
-static const char *const method_choices[] = {"none", "hecht1", "hecht2", NULL};
+static const char *const method_choices[] = {"none", "hecht1", "hecht2", "potential", NULL};
 static const char *const boundary_choices[] = {"slip", "stick_stochastic", "stick_bounce", NULL};
 static const char *const placement_choices[] = {"nearest", "entry", NULL};
 
@@ -16,7 +16,9 @@ static const pl_key_t coupling_keys[] = {
     {"method", PL_KEY_CHOICE, OFF(method), 0, 0, 0, method_choices, PL_COUPLE_NONE, NULL,
      "-", "none: colloids and fluid do not interact; hecht1: fluid particles that stream into a "
           "colloid are reflected off its surface (Hecht Sec. IV); hecht2: colloids join the SRD "
-          "collision of their cell with mass-weighted mean velocity (Hecht Sec. V, Eq. 15)"},
+          "collision of their cell with mass-weighted mean velocity (Hecht Sec. V, Eq. 15); "
+          "potential: WCA colloid-fluid forces (PL Eq. 17), integrated at the MD step for the "
+          "fluid particles near colloids (radial: slip, PL Sec. III.B)"},
     {"boundary", PL_KEY_CHOICE, OFF(boundary), 0, 0, 0, boundary_choices,
      PL_BOUND_STICK_STOCHASTIC, NULL,
      "-", "hecht1 surface rule for the velocity g relative to the surface point: slip (new "
@@ -39,6 +41,13 @@ static const pl_key_t coupling_keys[] = {
     {"drift_interval", PL_KEY_INT, OFF(drift_interval), 0, 1e15, 0, NULL, 0, NULL,
      "collision steps", "fully periodic box: remove the centre-of-mass velocity of fluid + "
                         "colloids every N steps (Hecht Sec. VIII.A; 0: never)"},
+    {"pinned", PL_KEY_BOOL, OFF(pinned), 0, 1, 0, NULL, 0, NULL,
+     "-", "colloids held fixed (zero velocity) in the flow, e.g. driven by fluid.body_force; "
+          "the mean force the fluid exerts on them is written to thermo.tsv (drag, PL Sec. V)"},
+    {"sigma_cf", PL_KEY_REAL, OFF(sigma_cf), 0, 1e3, 0, NULL, 0, NULL,
+     "a0", "potential: colloid-fluid diameter sigma_cf of PL Eq. 17 (0: colloids.radius)"},
+    {"epsilon_cf", PL_KEY_REAL, OFF(epsilon_cf), 0, 1e6, PL_KEY_MIN_OPEN, NULL, 2.5, NULL,
+     "kT_ref", "potential: epsilon_cf of PL Eq. 17 (PL: 2.5 kT)"},
 };
 
 const pl_section_t pl_scene_section_coupling = {"coupling", "colloid-solvent coupling "

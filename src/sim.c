@@ -115,11 +115,16 @@ static void build_plan(pl_sim_t *sim)
     if (sim->colloids) {
         if (sc->colloids.trajectory_interval > 0)
             add_stage(sim, "colloid-trajectory", stage_colloid_traj, sc->colloids.trajectory_interval);
-        add_stage(sim, "colloid-md", stage_colloid_md, 1);
+        /* pinned colloids do not move; the potential coupling runs the
+         * colloid MD together with the fluid near them */
+        if (!(sim->coupling && (sim->coupling->pinned || sim->coupling->method == PL_COUPLE_POTENTIAL)))
+            add_stage(sim, "colloid-md", stage_colloid_md, 1);
     }
     if (sim->fluid.n > 0) {
         int m = sim->coupling ? sim->coupling->method : PL_COUPLE_NONE;
+        if (m == PL_COUPLE_POTENTIAL) add_stage(sim, "potential-select", pl_coupling_stage_select, 1);
         add_stage(sim, "stream+bin", stage_stream, 1);
+        if (m == PL_COUPLE_POTENTIAL) add_stage(sim, "potential-md", pl_coupling_stage_potential_md, 1);
         if (m == PL_COUPLE_HECHT1) add_stage(sim, "coupling1-reflect", pl_coupling_stage_reflect, 1);
         add_stage(sim, "sort", stage_sort, 1);
         if (m == PL_COUPLE_HECHT2) add_stage(sim, "coupling2-save", pl_coupling_stage_save, 1);

@@ -1,7 +1,7 @@
 /* Coupling invariants in a periodic box without external forces: total
  * momentum of fluid + colloids is conserved to round-off by coupling I
- * (every surface rule and placement) and coupling II (with and without the
- * mass-weighted Heyes thermostat). */
+ * (every surface rule and placement), coupling II (with and without the
+ * mass-weighted Heyes thermostat) and the potential coupling (PL Eq. 17). */
 #include <math.h>
 #include <stdio.h>
 
@@ -66,6 +66,14 @@ Test(coupling_momentum, hecht2, .timeout = 120)
     double e = momentum_drift("method = \"hecht2\";", steps, 2);
     cr_log_info("momentum drift hecht2: %.3g", e);
     cr_expect_lt(e, TOL, "hecht2: |dP| / sqrt(M kT) = %.3g", e);
+}
+
+Test(coupling_momentum, potential, .timeout = 120)
+{
+    long long steps = pl_test_quick() ? 20 : 200;
+    double e = momentum_drift("method = \"potential\"; sigma_cf = 2.0;", steps, 2);
+    cr_log_info("momentum drift potential: %.3g", e);
+    cr_expect_lt(e, TOL, "potential: |dP| / sqrt(M kT) = %.3g", e);
 }
 
 Test(coupling_momentum, hecht2_heyes, .timeout = 120)

@@ -66,6 +66,11 @@ Test(coupling_system, bitwise_threads_hecht2, .timeout = 120)
     check_threads("method = \"hecht2\";");
 }
 
+Test(coupling_system, bitwise_threads_potential, .timeout = 120)
+{
+    check_threads("method = \"potential\"; sigma_cf = 2.0;");
+}
+
 /* |P| / sqrt(M kT) after each step; the colloids' weight per step is
  * sum M g dt = 8 * 335 * 0.02 * 0.1 ~ 5.4 in these units, i.e. ~0.1 of the
  * scale per step: a missing compensation fails at once. */

@@ -89,4 +89,26 @@ void pl_coupling2_collide(const pl_coupling2_params_t *p, const pl_coupling2_cel
                           const uint32_t *cell_start, const double *vsave, pl_fluid_t *f,
                           const double *cmass, double *cvx, double *cvy, double *cvz);
 
+/* ---- potential coupling (kernels/coupling_potential.c) ---------------- */
+/* Lists in found[lo .. lo + counts[t * 8 + 2]) the particles of thread t's
+ * static chunk (as in the streaming) that lie inside a colloid of c (whose
+ * rad may be enlarged radii).  Parallel, no atomics. */
+void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
+                      const int32_t *lk_start, const int32_t *lk_list, int nthreads,
+                      uint32_t *found, uint64_t *counts);
+
+typedef struct {
+    double sigma, eps; /* PL Eq. 17 */
+    int L[3], walls_z;
+} pl_coupling_wca_t;
+
+/* PL Eq. 17 forces between nn fluid particles (x, y, z) and the colloids
+ * (positions in c; candidates from the lookup built with radii >= the
+ * cut-off 2^{1/6} sigma): f overwritten, cf accumulated (+= the reaction).
+ * Serial in particle order (deterministic); returns the potential energy. */
+double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const double *x,
+                              const double *y, const double *z, double *fx, double *fy,
+                              double *fz, const pl_coupling_colloids_t *c, const int32_t *lk_start,
+                              const int32_t *lk_list, double *cfx, double *cfy, double *cfz);
+
 #endif
