@@ -23,6 +23,10 @@ int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err)
         return pl_scene_fail(scene, err, OFF(coupling.method), "coupling.method",
                              "a coupling needs colloids (colloids.count > 0) and fluid "
                              "(fluid.density > 0); allowed without them: \"none\"");
+    if (!cs->pinned && (cs->flow_velocity[0] != 0.0 || cs->flow_velocity[1] != 0.0 ||
+                        cs->flow_velocity[2] != 0.0))
+        return pl_scene_fail(scene, err, OFF(coupling.flow_velocity), "coupling.flow_velocity",
+                             "a held flow velocity needs coupling.pinned = true");
     if (scene->colloids.integrator != PL_CINT_VERLET)
         return pl_scene_fail(scene, err, OFF(coupling.method), "coupling.method",
                              "colloids.integrator = \"brownian\" already stands for the solvent; "

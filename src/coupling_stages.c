@@ -135,3 +135,18 @@ int pl_coupling_stage_drift(pl_sim_t *sim, pl_err_t *err)
     }
     return 0;
 }
+
+int pl_coupling_stage_flow(pl_sim_t *sim, pl_err_t *err)
+{
+    (void)err;
+    pl_fluid_obs_t o;
+    pl_fluid_t *f = &sim->fluid;
+    pl_srd_observe(f, sim->obs_scratch, &o);
+    double u[3];
+    for (int d = 0; d < 3; ++d)
+        u[d] = sim->scene.coupling.flow_velocity[d] - o.momentum[d] / (double)f->n;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < f->n; ++i)
+        for (int d = 0; d < 3; ++d) f->v[d][i] = (pl_real)(f->v[d][i] + u[d]);
+    return 0;
+}

@@ -44,6 +44,10 @@ static const pl_key_t coupling_keys[] = {
     {"pinned", PL_KEY_BOOL, OFF(pinned), 0, 1, 0, NULL, 0, NULL,
      "-", "colloids held fixed (zero velocity) in the flow, e.g. driven by fluid.body_force; "
           "the mean force the fluid exerts on them is written to thermo.tsv (drag, PL Sec. V)"},
+    {"flow_velocity", PL_KEY_REAL3, OFF(flow_velocity), -1e3, 1e3, 0, NULL, 0, NULL,
+     "a0 / t0", "pinned: the fluid's mean velocity is set to this value after every collision "
+                "step (the momentum the pinned colloids take is given back uniformly), so the "
+                "drag is measured at a set flow velocity v_inf (PL Eq. 39); 0: off"},
     {"sigma_cf", PL_KEY_REAL, OFF(sigma_cf), 0, 1e3, 0, NULL, 0, NULL,
      "a0", "potential: colloid-fluid diameter sigma_cf of PL Eq. 17 (0: colloids.radius)"},
     {"epsilon_cf", PL_KEY_REAL, OFF(epsilon_cf), 0, 1e6, PL_KEY_MIN_OPEN, NULL, 2.5, NULL,

@@ -134,6 +134,9 @@ static void build_plan(pl_sim_t *sim)
             add_stage(sim, "thermostat-rescale", stage_rescale, sc->thermostat.interval);
         if (sc->output.fields_interval > 0)
             add_stage(sim, "fields", stage_fields, sc->output.fields_interval);
+        const double *fv = sc->coupling.flow_velocity;
+        if (sim->coupling && sim->coupling->pinned && (fv[0] != 0.0 || fv[1] != 0.0 || fv[2] != 0.0))
+            add_stage(sim, "flow-hold", pl_coupling_stage_flow, 1);
         if (sim->coupling && sc->coupling.drift_interval > 0 && sc->box.walls_z == PL_WALLS_NONE)
             add_stage(sim, "drift-removal", pl_coupling_stage_drift, sc->coupling.drift_interval);
     }

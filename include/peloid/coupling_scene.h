@@ -22,6 +22,7 @@ typedef struct {
     int compensate_gravity;    /* Hecht Sec. VIII.A (iii) in periodic boxes */
     long long drift_interval;  /* collision steps between centre-of-mass drift removals */
     int pinned;                /* colloids held fixed; their impulse is measured (drag) */
+    double flow_velocity[3];   /* pinned: fluid mean velocity held at this value */
     double sigma_cf, epsilon_cf; /* PL Eq. 17 (sigma_cf 0: colloids.radius) */
 } pl_scene_coupling_t;
 
