@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "peloid/colloid.h"
+#include "peloid/coupling.h"
 #include "peloid/io.h"
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"
@@ -20,11 +21,19 @@ typedef struct {
     long long step_last_row;
 } writer_t;
 
-static void thermo_header(FILE *f, int tracked, int colloids)
+static void thermo_header(FILE *f, int tracked, int colloids, int reflect, int pinned)
 {
-    fprintf(f, "step\ttime\ttemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%smupdates_per_s\n",
+    fprintf(f, "step\ttime\ttemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%s%s%smupdates_per_s\n",
             tracked ? "msd\t" : "",
-            colloids ? "c_kin_trans\tc_kin_rot\tc_dlvo\tc_hertz\tc_wca\tc_wall\tc_gravity\tc_total\t" : "");
+            colloids ? "c_kin_trans\tc_kin_rot\tc_dlvo\tc_hertz\tc_wca\tc_wall\tc_gravity\tc_total\t" : "",
+            reflect ? "cpl_events\tcpl_truncations\t" : "",
+            pinned ? "cpl_drag_x\tcpl_drag_y\tcpl_drag_z\t" : "");
+}
+
+/* Coupling I counters (cumulative reflections and truncations, Hecht Sec. IV). */
+static int reflecting(const pl_sim_t *sim)
+{
+    return sim->coupling && sim->coupling->method == PL_COUPLE_HECHT1;
 }
 
 static void thermo_row(writer_t *w, const pl_sim_t *sim)
@@ -45,6 +54,14 @@ static void thermo_row(writer_t *w, const pl_sim_t *sim)
         fprintf(w->thermo, "%.10g\t%.10g\t", ce.kin_trans, ce.kin_rot);
         for (int k = 0; k < PL_CE_NTERMS; ++k) fprintf(w->thermo, "%.10g\t", ce.pot[k]);
         fprintf(w->thermo, "%.10g\t", ce.total);
+    }
+    if (reflecting(sim))
+        fprintf(w->thermo, "%llu\t%llu\t", sim->coupling->events, sim->coupling->truncations);
+    if (sim->coupling && sim->coupling->pinned) { /* mean force per pinned colloid so far */
+        const pl_coupling_t *cp = sim->coupling;
+        double s = cp->pinned_time > 0 ? 1.0 / (cp->pinned_time * (double)sim->colloids->n) : 0.0;
+        fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t", cp->impulse[0] * s, cp->impulse[1] * s,
+                cp->impulse[2] * s);
     }
     fprintf(w->thermo, "%.4g\n", rate);
     fflush(w->thermo);
@@ -154,7 +171,8 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         rc = pl_err_set(err, PL_ERR_IO, "%s: cannot write", path);
         goto done;
     }
-    thermo_header(w.thermo, sim->fluid.tracked, sim->colloids != NULL);
+    thermo_header(w.thermo, sim->fluid.tracked, sim->colloids != NULL, reflecting(sim),
+                  sim->coupling && sim->coupling->pinned);
     if (sim->colloids && scene->colloids.trajectory_interval > 0) {
         pl_path_join(path, sizeof path, w.dir, "colloids.h5");
         if ((rc = pl_colloid_traj_open(path, sim->colloids, 1, &sim->colloid_traj, err))) goto done;

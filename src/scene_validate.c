@@ -51,5 +51,6 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
         return pl_scene_fail(scene, err, OFF(output.fields_start), "output.fields_start",
                              "%lld is not before the last step %lld; no field sample would be taken",
                              scene->output.fields_start, scene->run.steps);
-    return pl_colloid_validate_scene(scene, err);
+    if (pl_colloid_validate_scene(scene, err)) return PL_ERR_INPUT;
+    return pl_coupling_validate_scene(scene, err);
 }

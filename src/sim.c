@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "peloid/colloid.h"
+#include "peloid/coupling.h"
 #include "peloid/sim.h"
 
 static const double PI = 3.14159265358979323846;
@@ -22,7 +23,8 @@ static int stage_stream(pl_sim_t *sim, pl_err_t *err)
     pl_stream_params_t p;
     memset(&p, 0, sizeof p);
     p.dt = sc->srd.dt;
-    for (int d = 0; d < 3; ++d) p.accel[d] = sc->fluid.body_force[d];
+    for (int d = 0; d < 3; ++d) /* + Hecht Sec. VIII.A (iii) compensation */
+        p.accel[d] = sc->fluid.body_force[d] + (sim->coupling ? sim->coupling->fluid_accel[d] : 0.0);
     memcpy(p.wall_u, sim->wall_u, sizeof p.wall_u);
     pl_srd_stream_bin(&sim->fluid, &sim->grid, &p, sim->hist, sim->nthreads);
     return 0;
@@ -113,16 +115,30 @@ static void build_plan(pl_sim_t *sim)
     if (sim->colloids) {
         if (sc->colloids.trajectory_interval > 0)
             add_stage(sim, "colloid-trajectory", stage_colloid_traj, sc->colloids.trajectory_interval);
-        add_stage(sim, "colloid-md", stage_colloid_md, 1);
+        /* pinned colloids do not move; the potential coupling runs the
+         * colloid MD together with the fluid near them */
+        if (!(sim->coupling && (sim->coupling->pinned || sim->coupling->method == PL_COUPLE_POTENTIAL)))
+            add_stage(sim, "colloid-md", stage_colloid_md, 1);
     }
     if (sim->fluid.n > 0) {
+        int m = sim->coupling ? sim->coupling->method : PL_COUPLE_NONE;
+        if (m == PL_COUPLE_POTENTIAL) add_stage(sim, "potential-select", pl_coupling_stage_select, 1);
         add_stage(sim, "stream+bin", stage_stream, 1);
+        if (m == PL_COUPLE_POTENTIAL) add_stage(sim, "potential-md", pl_coupling_stage_potential_md, 1);
+        if (m == PL_COUPLE_HECHT1) add_stage(sim, "coupling1-reflect", pl_coupling_stage_reflect, 1);
         add_stage(sim, "sort", stage_sort, 1);
+        if (m == PL_COUPLE_HECHT2) add_stage(sim, "coupling2-save", pl_coupling_stage_save, 1);
         add_stage(sim, "collide", stage_collide, 1);
+        if (m == PL_COUPLE_HECHT2) add_stage(sim, "coupling2-collide", pl_coupling_stage_collide, 1);
         if (sc->thermostat.type == PL_THERMO_RESCALE)
             add_stage(sim, "thermostat-rescale", stage_rescale, sc->thermostat.interval);
         if (sc->output.fields_interval > 0)
             add_stage(sim, "fields", stage_fields, sc->output.fields_interval);
+        const double *fv = sc->coupling.flow_velocity;
+        if (sim->coupling && sim->coupling->pinned && (fv[0] != 0.0 || fv[1] != 0.0 || fv[2] != 0.0))
+            add_stage(sim, "flow-hold", pl_coupling_stage_flow, 1);
+        if (sim->coupling && sc->coupling.drift_interval > 0 && sc->box.walls_z == PL_WALLS_NONE)
+            add_stage(sim, "drift-removal", pl_coupling_stage_drift, sc->coupling.drift_interval);
     }
 }
 
@@ -161,6 +177,12 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
         pl_sim_free(sim);
         return rc;
     }
+    if (sim->colloids && n > 0 &&
+        (scene->coupling.method != PL_COUPLE_NONE || scene->coupling.drift_interval > 0) &&
+        (rc = pl_coupling_create(sim, &sim->coupling, err))) {
+        pl_sim_free(sim);
+        return rc;
+    }
     build_plan(sim);
     *out = sim;
     return 0;
@@ -171,6 +193,7 @@ void pl_sim_free(pl_sim_t *sim)
     if (!sim) return;
     pl_fluid_free(&sim->fluid);
     pl_colloid_traj_close(sim->colloid_traj, NULL);
+    pl_coupling_free(sim->coupling);
     pl_colloid_free(sim->colloids);
     pl_free(sim->hist);
     pl_free(sim->cell_start);

@@ -12,6 +12,7 @@
 #include <stdint.h>
 
 #include "peloid/colloid_scene.h"
+#include "peloid/coupling_scene.h"
 #include "peloid/error.h"
 #include "peloid/mapping.h"
 
@@ -81,6 +82,7 @@ typedef struct pl_scene {
     pl_scene_output_t output;
     pl_scene_mapping_t mapping; /* physical{} + coarse_graining{} (mapping.h) */
     pl_scene_colloids_t colloids; /* colloid module (colloid_scene.h) */
+    pl_scene_coupling_t coupling; /* colloid-solvent coupling (coupling_scene.h) */
 } pl_scene_t;
 
 /* ---- schema ---------------------------------------------------------- */
@@ -125,6 +127,10 @@ extern const pl_section_t pl_scene_section_run, pl_scene_section_box, pl_scene_s
 extern const pl_section_t pl_scene_section_physical, pl_scene_section_coarse_graining;
 extern const pl_section_t pl_scene_section_colloids, pl_scene_section_dlvo, pl_scene_section_hertz,
     pl_scene_section_lubrication, pl_scene_section_wca;
+extern const pl_section_t pl_scene_section_coupling;
+
+/* Cross-key checks of the coupling section (src/coupling_scene.c). */
+int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err);
 
 /* Cross-key checks of the colloid sections (src/colloid_scene.c). */
 int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err);

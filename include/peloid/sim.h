@@ -44,6 +44,8 @@ struct pl_sim {
     /* colloids (NULL without; src/colloid_*.c) */
     struct pl_colloid *colloids;
     struct pl_colloid_traj *colloid_traj; /* opened by the run loop when wanted */
+    /* colloid-solvent coupling (NULL without; src/coupling*.c) */
+    struct pl_coupling *coupling;
     /* plan */
     pl_stage_t stages[PL_MAX_STAGES];
     int nstages;

@@ -1,0 +1,114 @@
+/* Colloid-solvent coupling kernels (kernels/coupling_*.c): pure functions of
+ * raw arrays, counts and small parameter structs; no scene, no I/O, no
+ * allocation.  Fluid mass m_f = 1 (the mass unit). */
+#ifndef PELOID_COUPLING_KERNELS_H
+#define PELOID_COUPLING_KERNELS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "peloid/fluid.h"
+#include "peloid/grid.h"
+
+/* Colloid arrays the coupling kernels read (length n). */
+typedef struct {
+    size_t n;
+    const double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *rad, *mass, *inertia;
+} pl_coupling_colloids_t;
+
+/* Collision cell of a point under the grid's current shift: the same formula
+ * as the fluid binning of kernels/srd_stream.c. */
+uint32_t pl_coupling_cell_of(const pl_grid_t *g, double x, double y, double z);
+
+/* ---- colloid lookup (kernels/coupling_lookup.c) ------------------------ */
+/* Unshifted unit cells over the box (L0 x L1 x L2); start[ncells + 1] and
+ * list[] (CSR) name, in index order, the colloids whose bounding cube touches
+ * each cell.  Returns the number of list entries needed; fills start/list
+ * only when that is <= cap (start is always filled). */
+size_t pl_coupling_lookup_build(const pl_coupling_colloids_t *c, const int L[3], int walls_z,
+                                int32_t *start, int32_t *list, size_t cap);
+
+/* Index of the first colloid (list order) that contains the point, or -1;
+ * *p receives the minimum-image vector point - centre. */
+int32_t pl_coupling_inside(const pl_coupling_colloids_t *c, const int L[3], int walls_z,
+                           const int32_t *start, const int32_t *list, const double r[3],
+                           double p[3]);
+
+/* ---- coupling I: reflection off colloid surfaces (coupling_reflect.c) -- */
+typedef struct {
+    double dt;        /* collision step (the streaming that just happened) */
+    double kT;        /* temperature of the thermal surface, Hecht Eqs. 13-14 */
+    int boundary;     /* PL_BOUND_* */
+    int placement;    /* PL_PLACE_* */
+    int max_refl;     /* N_max */
+    uint64_t seed, step;
+} pl_coupling1_params_t;
+
+/* After stream+bin: every fluid particle found inside a colloid is moved out
+ * and given a new velocity (Hecht Sec. IV), up to max_refl times; the colloid
+ * velocities vel = {vx, vy, vz, wx, wy, wz} (the arrays c points to) receive
+ * the opposite impulse and angular impulse.  The particle's cell index and
+ * the histogram row of the thread that streamed it (static chunks pl_chunk,
+ * as in the streaming) are updated, so the counting sort that follows stays
+ * consistent.  found: n scratch indices.  counts[0] events (reflections),
+ * counts[1] truncations (still inside after max_refl). */
+void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *p,
+                          const pl_coupling_colloids_t *c, double *const vel[6],
+                          const int32_t *lk_start, const int32_t *lk_list, uint32_t *hist,
+                          int nthreads, uint32_t *found, uint64_t *counts);
+
+/* ---- coupling II: colloids in the collision (coupling_collide.c) ------- */
+typedef struct {
+    int rule;            /* PL_RULE_* */
+    double cos_a, sin_a; /* random_axis rotation angle */
+    uint64_t seed, step;
+    int heyes;           /* mass-weighted Heyes thermostat this step (Hecht Sec. VIII.B) */
+    double kT_target, heyes_eps;
+} pl_coupling2_params_t;
+
+/* Cells holding colloids: occ_cell[j] (j < nocc) with the colloids
+ * col_idx[occ_col[j] .. occ_col[j+1]) and the fluid particles
+ * cell_start[c] .. cell_start[c+1] whose velocities were saved at
+ * vsave[3 * (occ_save[j] + i) + d]. */
+typedef struct {
+    size_t nocc;
+    const uint32_t *occ_cell;
+    const size_t *occ_save;
+    const int32_t *occ_col, *col_idx;
+} pl_coupling2_cells_t;
+
+/* Copies the pre-collision velocities of the fluid in the occupied cells. */
+void pl_coupling2_save(const pl_fluid_t *f, const uint32_t *cell_start,
+                       const pl_coupling2_cells_t *oc, double *vsave);
+
+/* Redoes the collision of every occupied cell from the saved fluid
+ * velocities and the colloid velocities with the mass-weighted mean velocity
+ * (Hecht Eq. 15) and writes both (the fluid kernel's result for these cells
+ * is overwritten).  One rotation per cell from its own random stream. */
+void pl_coupling2_collide(const pl_coupling2_params_t *p, const pl_coupling2_cells_t *oc,
+                          const uint32_t *cell_start, const double *vsave, pl_fluid_t *f,
+                          const double *cmass, double *cvx, double *cvy, double *cvz);
+
+/* ---- potential coupling (kernels/coupling_potential.c) ---------------- */
+/* Lists in found[lo .. lo + counts[t * 8 + 2]) the particles of thread t's
+ * static chunk (as in the streaming) that lie inside a colloid of c (whose
+ * rad may be enlarged radii).  Parallel, no atomics. */
+void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
+                      const int32_t *lk_start, const int32_t *lk_list, int nthreads,
+                      uint32_t *found, uint64_t *counts);
+
+typedef struct {
+    double sigma, eps; /* PL Eq. 17 */
+    int L[3], walls_z;
+} pl_coupling_wca_t;
+
+/* PL Eq. 17 forces between nn fluid particles (x, y, z) and the colloids
+ * (positions in c; candidates from the lookup built with radii >= the
+ * cut-off 2^{1/6} sigma): f overwritten, cf accumulated (+= the reaction).
+ * Serial in particle order (deterministic); returns the potential energy. */
+double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const double *x,
+                              const double *y, const double *z, double *fx, double *fy,
+                              double *fz, const pl_coupling_colloids_t *c, const int32_t *lk_start,
+                              const int32_t *lk_list, double *cfx, double *cfy, double *cfz);
+
+#endif

@@ -1,0 +1,29 @@
+/* Scene struct of the colloid-solvent coupling (section `coupling`; schema in
+ * src/scene_keys_coupling.c).  Included by scene.h; plain data only. */
+#ifndef PELOID_COUPLING_SCENE_H
+#define PELOID_COUPLING_SCENE_H
+
+/* PL_COUPLE_HECHT1: fluid particles reflected off colloid surfaces (Hecht
+ * Sec. IV); PL_COUPLE_HECHT2: colloids join the SRD collision of their cell
+ * (Hecht Sec. V); PL_COUPLE_POTENTIAL: WCA colloid-fluid forces integrated at
+ * the MD step for the fluid near colloids (PL Sec. III.A, Eq. 17). */
+enum { PL_COUPLE_NONE = 0, PL_COUPLE_HECHT1 = 1, PL_COUPLE_HECHT2 = 2, PL_COUPLE_POTENTIAL = 3 };
+/* Surface rule of coupling I (frame of the colloid surface). */
+enum { PL_BOUND_SLIP = 0, PL_BOUND_STICK_STOCHASTIC = 1, PL_BOUND_STICK_BOUNCE = 2 };
+/* Where a reflected particle restarts: Hecht Sec. IV methods (i) and (ii). */
+enum { PL_PLACE_NEAREST = 0, PL_PLACE_ENTRY = 1 };
+
+typedef struct {
+    int method;            /* PL_COUPLE_* */
+    int boundary;          /* PL_BOUND_* */
+    int placement;         /* PL_PLACE_* */
+    long long max_reflections; /* N_max of Hecht Sec. IV */
+    double wall_temperature;   /* kT of the thermal surface (0: thermostat / fluid kT) */
+    int compensate_gravity;    /* Hecht Sec. VIII.A (iii) in periodic boxes */
+    long long drift_interval;  /* collision steps between centre-of-mass drift removals */
+    int pinned;                /* colloids held fixed; their impulse is measured (drag) */
+    double flow_velocity[3];   /* pinned: fluid mean velocity held at this value */
+    double sigma_cf, epsilon_cf; /* PL Eq. 17 (sigma_cf 0: colloids.radius) */
+} pl_scene_coupling_t;
+
+#endif

@@ -1,0 +1,142 @@
+/* Coupling II (Hecht Sec. V): colloids join the SRD collision of the cell
+ * they are in.  For a cell with fluid particles (mass m_f = 1) and colloids
+ * (mass M_k) the mean velocity is mass weighted, Hecht Eq. 15:
+ *   u = sum_k m_k v_k / sum_k m_k,
+ * and every velocity is rotated about it, v_k -> u + zeta R (v_k - u)
+ * (Hecht Eq. 12), which conserves the cell's momentum for any matrix.
+ * zeta != 1 only with the Heyes thermostat, here mass weighted (Hecht Sec.
+ * VIII.B: "the mass is used as weight factor"): K = sum m_k (v_k - u)^2 / 2,
+ * 3 (N - 1) degrees of freedom for N bodies, acceptance Hecht Eq. 33.
+ *
+ * The fluid kernel (kernels/srd_collide.c) has already collided these cells
+ * without the colloids; their fluid velocities are recomputed here from the
+ * copy saved before it ran, so the fluid kernel stays untouched.  Wall ghost
+ * particles are not added in occupied cells.
+ *
+ * Random numbers: Philox (seed, PL_RNG_COUPLING + 0 / + 1), counter (step,
+ * cell).  Cells are independent and each owns its fluid and colloids: the
+ * result does not depend on the thread count. */
+#include <math.h>
+
+#include "peloid/coupling_kernels.h"
+#include "peloid/rng.h"
+#include "peloid/scene.h"
+
+/* Same two rules as the fluid collision (PL Eq. 3 / Hecht Sec. III). */
+static void rotation(const pl_coupling2_params_t *p, uint64_t cell, double R[3][3])
+{
+    pl_rand4_t r = pl_rng_uniform4(p->seed, PL_RNG_COUPLING + 0, p->step, cell, 0);
+    if (p->rule == PL_RULE_HECHT_AXES) {
+        int k = (int)(r.u[0] * 6.0);
+        if (k > 5) k = 5;
+        int a = k >> 1, b = (a + 1) % 3, c = (a + 2) % 3;
+        double s = (k & 1) ? -1.0 : 1.0;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) R[i][j] = 0.0;
+        R[a][a] = 1.0;
+        R[c][b] = s;
+        R[b][c] = -s;
+        return;
+    }
+    double cz = 2.0 * r.u[0] - 1.0, sz = sqrt(1.0 - cz * cz);
+    double phi = 6.283185307179586476925 * r.u[1];
+    double n[3] = {sz * cos(phi), sz * sin(phi), cz};
+    double ca = p->cos_a, sa = p->sin_a, oc = 1.0 - ca;
+    R[0][0] = ca + n[0] * n[0] * oc;
+    R[0][1] = n[0] * n[1] * oc - n[2] * sa;
+    R[0][2] = n[0] * n[2] * oc + n[1] * sa;
+    R[1][0] = n[1] * n[0] * oc + n[2] * sa;
+    R[1][1] = ca + n[1] * n[1] * oc;
+    R[1][2] = n[1] * n[2] * oc - n[0] * sa;
+    R[2][0] = n[2] * n[0] * oc - n[1] * sa;
+    R[2][1] = n[2] * n[1] * oc + n[0] * sa;
+    R[2][2] = ca + n[2] * n[2] * oc;
+}
+
+/* Mass-weighted Heyes factor (Hecht Eq. 33 with K = sum m (v-u)^2 / 2). */
+static double heyes_zeta(const pl_coupling2_params_t *p, uint64_t cell, size_t nbody, double K)
+{
+    pl_rand4_t r = pl_rng_uniform4(p->seed, PL_RNG_COUPLING + 1, p->step, cell, 0);
+    double eps = p->heyes_eps * r.u[0];
+    double zeta = r.u[1] < 0.5 ? 1.0 + eps : 1.0 / (1.0 + eps);
+    double log_acc = 3.0 * (double)(nbody - 1) * log(zeta) - (zeta * zeta - 1.0) * K / p->kT_target;
+    return (log_acc >= 0.0 || log(r.u[2]) < log_acc) ? zeta : 1.0;
+}
+
+void pl_coupling2_save(const pl_fluid_t *f, const uint32_t *cell_start,
+                       const pl_coupling2_cells_t *oc, double *vsave)
+{
+    const pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
+    /* Occupied cells are independent: static split over cells (serial when
+     * they are few: a parallel region would cost more than the work). */
+#pragma omp parallel for schedule(static) if (oc->nocc >= 256)
+    for (size_t j = 0; j < oc->nocc; ++j) {
+        const uint32_t c = oc->occ_cell[j];
+        double *w = vsave + 3 * oc->occ_save[j];
+        for (uint32_t i = cell_start[c]; i < cell_start[c + 1]; ++i, w += 3) {
+            w[0] = vx[i];
+            w[1] = vy[i];
+            w[2] = vz[i];
+        }
+    }
+}
+
+void pl_coupling2_collide(const pl_coupling2_params_t *p, const pl_coupling2_cells_t *oc,
+                          const uint32_t *cell_start, const double *vsave, pl_fluid_t *f,
+                          const double *cmass, double *cvx, double *cvy, double *cvz)
+{
+    pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
+#pragma omp parallel for schedule(static) if (oc->nocc >= 256)
+    for (size_t j = 0; j < oc->nocc; ++j) {
+        const uint32_t c = oc->occ_cell[j];
+        const uint32_t s = cell_start[c], e = cell_start[c + 1];
+        const double *w = vsave + 3 * oc->occ_save[j];
+        const int32_t k0 = oc->occ_col[j], k1 = oc->occ_col[j + 1];
+        const size_t nbody = (size_t)(e - s) + (size_t)(k1 - k0);
+        if (nbody < 2) continue;
+        double P[3] = {0.0, 0.0, 0.0}, mtot = (double)(e - s);
+        for (size_t i = 0; i < 3 * (size_t)(e - s); i += 3) {
+            P[0] += w[i];
+            P[1] += w[i + 1];
+            P[2] += w[i + 2];
+        }
+        for (int32_t q = k0; q < k1; ++q) {
+            int32_t k = oc->col_idx[q];
+            P[0] += cmass[k] * cvx[k];
+            P[1] += cmass[k] * cvy[k];
+            P[2] += cmass[k] * cvz[k];
+            mtot += cmass[k];
+        }
+        double u[3] = {P[0] / mtot, P[1] / mtot, P[2] / mtot}; /* Hecht Eq. 15 */
+        double R[3][3];
+        rotation(p, c, R);
+        if (p->heyes) {
+            double K2 = 0.0;
+            for (size_t i = 0; i < 3 * (size_t)(e - s); i += 3) {
+                double a = w[i] - u[0], b = w[i + 1] - u[1], cc = w[i + 2] - u[2];
+                K2 += a * a + b * b + cc * cc;
+            }
+            for (int32_t q = k0; q < k1; ++q) {
+                int32_t k = oc->col_idx[q];
+                double a = cvx[k] - u[0], b = cvy[k] - u[1], cc = cvz[k] - u[2];
+                K2 += cmass[k] * (a * a + b * b + cc * cc);
+            }
+            double zeta = heyes_zeta(p, c, nbody, 0.5 * K2);
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b) R[a][b] *= zeta;
+        }
+        for (uint32_t i = 0; i < e - s; ++i) { /* Hecht Eq. 12 */
+            double a = w[3 * i] - u[0], b = w[3 * i + 1] - u[1], cc = w[3 * i + 2] - u[2];
+            vx[s + i] = (pl_real)(u[0] + R[0][0] * a + R[0][1] * b + R[0][2] * cc);
+            vy[s + i] = (pl_real)(u[1] + R[1][0] * a + R[1][1] * b + R[1][2] * cc);
+            vz[s + i] = (pl_real)(u[2] + R[2][0] * a + R[2][1] * b + R[2][2] * cc);
+        }
+        for (int32_t q = k0; q < k1; ++q) {
+            int32_t k = oc->col_idx[q];
+            double a = cvx[k] - u[0], b = cvy[k] - u[1], cc = cvz[k] - u[2];
+            cvx[k] = u[0] + R[0][0] * a + R[0][1] * b + R[0][2] * cc;
+            cvy[k] = u[1] + R[1][0] * a + R[1][1] * b + R[1][2] * cc;
+            cvz[k] = u[2] + R[2][0] * a + R[2][1] * b + R[2][2] * cc;
+        }
+    }
+}

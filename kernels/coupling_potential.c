@@ -1,0 +1,74 @@
+/* Potential coupling (PL Sec. III.A): fluid particles near colloids feel the
+ * WCA repulsion of PL Eq. 17,
+ *   phi_cf(r) = 4 eps [(sigma/r)^12 - (sigma/r)^6 + 1/4],  r <= 2^{1/6} sigma,
+ * a radial force: slip surfaces (PL Sec. III.B).  Only the particles near a
+ * colloid are integrated at the MD step (src/coupling_potential.c); this
+ * file finds them (parallel over the streaming's static chunks) and
+ * evaluates the forces (serial, in particle order: each colloid's force is
+ * a fixed-order sum, so the result does not depend on the thread count). */
+#include <math.h>
+#include <omp.h>
+
+#include "peloid/coupling_kernels.h"
+#include "peloid/scene.h"
+#include "peloid/srd_kernels.h"
+
+void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
+                      const int32_t *lk_start, const int32_t *lk_list, int nthreads,
+                      uint32_t *found, uint64_t *counts)
+{
+#pragma omp parallel num_threads(nthreads)
+    {
+        int t = omp_get_thread_num();
+        size_t lo, hi, m = 0;
+        pl_chunk(f->n, t, nthreads, &lo, &hi);
+        for (size_t i = lo; i < hi; ++i) {
+            double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, q[3];
+            if (pl_coupling_inside(c, g->L, g->walls_z, lk_start, lk_list, r, q) >= 0)
+                found[lo + m++] = (uint32_t)i;
+        }
+        counts[(size_t)t * 8 + 2] = m;
+    }
+}
+
+double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const double *x,
+                              const double *y, const double *z, double *fx, double *fy,
+                              double *fz, const pl_coupling_colloids_t *c, const int32_t *lk_start,
+                              const int32_t *lk_list, double *cfx, double *cfy, double *cfz)
+{
+    const double s2 = w->sigma * w->sigma, rc2 = s2 * cbrt(2.0); /* (2^{1/6} sigma)^2 */
+    const int *L = w->L, zper = w->walls_z == PL_WALLS_NONE;
+    double epot = 0.0;
+    for (size_t j = 0; j < nn; ++j) {
+        double r[3] = {x[j], y[j], z[j]}, F[3] = {0.0, 0.0, 0.0};
+        int ic[3];
+        for (int d = 0; d < 3; ++d) {
+            double u = r[d] - L[d] * floor(r[d] / L[d]);
+            ic[d] = (int)floor(u);
+            if (ic[d] < 0) ic[d] = 0;
+            if (ic[d] >= L[d]) ic[d] = L[d] - 1;
+        }
+        size_t cell = ((size_t)ic[2] * (size_t)L[1] + (size_t)ic[1]) * (size_t)L[0] + (size_t)ic[0];
+        for (int32_t q = lk_start[cell]; q < lk_start[cell + 1]; ++q) {
+            int32_t k = lk_list[q];
+            double dv[3] = {r[0] - c->x[k], r[1] - c->y[k], r[2] - c->z[k]};
+            for (int a = 0; a < 3; ++a)
+                if (a < 2 || zper) dv[a] -= L[a] * nearbyint(dv[a] / L[a]);
+            double d2 = dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2];
+            if (d2 >= rc2) continue;
+            double sr6 = s2 / d2;
+            sr6 = sr6 * sr6 * sr6;
+            /* PL Eq. 17: F = 24 eps (2 (s/r)^12 - (s/r)^6) / r^2 * dv */
+            double ff = 24.0 * w->eps * (2.0 * sr6 * sr6 - sr6) / d2;
+            epot += 4.0 * w->eps * (sr6 * sr6 - sr6 + 0.25);
+            for (int a = 0; a < 3; ++a) F[a] += ff * dv[a];
+            cfx[k] -= ff * dv[0];
+            cfy[k] -= ff * dv[1];
+            cfz[k] -= ff * dv[2];
+        }
+        fx[j] = F[0];
+        fy[j] = F[1];
+        fz[j] = F[2];
+    }
+    return epot;
+}

@@ -1,0 +1,186 @@
+/* Coupling object: parameters from the scene, buffers of the coupling stages,
+ * the compensating fluid acceleration (Hecht Sec. VIII.A iii), the initial
+ * removal of fluid from colloid interiors (coupling I), and the cross-key
+ * checks of the coupling section. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "peloid/colloid.h"
+#include "peloid/coupling.h"
+#include "peloid/rng.h"
+#include "peloid/sim.h"
+
+static const double PI = 3.14159265358979323846;
+
+#define OFF(m) offsetof(pl_scene_t, m)
+
+int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err)
+{
+    const pl_scene_coupling_t *cs = &scene->coupling;
+    if (cs->method == PL_COUPLE_NONE) return 0;
+    if (scene->colloids.count == 0 || scene->fluid.density <= 0.0)
+        return pl_scene_fail(scene, err, OFF(coupling.method), "coupling.method",
+                             "a coupling needs colloids (colloids.count > 0) and fluid "
+                             "(fluid.density > 0); allowed without them: \"none\"");
+    if (!cs->pinned && (cs->flow_velocity[0] != 0.0 || cs->flow_velocity[1] != 0.0 ||
+                        cs->flow_velocity[2] != 0.0))
+        return pl_scene_fail(scene, err, OFF(coupling.flow_velocity), "coupling.flow_velocity",
+                             "a held flow velocity needs coupling.pinned = true");
+    if (scene->colloids.integrator != PL_CINT_VERLET)
+        return pl_scene_fail(scene, err, OFF(coupling.method), "coupling.method",
+                             "colloids.integrator = \"brownian\" already stands for the solvent; "
+                             "a coupling needs \"verlet\"");
+    return 0;
+}
+
+pl_coupling_colloids_t pl_coupling_view(const pl_colloid_t *c)
+{
+    pl_coupling_colloids_t v = {c->n, c->x, c->y, c->z, c->vx, c->vy, c->vz,
+                                c->wx, c->wy, c->wz, c->rad, c->mass, c->inertia};
+    return v;
+}
+
+/* Grows the lookup to hold its entries; 0 or PL_ERR_NOMEM. */
+int pl_coupling_lookup_update(pl_coupling_t *cp, const pl_sim_t *sim, pl_err_t *err)
+{
+    pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
+    for (;;) {
+        size_t need = pl_coupling_lookup_build(&v, sim->grid.L, sim->grid.walls_z, cp->lk_start,
+                                               cp->lk_list, cp->lk_cap);
+        if (need <= cp->lk_cap) return 0;
+        pl_free(cp->lk_list);
+        cp->lk_cap = need + need / 2 + 64;
+        if (!(cp->lk_list = pl_alloc(cp->lk_cap * sizeof(int32_t))))
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloid lookup");
+    }
+}
+
+/* Couplings I and potential start without fluid inside colloids (radius R,
+ * or sigma_cf when rad is given): such particles get a new uniform position
+ * (draws keyed by particle index: thread independent). */
+static void clear_interiors(pl_coupling_t *cp, pl_sim_t *sim, const double *rad)
+{
+    pl_fluid_t *f = &sim->fluid;
+    pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
+    if (rad) v.rad = rad;
+    const int *L = sim->grid.L;
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < f->n; ++i) {
+        double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, p[3];
+        for (uint64_t draw = 0; draw < 1000; ++draw) {
+            if (pl_coupling_inside(&v, L, sim->grid.walls_z, cp->lk_start, cp->lk_list, r, p) < 0)
+                break;
+            pl_rand4_t u = pl_rng_uniform4(cp->seed, PL_RNG_COUPLING + 3, 0, i, draw);
+            for (int d = 0; d < 3; ++d) {
+                r[d] = u.u[d] * L[d];
+                if (r[d] >= L[d]) r[d] = 0.0;
+            }
+        }
+        for (int d = 0; d < 3; ++d) f->r[d][i] = (pl_real)r[d];
+    }
+}
+
+int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
+{
+    const pl_scene_t *sc = &sim->scene;
+    pl_colloid_t *col = sim->colloids;
+    *out = NULL;
+    pl_coupling_t *cp = calloc(1, sizeof *cp);
+    if (!cp) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
+    cp->method = sc->coupling.method;
+    cp->nthreads = sim->nthreads;
+    cp->seed = (uint64_t)sc->run.seed;
+    size_t nc = col ? col->n : 0;
+    /* Hecht Sec. VIII.A (iii): the fluid carries minus the colloids' weight */
+    if (col && cp->method != PL_COUPLE_NONE && sc->coupling.compensate_gravity && sc->box.walls_z == PL_WALLS_NONE && sim->fluid.n > 0) {
+        double M = 0.0;
+        for (size_t k = 0; k < nc; ++k) M += col->mass[k];
+        for (int d = 0; d < 3; ++d) cp->fluid_accel[d] = -sc->colloids.gravity[d] * M / (double)sim->fluid.n;
+    }
+    /* coupled colloids exchange energy with the fluid: no NVE drift guard */
+    if (cp->method != PL_COUPLE_NONE) sim->colloids->nve = 0;
+    cp->pinned = cp->method != PL_COUPLE_NONE && sc->coupling.pinned;
+    if (cp->pinned) /* held fixed from the start */
+        for (size_t k = 0; k < nc; ++k)
+            col->vx[k] = col->vy[k] = col->vz[k] = col->wx[k] = col->wy[k] = col->wz[k] = 0.0;
+    int rc = 0;
+    if (cp->method == PL_COUPLE_HECHT1) {
+        pl_coupling1_params_t *p = &cp->p1;
+        p->dt = sc->srd.dt;
+        p->kT = sc->coupling.wall_temperature > 0.0 ? sc->coupling.wall_temperature
+                : sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature
+                                                        : sc->fluid.temperature;
+        p->boundary = sc->coupling.boundary;
+        p->placement = sc->coupling.placement;
+        p->max_refl = (int)sc->coupling.max_reflections;
+        p->seed = cp->seed;
+        size_t L3 = (size_t)sim->grid.L[0] * (size_t)sim->grid.L[1] * (size_t)sim->grid.L[2];
+        cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t));
+        cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t));
+        cp->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t));
+        if (!cp->lk_start || !cp->found || !cp->counts) rc = PL_ERR_NOMEM;
+        if (!rc && !(rc = pl_coupling_lookup_update(cp, sim, err))) clear_interiors(cp, sim, NULL);
+    } else if (cp->method == PL_COUPLE_HECHT2) {
+        pl_coupling2_params_t *p = &cp->p2;
+        p->rule = sc->srd.rule;
+        p->cos_a = cos(sc->srd.alpha_deg * PI / 180.0);
+        p->sin_a = sin(sc->srd.alpha_deg * PI / 180.0);
+        p->seed = cp->seed;
+        p->kT_target = sc->thermostat.temperature;
+        p->heyes_eps = sc->thermostat.heyes_epsilon;
+        cp->keys = malloc((nc + 1) * sizeof *cp->keys);
+        cp->occ_cell = malloc((nc + 1) * sizeof *cp->occ_cell);
+        cp->occ_save = malloc((nc + 1) * sizeof *cp->occ_save);
+        cp->occ_col = malloc((nc + 1) * sizeof *cp->occ_col);
+        cp->col_idx = malloc((nc + 1) * sizeof *cp->col_idx);
+        cp->save_cap = 3 * (nc * (size_t)(4.0 * sc->fluid.density + 16.0) + 64);
+        cp->vsave = pl_alloc(cp->save_cap * sizeof(double));
+        if (!cp->keys || !cp->occ_cell || !cp->occ_save || !cp->occ_col || !cp->col_idx || !cp->vsave)
+            rc = PL_ERR_NOMEM;
+    }
+    else if (cp->method == PL_COUPLE_POTENTIAL && !(rc = pl_coupling_potential_setup(cp, sim, err))) {
+        for (size_t k = 0; k < nc; ++k) cp->rad_big[k] = cp->wca.sigma;
+        pl_coupling_colloids_t v = pl_coupling_view(col);
+        v.rad = cp->rad_big;
+        size_t need;
+        while ((need = pl_coupling_lookup_build(&v, sim->grid.L, sim->grid.walls_z, cp->lk_start,
+                                                cp->lk_list, cp->lk_cap)) > cp->lk_cap) {
+            pl_free(cp->lk_list);
+            cp->lk_cap = need;
+            if (!(cp->lk_list = pl_alloc(need * sizeof(int32_t)))) {
+                rc = PL_ERR_NOMEM;
+                break;
+            }
+        }
+        if (!rc) clear_interiors(cp, sim, cp->rad_big);
+    }
+    if (rc) {
+        pl_coupling_free(cp);
+        if (rc == PL_ERR_NOMEM && !err->code) return pl_err_set(err, rc, "out of memory for the coupling");
+        return rc;
+    }
+    *out = cp;
+    return 0;
+}
+
+void pl_coupling_free(pl_coupling_t *cp)
+{
+    if (!cp) return;
+    pl_free(cp->lk_start);
+    pl_free(cp->lk_list);
+    pl_free(cp->found);
+    pl_free(cp->counts);
+    free(cp->keys);
+    free(cp->occ_cell);
+    free(cp->occ_save);
+    free(cp->occ_col);
+    free(cp->col_idx);
+    pl_free(cp->vsave);
+    free(cp->rad_big);
+    free(cp->cf);
+    free(cp->near_idx);
+    free(cp->near_owner);
+    free(cp->near_buf);
+    free(cp);
+}

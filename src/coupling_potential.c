@@ -1,0 +1,229 @@
+/* Potential coupling (PL Sec. III.A, Eq. 17): the fluid particles within the
+ * cut-off 2^{1/6} sigma_cf + margin of a colloid at the start of a collision
+ * step are selected; streaming moves every particle as usual, then the
+ * selected ones are put back and integrated together with the colloids by
+ * velocity Verlet at the MD step (PL Eqs. 18-19), feeling PL Eq. 17 (and the
+ * fluid body force); the rest of the fluid never sees the MD step.  The
+ * margin (8 thermal speeds x dt + 0.1) makes it very unlikely that an
+ * unselected particle reaches the cut-off within the step.
+ *
+ * Determinism: selection is parallel over the streaming's static chunks and
+ * gathered in particle order; the MD of the selected particles is serial.
+ * Momentum: equal and opposite forces in the same Verlet kicks. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "peloid/colloid.h"
+#include "peloid/coupling.h"
+#include "peloid/sim.h"
+
+int pl_coupling_potential_setup(pl_coupling_t *cp, pl_sim_t *sim, pl_err_t *err)
+{
+    const pl_scene_t *sc = &sim->scene;
+    const pl_colloid_t *c = sim->colloids;
+    cp->wca.sigma = sc->coupling.sigma_cf > 0.0 ? sc->coupling.sigma_cf : sc->colloids.radius;
+    cp->wca.eps = sc->coupling.epsilon_cf;
+    for (int d = 0; d < 3; ++d) cp->wca.L[d] = sim->grid.L[d];
+    cp->wca.walls_z = sim->grid.walls_z;
+    double kT = fmax(sc->fluid.temperature, sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature : 0.0);
+    cp->margin = 8.0 * sqrt(kT) * sc->srd.dt + 0.1;
+    cp->rad_big = malloc((c->n + 1) * sizeof(double));
+    cp->cf = malloc(3 * (c->n + 1) * sizeof(double));
+    cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t));
+    cp->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t));
+    size_t L3 = (size_t)sim->grid.L[0] * (size_t)sim->grid.L[1] * (size_t)sim->grid.L[2];
+    cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t));
+    if (!cp->rad_big || !cp->cf || !cp->found || !cp->counts || !cp->lk_start)
+        return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the potential coupling");
+    return 0;
+}
+
+static pl_coupling_colloids_t big_view(const pl_coupling_t *cp, const pl_colloid_t *c)
+{
+    pl_coupling_colloids_t v = pl_coupling_view(c);
+    v.rad = cp->rad_big;
+    return v;
+}
+
+/* Lookup with the selection radii around the current colloid positions. */
+static int lookup_big(pl_coupling_t *cp, const pl_sim_t *sim, pl_err_t *err)
+{
+    const pl_colloid_t *c = sim->colloids;
+    double rc = cp->wca.sigma * pow(2.0, 1.0 / 6.0);
+    for (size_t k = 0; k < c->n; ++k) cp->rad_big[k] = rc + cp->margin;
+    pl_coupling_colloids_t v = big_view(cp, c);
+    for (;;) {
+        size_t need = pl_coupling_lookup_build(&v, sim->grid.L, sim->grid.walls_z, cp->lk_start,
+                                               cp->lk_list, cp->lk_cap);
+        if (need <= cp->lk_cap) return 0;
+        pl_free(cp->lk_list);
+        cp->lk_cap = need + need / 2 + 64;
+        if (!(cp->lk_list = pl_alloc(cp->lk_cap * sizeof(int32_t))))
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloid lookup");
+    }
+}
+
+#define NB(cp, a) ((cp)->near_buf + (size_t)(a) * (cp)->near_cap)
+
+int pl_coupling_stage_select(pl_sim_t *sim, pl_err_t *err)
+{
+    pl_coupling_t *cp = sim->coupling;
+    pl_fluid_t *f = &sim->fluid;
+    int rc = lookup_big(cp, sim, err);
+    if (rc) return rc;
+    pl_coupling_colloids_t v = big_view(cp, sim->colloids);
+    pl_coupling_find(f, &sim->grid, &v, cp->lk_start, cp->lk_list, cp->nthreads, cp->found, cp->counts);
+    size_t nn = 0;
+    for (int t = 0; t < cp->nthreads; ++t) nn += cp->counts[(size_t)t * 8 + 2];
+    if (nn > cp->near_cap) {
+        free(cp->near_idx);
+        free(cp->near_owner);
+        free(cp->near_buf);
+        cp->near_cap = nn + nn / 2 + 256;
+        cp->near_idx = malloc(cp->near_cap * sizeof *cp->near_idx);
+        cp->near_owner = malloc(cp->near_cap * sizeof *cp->near_owner);
+        cp->near_buf = malloc(12 * cp->near_cap * sizeof *cp->near_buf);
+        if (!cp->near_idx || !cp->near_owner || !cp->near_buf)
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for %zu near-colloid particles", nn);
+    }
+    size_t j = 0;
+    for (int t = 0; t < cp->nthreads; ++t) {
+        size_t lo, hi;
+        pl_chunk(f->n, t, cp->nthreads, &lo, &hi);
+        for (size_t q = 0; q < cp->counts[(size_t)t * 8 + 2]; ++q, ++j) {
+            size_t i = cp->found[lo + q];
+            cp->near_idx[j] = (uint32_t)i;
+            cp->near_owner[j] = t;
+            for (int d = 0; d < 3; ++d) {
+                NB(cp, d)[j] = f->r[d][i];
+                NB(cp, 3 + d)[j] = f->v[d][i];
+                NB(cp, 9 + d)[j] = f->tracked ? f->disp[d][i] : 0.0;
+            }
+        }
+    }
+    cp->nnear = nn;
+    cp->near_total += nn;
+    return 0;
+}
+
+/* Fluid forces on the selected particles and the colloids (the colloids'
+ * own forces recomputed first). */
+static void forces(pl_coupling_t *cp, pl_colloid_t *c)
+{
+    if (!cp->pinned) pl_colloid_forces(c);
+    memset(cp->cf, 0, 3 * c->n * sizeof(double));
+    pl_coupling_colloids_t v = big_view(cp, c);
+    size_t nn = cp->nnear;
+    cp->epot_cf = pl_coupling_wca_forces(&cp->wca, nn, NB(cp, 0), NB(cp, 1), NB(cp, 2), NB(cp, 6),
+                                         NB(cp, 7), NB(cp, 8), &v, cp->lk_start, cp->lk_list,
+                                         cp->cf, cp->cf + c->n, cp->cf + 2 * c->n);
+    if (cp->pinned) return;
+    for (size_t k = 0; k < c->n; ++k) {
+        c->fx[k] += cp->cf[k];
+        c->fy[k] += cp->cf[c->n + k];
+        c->fz[k] += cp->cf[2 * c->n + k];
+    }
+}
+
+/* v += h (F + g) for the selected particles (m_f = 1). */
+static void kick_fluid(pl_coupling_t *cp, double h, const double g[3])
+{
+    for (int d = 0; d < 3; ++d) {
+        double *v = NB(cp, 3 + d);
+        const double *F = NB(cp, 6 + d);
+        for (size_t j = 0; j < cp->nnear; ++j) v[j] += h * (F[j] + g[d]);
+    }
+}
+
+/* r += v dt, with wall reflection in z (bounce-back for no-slip, specular
+ * for slip, as the streaming does); the displacement is accumulated. */
+static void drift_fluid(pl_coupling_t *cp, const pl_sim_t *sim, double dt)
+{
+    const int walls = sim->grid.walls_z, noslip = walls == PL_WALLS_NOSLIP;
+    const double Lz = sim->grid.L[2];
+    for (size_t j = 0; j < cp->nnear; ++j) {
+        double r0z = NB(cp, 2)[j];
+        for (int d = 0; d < 3; ++d) {
+            NB(cp, d)[j] += NB(cp, 3 + d)[j] * dt;
+            NB(cp, 9 + d)[j] += NB(cp, 3 + d)[j] * dt;
+        }
+        double *z = &NB(cp, 2)[j];
+        if (walls != PL_WALLS_NONE && (*z < 0.0 || *z > Lz)) {
+            int top = *z > Lz;
+            double zw = top ? Lz : 0.0;
+            NB(cp, 11)[j] -= *z - r0z;
+            *z = 2.0 * zw - *z;
+            NB(cp, 11)[j] += *z - r0z;
+            if (noslip)
+                for (int d = 0; d < 3; ++d) NB(cp, 3 + d)[j] = 2.0 * sim->wall_u[top][d] - NB(cp, 3 + d)[j];
+            else
+                NB(cp, 5)[j] = -NB(cp, 5)[j];
+        }
+    }
+}
+
+int pl_coupling_stage_potential_md(pl_sim_t *sim, pl_err_t *err)
+{
+    pl_coupling_t *cp = sim->coupling;
+    pl_colloid_t *c = sim->colloids;
+    pl_fluid_t *f = &sim->fluid;
+    const pl_scene_t *sc = &sim->scene;
+    double g[3];
+    for (int d = 0; d < 3; ++d) g[d] = sc->fluid.body_force[d] + cp->fluid_accel[d];
+    /* undo the free streaming of the selected particles */
+    for (size_t j = 0; j < cp->nnear; ++j) {
+        size_t i = cp->near_idx[j];
+        if (f->tracked)
+            for (int d = 0; d < 3; ++d) f->disp[d][i] = NB(cp, 9 + d)[j];
+    }
+    const double dtm = c->dt, h = 0.5 * dtm;
+    forces(cp, c);
+    for (int s = 0; s < c->substeps; ++s) { /* PL Eqs. 18-19 */
+        if (!cp->pinned) {
+            pl_colloid_kick(c->n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
+                            c->vx, c->vy, c->vz, c->wx, c->wy, c->wz);
+            pl_colloid_drift(c->n, dtm, c->box, c->periodic, c->x, c->y, c->z, c->ix, c->iy, c->iz,
+                             c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3);
+        }
+        kick_fluid(cp, h, g);
+        drift_fluid(cp, sim, dtm);
+        if (cp->pinned) /* impulse of the fluid force over this MD step (trapezoid) */
+            for (size_t k = 0; k < c->n; ++k)
+                for (int d = 0; d < 3; ++d) cp->impulse[d] += h * cp->cf[(size_t)d * c->n + k];
+        forces(cp, c);
+        if (cp->pinned)
+            for (size_t k = 0; k < c->n; ++k)
+                for (int d = 0; d < 3; ++d) cp->impulse[d] += h * cp->cf[(size_t)d * c->n + k];
+        kick_fluid(cp, h, g);
+        if (!cp->pinned) {
+            pl_colloid_kick(c->n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
+                            c->vx, c->vy, c->vz, c->wx, c->wy, c->wz);
+            c->md_step++;
+            int rc = pl_colloid_guard(c, 0, err);
+            if (rc) return rc;
+        }
+    }
+    if (cp->pinned) cp->pinned_time += sc->srd.dt;
+    /* write the selected particles back, wrapped, into their new cells */
+    const double L[3] = {sim->grid.L[0], sim->grid.L[1], sim->grid.L[2]};
+    for (size_t j = 0; j < cp->nnear; ++j) {
+        size_t i = cp->near_idx[j];
+        for (int d = 0; d < 3; ++d) {
+            double x = NB(cp, d)[j];
+            if (d < 2 || sim->grid.walls_z == PL_WALLS_NONE) {
+                x -= L[d] * floor(x / L[d]);
+                if (x >= L[d]) x = 0.0;
+            }
+            f->r[d][i] = (pl_real)x;
+            f->v[d][i] = (pl_real)NB(cp, 3 + d)[j];
+            if (f->tracked) f->disp[d][i] = NB(cp, 9 + d)[j];
+        }
+        uint32_t cell = pl_coupling_cell_of(&sim->grid, f->r[0][i], f->r[1][i], f->r[2][i]);
+        uint32_t *hrow = sim->hist + (size_t)cp->near_owner[j] * sim->grid.ncells;
+        hrow[f->cell[i]]--;
+        hrow[cell]++;
+        f->cell[i] = cell;
+    }
+    return 0;
+}

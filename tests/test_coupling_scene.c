@@ -1,0 +1,87 @@
+/* The coupling section of the scene: defaults, choices, cross-key checks
+ * (a coupling needs colloids and fluid, and the Verlet integrator), unknown
+ * keys refused; the plan holds exactly the stages the coupling needs. */
+#include <string.h>
+
+#include "peloid/coupling.h"
+#include "support.h"
+
+static int load(const char *text, pl_scene_t *s, pl_err_t *err)
+{
+    return pl_scene_load_string(text, "test.cfg", s, err);
+}
+
+static const char *COLL = "box: { cells = [12, 12, 12]; };\n"
+                          "colloids: { count = 8; radius = 2.0; init = \"lattice\"; };\n";
+
+Test(coupling_scene, defaults)
+{
+    pl_scene_t s;
+    pl_err_t err = {0, ""};
+    cr_assert_eq(load("", &s, &err), 0, "%s", err.msg);
+    cr_expect_eq(s.coupling.method, PL_COUPLE_NONE);
+    cr_expect_eq(s.coupling.boundary, PL_BOUND_STICK_STOCHASTIC);
+    cr_expect_eq(s.coupling.placement, PL_PLACE_ENTRY);
+    cr_expect_eq(s.coupling.max_reflections, 10);
+    cr_expect_eq(s.coupling.compensate_gravity, 1);
+    cr_expect_eq(s.coupling.drift_interval, 0);
+}
+
+Test(coupling_scene, refused)
+{
+    pl_scene_t s;
+    pl_err_t err = {0, ""};
+    cr_expect_neq(load("coupling: { method = \"hecht3\"; };", &s, &err), 0);
+    cr_expect(strstr(err.msg, "coupling.method") != NULL, "%s", err.msg);
+    cr_expect_neq(load("coupling: { metod = \"hecht1\"; };", &s, &err), 0);
+    cr_expect_neq(load("coupling: { max_reflections = 0; };", &s, &err), 0);
+    cr_expect_neq(load("coupling: { method = \"hecht1\"; };", &s, &err), 0, "no colloids");
+    cr_expect(strstr(err.msg, "colloids") != NULL, "%s", err.msg);
+    char text[1024];
+    snprintf(text, sizeof text, "%sfluid: { density = 0.0; };\ncoupling: { method = \"hecht2\"; };", COLL);
+    cr_expect_neq(load(text, &s, &err), 0, "no fluid");
+    snprintf(text, sizeof text, "box: { cells = [12, 12, 12]; };\ncolloids: { count = 8; radius = 2.0; "
+             "init = \"lattice\"; integrator = \"brownian\"; };\ncoupling: { method = \"hecht1\"; };");
+    cr_expect_neq(load(text, &s, &err), 0, "brownian colloids");
+}
+
+static int has_stage(const pl_sim_t *sim, const char *name)
+{
+    for (int k = 0; k < sim->nstages; ++k)
+        if (!strcmp(sim->stages[k].name, name)) return 1;
+    return 0;
+}
+
+Test(coupling_scene, plan)
+{
+    char text[1024];
+    snprintf(text, sizeof text, "%scoupling: { method = \"hecht1\"; };", COLL);
+    pl_sim_t *a = pl_test_sim(text, 1);
+    cr_expect(has_stage(a, "coupling1-reflect") && !has_stage(a, "coupling2-save"));
+    cr_expect(!has_stage(a, "drift-removal"));
+    pl_sim_free(a);
+    snprintf(text, sizeof text, "%scoupling: { method = \"hecht2\"; drift_interval = 50; };", COLL);
+    pl_sim_t *b = pl_test_sim(text, 1);
+    cr_expect(has_stage(b, "coupling2-save") && has_stage(b, "coupling2-collide"));
+    cr_expect(has_stage(b, "drift-removal") && !has_stage(b, "coupling1-reflect"));
+    pl_sim_free(b);
+    pl_sim_t *c = pl_test_sim(COLL, 1);
+    cr_expect(c->coupling == NULL && !has_stage(c, "coupling1-reflect"));
+    pl_sim_free(c);
+}
+
+Test(coupling_scene, hecht1_starts_with_empty_colloids)
+{
+    char text[1024];
+    snprintf(text, sizeof text, "%scoupling: { method = \"hecht1\"; };", COLL);
+    pl_sim_t *sim = pl_test_sim(text, 2);
+    pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
+    size_t inside = 0;
+    for (size_t i = 0; i < sim->fluid.n; ++i) {
+        double r[3] = {sim->fluid.r[0][i], sim->fluid.r[1][i], sim->fluid.r[2][i]}, p[3];
+        inside += pl_coupling_inside(&v, sim->grid.L, sim->grid.walls_z, sim->coupling->lk_start,
+                                     sim->coupling->lk_list, r, p) >= 0;
+    }
+    cr_expect_eq(inside, 0, "%zu fluid particles start inside colloids", inside);
+    pl_sim_free(sim);
+}

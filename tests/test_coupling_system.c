@@ -1,0 +1,121 @@
+/* Coupling at the system level: bitwise determinism across thread counts for
+ * each coupling, and gravity in a periodic box (Hecht Sec. VIII.A iii): the
+ * fluid carries the opposite of the colloids' weight, so the total momentum
+ * (centre of mass) stays at rest while the colloids sediment through the
+ * fluid; without compensation the drift removal brings it back to rest. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "peloid/colloid.h"
+#include "peloid/coupling.h"
+#include "support.h"
+
+static const char *BASE =
+    "seed = 9;\n"
+    "box: { cells = [12, 12, 12]; };\n"
+    "fluid: { density = 5.0; temperature = 1.0; };\n"
+    "srd: { dt = 0.1; };\n"
+    "colloids: { count = 8; radius = 2.0; mass_density = 10.0; temperature = 1.0;\n"
+    "  init = \"random\"; pairs = \"hertz\"; substeps = 4; %s };\n"
+    "coupling: { %s };\n%s";
+
+static pl_sim_t *make(const char *colloid_extra, const char *coupling, const char *extra, int threads)
+{
+    char text[2048];
+    snprintf(text, sizeof text, BASE, colloid_extra, coupling, extra);
+    return pl_test_sim(text, threads);
+}
+
+static int same(const void *a, const void *b, size_t bytes) { return memcmp(a, b, bytes) == 0; }
+
+static void check_threads(const char *coupling)
+{
+    long long steps = pl_test_quick() ? 10 : 60;
+    pl_sim_t *a = make("", coupling, "thermostat: { type = \"heyes\"; };\n", 1);
+    pl_sim_t *b = make("", coupling, "thermostat: { type = \"heyes\"; };\n", 2);
+    pl_test_steps(a, steps);
+    pl_test_steps(b, steps);
+    size_t n = a->fluid.n * sizeof(pl_real);
+    for (int d = 0; d < 3; ++d) {
+        cr_expect(same(a->fluid.r[d], b->fluid.r[d], n), "%s: fluid r[%d] differs", coupling, d);
+        cr_expect(same(a->fluid.v[d], b->fluid.v[d], n), "%s: fluid v[%d] differs", coupling, d);
+    }
+    const pl_colloid_t *ca = a->colloids, *cb = b->colloids;
+    size_t m = ca->n * sizeof(double);
+    cr_expect(same(ca->x, cb->x, m) && same(ca->y, cb->y, m) && same(ca->z, cb->z, m),
+              "%s: colloid positions differ", coupling);
+    cr_expect(same(ca->vx, cb->vx, m) && same(ca->vy, cb->vy, m) && same(ca->vz, cb->vz, m),
+              "%s: colloid velocities differ", coupling);
+    cr_expect(same(ca->wx, cb->wx, m) && same(ca->wy, cb->wy, m) && same(ca->wz, cb->wz, m),
+              "%s: colloid angular velocities differ", coupling);
+    if (a->coupling->method == PL_COUPLE_HECHT1)
+        cr_expect_eq(a->coupling->events, b->coupling->events, "event counts differ");
+    pl_sim_free(a);
+    pl_sim_free(b);
+}
+
+Test(coupling_system, bitwise_threads_hecht1, .timeout = 120)
+{
+    check_threads("method = \"hecht1\"; boundary = \"stick_stochastic\";");
+    check_threads("method = \"hecht1\"; boundary = \"slip\"; placement = \"nearest\";");
+}
+
+Test(coupling_system, bitwise_threads_hecht2, .timeout = 120)
+{
+    check_threads("method = \"hecht2\";");
+}
+
+Test(coupling_system, bitwise_threads_potential, .timeout = 120)
+{
+    check_threads("method = \"potential\"; sigma_cf = 2.0;");
+}
+
+/* |P| / sqrt(M kT) after each step; the colloids' weight per step is
+ * sum M g dt = 8 * 335 * 0.02 * 0.1 ~ 5.4 in these units, i.e. ~0.1 of the
+ * scale per step: a missing compensation fails at once. */
+static void gravity_run(const char *coupling, const char *extra, double *worst, double *vrel)
+{
+    long long steps = pl_test_quick() ? 20 : 300;
+    pl_sim_t *sim = make("gravity = [0.0, 0.0, -0.02];", coupling, extra, 2);
+    double P[3], M;
+    *worst = 0.0;
+    double vc = 0.0;
+    for (long long s = 0; s < steps; ++s) {
+        pl_test_steps(sim, 1);
+        pl_coupling_total_momentum(sim, P, &M);
+        for (int d = 0; d < 3; ++d) *worst = fmax(*worst, fabs(P[d]) / sqrt(M));
+        if (s >= steps / 2) {
+            const pl_colloid_t *c = sim->colloids;
+            for (size_t k = 0; k < c->n; ++k) vc += c->vz[k] / (double)c->n;
+        }
+    }
+    /* colloid velocity relative to the fluid's (which moves up) */
+    pl_fluid_obs_t o;
+    double kT;
+    pl_sim_observe(sim, &o, &kT);
+    *vrel = vc / (double)(steps - steps / 2) - o.momentum[2] / (double)sim->fluid.n;
+    pl_sim_free(sim);
+}
+
+Test(coupling_system, gravity_compensated_centre_of_mass_at_rest, .timeout = 120)
+{
+    const char *cases[] = {"method = \"hecht2\";", "method = \"hecht1\";"};
+    for (int k = 0; k < 2; ++k) {
+        double worst, vrel;
+        gravity_run(cases[k], "thermostat: { type = \"heyes\"; };\n", &worst, &vrel);
+        cr_log_info("%s gravity: max |P|/sqrt(M) = %.3g, colloid v_z - fluid v_z = %.4g", cases[k],
+                    worst, vrel);
+        cr_expect_lt(worst, 1e-9, "%s: centre of mass moves: |P|/sqrt(M) = %.3g", cases[k], worst);
+        cr_expect_lt(vrel, -1e-3, "%s: colloids do not sediment (v_rel = %.3g)", cases[k], vrel);
+    }
+}
+
+Test(coupling_system, drift_removal_without_compensation, .timeout = 120)
+{
+    double worst, vrel;
+    gravity_run("method = \"hecht2\"; compensate_gravity = false; drift_interval = 1;",
+                "thermostat: { type = \"heyes\"; };\n", &worst, &vrel);
+    cr_log_info("drift removal: max |P|/sqrt(M) = %.3g", worst);
+    cr_expect_lt(worst, 1e-9, "drift removal left |P|/sqrt(M) = %.3g", worst);
+}
