@@ -11,6 +11,7 @@
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
 #include "peloid/io.h"
+#include "peloid/mapping.h"
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"
 
@@ -21,10 +22,10 @@ typedef struct {
     long long step_last_row;
 } writer_t;
 
-static void thermo_header(FILE *f, int tracked, int colloids, int reflect, int pinned)
+static void thermo_header(FILE *f, int mapped, int tracked, int colloids, int reflect, int pinned)
 {
-    fprintf(f, "step\ttime\ttemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%s%s%smupdates_per_s\n",
-            tracked ? "msd\t" : "",
+    fprintf(f, "step\ttime\t%stemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%s%s%smupdates_per_s\n",
+            mapped ? "time_s\ttemperature_K\t" : "", tracked ? "msd\t" : "",
             colloids ? "c_kin_trans\tc_kin_rot\tc_dlvo\tc_hertz\tc_wca\tc_wall\tc_gravity\tc_total\t" : "",
             reflect ? "cpl_events\tcpl_truncations\t" : "",
             pinned ? "cpl_drag_x\tcpl_drag_y\tcpl_drag_z\t" : "");
@@ -44,9 +45,13 @@ static void thermo_row(writer_t *w, const pl_sim_t *sim)
     double now = omp_get_wtime();
     double steps = (double)(sim->step - w->step_last_row);
     double rate = now > w->t_last_row && steps > 0 ? steps * (double)sim->fluid.n / (now - w->t_last_row) / 1e6 : 0.0;
-    fprintf(w->thermo, "%lld\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t", sim->step,
-            (double)sim->step * sim->scene.srd.dt, kT, sim->last_kT_meas, o.momentum[0], o.momentum[1],
-            o.momentum[2], o.kinetic);
+    const double time = (double)sim->step * sim->scene.srd.dt;
+    fprintf(w->thermo, "%lld\t%.10g\t", sim->step, time);
+    const pl_scene_mapping_t *map = &sim->scene.mapping;
+    if (map->enabled) /* physical units: kT = 1 is the model temperature kT_model (Hecht Sec. VII) */
+        fprintf(w->thermo, "%.10g\t%.10g\t", time * map->map.t0, kT * map->map.kT_model / PL_KB);
+    fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t", kT, sim->last_kT_meas, o.momentum[0],
+            o.momentum[1], o.momentum[2], o.kinetic);
     if (sim->fluid.tracked) fprintf(w->thermo, "%.10g\t", o.msd);
     if (sim->colloids) { /* colloid energy terms (src/colloid_state.c) */
         pl_colloid_energy_t ce;
@@ -96,7 +101,15 @@ static int write_summary(const writer_t *w, const pl_sim_t *sim, long long first
     pl_scene_print_json(sc, f, "  ");
     fprintf(f, ",\n  \"derived\": ");
     pl_params_print(sc, f, 1);
-    fprintf(f, "  ,\"threads\": %d,\n  \"topology\": \"%s\",\n", sim->nthreads, topo);
+    fprintf(f, "  ,\"mapping\": ");
+    pl_err_t ignored;
+    pl_mapping_report(sc, f, 1, 0, &ignored); /* null without physical{} */
+    if (sc->mapping.enabled)
+        fprintf(f, ",\n  \"units_si\": {\"a0_m\": %.10g, \"t0_s\": %.10g, \"m_f_kg\": %.10g, \"kT_J\": %.10g, "
+                   "\"model_temperature_K\": %.10g, \"real_temperature_K\": %.10g}",
+                sc->mapping.map.a0, sc->mapping.map.t0, sc->mapping.map.m_f, sc->mapping.map.kT_model,
+                sc->mapping.map.kT_model / PL_KB, sc->mapping.physical.temperature);
+    fprintf(f, ",\n  \"threads\": %d,\n  \"topology\": \"%s\",\n", sim->nthreads, topo);
     fprintf(f, "  \"fluid_particles\": %zu,\n  \"first_step\": %lld,\n  \"last_step\": %lld,\n",
             sim->fluid.n, first, sim->step);
     fprintf(f, "  \"wall_seconds\": %.6g,\n  \"particle_updates_per_second\": %.6g,\n", wall,
@@ -171,7 +184,7 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         rc = pl_err_set(err, PL_ERR_IO, "%s: cannot write", path);
         goto done;
     }
-    thermo_header(w.thermo, sim->fluid.tracked, sim->colloids != NULL, reflecting(sim),
+    thermo_header(w.thermo, scene->mapping.enabled, sim->fluid.tracked, sim->colloids != NULL, reflecting(sim),
                   sim->coupling && sim->coupling->pinned);
     if (sim->colloids && scene->colloids.trajectory_interval > 0) {
         pl_path_join(path, sizeof path, w.dir, "colloids.h5");

@@ -82,6 +82,16 @@ cmp -s run1/checkpoint.h5 resumed/checkpoint.h5 && ok "40 steps == 20 + restart 
 "$PELOID" run small.cfg --out bad_restart --restart small.cfg 2> err.txt; rc=$?
 [ $rc -eq 2 ] && [ ! -e bad_restart ] && ok "bad restart file refused, nothing written: $(cat err.txt)" || bad "bad restart: $(cat err.txt)"
 
+# a scene in physical units: mapping report and SI columns in the outputs
+"$PELOID" run "$ROOT/scenes/hecht_table1.cfg" --out mapped --steps 2 2> /dev/null
+$PY - <<'PYEOF' && ok "physical-unit scene: summary.json has mapping + units_si, thermo.tsv has time_s" || bad "mapped outputs"
+import json
+s = json.load(open("mapped/summary.json"))
+assert s["mapping"] is not None and s["units_si"]["a0_m"] > 0 and s["units_si"]["t0_s"] > 0
+head = open("mapped/thermo.tsv").readline().split()
+assert head[:4] == ["step", "time", "time_s", "temperature_K"], head
+PYEOF
+
 # params
 "$PELOID" params small.cfg > params.txt && grep -q "nu_col" params.txt && grep -q "D_f" params.txt && grep -q "Sc" params.txt && ok "params" || bad "params"
 "$PELOID" params small.cfg --json | $PY -c 'import json,sys; d=json.load(sys.stdin); d=d.get("srd", d); assert d["nu"] > 0' && ok "params --json" || bad "params --json"
