@@ -75,7 +75,7 @@ check: check-unit check-cli check-asan
 	@echo "make check: all suites passed"
 
 check-unit: $(TEST_BIN)
-	@set -e; for t in $(TEST_BIN); do echo "== $$t"; $$t --jobs 1 --ascii; done
+	@set -e; for t in $(TEST_BIN); do echo "== $$t"; $$t --jobs 1; done
 
 check-cli: $(BIN)
 	@bash tests/cli.sh ./$(BIN)
@@ -88,7 +88,7 @@ check-asan: | deps
 	  build-asan/tests/test_scene build-asan/tests/test_collide build-asan/tests/test_sort \
 	  build-asan/tests/test_determinism
 	@set -e; for t in test_scene test_collide test_sort test_determinism; do \
-	  echo "== asan $$t"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$$t --jobs 1 --ascii; done
+	  echo "== asan $$t"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$$t --jobs 1; done
 
 bench: $(BENCH_BIN)
 	@mkdir -p bench/out

@@ -19,7 +19,10 @@ static int write_1d(hid_t g, const char *name, hid_t type, const void *data, siz
 {
     hsize_t dims[1] = {n};
     hid_t sp = H5Screate_simple(1, dims, NULL);
-    hid_t ds = H5Dcreate2(g, name, type, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+    H5Pset_obj_track_times(dcpl, 0); /* no time stamps: same state => same bytes */
+    hid_t ds = H5Dcreate2(g, name, type, sp, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+    H5Pclose(dcpl);
     herr_t st = ds >= 0 ? H5Dwrite(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) : -1;
     if (ds >= 0) H5Dclose(ds);
     H5Sclose(sp);
@@ -70,7 +73,10 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
                          sc->box.cells[2], fl->tracked, (long long)sizeof(pl_real)};
     int bad = attr_i64(f, "peloid_checkpoint", meta, 8, 1);
     bad |= attr_i64(f, "field_samples", &sim->field_samples, 1, 1);
-    hid_t g = H5Gcreate2(f, "fluid", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    hid_t gcpl = H5Pcreate(H5P_GROUP_CREATE);
+    H5Pset_obj_track_times(gcpl, 0);
+    hid_t g = H5Gcreate2(f, "fluid", H5P_DEFAULT, gcpl, H5P_DEFAULT);
+    H5Pclose(gcpl);
     for (int d = 0; d < 3 && g >= 0; ++d) {
         bad |= write_1d(g, rnames[d], H5_REAL, fl->r[d], fl->n);
         bad |= write_1d(g, vnames[d], H5_REAL, fl->v[d], fl->n);

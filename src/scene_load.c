@@ -260,7 +260,7 @@ static void default_name(pl_scene_t *scene, const char *label)
     const char *b = slash ? slash + 1 : label;
     snprintf(scene->run.name, sizeof scene->run.name, "%s", b);
     char *dot = strrchr(scene->run.name, '.');
-    if (dot && dot != scene->run.name) *dot = '\0';
+    if (dot && dot != scene->run.name) memset(dot, 0, sizeof scene->run.name - (size_t)(dot - scene->run.name));
 }
 
 static int load_common(config_t *cfg, int read_ok, const char *label, pl_scene_t *scene, pl_err_t *err)

@@ -61,12 +61,21 @@ void pl_scene_print_reference(void *file_ptr)
     }
 }
 
+/* %.17g, with ".0" added to integral values so libconfig reads a float. */
+static void print_real(FILE *f, double v)
+{
+    char buf[64];
+    snprintf(buf, sizeof buf, "%.17g", v);
+    if (!strpbrk(buf, ".eni")) strcat(buf, ".0");
+    fputs(buf, f);
+}
+
 static void print_value(FILE *f, const pl_key_t *k, const pl_scene_t *scene)
 {
     const char *base = (const char *)scene + k->offset;
     switch (k->type) {
     case PL_KEY_INT: fprintf(f, "%lld", *(const long long *)base); break;
-    case PL_KEY_REAL: fprintf(f, "%.17g", *(const double *)base); break;
+    case PL_KEY_REAL: print_real(f, *(const double *)base); break;
     case PL_KEY_BOOL: fprintf(f, "%s", *(const int *)base ? "true" : "false"); break;
     case PL_KEY_STRING: fprintf(f, "\"%s\"", base); break;
     case PL_KEY_CHOICE: fprintf(f, "\"%s\"", k->choices[*(const int *)base]); break;
@@ -77,7 +86,11 @@ static void print_value(FILE *f, const pl_key_t *k, const pl_scene_t *scene)
     }
     case PL_KEY_REAL3: {
         const double *v = (const double *)base;
-        fprintf(f, "[%.17g, %.17g, %.17g]", v[0], v[1], v[2]);
+        for (int d = 0; d < 3; ++d) {
+            fputs(d ? ", " : "[", f);
+            print_real(f, v[d]);
+        }
+        fputs("]", f);
         break;
     }
     }

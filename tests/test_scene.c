@@ -1,0 +1,119 @@
+/* Scene loading: defaults, every kind of bad input refused with
+ * FILE:LINE: key '...': message (issue 2 "Bad input"). */
+#include <criterion/criterion.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "peloid/scene.h"
+
+static pl_scene_t scene;
+static pl_err_t err;
+
+static int load(const char *text)
+{
+    memset(&err, 0, sizeof err);
+    return pl_scene_load_string(text, "s.cfg", &scene, &err);
+}
+
+Test(scene, defaults_and_values)
+{
+    cr_assert_eq(load("name = \"x\";\nbox: { cells = [4, 5, 6]; };\nsrd: { alpha = 90; dt = 0.5; };\n"), 0,
+                 "%s", err.msg);
+    cr_assert_eq(scene.box.cells[1], 5);
+    cr_assert_float_eq(scene.srd.alpha_deg, 90.0, 0.0);
+    cr_assert_float_eq(scene.srd.dt, 0.5, 0.0);
+    cr_assert_float_eq(scene.fluid.density, 5.0, 0.0); /* default */
+    cr_assert_eq(scene.srd.grid_shift, 1);
+    cr_assert_str_eq(scene.run.name, "x");
+}
+
+Test(scene, name_defaults_to_file_name)
+{
+    memset(&err, 0, sizeof err);
+    cr_assert_eq(pl_scene_load_string("seed = 3;", "dir/my_scene.cfg", &scene, &err), 0);
+    cr_assert_str_eq(scene.run.name, "my_scene");
+}
+
+static void expect_error(const char *text, const char *needle1, const char *needle2)
+{
+    cr_assert_eq(load(text), PL_ERR_INPUT, "accepted: %s", text);
+    cr_assert(strstr(err.msg, needle1), "message '%s' lacks '%s'", err.msg, needle1);
+    cr_assert(strstr(err.msg, needle2), "message '%s' lacks '%s'", err.msg, needle2);
+}
+
+Test(scene, unknown_key)
+{
+    expect_error("seed = 1;\nfluid: { densty = 5.0; };\n", "s.cfg:2: key 'fluid.densty'", "unknown key");
+    expect_error("sead = 1;\n", "s.cfg:1: key 'sead'", "allowed here");
+    expect_error("collider: { a = 1; };\n", "s.cfg:1: key 'collider'", "unknown key");
+}
+
+Test(scene, wrong_type)
+{
+    expect_error("\n\nfluid: { density = \"five\"; };\n", "s.cfg:3: key 'fluid.density'", "wrong type (string)");
+    expect_error("box: { cells = [4, 4]; };\n", "key 'box.cells'", "array of 3 integers");
+    expect_error("box: { cells = (4, \"a\", 4); };\n", "key 'box.cells'", "element 1 is a string");
+    expect_error("box: { cells = [4, 4.5, 4]; };\n", "s.cfg:1", "mismatched element type"); /* libconfig */
+    expect_error("steps = 10.5;\n", "key 'steps'", "expected an integer");
+    expect_error("srd: { grid_shift = 1; };\n", "key 'srd.grid_shift'", "true or false");
+}
+
+Test(scene, out_of_range)
+{
+    expect_error("fluid: { density = -5.0; };\n", "s.cfg:1: key 'fluid.density'", "value -5 is out of range");
+    expect_error("box: { cells = [8, 0, 8]; };\n", "key 'box.cells'", "value 0 is out of range");
+    expect_error("srd: { dt = 0.0; };\n", "key 'srd.dt'", "> 0");
+    expect_error("srd: { rule = \"spin\"; };\n", "key 'srd.rule'", "\"random_axis\" \"hecht_axes\"");
+}
+
+Test(scene, cross_key)
+{
+    expect_error("box: { cells = [8, 8, 1]; walls_z = \"noslip\"; };\n", "s.cfg:1: key 'box.cells'", "Lz >= 2");
+    expect_error("box: { cells = [1, 1, 1]; };\nfluid: { density = 1.0; };\n", "s.cfg:2: key 'fluid.density'",
+                 "at least 2");
+}
+
+Test(scene, syntax_error_and_missing_file)
+{
+    expect_error("\nfluid: { density = ; };\n", "s.cfg:2", "syntax error");
+    memset(&err, 0, sizeof err);
+    cr_assert_eq(pl_scene_load("/nonexistent/x.cfg", &scene, &err), PL_ERR_INPUT);
+    cr_assert(strstr(err.msg, "/nonexistent/x.cfg: cannot open scene file"), "%s", err.msg);
+}
+
+Test(scene, reference_lists_every_key)
+{
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    pl_scene_print_reference(f);
+    fclose(f);
+    size_t ns;
+    const pl_section_t *const *all = pl_scene_sections(&ns);
+    for (size_t j = 0; j < ns; ++j)
+        for (size_t i = 0; i < all[j]->nkeys; ++i) {
+            char needle[96];
+            snprintf(needle, sizeof needle, "| `%s` |", all[j]->keys[i].name);
+            cr_assert(strstr(buf, needle), "reference lacks %s", needle);
+        }
+    free(buf);
+}
+
+Test(scene, printed_scene_loads_back_identically)
+{
+    cr_assert_eq(load("seed = 7;\nbox: { cells = [6, 7, 8]; walls_z = \"slip\"; };\n"
+                      "fluid: { body_force = [0.001, 0.0, 0.0]; };\nthermostat: { type = \"heyes\"; };\n"),
+                 0, "%s", err.msg);
+    pl_scene_t first = scene;
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&buf, &len);
+    pl_scene_print(&first, f);
+    fclose(f);
+    cr_assert_eq(load(buf), 0, "%s\n%s", err.msg, buf);
+    cr_assert_eq(memcmp(&first.run, &scene.run, sizeof scene.run), 0);
+    cr_assert_eq(memcmp(&first.box, &scene.box, sizeof scene.box), 0);
+    cr_assert_eq(memcmp(&first.fluid, &scene.fluid, sizeof scene.fluid), 0);
+    cr_assert_eq(memcmp(&first.thermostat, &scene.thermostat, sizeof scene.thermostat), 0);
+    free(buf);
+}

@@ -1,0 +1,71 @@
+/* Counting sort: particles grouped by cell, stable, cell_start correct, and
+ * the result identical for 1, 2 and 3 threads (DESIGN.md "Data"). */
+#include <criterion/criterion.h>
+#include <string.h>
+
+#include "peloid/rng.h"
+#include "peloid/scene.h"
+#include "peloid/srd_kernels.h"
+
+static void fill(pl_fluid_t *f, pl_grid_t *g, size_t n, int L)
+{
+    pl_err_t err;
+    int Ls[3] = {L, L + 1, L + 2};
+    pl_grid_init(g, Ls, PL_WALLS_NONE);
+    cr_assert_eq(pl_fluid_create(n, 1, f, &err), 0);
+    for (size_t i = 0; i < n; ++i) {
+        pl_rand4_t r = pl_rng_uniform4(7, 1, 0, i, 0);
+        for (int d = 0; d < 3; ++d) {
+            f->r[d][i] = r.u[d] * Ls[d];
+            f->v[d][i] = (double)i; /* original index, to check stability */
+        }
+        f->id[i] = (uint32_t)i;
+    }
+    pl_grid_draw_shift(g, 1, 0, 1);
+}
+
+static void sort_with(int nthreads, pl_fluid_t *f, pl_grid_t *g, uint32_t **start)
+{
+    uint32_t *hist = pl_alloc((size_t)nthreads * g->ncells * sizeof(uint32_t));
+    *start = pl_alloc((g->ncells + 1) * sizeof(uint32_t));
+    pl_srd_bin(f, g, hist, nthreads);
+    pl_srd_sort(f, hist, *start, g->ncells, nthreads);
+    pl_free(hist);
+}
+
+Test(sort, grouped_stable_and_thread_independent)
+{
+    const size_t n = 20000;
+    pl_fluid_t ref;
+    pl_grid_t g;
+    uint32_t *ref_start;
+    fill(&ref, &g, n, 7);
+    sort_with(1, &ref, &g, &ref_start);
+    cr_assert_eq(ref_start[g.ncells], n);
+    /* every particle lies in its cell, and within a cell ids increase */
+    uint32_t *hist = pl_alloc(g.ncells * sizeof(uint32_t));
+    pl_srd_bin(&ref, &g, hist, 1); /* recompute cells of the sorted order */
+    for (size_t c = 0; c < g.ncells; ++c)
+        for (size_t i = ref_start[c]; i < ref_start[c + 1]; ++i) {
+            cr_assert_eq(ref.cell[i], c, "particle %zu in cell %u, listed in %zu", i, ref.cell[i], c);
+            if (i > ref_start[c]) cr_assert_lt(ref.id[i - 1], ref.id[i], "not stable in cell %zu", c);
+            cr_assert_eq(ref.v[0][i], (double)ref.id[i], "velocity did not travel with the particle");
+        }
+    pl_free(hist);
+    for (int t = 2; t <= 3; ++t) {
+        pl_fluid_t f;
+        uint32_t *start;
+        fill(&f, &g, n, 7);
+        sort_with(t, &f, &g, &start);
+        cr_assert_eq(memcmp(start, ref_start, (g.ncells + 1) * sizeof *start), 0, "cell_start, %d threads", t);
+        for (int d = 0; d < 3; ++d) {
+            cr_assert_eq(memcmp(f.r[d], ref.r[d], n * sizeof(pl_real)), 0, "positions, %d threads", t);
+            cr_assert_eq(memcmp(f.v[d], ref.v[d], n * sizeof(pl_real)), 0, "velocities, %d threads", t);
+        }
+        cr_assert_eq(memcmp(f.id, ref.id, n * sizeof(uint32_t)), 0, "ids, %d threads", t);
+        pl_fluid_free(&f);
+        pl_free(start);
+    }
+    pl_fluid_free(&ref);
+    pl_free(ref_start);
+}
