@@ -13,20 +13,31 @@ static const double PI = 3.14159265358979323846;
 
 /* ---- stages ------------------------------------------------------------ */
 
+void pl_sim_stream_params(const pl_sim_t *sim, pl_stream_params_t *p)
+{
+    const pl_scene_t *sc = &sim->scene;
+    memset(p, 0, sizeof *p);
+    p->dt = sc->srd.dt;
+    for (int d = 0; d < 3; ++d) p->accel[d] = sc->fluid.body_force[d];
+    memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
+}
+
 static int stage_stream(pl_sim_t *sim, pl_err_t *err)
 {
     (void)err;
     const pl_scene_t *sc = &sim->scene;
     pl_grid_draw_shift(&sim->grid, (uint64_t)sc->run.seed, (uint64_t)sim->step, sc->srd.grid_shift);
     pl_stream_params_t p;
-    memset(&p, 0, sizeof p);
-    p.dt = sc->srd.dt;
-    for (int d = 0; d < 3; ++d) p.accel[d] = sc->fluid.body_force[d];
-    memcpy(p.wall_u, sim->wall_u, sizeof p.wall_u);
+    pl_sim_stream_params(sim, &p);
     pl_srd_stream_bin(&sim->fluid, &sim->grid, &p, sim->hist, sim->nthreads);
     return 0;
 }
 
+/* pl_srd_stream_count + pl_srd_stream_sort (drift inside the scatter) leave
+ * the same state with one pass less over the particle arrays (192 against
+ * 248 B per particle), but on the 2-core development machine, where these
+ * kernels are latency bound, it measured slower at 1 thread and equal at 2
+ * (bench/RESULTS.md); bench_srd times both pipelines. */
 static int stage_sort(pl_sim_t *sim, pl_err_t *err)
 {
     (void)err;
