@@ -22,7 +22,8 @@
  * histograms, cell_start: O(nthreads x ncells) words, ~ 0.4 (3 nthreads + 2)
  * B per particle at 10 per cell) are left out of the model: they are part of
  * the overhead the measurement shows against it.
- * Effective GB/s = model bytes / time; % of bound = effective / STREAM triad.
+ * Effective GB/s = model bytes / time; % of bound = effective / STREAM triad
+ * measured (3 repetitions, median) just before the case.
  *
  * Output: one TSV line per case on stdout and in bench/out/srd.tsv
  * (bench/out/stream.tsv: the triad sweep).  Median of `reps` repetitions,
@@ -163,6 +164,19 @@ static void print_line(FILE *tsv, const char *name, int L, int nt, double n, dou
     fputs(line, tsv);
 }
 
+/* The load of the machine (other users' processes distort timings). */
+static void print_loadavg(const char *when)
+{
+    char buf[128] = "?";
+    FILE *f = fopen("/proc/loadavg", "r");
+    if (f) {
+        if (!fgets(buf, sizeof buf, f)) buf[0] = 0;
+        fclose(f);
+    }
+    buf[strcspn(buf, "\n")] = 0;
+    printf("# loadavg at %s: %s\n", when, buf);
+}
+
 /* Runs one (size, threads) case: the plan (each stage and the whole step),
  * then the stream-in-scatter pipeline; prints one line per kernel. */
 static int run_case(const options_t *o, int L, int nt, double stream_gbs, FILE *tsv)
@@ -251,6 +265,7 @@ int main(int argc, char **argv)
     printf("# bench_srd  peloid %s  cflags %s  real %s  max threads %d\n", PL_GIT_REV, PL_CFLAGS,
            PL_REAL_NAME, o.max_threads);
     bench_print_topology(stdout);
+    print_loadavg("start");
 
     /* STREAM triad sweep: 3 arrays of 2^25 doubles (768 MiB, >> any L3). */
     const size_t n_stream = (size_t)1 << 25;
@@ -272,9 +287,15 @@ int main(int argc, char **argv)
     printf("%s", hdr);
     fputs(hdr, tsv);
     int rc = 0;
+    /* The triad is measured again right before each case: on a shared
+     * machine the bandwidth left to us changes during the run. */
     for (int s = 0; s < o.nsizes; ++s)
-        for (int t = 1; t <= o.max_threads && t <= 64; ++t)
-            rc |= run_case(&o, o.sizes[s], t, stream[t], tsv);
+        for (int t = 1; t <= o.max_threads && t <= 64; ++t) {
+            double lo, hi;
+            double sg = o.no_stream ? NAN : bench_stream_triad(n_stream, t, 3, &lo, &hi);
+            rc |= run_case(&o, o.sizes[s], t, sg, tsv);
+        }
     fclose(tsv);
+    print_loadavg("end");
     return rc;
 }
