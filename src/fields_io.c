@@ -26,16 +26,28 @@ static void attr_str(hid_t obj, const char *name, const char *value)
 static void write_nd(hid_t g, const char *name, int rank, const hsize_t *dims, hid_t type, const void *d)
 {
     hid_t sp = H5Screate_simple(rank, dims, NULL);
-    hid_t ds = H5Dcreate2(g, name, type, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+    H5Pset_obj_track_times(dcpl, 0); /* same fields => same bytes */
+    hid_t ds = H5Dcreate2(g, name, type, sp, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+    H5Pclose(dcpl);
     H5Dwrite(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, d);
     H5Dclose(ds);
     H5Sclose(sp);
 }
 
+static hid_t group(hid_t parent, const char *name)
+{
+    hid_t gcpl = H5Pcreate(H5P_GROUP_CREATE);
+    H5Pset_obj_track_times(gcpl, 0);
+    hid_t g = H5Gcreate2(parent, name, H5P_DEFAULT, gcpl, H5P_DEFAULT);
+    H5Pclose(gcpl);
+    return g;
+}
+
 static void observable(hid_t obs, const char *name, int rank, const hsize_t *dims, const double *d,
                        long long step, double time)
 {
-    hid_t g = H5Gcreate2(obs, name, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    hid_t g = group(obs, name);
     write_nd(g, "value", rank, dims, H5T_NATIVE_DOUBLE, d);
     hsize_t one = 1;
     write_nd(g, "step", 0, &one, H5T_NATIVE_LLONG, &step);
@@ -71,7 +83,7 @@ int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
         free(vel);
         return pl_err_set(err, PL_ERR_IO, "%s: cannot create HDF5 file", tmp);
     }
-    hid_t h5md = H5Gcreate2(f, "h5md", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    hid_t h5md = group(f, "h5md");
     int version[2] = {1, 1};
     hsize_t two = 2;
     hid_t sp = H5Screate_simple(1, &two, NULL);
@@ -79,15 +91,15 @@ int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
     H5Awrite(a, H5T_NATIVE_INT, version);
     H5Aclose(a);
     H5Sclose(sp);
-    hid_t au = H5Gcreate2(h5md, "author", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    hid_t au = group(h5md, "author");
     attr_str(au, "name", "peloid user");
     H5Gclose(au);
-    hid_t cr = H5Gcreate2(h5md, "creator", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    hid_t cr = group(h5md, "creator");
     attr_str(cr, "name", "peloid");
     attr_str(cr, "version", PL_GIT_REV);
     H5Gclose(cr);
     H5Gclose(h5md);
-    hid_t obs = H5Gcreate2(f, "observables", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    hid_t obs = group(f, "observables");
     attr_str(obs, "layout", "value[z][y][x] on the unshifted cell grid, cell size a0 = 1");
     hsize_t dims[4] = {(hsize_t)L[2], (hsize_t)L[1], (hsize_t)L[0], 3};
     double time = (double)sim->step * sc->srd.dt;

@@ -21,7 +21,7 @@ static const char *const usage =
     "        steps); --restart continues from a checkpoint of the same scene.\n"
     "        --threads N sets the OpenMP thread count (results do not depend on it).\n"
     "  check SCENE      validate a scene without running it\n"
-    "  params SCENE [--json]\n"
+    "  params SCENE [--json] [--strict]\n"
     "        print the derived SRD parameters: lambda, nu_kin, nu_col, nu, eta, D_f,\n"
     "        Sc, tau_f (Padding & Louis 2006, Eqs. 4, 6, 9-15)\n"
     "  keys             print the scene-file reference (every key) as Markdown\n"
@@ -95,9 +95,10 @@ static int cmd_run(int argc, char **argv)
 static int cmd_scene(int argc, char **argv, int params)
 {
     const char *path = NULL;
-    int json = 0;
+    int json = 0, strict = 0;
     for (int i = 0; i < argc; ++i) {
         if (params && !strcmp(argv[i], "--json")) json = 1;
+        else if (params && !strcmp(argv[i], "--strict")) strict = 1;
         else if (argv[i][0] != '-' && !path) path = argv[i];
         else {
             char msg[256];
@@ -111,8 +112,16 @@ static int cmd_scene(int argc, char **argv, int params)
     if (!scene) return PL_ERR_NOMEM;
     int rc = pl_scene_load(path, scene, &err);
     if (!rc) {
+        /* A scene with physical{} adds the unit mapping report (mapping.h). */
+        int mapped = scene->mapping.enabled;
+        if (params && json && mapped) printf("{\"srd\": ");
         if (params) pl_params_print(scene, stdout, json);
         else printf("%s: ok\n", path);
+        if (params && mapped) {
+            if (json) printf(", \"mapping\": ");
+            rc = pl_mapping_report(scene, stdout, json, strict, &err);
+            if (json) printf("}\n");
+        }
     }
     free(scene);
     return rc ? fail(&err) : 0;

@@ -8,6 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "peloid/colloid.h"
 #include "peloid/io.h"
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"
@@ -19,10 +20,11 @@ typedef struct {
     long long step_last_row;
 } writer_t;
 
-static void thermo_header(FILE *f, int tracked)
+static void thermo_header(FILE *f, int tracked, int colloids)
 {
-    fprintf(f, "step\ttime\ttemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%smupdates_per_s\n",
-            tracked ? "msd\t" : "");
+    fprintf(f, "step\ttime\ttemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%smupdates_per_s\n",
+            tracked ? "msd\t" : "",
+            colloids ? "c_kin_trans\tc_kin_rot\tc_dlvo\tc_hertz\tc_wca\tc_wall\tc_gravity\tc_total\t" : "");
 }
 
 static void thermo_row(writer_t *w, const pl_sim_t *sim)
@@ -37,6 +39,13 @@ static void thermo_row(writer_t *w, const pl_sim_t *sim)
             (double)sim->step * sim->scene.srd.dt, kT, sim->last_kT_meas, o.momentum[0], o.momentum[1],
             o.momentum[2], o.kinetic);
     if (sim->fluid.tracked) fprintf(w->thermo, "%.10g\t", o.msd);
+    if (sim->colloids) { /* colloid energy terms (src/colloid_state.c) */
+        pl_colloid_energy_t ce;
+        pl_colloid_energy(sim->colloids, &ce);
+        fprintf(w->thermo, "%.10g\t%.10g\t", ce.kin_trans, ce.kin_rot);
+        for (int k = 0; k < PL_CE_NTERMS; ++k) fprintf(w->thermo, "%.10g\t", ce.pot[k]);
+        fprintf(w->thermo, "%.10g\t", ce.total);
+    }
     fprintf(w->thermo, "%.4g\n", rate);
     fflush(w->thermo);
     w->t_last_row = now;
@@ -145,16 +154,33 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         rc = pl_err_set(err, PL_ERR_IO, "%s: cannot write", path);
         goto done;
     }
-    thermo_header(w.thermo, sim->fluid.tracked);
+    thermo_header(w.thermo, sim->fluid.tracked, sim->colloids != NULL);
+    if (sim->colloids && scene->colloids.trajectory_interval > 0) {
+        pl_path_join(path, sizeof path, w.dir, "colloids.h5");
+        if ((rc = pl_colloid_traj_open(path, sim->colloids, 1, &sim->colloid_traj, err))) goto done;
+    }
     long long first = sim->step;
     long long last = first + (o->steps >= 0 ? o->steps : scene->run.steps);
     fprintf(stderr, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/\n",
             scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
+    if (sim->colloids && (sim->colloids->pair.terms & PL_CT_DLVO)) {
+        const pl_colloid_dlvo_info_t *d = &sim->colloids->dlvo;
+        fprintf(stderr, "peloid: DLVO: primary minimum matched at gap %.4g a0 (curvature %.4g kT/a0^2); "
+                        "barrier %.4g kT at %.4g a0; secondary minimum %.4g kT at %.4g a0; cut-off gap "
+                        "%.4g a0, truncation error |V| = %.3g kT, |F| = %.3g kT/a0\n",
+                d->hm, d->curvature, d->barrier_u, d->barrier_h, d->secmin_u, d->secmin_h, d->hcut,
+                d->trunc_u, d->trunc_f);
+    }
     double t0 = omp_get_wtime();
     rc = loop(sim, &w, o, last, err);
     double wall = omp_get_wtime() - t0;
     fclose(w.thermo);
     if (rc) goto done; /* the last good checkpoint stays as it was */
+    if (sim->colloid_traj) {
+        rc = pl_colloid_traj_close(sim->colloid_traj, err);
+        sim->colloid_traj = NULL;
+        if (rc) goto done;
+    }
     if ((rc = write_checkpoint(&w, sim, err))) goto done;
     if (sim->field_acc) {
         pl_path_join(path, sizeof path, w.dir, "fields.h5");

@@ -94,6 +94,9 @@ const pl_section_t pl_scene_section_output = {"output", "what a run writes", out
 static const pl_section_t *const sections[] = {
     &pl_scene_section_run,   &pl_scene_section_box,        &pl_scene_section_fluid,
     &pl_scene_section_srd,   &pl_scene_section_thermostat, &pl_scene_section_output,
+    &pl_scene_section_physical, &pl_scene_section_coarse_graining,
+    &pl_scene_section_colloids, &pl_scene_section_dlvo, &pl_scene_section_hertz,
+    &pl_scene_section_lubrication, &pl_scene_section_wca,
 };
 
 const pl_section_t *const *pl_scene_sections(size_t *count)

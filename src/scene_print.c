@@ -103,6 +103,10 @@ void pl_scene_print(const pl_scene_t *scene, void *file_ptr)
     const pl_section_t *const *all = pl_scene_sections(&ns);
     for (size_t j = 0; j < ns; ++j) {
         const pl_section_t *sec = all[j];
+        /* The physical front end is echoed only when the scene uses it. */
+        if (!scene->mapping.enabled &&
+            (sec == &pl_scene_section_physical || sec == &pl_scene_section_coarse_graining))
+            continue;
         const char *indent = *sec->name ? "  " : "";
         if (*sec->name) fprintf(f, "%s: {\n", sec->name);
         for (size_t i = 0; i < sec->nkeys; ++i) {

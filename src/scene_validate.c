@@ -28,8 +28,9 @@ int pl_scene_fail(const pl_scene_t *scene, pl_err_t *err, size_t offset, const c
 
 #define OFF(m) offsetof(pl_scene_t, m)
 
-int pl_scene_validate(const pl_scene_t *scene, pl_err_t *err)
+int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
 {
+    if (pl_mapping_scene_apply(scene, err)) return PL_ERR_INPUT; /* physical{} -> srd, fluid, box */
     const pl_scene_box_t *b = &scene->box;
     double ncells = (double)b->cells[0] * b->cells[1] * b->cells[2];
     if (ncells > 1.0e9)
@@ -50,5 +51,5 @@ int pl_scene_validate(const pl_scene_t *scene, pl_err_t *err)
         return pl_scene_fail(scene, err, OFF(output.fields_start), "output.fields_start",
                              "%lld is not before the last step %lld; no field sample would be taken",
                              scene->output.fields_start, scene->run.steps);
-    return 0;
+    return pl_colloid_validate_scene(scene, err);
 }

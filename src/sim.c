@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "peloid/colloid.h"
 #include "peloid/sim.h"
 
 static const double PI = 3.14159265358979323846;
@@ -96,6 +97,19 @@ static int stage_fields(pl_sim_t *sim, pl_err_t *err)
     return 0;
 }
 
+/* Colloid MD: colloids.substeps MD steps of dt_MD = srd.dt / substeps. */
+static int stage_colloid_md(pl_sim_t *sim, pl_err_t *err)
+{
+    return pl_colloid_advance(sim->colloids, sim->step, err);
+}
+
+static int stage_colloid_traj(pl_sim_t *sim, pl_err_t *err)
+{
+    if (!sim->colloid_traj) return 0;
+    return pl_colloid_traj_write(sim->colloid_traj, sim->colloids, sim->step,
+                                 (double)sim->step * sim->scene.srd.dt, err);
+}
+
 static void add_stage(pl_sim_t *sim, const char *name, pl_stage_fn fn, long long interval)
 {
     pl_stage_t *s = &sim->stages[sim->nstages++];
@@ -109,6 +123,11 @@ static void build_plan(pl_sim_t *sim)
 {
     const pl_scene_t *sc = &sim->scene;
     sim->nstages = 0;
+    if (sim->colloids) {
+        if (sc->colloids.trajectory_interval > 0)
+            add_stage(sim, "colloid-trajectory", stage_colloid_traj, sc->colloids.trajectory_interval);
+        add_stage(sim, "colloid-md", stage_colloid_md, 1);
+    }
     if (sim->fluid.n > 0) {
         add_stage(sim, "stream+bin", stage_stream, 1);
         add_stage(sim, "sort", stage_sort, 1);
@@ -184,6 +203,10 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cell arrays (%zu cells)", nc);
     }
     pl_fluid_init(&sim->fluid, scene);
+    if (scene->colloids.count > 0 && (rc = pl_colloid_create(scene, &sim->colloids, err))) {
+        pl_sim_free(sim);
+        return rc;
+    }
     build_plan(sim);
     *out = sim;
     return 0;
@@ -193,6 +216,8 @@ void pl_sim_free(pl_sim_t *sim)
 {
     if (!sim) return;
     pl_fluid_free(&sim->fluid);
+    pl_colloid_traj_close(sim->colloid_traj, NULL);
+    pl_colloid_free(sim->colloids);
     pl_free(sim->hist);
     pl_free(sim->cell_start);
     pl_free(sim->block_sum);

@@ -11,7 +11,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "peloid/colloid_scene.h"
 #include "peloid/error.h"
+#include "peloid/mapping.h"
 
 enum { PL_WALLS_NONE = 0, PL_WALLS_NOSLIP = 1, PL_WALLS_SLIP = 2 };
 enum { PL_VEL_GAUSSIAN = 0, PL_VEL_UNIFORM = 1 };
@@ -77,6 +79,8 @@ typedef struct pl_scene {
     pl_scene_srd_t srd;
     pl_scene_thermostat_t thermostat;
     pl_scene_output_t output;
+    pl_scene_mapping_t mapping; /* physical{} + coarse_graining{} (mapping.h) */
+    pl_scene_colloids_t colloids; /* colloid module (colloid_scene.h) */
 } pl_scene_t;
 
 /* ---- schema ---------------------------------------------------------- */
@@ -118,6 +122,12 @@ const pl_section_t *const *pl_scene_sections(size_t *count);
 
 extern const pl_section_t pl_scene_section_run, pl_scene_section_box, pl_scene_section_fluid,
     pl_scene_section_srd, pl_scene_section_thermostat, pl_scene_section_output;
+extern const pl_section_t pl_scene_section_physical, pl_scene_section_coarse_graining;
+extern const pl_section_t pl_scene_section_colloids, pl_scene_section_dlvo, pl_scene_section_hertz,
+    pl_scene_section_lubrication, pl_scene_section_wca;
+
+/* Cross-key checks of the colloid sections (src/colloid_scene.c). */
+int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err);
 
 /* ---- API --------------------------------------------------------------- */
 
@@ -132,8 +142,10 @@ int pl_scene_load(const char *path, pl_scene_t *scene, pl_err_t *err);
 int pl_scene_load_string(const char *text, const char *label, pl_scene_t *scene,
                          pl_err_t *err);
 
-/* Cross-key checks that a single key's range cannot express. */
-int pl_scene_validate(const pl_scene_t *scene, pl_err_t *err);
+/* Cross-key checks that a single key's range cannot express.  A scene with
+ * a physical{} section first gets its SRD parameters from the mapping
+ * (pl_mapping_scene_apply), hence the non-const scene. */
+int pl_scene_validate(pl_scene_t *scene, pl_err_t *err);
 
 /* Line on which the key at `offset` (offsetof(pl_scene_t, ...)) was given,
  * or 0 when it took its default. */

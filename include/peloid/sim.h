@@ -41,6 +41,9 @@ struct pl_sim {
     /* time-averaged fields */
     int64_t *field_acc;   /* 4 x L0 L1 L2, fixed point */
     long long field_samples;
+    /* colloids (NULL without; src/colloid_*.c) */
+    struct pl_colloid *colloids;
+    struct pl_colloid_traj *colloid_traj; /* opened by the run loop when wanted */
     /* plan */
     pl_stage_t stages[PL_MAX_STAGES];
     int nstages;

@@ -1,0 +1,107 @@
+/* Colloids: state (structure of arrays, 64-byte aligned), set-up from the
+ * scene, MD / BD steps with stability guards, energies, H5MD trajectories.
+ * Kernels: colloid_kernels.h; pair formulas: colloid_pair.h. */
+#ifndef PELOID_COLLOID_H
+#define PELOID_COLLOID_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "peloid/colloid_kernels.h"
+#include "peloid/error.h"
+#include "peloid/scene.h"
+
+/* What the DLVO set-up derived (reported at start; gaps h = r - d in a0). */
+typedef struct {
+    double C, kappa, A;        /* Eq. 1 prefactor (kT/a0), kappa (1/a0), A_H (kT) */
+    double d_ref;              /* reference contact distance 2R */
+    double hm, h0, curvature;  /* parabola: match gap, minimum gap, c (kT/a0^2) */
+    double barrier_h, barrier_u;   /* primary maximum (NAN if none) */
+    double secmin_h, secmin_u;     /* secondary minimum (NAN if none) */
+    double hcut, trunc_u, trunc_f; /* cut-off gap, |V| and |F| cut off there */
+} pl_colloid_dlvo_info_t;
+
+typedef struct {
+    double kin_trans, kin_rot;
+    double pot[PL_CE_NTERMS]; /* PL_CE_DLVO, _HERTZ, _WCA, _WALL, _GRAVITY */
+    double total;
+} pl_colloid_energy_t;
+
+typedef struct pl_colloid {
+    size_t n;
+    /* checkpointable state */
+    double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *q0, *q1, *q2, *q3;
+    int32_t *ix, *iy, *iz; /* periodic images crossed */
+    double *rad, *mass, *inertia;
+    long long md_step;
+    double e0;             /* energy at the start (drift guard) */
+    /* per-step scratch */
+    double *fx, *fy, *fz, *tx, *ty, *tz, *zu, *epot;
+    double *g_overlap, *g_omega2, *g_damp;
+    int32_t *g_partner;
+    pl_colloid_cells_t cells;
+    /* parameters derived from the scene */
+    pl_colloid_pair_params_t pair;
+    pl_colloid_ext_params_t ext;
+    pl_colloid_dlvo_info_t dlvo;
+    double box[3];
+    int periodic[3];
+    int integrator, substeps;
+    double dt, kT, bd_eta;
+    uint64_t seed;
+    double max_overlap, min_contact_steps, max_energy_drift;
+    long long guard_interval;
+    int nve; /* no dissipation: the energy-drift guard applies */
+} pl_colloid_t;
+
+/* Pair-term mask from the colloids.pairs list; on an unknown name returns
+ * PL_ERR_INPUT and copies the name into bad. */
+int pl_colloid_parse_pairs(const char *list, unsigned *mask, char *bad, size_t nbad);
+
+/* Converts the dlvo section (physical units) to simulation units, fits the
+ * parabolic primary minimum for contact distance d_ref and chooses the cut-off
+ * from the potential's decay (src/colloid_params.c). */
+int pl_colloid_dlvo_setup(const pl_scene_dlvo_t *s, double d_ref, pl_colloid_pair_params_t *p,
+                          pl_colloid_dlvo_info_t *info, pl_err_t *err);
+
+/* Pair parameters of every term from the scene (no state needed). */
+int pl_colloid_pair_params(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
+                           pl_colloid_dlvo_info_t *info, pl_err_t *err);
+
+/* State from a validated scene: radii, masses, positions (lattice / random /
+ * file), velocities, forces at t = 0.  An initial overlap beyond
+ * colloids.max_overlap is PL_ERR_INPUT.  `scene_dir` locates init_file. */
+int pl_colloid_create(const pl_scene_t *scene, pl_colloid_t **out, pl_err_t *err);
+void pl_colloid_free(pl_colloid_t *c);
+
+/* Allocation only (n colloids, zeroed; unit quaternions); for tests that set
+ * positions by hand, followed by pl_colloid_setup(). */
+int pl_colloid_alloc(size_t n, pl_colloid_t **out, pl_err_t *err);
+/* Derives parameters from the scene, builds cells, computes the forces. */
+int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
+/* Recomputes cells, pair and external forces (and the per-particle energies). */
+void pl_colloid_forces(pl_colloid_t *c);
+
+/* One MD step (velocity Verlet + quaternions, or BD), then the guards. */
+int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err);
+/* The plan stage: colloids.substeps MD steps of one collision step. */
+int pl_colloid_advance(pl_colloid_t *c, long long collision_step, pl_err_t *err);
+
+/* Guards on the state after the force evaluation of MD step c->md_step
+ * (src/colloid_guard.c).  PL_ERR_GUARD with the message on failure. */
+int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err);
+
+/* Kinetic + potential energy terms of the current state (fixed-order sums). */
+void pl_colloid_energy(const pl_colloid_t *c, pl_colloid_energy_t *e);
+/* Total linear momentum and angular momentum about the origin (unwrapped). */
+void pl_colloid_momentum(const pl_colloid_t *c, double p[3], double l[3]);
+
+/* H5MD trajectory (src/colloid_h5md.c): written to path.tmp, renamed on close. */
+typedef struct pl_colloid_traj pl_colloid_traj_t;
+int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, int overwrite,
+                         pl_colloid_traj_t **out, pl_err_t *err);
+int pl_colloid_traj_write(pl_colloid_traj_t *t, const pl_colloid_t *c, long long step, double time,
+                          pl_err_t *err);
+int pl_colloid_traj_close(pl_colloid_traj_t *t, pl_err_t *err);
+
+#endif

@@ -1,0 +1,122 @@
+/* Colloid kernels (kernels/colloid_*.c): linked cells, pair forces, external
+ * forces, integrators.  Pure functions of raw arrays, counts and small
+ * parameter structs: no scene, no I/O, no allocation. */
+#ifndef PELOID_COLLOID_KERNELS_H
+#define PELOID_COLLOID_KERNELS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* Below this many colloids the kernels run serially: a parallel region costs
+ * more than the work (results are identical either way). */
+#define PL_COLLOID_OMP_MIN 256
+
+/* Pair terms a scene switches on (bit mask). */
+enum {
+    PL_CT_DLVO = 1u,
+    PL_CT_HERTZ = 2u,
+    PL_CT_LUB = 4u,
+    PL_CT_WCA = 8u,
+    PL_CT_ALL = 15u,
+};
+
+/* Energy terms, one row of n per term in the energy scratch array. */
+enum { PL_CE_DLVO, PL_CE_HERTZ, PL_CE_WCA, PL_CE_WALL, PL_CE_GRAVITY, PL_CE_NTERMS };
+
+typedef struct {
+    unsigned terms;  /* PL_CT_* */
+    double box[3];   /* edge lengths */
+    int periodic[3]; /* minimum image along this axis */
+    /* DLVO, Hecht Eqs. 1-2 + parabolic primary minimum (see colloid_pair.h) */
+    double coul_C, kappa, hamaker, prim_hm, prim_h0, dlvo_shift, dlvo_hcut;
+    /* Hertz, Hecht Eqs. 3 and 6 + tangential viscous friction */
+    double hertz_K, hertz_beta, hertz_gamma_t;
+    /* lubrication, Hecht Eqs. 4-5 */
+    double lub_eta, lub_hmin, lub_hcut;
+    /* WCA, PL Eq. 16: sigma > 0 fixed, else R_i + R_j */
+    double wca_eps, wca_sigma, wca_n, wca_rfac; /* rfac = 2^{1/n} */
+    double gap_cut; /* largest surface-gap cut-off of the DLVO/Hertz/lub terms */
+} pl_colloid_pair_params_t;
+
+/* Raw arrays the force kernel reads and writes (all length n). */
+typedef struct {
+    size_t n;
+    const double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *rad, *mass;
+    double *fx, *fy, *fz, *tx, *ty, *tz;
+    double *epot;         /* PL_CE_NTERMS x n per-particle energies, or NULL */
+    double *g_overlap;    /* n: largest overlap (R_i+R_j-r)/(R_i+R_j)        */
+    double *g_omega2;     /* n: largest positive curvature / reduced mass    */
+    double *g_damp;       /* n: largest dissipative rate zeta / reduced mass */
+    int32_t *g_partner;   /* 3 x n: partner j of the three maxima            */
+} pl_colloid_view_t;
+
+/* Linked cells: particles counting-sorted by cell (stable, so a cell lists its
+ * particles in index order). */
+typedef struct {
+    int nc[3];         /* cells per axis (1 when the box holds fewer than 3) */
+    double inv_cl[3];  /* cells per unit length */
+    size_t ncells;
+    int32_t *start;    /* ncells + 1 */
+    int32_t *list;     /* n: particle indices grouped by cell */
+    int32_t *cell;     /* n: cell of each particle */
+} pl_colloid_cells_t;
+
+/* Cells per axis for cut-off rc in box L (0 cells => too small, see .c). */
+void pl_colloid_cells_dims(const double box[3], const int periodic[3], double rc, int nc[3]);
+/* Counting sort of the particles into cells (serial, O(n + ncells)). */
+void pl_colloid_cells_build(pl_colloid_cells_t *cells, size_t n, const double *x, const double *y,
+                            const double *z);
+
+/* Pair forces, torques, energies and guard quantities; overwrites f, t.
+ * `terms` of p must be a subset of PL_CT_ALL. */
+void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_cells_t *cells,
+                            const pl_colloid_view_t *v);
+
+typedef struct {
+    double g[3];      /* acceleration (gravity minus buoyancy) */
+    int walls;        /* repulsive walls at z = 0 and z = Lz */
+    double lz, wall_eps, wall_n;
+} pl_colloid_ext_params_t;
+
+/* Adds gravity and wall forces (walls: PL Eq. 16 form with sigma = R_i at the
+ * wall distance); energies into epot rows PL_CE_WALL / PL_CE_GRAVITY when non-NULL
+ * (gravity energy needs unwrapped z: zu). */
+void pl_colloid_ext_forces(const pl_colloid_ext_params_t *p, size_t n, const double *z,
+                           const double *zu, const double *rad, const double *mass, double *fx,
+                           double *fy, double *fz, double *epot);
+
+/* Velocity Verlet half kick (PL Eq. 19 / Hecht Eq. 8 and the rotational
+ * analogue of Hecht Eq. 9): v += h F/m, w += h T/I. */
+void pl_colloid_kick(size_t n, double h, const double *mass, const double *inertia,
+                     const double *fx, const double *fy, const double *fz, const double *tx,
+                     const double *ty, const double *tz, double *vx, double *vy, double *vz,
+                     double *wx, double *wy, double *wz);
+
+/* Drift (PL Eq. 18 / Hecht Eq. 7 after the half kick) and quaternion update
+ * (Hecht Eq. 10), positions wrapped into the box with image counts. */
+void pl_colloid_drift(size_t n, double dt, const double box[3], const int periodic[3],
+                      double *x, double *y, double *z, int32_t *ix, int32_t *iy, int32_t *iz,
+                      const double *vx, const double *vy, const double *vz, const double *wx,
+                      const double *wy, const double *wz, double *q0, double *q1, double *q2,
+                      double *q3);
+
+/* Rotates the unit quaternion q by the rotation vector phi (space frame) and
+ * normalises it. */
+void pl_colloid_quat_rotate(double phi_x, double phi_y, double phi_z, double q[4]);
+
+typedef struct {
+    double dt, kT, eta;  /* Stokes friction 6 pi eta R, 8 pi eta R^3 */
+    uint64_t seed, step; /* counter-based noise (PL_RNG_COLLOID + 1) */
+} pl_colloid_bd_params_t;
+
+/* One Brownian dynamics step (overdamped Langevin with Stokes friction):
+ * x += F dt/zeta + sqrt(2 kT dt/zeta) xi, same for the orientation; v and w
+ * are set to the drift velocities F/zeta, T/zeta_r. */
+void pl_colloid_bd_step(const pl_colloid_bd_params_t *p, size_t n, const double box[3],
+                        const int periodic[3], const double *rad, double *x, double *y, double *z,
+                        int32_t *ix, int32_t *iy, int32_t *iz, const double *fx, const double *fy,
+                        const double *fz, const double *tx, const double *ty, const double *tz,
+                        double *vx, double *vy, double *vz, double *wx, double *wy, double *wz,
+                        double *q0, double *q1, double *q2, double *q3);
+
+#endif

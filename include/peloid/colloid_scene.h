@@ -1,0 +1,47 @@
+/* Scene structs of the colloid module (sections colloids, dlvo, hertz,
+ * lubrication, wca; schema in src/scene_keys_colloid.c).  Included by
+ * scene.h; plain data only. */
+#ifndef PELOID_COLLOID_SCENE_H
+#define PELOID_COLLOID_SCENE_H
+
+enum { PL_CINIT_LATTICE = 0, PL_CINIT_RANDOM = 1, PL_CINIT_FILE = 2 };
+enum { PL_CINT_VERLET = 0, PL_CINT_BROWNIAN = 1 };
+
+typedef struct {
+    double eps_r, psi0_mV, z, temperature_K, kappa_per_m, hamaker_J, length_unit_m;
+    double primary_depth, primary_gap, cutoff_energy;
+} pl_scene_dlvo_t;
+
+typedef struct {
+    double K, beta, gamma_t;
+} pl_scene_hertz_t;
+
+typedef struct {
+    double viscosity, min_gap, cutoff_gap;
+} pl_scene_lub_t;
+
+typedef struct {
+    double epsilon, sigma, n;
+} pl_scene_wca_t;
+
+typedef struct {
+    long long count;
+    double radius, polydispersity, mass_density, temperature;
+    int init;              /* PL_CINIT_* */
+    char init_file[128];   /* relative to the scene file's directory */
+    char pairs[128];       /* comma-separated subset of dlvo, hertz, lubrication, wca */
+    int integrator;        /* PL_CINT_* */
+    long long substeps;    /* MD steps per collision step */
+    double gravity[3];
+    double bd_viscosity;
+    double wall_epsilon, wall_n;
+    double max_overlap, min_contact_steps, max_energy_drift;
+    long long guard_interval;     /* MD steps between energy-drift checks */
+    long long trajectory_interval; /* collision steps; 0 = no trajectory */
+    pl_scene_dlvo_t dlvo;
+    pl_scene_hertz_t hertz;
+    pl_scene_lub_t lub;
+    pl_scene_wca_t wca;
+} pl_scene_colloids_t;
+
+#endif

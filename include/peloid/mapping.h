@@ -1,0 +1,266 @@
+/* Mapping a physical suspension onto SRD + MD simulation parameters, and the
+ * audit of time scales and dimensionless numbers.
+ *
+ * Physics: Hecht et al. 2005 Sec. VI-VII (Eqs. 16-31, Tables I-IV) and
+ * Padding & Louis 2006 (PL) Sec. II.B (Eqs. 4-15), IV (Eqs. 26-38), VI
+ * (Eqs. 46-57), VII and Appendix C (Tables IV-VI).
+ *
+ * Units.  Inputs and the "real"/"model" tables are SI.  The simulation runs
+ * in a0 = 1 (cell size), m_f = 1 (fluid particle mass), kT = 1 (the model
+ * temperature), so t0 = a0 sqrt(m_f/kT) and the SRD step is lambda t0
+ * (PL Eq. 4).  The mapping fixes a0 (from R and the cell size), m_f (the
+ * solvent mass density rho_f = gamma m_f / a0^3 is kept) and t0 (by matching
+ * either the colloid diffusion time, Hecht Sec. VII / PL example 1, or the
+ * kinematic time, PL example 2).  The model temperature kT_model = m_f a0^2 /
+ * t0^2 then differs from the real kT; all energies are scaled with it
+ * (Hecht's Lambda = rho/kT argument, PL example 3).
+ *
+ * Modules: mapping_srd.c (SRD transport + friction), mapping_hecht.c (Hecht
+ * time scales and Sec. VII derivation), mapping_pl.c (PL colloid numbers and
+ * time scales), mapping_audit.c (dimensionless numbers and warnings),
+ * mapping_report.c (text + JSON), mapping_scene.c (scene front end). */
+#ifndef PELOID_MAPPING_H
+#define PELOID_MAPPING_H
+
+#include <stdio.h>
+
+#include "peloid/error.h"
+
+struct pl_scene;
+
+#define PL_KB 1.380649e-23          /* J/K (CODATA 2018, exact) */
+#define PL_E_CHARGE 1.602176634e-19 /* C */
+#define PL_EPS0 8.8541878128e-12    /* F/m */
+#define PL_NA 6.02214076e23         /* 1/mol */
+
+enum { PL_COUPLING_I = 0, PL_COUPLING_II = 1 };
+enum { PL_MATCH_DIFFUSION = 0, PL_MATCH_KINEMATIC = 1 };
+enum { PL_BOUNDARY_STICK = 0, PL_BOUNDARY_SLIP = 1 };
+/* Viscosity formula: Hecht Eq. 28 (rotation by +-90 deg about a coordinate
+ * axis) or PL Eqs. 9-12 (rotation by alpha about a random axis). */
+enum { PL_VISC_HECHT28 = 0, PL_VISC_PL = 1 };
+
+/* ---- SRD transport (PL Eqs. 6, 9-15; Hecht Eq. 28) ------------------- */
+/* In units a0, t0, m_f; lambda = dt/t0, gamma = particles per cell. */
+double pl_mapping_f_kin(double gamma, double alpha);                    /* PL Eq. 11 */
+double pl_mapping_f_col(double gamma, double alpha);                    /* PL Eq. 12 */
+double pl_mapping_nu_kin(double lambda, double gamma, double alpha);    /* PL Eq. 9 */
+double pl_mapping_nu_col(double lambda, double gamma, double alpha);    /* PL Eq. 10 */
+double pl_mapping_d_fluid(double lambda, double gamma, double alpha);   /* PL Eq. 6 */
+double pl_mapping_nu_hecht(double lambda, double gamma);                /* Hecht Eq. 28 */
+/* Kinematic viscosity nu/nu0 for the given formula (PL_VISC_*). */
+double pl_mapping_nu(int formula, double lambda, double gamma, double alpha);
+/* Enskog friction of a colloid of radius sigma and mass mc (units a0, m_f, kT,
+ * t0): PL Eq. 40 (slip); stick multiplies by the rough-sphere factor
+ * (1 + 2k)/(1 + k), k = 2/5 (see mapping_srd.c). */
+double pl_mapping_xi_enskog(double sigma, double mc, double gamma, int boundary);
+
+/* ---- a suspension in SI (the real system, or the model expressed in SI) - */
+typedef struct {
+    double radius;   /* R, m */
+    double rho_p;    /* colloid mass density, kg/m^3 */
+    double rho_f;    /* solvent mass density, kg/m^3 */
+    double nu;       /* solvent kinematic viscosity, m^2/s */
+    double kT;       /* thermal energy, J */
+    double g;        /* gravitational acceleration on the colloid, m/s^2 */
+    int buoyancy;    /* 1: gravity acts on (rho_p - rho_f); 0: on rho_p (model
+                        without gravity on the fluid, Hecht Eq. 31) */
+    double hamaker;  /* A_H, J (0: no tau_V) */
+    double l_min;    /* distance to the primary minimum l, m (0: no tau_V) */
+} pl_mapping_system_t;
+
+/* Hecht Sec. VI time scales (s); NaN where undefined (e.g. no gravity). */
+typedef struct {
+    double v_s;   /* Stokes velocity, Hecht Eq. 16 */
+    double D;     /* colloid diffusion coefficient, Hecht Eq. 18 */
+    double mass;  /* colloid mass 4/3 pi R^3 rho_p */
+    double tau_S, tau_D, tau_G, tau_V, tau_F, tau_P; /* Eqs. 17, 20, tau_D/16, 26, 24, 23 */
+    double Pe, Re; /* Eqs. 21, 25 */
+} pl_mapping_hecht_times_t;
+
+void pl_mapping_hecht_times(const pl_mapping_system_t *s, pl_mapping_hecht_times_t *t);
+
+/* ---- coarse-graining choices ------------------------------------------ */
+typedef struct {
+    int coupling;       /* PL_COUPLING_* */
+    int match;          /* PL_MATCH_*: which time is kept (fixes t0) */
+    int viscosity;      /* PL_VISC_* */
+    int boundary;       /* PL_BOUNDARY_*: Stokes 6 pi (stick) or 4 pi (slip) */
+    int enskog;         /* add the Enskog friction in parallel (PL Eq. 41) */
+    int fluid_gravity;  /* gravity also on the fluid (else Hecht Eq. 31) */
+    double cell_over_R; /* a0 / R (> 0) */
+    double gamma;       /* fluid particles per cell (M in Hecht) */
+    double lambda;      /* mean free path / a0 = dt / t0 (PL Eq. 4) */
+    double alpha;       /* rotation angle, rad (PL viscosity) */
+    double srd_dt;      /* SRD step in s; 0: derived (Hecht Eq. 30) */
+    double md_dt;       /* MD step in s; 0: derived */
+    double md_resolution; /* MD steps per shortest MD time scale (Hecht Sec. II: ~20) */
+} pl_mapping_cg_t;
+
+/* Extra properties of the real system the audit needs. */
+typedef struct {
+    double flow_velocity;   /* m/s; used when there is no gravity */
+    double sound_speed;     /* c_s of the solvent, m/s */
+    double mean_free_path;  /* lambda_free of the solvent, m */
+    double self_diffusion;  /* D_f of a solvent molecule, m^2/s */
+} pl_mapping_solvent_t;
+
+/* PL time scales (s) with a = R: t_cs (Eq. 46), tau_nu (31), tau_B (47),
+ * tau_E (53), tau_D (36), t_S (30). */
+typedef struct {
+    double t_cs, tau_nu, tau_B, tau_E, tau_D, t_S;
+} pl_mapping_pl_times_t;
+
+/* Dimensionless numbers (PL Table II): Sc (26), Ma (28), Re (29), Kn (34), Pe (35). */
+typedef struct {
+    double Sc, Ma, Re, Kn, Pe;
+} pl_mapping_numbers_t;
+
+enum { PL_MAP_MAX_WARN = 24 };
+enum { PL_SEV_NOTE = 0, PL_SEV_WARNING = 1 };
+
+typedef struct {
+    char name[24];   /* e.g. "MACH", "REYNOLDS" */
+    int severity;    /* PL_SEV_* */
+    double value;
+    char text[400];  /* number, value, recommended range, source, input to change */
+} pl_mapping_warning_t;
+
+/* Full result of the mapping. */
+typedef struct {
+    pl_mapping_system_t real, model;
+    pl_mapping_cg_t cg;
+    pl_mapping_solvent_t solvent;
+    /* units of the simulation in SI */
+    double a0, t0, m_f, kT_model; /* m, s, kg, J */
+    double energy_scale;          /* kT_real / kT_model = Lambda_model / Lambda_real */
+    double lambda_real, lambda_model; /* Hecht Lambda = rho_p / kT, s^2/m^5 */
+    /* SRD */
+    double nu_sim;        /* nu / nu0 */
+    double nu_coeff;      /* nu dt / a0^2 (Hecht Eq. 29) */
+    double dt;            /* SRD step, s */
+    double d_fluid_sim;   /* D_f / D0 (PL Eq. 6) */
+    /* colloid in simulation units */
+    double sigma;         /* R / a0 */
+    double mass_sim;      /* colloid mass / m_f */
+    double xi_stokes_sim, xi_enskog_sim, xi_sim; /* m_f / t0 (PL Eqs. 39-41) */
+    double d_col_sim;     /* a0^2 / t0 */
+    double g_sim;         /* gravity on the colloid, a0 / t0^2 */
+    double v_sim;         /* flow / Stokes velocity, a0 / t0 */
+    /* MD */
+    double md_dt;         /* s, after rounding to an integer number of substeps */
+    long long md_substeps;/* MD steps per SRD step */
+    /* time scales */
+    pl_mapping_hecht_times_t hecht_real, hecht_model;
+    pl_mapping_pl_times_t pl_real, pl_model;
+    pl_mapping_numbers_t num_real, num_model;
+    int nwarn;
+    pl_mapping_warning_t warn[PL_MAP_MAX_WARN];
+} pl_mapping_t;
+
+/* Derives everything from the real system, the solvent extras and the
+ * coarse-graining choices (Hecht Sec. VII; PL Sec. VII).  Returns
+ * PL_ERR_INPUT for input that admits no mapping. */
+int pl_mapping_derive(const pl_mapping_system_t *real, const pl_mapping_solvent_t *solvent,
+                      const pl_mapping_cg_t *cg, pl_mapping_t *out, pl_err_t *err);
+
+/* PL quantities of a colloid in an SRD fluid, simulation units (PL Table VI):
+ * fills sigma, mass_sim, xi_*, d_col_sim, nu_sim, d_fluid_sim, pl_model (in
+ * t0) and num_model from (sigma, rho_p/rho_f, v_sim, cg).  Used by derive and
+ * by the Table VI test. */
+void pl_mapping_pl_colloid(double sigma, double rho_ratio, double v_sim, const pl_mapping_cg_t *cg,
+                           pl_mapping_t *m);
+
+/* Dimensionless numbers and time scales of the real system (PL Table V). */
+void pl_mapping_pl_real(const pl_mapping_system_t *real, const pl_mapping_solvent_t *solvent,
+                        double velocity, int boundary, pl_mapping_pl_times_t *t,
+                        pl_mapping_numbers_t *n);
+
+/* Fills m->warn with the named warnings and notes (mapping_audit.c). */
+void pl_mapping_audit(pl_mapping_t *m);
+
+/* Appends a named warning or note (ignored beyond PL_MAP_MAX_WARN). */
+void pl_mapping_warn(pl_mapping_t *m, int severity, const char *name, double value, const char *fmt, ...)
+    __attribute__((format(printf, 5, 6)));
+
+/* Number of warnings of severity PL_SEV_WARNING. */
+int pl_mapping_nwarnings(const pl_mapping_t *m);
+
+/* Debye-Hueckel: kappa = sqrt(2 N_A e^2 I / (eps_r eps0 kT)), I in mol/m^3. */
+double pl_mapping_debye_kappa(double ionic_strength_molar, double eps_r, double kT);
+
+/* ---- scene front end (sections physical{} and coarse_graining{}) ------- */
+typedef struct {
+    double radius;            /* m */
+    double particle_density;  /* kg/m^3 */
+    double solvent_density;   /* kg/m^3 */
+    double temperature;       /* K */
+    double viscosity;         /* kinematic, m^2/s */
+    double gravity;           /* m/s^2, along -z */
+    double hamaker;           /* J */
+    double surface_potential; /* V */
+    double kappa;             /* 1/m (0: from ionic_strength) */
+    double ionic_strength;    /* mol/L */
+    long long valence;        /* z of the (symmetric) electrolyte */
+    double permittivity;      /* relative, eps_r */
+    double primary_minimum;   /* l, m */
+    double volume_fraction;
+    double box[3];            /* m; 0: box.cells as given */
+    double flow_velocity;     /* m/s */
+    double sound_speed;       /* m/s */
+    double mean_free_path;    /* m */
+    double self_diffusion;    /* m^2/s */
+} pl_scene_physical_t;
+
+typedef struct {
+    int coupling;             /* PL_COUPLING_* */
+    int time_match;           /* PL_MATCH_* */
+    int boundary;             /* PL_BOUNDARY_* */
+    int enskog, fluid_gravity, strict;
+    double cell_size;         /* a0/R; 0: coupling default */
+    double particles_per_cell;
+    double mean_free_path;    /* lambda/a0 */
+    double srd_dt, md_dt;     /* s; 0: derived */
+    double md_resolution;
+} pl_scene_cg_t;
+
+/* Colloid parameters in simulation units, for the colloid module. */
+typedef struct {
+    double radius, mass, gravity;  /* a0, m_f, a0/t0^2 */
+    double hamaker;                /* kT (A_H / kT_real, Hecht Sec. VII.B) */
+    double coulomb;                /* kT/a0: prefactor of Hecht Eq. 1 */
+    double kappa;                  /* 1/a0 */
+    double primary_minimum;        /* a0 */
+    double md_dt;                  /* t0 */
+    long long md_substeps;
+    long long n_colloids;          /* from volume_fraction and the box */
+} pl_mapping_colloid_t;
+
+typedef struct {
+    int enabled;                   /* the scene has a physical{} section */
+    pl_scene_physical_t physical;
+    pl_scene_cg_t cg;
+    double kappa;                  /* 1/m, given or Debye-Hueckel */
+    pl_mapping_t map;              /* filled by pl_mapping_scene_apply */
+    pl_mapping_colloid_t colloid;
+} pl_scene_mapping_t;
+
+/* Runs the mapping for a scene with a physical{} section and writes the
+ * derived values into srd.dt, fluid.density, fluid.temperature and
+ * box.cells (refusing those keys if the file also sets them).  A no-op
+ * without the section.  Called by pl_scene_validate. */
+int pl_mapping_scene_apply(struct pl_scene *scene, pl_err_t *err);
+
+/* ---- reports ----------------------------------------------------------- */
+/* Readable report / one JSON object; `colloid` may be NULL. */
+void pl_mapping_print_text(const pl_mapping_t *m, const pl_mapping_colloid_t *colloid, FILE *out);
+void pl_mapping_print_json(const pl_mapping_t *m, const pl_mapping_colloid_t *colloid, FILE *out);
+
+/* For `peloid params SCENE` and summary.json: when the scene has a
+ * physical{} section, writes the mapping report (text or JSON) to `out`;
+ * otherwise writes nothing (JSON: null).  With strict (or
+ * coarse_graining.strict) any warning becomes PL_ERR_INPUT with the first
+ * warning in err.  Returns 0 or PL_ERR_INPUT. */
+int pl_mapping_report(const struct pl_scene *scene, FILE *out, int json, int strict, pl_err_t *err);
+
+#endif

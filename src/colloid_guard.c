@@ -1,0 +1,84 @@
+/* Stability guards of the colloid MD (the papers' criteria made checks,
+ * DESIGN.md "Errors, bad input, guards"):
+ *   - overlap (R_i+R_j-r)/(R_i+R_j) beyond colloids.max_overlap (Hecht Sec. II: ~10%)
+ *   - a collision resolved by fewer than colloids.min_contact_steps MD steps
+ *     (Hecht Sec. II: ~20), estimated from the actual stiffness as the half
+ *     period pi sqrt(m_red / U'') of the pair at its present separation
+ *   - a dissipative rate zeta/m_red with dt zeta/m_red > 0.5 (explicit
+ *     damping overshoots; the friction would reverse the relative velocity)
+ *   - NaN/Inf in position, velocity, force
+ *   - drift of the total energy in undamped NVE runs beyond
+ *     colloids.max_energy_drift kT per colloid (Hecht Sec. IX.A)
+ * Each message names step, particles, quantity, bound and the parameter to
+ * change.  The per-particle maxima come from the force kernel; the scans here
+ * are serial in index order, so the reported pair is thread-count independent. */
+#include <math.h>
+
+#include "peloid/colloid.h"
+
+static size_t argmax(const double *a, size_t n)
+{
+    size_t w = 0;
+    for (size_t i = 1; i < n; ++i)
+        if (a[i] > a[w]) w = i;
+    return w;
+}
+
+int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err)
+{
+    size_t n = c->n;
+    if (!n) return 0;
+    long long st = c->md_step;
+    for (size_t i = 0; i < n; ++i) {
+        double s = c->x[i] + c->y[i] + c->z[i] + c->vx[i] + c->vy[i] + c->vz[i] + c->fx[i] +
+                   c->fy[i] + c->fz[i] + c->wx[i] + c->wy[i] + c->wz[i];
+        if (!isfinite(s))
+            return pl_err_set(err, PL_ERR_GUARD,
+                              "guard nan: MD step %lld: colloid %zu has a non-finite position, "
+                              "velocity or force (x=%g v=%g f=%g); bound: finite; reduce the time "
+                              "step (srd.dt or raise colloids.substeps)",
+                              st, i, c->x[i], c->vx[i], c->fx[i]);
+    }
+    size_t w = argmax(c->g_overlap, n);
+    if (c->g_overlap[w] > c->max_overlap)
+        return pl_err_set(err, PL_ERR_GUARD,
+                          "guard overlap: MD step %lld: colloids %zu and %d overlap by %.4g of "
+                          "R_i+R_j; bound colloids.max_overlap = %g; raise hertz.K (or the "
+                          "repulsion), or lower the approach speed / gravity",
+                          st, w, c->g_partner[w], c->g_overlap[w], c->max_overlap);
+    if (c->min_contact_steps > 0.0) {
+        w = argmax(c->g_omega2, n);
+        double om2 = c->g_omega2[w];
+        if (om2 > 0.0) {
+            double steps = M_PI / sqrt(om2) / c->dt;
+            if (steps < c->min_contact_steps)
+                return pl_err_set(err, PL_ERR_GUARD,
+                                  "guard contact_steps: MD step %lld: colloids %zu and %d: the "
+                                  "collision time pi sqrt(m_red/U'') = %.4g t0 is resolved by "
+                                  "%.3g MD steps of dt = %.4g; bound colloids.min_contact_steps = "
+                                  "%g; raise colloids.substeps (or lower hertz.K / the stiffest "
+                                  "term, e.g. dlvo.primary_depth)",
+                                  st, w, c->g_partner[n + w], M_PI / sqrt(om2), steps, c->dt,
+                                  c->min_contact_steps);
+        }
+    }
+    w = argmax(c->g_damp, n);
+    if (c->g_damp[w] * c->dt > 0.5)
+        return pl_err_set(err, PL_ERR_GUARD,
+                          "guard damping: MD step %lld: colloids %zu and %d: dt zeta/m_red = %.4g "
+                          "(dissipative rate %.4g /t0); bound 0.5; raise lubrication.min_gap or "
+                          "colloids.substeps, or lower hertz.beta / hertz.gamma_t",
+                          st, w, c->g_partner[2 * n + w], c->g_damp[w] * c->dt, c->g_damp[w]);
+    if (check_energy) {
+        pl_colloid_energy_t e;
+        pl_colloid_energy(c, &e);
+        double drift = fabs(e.total - c->e0) / (double)n;
+        if (!(drift <= c->max_energy_drift))
+            return pl_err_set(err, PL_ERR_GUARD,
+                              "guard energy_drift: MD step %lld: all %zu colloids: |E - E0|/N = "
+                              "%.4g kT (E0 = %.6g, E = %.6g); bound colloids.max_energy_drift = "
+                              "%g; raise colloids.substeps (smaller dt_MD)",
+                              st, n, drift, c->e0, e.total, c->max_energy_drift);
+    }
+    return 0;
+}

@@ -1,0 +1,48 @@
+/* Cross-key checks of the colloid sections (called by pl_scene_validate):
+ * what one key's range cannot express. */
+#include <math.h>
+#include <stdio.h>
+
+#include "peloid/colloid.h"
+
+#define OFF(m) offsetof(pl_scene_t, m)
+
+int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err)
+{
+    const pl_scene_colloids_t *cs = &scene->colloids;
+    unsigned mask;
+    char bad[128];
+    if (pl_colloid_parse_pairs(cs->pairs, &mask, bad, sizeof bad))
+        return pl_scene_fail(scene, err, OFF(colloids.pairs), "colloids.pairs",
+                             "unknown pair term \"%s\"; allowed: dlvo, hertz, lubrication, wca "
+                             "(comma separated)", bad);
+    if (cs->count == 0) return 0;
+    if (cs->init == PL_CINIT_FILE && !cs->init_file[0])
+        return pl_scene_fail(scene, err, OFF(colloids.init), "colloids.init",
+                             "\"file\" needs colloids.init_file");
+    pl_colloid_pair_params_t p;
+    pl_colloid_dlvo_info_t info;
+    pl_err_t sub = {0, ""};
+    if (pl_colloid_pair_params(scene, &p, &info, &sub))
+        return pl_scene_fail(scene, err, OFF(colloids.dlvo.primary_depth), "dlvo.primary_depth",
+                             "%s", sub.msg);
+    double rmax = cs->radius * (1.0 + sqrt(3.0) * cs->polydispersity);
+    double rc = 2.0 * rmax + p.gap_cut;
+    if (mask & PL_CT_WCA) {
+        double sg = cs->wca.sigma > 0.0 ? cs->wca.sigma : 2.0 * rmax;
+        rc = fmax(rc, sg * p.wca_rfac);
+    }
+    for (int k = 0; k < 3; ++k) {
+        if (!p.periodic[k]) continue;
+        if (rc > 0.5 * scene->box.cells[k])
+            return pl_scene_fail(scene, err, OFF(box.cells), "box.cells",
+                                 "edge %d (%d a0) is shorter than twice the colloid pair cut-off "
+                                 "%.4g a0 (minimum image); allowed: edges >= %.4g",
+                                 k, scene->box.cells[k], rc, 2.0 * rc);
+    }
+    if (scene->box.walls_z != PL_WALLS_NONE && 2.0 * rmax >= scene->box.cells[2])
+        return pl_scene_fail(scene, err, OFF(colloids.radius), "colloids.radius",
+                             "colloid diameter %.4g does not fit between the z walls (Lz = %d)",
+                             2.0 * rmax, scene->box.cells[2]);
+    return 0;
+}

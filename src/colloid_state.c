@@ -1,0 +1,332 @@
+/* Colloid state: allocation (64-byte aligned structure of arrays), set-up of
+ * radii, masses, positions and velocities from the scene, force evaluation,
+ * energies and momenta (fixed-order serial sums: bitwise reproducible). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "peloid/colloid.h"
+#include "peloid/rng.h"
+
+#define OFF(m) offsetof(pl_scene_t, m)
+
+static void *zalloc(size_t bytes)
+{
+    size_t b = (bytes + 63) / 64 * 64;
+    void *p = aligned_alloc(64, b ? b : 64);
+    if (p) memset(p, 0, b ? b : 64);
+    return p;
+}
+
+enum { NDBL = 27, NI32 = 6 };
+
+int pl_colloid_alloc(size_t n, pl_colloid_t **out, pl_err_t *err)
+{
+    pl_colloid_t *c = calloc(1, sizeof *c);
+    if (!c) return pl_err_set(err, PL_ERR_NOMEM, "colloids: out of memory");
+    c->n = n;
+    double **d[NDBL] = {&c->x, &c->y, &c->z, &c->vx, &c->vy, &c->vz, &c->wx, &c->wy, &c->wz,
+                        &c->q0, &c->q1, &c->q2, &c->q3, &c->rad, &c->mass, &c->inertia,
+                        &c->fx, &c->fy, &c->fz, &c->tx, &c->ty, &c->tz, &c->zu,
+                        &c->g_overlap, &c->g_omega2, &c->g_damp, &c->epot};
+    int fail = 0;
+    for (int k = 0; k < NDBL; ++k) {
+        size_t len = k == NDBL - 1 ? (size_t)PL_CE_NTERMS * n : n;
+        *d[k] = zalloc(len * sizeof(double));
+        fail |= !*d[k];
+    }
+    c->ix = zalloc(n * sizeof(int32_t));
+    c->iy = zalloc(n * sizeof(int32_t));
+    c->iz = zalloc(n * sizeof(int32_t));
+    c->g_partner = zalloc(3 * n * sizeof(int32_t));
+    c->cells.list = zalloc(n * sizeof(int32_t));
+    c->cells.cell = zalloc(n * sizeof(int32_t));
+    fail |= !c->ix || !c->iy || !c->iz || !c->g_partner || !c->cells.list || !c->cells.cell;
+    if (fail) {
+        pl_colloid_free(c);
+        return pl_err_set(err, PL_ERR_NOMEM, "colloids: out of memory for %zu colloids", n);
+    }
+    for (size_t i = 0; i < n; ++i) c->q0[i] = 1.0;
+    *out = c;
+    return 0;
+}
+
+void pl_colloid_free(pl_colloid_t *c)
+{
+    if (!c) return;
+    double *d[NDBL] = {c->x, c->y, c->z, c->vx, c->vy, c->vz, c->wx, c->wy, c->wz,
+                       c->q0, c->q1, c->q2, c->q3, c->rad, c->mass, c->inertia,
+                       c->fx, c->fy, c->fz, c->tx, c->ty, c->tz, c->zu,
+                       c->g_overlap, c->g_omega2, c->g_damp, c->epot};
+    for (int k = 0; k < NDBL; ++k) free(d[k]);
+    free(c->ix);
+    free(c->iy);
+    free(c->iz);
+    free(c->g_partner);
+    free(c->cells.list);
+    free(c->cells.cell);
+    free(c->cells.start);
+    free(c);
+}
+
+void pl_colloid_forces(pl_colloid_t *c)
+{
+    pl_colloid_cells_build(&c->cells, c->n, c->x, c->y, c->z);
+    pl_colloid_view_t v = {c->n, c->x, c->y, c->z, c->vx, c->vy, c->vz, c->wx, c->wy, c->wz,
+                           c->rad, c->mass, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz, c->epot,
+                           c->g_overlap, c->g_omega2, c->g_damp, c->g_partner};
+    pl_colloid_pair_forces(&c->pair, &c->cells, &v);
+    for (size_t i = 0; i < c->n; ++i) c->zu[i] = c->z[i] + (double)c->iz[i] * c->box[2];
+    pl_colloid_ext_forces(&c->ext, c->n, c->z, c->zu, c->rad, c->mass, c->fx, c->fy, c->fz, c->epot);
+}
+
+int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
+{
+    const pl_scene_colloids_t *cs = &scene->colloids;
+    if (pl_colloid_pair_params(scene, &c->pair, &c->dlvo, err)) return err->code;
+    for (int k = 0; k < 3; ++k) {
+        c->box[k] = c->pair.box[k];
+        c->periodic[k] = c->pair.periodic[k];
+    }
+    for (int k = 0; k < 3; ++k) c->ext.g[k] = cs->gravity[k];
+    c->ext.walls = !c->periodic[2];
+    c->ext.lz = c->box[2];
+    c->ext.wall_eps = cs->wall_epsilon;
+    c->ext.wall_n = cs->wall_n;
+    c->integrator = cs->integrator;
+    c->substeps = (int)cs->substeps;
+    c->dt = scene->srd.dt / (double)cs->substeps;
+    c->kT = cs->temperature;
+    c->bd_eta = cs->bd_viscosity;
+    c->seed = (uint64_t)scene->run.seed;
+    c->max_overlap = cs->max_overlap;
+    c->min_contact_steps = cs->min_contact_steps;
+    c->max_energy_drift = cs->max_energy_drift;
+    c->guard_interval = cs->guard_interval;
+    unsigned t = c->pair.terms;
+    c->nve = c->integrator == PL_CINT_VERLET && !(t & PL_CT_LUB) &&
+             !((t & PL_CT_HERTZ) && (cs->hertz.beta > 0.0 || cs->hertz.gamma_t > 0.0));
+    /* cells sized by the largest pair cut-off */
+    double rmax = 0.0;
+    for (size_t i = 0; i < c->n; ++i) rmax = fmax(rmax, c->rad[i]);
+    double rc = 2.0 * rmax + c->pair.gap_cut;
+    if (t & PL_CT_WCA) rc = fmax(rc, (c->pair.wca_sigma > 0 ? c->pair.wca_sigma : 2.0 * rmax) * c->pair.wca_rfac);
+    pl_colloid_cells_dims(c->box, c->periodic, rc, c->cells.nc);
+    c->cells.ncells = (size_t)c->cells.nc[0] * (size_t)c->cells.nc[1] * (size_t)c->cells.nc[2];
+    for (int k = 0; k < 3; ++k) c->cells.inv_cl[k] = c->cells.nc[k] / c->box[k];
+    free(c->cells.start);
+    c->cells.start = zalloc((c->cells.ncells + 1) * sizeof(int32_t));
+    if (!c->cells.start) return pl_err_set(err, PL_ERR_NOMEM, "colloids: out of memory (cells)");
+    pl_colloid_forces(c);
+    pl_colloid_energy_t e;
+    pl_colloid_energy(c, &e);
+    c->e0 = e.total;
+    return 0;
+}
+
+static void place_lattice(pl_colloid_t *c, const double L[3], int walls)
+{
+    double a = cbrt(L[0] * L[1] * L[2] / (double)c->n);
+    long m[3];
+    for (int k = 0; k < 3; ++k) m[k] = lround(fmax(1.0, floor(L[k] / a)));
+    while (m[0] * m[1] * m[2] < (long)c->n) {
+        int k = 0; /* refine the axis with the widest spacing */
+        for (int j = 1; j < 3; ++j)
+            if (L[j] / (double)m[j] > L[k] / (double)m[k]) k = j;
+        m[k]++;
+    }
+    (void)walls;
+    for (size_t i = 0; i < c->n; ++i) {
+        long ii = (long)i;
+        c->x[i] = ((double)(ii % m[0]) + 0.5) * L[0] / (double)m[0];
+        c->y[i] = ((double)((ii / m[0]) % m[1]) + 0.5) * L[1] / (double)m[1];
+        c->z[i] = ((double)(ii / (m[0] * m[1])) + 0.5) * L[2] / (double)m[2];
+    }
+}
+
+static double min_image(double d, double L, int per) { return per ? d - L * rint(d / L) : d; }
+
+static int place_random(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
+{
+    const double *L = c->box;
+    for (size_t i = 0; i < c->n; ++i) {
+        int ok = 0;
+        for (uint64_t att = 0; att < 100000 && !ok; ++att) {
+            pl_rand4_t u = pl_rng_uniform4(c->seed, PL_RNG_COLLOID + 2, att, i, 0);
+            double R = c->rad[i];
+            double zlo = c->periodic[2] ? 0.0 : R, zhi = c->periodic[2] ? L[2] : L[2] - R;
+            c->x[i] = u.u[0] * L[0];
+            c->y[i] = u.u[1] * L[1];
+            c->z[i] = zlo + u.u[2] * (zhi - zlo);
+            ok = 1;
+            for (size_t j = 0; j < i && ok; ++j) {
+                double dx = min_image(c->x[i] - c->x[j], L[0], 1);
+                double dy = min_image(c->y[i] - c->y[j], L[1], 1);
+                double dz = min_image(c->z[i] - c->z[j], L[2], c->periodic[2]);
+                double d = c->rad[i] + c->rad[j];
+                if (dx * dx + dy * dy + dz * dz < d * d) ok = 0;
+            }
+        }
+        if (!ok)
+            return pl_scene_fail(scene, err, OFF(colloids.count), "colloids.count",
+                                 "random placement found no free site for colloid %zu of %zu "
+                                 "after 100000 tries; lower colloids.count or use init = \"lattice\"",
+                                 i, c->n);
+    }
+    return 0;
+}
+
+static int place_file(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
+{
+    char path[1024];
+    const char *slash = strrchr(scene->path, '/');
+    int dl = slash ? (int)(slash - scene->path) + 1 : 0;
+    snprintf(path, sizeof path, "%.*s%s", dl, scene->path, scene->colloids.init_file);
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return pl_scene_fail(scene, err, OFF(colloids.init_file), "colloids.init_file",
+                             "cannot open \"%s\"", path);
+    char line[512];
+    size_t i = 0;
+    int ln = 0, rc = 0;
+    while (fgets(line, sizeof line, f) && i < c->n) {
+        ++ln;
+        if (line[0] == '#' || line[strspn(line, " \t\r\n")] == '\0') continue;
+        double v[4];
+        int k = sscanf(line, "%lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3]);
+        if (k < 3 || (k == 4 && !(v[3] > 0.0))) {
+            rc = pl_err_set(err, PL_ERR_INPUT, "%s:%d: expected \"x y z [R]\" with R > 0", path, ln);
+            break;
+        }
+        c->x[i] = v[0];
+        c->y[i] = v[1];
+        c->z[i] = v[2];
+        if (k == 4) c->rad[i] = v[3];
+        ++i;
+    }
+    fclose(f);
+    if (!rc && i < c->n)
+        rc = pl_scene_fail(scene, err, OFF(colloids.count), "colloids.count",
+                           "%zu colloids asked for, \"%s\" lists %zu", c->n, path, i);
+    for (size_t j = 0; j < c->n && !rc; ++j) {
+        double *p[3] = {&c->x[j], &c->y[j], &c->z[j]};
+        for (int k = 0; k < 3; ++k) {
+            if (c->periodic[k]) {
+                double w = floor(*p[k] / c->box[k]);
+                *p[k] -= w * c->box[k];
+            } else if (*p[k] < 0.0 || *p[k] > c->box[k]) {
+                rc = pl_err_set(err, PL_ERR_INPUT, "%s: colloid %zu has z = %g outside the walls [0, %g]",
+                                path, j, *p[k], c->box[k]);
+            }
+        }
+    }
+    return rc;
+}
+
+int pl_colloid_create(const pl_scene_t *scene, pl_colloid_t **out, pl_err_t *err)
+{
+    const pl_scene_colloids_t *cs = &scene->colloids;
+    pl_colloid_t *c;
+    if (pl_colloid_alloc((size_t)cs->count, &c, err)) return err->code;
+    c->seed = (uint64_t)scene->run.seed;
+    for (int k = 0; k < 3; ++k) c->box[k] = scene->box.cells[k];
+    c->periodic[0] = c->periodic[1] = 1;
+    c->periodic[2] = scene->box.walls_z == PL_WALLS_NONE;
+    for (size_t i = 0; i < c->n; ++i) {
+        pl_rand4_t u = pl_rng_uniform4(c->seed, PL_RNG_COLLOID + 4, 0, i, 0);
+        c->rad[i] = cs->radius * (1.0 + sqrt(3.0) * cs->polydispersity * (2.0 * u.u[0] - 1.0));
+    }
+    int rc = 0;
+    if (cs->init == PL_CINIT_LATTICE) place_lattice(c, c->box, !c->periodic[2]);
+    else if (cs->init == PL_CINIT_RANDOM) rc = place_random(c, scene, err);
+    else rc = place_file(c, scene, err);
+    if (rc) {
+        pl_colloid_free(c);
+        return rc;
+    }
+    double ptot[3] = {0, 0, 0}, mtot = 0.0;
+    for (size_t i = 0; i < c->n; ++i) {
+        double R = c->rad[i];
+        c->mass[i] = cs->mass_density * 4.0 / 3.0 * M_PI * R * R * R;
+        c->inertia[i] = 0.4 * c->mass[i] * R * R;
+        pl_rand4_t a = pl_rng_uniform4(c->seed, PL_RNG_COLLOID + 3, 0, i, 0);
+        pl_rand4_t b = pl_rng_uniform4(c->seed, PL_RNG_COLLOID + 3, 0, i, 1);
+        pl_rand4_t q = pl_rng_uniform4(c->seed, PL_RNG_COLLOID + 3, 0, i, 2);
+        double g[6], sv = sqrt(cs->temperature / c->mass[i]), sw = sqrt(cs->temperature / c->inertia[i]);
+        pl_rng_gauss2(a.u[0], a.u[1], &g[0], &g[1]);
+        pl_rng_gauss2(a.u[2], a.u[3], &g[2], &g[3]);
+        pl_rng_gauss2(b.u[0], b.u[1], &g[4], &g[5]);
+        c->vx[i] = sv * g[0];
+        c->vy[i] = sv * g[1];
+        c->vz[i] = sv * g[2];
+        c->wx[i] = sw * g[3];
+        c->wy[i] = sw * g[4];
+        c->wz[i] = sw * g[5];
+        /* random orientation: normalised 4-d Gaussian */
+        double h[4];
+        pl_rng_gauss2(q.u[0], q.u[1], &h[0], &h[1]);
+        pl_rng_gauss2(q.u[2], q.u[3], &h[2], &h[3]);
+        double nq = 1.0 / sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2] + h[3] * h[3]);
+        c->q0[i] = h[0] * nq;
+        c->q1[i] = h[1] * nq;
+        c->q2[i] = h[2] * nq;
+        c->q3[i] = h[3] * nq;
+        ptot[0] += c->mass[i] * c->vx[i];
+        ptot[1] += c->mass[i] * c->vy[i];
+        ptot[2] += c->mass[i] * c->vz[i];
+        mtot += c->mass[i];
+    }
+    for (size_t i = 0; i < c->n; ++i) { /* zero total momentum */
+        c->vx[i] -= ptot[0] / mtot;
+        c->vy[i] -= ptot[1] / mtot;
+        c->vz[i] -= ptot[2] / mtot;
+    }
+    if ((rc = pl_colloid_setup(c, scene, err))) {
+        pl_colloid_free(c);
+        return rc;
+    }
+    size_t worst = 0;
+    for (size_t i = 1; i < c->n; ++i)
+        if (c->g_overlap[i] > c->g_overlap[worst]) worst = i;
+    if (c->n && c->g_overlap[worst] > c->max_overlap) {
+        rc = pl_scene_fail(scene, err, OFF(colloids.init), "colloids.init",
+                           "initial colloids %zu and %d overlap by %.4g of R_i+R_j > "
+                           "colloids.max_overlap = %g; fewer colloids, smaller radius or another "
+                           "configuration", worst, c->g_partner[worst], c->g_overlap[worst],
+                           c->max_overlap);
+        pl_colloid_free(c);
+        return rc;
+    }
+    *out = c;
+    return 0;
+}
+
+void pl_colloid_energy(const pl_colloid_t *c, pl_colloid_energy_t *e)
+{
+    memset(e, 0, sizeof *e);
+    for (size_t i = 0; i < c->n; ++i) {
+        e->kin_trans += 0.5 * c->mass[i] * (c->vx[i] * c->vx[i] + c->vy[i] * c->vy[i] + c->vz[i] * c->vz[i]);
+        e->kin_rot += 0.5 * c->inertia[i] * (c->wx[i] * c->wx[i] + c->wy[i] * c->wy[i] + c->wz[i] * c->wz[i]);
+        for (int k = 0; k < PL_CE_NTERMS; ++k) e->pot[k] += c->epot[(size_t)k * c->n + i];
+    }
+    e->total = e->kin_trans + e->kin_rot;
+    for (int k = 0; k < PL_CE_NTERMS; ++k) e->total += e->pot[k];
+}
+
+void pl_colloid_momentum(const pl_colloid_t *c, double p[3], double l[3])
+{
+    for (int k = 0; k < 3; ++k) p[k] = l[k] = 0.0;
+    for (size_t i = 0; i < c->n; ++i) {
+        double m = c->mass[i];
+        double x = c->x[i] + c->ix[i] * c->box[0], y = c->y[i] + c->iy[i] * c->box[1];
+        double z = c->z[i] + c->iz[i] * c->box[2];
+        double px = m * c->vx[i], py = m * c->vy[i], pz = m * c->vz[i];
+        p[0] += px;
+        p[1] += py;
+        p[2] += pz;
+        l[0] += y * pz - z * py + c->inertia[i] * c->wx[i];
+        l[1] += z * px - x * pz + c->inertia[i] * c->wy[i];
+        l[2] += x * py - y * px + c->inertia[i] * c->wz[i];
+    }
+}

@@ -1,0 +1,41 @@
+/* Colloid time stepping: one MD step (velocity Verlet for translation, Hecht
+ * Eqs. 7-8 / PL Eqs. 18-19, rotation Hecht Eqs. 9-10; or one Brownian step)
+ * followed by the guards, and the plan stage that runs the MD substeps of one
+ * collision step (dt_MD = srd.dt / colloids.substeps). */
+#include "peloid/colloid.h"
+
+int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err)
+{
+    size_t n = c->n;
+    double h = 0.5 * c->dt;
+    if (c->integrator == PL_CINT_VERLET) {
+        pl_colloid_kick(n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
+                        c->vx, c->vy, c->vz, c->wx, c->wy, c->wz);
+        pl_colloid_drift(n, c->dt, c->box, c->periodic, c->x, c->y, c->z, c->ix, c->iy, c->iz,
+                         c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3);
+        /* velocity-dependent forces (damping, friction, lubrication) see the
+         * half-step velocities */
+        pl_colloid_forces(c);
+        pl_colloid_kick(n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
+                        c->vx, c->vy, c->vz, c->wx, c->wy, c->wz);
+    } else {
+        pl_colloid_bd_params_t bp = {c->dt, c->kT, c->bd_eta, c->seed, (uint64_t)c->md_step};
+        pl_colloid_bd_step(&bp, n, c->box, c->periodic, c->rad, c->x, c->y, c->z, c->ix, c->iy,
+                           c->iz, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz, c->vx, c->vy, c->vz,
+                           c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3);
+        pl_colloid_forces(c);
+    }
+    c->md_step++;
+    int check_e = c->nve && c->max_energy_drift > 0.0 && c->md_step % c->guard_interval == 0;
+    return pl_colloid_guard(c, check_e, err);
+}
+
+int pl_colloid_advance(pl_colloid_t *c, long long collision_step, pl_err_t *err)
+{
+    (void)collision_step;
+    for (int s = 0; s < c->substeps; ++s) {
+        int rc = pl_colloid_md_step(c, err);
+        if (rc) return rc;
+    }
+    return 0;
+}

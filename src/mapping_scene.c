@@ -1,0 +1,192 @@
+/* Scene front end of the mapping: physical{} + coarse_graining{} -> the
+ * mapping inputs -> derived simulation parameters written into the scene
+ * (srd.dt, fluid.density, fluid.temperature, box.cells) and the colloid
+ * parameters in simulation units; the entry point of the report.
+ *
+ * Hecht Eq. 1 (screened Coulomb prefactor), Debye-Hueckel kappa; the rest
+ * is in mapping_hecht.c / mapping_pl.c. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "peloid/scene.h"
+
+#define OFF(m) offsetof(pl_scene_t, m)
+#define DLVO_KAPPA_R_MIN 5.0
+
+/* The physical front end is on when any key of physical{} is in the file. */
+static int section_given(const pl_scene_t *s, const pl_section_t *sec)
+{
+    for (size_t i = 0; i < sec->nkeys; ++i)
+        if (pl_scene_line_of(s, sec->keys[i].offset) > 0) return 1;
+    return 0;
+}
+
+/* Keys the mapping derives must not be set in the file as well - unless
+ * with the derived value itself (an echoed effective scene reloads). */
+static int forbid(const pl_scene_t *s, pl_err_t *err, size_t off, const char *key, double derived,
+                  double given)
+{
+    if (pl_scene_line_of(s, off) <= 0 || fabs(given - derived) <= 1e-12 * fabs(derived)) return 0;
+    return pl_scene_fail(s, err, off, key,
+                         "is derived from physical{} by the unit mapping (value %g); remove it here "
+                         "or remove the physical section",
+                         derived);
+}
+
+static void fill_inputs(const pl_scene_t *s, pl_mapping_system_t *r, pl_mapping_solvent_t *sv,
+                        pl_mapping_cg_t *cg)
+{
+    const pl_scene_physical_t *p = &s->mapping.physical;
+    const pl_scene_cg_t *c = &s->mapping.cg;
+    *r = (pl_mapping_system_t){0};
+    r->radius = p->radius;
+    r->rho_p = p->particle_density;
+    r->rho_f = p->solvent_density;
+    r->nu = p->viscosity;
+    r->kT = PL_KB * p->temperature;
+    r->g = p->gravity;
+    r->buoyancy = 1;
+    r->hamaker = p->hamaker;
+    r->l_min = p->primary_minimum;
+    sv->flow_velocity = p->flow_velocity;
+    sv->sound_speed = p->sound_speed;
+    sv->mean_free_path = p->mean_free_path;
+    sv->self_diffusion = p->self_diffusion;
+    *cg = (pl_mapping_cg_t){0};
+    cg->coupling = c->coupling;
+    cg->match = c->time_match;
+    cg->boundary = c->boundary;
+    cg->enskog = c->enskog;
+    cg->fluid_gravity = c->fluid_gravity;
+    cg->cell_over_R = c->cell_size > 0 ? c->cell_size
+                      : c->coupling == PL_COUPLING_I ? 0.5
+                                                     : cbrt(4.0 * M_PI / 3.0);
+    cg->gamma = c->particles_per_cell;
+    cg->lambda = c->mean_free_path;
+    /* The rotation rule of srd{} picks the viscosity formula. */
+    cg->viscosity = s->srd.rule == PL_RULE_HECHT_AXES ? PL_VISC_HECHT28 : PL_VISC_PL;
+    cg->alpha = s->srd.rule == PL_RULE_HECHT_AXES ? 0.5 * M_PI : s->srd.alpha_deg * M_PI / 180.0;
+    cg->srd_dt = c->srd_dt;
+    cg->md_dt = c->md_dt;
+    cg->md_resolution = c->md_resolution;
+}
+
+static int electrostatics(pl_scene_t *s, pl_err_t *err)
+{
+    pl_scene_mapping_t *mp = &s->mapping;
+    const pl_scene_physical_t *p = &mp->physical;
+    double kT = PL_KB * p->temperature;
+    if (p->kappa > 0 && p->ionic_strength > 0)
+        return pl_scene_fail(s, err, OFF(mapping.physical.kappa), "physical.kappa",
+                             "given together with physical.ionic_strength; give one of them");
+    mp->kappa = p->kappa > 0 ? p->kappa
+                : p->ionic_strength > 0 ? pl_mapping_debye_kappa(p->ionic_strength, p->permittivity, kT)
+                                        : 0.0;
+    if (p->surface_potential != 0 && !(mp->kappa > 0))
+        return pl_scene_fail(s, err, OFF(mapping.physical.surface_potential), "physical.surface_potential",
+                             "needs physical.kappa or physical.ionic_strength (Hecht Eq. 1 is screened)");
+    double kR = mp->kappa * p->radius;
+    if (p->surface_potential != 0 && kR < DLVO_KAPPA_R_MIN)
+        pl_mapping_warn(&mp->map, PL_SEV_WARNING, "DLVO_RANGE", kR,
+                        "kappa R = %.3g < %.0f: Hecht Eq. 1 (screened Coulomb of thin double layers) and "
+                        "Eq. 2 assume kappa R >> 1; raise physical.ionic_strength or kappa",
+                        kR, DLVO_KAPPA_R_MIN);
+    /* Hecht Eq. 1 prefactor pi eps_r eps0 [4kT/(ze) tanh(z e Psi0/(4kT))]^2 in J/m. */
+    double ze = (double)p->valence * PL_E_CHARGE;
+    double b = 4.0 * kT / ze * tanh(ze * p->surface_potential / (4.0 * kT));
+    double pref = M_PI * p->permittivity * PL_EPS0 * b * b;
+    mp->colloid.coulomb = pref * mp->map.a0 / kT;
+    mp->colloid.kappa = mp->kappa * mp->map.a0;
+    return 0;
+}
+
+static int apply_box(pl_scene_t *s, pl_err_t *err)
+{
+    const pl_scene_physical_t *p = &s->mapping.physical;
+    double a0 = s->mapping.map.a0;
+    int given = p->box[0] > 0 || p->box[1] > 0 || p->box[2] > 0;
+    if (given) {
+        for (int d = 0; d < 3; ++d) {
+            double n = ceil(p->box[d] / a0 - 1e-9);
+            if (forbid(s, err, OFF(box.cells), "box.cells", n, s->box.cells[d])) return PL_ERR_INPUT;
+            if (!(p->box[d] > 0) || n > 4096)
+                return pl_scene_fail(s, err, OFF(mapping.physical.box), "physical.box",
+                                     "edge %d = %g m gives %g cells of a0 = %g m; allowed: 1..4096 cells", d,
+                                     p->box[d], n, a0);
+            s->box.cells[d] = (int)n;
+        }
+    }
+    double V = 1.0;
+    for (int d = 0; d < 3; ++d) V *= s->box.cells[d] * a0;
+    double vc = 4.0 / 3.0 * M_PI * pow(p->radius, 3);
+    s->mapping.colloid.n_colloids = (long long)floor(p->volume_fraction * V / vc + 0.5);
+    return 0;
+}
+
+int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
+{
+    pl_scene_mapping_t *mp = &s->mapping;
+    mp->enabled = section_given(s, &pl_scene_section_physical);
+    if (!mp->enabled) {
+        if (section_given(s, &pl_scene_section_coarse_graining))
+            return pl_scene_fail(s, err, OFF(mapping.cg.coupling), "coarse_graining",
+                                 "has no effect without a physical{} section (give at least physical.radius)");
+        return 0;
+    }
+    if (pl_scene_line_of(s, OFF(mapping.physical.radius)) <= 0)
+        return pl_scene_fail(s, err, OFF(mapping.physical.radius), "physical.radius",
+                             "is required when physical{} is given");
+    pl_mapping_system_t r;
+    pl_mapping_solvent_t sv;
+    pl_mapping_cg_t cg;
+    fill_inputs(s, &r, &sv, &cg);
+    pl_err_t e = {0};
+    if (pl_mapping_derive(&r, &sv, &cg, &mp->map, &e)) {
+        size_t off = strstr(e.msg, "dens") ? OFF(mapping.physical.particle_density) : OFF(mapping.physical.radius);
+        return pl_scene_fail(s, err, off, "physical", "%s", e.msg);
+    }
+    const pl_mapping_t *m = &mp->map;
+    if (forbid(s, err, OFF(srd.dt), "srd.dt", cg.lambda, s->srd.dt) ||
+        forbid(s, err, OFF(fluid.density), "fluid.density", cg.gamma, s->fluid.density) ||
+        forbid(s, err, OFF(fluid.temperature), "fluid.temperature", 1.0, s->fluid.temperature))
+        return PL_ERR_INPUT;
+    s->srd.dt = cg.lambda;              /* PL Eq. 4: dt = lambda t0 */
+    s->fluid.density = cg.gamma;
+    s->fluid.temperature = 1.0;         /* kT_model is the energy unit */
+    if (electrostatics(s, err) || apply_box(s, err)) return PL_ERR_INPUT;
+
+    pl_mapping_colloid_t *c = &mp->colloid;
+    c->radius = m->sigma;
+    c->mass = m->mass_sim;
+    c->gravity = m->g_sim;
+    c->hamaker = r.hamaker / r.kT;
+    c->primary_minimum = r.l_min / m->a0;
+    c->md_dt = m->md_dt / m->t0;
+    c->md_substeps = m->md_substeps;
+    if (mp->cg.strict && pl_mapping_nwarnings(m) > 0) {
+        for (int i = 0; i < m->nwarn; ++i)
+            if (m->warn[i].severity == PL_SEV_WARNING)
+                return pl_scene_fail(s, err, OFF(mapping.cg.strict), "coarse_graining.strict", "%s: %s",
+                                     m->warn[i].name, m->warn[i].text);
+    }
+    return 0;
+}
+
+int pl_mapping_report(const struct pl_scene *scene, FILE *out, int json, int strict, pl_err_t *err)
+{
+    const pl_scene_mapping_t *mp = &scene->mapping;
+    if (!mp->enabled) {
+        if (json) fprintf(out, "null\n");
+        return 0;
+    }
+    if (json) pl_mapping_print_json(&mp->map, &mp->colloid, out);
+    else pl_mapping_print_text(&mp->map, &mp->colloid, out);
+    if (strict || mp->cg.strict) {
+        for (int i = 0; i < mp->map.nwarn; ++i)
+            if (mp->map.warn[i].severity == PL_SEV_WARNING)
+                return pl_err_set(err, PL_ERR_INPUT, "%s: strict mapping audit: %s: %s", scene->path,
+                                  mp->map.warn[i].name, mp->map.warn[i].text);
+    }
+    return 0;
+}

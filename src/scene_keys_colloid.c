@@ -1,0 +1,119 @@
+/* Scene schema of the colloid module: sections `colloids` (particles,
+ * integrator, walls, guards, output), `dlvo`, `hertz`, `lubrication`, `wca`
+ * (pair terms; which of them act is listed in colloids.pairs). */
+#include <float.h>
+#include <stddef.h>
+
+#include "peloid/scene.h"
+
+#define OFF(member) offsetof(pl_scene_t, colloids.member)
+#define N(a) (sizeof(a) / sizeof((a)[0]))
+
+static const char *const init_choices[] = {"lattice", "random", "file", NULL};
+static const char *const integ_choices[] = {"verlet", "brownian", NULL};
+
+static const pl_key_t colloid_keys[] = {
+    {"count", PL_KEY_INT, OFF(count), 0, 1e7, 0, NULL, 0, NULL,
+     "-", "number of colloids (0: no colloids, no MD stages)"},
+    {"radius", PL_KEY_REAL, OFF(radius), 0, 1e3, PL_KEY_MIN_OPEN, NULL, 2, NULL,
+     "a0", "mean colloid radius R (also the contact radius of Hertz, DLVO, lubrication)"},
+    {"polydispersity", PL_KEY_REAL, OFF(polydispersity), 0, 0.25, 0, NULL, 0, NULL,
+     "-", "relative standard deviation of R (uniform distribution around R)"},
+    {"mass_density", PL_KEY_REAL, OFF(mass_density), 0, 1e9, PL_KEY_MIN_OPEN, NULL, 5, NULL,
+     "m_f / a0^3", "colloid mass density: M = density 4/3 pi R^3, I = 2/5 M R^2"},
+    {"temperature", PL_KEY_REAL, OFF(temperature), 0, 1e6, 0, NULL, 1, NULL,
+     "kT_ref", "initial colloid temperature (Maxwell velocities, zero total momentum); BD noise kT"},
+    {"init", PL_KEY_CHOICE, OFF(init), 0, 0, 0, init_choices, PL_CINIT_LATTICE, NULL,
+     "-", "initial positions: lattice (simple cubic filling the box), random "
+          "(sequential addition without overlap, seeded by run.seed), file"},
+    {"init_file", PL_KEY_STRING, OFF(init_file), 0, 0, 0, NULL, 0, "",
+     "-", "init = \"file\": text file next to the scene, one colloid per line: x y z [R]"},
+    {"pairs", PL_KEY_STRING, OFF(pairs), 0, 0, 0, NULL, 0, "hertz",
+     "-", "pair terms switched on, comma separated: dlvo, hertz, lubrication, wca (\"\": none)"},
+    {"integrator", PL_KEY_CHOICE, OFF(integrator), 0, 0, 0, integ_choices, PL_CINT_VERLET, NULL,
+     "-", "verlet: velocity Verlet + quaternions (Hecht Eqs. 7-10); brownian: overdamped "
+          "Langevin with Stokes friction (reference for colloid-only scenes)"},
+    {"substeps", PL_KEY_INT, OFF(substeps), 1, 1e6, 0, NULL, 4, NULL,
+     "-", "MD steps per collision step: dt_MD = srd.dt / substeps"},
+    {"gravity", PL_KEY_REAL3, OFF(gravity), -1e6, 1e6, 0, NULL, 0, NULL,
+     "a0 / t0^2", "acceleration on every colloid (gravity minus buoyancy)"},
+    {"bd_viscosity", PL_KEY_REAL, OFF(bd_viscosity), 0, 1e9, PL_KEY_MIN_OPEN, NULL, 2.5, NULL,
+     "m_f / (a0 t0)", "brownian: solvent viscosity eta of the Stokes friction 6 pi eta R"},
+    {"wall_epsilon", PL_KEY_REAL, OFF(wall_epsilon), 0, 1e9, 0, NULL, 2.5, NULL,
+     "kT_ref", "box.walls_z != none: colloid-wall repulsion, PL Eq. 16 form with sigma = R"},
+    {"wall_n", PL_KEY_REAL, OFF(wall_n), 1, 200, 0, NULL, 24, NULL,
+     "-", "exponent n of the colloid-wall repulsion"},
+    {"max_overlap", PL_KEY_REAL, OFF(max_overlap), 0, 1, PL_KEY_MIN_OPEN, NULL, 0.1, NULL,
+     "-", "guard: largest overlap (R_i+R_j-r)/(R_i+R_j) allowed (Hecht Sec. II: ~10%); "
+          "also the largest overlap accepted in the initial configuration"},
+    {"min_contact_steps", PL_KEY_REAL, OFF(min_contact_steps), 0, 1e6, 0, NULL, 20, NULL,
+     "MD steps", "guard: a collision must last at least this many MD steps (Hecht Sec. II: "
+                 "~20), estimated as pi sqrt(m_red / U'') from the actual stiffness (0: off)"},
+    {"max_energy_drift", PL_KEY_REAL, OFF(max_energy_drift), 0, 1e9, 0, NULL, 0.05, NULL,
+     "kT_ref per colloid", "guard: abs(E - E_0) / N allowed in undamped NVE runs (0: off)"},
+    {"guard_interval", PL_KEY_INT, OFF(guard_interval), 1, 1e12, 0, NULL, 100, NULL,
+     "MD steps", "interval of the energy-drift check (the other guards act every MD step)"},
+    {"trajectory_interval", PL_KEY_INT, OFF(trajectory_interval), 0, 1e15, 0, NULL, 0, NULL,
+     "collision steps", "write colloids.h5 (H5MD) every N collision steps (0: off)"},
+};
+
+static const pl_key_t dlvo_keys[] = {
+    {"eps_r", PL_KEY_REAL, OFF(dlvo.eps_r), 0, 1e4, PL_KEY_MIN_OPEN, NULL, 81, NULL,
+     "-", "relative permittivity of the solvent (Hecht Eq. 1)"},
+    {"psi0", PL_KEY_REAL, OFF(dlvo.psi0_mV), 0, 1e4, 0, NULL, 20, NULL,
+     "mV", "effective surface potential Psi_0 (Hecht Eq. 1)"},
+    {"z", PL_KEY_REAL, OFF(dlvo.z), 0, 100, PL_KEY_MIN_OPEN, NULL, 1, NULL,
+     "-", "charge number of the ions (Hecht Eq. 1)"},
+    {"temperature", PL_KEY_REAL, OFF(dlvo.temperature_K), 0, 1e5, PL_KEY_MIN_OPEN, NULL, 300, NULL,
+     "K", "physical temperature T; k_B T is the energy unit kT_ref"},
+    {"kappa", PL_KEY_REAL, OFF(dlvo.kappa_per_m), 0, 1e12, PL_KEY_MIN_OPEN, NULL, 1.4e8, NULL,
+     "1/m", "inverse Debye screening length (Hecht Eq. 1)"},
+    {"hamaker", PL_KEY_REAL, OFF(dlvo.hamaker_J), 0, 1e-15, 0, NULL, 4.76e-20, NULL,
+     "J", "Hamaker constant A_H (Hecht Eq. 2; Al2O3 in water: 4.76e-20, Table I)"},
+    {"length_unit", PL_KEY_REAL, OFF(dlvo.length_unit_m), 0, 1, PL_KEY_MIN_OPEN, NULL, 2e-7, NULL,
+     "m", "physical length of a0 (Hecht Sec. VII: a = R/2 = 0.2 um)"},
+    {"primary_depth", PL_KEY_REAL, OFF(dlvo.primary_depth), 0, 1e4, PL_KEY_MIN_OPEN, NULL, 6, NULL,
+     "kT_ref", "depth of the parabolic primary minimum (Hecht Sec. II: some kT, e.g. 6)"},
+    {"primary_gap", PL_KEY_REAL, OFF(dlvo.primary_gap), 0, 100, 0, NULL, 0, NULL,
+     "a0", "surface gap r - 2R at the bottom of the primary minimum"},
+    {"cutoff_energy", PL_KEY_REAL, OFF(dlvo.cutoff_energy), 0, 1, PL_KEY_MIN_OPEN, NULL, 1e-3, NULL,
+     "kT_ref", "cut-off where abs(V_DLVO) has decayed below this (the truncation error, printed at start)"},
+};
+
+static const pl_key_t hertz_keys[] = {
+    {"K", PL_KEY_REAL, OFF(hertz.K), 0, 1e15, PL_KEY_MIN_OPEN, NULL, 1e3, NULL,
+     "kT_ref / a0^2.5", "Hertz constant (Hecht Eq. 3: V = K (d - r)^{5/2})"},
+    {"beta", PL_KEY_REAL, OFF(hertz.beta), 0, 1e12, 0, NULL, 0, NULL,
+     "m_f / (t0 a0^0.5)", "normal damping constant (Hecht Eq. 6)"},
+    {"gamma_t", PL_KEY_REAL, OFF(hertz.gamma_t), 0, 1e12, 0, NULL, 0, NULL,
+     "m_f / t0", "tangential viscous friction on the relative surface velocity (torques)"},
+};
+
+static const pl_key_t lub_keys[] = {
+    {"viscosity", PL_KEY_REAL, OFF(lub.viscosity), 0, 1e9, PL_KEY_MIN_OPEN, NULL, 2.5, NULL,
+     "m_f / (a0 t0)", "dynamic viscosity eta of the squeeze force (Hecht Eq. 4)"},
+    {"min_gap", PL_KEY_REAL, OFF(lub.min_gap), 0, 100, PL_KEY_MIN_OPEN, NULL, 0.05, NULL,
+     "a0", "limit of the 1/h divergence: force of gap h is that of h + min_gap (Hecht Sec. II)"},
+    {"cutoff_gap", PL_KEY_REAL, OFF(lub.cutoff_gap), 0, 100, PL_KEY_MIN_OPEN, NULL, 1, NULL,
+     "a0", "gap beyond which the squeeze force is off (shifted to zero there)"},
+};
+
+static const pl_key_t wca_keys[] = {
+    {"epsilon", PL_KEY_REAL, OFF(wca.epsilon), 0, 1e9, PL_KEY_MIN_OPEN, NULL, 2.5, NULL,
+     "kT_ref", "epsilon_cc of PL Eq. 16"},
+    {"sigma", PL_KEY_REAL, OFF(wca.sigma), 0, 1e3, 0, NULL, 0, NULL,
+     "a0", "sigma_cc of PL Eq. 16 (0: R_i + R_j per pair)"},
+    {"n", PL_KEY_REAL, OFF(wca.n), 1, 200, 0, NULL, 24, NULL,
+     "-", "exponent n (PL Eq. 16 uses 24; 6 gives the usual WCA)"},
+};
+
+const pl_section_t pl_scene_section_colloids = {"colloids", "colloid particles and their MD",
+                                                colloid_keys, N(colloid_keys)};
+const pl_section_t pl_scene_section_dlvo = {"dlvo", "DLVO colloid-colloid potential (Hecht Eqs. 1-2)",
+                                            dlvo_keys, N(dlvo_keys)};
+const pl_section_t pl_scene_section_hertz = {"hertz", "Hertz contact repulsion, damping, friction "
+                                             "(Hecht Eqs. 3, 6)", hertz_keys, N(hertz_keys)};
+const pl_section_t pl_scene_section_lubrication = {"lubrication", "squeeze-mode lubrication "
+                                                   "(Hecht Eqs. 4-5)", lub_keys, N(lub_keys)};
+const pl_section_t pl_scene_section_wca = {"wca", "colloid-colloid WCA repulsion (PL Eq. 16)",
+                                           wca_keys, N(wca_keys)};

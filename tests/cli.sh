@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# CLI behaviour of bin/peloid (issue 2): exit codes, one-line errors naming
+# file, line and key, nothing written on bad input, outputs readable, and
+# bitwise determinism through the real files (threads, restart).
+set -u
+PELOID=$(realpath "${1:-bin/peloid}")
+PY=/usr/bin/python3
+T=$(mktemp -d /tmp/peloid-cli.XXXXXX)
+trap 'rm -rf "$T"' EXIT
+cd "$T"
+pass=0; fail=0
+ok()  { pass=$((pass+1)); echo "  ok   $1"; }
+bad() { fail=$((fail+1)); echo "  FAIL $1"; }
+
+# expect_refused NAME SCENE_TEXT NEEDLE...: exit 2, one line naming NEEDLEs, no out/
+expect_refused() {
+  local name=$1 text=$2; shift 2
+  printf '%b' "$text" > "$name.cfg"
+  "$PELOID" run "$name.cfg" --out "out_$name" 2> err.txt; local rc=$?
+  local lines; lines=$(wc -l < err.txt)
+  local okk=1
+  [ $rc -eq 2 ] || okk=0
+  [ "$lines" -eq 1 ] || okk=0
+  for n in "$@"; do grep -qF -- "$n" err.txt || okk=0; done
+  [ ! -e "out_$name" ] || okk=0
+  if [ $okk = 1 ]; then ok "$name refused: $(cat err.txt)"; else bad "$name (rc=$rc, out exists: $([ -e out_$name ] && echo yes || echo no)): $(cat err.txt)"; fi
+}
+
+echo "== peloid CLI tests"
+"$PELOID" --help > help.txt; rc=$?
+if [ $rc -eq 0 ] && grep -q -- "--restart" help.txt && grep -q "params SCENE" help.txt; then ok "--help"; else bad "--help"; fi
+"$PELOID" > /dev/null 2>&1; [ $? -eq 2 ] && ok "no command -> exit 2" || bad "no command"
+"$PELOID" frobnicate 2> err.txt; [ $? -eq 2 ] && grep -q "unknown command" err.txt && ok "unknown command" || bad "unknown command"
+
+GOOD='name = "small";\nseed = 9;\nsteps = 40;\nbox: { cells = [6, 6, 6]; };\nfluid: { density = 5.0; };\nsrd: { dt = 0.5; };\noutput: { thermo_interval = 10; fields_interval = 5; };\n'
+printf '%b' "$GOOD" > small.cfg
+"$PELOID" check small.cfg > /dev/null && ok "check accepts a good scene" || bad "check good scene"
+
+expect_refused unknown_key 'seed = 1;\nfluid: { densty = 5.0; };\n' "unknown_key.cfg:2" "fluid.densty" "unknown key"
+expect_refused wrong_type 'fluid: {\n  density = "five";\n};\n' "wrong_type.cfg:2" "fluid.density" "wrong type"
+expect_refused negative_density 'fluid: { density = -1.0; };\n' "negative_density.cfg:1" "fluid.density" "out of range"
+expect_refused zero_cells 'box: { cells = [8, 0, 8]; };\n' "zero_cells.cfg:1" "box.cells" "out of range"
+expect_refused syntax 'box: { cells = [8, 8, 8] ;\n' "syntax.cfg" "syntax error"
+"$PELOID" run missing.cfg --out out_missing 2> err.txt; rc=$?
+[ $rc -eq 2 ] && grep -q "missing.cfg: cannot open scene file" err.txt && [ ! -e out_missing ] && ok "missing scene file" || bad "missing scene file: $(cat err.txt)"
+"$PELOID" run small.cfg --steps x 2> err.txt; [ $? -eq 2 ] && ok "bad --steps" || bad "bad --steps"
+"$PELOID" run small.cfg --threads 0 2> err.txt; [ $? -eq 2 ] && ok "bad --threads" || bad "bad --threads"
+"$PELOID" run small.cfg --bogus 2> err.txt; [ $? -eq 2 ] && ok "unknown option" || bad "unknown option"
+
+# a run and its outputs
+"$PELOID" run small.cfg --out run1 --threads 1 2> log.txt
+if [ $? -eq 0 ] && [ -s run1/thermo.tsv ] && [ -s run1/summary.json ] && [ -s run1/checkpoint.h5 ] && [ -s run1/fields.h5 ] && [ -s run1/scene.cfg ]; then
+  ok "run writes thermo.tsv summary.json checkpoint.h5 fields.h5 scene.cfg"; else bad "run outputs: $(cat log.txt)"; fi
+$PY - <<'PYEOF' && ok "outputs parse (json, tsv, h5py H5MD fields)" || bad "outputs parse"
+import json, h5py, numpy as np
+s = json.load(open("run1/summary.json"))
+assert s["threads"] == 1 and s["last_step"] == 40 and s["particle_updates_per_second"] > 0
+assert abs(s["derived"]["lambda"] - 0.5) < 1e-12
+rows = np.loadtxt("run1/thermo.tsv", skiprows=1)
+assert rows.shape[0] == 5 and rows[-1, 0] == 40
+with h5py.File("run1/fields.h5") as f:
+    assert tuple(f["h5md"].attrs["version"]) == (1, 1)
+    rho = f["observables/fluid_density/value"][()]
+    assert rho.shape == (6, 6, 6) and abs(rho.mean() - 5.0) < 1e-9
+    assert f["observables/fluid_velocity/value"].shape == (6, 6, 6, 3)
+with h5py.File("run1/checkpoint.h5") as f:
+    assert f["fluid/x"].shape == (1080,)
+PYEOF
+before=$(md5sum run1/thermo.tsv)
+"$PELOID" run small.cfg --out run1 2> err.txt; rc=$?
+[ $rc -eq 2 ] && grep -q "exists; use --force" err.txt && [ "$(md5sum run1/thermo.tsv)" = "$before" ] && ok "existing output directory refused, untouched" || bad "existing out dir: $(cat err.txt)"
+"$PELOID" run small.cfg --out run1 --force 2> err.txt && ok "--force writes into it" || bad "--force"
+
+# determinism through the files: threads, and 2N == N + restart + N
+"$PELOID" run small.cfg --out run2 --threads 2 2> /dev/null
+cmp -s run1/checkpoint.h5 run2/checkpoint.h5 && ok "checkpoint bitwise identical for 1 and 2 threads" || bad "threads change the checkpoint"
+cmp -s run1/fields.h5 run2/fields.h5 && ok "fields bitwise identical for 1 and 2 threads" || bad "threads change fields.h5"
+"$PELOID" run small.cfg --out half --steps 20 2> /dev/null
+"$PELOID" run small.cfg --out resumed --steps 20 --restart half/checkpoint.h5 --threads 2 2> /dev/null
+cmp -s run1/checkpoint.h5 resumed/checkpoint.h5 && ok "40 steps == 20 + restart + 20, bitwise" || bad "restart is not bitwise"
+"$PELOID" run small.cfg --out bad_restart --restart small.cfg 2> err.txt; rc=$?
+[ $rc -eq 2 ] && [ ! -e bad_restart ] && ok "bad restart file refused, nothing written: $(cat err.txt)" || bad "bad restart: $(cat err.txt)"
+
+# params
+"$PELOID" params small.cfg > params.txt && grep -q "nu_col" params.txt && grep -q "D_f" params.txt && grep -q "Sc" params.txt && ok "params" || bad "params"
+"$PELOID" params small.cfg --json | $PY -c 'import json,sys; d=json.load(sys.stdin); d=d.get("srd", d); assert d["nu"] > 0' && ok "params --json" || bad "params --json"
+"$PELOID" keys | grep -q '| `density` |' && ok "keys prints the reference" || bad "keys"
+
+echo "$pass passed, $fail failed"
+[ $fail -eq 0 ]

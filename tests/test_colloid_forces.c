@@ -1,0 +1,185 @@
+/* Colloid pair terms: force = -dU/dr by central finite differences, the
+ * curvature U'' likewise, closed-form values at hand-computed points, the
+ * DLVO secondary minimum of two Hecht Fig. 1 parameter sets, the parabolic
+ * primary minimum, the cut-off, and the linked-cell kernel against a direct
+ * O(N^2) pair sum. */
+#include <criterion/criterion.h>
+#include <math.h>
+#include <stdlib.h>
+
+#include "peloid/colloid.h"
+#include "peloid/colloid_pair.h"
+
+/* Central difference with step h: truncation error ~ h^2 U'''/6, rounding
+ * ~ eps U / h; with h = 1e-7 r both are < 1e-8 relative, so 1e-6 is safe. */
+#define FD_TOL 1e-6
+
+typedef pl_pair_val_t (*fn_t)(double r, const double *a);
+
+static void check_fd(fn_t f, const double *a, double r, const char *what)
+{
+    double h = 1e-7 * r;
+    pl_pair_val_t v = f(r, a), p = f(r + h, a), m = f(r - h, a);
+    double fd = -(p.u - m.u) / (2 * h), k2 = -(p.f - m.f) / (2 * h);
+    cr_expect(fabs(fd - v.f) <= FD_TOL * (fabs(v.f) + fabs(v.u) / r + 1e-12),
+              "%s r=%g: F=%.12g, -dU/dr=%.12g", what, r, v.f, fd);
+    cr_expect(fabs(k2 - v.k2) <= FD_TOL * (fabs(v.k2) + fabs(v.f) / r + 1e-12),
+              "%s r=%g: U''=%.12g, FD=%.12g", what, r, v.k2, k2);
+}
+
+static pl_pair_val_t f_coul(double r, const double *a) { return pl_pair_coulomb(r, a[0], a[1], a[2]); }
+static pl_pair_val_t f_vdw(double r, const double *a) { return pl_pair_vdw(r, a[0], a[1]); }
+static pl_pair_val_t f_dlvo(double r, const double *a)
+{
+    return pl_pair_dlvo(r, a[0], a[1], a[2], a[3], a[4], a[5], a[6]);
+}
+static pl_pair_val_t f_hertz(double r, const double *a)
+{
+    pl_pair_val_t v = pl_pair_hertz(a[0] - r, a[1]); /* dU/dr = -dU/ddelta */
+    return v;
+}
+static pl_pair_val_t f_wca(double r, const double *a) { return pl_pair_wca(r, a[0], a[1], a[2]); }
+
+Test(colloid_forces, fd_each_term)
+{
+    double ac[] = {4.0, 37.0, 0.7};
+    double av[] = {4.0, 11.5};
+    double aw24[] = {4.0, 2.5, 24.0}, aw6[] = {4.0, 2.5, 6.0};
+    double ah[] = {4.0, 1e3};
+    for (double r = 4.01; r < 8.0; r += 0.37) {
+        check_fd(f_coul, ac, r, "coulomb");
+        check_fd(f_vdw, av, r, "vdw");
+    }
+    for (double r = 3.9; r < 4.0 * pow(2.0, 1.0 / 24.0); r += 0.01) check_fd(f_wca, aw24, r, "wca24");
+    for (double r = 3.7; r < 4.0 * pow(2.0, 1.0 / 6.0); r += 0.05) check_fd(f_wca, aw6, r, "wca6");
+    for (double r = 3.6; r < 3.999; r += 0.03) check_fd(f_hertz, ah, r, "hertz");
+    /* DLVO with the primary parabola, on both sides of the match gap */
+    pl_scene_dlvo_t s = {81, 20, 1, 300, 1.4e8, 4.76e-20, 1.25e-7, 6.0, 0.0, 1e-3};
+    pl_colloid_pair_params_t p;
+    pl_colloid_dlvo_info_t info;
+    pl_err_t err;
+    cr_assert_eq(pl_colloid_dlvo_setup(&s, 4.0, &p, &info, &err), 0, "%s", err.msg);
+    double ad[] = {4.0, p.coul_C, p.kappa, p.hamaker, p.prim_hm, p.prim_h0, p.dlvo_shift};
+    for (double h = 0.0005; h < info.hcut; h *= 1.3) check_fd(f_dlvo, ad, 4.0 + h, "dlvo");
+    /* C^1 at the match gap: value and force agree from both sides to 1e-9 */
+    double hm = p.prim_hm;
+    pl_pair_val_t lo = f_dlvo(4.0 + hm * (1 - 1e-12), ad), hi = f_dlvo(4.0 + hm * (1 + 1e-12), ad);
+    cr_expect(fabs(lo.u - hi.u) < 1e-9 && fabs(lo.f - hi.f) < 1e-9 * (1 + fabs(hi.f)),
+              "match gap: U %.12g|%.12g F %.12g|%.12g", lo.u, hi.u, lo.f, hi.f);
+    /* minimum of the parabola: -D (+ the cut-off shift) at h0 with zero force */
+    pl_pair_val_t m = f_dlvo(4.0 + p.prim_h0, ad);
+    cr_expect(fabs(m.u + p.dlvo_shift + 6.0) < 1e-9, "primary minimum %.12g, want -6", m.u + p.dlvo_shift);
+    cr_expect(fabs(m.f) < 1e-9, "force at primary minimum %g", m.f);
+}
+
+Test(colloid_forces, closed_form_points)
+{
+    /* Hertz, K = 100, overlap 0.04: U = 100 * 0.04^2.5 = 0.032, F = 250 * 0.04^1.5 = 2 */
+    pl_pair_val_t h = pl_pair_hertz(0.04, 100.0);
+    cr_expect(fabs(h.u - 0.032) < 1e-15 && fabs(h.f - 2.0) < 1e-14, "hertz %.17g %.17g", h.u, h.f);
+    /* WCA: r = sigma gives U = eps, F = 4 eps n / sigma; r = 2^{1/n} sigma gives 0, 0 */
+    pl_pair_val_t w = pl_pair_wca(4.0, 4.0, 2.5, 24.0);
+    cr_expect(fabs(w.u - 2.5) < 1e-14 && fabs(w.f - 4 * 2.5 * 24 / 4.0) < 1e-12, "wca %g %g", w.u, w.f);
+    w = pl_pair_wca(4.0 * pow(2.0, 1.0 / 24.0), 4.0, 2.5, 24.0);
+    cr_expect(fabs(w.u) < 1e-13 && fabs(w.f) < 1e-12, "wca at cut-off %g %g", w.u, w.f);
+    /* Coulomb at contact: U = C d, F = C (1 + kappa d) */
+    pl_pair_val_t c = pl_pair_coulomb(4.0, 4.0, 3.0, 0.5);
+    cr_expect(fabs(c.u - 12.0) < 1e-13 && fabs(c.f - 9.0) < 1e-13, "coulomb %g %g", c.u, c.f);
+    /* vdW at r = 2d: U = -A/12 (1/3 + 1/4 + 2 ln 3/4), F = -A / (432 d) */
+    double A = 10.0, d = 4.0;
+    pl_pair_val_t v = pl_pair_vdw(2 * d, d, A);
+    double u = -A / 12 * (1.0 / 3 + 0.25 + 2 * log(0.75));
+    cr_expect(fabs(v.u - u) < 1e-14 && fabs(v.f + A / (432 * d)) < 1e-15, "vdw %.17g %.17g", v.u, v.f);
+    /* lubrication: at contact zeta = 6 pi eta r_red^2 (1/hmin - 1/(hcut+hmin)),
+     * zero at the cut-off gap */
+    double z0 = pl_pair_lub_zeta(0.0, 2.0, 2.0, 1.5, 0.1, 0.9);
+    cr_expect(fabs(z0 - 6 * M_PI * 1.5 * 1.0 * (10.0 - 1.0)) < 1e-12, "lub zeta %g", z0);
+    cr_expect(fabs(pl_pair_lub_zeta(0.9, 2.0, 2.0, 1.5, 0.1, 0.9)) < 1e-14);
+    cr_expect(pl_pair_lub_zeta(-0.3, 2.0, 2.0, 1.5, 0.1, 0.9) == z0, "limited below contact");
+}
+
+/* Hecht Fig. 1: Al2O3 spheres of diameter 0.5 um in water at 300 K, eps_r =
+ * 81, A_H = 4.76e-20 J, a0 = 0.125 um (d = 4 a0).  Reference values from an
+ * independent numpy/scipy evaluation of Eqs. 1-2 (tools/dlvo_reference.py):
+ *   A: Psi0 = 20 mV, kappa = 1.4e8/m: barrier 11.858 kT at 5.93 nm,
+ *      secondary minimum -2.871598734 kT at gap 0.2413970541 a0 (30.17 nm)
+ *   B: Psi0 = 50 mV, kappa = 2.0e8/m: barrier 284.09 kT at 1.67 nm,
+ *      secondary minimum -3.065321820 kT at gap 0.2568733056 a0 (32.11 nm)
+ * Tolerances: depth 1e-8 relative, position 1e-7 relative (both codes find the
+ * root of dV/dh; 10-digit reference values), barrier 1e-3 relative. */
+Test(colloid_forces, dlvo_fig1_secondary_minimum)
+{
+    struct { double psi, kappa, h, u, bu; } set[] = {
+        {20, 1.4e8, 0.2413970541, -2.871598734, 11.858},
+        {50, 2.0e8, 0.2568733056, -3.065321820, 284.09},
+    };
+    for (int k = 0; k < 2; ++k) {
+        pl_scene_dlvo_t s = {81, set[k].psi, 1, 300, set[k].kappa, 4.76e-20, 1.25e-7, 6.0, 0.0, 1e-3};
+        pl_colloid_pair_params_t p;
+        pl_colloid_dlvo_info_t info;
+        pl_err_t err;
+        cr_assert_eq(pl_colloid_dlvo_setup(&s, 4.0, &p, &info, &err), 0, "%s", err.msg);
+        cr_expect(fabs(info.secmin_u - set[k].u) < 1e-8 * fabs(set[k].u), "set %d depth %.10g want %.10g",
+                  k, info.secmin_u, set[k].u);
+        cr_expect(fabs(info.secmin_h - set[k].h) < 1e-7 * set[k].h, "set %d gap %.10g want %.10g", k,
+                  info.secmin_h, set[k].h);
+        /* shape: a barrier between primary and secondary minimum */
+        cr_expect(info.barrier_h < info.secmin_h && fabs(info.barrier_u - set[k].bu) < 1e-3 * set[k].bu,
+                  "set %d barrier %g at %g", k, info.barrier_u, info.barrier_h);
+        /* truncation error reported and within the request */
+        cr_expect(info.trunc_u <= 1e-3 * (1 + 1e-9) && info.hcut > info.secmin_h, "cut-off %g err %g",
+                  info.hcut, info.trunc_u);
+    }
+}
+
+/* The linked-cell kernel against a direct O(N^2) sum of the same pair terms
+ * (conservative terms; relative 1e-12: only the summation order differs). */
+Test(colloid_forces, kernel_matches_direct_sum)
+{
+    size_t n = 300;
+    pl_colloid_t *c;
+    pl_err_t err;
+    cr_assert_eq(pl_colloid_alloc(n, &c, &err), 0);
+    pl_colloid_pair_params_t *p = &c->pair;
+    pl_scene_dlvo_t s = {81, 20, 1, 300, 1.4e8, 4.76e-20, 1.25e-7, 6.0, 0.0, 1e-3};
+    pl_colloid_dlvo_info_t info;
+    cr_assert_eq(pl_colloid_dlvo_setup(&s, 4.0, p, &info, &err), 0);
+    p->terms = PL_CT_DLVO | PL_CT_HERTZ | PL_CT_WCA;
+    p->hertz_K = 1e3;
+    p->wca_eps = 2.5, p->wca_n = 24, p->wca_sigma = 0, p->wca_rfac = pow(2.0, 1.0 / 24);
+    p->gap_cut = p->dlvo_hcut;
+    for (int k = 0; k < 3; ++k) p->box[k] = c->box[k] = 40.0, p->periodic[k] = c->periodic[k] = 1;
+    srand(7);
+    for (size_t i = 0; i < n; ++i) {
+        c->x[i] = 40.0 * rand() / RAND_MAX, c->y[i] = 40.0 * rand() / RAND_MAX;
+        c->z[i] = 40.0 * rand() / RAND_MAX;
+        c->rad[i] = 1.8 + 0.4 * rand() / RAND_MAX, c->mass[i] = 100, c->inertia[i] = 100;
+    }
+    int nc[3];
+    pl_colloid_cells_dims(c->box, c->periodic, 4.4 + p->gap_cut, nc);
+    cr_assert(nc[0] >= 3, "test wants real cells, got %d", nc[0]);
+    for (int k = 0; k < 3; ++k) c->cells.nc[k] = nc[k], c->cells.inv_cl[k] = nc[k] / 40.0;
+    c->cells.ncells = (size_t)(nc[0] * nc[1] * nc[2]);
+    c->cells.start = calloc(c->cells.ncells + 1, sizeof(int32_t));
+    pl_colloid_forces(c);
+    for (size_t i = 0; i < n; ++i) {
+        double f[3] = {0, 0, 0};
+        for (size_t j = 0; j < n; ++j) {
+            if (j == i) continue;
+            double dd[3] = {c->x[i] - c->x[j], c->y[i] - c->y[j], c->z[i] - c->z[j]};
+            double r2 = 0;
+            for (int k = 0; k < 3; ++k) dd[k] -= 40.0 * rint(dd[k] / 40.0), r2 += dd[k] * dd[k];
+            double r = sqrt(r2), d = c->rad[i] + c->rad[j], fr = 0;
+            if (r - d < p->dlvo_hcut)
+                fr += pl_pair_dlvo(r, d, p->coul_C, p->kappa, p->hamaker, p->prim_hm, p->prim_h0, p->dlvo_shift).f;
+            if (r < d) fr += pl_pair_hertz(d - r, 1e3).f;
+            if (r < d * p->wca_rfac) fr += pl_pair_wca(r, d, 2.5, 24).f;
+            for (int k = 0; k < 3; ++k) f[k] += fr * dd[k] / r;
+        }
+        double got[3] = {c->fx[i], c->fy[i], c->fz[i]};
+        for (int k = 0; k < 3; ++k)
+            cr_expect(fabs(got[k] - f[k]) <= 1e-12 * (1 + fabs(f[k])), "particle %zu axis %d: %.17g vs %.17g",
+                      i, k, got[k], f[k]);
+    }
+    pl_colloid_free(c);
+}

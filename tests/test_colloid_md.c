@@ -1,0 +1,222 @@
+/* Colloid dynamics invariants: NVE energy conservation with damping off,
+ * linear and angular momentum conservation, monotone energy decay with
+ * damping (Hecht Sec. IX.A), the friction impulse of noncentral collisions of
+ * eight Hertz spheres in a closed box (Hecht Sec. II end), and bitwise
+ * identical runs for 1 and 2 threads. */
+#include <math.h>
+#include <omp.h>
+#include <string.h>
+
+#include "colloid_test_util.h"
+
+/* 27 colloids, DLVO (Fig. 1 set A scaled to R = 2 a0) + Hertz, kT = 1,
+ * dt_MD = 0.025 t0. */
+static const char *NVE_SCENE =
+    "box: { cells = [24, 24, 24]; };\n"
+    "fluid: { density = 0.0; };\n"
+    "srd: { dt = 0.1; };\n"
+    "colloids: { count = 27; radius = 2.0; temperature = 1.0; substeps = 4;\n"
+    "  pairs = \"dlvo, hertz\"; max_energy_drift = 0.0; };\n"
+    "dlvo: { psi0 = 20.0; kappa = 1.4e8; length_unit = 1.25e-7; };\n"
+    "hertz: { K = 1000.0; };\n";
+
+/* Undamped: the total energy stays within the bound over 10^5 MD steps
+ * (10^4 with PL_QUICK).  Velocity Verlet has no secular drift; the bound
+ * covers the O(dt^2) shadow-energy fluctuation and the energy jump of pairs
+ * crossing the DLVO cut-off (shifted: none).  Measured ~2e-4 kT/colloid;
+ * bound 2e-3 kT per colloid. */
+Test(colloid_md, nve_energy_and_momentum, .timeout = 120)
+{
+    pl_scene_t s;
+    scene_from(NVE_SCENE, &s);
+    pl_colloid_t *c;
+    pl_err_t err;
+    cr_assert_eq(pl_colloid_create(&s, &c, &err), 0, "%s", err.msg);
+    pl_colloid_energy_t e0, e;
+    pl_colloid_energy(c, &e0);
+    double p0[3], l0[3], p[3], l[3];
+    pl_colloid_momentum(c, p0, l0);
+    long steps = quick() ? 10000 : 100000;
+    double worst = 0.0;
+    for (long k = 0; k < steps; ++k) {
+        cr_assert_eq(pl_colloid_md_step(c, &err), 0, "%s", err.msg);
+        if (k % 100 == 0) {
+            pl_colloid_energy(c, &e);
+            worst = fmax(worst, fabs(e.total - e0.total) / (double)c->n);
+        }
+    }
+    cr_expect(worst < 2e-3, "energy drift %.3g kT/colloid over %ld steps", worst, steps);
+    cr_log_info("NVE: max |E-E0|/N = %.3g kT over %ld MD steps", worst, steps);
+    /* momentum: only round-off (1e-9 of the thermal momentum scale sqrt(N m kT)) */
+    pl_colloid_momentum(c, p, l);
+    double scale = sqrt((double)c->n * c->mass[0]);
+    for (int k = 0; k < 3; ++k)
+        cr_expect(fabs(p[k] - p0[k]) < 1e-9 * scale, "P[%d] %.3g -> %.3g", k, p0[k], p[k]);
+    pl_colloid_free(c);
+}
+
+/* Angular momentum: a noncentral, frictional two-body collision in open space
+ * (no periodic image involved) conserves L = sum m x x v + I w exactly up to
+ * round-off (the tangential couple has no moment: lever arms a_i + a_j = r). */
+Test(colloid_md, angular_momentum_frictional_collision)
+{
+    pl_scene_t s;
+    scene_from("box: { cells = [40, 40, 40]; }; fluid: { density = 0.0; };\n"
+               "colloids: { count = 2; pairs = \"hertz\"; substeps = 10; };\n"
+               "hertz: { K = 1000.0; beta = 5.0; gamma_t = 20.0; };\n", &s);
+    pl_colloid_t *c;
+    pl_err_t err;
+    cr_assert_eq(pl_colloid_create(&s, &c, &err), 0, "%s", err.msg);
+    double x0[2] = {15, 25}, y0[2] = {20, 21.5}, v0[2] = {0.3, -0.3};
+    for (int i = 0; i < 2; ++i) {
+        c->x[i] = x0[i], c->y[i] = y0[i], c->z[i] = 20, c->vx[i] = v0[i];
+        c->vy[i] = c->vz[i] = 0, c->wx[i] = c->wy[i] = 0, c->wz[i] = 0.05 * (i + 1);
+    }
+    pl_colloid_forces(c);
+    double p0[3], l0[3], p[3], l[3];
+    pl_colloid_momentum(c, p0, l0);
+    for (int k = 0; k < 4000; ++k) cr_assert_eq(pl_colloid_md_step(c, &err), 0, "%s", err.msg);
+    pl_colloid_momentum(c, p, l);
+    double ls = c->mass[0] * 0.3 * 10.0; /* m v b scale */
+    for (int k = 0; k < 3; ++k) {
+        cr_expect(fabs(l[k] - l0[k]) < 1e-10 * ls, "L[%d] %.15g -> %.15g", k, l0[k], l[k]);
+        cr_expect(fabs(p[k] - p0[k]) < 1e-10 * ls, "P[%d] %.15g -> %.15g", k, p0[k], p[k]);
+    }
+    cr_expect(fabs(c->wz[0] - 0.05) > 1e-3, "friction acted on the spin");
+    pl_colloid_free(c);
+}
+
+/* Damping on (Hertz beta, friction, lubrication): sampled every 50 MD steps
+ * the total energy never increases by more than the undamped fluctuation
+ * level (1e-6 kT per colloid) and ends well below the start. */
+Test(colloid_md, damped_energy_decreases)
+{
+    pl_scene_t s;
+    scene_from("box: { cells = [16, 16, 16]; }; fluid: { density = 0.0; };\n"
+               "colloids: { count = 27; temperature = 20.0; pairs = \"hertz, lubrication\"; substeps = 8; };\n"
+               "hertz: { K = 1000.0; beta = 20.0; gamma_t = 5.0; };\n"
+               "lubrication: { viscosity = 2.5; min_gap = 0.1; cutoff_gap = 1.0; };\n", &s);
+    pl_colloid_t *c;
+    pl_err_t err;
+    cr_assert_eq(pl_colloid_create(&s, &c, &err), 0, "%s", err.msg);
+    pl_colloid_energy_t e;
+    pl_colloid_energy(c, &e);
+    double first = e.total, prev = e.total;
+    int steps = quick() ? 4000 : 20000;
+    for (int k = 1; k <= steps; ++k) {
+        cr_assert_eq(pl_colloid_md_step(c, &err), 0, "%s", err.msg);
+        if (k % 50 == 0) {
+            pl_colloid_energy(c, &e);
+            cr_expect(e.total <= prev + 1e-6 * (double)c->n, "step %d: E rose %.10g -> %.10g", k, prev, e.total);
+            prev = e.total;
+        }
+    }
+    cr_expect(prev < 0.9 * first, "energy %.6g -> %.6g: damping did not act", first, prev);
+    pl_colloid_free(c);
+}
+
+/* Eight Hertz spheres with friction in a box closed in z (Phi ~ 20%).  For every
+ * isolated two-body contact (no other contact, no wall force, during it) the
+ * change of each spin matches the tangential impulse:
+ *   I_i dw_i = -R_i e x (m_i dv_i)
+ * with e the unit vector j->i at the deepest overlap.  Tolerance 3%: the lever
+ * arm is R - delta/2 (delta <~ 2% of R) and e turns a little during contact. */
+Test(colloid_md, eight_spheres_friction_impulse, .timeout = 60)
+{
+    pl_scene_t s;
+    scene_from("box: { cells = [12, 12, 12]; walls_z = \"slip\"; }; fluid: { density = 0.0; };\n"
+               "seed = 3;\n"
+               "colloids: { count = 8; radius = 2.2; temperature = 5.0; init = \"lattice\";\n"
+               "  pairs = \"hertz\"; substeps = 20; };\n"
+               "hertz: { K = 3000.0; gamma_t = 30.0; };\n", &s);
+    pl_colloid_t *c;
+    pl_err_t err;
+    cr_assert_eq(pl_colloid_create(&s, &c, &err), 0, "%s", err.msg);
+    int in = 0, a = -1, b = -1, checked = 0, spoiled = 0;
+    double v0[2][3], w0[2][3], e[3] = {0, 0, 0}, maxov = 0;
+    for (int step = 0; step < 40000 && checked < 6; ++step) {
+        cr_assert_eq(pl_colloid_md_step(c, &err), 0, "%s", err.msg);
+        int ncont = 0, ci = -1, cj = -1;
+        for (int i = 0; i < 8; ++i)
+            for (int j = i + 1; j < 8; ++j) {
+                double dx = c->x[i] - c->x[j], dy = c->y[i] - c->y[j], dz = c->z[i] - c->z[j];
+                dx -= 12 * rint(dx / 12), dy -= 12 * rint(dy / 12);
+                double r = sqrt(dx * dx + dy * dy + dz * dz);
+                if (r < c->rad[i] + c->rad[j]) {
+                    ncont++, ci = i, cj = j;
+                    double ov = c->rad[i] + c->rad[j] - r;
+                    if (in && i == a && j == b && ov > maxov)
+                        maxov = ov, e[0] = dx / r, e[1] = dy / r, e[2] = dz / r;
+                }
+            }
+        int wall = 0;
+        for (int i = 0; i < 8; ++i)
+            if (c->z[i] < c->rad[i] * pow(2.0, 1.0 / 24) || 12 - c->z[i] < c->rad[i] * pow(2.0, 1.0 / 24)) wall = 1;
+        if (!in && ncont == 1 && !wall) { /* contact starts: state before it is the previous step's */
+            in = 1, a = ci, b = cj, spoiled = 0, maxov = 0;
+            int id[2] = {a, b};
+            for (int q = 0; q < 2; ++q) {
+                double m = c->mass[id[q]], I = c->inertia[id[q]], h = c->dt;
+                /* undo this step's contact kick approx.: take values now and compare at end */
+                v0[q][0] = c->vx[id[q]], v0[q][1] = c->vy[id[q]], v0[q][2] = c->vz[id[q]];
+                w0[q][0] = c->wx[id[q]], w0[q][1] = c->wy[id[q]], w0[q][2] = c->wz[id[q]];
+                (void)m, (void)I, (void)h;
+            }
+        } else if (in) {
+            if (ncont > 1 || wall) spoiled = 1;
+            if (ncont == 0) {
+                in = 0;
+                if (spoiled) continue;
+                int id[2] = {a, b};
+                double sgn[2] = {1, -1};
+                for (int q = 0; q < 2; ++q) {
+                    int i = id[q];
+                    double dv[3] = {c->vx[i] - v0[q][0], c->vy[i] - v0[q][1], c->vz[i] - v0[q][2]};
+                    double dL[3] = {c->inertia[i] * (c->wx[i] - w0[q][0]), c->inertia[i] * (c->wy[i] - w0[q][1]),
+                                    c->inertia[i] * (c->wz[i] - w0[q][2])};
+                    double ee[3] = {sgn[q] * e[0], sgn[q] * e[1], sgn[q] * e[2]}, m = c->mass[i], R = c->rad[i];
+                    double want[3] = {-R * m * (ee[1] * dv[2] - ee[2] * dv[1]), -R * m * (ee[2] * dv[0] - ee[0] * dv[2]),
+                                      -R * m * (ee[0] * dv[1] - ee[1] * dv[0])};
+                    double nw = sqrt(want[0] * want[0] + want[1] * want[1] + want[2] * want[2]);
+                    double dd = sqrt(pow(dL[0] - want[0], 2) + pow(dL[1] - want[1], 2) + pow(dL[2] - want[2], 2));
+                    cr_expect(dd <= 0.03 * nw + 1e-9, "contact %d-%d particle %d: I dw (%g %g %g) vs -R e x m dv (%g %g %g)",
+                              a, b, i, dL[0], dL[1], dL[2], want[0], want[1], want[2]);
+                }
+                checked++;
+            }
+        }
+    }
+    cr_expect(checked >= 2, "only %d isolated contacts seen", checked);
+    cr_log_info("eight spheres: %d isolated frictional contacts checked", checked);
+    pl_colloid_free(c);
+}
+
+/* Forces, positions, spins of 400 colloids after 200 MD steps with every term on: bitwise
+ * identical for 1 and 2 threads (full neighbour lists, fixed sum order). */
+Test(colloid_md, bitwise_threads)
+{
+    const char *sc = "box: { cells = [40, 40, 40]; }; fluid: { density = 0.0; };\n"
+                     "colloids: { count = 400; init = \"random\"; radius = 1.8; polydispersity = 0.1;\n"
+                     "  pairs = \"dlvo, hertz, lubrication, wca\"; substeps = 10; temperature = 3.0;\n"
+                     "  min_contact_steps = 0.0; };\n"
+                     "dlvo: { psi0 = 20.0; kappa = 1.4e8; length_unit = 1.25e-7; };\n"
+                     "hertz: { K = 1000.0; beta = 2.0; gamma_t = 3.0; };\n";
+    pl_scene_t s;
+    scene_from(sc, &s);
+    double *snap[2];
+    size_t n = 400; /* >= PL_COLLOID_OMP_MIN: the kernels really run threaded */
+    for (int t = 0; t < 2; ++t) {
+        omp_set_num_threads(t + 1);
+        pl_colloid_t *c;
+        pl_err_t err;
+        cr_assert_eq(pl_colloid_create(&s, &c, &err), 0, "%s", err.msg);
+        for (int k = 0; k < 200; ++k) cr_assert_eq(pl_colloid_md_step(c, &err), 0, "%s", err.msg);
+        snap[t] = malloc(9 * n * sizeof(double));
+        const double *src[9] = {c->x, c->y, c->z, c->vx, c->vy, c->vz, c->wx, c->fx, c->q1};
+        for (int a = 0; a < 9; ++a) memcpy(snap[t] + (size_t)a * n, src[a], n * sizeof(double));
+        pl_colloid_free(c);
+    }
+    cr_expect(memcmp(snap[0], snap[1], 9 * n * sizeof(double)) == 0, "1 and 2 threads differ");
+    free(snap[0]);
+    free(snap[1]);
+}
