@@ -34,7 +34,7 @@ DEB_PKGS := libgsl-dev libhwloc-dev librandom123-dev libhdf5-dev libconfig-dev \
             python3-matplotlib python3-scipy
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps run check check-unit check-cli check-asan bench clean keys
+.PHONY: all deps run check check-unit check-cli check-asan bench clean keys readme
 all: $(BIN)
 
 # Installs only what is missing; a no-op on a machine that has everything.
@@ -96,6 +96,10 @@ bench: $(BENCH_BIN)
 
 keys: $(BIN)
 	./$(BIN) keys
+
+# README's scene-key reference is generated from the schema.
+readme: $(BIN)
+	$(PYTHON) tools/readme_keys.py ./$(BIN) README.md
 
 clean:
 	rm -rf build build-asan bin

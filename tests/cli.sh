@@ -4,6 +4,7 @@
 # bitwise determinism through the real files (threads, restart).
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
+ROOT=$(realpath "$(dirname "$0")/..")
 PY=/usr/bin/python3
 T=$(mktemp -d /tmp/peloid-cli.XXXXXX)
 trap 'rm -rf "$T"' EXIT
@@ -85,6 +86,8 @@ cmp -s run1/checkpoint.h5 resumed/checkpoint.h5 && ok "40 steps == 20 + restart 
 "$PELOID" params small.cfg > params.txt && grep -q "nu_col" params.txt && grep -q "D_f" params.txt && grep -q "Sc" params.txt && ok "params" || bad "params"
 "$PELOID" params small.cfg --json | $PY -c 'import json,sys; d=json.load(sys.stdin); d=d.get("srd", d); assert d["nu"] > 0' && ok "params --json" || bad "params --json"
 "$PELOID" keys | grep -q '| `density` |' && ok "keys prints the reference" || bad "keys"
+
+$PY "$ROOT/tools/readme_keys.py" "$PELOID" "$ROOT/README.md" --check && ok "README scene reference matches peloid keys" || bad "README reference stale (make readme)"
 
 echo "$pass passed, $fail failed"
 [ $fail -eq 0 ]
