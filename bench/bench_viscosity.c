@@ -12,7 +12,7 @@
  * error is the spread of the per-seed fits / sqrt(seeds).
  *
  * Output: one TSV line on stdout and in bench/out/viscosity_<real>.tsv.
- * Usage: bench_viscosity [--quick]   (PL_BENCH_QUICK=1 = --quick) */
+ * Usage: bench_viscosity [--quick] [--seeds N]   (PL_BENCH_QUICK=1 = --quick) */
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
@@ -47,7 +47,10 @@ int main(int argc, char **argv)
     int quick = getenv("PL_BENCH_QUICK") && atoi(getenv("PL_BENCH_QUICK"));
     for (int i = 1; i < argc; ++i)
         if (!strcmp(argv[i], "--quick")) quick = 1;
-    const int Lxy = quick ? 8 : 16, Lz = 32, seeds = quick ? 4 : 8;
+    int seeds = quick ? 4 : 16;
+    for (int i = 1; i + 1 < argc; ++i)
+        if (!strcmp(argv[i], "--seeds")) seeds = atoi(argv[i + 1]) > 1 ? atoi(argv[i + 1]) : 2;
+    const int Lxy = quick ? 8 : 16, Lz = 32;
     const double A = 0.2, dt = 0.1, alpha = 130.0, gamma = 10.0;
     pl_srd_theory_t th;
     pl_srd_theory(gamma, alpha * PI / 180.0, dt, 1.0, &th);
@@ -107,7 +110,7 @@ int main(int argc, char **argv)
     FILE *out = fopen(path, "w");
     const char *hdr = "real\tbox\tseeds\tsteps\tnu_measured\tnu_stat_err\tnu_theory\trel_error\twall_s\n";
     char line[256];
-    snprintf(line, sizeof line, "%s\t%dx%dx%d\t%d\t%d\t%.5f\t%.5f\t%.5f\t%+.4f\t%.1f\n", PL_REAL_NAME,
+    snprintf(line, sizeof line, "%s\t%dx%dx%d\t%d\t%d\t%.9f\t%.5f\t%.5f\t%+.4f\t%.1f\n", PL_REAL_NAME,
              Lxy, Lxy, Lz, seeds, steps, nu, err_nu, th.nu, nu / th.nu - 1.0, omp_get_wtime() - t0);
     fputs(hdr, stdout);
     fputs(line, stdout);

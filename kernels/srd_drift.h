@@ -158,13 +158,26 @@ __attribute__((noinline)) static void pl_drift_block_periodic(const pl_drift_t *
 #pragma omp simd
     for (size_t k = 0; k < m; ++k) {
         double v0 = (double)vx[k] + a0, v1 = (double)vy[k] + a1, v2 = (double)vz[k] + a2;
+#ifndef PL_SINGLE
         double r0 = pl_drift_wrap_sel((double)x[k] + v0 * dt, L0, i0);
         double r1 = pl_drift_wrap_sel((double)y[k] + v1 * dt, L1, i1);
         double r2 = pl_drift_wrap_sel((double)z[k] + v2 * dt, L2, i2);
-#ifdef PL_SINGLE
-        r0 = (pl_real)r0 >= (pl_real)L0 ? 0.0 : (double)(pl_real)r0;
-        r1 = (pl_real)r1 >= (pl_real)L1 ? 0.0 : (double)(pl_real)r1;
-        r2 = (pl_real)r2 >= (pl_real)L2 ? 0.0 : (double)(pl_real)r2;
+#else
+        /* pl_drift_one's wrap then rounding, reordered so that no float
+         * conversion sits in a select arm (which blocks if-conversion):
+         * x >= L implies (float)x >= L (L is an integer), so
+         * "wrap to 0 if x >= L, round, wrap to 0 if >= L" equals
+         * "round, wrap to 0 if >= L" on the unselected x - L floor(x / L). */
+        double w0 = (double)x[k] + v0 * dt, w1 = (double)y[k] + v1 * dt, w2 = (double)z[k] + v2 * dt;
+        w0 -= L0 * pl_drift_floor(w0 * i0);
+        w1 -= L1 * pl_drift_floor(w1 * i1);
+        w2 -= L2 * pl_drift_floor(w2 * i2);
+        const pl_real f0 = (pl_real)w0, f1 = (pl_real)w1, f2 = (pl_real)w2;
+        /* (double)f * (f < L) is (double)f or +0.0 (f >= 0): the select,
+         * with the conversion kept out of its arm */
+        double r0 = (double)f0 * (double)(f0 < (pl_real)L0);
+        double r1 = (double)f1 * (double)(f1 < (pl_real)L1);
+        double r2 = (double)f2 * (double)(f2 < (pl_real)L2);
         v0 = (double)(pl_real)v0; v1 = (double)(pl_real)v1; v2 = (double)(pl_real)v2;
 #endif
         int ix = pl_drift_ifloor(r0 - s0), iy = pl_drift_ifloor(r1 - s1), iz = pl_drift_ifloor(r2 - s2);
