@@ -83,6 +83,8 @@ static int ghost_count(const pl_grid_t *g, const pl_collide_params_t *p, int iz,
     return (int)M < target ? target - (int)M : 0;
 }
 
+enum { ROT_BATCH = 32 };
+
 void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_start,
                     const pl_collide_params_t *p, double *block_sum)
 {
@@ -94,7 +96,20 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
     for (size_t b = 0; b < nblocks; ++b) {
         double sum2 = 0.0, dof = 0.0;
         size_t c_hi = (b + 1) * PL_CELL_BLOCK < ncells ? (b + 1) * PL_CELL_BLOCK : ncells;
+        /* The rotations of ROT_BATCH cells are drawn first, in a loop without
+         * data-dependent branches, so that the out-of-order core overlaps the
+         * Philox rounds and sincos of neighbouring cells; they depend on
+         * (seed, step, cell) only, so the result is unchanged. */
+        double Rb[ROT_BATCH][3][3];
+        size_t c_base = b * PL_CELL_BLOCK, c_rot = c_base;
         for (size_t c = b * PL_CELL_BLOCK; c < c_hi; ++c) {
+            if (c == c_rot) {
+                const size_t nr = c_hi - c < ROT_BATCH ? c_hi - c : ROT_BATCH;
+                for (size_t k = 0; k < nr; ++k) rotation_matrix(p, c + k, Rb[k]);
+                c_base = c;
+                c_rot = c + nr;
+            }
+            double (*const Rc)[3] = Rb[c - c_base];
             const size_t s = cell_start[c], e = cell_start[c + 1], M = e - s;
             int wall = 0, ng = 0;
             if (p->wall_ghosts && M >= 1) ng = ghost_count(g, p, (int)(c / layer), M, &wall);
@@ -125,9 +140,8 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
             double zeta = 1.0;
             if (p->heyes && ng == 0 && M >= 2) zeta = heyes_zeta(p, c, M, 0.5 * K2);
             double R[3][3];
-            rotation_matrix(p, c, R);
             for (int i = 0; i < 3; ++i)
-                for (int j = 0; j < 3; ++j) R[i][j] *= zeta;
+                for (int j = 0; j < 3; ++j) R[i][j] = Rc[i][j] * zeta;
             for (size_t i = s; i < e; ++i) {
                 double a = vx[i] - u[0], bb = vy[i] - u[1], cc = vz[i] - u[2];
                 vx[i] = (pl_real)(u[0] + R[0][0] * a + R[0][1] * bb + R[0][2] * cc);

@@ -1,69 +1,136 @@
-/* Counting sort of fluid particles by collision cell (DESIGN.md "Data").
+/* Counting sort of fluid particles by collision cell (DESIGN.md "Data"), and
+ * the same sort with the drift done inside the scatter.
  *
- * Input: fluid->cell and the per-thread histograms hist[t * ncells + c] that
- * pl_srd_stream_bin filled for the static chunks pl_chunk(t).  A prefix sum
- * over (cell, thread) gives every (cell, thread) pair its first slot; each
- * thread then scatters its own chunk in order.  No atomics, and the result is
- * the stable sort by cell, hence independent of the thread count. */
+ * Input: the per-thread histograms hist[t * ncells + c] filled for the
+ * static chunks pl_chunk(t) (pl_srd_bin / pl_srd_stream_bin, or
+ * pl_srd_stream_count).  A prefix sum over (cell, thread) gives every
+ * (cell, thread) pair its first slot; each thread then scatters its own chunk
+ * in order.  No atomics, and the result is the stable sort by cell, hence
+ * independent of the thread count.
+ *
+ * The prefix sum is parallel: thread t sums its block of cells, the block
+ * totals are added up (nthreads terms), then every thread writes the slots of
+ * its block.  Integer sums: the same result as a serial scan. */
 #include <omp.h>
 #include <string.h>
 
-#include "peloid/srd_kernels.h"
+#include "srd_drift.h"
 
-static void scatter_real(pl_real *restrict dst, const pl_real *restrict src, size_t i, size_t j)
+/* Scan phase of thread t; part[] holds nthreads block totals.  Contains
+ * barriers: call from every thread of the region. */
+static void prefix(uint32_t *hist, uint32_t *cell_start, size_t ncells, int nthreads, int t,
+                   uint32_t *part)
 {
-    dst[j] = src[i];
+    size_t c0, c1;
+    pl_chunk(ncells, t, nthreads, &c0, &c1);
+    uint32_t tot = 0;
+    for (int u = 0; u < nthreads; ++u) {
+        const uint32_t *restrict hu = hist + (size_t)u * ncells;
+        for (size_t c = c0; c < c1; ++c) tot += hu[c];
+    }
+    part[t] = tot;
+#pragma omp barrier
+    /* hist[u][c] := first slot of (cell c, thread u), in (cell, thread) order */
+    uint32_t off = 0;
+    for (int u = 0; u < t; ++u) off += part[u];
+    for (size_t c = c0; c < c1; ++c) {
+        cell_start[c] = off;
+        for (int u = 0; u < nthreads; ++u) {
+            const uint32_t cnt = hist[(size_t)u * ncells + c];
+            hist[(size_t)u * ncells + c] = off;
+            off += cnt;
+        }
+    }
+    if (t == nthreads - 1) cell_start[ncells] = off;
+#pragma omp barrier
+}
+
+/* Stable scatter of [lo, hi): particle i goes to slot h[cell]++.  With
+ * drift != NULL the particle is drifted first (bitwise as pl_srd_stream_bin
+ * would) and its cell recomputed, else the cell is read from f->cell. */
+static void scatter(pl_fluid_t *f, const pl_drift_t *drift, uint32_t *restrict h, size_t lo,
+                    size_t hi)
+{
+    const uint32_t *restrict cell = f->cell;
+    const pl_real *restrict x = f->r[0], *restrict y = f->r[1], *restrict z = f->r[2];
+    const pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
+    pl_real *restrict xa = f->r_alt[0], *restrict ya = f->r_alt[1], *restrict za = f->r_alt[2];
+    pl_real *restrict vxa = f->v_alt[0], *restrict vya = f->v_alt[1], *restrict vza = f->v_alt[2];
+    if (!f->tracked && drift && !drift->walls) {
+        double rb[3][PL_DRIFT_BLOCK], vb[3][PL_DRIFT_BLOCK];
+        uint32_t cb[PL_DRIFT_BLOCK];
+        for (size_t i = lo; i < hi; i += PL_DRIFT_BLOCK) {
+            const size_t m = hi - i < PL_DRIFT_BLOCK ? hi - i : PL_DRIFT_BLOCK;
+            pl_drift_block_periodic(drift, x + i, y + i, z + i, vx + i, vy + i, vz + i, m, rb, vb, cb);
+            for (size_t k = 0; k < m; ++k) {
+                const size_t j = h[cb[k]]++;
+                xa[j] = (pl_real)rb[0][k]; ya[j] = (pl_real)rb[1][k]; za[j] = (pl_real)rb[2][k];
+                vxa[j] = (pl_real)vb[0][k]; vya[j] = (pl_real)vb[1][k]; vza[j] = (pl_real)vb[2][k];
+            }
+        }
+        return;
+    }
+    if (!f->tracked && drift) {
+        for (size_t i = lo; i < hi; ++i) {
+            double r[3] = {x[i], y[i], z[i]}, v[3] = {vx[i], vy[i], vz[i]}, dr[3];
+            const size_t j = h[pl_drift_one(drift, r, v, dr)]++;
+            xa[j] = (pl_real)r[0]; ya[j] = (pl_real)r[1]; za[j] = (pl_real)r[2];
+            vxa[j] = (pl_real)v[0]; vya[j] = (pl_real)v[1]; vza[j] = (pl_real)v[2];
+        }
+        return;
+    }
+    if (!f->tracked) {
+        for (size_t i = lo; i < hi; ++i) {
+            const size_t j = h[cell[i]]++;
+            xa[j] = x[i]; ya[j] = y[i]; za[j] = z[i];
+            vxa[j] = vx[i]; vya[j] = vy[i]; vza[j] = vz[i];
+        }
+        return;
+    }
+    const uint32_t *restrict id = f->id;
+    uint32_t *restrict ida = f->id_alt;
+    const double *restrict dx = f->disp[0], *restrict dy = f->disp[1], *restrict dz = f->disp[2];
+    double *restrict dxa = f->disp_alt[0], *restrict dya = f->disp_alt[1], *restrict dza = f->disp_alt[2];
+    for (size_t i = lo; i < hi; ++i) {
+        double r[3] = {x[i], y[i], z[i]}, v[3] = {vx[i], vy[i], vz[i]}, dr[3] = {0.0, 0.0, 0.0};
+        const size_t j = drift ? h[pl_drift_one(drift, r, v, dr)]++ : h[cell[i]]++;
+        xa[j] = (pl_real)r[0]; ya[j] = (pl_real)r[1]; za[j] = (pl_real)r[2];
+        vxa[j] = (pl_real)v[0]; vya[j] = (pl_real)v[1]; vza[j] = (pl_real)v[2];
+        ida[j] = id[i];
+        if (drift) {
+            dxa[j] = dx[i] + dr[0]; dya[j] = dy[i] + dr[1]; dza[j] = dz[i] + dr[2];
+        } else {
+            dxa[j] = dx[i]; dya[j] = dy[i]; dza[j] = dz[i];
+        }
+    }
+}
+
+static void sort(pl_fluid_t *f, const pl_drift_t *drift, uint32_t *hist, uint32_t *cell_start,
+                 size_t ncells, int nthreads)
+{
+    uint32_t part[nthreads]; /* particles in each thread's block of cells */
+    /* One region: thread t scans its block of cells, then scatters the
+     * particle chunk pl_chunk(n, t) whose histogram row it filled. */
+#pragma omp parallel num_threads(nthreads)
+    {
+        const int t = omp_get_thread_num();
+        prefix(hist, cell_start, ncells, nthreads, t, part);
+        size_t lo, hi;
+        pl_chunk(f->n, t, nthreads, &lo, &hi);
+        scatter(f, drift, hist + (size_t)t * ncells, lo, hi);
+    }
+    pl_fluid_swap(f);
 }
 
 void pl_srd_sort(pl_fluid_t *f, uint32_t *hist, uint32_t *cell_start, size_t ncells, int nthreads)
 {
-#pragma omp parallel num_threads(nthreads)
-    {
-        /* pass 1: per-cell totals into cell_start[c] */
-#pragma omp for schedule(static)
-        for (size_t c = 0; c < ncells; ++c) {
-            uint32_t sum = 0;
-            for (int t = 0; t < nthreads; ++t) sum += hist[(size_t)t * ncells + c];
-            cell_start[c] = sum;
-        }
-        /* pass 2: exclusive scan over cells (serial: one add per cell) */
-#pragma omp single
-        {
-            uint32_t acc = 0;
-            for (size_t c = 0; c < ncells; ++c) {
-                uint32_t cnt = cell_start[c];
-                cell_start[c] = acc;
-                acc += cnt;
-            }
-            cell_start[ncells] = acc;
-        }
-        /* pass 3: hist[t][c] := first slot of (cell c, thread t) */
-#pragma omp for schedule(static)
-        for (size_t c = 0; c < ncells; ++c) {
-            uint32_t off = cell_start[c];
-            for (int t = 0; t < nthreads; ++t) {
-                uint32_t cnt = hist[(size_t)t * ncells + c];
-                hist[(size_t)t * ncells + c] = off;
-                off += cnt;
-            }
-        }
-        /* pass 4: stable scatter of each thread's own chunk */
-        int t = omp_get_thread_num();
-        size_t lo, hi;
-        pl_chunk(f->n, t, nthreads, &lo, &hi);
-        uint32_t *restrict h = hist + (size_t)t * ncells;
-        const uint32_t *restrict cell = f->cell;
-        for (size_t i = lo; i < hi; ++i) {
-            size_t j = h[cell[i]]++;
-            for (int d = 0; d < 3; ++d) {
-                scatter_real(f->r_alt[d], f->r[d], i, j);
-                scatter_real(f->v_alt[d], f->v[d], i, j);
-            }
-            if (f->tracked) {
-                f->id_alt[j] = f->id[i];
-                for (int d = 0; d < 3; ++d) f->disp_alt[d][j] = f->disp[d][i];
-            }
-        }
-    }
-    pl_fluid_swap(f);
+    sort(f, NULL, hist, cell_start, ncells, nthreads);
+}
+
+void pl_srd_stream_sort(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params_t *p,
+                        uint32_t *hist, uint32_t *cell_start, int nthreads)
+{
+    pl_drift_t c;
+    pl_drift_init(&c, g, p, 1);
+    sort(f, &c, hist, cell_start, g->ncells, nthreads);
 }

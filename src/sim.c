@@ -2,6 +2,8 @@
  * interval) and the step loop.  A stage the scene does not need is not in
  * the plan (DESIGN.md "Scene -> plan"): no thermostat stage without a
  * thermostat, no fluid stages without fluid. */
+#include <hwloc.h>
+#include <limits.h>
 #include <math.h>
 #include <omp.h>
 #include <stdlib.h>
@@ -15,21 +17,32 @@ static const double PI = 3.14159265358979323846;
 
 /* ---- stages ------------------------------------------------------------ */
 
+void pl_sim_stream_params(const pl_sim_t *sim, pl_stream_params_t *p)
+{
+    const pl_scene_t *sc = &sim->scene;
+    memset(p, 0, sizeof *p);
+    p->dt = sc->srd.dt;
+    for (int d = 0; d < 3; ++d) /* + Hecht Sec. VIII.A (iii) compensation */
+        p->accel[d] = sc->fluid.body_force[d] + (sim->coupling ? sim->coupling->fluid_accel[d] : 0.0);
+    memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
+}
+
 static int stage_stream(pl_sim_t *sim, pl_err_t *err)
 {
     (void)err;
     const pl_scene_t *sc = &sim->scene;
     pl_grid_draw_shift(&sim->grid, (uint64_t)sc->run.seed, (uint64_t)sim->step, sc->srd.grid_shift);
     pl_stream_params_t p;
-    memset(&p, 0, sizeof p);
-    p.dt = sc->srd.dt;
-    for (int d = 0; d < 3; ++d) /* + Hecht Sec. VIII.A (iii) compensation */
-        p.accel[d] = sc->fluid.body_force[d] + (sim->coupling ? sim->coupling->fluid_accel[d] : 0.0);
-    memcpy(p.wall_u, sim->wall_u, sizeof p.wall_u);
+    pl_sim_stream_params(sim, &p);
     pl_srd_stream_bin(&sim->fluid, &sim->grid, &p, sim->hist, sim->nthreads);
     return 0;
 }
 
+/* pl_srd_stream_count + pl_srd_stream_sort (drift inside the scatter) leave
+ * the same state with one pass less over the particle arrays (192 against
+ * 248 B per particle), but on the 2-core development machine, where these
+ * kernels are latency bound, it measured slower at 1 thread and equal at 2
+ * (bench/RESULTS.md); bench_srd times both pipelines. */
 static int stage_sort(pl_sim_t *sim, pl_err_t *err)
 {
     (void)err;
@@ -144,12 +157,46 @@ static void build_plan(pl_sim_t *sim)
 
 /* ---- lifetime ---------------------------------------------------------- */
 
+/* Pins OpenMP thread t to the t-th of nthreads core sets spread over the
+ * machine by hwloc_distrib (packages first), unless the user chose a binding
+ * (OMP_PROC_BIND) or set PL_NO_BIND.  Done before the allocations, whose
+ * first touch then places each thread's pages on its own NUMA node. */
+static void bind_threads(int nthreads)
+{
+    if (nthreads < 2 || omp_get_proc_bind() != omp_proc_bind_false || getenv("PL_NO_BIND")) return;
+    hwloc_topology_t topo;
+    if (hwloc_topology_init(&topo)) return;
+    if (hwloc_topology_load(topo)) {
+        hwloc_topology_destroy(topo);
+        return;
+    }
+    int ncores = hwloc_get_nbobjs_by_type(topo, HWLOC_OBJ_CORE);
+    if (ncores >= nthreads && nthreads <= 1024) {
+        hwloc_bitmap_t sets[1024];
+        hwloc_obj_t root = hwloc_get_root_obj(topo);
+        if (hwloc_distrib(topo, &root, 1, sets, (unsigned)nthreads, INT_MAX, 0) == 0) {
+#pragma omp parallel num_threads(nthreads)
+            {
+                hwloc_bitmap_t set = sets[omp_get_thread_num()];
+                hwloc_bitmap_singlify(set);
+                hwloc_set_cpubind(topo, set, HWLOC_CPUBIND_THREAD);
+            }
+            for (int t = 0; t < nthreads; ++t) hwloc_bitmap_free(sets[t]);
+        }
+    }
+    hwloc_topology_destroy(topo);
+}
+
 int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_t *err)
 {
     pl_sim_t *sim = calloc(1, sizeof *sim);
     if (!sim) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
     sim->scene = *scene;
     sim->nthreads = nthreads > 0 ? nthreads : omp_get_max_threads();
+    /* before any allocation: first touch (pl_alloc) runs with the kernels'
+     * thread count and binding */
+    omp_set_num_threads(sim->nthreads);
+    bind_threads(sim->nthreads);
     pl_grid_init(&sim->grid, scene->box.cells, scene->box.walls_z);
     double volume = (double)scene->box.cells[0] * scene->box.cells[1] * scene->box.cells[2];
     size_t n = (size_t)llround(scene->fluid.density * volume);
@@ -171,7 +218,6 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
         pl_sim_free(sim);
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cell arrays (%zu cells)", nc);
     }
-    omp_set_num_threads(sim->nthreads);
     pl_fluid_init(&sim->fluid, scene);
     if (scene->colloids.count > 0 && (rc = pl_colloid_create(scene, &sim->colloids, err))) {
         pl_sim_free(sim);

@@ -58,6 +58,9 @@ void pl_sim_free(pl_sim_t *sim);
 /* One collision step: every stage whose interval divides the step. */
 int pl_sim_step(pl_sim_t *sim, pl_err_t *err);
 
+/* Drift parameters of the current step (dt, body force, wall velocities). */
+void pl_sim_stream_params(const pl_sim_t *sim, pl_stream_params_t *p);
+
 /* Observables of the current state (fixed-order reductions). */
 void pl_sim_observe(const pl_sim_t *sim, pl_fluid_obs_t *obs, double *kT);
 
