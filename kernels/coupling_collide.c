@@ -21,46 +21,20 @@
 #include "peloid/coupling_kernels.h"
 #include "peloid/rng.h"
 #include "peloid/scene.h"
+#include "peloid/srd_rules.h"
 
-/* Same two rules as the fluid collision (PL Eq. 3 / Hecht Sec. III). */
+/* Same two rules as the fluid collision (include/peloid/srd_rules.h). */
 static void rotation(const pl_coupling2_params_t *p, uint64_t cell, double R[3][3])
 {
     pl_rand4_t r = pl_rng_uniform4(p->seed, PL_RNG_COUPLING + 0, p->step, cell, 0);
-    if (p->rule == PL_RULE_HECHT_AXES) {
-        int k = (int)(r.u[0] * 6.0);
-        if (k > 5) k = 5;
-        int a = k >> 1, b = (a + 1) % 3, c = (a + 2) % 3;
-        double s = (k & 1) ? -1.0 : 1.0;
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) R[i][j] = 0.0;
-        R[a][a] = 1.0;
-        R[c][b] = s;
-        R[b][c] = -s;
-        return;
-    }
-    double cz = 2.0 * r.u[0] - 1.0, sz = sqrt(1.0 - cz * cz);
-    double phi = 6.283185307179586476925 * r.u[1];
-    double n[3] = {sz * cos(phi), sz * sin(phi), cz};
-    double ca = p->cos_a, sa = p->sin_a, oc = 1.0 - ca;
-    R[0][0] = ca + n[0] * n[0] * oc;
-    R[0][1] = n[0] * n[1] * oc - n[2] * sa;
-    R[0][2] = n[0] * n[2] * oc + n[1] * sa;
-    R[1][0] = n[1] * n[0] * oc + n[2] * sa;
-    R[1][1] = ca + n[1] * n[1] * oc;
-    R[1][2] = n[1] * n[2] * oc - n[0] * sa;
-    R[2][0] = n[2] * n[0] * oc - n[1] * sa;
-    R[2][1] = n[2] * n[1] * oc + n[0] * sa;
-    R[2][2] = ca + n[2] * n[2] * oc;
+    pl_srd_rotation(p->rule, p->cos_a, p->sin_a, r.u[0], r.u[1], R);
 }
 
 /* Mass-weighted Heyes factor (Hecht Eq. 33 with K = sum m (v-u)^2 / 2). */
 static double heyes_zeta(const pl_coupling2_params_t *p, uint64_t cell, size_t nbody, double K)
 {
     pl_rand4_t r = pl_rng_uniform4(p->seed, PL_RNG_COUPLING + 1, p->step, cell, 0);
-    double eps = p->heyes_eps * r.u[0];
-    double zeta = r.u[1] < 0.5 ? 1.0 + eps : 1.0 / (1.0 + eps);
-    double log_acc = 3.0 * (double)(nbody - 1) * log(zeta) - (zeta * zeta - 1.0) * K / p->kT_target;
-    return (log_acc >= 0.0 || log(r.u[2]) < log_acc) ? zeta : 1.0;
+    return pl_heyes_zeta(p->heyes_eps, p->kT_target, (double)nbody, K, r.u[0], r.u[1], r.u[2]);
 }
 
 void pl_coupling2_save(const pl_fluid_t *f, const uint32_t *cell_start,
