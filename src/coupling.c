@@ -41,12 +41,13 @@ pl_coupling_colloids_t pl_coupling_view(const pl_colloid_t *c)
     return v;
 }
 
-/* Grows the lookup to hold its entries; 0 or PL_ERR_NOMEM. */
-int pl_coupling_lookup_update(pl_coupling_t *cp, const pl_sim_t *sim, pl_err_t *err)
+/* Builds the colloid lookup for the colloids seen through `v`, growing the
+ * list until it holds every entry; 0 or PL_ERR_NOMEM. */
+int pl_coupling_lookup_fill(pl_coupling_t *cp, const pl_sim_t *sim, const pl_coupling_colloids_t *v,
+                            pl_err_t *err)
 {
-    pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
     for (;;) {
-        size_t need = pl_coupling_lookup_build(&v, sim->grid.L, sim->grid.walls_z, cp->lk_start,
+        size_t need = pl_coupling_lookup_build(v, sim->grid.L, sim->grid.walls_z, cp->lk_start,
                                                cp->lk_list, cp->lk_cap);
         if (need <= cp->lk_cap) return 0;
         pl_free(cp->lk_list);
@@ -54,6 +55,13 @@ int pl_coupling_lookup_update(pl_coupling_t *cp, const pl_sim_t *sim, pl_err_t *
         if (!(cp->lk_list = pl_alloc(cp->lk_cap * sizeof(int32_t))))
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloid lookup");
     }
+}
+
+/* Lookup of the colloids with their own radii. */
+int pl_coupling_lookup_update(pl_coupling_t *cp, const pl_sim_t *sim, pl_err_t *err)
+{
+    pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
+    return pl_coupling_lookup_fill(cp, sim, &v, err);
 }
 
 /* Couplings I and potential start without fluid inside colloids (radius R,

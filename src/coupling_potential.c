@@ -53,15 +53,7 @@ static int lookup_big(pl_coupling_t *cp, const pl_sim_t *sim, pl_err_t *err)
     double rc = cp->wca.sigma * pow(2.0, 1.0 / 6.0);
     for (size_t k = 0; k < c->n; ++k) cp->rad_big[k] = rc + cp->margin;
     pl_coupling_colloids_t v = big_view(cp, c);
-    for (;;) {
-        size_t need = pl_coupling_lookup_build(&v, sim->grid.L, sim->grid.walls_z, cp->lk_start,
-                                               cp->lk_list, cp->lk_cap);
-        if (need <= cp->lk_cap) return 0;
-        pl_free(cp->lk_list);
-        cp->lk_cap = need + need / 2 + 64;
-        if (!(cp->lk_list = pl_alloc(cp->lk_cap * sizeof(int32_t))))
-            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloid lookup");
-    }
+    return pl_coupling_lookup_fill(cp, sim, &v, err);
 }
 
 #define NB(cp, a) ((cp)->near_buf + (size_t)(a) * (cp)->near_cap)

@@ -64,6 +64,9 @@ void pl_coupling_free(pl_coupling_t *cp);
 
 /* Rebuilds the colloid lookup of coupling I (grows it when needed). */
 int pl_coupling_lookup_update(pl_coupling_t *cp, const struct pl_sim *sim, pl_err_t *err);
+/* Same for the colloids seen through `v` (e.g. with enlarged radii). */
+int pl_coupling_lookup_fill(pl_coupling_t *cp, const struct pl_sim *sim,
+                            const pl_coupling_colloids_t *v, pl_err_t *err);
 
 /* Plan stages (src/coupling_stages.c). */
 int pl_coupling_stage_reflect(struct pl_sim *sim, pl_err_t *err);
