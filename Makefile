@@ -1,6 +1,6 @@
 # peloid — one top-level Makefile (STYLE.md 12).
 #
-#   make run     install dependencies, build, run scenes/quickstart.cfg
+#   make run     install dependencies, build, run scenes/quickstart.cfg and plot it
 #   make check   install dependencies, build, run the test suite
 #   make bench   kernel and whole-step benchmarks (bench/out/*.tsv)
 #
@@ -73,6 +73,7 @@ $(BUILD)/bench/%: bench/%.c $(LIB) | deps
 
 run: $(BIN)
 	./$(BIN) run scenes/quickstart.cfg --force
+	$(PYTHON) tools/plot_sediment.py out/quickstart
 
 # The suite: Criterion unit + physics tests, then CLI behaviour, then a
 # sanitizer build of the fast unit tests.

@@ -26,7 +26,7 @@ static void thermo_header(FILE *f, int mapped, int tracked, int colloids, int re
 {
     fprintf(f, "step\ttime\t%stemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%s%s%smupdates_per_s\n",
             mapped ? "time_s\ttemperature_K\t" : "", tracked ? "msd\t" : "",
-            colloids ? "c_kin_trans\tc_kin_rot\tc_dlvo\tc_hertz\tc_wca\tc_wall\tc_gravity\tc_total\t" : "",
+            colloids ? "c_kin_trans\tc_kin_rot\tc_dlvo\tc_hertz\tc_wca\tc_wall\tc_gravity\tc_total\tc_zcm\t" : "",
             reflect ? "cpl_events\tcpl_truncations\t" : "",
             pinned ? "cpl_drag_x\tcpl_drag_y\tcpl_drag_z\t" : "");
 }
@@ -59,6 +59,14 @@ static void thermo_row(writer_t *w, const pl_sim_t *sim)
         fprintf(w->thermo, "%.10g\t%.10g\t", ce.kin_trans, ce.kin_rot);
         for (int k = 0; k < PL_CE_NTERMS; ++k) fprintf(w->thermo, "%.10g\t", ce.pot[k]);
         fprintf(w->thermo, "%.10g\t", ce.total);
+        /* centre-of-mass height of the colloids (unwrapped z): sedimentation */
+        const pl_colloid_t *c = sim->colloids;
+        double mz = 0.0, m = 0.0;
+        for (size_t k = 0; k < c->n; ++k) { /* fixed order */
+            mz += c->mass[k] * (c->z[k] + (double)c->iz[k] * c->box[2]);
+            m += c->mass[k];
+        }
+        fprintf(w->thermo, "%.10g\t", m > 0.0 ? mz / m : 0.0);
     }
     if (reflecting(sim))
         fprintf(w->thermo, "%llu\t%llu\t", sim->coupling->events, sim->coupling->truncations);

@@ -92,6 +92,13 @@ head = open("mapped/thermo.tsv").readline().split()
 assert head[:4] == ["step", "time", "time_s", "temperature_K"], head
 PYEOF
 
+# the quickstart suspension (a few steps) and its plot
+"$PELOID" run "$ROOT/scenes/quickstart.cfg" --out qs --steps 80 2> /dev/null
+if [ $? -eq 0 ] && head -1 qs/thermo.tsv | grep -q "c_zcm" && \
+   $PY "$ROOT/tools/plot_sediment.py" qs > plot.txt 2>&1 && [ -s qs/sediment.png ] && grep -q "Stokes" plot.txt; then
+  ok "quickstart runs (80 steps), thermo has c_zcm, tools/plot_sediment.py draws qs/sediment.png"
+else bad "quickstart / plot_sediment: $(tail -3 plot.txt 2>/dev/null)"; fi
+
 # params
 "$PELOID" params small.cfg > params.txt && grep -q "nu_col" params.txt && grep -q "D_f" params.txt && grep -q "Sc" params.txt && ok "params" || bad "params"
 "$PELOID" params small.cfg --json | $PY -c 'import json,sys; d=json.load(sys.stdin); d=d.get("srd", d); assert d["nu"] > 0' && ok "params --json" || bad "params --json"

@@ -131,6 +131,9 @@ extern const pl_section_t pl_scene_section_coupling;
 
 /* Cross-key checks of the coupling section (src/coupling_scene.c). */
 int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err);
+/* Coupling II friction of a colloid of mass M (m_f): 2/3 (1 - cos alpha) mu / dt,
+ * mu = M gamma / (M + gamma); an upper bound (src/coupling.c). */
+double pl_coupling2_friction(const pl_scene_t *scene, double mass);
 
 /* Cross-key checks of the colloid sections (src/colloid_scene.c). */
 int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err);
