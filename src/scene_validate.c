@@ -45,9 +45,10 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
         size_t off = w ? OFF(box.wall_velocity[1]) : OFF(box.wall_velocity[0]);
         if ((u[0] != 0.0 || u[1] != 0.0 || u[2] != 0.0) && b->walls_z != PL_WALLS_NOSLIP)
             return pl_scene_fail(scene, err, off, key,
-                                 "[%g, %g, %g] needs box.walls_z = \"noslip\" (a %s wall cannot "
-                                 "drag the fluid); allowed otherwise: [0, 0, 0]",
-                                 u[0], u[1], u[2], b->walls_z == PL_WALLS_SLIP ? "slip" : "missing");
+                                 "[%g, %g, %g] needs box.walls_z = \"noslip\" (%s); allowed "
+                                 "otherwise: [0, 0, 0]", u[0], u[1], u[2],
+                                 b->walls_z == PL_WALLS_SLIP ? "a slip wall cannot drag the fluid"
+                                                             : "walls_z = \"none\" has no wall to move");
         if (u[2] != 0.0)
             return pl_scene_fail(scene, err, off, key,
                                  "z component %g: a wall moves in its own plane only; allowed: "
