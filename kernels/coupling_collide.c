@@ -11,7 +11,10 @@
  * The fluid kernel (kernels/srd_collide.c) has already collided these cells
  * without the colloids; their fluid velocities are recomputed here from the
  * copy saved before it ran, so the fluid kernel stays untouched.  Wall ghost
- * particles are not added in occupied cells.
+ * particles are not added in occupied cells (a colloid whose centre lies in a
+ * cell cut by a no-slip wall: only for R below ~1.5 a0, the wall repulsion
+ * keeps centres ~R away); the moving wall's push the fluid kernel counted for
+ * such a cell (sim->wall_impulse) is then not corrected.
  *
  * Random numbers: Philox (seed, PL_RNG_COUPLING + 0 / + 1), counter (step,
  * cell).  Cells are independent and each owns its fluid and colloids: the

@@ -22,6 +22,9 @@
  * keeps detailed balance for a finite colloid mass: with beta = m_f / 2kT in
  * the colloid frame each event would add the recoil m_f^2 dv^2 / 2M and heat
  * colloids and fluid (measured: +25% and +6% at M = 67 m_f).
+ * A particle the reflection pushes through a wall is mirrored back into the box
+ * with the wall's rule (bounce-back in the moving wall's frame, or specular),
+ * its impulse counted in the wall stress.
  * A new position inside another colloid repeats the reflection there, up to
  * N_max times (Hecht Sec. IV); a particle still inside after that is left
  * where it is and counted as a truncation.
@@ -144,9 +147,16 @@ static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
         }
         for (int d = 0; d < 3; ++d) r[d] = (d == 0 ? c->x[k] : d == 1 ? c->y[k] : c->z[k]) + p[d];
         if (walls && (r[2] < 0.0 || r[2] > L[2])) { /* mirror into the box */
+            const int top = r[2] > L[2];
             r[2] = r[2] < 0.0 ? -r[2] : 2.0 * L[2] - r[2];
             if (r[2] < 0.0 || r[2] > L[2]) r[2] = 0.5 * L[2];
-            v[2] = -v[2];
+            double dp[3] = {0.0, 0.0, -2.0 * v[2]};
+            if (prm->noslip) /* bounce-back in the frame of the (moving) wall, as streaming does */
+                for (int d = 0; d < 3; ++d) dp[d] = 2.0 * (prm->wall_u[top][d] - v[d]);
+            for (int d = 0; d < 3; ++d) v[d] += dp[d];
+            if (prm->wall_acc)
+                for (int d = 0; d < 3; ++d)
+                    prm->wall_acc[3 * top + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
         }
         r[0] = wrap(r[0], L[0]);
         r[1] = wrap(r[1], L[1]);

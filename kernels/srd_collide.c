@@ -18,6 +18,8 @@
  * No-slip walls: cells cut by a wall get virtual particles up to the mean
  * density (Lamura et al. 2001): their summed momentum is drawn from the
  * Maxwell-Boltzmann distribution of n_ghost particles moving with the wall.
+ * The momentum they give the real particles of the cell is the wall's share
+ * of the shear stress there (summed per block when p->wall_dp is set).
  *
  * Random numbers: Philox keyed (seed, purpose), counter (step, cell): the
  * result does not depend on which thread handles a cell. */
@@ -63,7 +65,7 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
     /* Cells are independent; blocks of cells give fixed-order partial sums. */
 #pragma omp parallel for schedule(static)
     for (size_t b = 0; b < nblocks; ++b) {
-        double sum2 = 0.0, dof = 0.0;
+        double sum2 = 0.0, dof = 0.0, wdp[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
         size_t c_hi = (b + 1) * PL_CELL_BLOCK < ncells ? (b + 1) * PL_CELL_BLOCK : ncells;
         /* The rotations of ROT_BATCH cells are drawn first, in a loop without
          * data-dependent branches, so that the out-of-order core overlaps the
@@ -117,8 +119,8 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
                 vy[i] = (pl_real)(u[1] + R[1][0] * a + R[1][1] * bb + R[1][2] * cc);
                 vz[i] = (pl_real)(u[2] + R[2][0] * a + R[2][1] * bb + R[2][2] * cc);
             }
-            if (M < 2) continue;
             if (ng == 0) {
+                if (M < 2) continue;
                 sum2 += zeta * zeta * K2;
             } else { /* the real particles' own mean moved: measure again */
                 double Q[3] = {0.0, 0.0, 0.0}, S = 0.0;
@@ -126,12 +128,16 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
                     Q[0] += vx[i]; Q[1] += vy[i]; Q[2] += vz[i];
                     S += (double)vx[i] * vx[i] + (double)vy[i] * vy[i] + (double)vz[i] * vz[i];
                 }
+                for (int d = 0; d < 3; ++d) wdp[3 * wall + d] += Q[d] - P[d]; /* the wall's push */
+                if (M < 2) continue;
                 sum2 += S - (Q[0] * Q[0] + Q[1] * Q[1] + Q[2] * Q[2]) / (double)M;
             }
             dof += 3.0 * (double)(M - 1);
         }
         block_sum[2 * b] = sum2;
         block_sum[2 * b + 1] = dof;
+        if (p->wall_dp)
+            for (size_t k = 0; k < 6; ++k) p->wall_dp[6 * b + k] = wdp[k];
     }
 }
 

@@ -56,10 +56,19 @@ static inline int pl_drift_cell_1d(double x, double s, int n)
     return i;
 }
 
+/* Impulse dp (m_f = 1) given by wall `top` to a particle, added in fixed
+ * point (PL_FIELD_FIXED_SHIFT) to acc[3 top + d]: integer sums do not depend
+ * on the order, hence not on the thread count. */
+static inline void pl_drift_wall_acc(int64_t *acc, int top, const double dp[3])
+{
+    for (int d = 0; d < 3; ++d) acc[3 * top + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
+}
+
 /* Reflects one particle at the walls after a drift of dt from (r0, v).  Walls
- * are at z = 0 (index 0) and z = Lz (index 1). */
+ * are at z = 0 (index 0) and z = Lz (index 1).  acc (NULL: not wanted)
+ * receives the impulse of every bounce (pl_drift_wall_acc). */
 static inline void pl_drift_reflect_z(double r[3], double v[3], const double r0[3], double dt,
-                                      double Lz, int noslip, const double wall_u[2][3])
+                                      double Lz, int noslip, const double wall_u[2][3], int64_t *acc)
 {
     double t_left = dt;
     double p[3] = {r0[0], r0[1], r0[2]};
@@ -72,10 +81,15 @@ static inline void pl_drift_reflect_z(double r[3], double v[3], const double r0[
         for (int d = 0; d < 3; ++d) p[d] += v[d] * tc;
         p[2] = zw;
         t_left -= tc;
+        const double vin[3] = {v[0], v[1], v[2]};
         if (noslip) {
             for (int d = 0; d < 3; ++d) v[d] = 2.0 * wall_u[top][d] - v[d];
         } else {
             v[2] = -v[2];
+        }
+        if (acc) {
+            const double dp[3] = {v[0] - vin[0], v[1] - vin[1], v[2] - vin[2]};
+            pl_drift_wall_acc(acc, top, dp);
         }
         for (int d = 0; d < 3; ++d) r[d] = p[d] + v[d] * t_left;
     }
@@ -85,14 +99,16 @@ static inline void pl_drift_reflect_z(double r[3], double v[3], const double r0[
 
 /* Drifts the particle (r, v) in place: on return r and v hold the values to
  * store (exactly representable in pl_real), dr the unwrapped displacement
- * and the function value is the collision cell. */
-static inline uint32_t pl_drift_one(const pl_drift_t *c, double r[3], double v[3], double dr[3])
+ * and the function value is the collision cell.  wall_acc: NULL, or the
+ * fixed-point wall impulses (bottom xyz, top xyz) to add the bounces to. */
+static inline uint32_t pl_drift_one(const pl_drift_t *c, double r[3], double v[3], double dr[3],
+                                    int64_t *wall_acc)
 {
     for (int d = 0; d < 3; ++d) v[d] += c->a[d];
     const double r0[3] = {r[0], r[1], r[2]};
     for (int d = 0; d < 3; ++d) r[d] = r0[d] + v[d] * c->dt;
     if (c->walls && (r[2] < 0.0 || r[2] > c->L[2]))
-        pl_drift_reflect_z(r, v, r0, c->dt, c->L[2], c->noslip, c->wall_u);
+        pl_drift_reflect_z(r, v, r0, c->dt, c->L[2], c->noslip, c->wall_u, wall_acc);
     for (int d = 0; d < 3; ++d) dr[d] = r[d] - r0[d];
     r[0] = pl_drift_wrap(r[0], c->L[0], c->iL[0]);
     r[1] = pl_drift_wrap(r[1], c->L[1], c->iL[1]);

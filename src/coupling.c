@@ -170,6 +170,8 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         p->placement = sc->coupling.placement;
         p->max_refl = (int)sc->coupling.max_reflections;
         p->seed = cp->seed;
+        p->noslip = sc->box.walls_z == PL_WALLS_NOSLIP;
+        memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
         size_t L3 = (size_t)sim->grid.L[0] * (size_t)sim->grid.L[1] * (size_t)sim->grid.L[2];
         cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t));
         cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t));

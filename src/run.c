@@ -22,13 +22,20 @@ typedef struct {
     long long step_last_row;
 } writer_t;
 
-static void thermo_header(FILE *f, int mapped, int tracked, int colloids, int reflect, int pinned)
+static void thermo_header(FILE *f, int mapped, int tracked, int walls, int colloids, int reflect, int pinned)
 {
-    fprintf(f, "step\ttime\t%stemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%s%s%smupdates_per_s\n",
+    fprintf(f, "step\ttime\t%stemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%s%s%s%smupdates_per_s\n",
             mapped ? "time_s\ttemperature_K\t" : "", tracked ? "msd\t" : "",
+            walls ? "sxz_bottom\tsxz_top\tsyz_bottom\tsyz_top\t" : "",
             colloids ? "c_kin_trans\tc_kin_rot\tc_dlvo\tc_hertz\tc_wca\tc_wall\tc_gravity\tc_total\tc_zcm\t" : "",
             reflect ? "cpl_events\tcpl_truncations\t" : "",
             pinned ? "cpl_drag_x\tcpl_drag_y\tcpl_drag_z\t" : "");
+}
+
+/* Wall shear stresses: no-slip walls (moving or not). */
+static int noslip_walls(const pl_sim_t *sim)
+{
+    return sim->scene.box.walls_z == PL_WALLS_NOSLIP && sim->fluid.n > 0;
 }
 
 /* Coupling I counters (cumulative reflections and truncations, Hecht Sec. IV). */
@@ -53,6 +60,9 @@ static void thermo_row(writer_t *w, const pl_sim_t *sim)
     fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t", kT, sim->last_kT_meas, o.momentum[0],
             o.momentum[1], o.momentum[2], o.kinetic);
     if (sim->fluid.tracked) fprintf(w->thermo, "%.10g\t", o.msd);
+    if (noslip_walls(sim)) /* PL Eq. 13 stress from each wall's momentum, mean since step 0 */
+        fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t%.10g\t", pl_sim_wall_stress(sim, 0, 0),
+                pl_sim_wall_stress(sim, 1, 0), pl_sim_wall_stress(sim, 0, 1), pl_sim_wall_stress(sim, 1, 1));
     if (sim->colloids) { /* colloid energy terms (src/colloid_state.c) */
         pl_colloid_energy_t ce;
         pl_colloid_energy(sim->colloids, &ce);
@@ -192,8 +202,8 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         rc = pl_err_set(err, PL_ERR_IO, "%s: cannot write", path);
         goto done;
     }
-    thermo_header(w.thermo, scene->mapping.enabled, sim->fluid.tracked, sim->colloids != NULL, reflecting(sim),
-                  sim->coupling && sim->coupling->pinned);
+    thermo_header(w.thermo, scene->mapping.enabled, sim->fluid.tracked, noslip_walls(sim),
+                  sim->colloids != NULL, reflecting(sim), sim->coupling && sim->coupling->pinned);
     if (sim->colloids && scene->colloids.trajectory_interval > 0) {
         pl_path_join(path, sizeof path, w.dir, "colloids.h5");
         if ((rc = pl_colloid_traj_open(path, sim->colloids, 1, &sim->colloid_traj, err))) goto done;

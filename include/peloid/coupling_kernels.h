@@ -42,6 +42,9 @@ typedef struct {
     int placement;    /* PL_PLACE_* */
     int max_refl;     /* N_max */
     uint64_t seed, step;
+    int noslip;          /* walls_z = noslip: a particle pushed through a wall bounces back */
+    double wall_u[2][3]; /* ... in the frame of the wall (bottom, top) */
+    int64_t *wall_acc;   /* NULL, or the wall impulses (fixed point, bottom xyz, top xyz) */
 } pl_coupling1_params_t;
 
 /* After stream+bin: every fluid particle found inside a colloid is moved out

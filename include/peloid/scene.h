@@ -30,6 +30,7 @@ typedef struct {
 typedef struct {
     int cells[3];  /* box edge lengths in cells (a0 = 1) */
     int walls_z;   /* PL_WALLS_*: planar walls at z = 0 and z = Lz */
+    double wall_velocity[2][3]; /* no-slip wall velocities (bottom, top); z = 0 */
 } pl_scene_box_t;
 
 typedef struct {
