@@ -29,8 +29,7 @@
 /* Same two rules as the fluid collision (include/peloid/srd_rules.h). */
 static void rotation(const pl_coupling2_params_t *p, uint64_t cell, double R[3][3])
 {
-    pl_rand4_t r = pl_rng_uniform4(p->seed, PL_RNG_COUPLING + 0, p->step, cell, 0);
-    pl_srd_rotation(p->rule, p->cos_a, p->sin_a, r.u[0], r.u[1], R);
+    pl_srd_rotation(p->rule, p->cos_a, p->sin_a, p->seed, PL_RNG_COUPLING + 0, p->step, cell, R);
 }
 
 /* Mass-weighted Heyes factor (Hecht Eq. 33 with K = sum m (v-u)^2 / 2). */
