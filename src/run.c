@@ -27,7 +27,7 @@ static void thermo_header(FILE *f, int mapped, int tracked, int walls, int collo
     fprintf(f, "step\ttime\t%stemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%s%s%s%smupdates_per_s\n",
             mapped ? "time_s\ttemperature_K\t" : "", tracked ? "msd\t" : "",
             walls ? "sxz_bottom\tsxz_top\tsyz_bottom\tsyz_top\t" : "",
-            colloids ? "c_kin_trans\tc_kin_rot\tc_dlvo\tc_hertz\tc_wca\tc_wall\tc_gravity\tc_total\tc_zcm\t" : "",
+            colloids ? "c_kin_trans\tc_kin_rot\tc_dlvo\tc_hertz\tc_wca\tc_wall\tc_gravity\tc_depl\tc_total\tc_zcm\t" : "",
             reflect ? "cpl_events\tcpl_truncations\t" : "",
             pinned ? "cpl_drag_x\tcpl_drag_y\tcpl_drag_z\t" : "");
 }
@@ -127,6 +127,14 @@ static int write_summary(const writer_t *w, const pl_sim_t *sim, long long first
                    "\"model_temperature_K\": %.10g, \"real_temperature_K\": %.10g}",
                 sc->mapping.map.a0, sc->mapping.map.t0, sc->mapping.map.m_f, sc->mapping.map.kT_model,
                 sc->mapping.map.kT_model / PL_KB, sc->mapping.physical.temperature);
+    if (sim->colloids) {
+        const pl_colloid_depl_info_t *d = &sim->colloids->depl;
+        fprintf(f, ",\n  \"colloid_pairs\": {\"sigma_cc\": %.10g, \"sigma_rule\": \"%s\", "
+                   "\"d_match\": %.10g, \"phi_cc_at_d_match\": %.10g, \"depletion_at_sigma_cc\": %.10g, "
+                   "\"depletion_comp\": %s}",
+                d->sigma_cc, d->rule == PL_SIGMA_PL ? "pl" : "fixed", d->d_match, d->phi_match,
+                d->phi_sigma, d->table_n ? "true" : "false");
+    }
     fprintf(f, ",\n  \"threads\": %d,\n  \"topology\": \"%s\",\n", sim->nthreads, topo);
     fprintf(f, "  \"fluid_particles\": %zu,\n  \"first_step\": %lld,\n  \"last_step\": %lld,\n",
             sim->fluid.n, first, sim->step);
@@ -219,6 +227,15 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                         "%.4g a0, truncation error |V| = %.3g kT, |F| = %.3g kT/a0\n",
                 d->hm, d->curvature, d->barrier_u, d->barrier_h, d->secmin_u, d->secmin_h, d->hcut,
                 d->trunc_u, d->trunc_f);
+    }
+    if (sim->colloids && (sim->colloids->pair.terms & (PL_CT_WCA | PL_CT_DEPL))) {
+        const pl_colloid_depl_info_t *d = &sim->colloids->depl;
+        fprintf(stderr, "peloid: colloid-colloid sigma_cc = %.6g a0 (%s); phi_cc = %.4g kT at twice the "
+                        "colloid-fluid cut-off %.6g a0; depletion potential at sigma_cc %.4g kT "
+                        "(PL Eqs. 22-23)%s\n",
+                d->sigma_cc, d->rule == PL_SIGMA_PL ? "wca.sigma_rule = pl, PL Sec. III.C.1" : "wca.sigma",
+                d->phi_match, d->d_match, d->phi_sigma,
+                d->table_n ? "; compensated by depletion_comp" : "");
     }
     double t0 = omp_get_wtime();
     rc = loop(sim, &w, o, last, err);
