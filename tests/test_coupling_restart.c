@@ -19,14 +19,15 @@
 #include "support.h"
 
 #define BOX "box: { cells = [12, 12, 12]%s; };\nfluid: { density = 5.0; };\nsrd: { dt = 0.1; };\n"
-#define COLL(n, init) "colloids: { count = " #n "; radius = 1.8; mass_density = 6.0; init = \"" #init "\"; " \
-                      "pairs = \"hertz\"; substeps = 4; };\n"
+#define COLLR(n, init, R) "colloids: { count = " #n "; radius = " #R "; mass_density = 6.0; init = \"" #init "\"; " \
+                         "pairs = \"hertz\"; substeps = 4; };\n"
+#define COLL(n, init) COLLR(n, init, 1.8)
 #define BASE BOX COLL(8, random)
 #define WALLS "; walls_z = \"noslip\"; wall_velocity_bottom = [-0.2, 0.1, 0.0]; wall_velocity_top = [0.2, 0.0, 0.0]"
 
 static const char *scenes[] = {
-    /* a lattice with gaps of 0.4 a0: reflections land in neighbours, N_max = 1 truncates */
-    "seed = 31;\n" BOX COLL(27, lattice) "coupling: { method = \"hecht1\"; max_reflections = 1; };\n"
+    /* a lattice with gaps of 0.2 a0: reflections land in neighbours, N_max = 1 truncates */
+    "seed = 31;\n" BOX COLLR(27, lattice, 1.9) "coupling: { method = \"hecht1\"; max_reflections = 1; };\n"
     "thermostat: { type = \"rescale\"; };\n",
     "seed = 32;\n" BASE "coupling: { method = \"hecht2\"; drift_interval = 3; };\n"
     "thermostat: { type = \"heyes\"; };\n",
