@@ -37,17 +37,44 @@
  * agree to 4% (test_coupling_drag), the phi term is a dilute-limit
  * estimate, SE ~3% from 8 blocks.
  *
- * DISABLED: the measurement disagrees.  Measured D = 0.01449 +- 0.00060
- * (4e4 steps, ~45 s on one idle core), theory 0.01816 (-20%; 0.01778 with
- * PL Eq. 43 instead of Hasimoto).  One colloid alone in the same box gives
- * 0.0144 +- 0.0007 (1.2e5 steps), so the phi term is not the cause.  The
- * driven mobility of one such colloid (steady sedimentation under F = 2
- * and 5 kT/a0 with gravity compensation, L = 16: U / F = 0.0174 +- 0.0004,
- * xi = 57.5) and the pinned drag (xi = 54 +- 2.5) are within 13% of
- * theory, so kT U / F and D differ by 17 +- 4% (an Einstein-relation
- * violation): the thermal motion, more than the friction, is off.  Not
- * the thermostat (0.0146 +- 0.0007 without it); 10 MD steps per collision
- * step instead of 4 raise D by 5 +- 3% only.  Enable once understood. */
+ * DISABLED: the expectation, not the coupling, is off.  D is 15-20%
+ * below PL Eqs. 40-43 (8 colloids: 0.01449 +- 0.0006 with seed 11, 0.0153
+ * +- 0.0006 with seed 81, against 0.01816), but so is every other friction
+ * measured for this colloid; the Einstein relation holds:
+ *  - one colloid, L = 16, thermal: D = 0.0158 +- 0.0007 (MSD slope 20-60
+ *    t0 = plateau of the VACF integral, PL Eq. 58; 6 runs of 6e4-8e4
+ *    steps; seed 11 (4 and 16 MD substeps, same random streams) 0.0142,
+ *    0.0141, seeds 71-74 0.0168, 0.0178, 0.0170, 0.0148: the run-to-run
+ *    scatter is 1.5x the block standard errors, and the earlier "17 +- 4%
+ *    violation" came from seed-11 runs only); M <V^2> / kT = 0.995 +-
+ *    0.006;
+ *  - one colloid driven (gravity F = 2, 5 kT/a0, compensated on the fluid):
+ *    U / F = 0.0170 +- 0.0004 (4 or 16 MD substeps, with or without the
+ *    thermostat), so D xi_U/F / kT = 0.93 +- 0.05 (hecht1 slip as control:
+ *    thermal 0.0191 +- 0.0012, U / F 0.0173 +- 0.0006);
+ *  - transient response to F switched on (+-F from the same state, 1220
+ *    trials): R(t) = D(t) / kT within 3% for t <= 5 t0, 0.0141 +- 0.0003
+ *    against 0.0141 +- 0.0003 (seeds 71-74) at 10 t0;
+ *  - pinned sphere in fluid at rest, Green-Kubo int <F F> / kT: 132 at
+ *    0.5 t0 (Enskog xi_E = 133.7, PL Eq. 40), plateau 60 +- 3 at 15-40 t0
+ *    (1 / xi = 0.0167); pinned drag at v = 0.1 (test_coupling_drag) 54 +-
+ *    2.5; theory 50.8 (Hasimoto) to 52.0 (PL Eq. 43 on xi_S);
+ *  - the window is diffusive: after 10 t0 D(t) adds 0.0013 (seed 11) to
+ *    0.0025 (seeds 71-74) +- 0.0005, the driven response 0.0029; the
+ *    transverse-mode sum of the periodic box (kT / rho L^3) sum_k (1 -
+ *    k_x^2 / k^2) / (nu k^2) exp(-nu k^2 t) gives 0.0019; equilibrium near
+ *    the colloid is right (density in the WCA shell = Boltzmann, shell
+ *    temperatures 0.99-1.00, <V . v_i> at its Gibbs value -kT / M_total,
+ *    total momentum exact); with 8 colloids D(t) still rises by ~5%
+ *    between 30 and 50 t0 (PL Fig. 11: slower convergence at finite phi).
+ * So the parallel sum of PL Eq. 41 with 4 pi eta sigma_cf overestimates the
+ * mobility of this small (sigma_cf = 2 a0) slip colloid by ~15% (measured
+ * xi ~ 60 against 51-52; the short-time Enskog part is right, the
+ * hydrodynamic part acts like 1 / xi_S ~ 0.0093 instead of ~0.012).  No
+ * paper-derived correction is known to us, and an Einstein-relation test
+ * (D against kT / xi measured in the same run) needs ~3% on each side, i.e.
+ * several minutes: more than the ~60 s budget of make check.  Enable with
+ * such a comparison, or with a better prediction. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
