@@ -1,4 +1,5 @@
-/* SRD transport coefficients: PL Eqs. 4, 6, 9-15 (random-axis rule). */
+/* SRD transport coefficients: PL Eqs. 4, 6, 9-15 (random-axis rule); friction
+ * of a slip sphere: PL Eqs. 40-43 and the Hasimoto finite-size correction. */
 #include "peloid/srd_theory.h"
 
 #include <math.h>
@@ -30,4 +31,25 @@ void pl_srd_theory(double g, double a, double dt, double kT, pl_srd_theory_t *o)
     o->Sc = o->nu / o->D_f;                                  /* PL Eq. 26 */
     o->tau_f = 1.0 / o->nu;
     o->c_s = sqrt(5.0 * kT / 3.0);
+}
+
+static const double PL_PI = 3.14159265358979323846;
+static const double HASIMOTO = 2.837297; /* periodic simple-cubic lattice sum */
+
+double pl_srd_xi_enskog(double gamma, double kT, double sigma, double M)
+{
+    double mu = 1.0 / (1.0 + 1.0 / M); /* M m_f / (M + m_f), m_f = 1 */
+    return 8.0 / 3.0 * sqrt(2.0 * PL_PI * kT * mu) * gamma * sigma * sigma; /* PL Eq. 40 */
+}
+
+double pl_srd_xi_parallel(double xi_S, double xi_E) { return 1.0 / (1.0 / xi_S + 1.0 / xi_E); }
+
+double pl_srd_xi_stokes_pl(double eta, double sigma, double L)
+{
+    return 4.0 * PL_PI * eta * sigma * (1.0 + 2.837 * sigma / L); /* PL Eqs. 42-43 */
+}
+
+double pl_srd_xi_hasimoto(double xi_inf, double eta, double L)
+{
+    return 1.0 / (1.0 / xi_inf - HASIMOTO / (6.0 * PL_PI * eta * L));
 }

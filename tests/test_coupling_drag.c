@@ -51,9 +51,9 @@ Test(coupling_drag, pinned_sphere_potential, .timeout = 600)
     pl_srd_theory_t th;
     pl_srd_theory(gamma, 0.5 * 3.14159265358979323846, dt, 1.0, &th);
     const double PI = 3.14159265358979323846;
-    double xi_E = 8.0 / 3.0 * sqrt(2.0 * PI) * gamma * sigma * sigma;          /* PL Eq. 40 */
-    double xi_S = 4.0 * PI * th.eta * sigma * (1.0 + 2.837 * sigma / L);        /* PL Eqs. 42-43 */
-    double xi_th = 1.0 / (1.0 / xi_S + 1.0 / xi_E);                             /* PL Eq. 41 */
+    double xi_E = pl_srd_xi_enskog(gamma, 1.0, sigma, INFINITY); /* PL Eq. 40, pinned */
+    double xi_S = pl_srd_xi_stokes_pl(th.eta, sigma, L);         /* PL Eqs. 42-43 */
+    double xi_th = pl_srd_xi_parallel(xi_S, xi_E);               /* PL Eq. 41 */
     double xi = mean / v0;
     double a_eff = xi / (4.0 * PI * th.eta);                                    /* PL Eq. 44 */
     cr_log_info("drag: xi = %.2f +- %.2f, theory %.2f (xi_E %.1f, xi_S %.1f, eta %.4f): %+.1f%%; "

@@ -20,4 +20,23 @@ void pl_srd_theory(double gamma, double alpha, double dt, double kT, pl_srd_theo
 double pl_srd_f_kin(double gamma, double alpha);
 double pl_srd_f_col(double gamma, double alpha);
 
+/* Friction of a slip sphere of radius sigma_cf in an SRD fluid of gamma
+ * particles (m_f = 1) per cell (PL Sec. V.A), simulation units. */
+
+/* Enskog friction, PL Eq. 40, with the reduced mass M m_f / (M + m_f); a
+ * pinned colloid is M = INFINITY. */
+double pl_srd_xi_enskog(double gamma, double kT, double sigma_cf, double M);
+/* PL Eq. 41: 1 / xi = 1 / xi_S + 1 / xi_E. */
+double pl_srd_xi_parallel(double xi_S, double xi_E);
+/* Stokes friction of a slip sphere in a periodic box of side L, PL Eqs.
+ * 42-43 read so that the friction grows in a periodic array:
+ * 4 pi eta sigma_cf (1 + 2.837 sigma_cf / L); L = INFINITY: no correction. */
+double pl_srd_xi_stokes_pl(double eta, double sigma_cf, double L);
+/* Friction of a sphere free to move in a periodic box of side L with zero
+ * total momentum (Hasimoto 1959; Duenweg & Kremer 1993): the periodic images
+ * add -2.837 / (6 pi eta L) to the mobility, whatever the surface, so
+ * 1 / xi_L = 1 / xi_inf - 2.837 / (6 pi eta L); xi_inf is the unbounded
+ * friction (e.g. PL Eq. 41 with xi_S = 4 pi eta sigma_cf). */
+double pl_srd_xi_hasimoto(double xi_inf, double eta, double L);
+
 #endif
