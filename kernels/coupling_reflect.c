@@ -125,7 +125,6 @@ static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
                             double p[3], uint32_t *restrict h, uint64_t *restrict cnt)
 {
     const double L[3] = {g->L[0], g->L[1], g->L[2]};
-    const int walls = g->walls_z != PL_WALLS_NONE;
     double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]};
     const double r_old[3] = {r[0], r[1], r[2]};
     double v[3] = {f->v[0][i], f->v[1][i], f->v[2][i]};
@@ -143,22 +142,23 @@ static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
             for (int d = 0; d < 3; ++d) vel[3 + d][k] -= l[d] / I;
         }
         for (int d = 0; d < 3; ++d) r[d] = (d == 0 ? c->x[k] : d == 1 ? c->y[k] : c->z[k]) + p[d];
-        if (walls && (r[2] < 0.0 || r[2] > L[2])) { /* mirror into the box */
-            r[2] = r[2] < 0.0 ? -r[2] : 2.0 * L[2] - r[2];
-            if (r[2] < 0.0 || r[2] > L[2]) r[2] = 0.5 * L[2];
-            v[2] = -v[2];
+        for (int d = 0; d < 3; ++d) {
+            if (g->walls[d] == PL_WALLS_NONE) {
+                r[d] = wrap(r[d], L[d]);
+            } else if (r[d] < 0.0 || r[d] > L[d]) { /* mirror into the box */
+                r[d] = r[d] < 0.0 ? -r[d] : 2.0 * L[d] - r[d];
+                if (r[d] < 0.0 || r[d] > L[d]) r[d] = 0.5 * L[d];
+                v[d] = -v[d];
+            }
         }
-        r[0] = wrap(r[0], L[0]);
-        r[1] = wrap(r[1], L[1]);
-        if (!walls) r[2] = wrap(r[2], L[2]);
         cnt[0]++;
         nref++;
-        k = pl_coupling_inside(c, g->L, g->walls_z, lk_start, lk_list, r, p);
+        k = pl_coupling_inside(c, g->L, g->walls, lk_start, lk_list, r, p);
     }
     if (f->tracked)
         for (int d = 0; d < 3; ++d) {
             double dd = r[d] - r_old[d];
-            if (d < 2 || !walls) dd -= L[d] * nearbyint(dd / L[d]);
+            if (g->walls[d] == PL_WALLS_NONE) dd -= L[d] * nearbyint(dd / L[d]);
             f->disp[d][i] += dd;
         }
     for (int d = 0; d < 3; ++d) {
@@ -192,7 +192,7 @@ void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_
         for (size_t j = 0; j < counts[(size_t)t * 8 + 2]; ++j) {
             size_t i = found[lo + j];
             double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, q[3];
-            int32_t k = pl_coupling_inside(c, g->L, g->walls_z, lk_start, lk_list, r, q);
+            int32_t k = pl_coupling_inside(c, g->L, g->walls, lk_start, lk_list, r, q);
             counts[1] += (uint64_t)reflect_particle(f, g, p, c, vel, lk_start, lk_list, i, k, q, h,
                                                     counts);
         }
