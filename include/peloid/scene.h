@@ -42,6 +42,12 @@ static inline int pl_scene_box_walls(const pl_scene_box_t *b, int walls[3])
     return b->walls_xy != PL_WALLS_NONE || b->walls_z != PL_WALLS_NONE;
 }
 
+/* Name of an axis' boundary for outputs: "periodic", "noslip" or "slip". */
+static inline const char *pl_scene_boundary_name(int walls)
+{
+    return walls == PL_WALLS_NOSLIP ? "noslip" : walls == PL_WALLS_SLIP ? "slip" : "periodic";
+}
+
 typedef struct {
     double density;        /* gamma: mean particles per cell */
     double temperature;    /* initial kT */
