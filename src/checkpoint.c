@@ -10,6 +10,8 @@
 #include <string.h>
 
 #include "checkpoint_h5.h"
+#include "peloid/colloid.h"
+#include "peloid/coupling.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
 
@@ -185,6 +187,11 @@ int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err)
         goto close;
     }
     if (sim->colloids) rc = pl_ckpt_colloid_read(f, sim->colloids, sc, path, err);
+    /* the colloid set-up the reader redoes knows nothing of the coupling:
+     * coupled colloids exchange energy with the fluid, no NVE drift guard
+     * (as pl_coupling_create decided) */
+    if (!rc && sim->colloids && sim->coupling && sim->coupling->method != PL_COUPLE_NONE)
+        sim->colloids->nve = 0;
 close:
     H5Fclose(f);
 out:
