@@ -50,13 +50,13 @@ static double heyes_zeta(const pl_collide_params_t *p, uint64_t cell, size_t M, 
 static int ghost_count(const pl_grid_t *g, const pl_collide_params_t *p, size_t c, size_t M,
                        int *wall)
 {
-    const size_t i[3] = {c % (size_t)g->n[0], (c / (size_t)g->n[0]) % (size_t)g->n[1],
-                         c / ((size_t)g->n[0] * (size_t)g->n[1])};
+    const size_t n0 = (size_t)g->n[0], n1 = (size_t)g->n[1];
     int cut = 0;
     *wall = -1;
     for (int d = 0; d < 3; ++d) {
         if (g->walls[d] != PL_WALLS_NOSLIP) continue;
-        double lo = (double)i[d] - 1.0 + g->shift[d], hi = lo + 1.0, L = g->L[d];
+        const size_t i = d == 0 ? c % n0 : d == 1 ? c / n0 % n1 : c / (n0 * n1); /* cell index on axis d */
+        double lo = (double)i - 1.0 + g->shift[d], hi = lo + 1.0, L = g->L[d];
         if (lo >= 0.0 && hi <= L) continue;
         cut = 1;
         if (d == 2) *wall = lo < 0.0 ? 0 : 1;

@@ -71,8 +71,9 @@ static inline int pl_drift_outside(const pl_drift_t *c, const double r[3])
  * walls move with wall_u[top], the x/y walls are at rest.  The particle
  * bounces first off the wall it would have crossed earliest, then moves on
  * for the rest of the step; near an edge or corner this repeats for the next
- * wall (at most 8 bounces). */
-static inline void pl_drift_reflect(const pl_drift_t *c, double r[3], double v[3], const double r0[3])
+ * wall (at most 8 bounces).  Out of line: few particles reach a wall in a
+ * step, and inlined it kept pl_drift_one from being inlined. */
+__attribute__((noinline)) static void pl_drift_reflect(const pl_drift_t *c, double r[3], double v[3], const double r0[3])
 {
     static const double at_rest[3] = {0.0, 0.0, 0.0};
     double t_left = c->dt;
@@ -112,31 +113,56 @@ static inline void pl_drift_reflect(const pl_drift_t *c, double r[3], double v[3
 
 /* Drifts the particle (r, v) in place: on return r and v hold the values to
  * store (exactly representable in pl_real), dr the unwrapped displacement
- * and the function value is the collision cell. */
-static inline uint32_t pl_drift_one(const pl_drift_t *c, double r[3], double v[3], double dr[3])
+ * and the function value is the collision cell.  closed[d] != 0 exactly
+ * when axis d has walls (c->wall[d] != PL_WALLS_NONE). */
+static inline __attribute__((always_inline)) uint32_t
+pl_drift_one_closed(const pl_drift_t *c, const int closed[3], double r[3], double v[3], double dr[3])
 {
     for (int d = 0; d < 3; ++d) v[d] += c->a[d];
     const double r0[3] = {r[0], r[1], r[2]};
     for (int d = 0; d < 3; ++d) r[d] = r0[d] + v[d] * c->dt;
-    if (c->walls && pl_drift_outside(c, r)) pl_drift_reflect(c, r, v, r0);
+    if (c->walls && ((closed[0] && (r[0] < 0.0 || r[0] > c->L[0])) ||
+                     (closed[1] && (r[1] < 0.0 || r[1] > c->L[1])) ||
+                     (closed[2] && (r[2] < 0.0 || r[2] > c->L[2])))) {
+        /* copies, so that r, v, r0 do not escape and stay in registers */
+        double rr[3] = {r[0], r[1], r[2]}, vv[3] = {v[0], v[1], v[2]};
+        const double rs[3] = {r0[0], r0[1], r0[2]};
+        pl_drift_reflect(c, rr, vv, rs);
+        for (int d = 0; d < 3; ++d) {
+            r[d] = rr[d];
+            v[d] = vv[d];
+        }
+    }
     for (int d = 0; d < 3; ++d) dr[d] = r[d] - r0[d];
-    for (int d = 0; d < 3; ++d)
-        if (!c->wall[d]) r[d] = pl_drift_wrap(r[d], c->L[d], c->iL[d]);
-    double rb[3]; /* the position binned */
-#ifdef PL_SINGLE
-    /* the stored (rounded) position is the one binned */
-    for (int d = 0; d < 3; ++d)
-        if (!c->wall[d]) r[d] = (pl_real)r[d] >= (pl_real)c->L[d] ? 0.0 : (double)(pl_real)r[d];
-    for (int d = 0; d < 3; ++d) v[d] = (double)(pl_real)v[d];
-    for (int d = 0; d < 3; ++d) rb[d] = (double)(pl_real)r[d];
-#else
-    for (int d = 0; d < 3; ++d) rb[d] = r[d];
-#endif
     int ic[3];
-    for (int d = 0; d < 3; ++d)
-        ic[d] = c->wall[d] ? (int)floor(rb[d] - c->s[d]) + 1 /* cells 0 .. L+1 */
-                           : pl_drift_cell_1d(rb[d], c->s[d], c->n[d]);
+    for (int d = 0; d < 3; ++d) {
+        if (closed[d]) { /* closed axis: cells 0 .. L+1, no wrap */
+#ifdef PL_SINGLE
+            ic[d] = (int)floor((double)(pl_real)r[d] - c->s[d]) + 1; /* the stored position */
+#else
+            ic[d] = (int)floor(r[d] - c->s[d]) + 1;
+#endif
+            continue;
+        }
+        r[d] = pl_drift_wrap(r[d], c->L[d], c->iL[d]);
+#ifdef PL_SINGLE
+        /* the stored (rounded) position is the one binned */
+        r[d] = (pl_real)r[d] >= (pl_real)c->L[d] ? 0.0 : (double)(pl_real)r[d];
+#endif
+        ic[d] = pl_drift_cell_1d(r[d], c->s[d], c->n[d]);
+    }
+#ifdef PL_SINGLE
+    for (int d = 0; d < 3; ++d) v[d] = (double)(pl_real)v[d];
+#endif
     return (uint32_t)((ic[2] * c->n[1] + ic[1]) * c->n[0] + ic[0]);
+}
+
+/* pl_drift_one_closed with the closed axes read from c; a caller may pass
+ * them as constants instead (srd_stream.c), which removes their branches. */
+static inline __attribute__((always_inline)) uint32_t pl_drift_one(const pl_drift_t *c, double r[3],
+                                                                   double v[3], double dr[3])
+{
+    return pl_drift_one_closed(c, c->wall, r, v, dr);
 }
 
 /* Block version for periodic boxes (no walls): the same operations in the

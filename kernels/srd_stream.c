@@ -9,6 +9,29 @@
 
 #include "srd_drift.h"
 
+/* Drift + store + bin of particles [lo, hi) one by one (walls, tracking). */
+static inline __attribute__((always_inline)) void moved_range(pl_fluid_t *f, const pl_drift_t *c,
+                                                              const int closed[3], uint32_t *restrict h,
+                                                              size_t lo, size_t hi, int tracked)
+{
+    pl_real *restrict x = f->r[0], *restrict y = f->r[1], *restrict z = f->r[2];
+    pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
+    uint32_t *restrict cell = f->cell;
+    for (size_t i = lo; i < hi; ++i) {
+        double r[3] = {x[i], y[i], z[i]}, v[3] = {vx[i], vy[i], vz[i]}, dr[3];
+        const uint32_t cl = pl_drift_one_closed(c, closed, r, v, dr);
+        if (tracked) {
+            f->disp[0][i] += dr[0];
+            f->disp[1][i] += dr[1];
+            f->disp[2][i] += dr[2];
+        }
+        x[i] = (pl_real)r[0]; y[i] = (pl_real)r[1]; z[i] = (pl_real)r[2];
+        vx[i] = (pl_real)v[0]; vy[i] = (pl_real)v[1]; vz[i] = (pl_real)v[2];
+        cell[i] = cl;
+        h[cl]++;
+    }
+}
+
 /* mode: 0 = bin only, 1 = drift + store + bin, 2 = count the drifted cell
  * without storing anything but the histogram. */
 static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict h, size_t lo,
@@ -50,19 +73,11 @@ static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict 
         }
         return;
     }
-    for (size_t i = lo; i < hi; ++i) {
-        double r[3] = {x[i], y[i], z[i]}, v[3] = {vx[i], vy[i], vz[i]}, dr[3];
-        const uint32_t cl = pl_drift_one(c, r, v, dr);
-        if (tracked) {
-            f->disp[0][i] += dr[0];
-            f->disp[1][i] += dr[1];
-            f->disp[2][i] += dr[2];
-        }
-        x[i] = (pl_real)r[0]; y[i] = (pl_real)r[1]; z[i] = (pl_real)r[2];
-        vx[i] = (pl_real)v[0]; vy[i] = (pl_real)v[1]; vz[i] = (pl_real)v[2];
-        cell[i] = cl;
-        h[cl]++;
-    }
+    /* the common wall layouts with their closed axes as constants */
+    const int *w = c->wall;
+    if (!w[0] && !w[1] && w[2]) moved_range(f, c, (const int[3]){0, 0, 1}, h, lo, hi, tracked);
+    else if (w[0] && w[1] && !w[2]) moved_range(f, c, (const int[3]){1, 1, 0}, h, lo, hi, tracked);
+    else moved_range(f, c, w, h, lo, hi, tracked);
 }
 
 static void run(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params_t *p, uint32_t *hist,

@@ -4,6 +4,8 @@
  * - The drift reflects at the earliest wall crossing, several times near an
  *   edge: exact positions and velocities for a particle driven into an edge
  *   (bounce-back: back along its path; specular: mirrored twice).
+ * - The stream-in-scatter pipeline (pl_srd_stream_count + pl_srd_stream_sort)
+ *   leaves bitwise the state of pl_srd_stream_bin + pl_srd_sort with walls.
  * - Slip x/y walls leave P_z alone: with a body force along the channel it
  *   grows by exactly N g dt per step.
  * - Containment: in a box closed on all axes no fluid particle and no
@@ -19,6 +21,7 @@
 
 #include "peloid/colloid.h"
 #include "peloid/io.h"
+#include "peloid/rng.h"
 #include "peloid/srd_kernels.h"
 #include "support.h"
 
@@ -69,6 +72,58 @@ Test(capillary, drift_reflects_at_the_earliest_wall_of_an_edge)
     for (int d = 0; d < 3; ++d) {
         cr_assert_float_eq(r[d], rs[d], 1e-12, "slip r[%d] = %.15g", d, r[d]);
         cr_assert_float_eq(v[d], vs[d], 1e-12, "slip v[%d] = %.15g", d, v[d]);
+    }
+}
+
+/* n particles, uniform in the box, thermal-ish velocities with a kick. */
+static void fill(pl_fluid_t *f, const pl_grid_t *g, size_t n)
+{
+    pl_err_t err = {0, ""};
+    cr_assert_eq(pl_fluid_create(n, 0, f, &err), 0);
+    for (size_t i = 0; i < n; ++i) {
+        pl_rand4_t r = pl_rng_uniform4(9, 1, 0, i, 0), u = pl_rng_uniform4(9, 2, 0, i, 0);
+        for (int d = 0; d < 3; ++d) {
+            f->r[d][i] = (pl_real)(r.u[d] * g->L[d]);
+            f->v[d][i] = (pl_real)(3.0 * (u.u[d] - 0.5));
+        }
+    }
+}
+
+Test(capillary, stream_in_scatter_matches_stream_then_sort)
+{
+    const int L[3] = {6, 5, 7};
+    const int layouts[3][3] = {{PL_WALLS_NONE, PL_WALLS_NONE, PL_WALLS_NOSLIP},
+                               {PL_WALLS_NOSLIP, PL_WALLS_NOSLIP, PL_WALLS_NONE},
+                               {PL_WALLS_SLIP, PL_WALLS_SLIP, PL_WALLS_NOSLIP}};
+    const size_t n = 2000;
+    const int nt = 2;
+    for (int k = 0; k < 3; ++k) {
+        pl_grid_t g;
+        pl_grid_init(&g, L, layouts[k]);
+        pl_grid_draw_shift(&g, 3, (uint64_t)k, 1);
+        pl_stream_params_t p;
+        memset(&p, 0, sizeof p);
+        p.dt = 0.7;
+        p.accel[0] = 0.05;
+        pl_fluid_t a, b;
+        fill(&a, &g, n);
+        fill(&b, &g, n);
+        uint32_t *ha = pl_alloc((size_t)nt * g.ncells * sizeof(uint32_t)), *hb = pl_alloc((size_t)nt * g.ncells * sizeof(uint32_t));
+        uint32_t *sa = pl_alloc((g.ncells + 1) * sizeof(uint32_t)), *sb = pl_alloc((g.ncells + 1) * sizeof(uint32_t));
+        pl_srd_stream_bin(&a, &g, &p, ha, nt);
+        pl_srd_sort(&a, ha, sa, g.ncells, nt);
+        pl_srd_stream_count(&b, &g, &p, hb, nt);
+        pl_srd_stream_sort(&b, &g, &p, hb, sb, nt);
+        cr_assert_eq(memcmp(sa, sb, (g.ncells + 1) * sizeof(uint32_t)), 0, "layout %d: cell_start", k);
+        for (int d = 0; d < 3; ++d) {
+            cr_assert_eq(memcmp(a.r[d], b.r[d], n * sizeof(pl_real)), 0, "layout %d: r[%d]", k, d);
+            cr_assert_eq(memcmp(a.v[d], b.v[d], n * sizeof(pl_real)), 0, "layout %d: v[%d]", k, d);
+            for (size_t i = 0; i < n; ++i)
+                cr_assert(a.r[d][i] >= 0 && a.r[d][i] <= L[d], "layout %d: r[%d] = %g", k, d, (double)a.r[d][i]);
+        }
+        pl_free(ha); pl_free(hb); pl_free(sa); pl_free(sb);
+        pl_fluid_free(&a);
+        pl_fluid_free(&b);
     }
 }
 
