@@ -1,6 +1,6 @@
 # peloid — one top-level Makefile (STYLE.md 12).
 #
-#   make run     install dependencies, build, run scenes/quickstart.cfg
+#   make run     install dependencies, build, run scenes/quickstart.cfg and plot it
 #   make check   install dependencies, build, run the test suite
 #   make bench   kernel and whole-step benchmarks (bench/out/*.tsv)
 #
@@ -73,6 +73,7 @@ $(BUILD)/bench/%: bench/%.c $(LIB) | deps
 
 run: $(BIN)
 	./$(BIN) run scenes/quickstart.cfg --force
+	$(PYTHON) tools/plot_sediment.py out/quickstart
 
 # The suite: Criterion unit + physics tests, then CLI behaviour, then a
 # sanitizer build of the fast unit tests.
@@ -88,7 +89,8 @@ check-cli: $(BIN)
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
 # shrinks the physics runs; the sanitizers slow code ~3-10x).
 ASAN_TESTS := test_scene test_collide test_sort test_determinism test_colloid_forces \
-              test_colloid_guards test_colloid_md test_colloid_restart test_capillary
+              test_colloid_guards test_colloid_md test_colloid_restart test_capillary \
+              test_coupling_restart
 check-asan: | deps
 	@$(MAKE) --no-print-directory BUILD=build-asan \
 	  OPTFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \

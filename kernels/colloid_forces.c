@@ -6,6 +6,8 @@
  *          friction on the relative surface velocity (Hecht Sec. II), torques
  *   lubrication: Hecht Eqs. 4-5, limited at a minimum gap
  *   WCA: PL Eq. 16 with exponent n
+ *   depletion_comp: Phi_comp = -Phi_depl (PL Sec. III.C.1, Eqs. 22-23),
+ *          cubic Hermite interpolation of the table built by src/depletion.c
  *
  * Race-free accumulation: full neighbour lists without Newton's third law.
  * Thread t owns a static block of particles i and writes only f[i], t[i],
@@ -22,6 +24,7 @@
 
 #include "peloid/colloid_kernels.h"
 #include "peloid/colloid_pair.h"
+#include "peloid/depletion.h"
 
 typedef struct {
     double f[3], t[3], e[PL_CE_NTERMS];
@@ -41,6 +44,7 @@ static inline __attribute__((always_inline)) void pair_eval(
         wrc = wsig * p->wca_rfac;
         if (wrc > rc) rc = wrc;
     }
+    if ((T & PL_CT_DEPL) && p->dep_rc > rc) rc = p->dep_rc;
     if (r2 >= rc * rc) return;
     double r = sqrt(r2), inv = 1.0 / r;
     double ex = dx * inv, ey = dy * inv, ez = dz * inv;
@@ -63,6 +67,13 @@ static inline __attribute__((always_inline)) void pair_eval(
             k2 += s.k2;
             a->e[PL_CE_WCA] += 0.5 * s.u;
         }
+    }
+    if ((T & PL_CT_DEPL) && r < p->dep_rc) {
+        double u, f, kk;
+        pl_depletion_table_eval(p->dep_u, p->dep_du, p->dep_inv_h, r, &u, &f, &kk);
+        fr += f;
+        k2 += kk;
+        a->e[PL_CE_DEPL] += 0.5 * u;
     }
     double vrx = v->vx[i] - v->vx[j], vry = v->vy[i] - v->vy[j], vrz = v->vz[i] - v->vz[j];
     double vn = vrx * ex + vry * ey + vrz * ez;
@@ -191,5 +202,7 @@ void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_
     switch (p->terms & PL_CT_ALL) {
         CASE(0) CASE(1) CASE(2) CASE(3) CASE(4) CASE(5) CASE(6) CASE(7)
         CASE(8) CASE(9) CASE(10) CASE(11) CASE(12) CASE(13) CASE(14) CASE(15)
+        CASE(16) CASE(17) CASE(18) CASE(19) CASE(20) CASE(21) CASE(22) CASE(23)
+        CASE(24) CASE(25) CASE(26) CASE(27) CASE(28) CASE(29) CASE(30) CASE(31)
     }
 }

@@ -11,7 +11,10 @@
  * The fluid kernel (kernels/srd_collide.c) has already collided these cells
  * without the colloids; their fluid velocities are recomputed here from the
  * copy saved before it ran, so the fluid kernel stays untouched.  Wall ghost
- * particles are not added in occupied cells.
+ * particles are not added in occupied cells (a colloid whose centre lies in a
+ * cell cut by a no-slip wall: only for R below ~1.5 a0, the wall repulsion
+ * keeps centres ~R away); the moving wall's push the fluid kernel counted for
+ * such a cell (sim->wall_impulse) is then not corrected.
  *
  * Random numbers: Philox (seed, PL_RNG_COUPLING + 0 / + 1), counter (step,
  * cell).  Cells are independent and each owns its fluid and colloids: the
@@ -26,8 +29,7 @@
 /* Same two rules as the fluid collision (include/peloid/srd_rules.h). */
 static void rotation(const pl_coupling2_params_t *p, uint64_t cell, double R[3][3])
 {
-    pl_rand4_t r = pl_rng_uniform4(p->seed, PL_RNG_COUPLING + 0, p->step, cell, 0);
-    pl_srd_rotation(p->rule, p->cos_a, p->sin_a, r.u[0], r.u[1], R);
+    pl_srd_rotation(p->rule, p->cos_a, p->sin_a, p->seed, PL_RNG_COUPLING + 0, p->step, cell, R);
 }
 
 /* Mass-weighted Heyes factor (Hecht Eq. 33 with K = sum m (v-u)^2 / 2). */

@@ -58,6 +58,14 @@ static inline int pl_drift_cell_1d(double x, double s, int n)
     return i;
 }
 
+/* Impulse dp (m_f = 1) given by wall `top` to a particle, added in fixed
+ * point (PL_FIELD_FIXED_SHIFT) to acc[3 top + d]: integer sums do not depend
+ * on the order, hence not on the thread count. */
+static inline void pl_drift_wall_acc(int64_t *acc, int top, const double dp[3])
+{
+    for (int d = 0; d < 3; ++d) acc[3 * top + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
+}
+
 /* 1 when r lies beyond a wall of a closed axis. */
 static inline int pl_drift_outside(const pl_drift_t *c, const double r[3])
 {
@@ -71,9 +79,13 @@ static inline int pl_drift_outside(const pl_drift_t *c, const double r[3])
  * walls move with wall_u[top], the x/y walls are at rest.  The particle
  * bounces first off the wall it would have crossed earliest, then moves on
  * for the rest of the step; near an edge or corner this repeats for the next
- * wall (at most 8 bounces).  Out of line: few particles reach a wall in a
- * step, and inlined it kept pl_drift_one from being inlined. */
-__attribute__((noinline)) static void pl_drift_reflect(const pl_drift_t *c, double r[3], double v[3], const double r0[3])
+ * wall (at most 8 bounces).  acc (NULL: not wanted) receives the impulse of
+ * every bounce off a z wall (pl_drift_wall_acc): the wall stress is the z
+ * walls'; the x/y walls' momentum exchange is not counted.  Out of line: few
+ * particles reach a wall in a step, and inlined it kept pl_drift_one from
+ * being inlined. */
+__attribute__((noinline)) static void pl_drift_reflect(const pl_drift_t *c, double r[3], double v[3],
+                                                       const double r0[3], int64_t *acc)
 {
     static const double at_rest[3] = {0.0, 0.0, 0.0};
     double t_left = c->dt;
@@ -96,11 +108,16 @@ __attribute__((noinline)) static void pl_drift_reflect(const pl_drift_t *c, doub
         for (int d = 0; d < 3; ++d) p[d] += v[d] * tc;
         p[ax] = top ? c->L[ax] : 0.0;
         t_left -= tc;
+        const double vin[3] = {v[0], v[1], v[2]};
         if (c->wall[ax] == PL_WALLS_NOSLIP) {
             const double *U = ax == 2 ? c->wall_u[top] : at_rest;
             for (int d = 0; d < 3; ++d) v[d] = 2.0 * U[d] - v[d];
         } else {
             v[ax] = -v[ax];
+        }
+        if (acc && ax == 2) {
+            const double dp[3] = {v[0] - vin[0], v[1] - vin[1], v[2] - vin[2]};
+            pl_drift_wall_acc(acc, top, dp);
         }
         for (int d = 0; d < 3; ++d) r[d] = p[d] + v[d] * t_left;
     }
@@ -114,9 +131,12 @@ __attribute__((noinline)) static void pl_drift_reflect(const pl_drift_t *c, doub
 /* Drifts the particle (r, v) in place: on return r and v hold the values to
  * store (exactly representable in pl_real), dr the unwrapped displacement
  * and the function value is the collision cell.  closed[d] != 0 exactly
- * when axis d has walls (c->wall[d] != PL_WALLS_NONE). */
+ * when axis d has walls (c->wall[d] != PL_WALLS_NONE).  wall_acc: NULL, or
+ * the fixed-point z wall impulses (bottom xyz, top xyz) to add the bounces
+ * to. */
 static inline __attribute__((always_inline)) uint32_t
-pl_drift_one_closed(const pl_drift_t *c, const int closed[3], double r[3], double v[3], double dr[3])
+pl_drift_one_closed(const pl_drift_t *c, const int closed[3], double r[3], double v[3], double dr[3],
+                    int64_t *wall_acc)
 {
     for (int d = 0; d < 3; ++d) v[d] += c->a[d];
     const double r0[3] = {r[0], r[1], r[2]};
@@ -127,7 +147,7 @@ pl_drift_one_closed(const pl_drift_t *c, const int closed[3], double r[3], doubl
         /* copies, so that r, v, r0 do not escape and stay in registers */
         double rr[3] = {r[0], r[1], r[2]}, vv[3] = {v[0], v[1], v[2]};
         const double rs[3] = {r0[0], r0[1], r0[2]};
-        pl_drift_reflect(c, rr, vv, rs);
+        pl_drift_reflect(c, rr, vv, rs, wall_acc);
         for (int d = 0; d < 3; ++d) {
             r[d] = rr[d];
             v[d] = vv[d];
@@ -160,9 +180,10 @@ pl_drift_one_closed(const pl_drift_t *c, const int closed[3], double r[3], doubl
 /* pl_drift_one_closed with the closed axes read from c; a caller may pass
  * them as constants instead (srd_stream.c), which removes their branches. */
 static inline __attribute__((always_inline)) uint32_t pl_drift_one(const pl_drift_t *c, double r[3],
-                                                                   double v[3], double dr[3])
+                                                                   double v[3], double dr[3],
+                                                                   int64_t *wall_acc)
 {
-    return pl_drift_one_closed(c, c->wall, r, v, dr);
+    return pl_drift_one_closed(c, c->wall, r, v, dr, wall_acc);
 }
 
 /* Block version for periodic boxes (no walls): the same operations in the

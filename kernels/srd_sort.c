@@ -73,7 +73,7 @@ static void scatter(pl_fluid_t *f, const pl_drift_t *drift, uint32_t *restrict h
     if (!f->tracked && drift) {
         for (size_t i = lo; i < hi; ++i) {
             double r[3] = {x[i], y[i], z[i]}, v[3] = {vx[i], vy[i], vz[i]}, dr[3];
-            const size_t j = h[pl_drift_one(drift, r, v, dr)]++;
+            const size_t j = h[pl_drift_one(drift, r, v, dr, NULL)]++;
             xa[j] = (pl_real)r[0]; ya[j] = (pl_real)r[1]; za[j] = (pl_real)r[2];
             vxa[j] = (pl_real)v[0]; vya[j] = (pl_real)v[1]; vza[j] = (pl_real)v[2];
         }
@@ -93,7 +93,7 @@ static void scatter(pl_fluid_t *f, const pl_drift_t *drift, uint32_t *restrict h
     double *restrict dxa = f->disp_alt[0], *restrict dya = f->disp_alt[1], *restrict dza = f->disp_alt[2];
     for (size_t i = lo; i < hi; ++i) {
         double r[3] = {x[i], y[i], z[i]}, v[3] = {vx[i], vy[i], vz[i]}, dr[3] = {0.0, 0.0, 0.0};
-        const size_t j = drift ? h[pl_drift_one(drift, r, v, dr)]++ : h[cell[i]]++;
+        const size_t j = drift ? h[pl_drift_one(drift, r, v, dr, NULL)]++ : h[cell[i]]++;
         xa[j] = (pl_real)r[0]; ya[j] = (pl_real)r[1]; za[j] = (pl_real)r[2];
         vxa[j] = (pl_real)v[0]; vya[j] = (pl_real)v[1]; vza[j] = (pl_real)v[2];
         ida[j] = id[i];

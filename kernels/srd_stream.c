@@ -1,5 +1,6 @@
 /* Streaming fused with cell binning (one pass over the particle arrays), and
- * the count-only pass of the stream-in-scatter step.
+ * the count-only pass of the stream-in-scatter step.  With z walls the
+ * streaming also sums the impulse of their bounces (the wall stress).
  *
  * The drift itself (Hecht Eq. 11 / PL Eqs. 1-2, walls, grid shift) is
  * pl_drift_one in srd_drift.h.  The cell of each particle is counted in the
@@ -9,17 +10,19 @@
 
 #include "srd_drift.h"
 
-/* Drift + store + bin of particles [lo, hi) one by one (walls, tracking). */
+/* Drift + store + bin of particles [lo, hi) one by one (walls, tracking);
+ * wall_acc: NULL, or this thread's z wall impulses. */
 static inline __attribute__((always_inline)) void moved_range(pl_fluid_t *f, const pl_drift_t *c,
                                                               const int closed[3], uint32_t *restrict h,
-                                                              size_t lo, size_t hi, int tracked)
+                                                              size_t lo, size_t hi, int tracked,
+                                                              int64_t *wall_acc)
 {
     pl_real *restrict x = f->r[0], *restrict y = f->r[1], *restrict z = f->r[2];
     pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
     uint32_t *restrict cell = f->cell;
     for (size_t i = lo; i < hi; ++i) {
         double r[3] = {x[i], y[i], z[i]}, v[3] = {vx[i], vy[i], vz[i]}, dr[3];
-        const uint32_t cl = pl_drift_one_closed(c, closed, r, v, dr);
+        const uint32_t cl = pl_drift_one_closed(c, closed, r, v, dr, wall_acc);
         if (tracked) {
             f->disp[0][i] += dr[0];
             f->disp[1][i] += dr[1];
@@ -35,7 +38,7 @@ static inline __attribute__((always_inline)) void moved_range(pl_fluid_t *f, con
 /* mode: 0 = bin only, 1 = drift + store + bin, 2 = count the drifted cell
  * without storing anything but the histogram. */
 static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict h, size_t lo,
-                         size_t hi, int mode)
+                         size_t hi, int mode, int64_t *wall_acc)
 {
     pl_real *restrict x = f->r[0], *restrict y = f->r[1], *restrict z = f->r[2];
     pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
@@ -53,7 +56,7 @@ static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict 
     if (mode == 2) {
         for (size_t i = lo; i < hi; ++i) {
             double r[3] = {x[i], y[i], z[i]}, v[3] = {vx[i], vy[i], vz[i]}, dr[3];
-            h[pl_drift_one(c, r, v, dr)]++;
+            h[pl_drift_one(c, r, v, dr, NULL)]++;
         }
         return;
     }
@@ -75,9 +78,9 @@ static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict 
     }
     /* the common wall layouts with their closed axes as constants */
     const int *w = c->wall;
-    if (!w[0] && !w[1] && w[2]) moved_range(f, c, (const int[3]){0, 0, 1}, h, lo, hi, tracked);
-    else if (w[0] && w[1] && !w[2]) moved_range(f, c, (const int[3]){1, 1, 0}, h, lo, hi, tracked);
-    else moved_range(f, c, w, h, lo, hi, tracked);
+    if (!w[0] && !w[1] && w[2]) moved_range(f, c, (const int[3]){0, 0, 1}, h, lo, hi, tracked, wall_acc);
+    else if (w[0] && w[1] && !w[2]) moved_range(f, c, (const int[3]){1, 1, 0}, h, lo, hi, tracked, wall_acc);
+    else moved_range(f, c, w, h, lo, hi, tracked, wall_acc);
 }
 
 static void run(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params_t *p, uint32_t *hist,
@@ -94,7 +97,10 @@ static void run(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params_t *p, 
         pl_chunk(f->n, t, nthreads, &lo, &hi);
         uint32_t *h = hist + (size_t)t * g->ncells;
         memset(h, 0, g->ncells * sizeof *h);
-        stream_range(f, &c, h, lo, hi, mode);
+        /* the wall impulses of this thread's chunk, in its own cache line */
+        int64_t *acc = mode == 1 && c.walls && p->wall_acc ? p->wall_acc + (size_t)t * PL_WALL_ACC_STRIDE : NULL;
+        if (acc) memset(acc, 0, PL_WALL_ACC_STRIDE * sizeof *acc);
+        stream_range(f, &c, h, lo, hi, mode, acc);
     }
 }
 
@@ -109,6 +115,16 @@ void pl_srd_stream_count(const pl_fluid_t *f, const pl_grid_t *g, const pl_strea
 {
     /* mode 2 reads only: the cast drops a const that is never used to write */
     run((pl_fluid_t *)(uintptr_t)f, g, p, hist, nthreads, 2);
+}
+
+void pl_srd_stream_wall_impulse(const pl_grid_t *g, const pl_stream_params_t *p, const double r0[3],
+                                const double v0[3], int64_t acc[6])
+{
+    pl_drift_t c;
+    pl_drift_init(&c, g, p, 1);
+    if (!c.walls) return;
+    double r[3] = {r0[0], r0[1], r0[2]}, v[3] = {v0[0], v0[1], v0[2]}, dr[3];
+    (void)pl_drift_one(&c, r, v, dr, acc);
 }
 
 void pl_srd_bin(pl_fluid_t *f, const pl_grid_t *g, uint32_t *hist, int nthreads)

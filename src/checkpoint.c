@@ -2,7 +2,8 @@
  * N steps equals 2N steps bitwise.  Random numbers are counter based (keyed
  * by step), so the state is positions, velocities (in their sorted order:
  * the stable sort depends on it), tracking arrays, step, field accumulators,
- * and with colloids the group /colloids (src/checkpoint_colloid.c).
+ * with colloids the group /colloids (src/checkpoint_colloid.c), and the wall
+ * and coupling run counters (src/checkpoint_coupling.c).
  * Written to "<path>.tmp" and renamed.  No object carries a time stamp, so
  * the same state gives the same bytes. */
 #include <hdf5.h>
@@ -103,6 +104,9 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
     if (g >= 0) H5Gclose(g);
     else bad = 1;
     if (sim->colloids) bad |= pl_ckpt_colloid_write(f, sim->colloids);
+    bad |= pl_ckpt_coupling_write(f, sim);
+    /* kT_cell of the last collision: the thermo row at the restart step */
+    bad |= pl_ckpt_write_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, &sim->last_kT_meas, 1);
     if (H5Fclose(f) < 0) bad = 1;
     if (bad) return pl_err_set(err, PL_ERR_IO, "%s: writing the checkpoint failed", tmp);
     if (rename(tmp, path)) return pl_err_set(err, PL_ERR_IO, "%s: cannot rename to %s", tmp, path);
@@ -192,6 +196,10 @@ int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err)
      * (as pl_coupling_create decided) */
     if (!rc && sim->colloids && sim->coupling && sim->coupling->method != PL_COUPLE_NONE)
         sim->colloids->nve = 0;
+    if (!rc) rc = pl_ckpt_coupling_read(f, sim, path, err);
+    if (!rc && H5Lexists(f, "kT_cell", H5P_DEFAULT) > 0 &&
+        pl_ckpt_read_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, &sim->last_kT_meas, 1))
+        rc = pl_err_set(err, PL_ERR_INPUT, "%s: unreadable kT_cell", path);
 close:
     H5Fclose(f);
 out:

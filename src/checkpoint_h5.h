@@ -28,4 +28,11 @@ int pl_ckpt_colloid_write(hid_t f, const pl_colloid_t *c);
 int pl_ckpt_colloid_read(hid_t f, pl_colloid_t *c, const pl_scene_t *scene, const char *path,
                          pl_err_t *err);
 
+struct pl_sim;
+/* Writes /wall_impulse (walls) and group /coupling (with a coupling): the run
+ * counters (src/checkpoint_coupling.c). */
+int pl_ckpt_coupling_write(hid_t f, const struct pl_sim *sim);
+/* Reads them back; PL_ERR_INPUT naming what is missing. */
+int pl_ckpt_coupling_read(hid_t f, struct pl_sim *sim, const char *path, pl_err_t *err);
+
 #endif

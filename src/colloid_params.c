@@ -7,12 +7,13 @@
 
 #include "peloid/colloid.h"
 #include "peloid/colloid_pair.h"
+#include "peloid/depletion.h"
 
 static const double E_CHARGE = 1.602176634e-19, K_B = 1.380649e-23, EPS0 = 8.8541878128e-12;
 
 int pl_colloid_parse_pairs(const char *list, unsigned *mask, char *bad, size_t nbad)
 {
-    static const char *const names[] = {"dlvo", "hertz", "lubrication", "wca"};
+    static const char *const names[] = {"dlvo", "hertz", "lubrication", "wca", "depletion_comp"};
     *mask = 0;
     const char *s = list;
     while (*s) {
@@ -20,7 +21,7 @@ int pl_colloid_parse_pairs(const char *list, unsigned *mask, char *bad, size_t n
         if (!*s) break;
         size_t len = strcspn(s, ", \t");
         int found = 0;
-        for (unsigned k = 0; k < 4; ++k)
+        for (unsigned k = 0; k < 5; ++k)
             if (strlen(names[k]) == len && !strncmp(s, names[k], len)) {
                 *mask |= 1u << k;
                 found = 1;
@@ -160,7 +161,8 @@ int pl_colloid_pair_params(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
     char bad[128];
     if (pl_colloid_parse_pairs(cs->pairs, &p->terms, bad, sizeof bad))
         return pl_scene_fail(scene, err, offsetof(pl_scene_t, colloids.pairs), "colloids.pairs",
-                             "unknown pair term \"%s\"; allowed: dlvo, hertz, lubrication, wca", bad);
+                             "unknown pair term \"%s\"; allowed: dlvo, hertz, lubrication, wca, "
+                             "depletion_comp", bad);
     for (int k = 0; k < 3; ++k) p->box[k] = scene->box.cells[k];
     int walls[3];
     pl_scene_box_walls(&scene->box, walls);
@@ -184,6 +186,25 @@ int pl_colloid_pair_params(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
     p->wca_sigma = cs->wca.sigma;
     p->wca_n = cs->wca.n;
     p->wca_rfac = pow(2.0, 1.0 / cs->wca.n);
+    pl_depletion_params_t dp;
+    pl_colloid_depletion_params(scene, &dp);
+    double d_match = 2.0 * pl_depletion_cf_cutoff(&dp); /* where Phi_depl vanishes */
+    if (cs->wca.sigma_rule == PL_SIGMA_PL) /* PL Sec. III.C.1 */
+        p->wca_sigma = pl_depletion_sigma_cc(d_match, cs->wca.epsilon, cs->wca.n,
+                                             PL_DEPLETION_RULE_ENERGY * dp.kT);
+    if (p->terms & PL_CT_DEPL) p->dep_rc = d_match; /* table set by pl_colloid_setup */
     (void)rmax;
     return 0;
+}
+
+void pl_colloid_depletion_params(const pl_scene_t *scene, pl_depletion_params_t *dp)
+{
+    const pl_scene_coupling_t *cp = &scene->coupling;
+    dp->sigma_cf = cp->sigma_cf > 0.0 ? cp->sigma_cf : scene->colloids.radius;
+    dp->epsilon_cf = cp->epsilon_cf;
+    dp->n = 6.0; /* PL Eq. 17 */
+    dp->hard_sphere = 0;
+    dp->density = scene->fluid.density;
+    dp->kT = scene->thermostat.type != PL_THERMO_NONE ? scene->thermostat.temperature
+                                                       : scene->fluid.temperature;
 }

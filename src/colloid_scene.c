@@ -14,8 +14,22 @@ int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err)
     char bad[128];
     if (pl_colloid_parse_pairs(cs->pairs, &mask, bad, sizeof bad))
         return pl_scene_fail(scene, err, OFF(colloids.pairs), "colloids.pairs",
-                             "unknown pair term \"%s\"; allowed: dlvo, hertz, lubrication, wca "
-                             "(comma separated)", bad);
+                             "unknown pair term \"%s\"; allowed: dlvo, hertz, lubrication, wca, "
+                             "depletion_comp (comma separated)", bad);
+    if (cs->wca.sigma_rule == PL_SIGMA_PL && cs->wca.sigma > 0.0)
+        return pl_scene_fail(scene, err, OFF(colloids.wca.sigma_rule), "wca.sigma_rule",
+                             "\"pl\" derives sigma_cc from coupling.sigma_cf, but wca.sigma = %g is "
+                             "given too; allowed: one of them", cs->wca.sigma);
+    if (cs->wca.sigma_rule == PL_SIGMA_PL && !(mask & PL_CT_WCA))
+        return pl_scene_fail(scene, err, OFF(colloids.wca.sigma_rule), "wca.sigma_rule",
+                             "\"pl\" sets the diameter of the wca pair term, which colloids.pairs "
+                             "does not switch on; allowed: add wca to colloids.pairs");
+    if ((mask & PL_CT_DEPL) &&
+        (scene->coupling.method != PL_COUPLE_POTENTIAL || scene->fluid.density <= 0.0))
+        return pl_scene_fail(scene, err, OFF(colloids.pairs), "colloids.pairs",
+                             "depletion_comp compensates the depletion attraction of the potential "
+                             "coupling's fluid (PL Sec. III.C.1); allowed only with "
+                             "coupling.method = \"potential\" and fluid.density > 0");
     if (cs->count == 0) return 0;
     if (cs->init == PL_CINIT_FILE && !cs->init_file[0])
         return pl_scene_fail(scene, err, OFF(colloids.init), "colloids.init",
@@ -29,9 +43,10 @@ int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err)
     double rmax = cs->radius * (1.0 + sqrt(3.0) * cs->polydispersity);
     double rc = 2.0 * rmax + p.gap_cut;
     if (mask & PL_CT_WCA) {
-        double sg = cs->wca.sigma > 0.0 ? cs->wca.sigma : 2.0 * rmax;
+        double sg = p.wca_sigma > 0.0 ? p.wca_sigma : 2.0 * rmax;
         rc = fmax(rc, sg * p.wca_rfac);
     }
+    if (mask & PL_CT_DEPL) rc = fmax(rc, p.dep_rc);
     for (int k = 0; k < 3; ++k) {
         if (!p.periodic[k]) continue;
         if (rc > 0.5 * scene->box.cells[k])

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "peloid/colloid.h"
+#include "peloid/colloid_pair.h"
 #include "peloid/rng.h"
 
 #define OFF(m) offsetof(pl_scene_t, m)
@@ -67,6 +68,7 @@ void pl_colloid_free(pl_colloid_t *c)
     free(c->cells.list);
     free(c->cells.cell);
     free(c->cells.start);
+    free(c->dep_table);
     free(c);
 }
 
@@ -81,10 +83,44 @@ void pl_colloid_forces(pl_colloid_t *c)
     pl_colloid_ext_forces(&c->ext, c->n, c->x, c->y, c->z, c->zu, c->rad, c->mass, c->fx, c->fy, c->fz, c->epot);
 }
 
+/* sigma_cc and the spurious depletion it leaves (PL Sec. III.C.1); with
+ * depletion_comp the table of Phi_comp = -Phi_depl for the force kernel. */
+static int depletion_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
+{
+    const pl_scene_wca_t *w = &scene->colloids.wca;
+    pl_colloid_depl_info_t *in = &c->depl;
+    pl_depletion_params_t dp;
+    pl_colloid_depletion_params(scene, &dp);
+    memset(in, 0, sizeof *in);
+    in->rule = w->sigma_rule;
+    in->sigma_cc = c->pair.wca_sigma;
+    in->d_match = 2.0 * pl_depletion_cf_cutoff(&dp);
+    double sg = in->sigma_cc > 0 ? in->sigma_cc : 2.0 * scene->colloids.radius;
+    in->phi_match = in->d_match < sg * c->pair.wca_rfac ? pl_pair_wca(in->d_match, sg, w->epsilon, w->n).u : 0.0;
+    double dphi;
+    if (scene->coupling.method == PL_COUPLE_POTENTIAL && dp.density > 0.0 &&
+        pl_depletion_potential(&dp, sg, &in->phi_sigma, &dphi, err))
+        return err->code;
+    free(c->dep_table);
+    c->dep_table = NULL;
+    if (!(c->pair.terms & PL_CT_DEPL)) return 0;
+    int m = PL_COLLOID_DEPL_TABLE;
+    /* m + 2 nodes: the last, zero, is read when r rounds to the cut-off */
+    if (!(c->dep_table = calloc(2 * (size_t)(m + 2), sizeof(double))))
+        return pl_err_set(err, PL_ERR_NOMEM, "colloids: out of memory (depletion table)");
+    if (pl_depletion_table(&dp, m, c->dep_table, c->dep_table + m + 2, err)) return err->code;
+    in->table_n = m;
+    c->pair.dep_u = c->dep_table;
+    c->pair.dep_du = c->dep_table + m + 2;
+    c->pair.dep_inv_h = m / in->d_match;
+    return 0;
+}
+
 int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
 {
     const pl_scene_colloids_t *cs = &scene->colloids;
     if (pl_colloid_pair_params(scene, &c->pair, &c->dlvo, err)) return err->code;
+    if (depletion_setup(c, scene, err)) return err->code;
     for (int k = 0; k < 3; ++k) {
         c->box[k] = c->pair.box[k];
         c->periodic[k] = c->pair.periodic[k];
@@ -114,6 +150,7 @@ int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
     for (size_t i = 0; i < c->n; ++i) rmax = fmax(rmax, c->rad[i]);
     double rc = 2.0 * rmax + c->pair.gap_cut;
     if (t & PL_CT_WCA) rc = fmax(rc, (c->pair.wca_sigma > 0 ? c->pair.wca_sigma : 2.0 * rmax) * c->pair.wca_rfac);
+    if (t & PL_CT_DEPL) rc = fmax(rc, c->pair.dep_rc);
     pl_colloid_cells_dims(c->box, c->periodic, rc, c->cells.nc);
     c->cells.ncells = (size_t)c->cells.nc[0] * (size_t)c->cells.nc[1] * (size_t)c->cells.nc[2];
     for (int k = 0; k < 3; ++k) c->cells.inv_cl[k] = c->cells.nc[k] / c->box[k];

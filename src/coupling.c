@@ -15,6 +15,53 @@ static const double PI = 3.14159265358979323846;
 
 #define OFF(m) offsetof(pl_scene_t, m)
 
+/* Coupling II friction of a colloid of mass M in a cell of gamma fluid
+ * particles (m_f = 1): one collision changes its momentum on average by
+ * -(1 - <R>) mu (v_c - v_fluid), mu = M gamma / (M + gamma), <R> = (1 + 2 cos
+ * alpha) / 3 (hecht_axes: 1/3), so xi_II = 2/3 (1 - cos alpha) mu / dt.  The
+ * cell's fluid is dragged along, so the true friction is smaller. */
+double pl_coupling2_friction(const pl_scene_t *scene, double mass)
+{
+    double gamma = scene->fluid.density;
+    double cos_a = scene->srd.rule == PL_RULE_HECHT_AXES ? 0.0 : cos(scene->srd.alpha_deg * PI / 180.0);
+    double mu = mass * gamma / (mass + gamma);
+    return 2.0 / 3.0 * (1.0 - cos_a) * mu / scene->srd.dt;
+}
+
+/* Hecht Sec. VI asks tau_P << tau_S: a colloid must relax before it settles
+ * far.  With Pe = M g R / kT this is M v_s^2 / kT = 2 Pe tau_P / tau_S << 1
+ * (Hecht's Table IV: 0.011).  Coupling II gives the colloid only the friction
+ * of its own cell (pl_coupling2_friction); a colloid much heavier than the
+ * fluid of its cell (Hecht Sec. VII.C avoids it: cell volume = colloid
+ * volume) settles nearly as fast as it moves thermally, and the kinetic
+ * energy of the settling flow then passes for heat: the colloids run hot.
+ * v_s = M g / xi_II is a lower bound of the settling speed. */
+static int check_settling(const pl_scene_t *scene, pl_err_t *err)
+{
+    const pl_scene_colloids_t *cs = &scene->colloids;
+    double bound = scene->coupling.max_settling_energy;
+    const double *g = cs->gravity;
+    double gn = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    if (scene->coupling.method != PL_COUPLE_HECHT2 || bound <= 0.0 || gn == 0.0 ||
+        scene->coupling.pinned)
+        return 0;
+    double rmax = cs->radius * (1.0 + sqrt(3.0) * cs->polydispersity);
+    double mass = cs->mass_density * 4.0 / 3.0 * PI * rmax * rmax * rmax;
+    double kT = scene->thermostat.type != PL_THERMO_NONE ? scene->thermostat.temperature
+                                                         : scene->fluid.temperature;
+    double xi = pl_coupling2_friction(scene, mass);
+    double vs = mass * gn / xi, e = mass * vs * vs / kT;
+    if (e <= bound) return 0;
+    return pl_scene_fail(scene, err, OFF(colloids.gravity), "colloids.gravity",
+                         "coupling II settling too fast: M = %.4g m_f in cells of %.3g fluid "
+                         "particles, xi_II = %.4g, v_s >= M g / xi_II = %.3g a0/t0, M v_s^2 = "
+                         "%.3g kT > coupling.max_settling_energy = %g (Hecht Sec. VI: tau_P << "
+                         "tau_S); lower the gravity, or the colloid mass per cell (radius ~ 0.62 "
+                         "a0: cell volume = colloid volume, Hecht Sec. VII.C), or raise "
+                         "fluid.density, or lower srd.dt",
+                         mass, scene->fluid.density, xi, vs, e, bound);
+}
+
 int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err)
 {
     const pl_scene_coupling_t *cs = &scene->coupling;
@@ -31,7 +78,7 @@ int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err)
         return pl_scene_fail(scene, err, OFF(coupling.method), "coupling.method",
                              "colloids.integrator = \"brownian\" already stands for the solvent; "
                              "a coupling needs \"verlet\"");
-    return 0;
+    return check_settling(scene, err);
 }
 
 pl_coupling_colloids_t pl_coupling_view(const pl_colloid_t *c)
@@ -124,6 +171,7 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         p->placement = sc->coupling.placement;
         p->max_refl = (int)sc->coupling.max_reflections;
         p->seed = cp->seed;
+        memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
         size_t L3 = (size_t)sim->grid.L[0] * (size_t)sim->grid.L[1] * (size_t)sim->grid.L[2];
         cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t));
         cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t));

@@ -128,10 +128,17 @@ static void kick_fluid(pl_coupling_t *cp, double h, const double g[3])
     }
 }
 
+static void wall_add(int64_t acc[6], int top, const double dp[3])
+{
+    for (int d = 0; d < 3; ++d) acc[3 * top + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
+}
+
 /* r += v dt, with reflection at the walls of every closed axis (bounce-back
- * for no-slip, the x/y walls at rest; specular for slip; as the streaming
- * does); the displacement is accumulated. */
-static void drift_fluid(pl_coupling_t *cp, const pl_sim_t *sim, double dt)
+ * for no-slip in the frame of the wall, the z walls moving and the x/y walls
+ * at rest; specular for slip; as the streaming does); the displacement is
+ * accumulated, the z walls' impulses added to acc (the wall stress is the z
+ * walls'). */
+static void drift_fluid(pl_coupling_t *cp, const pl_sim_t *sim, double dt, int64_t acc[6])
 {
     static const double at_rest[3] = {0.0, 0.0, 0.0};
     const pl_grid_t *g = &sim->grid;
@@ -150,12 +157,14 @@ static void drift_fluid(pl_coupling_t *cp, const pl_sim_t *sim, double dt)
             NB(cp, 9 + a)[j] -= *x - r0[a];
             *x = 2.0 * xw - *x;
             NB(cp, 9 + a)[j] += *x - r0[a];
+            double dp[3] = {0.0, 0.0, 0.0};
+            dp[a] = -2.0 * NB(cp, 3 + a)[j];
             if (g->walls[a] == PL_WALLS_NOSLIP) {
                 const double *U = a == 2 ? sim->wall_u[top] : at_rest;
-                for (int d = 0; d < 3; ++d) NB(cp, 3 + d)[j] = 2.0 * U[d] - NB(cp, 3 + d)[j];
-            } else {
-                NB(cp, 3 + a)[j] = -NB(cp, 3 + a)[j];
+                for (int d = 0; d < 3; ++d) dp[d] = 2.0 * (U[d] - NB(cp, 3 + d)[j]);
             }
+            for (int d = 0; d < 3; ++d) NB(cp, 3 + d)[j] += dp[d];
+            if (a == 2) wall_add(acc, top, dp);
         }
     }
 }
@@ -168,11 +177,20 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, pl_err_t *err)
     const pl_scene_t *sc = &sim->scene;
     double g[3];
     for (int d = 0; d < 3; ++d) g[d] = sc->fluid.body_force[d] + cp->fluid_accel[d];
-    /* undo the free streaming of the selected particles */
+    /* undo the free streaming of the selected particles, and the wall
+     * impulses it counted for them (recomputed bitwise, in fixed point) */
+    int64_t wacc[6] = {0, 0, 0, 0, 0, 0}, sacc[6] = {0, 0, 0, 0, 0, 0};
+    pl_stream_params_t sp;
+    pl_sim_stream_params(sim, &sp);
     for (size_t j = 0; j < cp->nnear; ++j) {
         size_t i = cp->near_idx[j];
         if (f->tracked)
             for (int d = 0; d < 3; ++d) f->disp[d][i] = NB(cp, 9 + d)[j];
+        if (sim->wall_acc) {
+            const double r0[3] = {NB(cp, 0)[j], NB(cp, 1)[j], NB(cp, 2)[j]};
+            const double v0[3] = {NB(cp, 3)[j], NB(cp, 4)[j], NB(cp, 5)[j]};
+            pl_srd_stream_wall_impulse(&sim->grid, &sp, r0, v0, sacc);
+        }
     }
     const double dtm = c->dt, h = 0.5 * dtm;
     forces(cp, c);
@@ -184,7 +202,7 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, pl_err_t *err)
                              c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3);
         }
         kick_fluid(cp, h, g);
-        drift_fluid(cp, sim, dtm);
+        drift_fluid(cp, sim, dtm, wacc);
         if (cp->pinned) /* impulse of the fluid force over this MD step (trapezoid) */
             for (size_t k = 0; k < c->n; ++k)
                 for (int d = 0; d < 3; ++d) cp->impulse[d] += h * cp->cf[(size_t)d * c->n + k];
@@ -202,6 +220,10 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, pl_err_t *err)
         }
     }
     if (cp->pinned) cp->pinned_time += sc->srd.dt;
+    if (sim->wall_acc) {
+        for (int k = 0; k < 6; ++k) wacc[k] -= sacc[k];
+        pl_sim_wall_add(sim, wacc);
+    }
     /* write the selected particles back, wrapped, into their new cells */
     const double L[3] = {sim->grid.L[0], sim->grid.L[1], sim->grid.L[2]};
     for (size_t j = 0; j < cp->nnear; ++j) {

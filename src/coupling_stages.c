@@ -20,8 +20,12 @@ int pl_coupling_stage_reflect(pl_sim_t *sim, pl_err_t *err)
     cp->p1.step = (uint64_t)sim->step;
     pl_coupling_colloids_t v = pl_coupling_view(c);
     double *const vel[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
+    int64_t wall[6] = {0, 0, 0, 0, 0, 0};
+    cp->p1.wall_acc = sim->wall_acc ? wall : NULL;
     pl_coupling1_reflect(&sim->fluid, &sim->grid, &cp->p1, &v, vel, cp->lk_start, cp->lk_list,
                          sim->hist, cp->nthreads, cp->found, cp->counts);
+    cp->p1.wall_acc = NULL;
+    if (sim->wall_acc) pl_sim_wall_add(sim, wall);
     cp->events += cp->counts[0];
     cp->truncations += cp->counts[1];
     if (cp->pinned) pl_coupling_absorb_pinned(cp, c, sim->scene.srd.dt);

@@ -22,13 +22,20 @@ typedef struct {
     long long step_last_row;
 } writer_t;
 
-static void thermo_header(FILE *f, int mapped, int tracked, int colloids, int reflect, int pinned)
+static void thermo_header(FILE *f, int mapped, int tracked, int walls, int colloids, int reflect, int pinned)
 {
-    fprintf(f, "step\ttime\t%stemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%s%s%smupdates_per_s\n",
+    fprintf(f, "step\ttime\t%stemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%s%s%s%smupdates_per_s\n",
             mapped ? "time_s\ttemperature_K\t" : "", tracked ? "msd\t" : "",
-            colloids ? "c_kin_trans\tc_kin_rot\tc_dlvo\tc_hertz\tc_wca\tc_wall\tc_gravity\tc_total\t" : "",
+            walls ? "sxz_bottom\tsxz_top\tsyz_bottom\tsyz_top\t" : "",
+            colloids ? "c_kin_trans\tc_kin_rot\tc_dlvo\tc_hertz\tc_wca\tc_wall\tc_gravity\tc_depl\tc_total\tc_zcm\t" : "",
             reflect ? "cpl_events\tcpl_truncations\t" : "",
             pinned ? "cpl_drag_x\tcpl_drag_y\tcpl_drag_z\t" : "");
+}
+
+/* Wall shear stresses: no-slip walls (moving or not). */
+static int noslip_walls(const pl_sim_t *sim)
+{
+    return sim->scene.box.walls_z == PL_WALLS_NOSLIP && sim->fluid.n > 0;
 }
 
 /* Coupling I counters (cumulative reflections and truncations, Hecht Sec. IV). */
@@ -53,12 +60,23 @@ static void thermo_row(writer_t *w, const pl_sim_t *sim)
     fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t", kT, sim->last_kT_meas, o.momentum[0],
             o.momentum[1], o.momentum[2], o.kinetic);
     if (sim->fluid.tracked) fprintf(w->thermo, "%.10g\t", o.msd);
+    if (noslip_walls(sim)) /* PL Eq. 13 stress from each wall's momentum, mean since step 0 */
+        fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t%.10g\t", pl_sim_wall_stress(sim, 0, 0),
+                pl_sim_wall_stress(sim, 1, 0), pl_sim_wall_stress(sim, 0, 1), pl_sim_wall_stress(sim, 1, 1));
     if (sim->colloids) { /* colloid energy terms (src/colloid_state.c) */
         pl_colloid_energy_t ce;
         pl_colloid_energy(sim->colloids, &ce);
         fprintf(w->thermo, "%.10g\t%.10g\t", ce.kin_trans, ce.kin_rot);
         for (int k = 0; k < PL_CE_NTERMS; ++k) fprintf(w->thermo, "%.10g\t", ce.pot[k]);
         fprintf(w->thermo, "%.10g\t", ce.total);
+        /* centre-of-mass height of the colloids (unwrapped z): sedimentation */
+        const pl_colloid_t *c = sim->colloids;
+        double mz = 0.0, m = 0.0;
+        for (size_t k = 0; k < c->n; ++k) { /* fixed order */
+            mz += c->mass[k] * (c->z[k] + (double)c->iz[k] * c->box[2]);
+            m += c->mass[k];
+        }
+        fprintf(w->thermo, "%.10g\t", m > 0.0 ? mz / m : 0.0);
     }
     if (reflecting(sim))
         fprintf(w->thermo, "%llu\t%llu\t", sim->coupling->events, sim->coupling->truncations);
@@ -114,6 +132,14 @@ static int write_summary(const writer_t *w, const pl_sim_t *sim, long long first
     fprintf(f, ",\n  \"boundaries\": {\"x\": \"%s\", \"y\": \"%s\", \"z\": \"%s\"}",
             pl_scene_boundary_name(walls[0]), pl_scene_boundary_name(walls[1]),
             pl_scene_boundary_name(walls[2]));
+    if (sim->colloids) {
+        const pl_colloid_depl_info_t *d = &sim->colloids->depl;
+        fprintf(f, ",\n  \"colloid_pairs\": {\"sigma_cc\": %.10g, \"sigma_rule\": \"%s\", "
+                   "\"d_match\": %.10g, \"phi_cc_at_d_match\": %.10g, \"depletion_at_sigma_cc\": %.10g, "
+                   "\"depletion_comp\": %s}",
+                d->sigma_cc, d->rule == PL_SIGMA_PL ? "pl" : "fixed", d->d_match, d->phi_match,
+                d->phi_sigma, d->table_n ? "true" : "false");
+    }
     fprintf(f, ",\n  \"threads\": %d,\n  \"topology\": \"%s\",\n", sim->nthreads, topo);
     fprintf(f, "  \"fluid_particles\": %zu,\n  \"first_step\": %lld,\n  \"last_step\": %lld,\n",
             sim->fluid.n, first, sim->step);
@@ -189,8 +215,8 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         rc = pl_err_set(err, PL_ERR_IO, "%s: cannot write", path);
         goto done;
     }
-    thermo_header(w.thermo, scene->mapping.enabled, sim->fluid.tracked, sim->colloids != NULL, reflecting(sim),
-                  sim->coupling && sim->coupling->pinned);
+    thermo_header(w.thermo, scene->mapping.enabled, sim->fluid.tracked, noslip_walls(sim),
+                  sim->colloids != NULL, reflecting(sim), sim->coupling && sim->coupling->pinned);
     if (sim->colloids && scene->colloids.trajectory_interval > 0) {
         pl_path_join(path, sizeof path, w.dir, "colloids.h5");
         if ((rc = pl_colloid_traj_open(path, sim->colloids, 1, &sim->colloid_traj, err))) goto done;
@@ -206,6 +232,15 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                         "%.4g a0, truncation error |V| = %.3g kT, |F| = %.3g kT/a0\n",
                 d->hm, d->curvature, d->barrier_u, d->barrier_h, d->secmin_u, d->secmin_h, d->hcut,
                 d->trunc_u, d->trunc_f);
+    }
+    if (sim->colloids && (sim->colloids->pair.terms & (PL_CT_WCA | PL_CT_DEPL))) {
+        const pl_colloid_depl_info_t *d = &sim->colloids->depl;
+        fprintf(stderr, "peloid: colloid-colloid sigma_cc = %.6g a0 (%s); phi_cc = %.4g kT at twice the "
+                        "colloid-fluid cut-off %.6g a0; depletion potential at sigma_cc %.4g kT "
+                        "(PL Eqs. 22-23)%s\n",
+                d->sigma_cc, d->rule == PL_SIGMA_PL ? "wca.sigma_rule = pl, PL Sec. III.C.1" : "wca.sigma",
+                d->phi_match, d->d_match, d->phi_sigma,
+                d->table_n ? "; compensated by depletion_comp" : "");
     }
     double t0 = omp_get_wtime();
     rc = loop(sim, &w, o, last, err);

@@ -34,6 +34,12 @@ static const pl_key_t box_keys[] = {
     {"walls_xy", PL_KEY_CHOICE, OFF(box.walls_xy), 0, 0, 0, walls_choices, PL_WALLS_NONE, NULL,
      "-", "walls at x = 0, Lx and y = 0, Ly (a square capillary along z, Hecht Sec. VIII.A "
           "option ii; with walls_z a closed box): none, noslip, slip as for walls_z; x/y walls are at rest"},
+    {"wall_velocity_bottom", PL_KEY_REAL3, OFF(box.wall_velocity[0]), -1e3, 1e3, 0, NULL, 0, NULL,
+     "a0 / t0", "walls_z = noslip: velocity [ux, uy, 0] of the wall at z = 0 (shear, Hecht Sec. "
+                "VIII.C): bounce-back and virtual particles in its frame"},
+    {"wall_velocity_top", PL_KEY_REAL3, OFF(box.wall_velocity[1]), -1e3, 1e3, 0, NULL, 0, NULL,
+     "a0 / t0", "walls_z = noslip: velocity [ux, uy, 0] of the wall at z = Lz; shear rate "
+                "(top - bottom) / Lz in summary.json, wall stresses in thermo.tsv"},
 };
 
 static const pl_key_t fluid_keys[] = {

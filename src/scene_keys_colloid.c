@@ -11,6 +11,7 @@
 
 static const char *const init_choices[] = {"lattice", "random", "file", NULL};
 static const char *const integ_choices[] = {"verlet", "brownian", NULL};
+static const char *const sigma_rules[] = {"fixed", "pl", NULL};
 
 static const pl_key_t colloid_keys[] = {
     {"count", PL_KEY_INT, OFF(count), 0, 1e7, 0, NULL, 0, NULL,
@@ -29,7 +30,10 @@ static const pl_key_t colloid_keys[] = {
     {"init_file", PL_KEY_STRING, OFF(init_file), 0, 0, 0, NULL, 0, "",
      "-", "init = \"file\": text file next to the scene, one colloid per line: x y z [R]"},
     {"pairs", PL_KEY_STRING, OFF(pairs), 0, 0, 0, NULL, 0, "hertz",
-     "-", "pair terms switched on, comma separated: dlvo, hertz, lubrication, wca (\"\": none)"},
+     "-", "pair terms switched on, comma separated: dlvo, hertz, lubrication, wca, depletion_comp "
+          "(\"\": none); depletion_comp = -Phi_depl, the compensating potential of PL Sec. III.C.1 "
+          "(PL Eqs. 22-23, tabulated at start for the run's fluid density and kT; needs "
+          "coupling.method = \"potential\")"},
     {"integrator", PL_KEY_CHOICE, OFF(integrator), 0, 0, 0, integ_choices, PL_CINT_VERLET, NULL,
      "-", "verlet: velocity Verlet + quaternions (Hecht Eqs. 7-10); brownian: overdamped "
           "Langevin with Stokes friction (reference for colloid-only scenes)"},
@@ -105,6 +109,11 @@ static const pl_key_t wca_keys[] = {
      "a0", "sigma_cc of PL Eq. 16 (0: R_i + R_j per pair)"},
     {"n", PL_KEY_REAL, OFF(wca.n), 1, 200, 0, NULL, 24, NULL,
      "-", "exponent n (PL Eq. 16 uses 24; 6 gives the usual WCA)"},
+    {"sigma_rule", PL_KEY_CHOICE, OFF(wca.sigma_rule), 0, 0, 0, sigma_rules, PL_SIGMA_FIXED, NULL,
+     "-", "fixed: sigma_cc = wca.sigma; pl: PL Sec. III.C.1 rule against spurious depletion "
+          "attraction, sigma_cc such that phi_cc = 2.5 kT at twice the colloid-fluid cut-off "
+          "2^{1/6} coupling.sigma_cf (where the depletion potential vanishes); the value is "
+          "logged and written to summary.json"},
 };
 
 const pl_section_t pl_scene_section_colloids = {"colloids", "colloid particles and their MD",

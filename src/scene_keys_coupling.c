@@ -52,6 +52,12 @@ static const pl_key_t coupling_keys[] = {
      "a0", "potential: colloid-fluid diameter sigma_cf of PL Eq. 17 (0: colloids.radius)"},
     {"epsilon_cf", PL_KEY_REAL, OFF(epsilon_cf), 0, 1e6, PL_KEY_MIN_OPEN, NULL, 2.5, NULL,
      "kT_ref", "potential: epsilon_cf of PL Eq. 17 (PL: 2.5 kT)"},
+    {"max_settling_energy", PL_KEY_REAL, OFF(max_settling_energy), 0, 1e6, 0, NULL, 0.5, NULL,
+     "kT_ref", "hecht2 with gravity: largest M v_s^2 accepted, v_s = M g / xi_II the settling "
+               "speed with the friction of the colloid's own cell (xi_II = 2/3 (1 - cos alpha) "
+               "mu / dt, an upper bound, so v_s is a lower bound); M v_s^2 / kT = 2 Pe tau_P / "
+               "tau_S (Hecht Sec. VI asks tau_P << tau_S); colloids much heavier than the fluid "
+               "of their cell settle about as fast as they move thermally and run hot; 0: off"},
 };
 
 const pl_section_t pl_scene_section_coupling = {"coupling", "colloid-solvent coupling "

@@ -43,6 +43,21 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
         return pl_scene_fail(scene, err, OFF(box.cells), "box.cells",
                              "Lx = %d, Ly = %d with walls_xy; allowed: Lx >= 2 and Ly >= 2",
                              b->cells[0], b->cells[1]);
+    for (int w = 0; w < 2; ++w) { /* moving walls (shear, Hecht Sec. VIII.C) */
+        const double *u = b->wall_velocity[w];
+        const char *key = w ? "box.wall_velocity_top" : "box.wall_velocity_bottom";
+        size_t off = w ? OFF(box.wall_velocity[1]) : OFF(box.wall_velocity[0]);
+        if ((u[0] != 0.0 || u[1] != 0.0 || u[2] != 0.0) && b->walls_z != PL_WALLS_NOSLIP)
+            return pl_scene_fail(scene, err, off, key,
+                                 "[%g, %g, %g] needs box.walls_z = \"noslip\" (%s); allowed "
+                                 "otherwise: [0, 0, 0]", u[0], u[1], u[2],
+                                 b->walls_z == PL_WALLS_SLIP ? "a slip wall cannot drag the fluid"
+                                                             : "walls_z = \"none\" has no wall to move");
+        if (u[2] != 0.0)
+            return pl_scene_fail(scene, err, off, key,
+                                 "z component %g: a wall moves in its own plane only; allowed: "
+                                 "[ux, uy, 0]", u[2]);
+    }
     double np = ncells * scene->fluid.density;
     if (np > 4.0e9)
         return pl_scene_fail(scene, err, OFF(fluid.density), "fluid.density",

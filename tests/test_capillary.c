@@ -13,6 +13,13 @@
  *   forces and gravity pushing towards an edge.
  * - Determinism: 1, 2 and 3 threads give bitwise the same fluid and colloid
  *   state, and N + checkpoint + restart + N steps equals 2N steps bitwise.
+ * - Moving z walls (shear) in a closed box, for the fluid and every
+ *   coupling: containment, the top wall drags the fluid, 1 vs 2 threads and
+ *   restart bitwise (the wall impulses included).  With slip x/y walls
+ *   (specular: they change only P_x, P_y) P_z of the fluid changes by
+ *   exactly the z walls' counted impulse, so no z-wall bounce near an edge
+ *   is lost or counted twice; with no-slip x/y walls their momentum
+ *   exchange is not counted (the stress columns are the z walls'). 
  * - Clear errors: boxes too thin, colloids wider than the capillary, a
  *   checkpoint of another capillary. */
 #include <math.h>
@@ -20,6 +27,7 @@
 #include <unistd.h>
 
 #include "peloid/colloid.h"
+#include "peloid/coupling.h"
 #include "peloid/io.h"
 #include "peloid/rng.h"
 #include "peloid/srd_kernels.h"
@@ -183,7 +191,7 @@ static void assert_inside(const pl_sim_t *sim, const char *what)
                                sim->step, i, d, x, L[d]);
         }
     const pl_colloid_t *c = sim->colloids;
-    for (size_t i = 0; i < c->n; ++i) {
+    for (size_t i = 0; c && i < c->n; ++i) {
         const double r[3] = {c->x[i], c->y[i], c->z[i]};
         for (int d = 0; d < 3; ++d)
             if (!(r[d] >= 0.0 && r[d] <= L[d]))
@@ -227,7 +235,9 @@ static void assert_same(const pl_sim_t *a, const pl_sim_t *b, const char *what)
         size_t L3 = (size_t)a->grid.L[0] * (size_t)a->grid.L[1] * (size_t)a->grid.L[2];
         cr_assert_eq(memcmp(a->field_acc, b->field_acc, 4 * L3 * sizeof(int64_t)), 0, "%s: fields", what);
     }
+    cr_assert_eq(memcmp(a->wall_impulse, b->wall_impulse, sizeof a->wall_impulse), 0, "%s: wall impulses", what);
     const pl_colloid_t *p = a->colloids, *q = b->colloids;
+    if (!p) return;
     const size_t nc = p->n;
     const double *pa[] = {p->x, p->y, p->z, p->vx, p->vy, p->vz, p->wx, p->wy, p->wz, p->fx, p->fy, p->fz};
     const double *qa[] = {q->x, q->y, q->z, q->vx, q->vy, q->vz, q->wx, q->wy, q->wz, q->fx, q->fy, q->fz};
@@ -265,6 +275,75 @@ Test(capillary, thread_count_and_restart_do_not_change_results, .timeout = 120)
         pl_sim_free(ref);
     }
     unlink(path);
+}
+
+/* Closed boxes with moving z walls: the fluid alone and one per coupling;
+ * walls_xy noslip or slip.  No body force (the momentum balance). */
+#define MOVING                                                                                     \
+    "box: { cells = [10, 9, 8]; walls_xy = \"%s\"; walls_z = \"noslip\";\n"                         \
+    "  wall_velocity_bottom = [-0.3, 0.2, 0.0]; wall_velocity_top = [0.3, -0.1, 0.0]; };\n"          \
+    "fluid: { density = 5.0; };\nsrd: { dt = 0.1; };\n"
+static const char *moving[] = {
+    "seed = 31;\n" MOVING "thermostat: { type = \"heyes\"; };\n",
+    "seed = 32;\n" MOVING COLL("") "coupling: { method = \"hecht1\"; };\noutput: { track_fluid = true; };\n",
+    "seed = 33;\n" MOVING "thermostat: { type = \"heyes\"; };\n" COLL("") "coupling: { method = \"hecht2\"; };\n",
+    "seed = 34;\n" MOVING COLL("") "coupling: { method = \"potential\"; sigma_cf = 1.4; epsilon_cf = 2.5; };\n",
+};
+enum { NMOVING = sizeof moving / sizeof *moving };
+
+static pl_sim_t *moving_sim(size_t k, const char *walls_xy, int nthreads)
+{
+    char txt[1024];
+    snprintf(txt, sizeof txt, moving[k], walls_xy);
+    return pl_test_sim(txt, nthreads);
+}
+
+Test(capillary, moving_z_walls_in_a_closed_box, .timeout = 120)
+{
+    const long long N = pl_test_quick() ? 5 : 25;
+    char path[] = "/tmp/peloid_test_capckpt_XXXXXX";
+    int fd = mkstemp(path);
+    cr_assert_geq(fd, 0);
+    close(fd);
+    pl_err_t err = {0, ""};
+    for (size_t k = 0; k < NMOVING; ++k) {
+        char what[64];
+        snprintf(what, sizeof what, "moving z walls, scene %zu", k);
+        pl_sim_t *ref = moving_sim(k, "noslip", 1);
+        for (long long s = 0; s < 2 * N; ++s) {
+            cr_assert_eq(pl_sim_step(ref, &err), 0, "%s: %s", what, err.msg);
+            assert_inside(ref, what);
+        }
+        cr_assert(ref->wall_impulse[1][0] > 1.0, "%s: the top wall (u_x = +0.3) gave P_x %g", what,
+                  ref->wall_impulse[1][0]);
+        pl_sim_t *other = moving_sim(k, "noslip", 2);
+        pl_test_steps(other, 2 * N);
+        assert_same(ref, other, what);
+        pl_sim_free(other);
+        pl_sim_t *half = moving_sim(k, "noslip", 2);
+        pl_test_steps(half, N);
+        cr_assert_eq(pl_checkpoint_write(half, path, &err), 0, "%s", err.msg);
+        pl_sim_free(half);
+        pl_sim_t *resumed = moving_sim(k, "noslip", 1);
+        cr_assert_eq(pl_checkpoint_read(resumed, path, &err), 0, "%s", err.msg);
+        pl_test_steps(resumed, N);
+        assert_same(ref, resumed, what);
+        pl_sim_free(resumed);
+        pl_sim_free(ref);
+    }
+    unlink(path);
+    /* slip x/y walls: P_z balance (tolerance as tests/test_shear.c) */
+    pl_sim_t *sim = moving_sim(0, "slip", 2);
+    double P0[3], P1[3], M;
+    pl_test_steps(sim, 5);
+    pl_coupling_total_momentum(sim, P0, &M);
+    const double W0 = sim->wall_impulse[0][2] + sim->wall_impulse[1][2];
+    pl_test_steps(sim, pl_test_quick() ? 10 : 100);
+    pl_coupling_total_momentum(sim, P1, &M);
+    const double W = sim->wall_impulse[0][2] + sim->wall_impulse[1][2] - W0;
+    cr_assert(fabs(sim->wall_impulse[0][2]) > 1.0, "the bottom wall gave no P_z (%g)", sim->wall_impulse[0][2]);
+    cr_assert(fabs(P1[2] - P0[2] - W) < 1e-7, "P_z changed by %.12g, the z walls gave %.12g", P1[2] - P0[2], W);
+    pl_sim_free(sim);
 }
 
 static void expect_error(const char *text, const char *needle)

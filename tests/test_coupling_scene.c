@@ -45,6 +45,37 @@ Test(coupling_scene, refused)
     cr_expect_neq(load(text, &s, &err), 0, "brownian colloids");
 }
 
+/* Coupling II resolution (the cause of the hot colloids of the former
+ * scenes/sediment.cfg): R = 2 a0 colloids of M = 653 m_f, each coupled to the
+ * ~5 fluid particles of one cell, xi_II = 2/3 mu / dt = 33.1 (hecht_axes),
+ * settle at v_s >= M g / xi_II = 0.079 a0/t0 under g = 0.004: M v_s^2 = 4.08
+ * kT, refused (bound 0.5).  The same colloids at R = 0.62 a0 (cell volume =
+ * colloid volume, Hecht Sec. VII.C) with 10 particles per cell: 0.08 kT. */
+Test(coupling_scene, coupling2_settling_bound)
+{
+    pl_scene_t s;
+    pl_err_t err = {0, ""};
+    const char *fmt = "box: { cells = [24, 24, 32]; walls_z = \"noslip\"; };\n"
+                      "fluid: { density = %g; };\nsrd: { dt = 0.1; rule = \"hecht_axes\"; };\n"
+                      "colloids: { count = 64; radius = %g; mass_density = %g; init = \"random\";\n"
+                      "  gravity = [0.0, 0.0, %.4f]; };\ncoupling: { method = \"hecht2\"; %s };\n";
+    char text[1024];
+    snprintf(text, sizeof text, fmt, 5.0, 2.0, 19.5, -0.004, "");
+    cr_expect_neq(load(text, &s, &err), 0, "former sediment.cfg accepted");
+    cr_expect(strstr(err.msg, "colloids.gravity") && strstr(err.msg, "M v_s^2 = 4.08 kT") &&
+                  strstr(err.msg, "coupling.max_settling_energy"),
+              "%s", err.msg);
+    snprintf(text, sizeof text, fmt, 5.0, 2.0, 19.5, -0.004, "max_settling_energy = 0;");
+    cr_expect_eq(load(text, &s, &err), 0, "bound 0 is off: %s", err.msg);
+    snprintf(text, sizeof text, fmt, 5.0, 2.0, 19.5, 0.0, "");
+    cr_expect_eq(load(text, &s, &err), 0, "no gravity, nothing to check: %s", err.msg);
+    snprintf(text, sizeof text, fmt, 10.0, 0.62, 39.0, -0.062, "");
+    cr_expect_eq(load(text, &s, &err), 0, "resolved coupling II refused: %s", err.msg);
+    /* xi_II = 2/3 mu / dt for +-90 deg rotations, mu = M gamma / (M + gamma) */
+    double m = 38.9, mu = m * 10.0 / (m + 10.0);
+    cr_expect_float_eq(pl_coupling2_friction(&s, m), 2.0 / 3.0 * mu / 0.1, 1e-12);
+}
+
 static int has_stage(const pl_sim_t *sim, const char *name)
 {
     for (int k = 0; k < sim->nstages; ++k)

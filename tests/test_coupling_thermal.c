@@ -128,3 +128,59 @@ Test(coupling_thermal, potential_equipartition, .timeout = 300)
     if (pl_test_quick()) return;
     cr_expect_lt(fabs(t.tc / t.tf - 1.0), 0.05, "T_c %.4f vs fluid %.4f", t.tc, t.tf);
 }
+
+/* scenes/sediment.cfg as shipped: colloids settle under gravity into a layer
+ * on the bottom no-slip wall (coupling II, DLVO + Hertz, Heyes thermostat)
+ * and must then move at the fluid temperature (equipartition, Hecht Sec.
+ * VIII.B).  The former scene (R = 2 a0 colloids of 653 m_f, each coupled to
+ * the 5 fluid particles of one cell) gave T_c = 1.3-1.4 here: the energy
+ * released by settling and by DLVO aggregation left the colloids only on
+ * tau_E ~ 19 t0.  Burn-in 2000 steps (the layer forms by ~2000), then 2500
+ * steps sampled every 5; the colloid velocity relaxes in tau_P = M/xi ~ 0.7
+ * t0, so the samples are nearly independent: SE ~ sqrt(2/(3 N_c n)) ~ 0.4%,
+ * logged from 10 blocks (measured 0.5%); 3% is > 5 SE. */
+Test(coupling_thermal, hecht2_settled_on_wall, .timeout = 300)
+{
+    static pl_scene_t scene;
+    pl_err_t err = {0, ""};
+    cr_assert_eq(pl_scene_load("scenes/sediment.cfg", &scene, &err), 0, "%s", err.msg);
+    pl_sim_t *sim = NULL;
+    cr_assert_eq(pl_sim_create(&scene, 1, &sim, &err), 0, "%s", err.msg);
+    long long burn = pl_test_quick() ? 10 : 2000, steps = pl_test_quick() ? 20 : 2500;
+    pl_test_steps(sim, burn);
+    enum { NB = 10 };
+    double blk[NB] = {0}, blkn[NB] = {0}, tf = 0.0, zmean = 0.0, vz = 0.0;
+    long long ns = 0;
+    const pl_colloid_t *c = sim->colloids;
+    for (long long s = 0; s < steps; s += 5) {
+        pl_test_steps(sim, 5);
+        pl_colloid_energy_t e;
+        pl_colloid_energy(c, &e);
+        int b = (int)(s * NB / steps);
+        blk[b] += 2.0 * e.kin_trans / (3.0 * (double)c->n);
+        blkn[b] += 1.0;
+        for (size_t k = 0; k < c->n; ++k) {
+            zmean += c->z[k] / (double)c->n;
+            vz += c->vz[k] / (double)c->n;
+        }
+        pl_fluid_obs_t o;
+        double kT;
+        pl_sim_observe(sim, &o, &kT);
+        tf += kT;
+        ns++;
+    }
+    double R = scene.colloids.radius;
+    pl_sim_free(sim);
+    double m[NB], tc = 0.0, var = 0.0;
+    for (int b = 0; b < NB; ++b) tc += (m[b] = blk[b] / blkn[b]) / NB;
+    for (int b = 0; b < NB; ++b) var += (m[b] - tc) * (m[b] - tc) / (NB - 1);
+    tf /= (double)ns;
+    zmean /= (double)ns;
+    vz /= (double)ns;
+    cr_log_info("sediment settled: T_c = %.4f +- %.4f, T_fluid = %.4f, mean height %.3f a0 "
+                "(R = %g), mean v_z %.2g", tc, sqrt(var / NB), tf, zmean, R, vz);
+    if (pl_test_quick()) return;
+    cr_expect_lt(zmean, 3.0 * R, "colloids not settled: mean height %.3f a0", zmean);
+    cr_expect_lt(fabs(tc / tf - 1.0), 0.03, "settled colloids at T_c %.4f vs fluid %.4f", tc, tf);
+    cr_expect_lt(fabs(tf - 1.0), 0.01, "fluid held at the thermostat: %.4f", tf);
+}

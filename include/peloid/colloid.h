@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include "peloid/colloid_kernels.h"
+#include "peloid/depletion.h"
 #include "peloid/error.h"
 #include "peloid/scene.h"
 
@@ -21,9 +22,25 @@ typedef struct {
     double hcut, trunc_u, trunc_f; /* cut-off gap, |V| and |F| cut off there */
 } pl_colloid_dlvo_info_t;
 
+/* Colloid-colloid diameter and spurious depletion (PL Sec. III.C.1),
+ * reported at start and in summary.json. */
+typedef struct {
+    int rule;         /* PL_SIGMA_* of wca.sigma_rule */
+    double sigma_cc;  /* sigma of PL Eq. 16 (0: R_i + R_j per pair) */
+    double d_match;   /* twice the colloid-fluid cut-off 2^{1/6} sigma_cf */
+    double phi_sigma; /* Phi_depl(sigma_cc) in kT (sigma_cc 0: at 2R); 0 unless the
+                       * potential coupling acts with fluid */
+    double phi_match; /* phi_cc(d_match) in kT_ref */
+    int table_n;      /* intervals of the depletion_comp table (0: term off) */
+} pl_colloid_depl_info_t;
+
+/* Nodes of the depletion_comp table over [0, d_match]: interpolation error
+ * ~1e-5 kT (cubic Hermite, checked in tests/test_depletion.c). */
+#define PL_COLLOID_DEPL_TABLE 256
+
 typedef struct {
     double kin_trans, kin_rot;
-    double pot[PL_CE_NTERMS]; /* PL_CE_DLVO, _HERTZ, _WCA, _WALL, _GRAVITY */
+    double pot[PL_CE_NTERMS]; /* PL_CE_DLVO, _HERTZ, _WCA, _WALL, _GRAVITY, _DEPL */
     double total;
 } pl_colloid_energy_t;
 
@@ -47,6 +64,8 @@ typedef struct pl_colloid {
     pl_colloid_pair_params_t pair;
     pl_colloid_ext_params_t ext;
     pl_colloid_dlvo_info_t dlvo;
+    pl_colloid_depl_info_t depl;
+    double *dep_table;     /* 2 x (table_n + 2): Phi_comp values, then slopes */
     double box[3];
     int periodic[3];
     int integrator, substeps;
@@ -67,7 +86,14 @@ int pl_colloid_parse_pairs(const char *list, unsigned *mask, char *bad, size_t n
 int pl_colloid_dlvo_setup(const pl_scene_dlvo_t *s, double d_ref, pl_colloid_pair_params_t *p,
                           pl_colloid_dlvo_info_t *info, pl_err_t *err);
 
-/* Pair parameters of every term from the scene (no state needed). */
+/* The colloid-fluid potential of the scene's coupling (coupling.sigma_cf,
+ * 0: colloids.radius; epsilon_cf; PL Eq. 17) with the fluid density and the
+ * run's kT (thermostat target, else fluid temperature): the input of the
+ * depletion potential and of PL's sigma_cc rule. */
+void pl_colloid_depletion_params(const pl_scene_t *scene, pl_depletion_params_t *dp);
+
+/* Pair parameters of every term from the scene (no state needed; the
+ * depletion_comp table itself is built by pl_colloid_setup). */
 int pl_colloid_pair_params(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
                            pl_colloid_dlvo_info_t *info, pl_err_t *err);
 

@@ -17,11 +17,12 @@ enum {
     PL_CT_HERTZ = 2u,
     PL_CT_LUB = 4u,
     PL_CT_WCA = 8u,
-    PL_CT_ALL = 15u,
+    PL_CT_DEPL = 16u, /* tabulated compensation of the depletion (PL Sec. III.C.1) */
+    PL_CT_ALL = 31u,
 };
 
 /* Energy terms, one row of n per term in the energy scratch array. */
-enum { PL_CE_DLVO, PL_CE_HERTZ, PL_CE_WCA, PL_CE_WALL, PL_CE_GRAVITY, PL_CE_NTERMS };
+enum { PL_CE_DLVO, PL_CE_HERTZ, PL_CE_WCA, PL_CE_WALL, PL_CE_GRAVITY, PL_CE_DEPL, PL_CE_NTERMS };
 
 typedef struct {
     unsigned terms;  /* PL_CT_* */
@@ -35,6 +36,11 @@ typedef struct {
     double lub_eta, lub_hmin, lub_hcut;
     /* WCA, PL Eq. 16: sigma > 0 fixed, else R_i + R_j */
     double wca_eps, wca_sigma, wca_n, wca_rfac; /* rfac = 2^{1/n} */
+    /* depletion compensation Phi_comp = -Phi_depl (PL Sec. III.C.1): cubic
+     * Hermite table of value dep_u[k] and slope dep_du[k] at r = k / dep_inv_h,
+     * zero from dep_rc on (twice the colloid-fluid cut-off) */
+    const double *dep_u, *dep_du;
+    double dep_inv_h, dep_rc;
     double gap_cut; /* largest surface-gap cut-off of the DLVO/Hertz/lub terms */
 } pl_colloid_pair_params_t;
 

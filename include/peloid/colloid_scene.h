@@ -6,6 +6,9 @@
 
 enum { PL_CINIT_LATTICE = 0, PL_CINIT_RANDOM = 1, PL_CINIT_FILE = 2 };
 enum { PL_CINT_VERLET = 0, PL_CINT_BROWNIAN = 1 };
+/* wca.sigma_rule: sigma_cc as given, or PL's rule against spurious depletion
+ * (PL Sec. III.C.1, see depletion.h). */
+enum { PL_SIGMA_FIXED = 0, PL_SIGMA_PL = 1 };
 
 typedef struct {
     double eps_r, psi0_mV, z, temperature_K, kappa_per_m, hamaker_J, length_unit_m;
@@ -22,6 +25,7 @@ typedef struct {
 
 typedef struct {
     double epsilon, sigma, n;
+    int sigma_rule; /* PL_SIGMA_* */
 } pl_scene_wca_t;
 
 typedef struct {
@@ -29,7 +33,8 @@ typedef struct {
     double radius, polydispersity, mass_density, temperature;
     int init;              /* PL_CINIT_* */
     char init_file[128];   /* relative to the scene file's directory */
-    char pairs[128];       /* comma-separated subset of dlvo, hertz, lubrication, wca */
+    char pairs[128];       /* comma-separated subset of dlvo, hertz, lubrication, wca,
+                              depletion_comp */
     int integrator;        /* PL_CINT_* */
     long long substeps;    /* MD steps per collision step */
     double gravity[3];

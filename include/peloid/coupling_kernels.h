@@ -43,6 +43,9 @@ typedef struct {
     int placement;    /* PL_PLACE_* */
     int max_refl;     /* N_max */
     uint64_t seed, step;
+    double wall_u[2][3]; /* z wall velocities (bottom, top): a particle pushed through a
+                          * no-slip wall (grid->walls) bounces back in the wall's frame */
+    int64_t *wall_acc;   /* NULL, or the wall impulses (fixed point, bottom xyz, top xyz) */
 } pl_coupling1_params_t;
 
 /* After stream+bin: every fluid particle found inside a colloid is moved out

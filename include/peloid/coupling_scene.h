@@ -24,6 +24,7 @@ typedef struct {
     int pinned;                /* colloids held fixed; their impulse is measured (drag) */
     double flow_velocity[3];   /* pinned: fluid mean velocity held at this value */
     double sigma_cf, epsilon_cf; /* PL Eq. 17 (sigma_cf 0: colloids.radius) */
+    double max_settling_energy;  /* hecht2 + gravity: bound on M v_s^2 / kT (0: off) */
 } pl_scene_coupling_t;
 
 #endif

@@ -31,6 +31,7 @@ typedef struct {
     int cells[3];  /* box edge lengths in cells (a0 = 1) */
     int walls_z;   /* PL_WALLS_*: planar walls at z = 0 and z = Lz */
     int walls_xy;  /* PL_WALLS_*: walls at x = 0, Lx and y = 0, Ly (a capillary) */
+    double wall_velocity[2][3]; /* no-slip wall velocities (bottom, top); z = 0 */
 } pl_scene_box_t;
 
 /* Wall type (PL_WALLS_*) of each axis: walls_xy on x and y, walls_z on z.
@@ -147,6 +148,9 @@ extern const pl_section_t pl_scene_section_coupling;
 
 /* Cross-key checks of the coupling section (src/coupling_scene.c). */
 int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err);
+/* Coupling II friction of a colloid of mass M (m_f): 2/3 (1 - cos alpha) mu / dt,
+ * mu = M gamma / (M + gamma); an upper bound (src/coupling.c). */
+double pl_coupling2_friction(const pl_scene_t *scene, double mass);
 
 /* Cross-key checks of the colloid sections (src/colloid_scene.c). */
 int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err);

@@ -37,7 +37,12 @@ struct pl_sim {
     double *block_sum;    /* 2 x ceil(ncells / PL_CELL_BLOCK) */
     double *obs_scratch;  /* pl_srd_observe_scratch(n) */
     double last_kT_meas;  /* PL Eq. A1 temperature of the last collision */
-    double wall_u[2][3];  /* wall velocities (bottom, top) */
+    double wall_u[2][3];  /* wall velocities (bottom, top): box.wall_velocity_* */
+    /* walls: impulse the walls gave fluid (and colloids) since step 0,
+     * (bottom, top) x (x, y, z); checkpointed.  The wall stress (PL Eq. 13). */
+    double wall_impulse[2][3];
+    int64_t *wall_acc;    /* nthreads x PL_WALL_ACC_STRIDE (streaming bounces) */
+    double *wall_dp;      /* 6 x blocks (virtual particles of the collision) */
     /* time-averaged fields */
     int64_t *field_acc;   /* 4 x L0 L1 L2, fixed point */
     long long field_samples;
@@ -60,6 +65,15 @@ int pl_sim_step(pl_sim_t *sim, pl_err_t *err);
 
 /* Drift parameters of the current step (dt, body force, wall velocities). */
 void pl_sim_stream_params(const pl_sim_t *sim, pl_stream_params_t *p);
+
+/* Adds fixed-point wall impulses (bottom xyz, top xyz; 2^-PL_FIELD_FIXED_SHIFT)
+ * to sim->wall_impulse. */
+void pl_sim_wall_add(pl_sim_t *sim, const int64_t acc[6]);
+
+/* Shear stress sigma_{dz} (d = x, y) from the momentum wall w gave the fluid
+ * since step 0, per wall area and time (PL Eq. 13): +F_top / A and -F_bottom / A,
+ * so both walls measure the same stress; 0 before the first step. */
+double pl_sim_wall_stress(const pl_sim_t *sim, int wall, int d);
 
 /* Observables of the current state (fixed-order reductions). */
 void pl_sim_observe(const pl_sim_t *sim, pl_fluid_obs_t *obs, double *kT);

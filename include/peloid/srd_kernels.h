@@ -11,10 +11,17 @@
 #include "peloid/grid.h"
 
 /* ---- streaming fused with cell binning (kernels/srd_stream.c) ---------- */
+/* Wall impulse accumulators: PL_WALL_ACC_STRIDE int64 per thread (one cache
+ * line), the first 6 the impulse (bottom xyz, top xyz) in fixed point
+ * 2^-PL_FIELD_FIXED_SHIFT. */
+enum { PL_WALL_ACC_STRIDE = 8 };
+
 typedef struct {
     double dt;          /* collision time step */
     double accel[3];    /* body force per unit mass (kick before the drift) */
     double wall_u[2][3];/* wall velocities (bottom z = 0, top z = Lz) */
+    int64_t *wall_acc;  /* NULL, or nthreads x PL_WALL_ACC_STRIDE: pl_srd_stream_bin
+                         * writes the impulse the walls gave each thread's chunk */
 } pl_stream_params_t;
 
 /* r += v dt (after v += accel dt) with periodic wrap or wall reflection,
@@ -23,6 +30,13 @@ typedef struct {
  * the particle (static partition pl_chunk).  hist: nthreads x ncells. */
 void pl_srd_stream_bin(pl_fluid_t *fluid, const pl_grid_t *grid, const pl_stream_params_t *p,
                        uint32_t *hist, int nthreads);
+
+/* The impulse pl_srd_stream_bin's bounces give one particle that starts at
+ * (r0, v0), added to acc (fixed point, bottom xyz, top xyz) bitwise as the
+ * streaming adds it: lets a caller take back the count of a particle whose
+ * streaming it replaces (the potential coupling). */
+void pl_srd_stream_wall_impulse(const pl_grid_t *g, const pl_stream_params_t *p, const double r0[3],
+                                const double v0[3], int64_t acc[6]);
 
 /* Cell binning only (no motion): used after initialisation and restart. */
 void pl_srd_bin(pl_fluid_t *fluid, const pl_grid_t *grid, uint32_t *hist, int nthreads);
@@ -71,6 +85,8 @@ typedef struct {
     double ghost_density; /* gamma */
     double kT_wall;
     double wall_u[2][3];
+    double *wall_dp;      /* NULL, or 6 x nblocks: momentum the virtual particles
+                           * gave the cells of block b (bottom xyz, top xyz) */
 } pl_collide_params_t;
 
 /* Fixed-order reductions are done over blocks of this many cells. */

@@ -1,24 +1,32 @@
 /* The SRD collision rule and the Heyes acceptance, shared by the fluid
  * collision (kernels/srd_collide.c) and coupling II (kernels/coupling_collide.c).
- * Pure functions of uniforms drawn by the caller (each caller keys its own
- * counter-based stream). */
+ * Pure functions of the caller's counter-based stream key or of uniforms it
+ * drew (each caller keys its own stream). */
 #ifndef PELOID_SRD_RULES_H
 #define PELOID_SRD_RULES_H
 
 #include <math.h>
 
+#include "peloid/rng.h"
 #include "peloid/scene.h"
 
-/* Rotation matrix from two uniforms u0, u1 in (0, 1).
- * PL_RULE_RANDOM_AXIS: rotation by alpha (cos_a, sin_a) about an axis uniform
- * on the sphere (PL Eq. 3, Rodrigues' formula).  PL_RULE_HECHT_AXES: +-90 deg
- * about one of the three coordinate axes, each of the 6 with probability 1/6
- * (Hecht Sec. III); u1 unused. */
-static inline void pl_srd_rotation(int rule, double cos_a, double sin_a, double u0, double u1,
-                                   double R[3][3])
+/* Rotation matrix of one cell's collision, from the caller's counter-based
+ * stream (seed, purpose, step, cell) (draw 0, and draw 1, 2, ... only when
+ * needed).  PL_RULE_RANDOM_AXIS: rotation by alpha (cos_a, sin_a) about an
+ * axis uniform on the sphere (PL Eq. 3, Rodrigues' formula); the axis by
+ * Marsaglia's method (Ann. Math. Stat. 43, 645 (1972)): (a, b) uniform in the
+ * unit disc, s = a^2 + b^2, n = (2a sqrt(1-s), 2b sqrt(1-s), 1-2s), which
+ * needs no trigonometric function.  One draw gives two (a, b) pairs; the
+ * first inside the disc is used (the second only when the first is not:
+ * probability 1 - pi/4), a further draw when neither is (0.046).
+ * PL_RULE_HECHT_AXES: +-90 deg about one of the three coordinate axes, each
+ * of the 6 with probability 1/6 (Hecht Sec. III), from the first uniform. */
+static inline void pl_srd_rotation(int rule, double cos_a, double sin_a, uint64_t seed,
+                                   uint64_t purpose, uint64_t step, uint64_t cell, double R[3][3])
 {
+    pl_rand4_t r = pl_rng_uniform4(seed, purpose, step, cell, 0);
     if (rule == PL_RULE_HECHT_AXES) {
-        int k = (int)(u0 * 6.0); /* 0..5: axis k/2, sign by parity */
+        int k = (int)(r.u[0] * 6.0); /* 0..5: axis k/2, sign by parity */
         if (k > 5) k = 5;
         int a = k >> 1;
         double s = (k & 1) ? -1.0 : 1.0;
@@ -31,9 +39,20 @@ static inline void pl_srd_rotation(int rule, double cos_a, double sin_a, double 
         R[b][c] = -s;
         return;
     }
-    double cz = 2.0 * u0 - 1.0, sz = sqrt(1.0 - cz * cz);
-    double phi = 6.283185307179586476925 * u1;
-    double n[3] = {sz * cos(phi), sz * sin(phi), cz};
+    double a, b, s;
+    for (uint64_t draw = 1;; ++draw) {
+        const double a0 = 2.0 * r.u[0] - 1.0, b0 = 2.0 * r.u[1] - 1.0;
+        const double a1 = 2.0 * r.u[2] - 1.0, b1 = 2.0 * r.u[3] - 1.0;
+        const double s0 = a0 * a0 + b0 * b0, s1 = a1 * a1 + b1 * b1;
+        const int first = s0 < 1.0; /* selects, not branches: the usual case is cheap */
+        a = first ? a0 : a1;
+        b = first ? b0 : b1;
+        s = first ? s0 : s1;
+        if (s < 1.0) break;
+        r = pl_rng_uniform4(seed, purpose, step, cell, draw);
+    }
+    const double q = 2.0 * sqrt(1.0 - s);
+    double n[3] = {a * q, b * q, 1.0 - 2.0 * s};
     double ca = cos_a, sa = sin_a, oc = 1.0 - ca;
     R[0][0] = ca + n[0] * n[0] * oc;
     R[0][1] = n[0] * n[1] * oc - n[2] * sa;

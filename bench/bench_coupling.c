@@ -1,0 +1,188 @@
+/* Cost of each colloid-solvent coupling against the bare fluid step, next to
+ * the STREAM triad measured in the same run.
+ *
+ * Scene: periodic box of L = 32 cells, gamma = 5 fluid particles per cell,
+ * alpha = 130 deg, dt = 0.1, grid shift on, no thermostat; 64 colloids of
+ * radius 2 a0 on a simple cubic lattice (volume fraction 6.5 %), neutrally
+ * buoyant (mass density gamma), Hertz contacts, 4 MD steps per collision
+ * step.  Cases: the bare fluid (no colloids), the colloids with no coupling
+ * (MD only), and the couplings hecht1 (stick_stochastic, entry placement),
+ * hecht2 and potential (sigma_cf = 2 a0, epsilon_cf = 2.5 kT; colloid WCA
+ * of PL Eq. 16 with sigma_cc = 4.3 a0).
+ *
+ * Per case and thread count: median (min..max) over `reps` repetitions of the
+ * wall time per step per fluid particle, fluid particle-updates/s (per core),
+ * the ratio to the bare fluid of the same thread count, the effective GB/s
+ * of the bare step's byte model (248 B per particle in double, see
+ * bench_srd.c: the couplings move more, so this is the bandwidth-equivalent
+ * rate), and the share of the time each coupling stage takes.
+ *
+ * Output: one TSV line per case on stdout and in bench/out/coupling.tsv.
+ * Usage: bench_coupling [--quick] [--threads N] [--reps R] [--out DIR]
+ *        (PL_BENCH_QUICK=1 = --quick: L = 24, 3 reps) */
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "bench_common.h"
+#include "peloid/sim.h"
+
+enum { MAX_REPS = 32 };
+
+typedef struct {
+    const char *name;
+    const char *text; /* scene tail after the common head */
+} case_t;
+
+static const char *HEAD =
+    "seed = 11;\n"
+    "box: { cells = [%d, %d, %d]; };\n"
+    "fluid: { density = 5.0; temperature = 1.0; };\n"
+    "srd: { dt = 0.1; rule = \"random_axis\"; alpha = 130.0; grid_shift = true; };\n"
+    "output: { thermo_interval = 1000000; };\n";
+
+#define COLLOIDS(pairs)                                                                        \
+    "colloids: { count = %d; radius = 2.0; mass_density = 5.0; temperature = 1.0;\n"           \
+    "  init = \"lattice\"; pairs = \"" pairs "\"; substeps = 4; };\n"
+
+static const case_t CASES[] = {
+    {"fluid", ""},
+    {"colloid-md", COLLOIDS("hertz") "coupling: { method = \"none\"; };\n"},
+    {"hecht1", COLLOIDS("hertz") "coupling: { method = \"hecht1\"; boundary = \"stick_stochastic\";"
+                                 " placement = \"entry\"; };\n"},
+    {"hecht2", COLLOIDS("hertz") "coupling: { method = \"hecht2\"; };\n"},
+    {"potential", COLLOIDS("wca") "wca: { epsilon = 2.5; sigma = 4.3; n = 24.0; };\n"
+                                  "coupling: { method = \"potential\"; sigma_cf = 2.0; epsilon_cf = 2.5; };\n"},
+};
+enum { NCASES = sizeof CASES / sizeof CASES[0] };
+
+static int make_sim(const case_t *c, int L, int ncolloids, int nt, pl_sim_t **sim, pl_scene_t *sc)
+{
+    char text[2048], tail[1024];
+    int n = snprintf(text, sizeof text, HEAD, L, L, L);
+    snprintf(tail, sizeof tail, c->text, ncolloids);
+    snprintf(text + n, sizeof text - (size_t)n, "%s", tail);
+    pl_err_t err;
+    memset(&err, 0, sizeof err);
+    if (pl_scene_load_string(text, "bench_coupling", sc, &err) || pl_sim_create(sc, nt, sim, &err)) {
+        fprintf(stderr, "bench_coupling: %s: %s\n", c->name, err.msg);
+        return 1;
+    }
+    return 0;
+}
+
+/* Median ns per fluid particle and step of the whole step, and the share of
+ * the coupling stages (any stage not in the bare fluid plan). */
+static int run_case(const case_t *c, int L, int ncolloids, int nt, int reps, double rep_seconds,
+                    double *ns, double *coupling_share, double *nfluid, char *stages, size_t ssz)
+{
+    pl_scene_t sc;
+    pl_sim_t *sim;
+    if (make_sim(c, L, ncolloids, nt, &sim, &sc)) return 1;
+    pl_err_t err;
+    memset(&err, 0, sizeof err);
+    int rc = 0;
+    for (int s = 0; s < 20 && !rc; ++s) rc = pl_sim_step(sim, &err); /* settle the first sorts */
+    double t0 = omp_get_wtime();
+    for (int s = 0; s < 3 && !rc; ++s) rc = pl_sim_step(sim, &err);
+    const double per_step = (omp_get_wtime() - t0) / 3.0;
+    long steps = (long)ceil(rep_seconds / (per_step > 1e-7 ? per_step : 1e-7));
+    if (steps < 3) steps = 3;
+    const double n = (double)sim->fluid.n;
+    double share[MAX_REPS];
+    for (int r = 0; r < reps && !rc; ++r) {
+        for (int k = 0; k < sim->nstages; ++k) sim->stages[k].seconds = 0.0;
+        t0 = omp_get_wtime();
+        for (long s = 0; s < steps && !rc; ++s) rc = pl_sim_step(sim, &err);
+        const double wall = omp_get_wtime() - t0;
+        double cs = 0.0;
+        for (int k = 0; k < sim->nstages; ++k) {
+            const char *nm = sim->stages[k].name;
+            if (strcmp(nm, "stream+bin") && strcmp(nm, "sort") && strcmp(nm, "collide")) cs += sim->stages[k].seconds;
+        }
+        ns[r] = 1e9 * wall / (double)steps / n;
+        share[r] = cs / wall;
+    }
+    if (rc) fprintf(stderr, "bench_coupling: %s: %s\n", c->name, err.msg);
+    double lo, hi;
+    bench_stats(share, reps, coupling_share, &lo, &hi);
+    *nfluid = n;
+    stages[0] = 0;
+    for (int k = 0; k < sim->nstages; ++k) {
+        size_t used = strlen(stages);
+        snprintf(stages + used, ssz - used, "%s%s", k ? "," : "", sim->stages[k].name);
+    }
+    pl_sim_free(sim);
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    bench_pin_or_reexec(argv);
+    int quick = getenv("PL_BENCH_QUICK") && atoi(getenv("PL_BENCH_QUICK"));
+    int max_threads = omp_get_max_threads(), reps = 5;
+    const char *outdir = "bench/out";
+    for (int i = 1; i < argc; ++i) {
+        if (!strcmp(argv[i], "--quick")) quick = 1;
+        else if (!strcmp(argv[i], "--threads") && i + 1 < argc) max_threads = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--reps") && i + 1 < argc) reps = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--out") && i + 1 < argc) outdir = argv[++i];
+        else {
+            fprintf(stderr, "usage: bench_coupling [--quick] [--threads N] [--reps R] [--out DIR]\n");
+            return 2;
+        }
+    }
+    if (quick) reps = 3;
+    if (reps < 3) reps = 3;
+    if (reps > MAX_REPS) reps = MAX_REPS;
+    if (max_threads < 1) max_threads = 1;
+    /* L = 32 with 64 colloids (R = 2: phi = 6.5 %); quick: L = 24 with 27 */
+    const int L = quick ? 24 : 32, ncolloids = quick ? 27 : 64;
+    const double rep_seconds = quick ? 0.3 : 0.6;
+    const double step_bytes = 30.0 * (double)sizeof(pl_real) + 8.0; /* bench_srd.c byte model */
+
+    mkdir(outdir, 0777);
+    char path[512];
+    snprintf(path, sizeof path, "%s/coupling.tsv", outdir);
+    FILE *tsv = fopen(path, "w");
+    if (!tsv) {
+        fprintf(stderr, "bench_coupling: cannot write %s\n", path);
+        return 1;
+    }
+    printf("# bench_coupling  peloid %s  cflags %s  real %s  L %d  colloids %d\n", PL_GIT_REV, PL_CFLAGS,
+           PL_REAL_NAME, L, ncolloids);
+    bench_print_topology(stdout);
+    const char *hdr = "case\tL\tthreads\tfluid_particles\tcolloids\tns_per_particle\tns_min\tns_max"
+                      "\tupdates_per_s\tupdates_per_s_per_core\tratio_to_fluid\tcoupling_stage_share"
+                      "\teff_GBps\tstream_GBps\tpct_of_stream_bound\treps\tstages\n";
+    printf("%s", hdr);
+    fputs(hdr, tsv);
+    int rc = 0;
+    for (int t = 1; t <= max_threads && !rc; ++t) {
+        double slo, shi;
+        const double stream = bench_stream_triad((size_t)1 << 25, t, 3, &slo, &shi);
+        double fluid_ns = NAN;
+        for (int k = 0; k < NCASES && !rc; ++k) {
+            double ns[MAX_REPS], share, nf, med, lo, hi;
+            char stages[512];
+            rc = run_case(&CASES[k], L, ncolloids, t, reps, rep_seconds, ns, &share, &nf, stages, sizeof stages);
+            if (rc) break;
+            bench_stats(ns, reps, &med, &lo, &hi);
+            if (k == 0) fluid_ns = med;
+            const double ups = 1e9 / med, gbs = step_bytes / med;
+            char line[1024];
+            snprintf(line, sizeof line,
+                     "%s\t%d\t%d\t%.0f\t%d\t%.3f\t%.3f\t%.3f\t%.4g\t%.4g\t%.3f\t%.3f\t%.2f\t%.2f\t%.1f\t%d\t%s\n",
+                     CASES[k].name, L, t, nf, k ? ncolloids : 0, med, lo, hi, ups, ups / t, med / fluid_ns,
+                     share, gbs, stream, 100.0 * gbs / stream, reps, stages);
+            fputs(line, stdout);
+            fputs(line, tsv);
+            fflush(stdout);
+        }
+    }
+    fclose(tsv);
+    return rc;
+}

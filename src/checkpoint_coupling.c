@@ -1,0 +1,56 @@
+/* Coupling and wall part of the checkpoint: the run counters that thermo.tsv
+ * reports as sums since step 0, so that a restarted run writes the same rows
+ * as an uninterrupted one:
+ *   - /wall_impulse (walls): momentum each wall gave the fluid (wall stress);
+ *   - /coupling/counters: coupling I reflections and truncations, the
+ *     potential coupling's selected particle-steps;
+ *   - /coupling/pinned: impulse (momentum, angular momentum) the pinned
+ *     colloids received, and the time it was summed over (drag).
+ * Not stored, because every step rebuilds it before use: the colloid lookups,
+ * coupling II's colloid binning and saved velocities, the potential
+ * coupling's near list, its forces and epot_cf (recomputed at the start of
+ * each MD stage), and fluid_accel (from the scene's masses). */
+#include "checkpoint_h5.h"
+#include "peloid/coupling.h"
+#include "peloid/sim.h"
+
+int pl_ckpt_coupling_write(hid_t f, const pl_sim_t *sim)
+{
+    int bad = 0;
+    if (sim->wall_acc)
+        bad |= pl_ckpt_write_1d(f, "wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[0][0], 6);
+    const pl_coupling_t *cp = sim->coupling;
+    if (!cp) return bad ? -1 : 0;
+    hid_t g = pl_ckpt_group_create(f, "coupling");
+    if (g < 0) return -1;
+    const unsigned long long cnt[3] = {cp->events, cp->truncations, cp->near_total};
+    double pin[7];
+    for (int k = 0; k < 6; ++k) pin[k] = cp->impulse[k];
+    pin[6] = cp->pinned_time;
+    bad |= pl_ckpt_write_1d(g, "counters", H5T_NATIVE_ULLONG, cnt, 3);
+    bad |= pl_ckpt_write_1d(g, "pinned", H5T_NATIVE_DOUBLE, pin, 7);
+    if (H5Gclose(g) < 0) bad = 1;
+    return bad ? -1 : 0;
+}
+
+int pl_ckpt_coupling_read(hid_t f, pl_sim_t *sim, const char *path, pl_err_t *err)
+{
+    if (sim->wall_acc && pl_ckpt_read_1d(f, "wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[0][0], 6))
+        return pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint has no wall_impulse (the scene has walls)", path);
+    pl_coupling_t *cp = sim->coupling;
+    if (!cp) return 0;
+    hid_t g = H5Lexists(f, "coupling", H5P_DEFAULT) > 0 ? H5Gopen2(f, "coupling", H5P_DEFAULT) : -1;
+    if (g < 0) return pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint has no /coupling group (the scene has a coupling)", path);
+    unsigned long long cnt[3];
+    double pin[7];
+    int bad = pl_ckpt_read_1d(g, "counters", H5T_NATIVE_ULLONG, cnt, 3);
+    bad |= pl_ckpt_read_1d(g, "pinned", H5T_NATIVE_DOUBLE, pin, 7);
+    H5Gclose(g);
+    if (bad) return pl_err_set(err, PL_ERR_INPUT, "%s: /coupling in the checkpoint is incomplete or corrupt", path);
+    cp->events = cnt[0];
+    cp->truncations = cnt[1];
+    cp->near_total = cnt[2];
+    for (int k = 0; k < 6; ++k) cp->impulse[k] = pin[k];
+    cp->pinned_time = pin[6];
+    return 0;
+}

@@ -1,0 +1,128 @@
+/* Coupling checkpoint/restart: for each coupling, 2N steps == N steps +
+ * checkpoint + restart + N steps, bitwise, in the state (fluid, colloids)
+ * AND in the run counters thermo.tsv reports as sums since step 0: coupling I
+ * reflections and truncations, the potential coupling's selected
+ * particle-steps, the pinned colloids' impulse and time (drag), the walls'
+ * impulse (wall stress), kT_cell of the last collision.  Before reading, the
+ * resumed sim's counters are poisoned, so a counter the checkpoint leaves out
+ * fails the comparison even where it would be 0.  Scenes: hecht1 between
+ * moving no-slip walls with N_max = 1 (truncations, particles pushed through
+ * a wall), hecht2 with Heyes and drift removal, potential between moving
+ * walls, pinned colloids under a held flow (hecht1 and potential). */
+#include <criterion/criterion.h>
+#include <stdio.h>
+#include <unistd.h>
+
+#include "peloid/colloid.h"
+#include "peloid/coupling.h"
+#include "peloid/io.h"
+#include "support.h"
+
+#define BOX "box: { cells = [12, 12, 12]%s; };\nfluid: { density = 5.0; };\nsrd: { dt = 0.1; };\n"
+#define COLLR(n, init, R) "colloids: { count = " #n "; radius = " #R "; mass_density = 6.0; init = \"" #init "\"; " \
+                         "pairs = \"hertz\"; substeps = 4; };\n"
+#define COLL(n, init) COLLR(n, init, 1.8)
+#define BASE BOX COLL(8, random)
+#define WALLS "; walls_z = \"noslip\"; wall_velocity_bottom = [-0.2, 0.1, 0.0]; wall_velocity_top = [0.2, 0.0, 0.0]"
+
+static const char *scenes[] = {
+    /* a lattice with gaps of 0.2 a0: reflections land in neighbours, N_max = 1 truncates */
+    "seed = 31;\n" BOX COLLR(27, lattice, 1.9) "coupling: { method = \"hecht1\"; max_reflections = 1; };\n"
+    "thermostat: { type = \"rescale\"; };\n",
+    "seed = 32;\n" BASE "coupling: { method = \"hecht2\"; drift_interval = 3; };\n"
+    "thermostat: { type = \"heyes\"; };\n",
+    "seed = 33;\n" BASE "coupling: { method = \"potential\"; sigma_cf = 1.8; };\n",
+    "seed = 34;\n" BASE "coupling: { method = \"hecht1\"; pinned = true; flow_velocity = [0.1, 0.0, 0.0]; };\n",
+    "seed = 35;\n" BASE "coupling: { method = \"potential\"; pinned = true; flow_velocity = [0.0, 0.1, 0.0]; };\n",
+};
+/* which scenes have the moving walls */
+static const int walled[] = {1, 0, 1, 0, 1};
+enum { NSCENES = sizeof scenes / sizeof *scenes };
+
+static pl_sim_t *make(size_t s, int threads)
+{
+    char text[2048];
+    snprintf(text, sizeof text, scenes[s], walled[s] ? WALLS : "");
+    return pl_test_sim(text, threads);
+}
+
+#define SAME(a, b, bytes, ...) cr_assert_eq(memcmp((a), (b), (bytes)), 0, __VA_ARGS__)
+
+static void assert_same(const pl_sim_t *a, const pl_sim_t *b, size_t s)
+{
+    cr_assert_eq(a->step, b->step, "scene %zu: step", s);
+    size_t nf = a->fluid.n * sizeof(pl_real);
+    for (int d = 0; d < 3; ++d) {
+        SAME(a->fluid.r[d], b->fluid.r[d], nf, "scene %zu: fluid r[%d]", s, d);
+        SAME(a->fluid.v[d], b->fluid.v[d], nf, "scene %zu: fluid v[%d]", s, d);
+    }
+    const pl_colloid_t *ca = a->colloids, *cb = b->colloids;
+    size_t m = ca->n * sizeof(double);
+    const double *xa[] = {ca->x, ca->y, ca->z, ca->vx, ca->vy, ca->vz, ca->wx, ca->wy, ca->wz,
+                          ca->q0, ca->q1, ca->q2, ca->q3, ca->fx, ca->fy, ca->fz};
+    const double *xb[] = {cb->x, cb->y, cb->z, cb->vx, cb->vy, cb->vz, cb->wx, cb->wy, cb->wz,
+                          cb->q0, cb->q1, cb->q2, cb->q3, cb->fx, cb->fy, cb->fz};
+    for (size_t k = 0; k < sizeof xa / sizeof *xa; ++k) SAME(xa[k], xb[k], m, "scene %zu: colloid array %zu", s, k);
+    const pl_coupling_t *pa = a->coupling, *pb = b->coupling;
+    cr_assert_eq(pa->events, pb->events, "scene %zu: events %llu / %llu", s, pa->events, pb->events);
+    cr_assert_eq(pa->truncations, pb->truncations, "scene %zu: truncations %llu / %llu", s, pa->truncations,
+                 pb->truncations);
+    cr_assert_eq(pa->near_total, pb->near_total, "scene %zu: near_total %llu / %llu", s, pa->near_total,
+                 pb->near_total);
+    SAME(pa->impulse, pb->impulse, sizeof pa->impulse, "scene %zu: pinned impulse", s);
+    SAME(&pa->pinned_time, &pb->pinned_time, sizeof pa->pinned_time, "scene %zu: pinned_time", s);
+    SAME(a->wall_impulse, b->wall_impulse, sizeof a->wall_impulse, "scene %zu: wall impulse", s);
+    SAME(&a->last_kT_meas, &b->last_kT_meas, sizeof a->last_kT_meas, "scene %zu: kT_cell", s);
+}
+
+/* The scenes really exercise what they are meant to (else the test proves little). */
+static void assert_exercised(const pl_sim_t *sim, size_t s)
+{
+    const pl_coupling_t *cp = sim->coupling;
+    if (cp->method == PL_COUPLE_HECHT1) cr_assert_gt(cp->events, 0, "scene %zu: no reflections", s);
+    if (s == 0) cr_assert_gt(cp->truncations, 0, "scene %zu: no truncations", s);
+    if (cp->method == PL_COUPLE_POTENTIAL) cr_assert_gt(cp->near_total, 0, "scene %zu: nothing selected", s);
+    if (cp->pinned) cr_assert(cp->pinned_time > 0 && cp->impulse[0] != 0.0, "scene %zu: no drag", s);
+    if (walled[s]) cr_assert(sim->wall_impulse[1][0] != 0.0, "scene %zu: no wall impulse", s);
+}
+
+static void poison(pl_sim_t *sim)
+{
+    pl_coupling_t *cp = sim->coupling;
+    cp->events = cp->truncations = cp->near_total = 12345;
+    for (int k = 0; k < 6; ++k) cp->impulse[k] = -7.0;
+    cp->pinned_time = -7.0;
+    if (sim->wall_acc) /* only scenes with walls have (and store) wall impulses */
+        for (int k = 0; k < 6; ++k) sim->wall_impulse[k / 3][k % 3] = -7.0;
+    sim->last_kT_meas = -7.0;
+}
+
+Test(coupling_restart, restart_continues_bitwise_with_counters, .timeout = 300)
+{
+    long long N = 10; /* enough for truncations in scene 0; seconds even under the sanitizers */
+    char path[] = "/tmp/peloid_test_cplckpt_XXXXXX";
+    int fd = mkstemp(path);
+    cr_assert_geq(fd, 0);
+    close(fd);
+    for (size_t s = 0; s < NSCENES; ++s) {
+        pl_err_t err = {0, ""};
+        pl_sim_t *full = make(s, 2);
+        pl_test_steps(full, 2 * N);
+        assert_exercised(full, s);
+        pl_sim_t *half = make(s, 1);
+        pl_test_steps(half, N);
+        cr_assert_eq(pl_checkpoint_write(half, path, &err), 0, "%s", err.msg);
+        pl_sim_t *resumed = make(s, 2);
+        poison(resumed);
+        cr_assert_eq(pl_checkpoint_read(resumed, path, &err), 0, "scene %zu: %s", s, err.msg);
+        /* at the restart step (its thermo row repeats the last one written) ... */
+        assert_same(half, resumed, s);
+        pl_sim_free(half);
+        /* ... and N steps on */
+        pl_test_steps(resumed, N);
+        assert_same(full, resumed, s);
+        pl_sim_free(full);
+        pl_sim_free(resumed);
+    }
+    unlink(path);
+}
