@@ -89,7 +89,8 @@ check-cli: $(BIN)
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
 # shrinks the physics runs; the sanitizers slow code ~3-10x).
 ASAN_TESTS := test_scene test_collide test_sort test_determinism test_colloid_forces \
-              test_colloid_guards test_colloid_md test_colloid_restart test_coupling_restart
+              test_colloid_guards test_colloid_md test_colloid_restart test_capillary \
+              test_coupling_restart
 check-asan: | deps
 	@$(MAKE) --no-print-directory BUILD=build-asan \
 	  OPTFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \

@@ -2,7 +2,7 @@
  * PL Eqs. 18-19, written as kick-drift-kick), the same split for rotation
  * (Hecht Eq. 9 with the torque over the moment of inertia) and the quaternion
  * update of the orientation (Hecht Eq. 10), normalised every step; external
- * forces (gravity, closed-z walls).
+ * forces (gravity, the walls of closed axes).
  *
  * Every loop is per particle and writes only particle i: no races, and the
  * result does not depend on the thread count. */
@@ -82,7 +82,8 @@ void pl_colloid_drift(size_t n, double dt, const double box[3], const int period
     }
 }
 
-void pl_colloid_ext_forces(const pl_colloid_ext_params_t *p, size_t n, const double *restrict z,
+void pl_colloid_ext_forces(const pl_colloid_ext_params_t *p, size_t n, const double *restrict x,
+                           const double *restrict y, const double *restrict z,
                            const double *restrict zu, const double *restrict rad,
                            const double *restrict mass, double *restrict fx,
                            double *restrict fy, double *restrict fz, double *restrict epot)
@@ -95,21 +96,24 @@ void pl_colloid_ext_forces(const pl_colloid_ext_params_t *p, size_t n, const dou
         fy[i] += m * p->g[1];
         fz[i] += m * p->g[2];
         double ew = 0.0;
-        if (p->walls) {
+        const double pos[3] = {x[i], y[i], z[i]};
+        double *const f[3] = {&fx[i], &fy[i], &fz[i]};
+        for (int d = 0; d < 3; ++d) {
+            if (!p->walls[d]) continue;
             /* PL Eq. 16 form against each wall, sigma = R_i, r = wall distance */
-            double s = rad[i], hs[2] = {z[i], p->lz - z[i]}, sg[2] = {1.0, -1.0};
+            double s = rad[i], hs[2] = {pos[d], p->L[d] - pos[d]}, sg[2] = {1.0, -1.0};
             for (int w = 0; w < 2; ++w) {
                 double hw = hs[w] > 1e-3 * s ? hs[w] : 1e-3 * s;
                 if (hw < rf * s) {
                     double sn = pow(s / hw, nn), s2n = sn * sn;
                     ew += 4.0 * eps * (s2n - sn + 0.25);
-                    fz[i] += sg[w] * 4.0 * eps * nn * (2.0 * s2n - sn) / hw;
+                    *f[d] += sg[w] * 4.0 * eps * nn * (2.0 * s2n - sn) / hw;
                 }
             }
         }
         if (epot) {
             epot[(size_t)PL_CE_WALL * n + i] = ew;
-            /* -m g . x with the unwrapped height (x, y have no closed axis) */
+            /* -m g . x with the unwrapped height (gravity acts along z) */
             epot[(size_t)PL_CE_GRAVITY * n + i] = -m * p->g[2] * zu[i];
         }
     }

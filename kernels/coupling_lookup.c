@@ -20,12 +20,18 @@ static inline int cell_1d(double x, double s, int n)
 
 uint32_t pl_coupling_cell_of(const pl_grid_t *g, double x, double y, double z)
 {
-    int iz = g->walls_z != PL_WALLS_NONE ? (int)floor(z - g->shift[2]) + 1
-                                         : cell_1d(z, g->shift[2], g->n[2]);
-    if (iz < 0) iz = 0;
-    if (iz >= g->n[2]) iz = g->n[2] - 1;
-    return (uint32_t)((iz * g->n[1] + cell_1d(y, g->shift[1], g->n[1])) * g->n[0] +
-                      cell_1d(x, g->shift[0], g->n[0]));
+    const double r[3] = {x, y, z};
+    int ic[3];
+    for (int d = 0; d < 3; ++d) {
+        if (g->walls[d] == PL_WALLS_NONE) {
+            ic[d] = cell_1d(r[d], g->shift[d], g->n[d]);
+            continue;
+        }
+        ic[d] = (int)floor(r[d] - g->shift[d]) + 1; /* closed axis: cells 0 .. L+1 */
+        if (ic[d] < 0) ic[d] = 0;
+        if (ic[d] >= g->n[d]) ic[d] = g->n[d] - 1;
+    }
+    return (uint32_t)((ic[2] * g->n[1] + ic[1]) * g->n[0] + ic[0]);
 }
 
 /* Cell range [lo, hi] along one axis touched by [x - R, x + R]; periodic
@@ -50,11 +56,12 @@ static inline int wrapi(int i, int L)
     return i < 0 ? i + L : i;
 }
 
-size_t pl_coupling_lookup_build(const pl_coupling_colloids_t *c, const int L[3], int walls_z,
+size_t pl_coupling_lookup_build(const pl_coupling_colloids_t *c, const int L[3], const int walls[3],
                                 int32_t *start, int32_t *list, size_t cap)
 {
     const size_t ncells = (size_t)L[0] * (size_t)L[1] * (size_t)L[2];
-    int per[3] = {1, 1, walls_z == PL_WALLS_NONE};
+    int per[3];
+    for (int d = 0; d < 3; ++d) per[d] = walls[d] == PL_WALLS_NONE;
     memset(start, 0, (ncells + 1) * sizeof *start);
     for (int pass = 0; pass < 2; ++pass) {
         for (size_t k = 0; k < c->n; ++k) {
@@ -82,7 +89,7 @@ size_t pl_coupling_lookup_build(const pl_coupling_colloids_t *c, const int L[3],
     return (size_t)start[ncells];
 }
 
-int32_t pl_coupling_inside(const pl_coupling_colloids_t *c, const int L[3], int walls_z,
+int32_t pl_coupling_inside(const pl_coupling_colloids_t *c, const int L[3], const int walls[3],
                            const int32_t *start, const int32_t *list, const double r[3],
                            double p[3])
 {
@@ -93,12 +100,11 @@ int32_t pl_coupling_inside(const pl_coupling_colloids_t *c, const int L[3], int 
         if (ic[d] >= L[d]) ic[d] = L[d] - 1;
     }
     size_t cell = ((size_t)ic[2] * (size_t)L[1] + (size_t)ic[1]) * (size_t)L[0] + (size_t)ic[0];
-    const int zper = walls_z == PL_WALLS_NONE;
     for (int32_t q = start[cell]; q < start[cell + 1]; ++q) {
         int32_t k = list[q];
         double d[3] = {r[0] - c->x[k], r[1] - c->y[k], r[2] - c->z[k]};
         for (int a = 0; a < 3; ++a)
-            if (a < 2 || zper) d[a] -= L[a] * nearbyint(d[a] / L[a]);
+            if (walls[a] == PL_WALLS_NONE) d[a] -= L[a] * nearbyint(d[a] / L[a]);
         double R = c->rad[k];
         if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < R * R) {
             p[0] = d[0];

@@ -24,7 +24,7 @@ void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
         pl_chunk(f->n, t, nthreads, &lo, &hi);
         for (size_t i = lo; i < hi; ++i) {
             double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, q[3];
-            if (pl_coupling_inside(c, g->L, g->walls_z, lk_start, lk_list, r, q) >= 0)
+            if (pl_coupling_inside(c, g->L, g->walls, lk_start, lk_list, r, q) >= 0)
                 found[lo + m++] = (uint32_t)i;
         }
         counts[(size_t)t * 8 + 2] = m;
@@ -37,7 +37,7 @@ double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const doubl
                               const int32_t *lk_list, double *cfx, double *cfy, double *cfz)
 {
     const double s2 = w->sigma * w->sigma, rc2 = s2 * cbrt(2.0); /* (2^{1/6} sigma)^2 */
-    const int *L = w->L, zper = w->walls_z == PL_WALLS_NONE;
+    const int *L = w->L;
     double epot = 0.0;
     for (size_t j = 0; j < nn; ++j) {
         double r[3] = {x[j], y[j], z[j]}, F[3] = {0.0, 0.0, 0.0};
@@ -53,7 +53,7 @@ double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const doubl
             int32_t k = lk_list[q];
             double dv[3] = {r[0] - c->x[k], r[1] - c->y[k], r[2] - c->z[k]};
             for (int a = 0; a < 3; ++a)
-                if (a < 2 || zper) dv[a] -= L[a] * nearbyint(dv[a] / L[a]);
+                if (w->walls[a] == PL_WALLS_NONE) dv[a] -= L[a] * nearbyint(dv[a] / L[a]);
             double d2 = dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2];
             if (d2 >= rc2) continue;
             double sr6 = s2 / d2;

@@ -22,9 +22,10 @@
  * keeps detailed balance for a finite colloid mass: with beta = m_f / 2kT in
  * the colloid frame each event would add the recoil m_f^2 dv^2 / 2M and heat
  * colloids and fluid (measured: +25% and +6% at M = 67 m_f).
- * A particle the reflection pushes through a wall is mirrored back into the box
- * with the wall's rule (bounce-back in the moving wall's frame, or specular),
- * its impulse counted in the wall stress.
+ * A particle the reflection pushes through a wall (z, or x/y of a capillary)
+ * is mirrored back into the box with the wall's rule (bounce-back in the
+ * frame of the wall, the z walls moving and the x/y walls at rest, or
+ * specular); the impulse of a z wall is counted in the wall stress.
  * A new position inside another colloid repeats the reflection there, up to
  * N_max times (Hecht Sec. IV); a particle still inside after that is left
  * where it is and counted as a truncation.
@@ -128,7 +129,6 @@ static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
                             double p[3], uint32_t *restrict h, uint64_t *restrict cnt)
 {
     const double L[3] = {g->L[0], g->L[1], g->L[2]};
-    const int walls = g->walls_z != PL_WALLS_NONE;
     double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]};
     const double r_old[3] = {r[0], r[1], r[2]};
     double v[3] = {f->v[0][i], f->v[1][i], f->v[2][i]};
@@ -146,29 +146,31 @@ static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
             for (int d = 0; d < 3; ++d) vel[3 + d][k] -= l[d] / I;
         }
         for (int d = 0; d < 3; ++d) r[d] = (d == 0 ? c->x[k] : d == 1 ? c->y[k] : c->z[k]) + p[d];
-        if (walls && (r[2] < 0.0 || r[2] > L[2])) { /* mirror into the box */
-            const int top = r[2] > L[2];
-            r[2] = r[2] < 0.0 ? -r[2] : 2.0 * L[2] - r[2];
-            if (r[2] < 0.0 || r[2] > L[2]) r[2] = 0.5 * L[2];
-            double dp[3] = {0.0, 0.0, -2.0 * v[2]};
-            if (prm->noslip) /* bounce-back in the frame of the (moving) wall, as streaming does */
-                for (int d = 0; d < 3; ++d) dp[d] = 2.0 * (prm->wall_u[top][d] - v[d]);
-            for (int d = 0; d < 3; ++d) v[d] += dp[d];
-            if (prm->wall_acc)
-                for (int d = 0; d < 3; ++d)
-                    prm->wall_acc[3 * top + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
+        for (int d = 0; d < 3; ++d) {
+            if (g->walls[d] == PL_WALLS_NONE) {
+                r[d] = wrap(r[d], L[d]);
+            } else if (r[d] < 0.0 || r[d] > L[d]) { /* mirror into the box */
+                const int top = r[d] > L[d];
+                r[d] = r[d] < 0.0 ? -r[d] : 2.0 * L[d] - r[d];
+                if (r[d] < 0.0 || r[d] > L[d]) r[d] = 0.5 * L[d];
+                double dp[3] = {0.0, 0.0, 0.0};
+                dp[d] = -2.0 * v[d];
+                if (g->walls[d] == PL_WALLS_NOSLIP) /* bounce-back in the wall's frame, as streaming does */
+                    for (int e = 0; e < 3; ++e) dp[e] = 2.0 * ((d == 2 ? prm->wall_u[top][e] : 0.0) - v[e]);
+                for (int e = 0; e < 3; ++e) v[e] += dp[e];
+                if (prm->wall_acc && d == 2) /* the wall stress is the z walls' */
+                    for (int e = 0; e < 3; ++e)
+                        prm->wall_acc[3 * top + e] += llround(ldexp(dp[e], PL_FIELD_FIXED_SHIFT));
+            }
         }
-        r[0] = wrap(r[0], L[0]);
-        r[1] = wrap(r[1], L[1]);
-        if (!walls) r[2] = wrap(r[2], L[2]);
         cnt[0]++;
         nref++;
-        k = pl_coupling_inside(c, g->L, g->walls_z, lk_start, lk_list, r, p);
+        k = pl_coupling_inside(c, g->L, g->walls, lk_start, lk_list, r, p);
     }
     if (f->tracked)
         for (int d = 0; d < 3; ++d) {
             double dd = r[d] - r_old[d];
-            if (d < 2 || !walls) dd -= L[d] * nearbyint(dd / L[d]);
+            if (g->walls[d] == PL_WALLS_NONE) dd -= L[d] * nearbyint(dd / L[d]);
             f->disp[d][i] += dd;
         }
     for (int d = 0; d < 3; ++d) {
@@ -202,7 +204,7 @@ void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_
         for (size_t j = 0; j < counts[(size_t)t * 8 + 2]; ++j) {
             size_t i = found[lo + j];
             double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, q[3];
-            int32_t k = pl_coupling_inside(c, g->L, g->walls_z, lk_start, lk_list, r, q);
+            int32_t k = pl_coupling_inside(c, g->L, g->walls, lk_start, lk_list, r, q);
             counts[1] += (uint64_t)reflect_particle(f, g, p, c, vel, lk_start, lk_list, i, k, q, h,
                                                     counts);
         }

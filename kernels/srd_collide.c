@@ -18,8 +18,15 @@
  * No-slip walls: cells cut by a wall get virtual particles up to the mean
  * density (Lamura et al. 2001): their summed momentum is drawn from the
  * Maxwell-Boltzmann distribution of n_ghost particles moving with the wall.
- * The momentum they give the real particles of the cell is the wall's share
- * of the shear stress there (summed per block when p->wall_dp is set).
+ * Any no-slip wall counts (z walls; x/y walls of a capillary, at rest).  A
+ * cell cut by a z wall and an x/y wall (an edge of a closed box) takes the
+ * z wall's velocity: a moving z wall is what drives the flow, and where it
+ * meets a wall at rest the velocity is singular anyway (lid-driven cavity).
+ * The momentum they give the real particles of the cell is the z wall's
+ * share of the shear stress there (summed per block when p->wall_dp is set);
+ * that is also counted for such an edge cell (to the z wall whose velocity
+ * the virtual particles carry), but not for a cell cut by x/y walls only:
+ * the wall stress is the z walls'.
  *
  * Random numbers: Philox keyed (seed, purpose), counter (step, cell): the
  * result does not depend on which thread handles a cell. */
@@ -41,14 +48,24 @@ static double heyes_zeta(const pl_collide_params_t *p, uint64_t cell, size_t M, 
     return pl_heyes_zeta(p->heyes_eps, p->kT_target, (double)M, K, r.u[0], r.u[1], r.u[2]);
 }
 
-/* Number of virtual particles and wall index for a cell in z-layer iz, or 0
- * when the layer is not cut by a no-slip wall. */
-static int ghost_count(const pl_grid_t *g, const pl_collide_params_t *p, int iz, size_t M,
+/* Number of virtual particles for cell c, or 0 when no no-slip wall cuts
+ * it; *wall receives the z wall whose velocity they carry (0 bottom, 1 top)
+ * or -1 for a cell cut by x/y walls only (at rest). */
+static int ghost_count(const pl_grid_t *g, const pl_collide_params_t *p, size_t c, size_t M,
                        int *wall)
 {
-    double lo = iz - 1 + g->shift[2], hi = lo + 1.0, Lz = g->L[2];
-    if (lo >= 0.0 && hi <= Lz) return 0;
-    *wall = lo < 0.0 ? 0 : 1;
+    const size_t n0 = (size_t)g->n[0], n1 = (size_t)g->n[1];
+    int cut = 0;
+    *wall = -1;
+    for (int d = 0; d < 3; ++d) {
+        if (g->walls[d] != PL_WALLS_NOSLIP) continue;
+        const size_t i = d == 0 ? c % n0 : d == 1 ? c / n0 % n1 : c / (n0 * n1); /* cell index on axis d */
+        double lo = (double)i - 1.0 + g->shift[d], hi = lo + 1.0, L = g->L[d];
+        if (lo >= 0.0 && hi <= L) continue;
+        cut = 1;
+        if (d == 2) *wall = lo < 0.0 ? 0 : 1;
+    }
+    if (!cut) return 0;
     int target = (int)lround(p->ghost_density);
     return (int)M < target ? target - (int)M : 0;
 }
@@ -59,7 +76,8 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
                     const pl_collide_params_t *p, double *block_sum)
 {
     pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
-    const size_t ncells = g->ncells, layer = (size_t)g->n[0] * (size_t)g->n[1];
+    const size_t ncells = g->ncells;
+    static const double at_rest[3] = {0.0, 0.0, 0.0};
     const size_t nblocks = (ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
     /* Cells are independent; blocks of cells give fixed-order partial sums. */
 #pragma omp parallel for schedule(static)
@@ -82,7 +100,7 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
             double (*const Rc)[3] = Rb[c - c_base];
             const size_t s = cell_start[c], e = cell_start[c + 1], M = e - s;
             int wall = 0, ng = 0;
-            if (p->wall_ghosts && M >= 1) ng = ghost_count(g, p, (int)(c / layer), M, &wall);
+            if (p->wall_ghosts && M >= 1) ng = ghost_count(g, p, c, M, &wall);
             if (M + (size_t)ng < 2) continue;
             double P[3] = {0.0, 0.0, 0.0}, S = 0.0; /* one pass: momentum and sum v^2 */
             for (size_t i = s; i < e; ++i) {
@@ -98,8 +116,9 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
                 double gs[4], sd = sqrt((double)ng * p->kT_wall);
                 pl_rng_gauss2(r.u[0], r.u[1], &gs[0], &gs[1]);
                 pl_rng_gauss2(r.u[2], r.u[3], &gs[2], &gs[3]);
+                const double *U = wall >= 0 ? p->wall_u[wall] : at_rest;
                 for (int d = 0; d < 3; ++d)
-                    u[d] = (P[d] + (double)ng * p->wall_u[wall][d] + sd * gs[d]) / (double)(M + (size_t)ng);
+                    u[d] = (P[d] + (double)ng * U[d] + sd * gs[d]) / (double)(M + (size_t)ng);
             } else {
                 for (int d = 0; d < 3; ++d) u[d] = ur[d];
             }
@@ -128,7 +147,8 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
                     Q[0] += vx[i]; Q[1] += vy[i]; Q[2] += vz[i];
                     S1 += (double)vx[i] * vx[i] + (double)vy[i] * vy[i] + (double)vz[i] * vz[i];
                 }
-                for (int d = 0; d < 3; ++d) wdp[3 * wall + d] += Q[d] - P[d]; /* the wall's push */
+                if (wall >= 0) /* the z wall's push; x/y walls only: not counted */
+                    for (int d = 0; d < 3; ++d) wdp[3 * wall + d] += Q[d] - P[d];
                 if (M < 2) continue;
                 sum2 += S1 - (Q[0] * Q[0] + Q[1] * Q[1] + Q[2] * Q[2]) / (double)M;
             }

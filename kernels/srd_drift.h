@@ -3,11 +3,12 @@
  * so that both produce bitwise the same position, velocity and cell.
  *
  * Hecht Eq. 11 / PL Eqs. 1-2: r += v dt, after a velocity kick v += g dt for a
- * constant body force.  Periodic wrap, or reflection at planar walls z = 0
- * and z = Lz: bounce-back (no-slip, v -> 2U - v in the frame of a wall moving
- * with U) or specular (slip, v_z -> -v_z).  The collision cell under the
- * current grid shift (Hecht Sec. III) is computed from the stored (rounded)
- * position. */
+ * constant body force.  Periodic wrap, or reflection at the planar walls of
+ * every closed axis (z = 0, Lz; x = 0, Lx and y = 0, Ly for a capillary, Hecht
+ * Sec. VIII.A): bounce-back (no-slip, v -> 2U - v in the frame of a wall
+ * moving with U; the x/y walls are at rest) or specular (slip, the normal
+ * component reversed).  The collision cell under the current grid shift
+ * (Hecht Sec. III) is computed from the stored (rounded) position. */
 #ifndef PELOID_SRD_DRIFT_H
 #define PELOID_SRD_DRIFT_H
 
@@ -21,7 +22,8 @@ typedef struct {
     double dt, a[3];
     double L[3], iL[3], s[3];
     int n[3];
-    int walls, noslip;
+    int walls;    /* some axis is closed */
+    int wall[3];  /* PL_WALLS_* of each axis */
     double wall_u[2][3];
 } pl_drift_t;
 
@@ -36,9 +38,9 @@ static inline void pl_drift_init(pl_drift_t *c, const pl_grid_t *g, const pl_str
         c->iL[d] = 1.0 / c->L[d];
         c->s[d] = g->shift[d];
         c->n[d] = g->n[d];
+        c->wall[d] = g->walls[d];
     }
-    c->walls = g->walls_z != PL_WALLS_NONE;
-    c->noslip = g->walls_z == PL_WALLS_NOSLIP;
+    c->walls = g->any_walls;
     memcpy(c->wall_u, p->wall_u, sizeof c->wall_u);
 }
 
@@ -64,69 +66,124 @@ static inline void pl_drift_wall_acc(int64_t *acc, int top, const double dp[3])
     for (int d = 0; d < 3; ++d) acc[3 * top + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
 }
 
-/* Reflects one particle at the walls after a drift of dt from (r0, v).  Walls
- * are at z = 0 (index 0) and z = Lz (index 1).  acc (NULL: not wanted)
- * receives the impulse of every bounce (pl_drift_wall_acc). */
-static inline void pl_drift_reflect_z(double r[3], double v[3], const double r0[3], double dt,
-                                      double Lz, int noslip, const double wall_u[2][3], int64_t *acc)
+/* 1 when r lies beyond a wall of a closed axis. */
+static inline int pl_drift_outside(const pl_drift_t *c, const double r[3])
 {
-    double t_left = dt;
+    for (int d = 0; d < 3; ++d)
+        if (c->wall[d] && (r[d] < 0.0 || r[d] > c->L[d])) return 1;
+    return 0;
+}
+
+/* Reflects one particle at the walls after a drift of dt from (r0, v).  The
+ * walls of axis d are at x_d = 0 (top = 0) and x_d = L_d (top = 1); the z
+ * walls move with wall_u[top], the x/y walls are at rest.  The particle
+ * bounces first off the wall it would have crossed earliest, then moves on
+ * for the rest of the step; near an edge or corner this repeats for the next
+ * wall (at most 8 bounces).  acc (NULL: not wanted) receives the impulse of
+ * every bounce off a z wall (pl_drift_wall_acc): the wall stress is the z
+ * walls'; the x/y walls' momentum exchange is not counted.  Out of line: few
+ * particles reach a wall in a step, and inlined it kept pl_drift_one from
+ * being inlined. */
+__attribute__((noinline)) static void pl_drift_reflect(const pl_drift_t *c, double r[3], double v[3],
+                                                       const double r0[3], int64_t *acc)
+{
+    static const double at_rest[3] = {0.0, 0.0, 0.0};
+    double t_left = c->dt;
     double p[3] = {r0[0], r0[1], r0[2]};
-    for (int bounce = 0; bounce < 8 && (r[2] < 0.0 || r[2] > Lz); ++bounce) {
-        int top = r[2] > Lz;
-        double zw = top ? Lz : 0.0;
-        double tc = (zw - p[2]) / v[2]; /* time to reach the wall */
-        if (!(tc >= 0.0)) tc = 0.0;
+    for (int bounce = 0; bounce < 8 && pl_drift_outside(c, r); ++bounce) {
+        int ax = -1, top = 0;
+        double tc = 0.0;
+        for (int d = 0; d < 3; ++d) {
+            if (!c->wall[d] || (r[d] >= 0.0 && r[d] <= c->L[d])) continue;
+            const int t = r[d] > c->L[d];
+            double td = ((t ? c->L[d] : 0.0) - p[d]) / v[d]; /* time to reach the wall */
+            if (!(td >= 0.0)) td = 0.0;
+            if (ax < 0 || td < tc) {
+                ax = d;
+                top = t;
+                tc = td;
+            }
+        }
         if (tc > t_left) tc = t_left;
         for (int d = 0; d < 3; ++d) p[d] += v[d] * tc;
-        p[2] = zw;
+        p[ax] = top ? c->L[ax] : 0.0;
         t_left -= tc;
         const double vin[3] = {v[0], v[1], v[2]};
-        if (noslip) {
-            for (int d = 0; d < 3; ++d) v[d] = 2.0 * wall_u[top][d] - v[d];
+        if (c->wall[ax] == PL_WALLS_NOSLIP) {
+            const double *U = ax == 2 ? c->wall_u[top] : at_rest;
+            for (int d = 0; d < 3; ++d) v[d] = 2.0 * U[d] - v[d];
         } else {
-            v[2] = -v[2];
+            v[ax] = -v[ax];
         }
-        if (acc) {
+        if (acc && ax == 2) {
             const double dp[3] = {v[0] - vin[0], v[1] - vin[1], v[2] - vin[2]};
             pl_drift_wall_acc(acc, top, dp);
         }
         for (int d = 0; d < 3; ++d) r[d] = p[d] + v[d] * t_left;
     }
-    if (r[2] < 0.0) r[2] = 0.0;     /* pathological velocities only */
-    if (r[2] > Lz) r[2] = Lz;
+    for (int d = 0; d < 3; ++d) { /* pathological velocities only */
+        if (!c->wall[d]) continue;
+        if (r[d] < 0.0) r[d] = 0.0;
+        if (r[d] > c->L[d]) r[d] = c->L[d];
+    }
 }
 
 /* Drifts the particle (r, v) in place: on return r and v hold the values to
  * store (exactly representable in pl_real), dr the unwrapped displacement
- * and the function value is the collision cell.  wall_acc: NULL, or the
- * fixed-point wall impulses (bottom xyz, top xyz) to add the bounces to. */
-static inline uint32_t pl_drift_one(const pl_drift_t *c, double r[3], double v[3], double dr[3],
-                                    int64_t *wall_acc)
+ * and the function value is the collision cell.  closed[d] != 0 exactly
+ * when axis d has walls (c->wall[d] != PL_WALLS_NONE).  wall_acc: NULL, or
+ * the fixed-point z wall impulses (bottom xyz, top xyz) to add the bounces
+ * to. */
+static inline __attribute__((always_inline)) uint32_t
+pl_drift_one_closed(const pl_drift_t *c, const int closed[3], double r[3], double v[3], double dr[3],
+                    int64_t *wall_acc)
 {
     for (int d = 0; d < 3; ++d) v[d] += c->a[d];
     const double r0[3] = {r[0], r[1], r[2]};
     for (int d = 0; d < 3; ++d) r[d] = r0[d] + v[d] * c->dt;
-    if (c->walls && (r[2] < 0.0 || r[2] > c->L[2]))
-        pl_drift_reflect_z(r, v, r0, c->dt, c->L[2], c->noslip, c->wall_u, wall_acc);
+    if (c->walls && ((closed[0] && (r[0] < 0.0 || r[0] > c->L[0])) ||
+                     (closed[1] && (r[1] < 0.0 || r[1] > c->L[1])) ||
+                     (closed[2] && (r[2] < 0.0 || r[2] > c->L[2])))) {
+        /* copies, so that r, v, r0 do not escape and stay in registers */
+        double rr[3] = {r[0], r[1], r[2]}, vv[3] = {v[0], v[1], v[2]};
+        const double rs[3] = {r0[0], r0[1], r0[2]};
+        pl_drift_reflect(c, rr, vv, rs, wall_acc);
+        for (int d = 0; d < 3; ++d) {
+            r[d] = rr[d];
+            v[d] = vv[d];
+        }
+    }
     for (int d = 0; d < 3; ++d) dr[d] = r[d] - r0[d];
-    r[0] = pl_drift_wrap(r[0], c->L[0], c->iL[0]);
-    r[1] = pl_drift_wrap(r[1], c->L[1], c->iL[1]);
-    if (!c->walls) r[2] = pl_drift_wrap(r[2], c->L[2], c->iL[2]);
+    int ic[3];
+    for (int d = 0; d < 3; ++d) {
+        if (closed[d]) { /* closed axis: cells 0 .. L+1, no wrap */
 #ifdef PL_SINGLE
-    /* the stored (rounded) position is the one binned */
-    r[0] = (pl_real)r[0] >= (pl_real)c->L[0] ? 0.0 : (double)(pl_real)r[0];
-    r[1] = (pl_real)r[1] >= (pl_real)c->L[1] ? 0.0 : (double)(pl_real)r[1];
-    if (!c->walls) r[2] = (pl_real)r[2] >= (pl_real)c->L[2] ? 0.0 : (double)(pl_real)r[2];
-    for (int d = 0; d < 3; ++d) v[d] = (double)(pl_real)v[d];
-    const double zb = (double)(pl_real)r[2];
+            ic[d] = (int)floor((double)(pl_real)r[d] - c->s[d]) + 1; /* the stored position */
 #else
-    const double zb = r[2];
+            ic[d] = (int)floor(r[d] - c->s[d]) + 1;
 #endif
-    const int iz = c->walls ? (int)floor(zb - c->s[2]) + 1 /* layers 0 .. Lz+1 */
-                            : pl_drift_cell_1d(zb, c->s[2], c->n[2]);
-    return (uint32_t)((iz * c->n[1] + pl_drift_cell_1d(r[1], c->s[1], c->n[1])) * c->n[0] +
-                      pl_drift_cell_1d(r[0], c->s[0], c->n[0]));
+            continue;
+        }
+        r[d] = pl_drift_wrap(r[d], c->L[d], c->iL[d]);
+#ifdef PL_SINGLE
+        /* the stored (rounded) position is the one binned */
+        r[d] = (pl_real)r[d] >= (pl_real)c->L[d] ? 0.0 : (double)(pl_real)r[d];
+#endif
+        ic[d] = pl_drift_cell_1d(r[d], c->s[d], c->n[d]);
+    }
+#ifdef PL_SINGLE
+    for (int d = 0; d < 3; ++d) v[d] = (double)(pl_real)v[d];
+#endif
+    return (uint32_t)((ic[2] * c->n[1] + ic[1]) * c->n[0] + ic[0]);
+}
+
+/* pl_drift_one_closed with the closed axes read from c; a caller may pass
+ * them as constants instead (srd_stream.c), which removes their branches. */
+static inline __attribute__((always_inline)) uint32_t pl_drift_one(const pl_drift_t *c, double r[3],
+                                                                   double v[3], double dr[3],
+                                                                   int64_t *wall_acc)
+{
+    return pl_drift_one_closed(c, c->wall, r, v, dr, wall_acc);
 }
 
 /* Block version for periodic boxes (no walls): the same operations in the

@@ -53,7 +53,10 @@ void pl_srd_fields_accumulate(const pl_fluid_t *f, const int L[3], int64_t *acc)
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < f->n; ++i) {
         int ix = (int)f->r[0][i], iy = (int)f->r[1][i], iz = (int)f->r[2][i];
-        if (iz >= L[2]) iz = L[2] - 1; /* z = Lz exactly, on a wall */
+        /* x = L exactly: on a wall (z walls, or x/y walls of a capillary) */
+        if (ix >= L[0]) ix = L[0] - 1;
+        if (iy >= L[1]) iy = L[1] - 1;
+        if (iz >= L[2]) iz = L[2] - 1;
         size_t c = ((size_t)iz * (size_t)L[1] + (size_t)iy) * (size_t)L[0] + (size_t)ix;
 #pragma omp atomic
         acc[c] += 1;

@@ -1,6 +1,6 @@
 /* Streaming fused with cell binning (one pass over the particle arrays), and
- * the count-only pass of the stream-in-scatter step.  With walls the
- * streaming also sums the impulse of the wall bounces (the wall stress).
+ * the count-only pass of the stream-in-scatter step.  With z walls the
+ * streaming also sums the impulse of their bounces (the wall stress).
  *
  * The drift itself (Hecht Eq. 11 / PL Eqs. 1-2, walls, grid shift) is
  * pl_drift_one in srd_drift.h.  The cell of each particle is counted in the
@@ -9,6 +9,31 @@
 #include <string.h>
 
 #include "srd_drift.h"
+
+/* Drift + store + bin of particles [lo, hi) one by one (walls, tracking);
+ * wall_acc: NULL, or this thread's z wall impulses. */
+static inline __attribute__((always_inline)) void moved_range(pl_fluid_t *f, const pl_drift_t *c,
+                                                              const int closed[3], uint32_t *restrict h,
+                                                              size_t lo, size_t hi, int tracked,
+                                                              int64_t *wall_acc)
+{
+    pl_real *restrict x = f->r[0], *restrict y = f->r[1], *restrict z = f->r[2];
+    pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
+    uint32_t *restrict cell = f->cell;
+    for (size_t i = lo; i < hi; ++i) {
+        double r[3] = {x[i], y[i], z[i]}, v[3] = {vx[i], vy[i], vz[i]}, dr[3];
+        const uint32_t cl = pl_drift_one_closed(c, closed, r, v, dr, wall_acc);
+        if (tracked) {
+            f->disp[0][i] += dr[0];
+            f->disp[1][i] += dr[1];
+            f->disp[2][i] += dr[2];
+        }
+        x[i] = (pl_real)r[0]; y[i] = (pl_real)r[1]; z[i] = (pl_real)r[2];
+        vx[i] = (pl_real)v[0]; vy[i] = (pl_real)v[1]; vz[i] = (pl_real)v[2];
+        cell[i] = cl;
+        h[cl]++;
+    }
+}
 
 /* mode: 0 = bin only, 1 = drift + store + bin, 2 = count the drifted cell
  * without storing anything but the histogram. */
@@ -51,19 +76,11 @@ static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict 
         }
         return;
     }
-    for (size_t i = lo; i < hi; ++i) {
-        double r[3] = {x[i], y[i], z[i]}, v[3] = {vx[i], vy[i], vz[i]}, dr[3];
-        const uint32_t cl = pl_drift_one(c, r, v, dr, wall_acc);
-        if (tracked) {
-            f->disp[0][i] += dr[0];
-            f->disp[1][i] += dr[1];
-            f->disp[2][i] += dr[2];
-        }
-        x[i] = (pl_real)r[0]; y[i] = (pl_real)r[1]; z[i] = (pl_real)r[2];
-        vx[i] = (pl_real)v[0]; vy[i] = (pl_real)v[1]; vz[i] = (pl_real)v[2];
-        cell[i] = cl;
-        h[cl]++;
-    }
+    /* the common wall layouts with their closed axes as constants */
+    const int *w = c->wall;
+    if (!w[0] && !w[1] && w[2]) moved_range(f, c, (const int[3]){0, 0, 1}, h, lo, hi, tracked, wall_acc);
+    else if (w[0] && w[1] && !w[2]) moved_range(f, c, (const int[3]){1, 1, 0}, h, lo, hi, tracked, wall_acc);
+    else moved_range(f, c, w, h, lo, hi, tracked, wall_acc);
 }
 
 static void run(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params_t *p, uint32_t *hist,

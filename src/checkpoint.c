@@ -11,6 +11,8 @@
 #include <string.h>
 
 #include "checkpoint_h5.h"
+#include "peloid/colloid.h"
+#include "peloid/coupling.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
 
@@ -85,6 +87,9 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
     int bad = pl_ckpt_attr_i64(f, "peloid_checkpoint", meta, 8, 1);
     bad |= pl_ckpt_attr_i64(f, "field_samples", &samples, 1, 1);
     bad |= pl_ckpt_attr_i64(f, "colloid_count", &ncol, 1, 1);
+    /* only with x/y walls, so that other checkpoints stay as they were */
+    long long walls_xy = sc->box.walls_xy;
+    if (walls_xy != PL_WALLS_NONE) bad |= pl_ckpt_attr_i64(f, "walls_xy", &walls_xy, 1, 1);
     hid_t g = pl_ckpt_group_create(f, "fluid");
     for (int d = 0; d < 3 && g >= 0; ++d) {
         bad |= pl_ckpt_write_1d(g, rnames[d], H5_REAL, fl->r[d], fl->n);
@@ -149,6 +154,20 @@ int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err)
                         "has %lld (colloids.count)", path, ncol, nscene);
         goto close;
     }
+    /* checkpoints without the attribute come from scenes without x/y walls */
+    long long walls_xy = PL_WALLS_NONE;
+    if (H5Aexists(f, "walls_xy") > 0 && pl_ckpt_attr_i64(f, "walls_xy", &walls_xy, 1, 0)) {
+        rc = pl_err_set(err, PL_ERR_INPUT, "%s: unreadable attribute walls_xy", path);
+        goto close;
+    }
+    if (walls_xy != sc->box.walls_xy) {
+        static const char *const wn[3] = {"none", "noslip", "slip"};
+        rc = pl_err_set(err, PL_ERR_INPUT,
+                        "%s: checkpoint does not match the scene: box.walls_xy \"%s\" there, \"%s\" "
+                        "in the scene", path, walls_xy >= 0 && walls_xy < 3 ? wn[walls_xy] : "?",
+                        wn[sc->box.walls_xy]);
+        goto close;
+    }
     sim->step = meta[0];
     int bad = pl_ckpt_attr_i64(f, "field_samples", &sim->field_samples, 1, 0);
     hid_t g = H5Gopen2(f, "fluid", H5P_DEFAULT);
@@ -172,6 +191,11 @@ int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err)
         goto close;
     }
     if (sim->colloids) rc = pl_ckpt_colloid_read(f, sim->colloids, sc, path, err);
+    /* the colloid set-up the reader redoes knows nothing of the coupling:
+     * coupled colloids exchange energy with the fluid, no NVE drift guard
+     * (as pl_coupling_create decided) */
+    if (!rc && sim->colloids && sim->coupling && sim->coupling->method != PL_COUPLE_NONE)
+        sim->colloids->nve = 0;
     if (!rc) rc = pl_ckpt_coupling_read(f, sim, path, err);
     if (!rc && H5Lexists(f, "kT_cell", H5P_DEFAULT) > 0 &&
         pl_ckpt_read_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, &sim->last_kT_meas, 1))

@@ -85,7 +85,8 @@ int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, int overwrite,
     hid_t st = H5Tcopy(H5T_C_S1);
     H5Tset_size(st, 9);
     char bnd[3][9] = {"periodic", "periodic", "periodic"};
-    if (!c->periodic[2]) snprintf(bnd[2], 9, "none");
+    for (int k = 0; k < 3; ++k)
+        if (!c->periodic[k]) snprintf(bnd[k], 9, "none");
     hsize_t n3 = 3;
     sp = H5Screate_simple(1, &n3, NULL);
     a = H5Acreate2(box, "boundary", st, sp, H5P_DEFAULT, H5P_DEFAULT);

@@ -164,8 +164,9 @@ int pl_colloid_pair_params(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
                              "unknown pair term \"%s\"; allowed: dlvo, hertz, lubrication, wca, "
                              "depletion_comp", bad);
     for (int k = 0; k < 3; ++k) p->box[k] = scene->box.cells[k];
-    p->periodic[0] = p->periodic[1] = 1;
-    p->periodic[2] = scene->box.walls_z == PL_WALLS_NONE;
+    int walls[3];
+    pl_scene_box_walls(&scene->box, walls);
+    for (int k = 0; k < 3; ++k) p->periodic[k] = walls[k] == PL_WALLS_NONE;
     double rmax = cs->radius * (1.0 + sqrt(3.0) * cs->polydispersity);
     p->gap_cut = 0.0;
     if (p->terms & PL_CT_DLVO) {

@@ -55,9 +55,10 @@ int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err)
                                  "%.4g a0 (minimum image); allowed: edges >= %.4g",
                                  k, scene->box.cells[k], rc, 2.0 * rc);
     }
-    if (scene->box.walls_z != PL_WALLS_NONE && 2.0 * rmax >= scene->box.cells[2])
-        return pl_scene_fail(scene, err, OFF(colloids.radius), "colloids.radius",
-                             "colloid diameter %.4g does not fit between the z walls (Lz = %d)",
-                             2.0 * rmax, scene->box.cells[2]);
+    for (int k = 0; k < 3; ++k)
+        if (!p.periodic[k] && 2.0 * rmax >= scene->box.cells[k])
+            return pl_scene_fail(scene, err, OFF(colloids.radius), "colloids.radius",
+                                 "colloid diameter %.4g does not fit between the %c walls (L%c = %d)",
+                                 2.0 * rmax, "xyz"[k], "xyz"[k], scene->box.cells[k]);
     return 0;
 }

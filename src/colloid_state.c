@@ -80,7 +80,7 @@ void pl_colloid_forces(pl_colloid_t *c)
                            c->g_overlap, c->g_omega2, c->g_damp, c->g_partner};
     pl_colloid_pair_forces(&c->pair, &c->cells, &v);
     for (size_t i = 0; i < c->n; ++i) c->zu[i] = c->z[i] + (double)c->iz[i] * c->box[2];
-    pl_colloid_ext_forces(&c->ext, c->n, c->z, c->zu, c->rad, c->mass, c->fx, c->fy, c->fz, c->epot);
+    pl_colloid_ext_forces(&c->ext, c->n, c->x, c->y, c->z, c->zu, c->rad, c->mass, c->fx, c->fy, c->fz, c->epot);
 }
 
 /* sigma_cc and the spurious depletion it leaves (PL Sec. III.C.1); with
@@ -126,8 +126,10 @@ int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
         c->periodic[k] = c->pair.periodic[k];
     }
     for (int k = 0; k < 3; ++k) c->ext.g[k] = cs->gravity[k];
-    c->ext.walls = !c->periodic[2];
-    c->ext.lz = c->box[2];
+    for (int k = 0; k < 3; ++k) {
+        c->ext.walls[k] = !c->periodic[k];
+        c->ext.L[k] = c->box[k];
+    }
     c->ext.wall_eps = cs->wall_epsilon;
     c->ext.wall_n = cs->wall_n;
     c->integrator = cs->integrator;
@@ -192,14 +194,15 @@ static int place_random(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
         for (uint64_t att = 0; att < 100000 && !ok; ++att) {
             pl_rand4_t u = pl_rng_uniform4(c->seed, PL_RNG_COLLOID + 2, att, i, 0);
             double R = c->rad[i];
-            double zlo = c->periodic[2] ? 0.0 : R, zhi = c->periodic[2] ? L[2] : L[2] - R;
-            c->x[i] = u.u[0] * L[0];
-            c->y[i] = u.u[1] * L[1];
-            c->z[i] = zlo + u.u[2] * (zhi - zlo);
+            double *const x[3] = {&c->x[i], &c->y[i], &c->z[i]};
+            for (int k = 0; k < 3; ++k) { /* closed axes: the colloid clear of the walls */
+                double lo = c->periodic[k] ? 0.0 : R, hi = c->periodic[k] ? L[k] : L[k] - R;
+                *x[k] = c->periodic[k] ? u.u[k] * L[k] : lo + u.u[k] * (hi - lo);
+            }
             ok = 1;
             for (size_t j = 0; j < i && ok; ++j) {
-                double dx = min_image(c->x[i] - c->x[j], L[0], 1);
-                double dy = min_image(c->y[i] - c->y[j], L[1], 1);
+                double dx = min_image(c->x[i] - c->x[j], L[0], c->periodic[0]);
+                double dy = min_image(c->y[i] - c->y[j], L[1], c->periodic[1]);
                 double dz = min_image(c->z[i] - c->z[j], L[2], c->periodic[2]);
                 double d = c->rad[i] + c->rad[j];
                 if (dx * dx + dy * dy + dz * dz < d * d) ok = 0;
@@ -253,8 +256,8 @@ static int place_file(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
                 double w = floor(*p[k] / c->box[k]);
                 *p[k] -= w * c->box[k];
             } else if (*p[k] < 0.0 || *p[k] > c->box[k]) {
-                rc = pl_err_set(err, PL_ERR_INPUT, "%s: colloid %zu has z = %g outside the walls [0, %g]",
-                                path, j, *p[k], c->box[k]);
+                rc = pl_err_set(err, PL_ERR_INPUT, "%s: colloid %zu has %c = %g outside the walls [0, %g]",
+                                path, j, "xyz"[k], *p[k], c->box[k]);
             }
         }
     }
@@ -268,8 +271,9 @@ int pl_colloid_create(const pl_scene_t *scene, pl_colloid_t **out, pl_err_t *err
     if (pl_colloid_alloc((size_t)cs->count, &c, err)) return err->code;
     c->seed = (uint64_t)scene->run.seed;
     for (int k = 0; k < 3; ++k) c->box[k] = scene->box.cells[k];
-    c->periodic[0] = c->periodic[1] = 1;
-    c->periodic[2] = scene->box.walls_z == PL_WALLS_NONE;
+    int walls[3];
+    pl_scene_box_walls(&scene->box, walls);
+    for (int k = 0; k < 3; ++k) c->periodic[k] = walls[k] == PL_WALLS_NONE;
     for (size_t i = 0; i < c->n; ++i) {
         pl_rand4_t u = pl_rng_uniform4(c->seed, PL_RNG_COLLOID + 4, 0, i, 0);
         c->rad[i] = cs->radius * (1.0 + sqrt(3.0) * cs->polydispersity * (2.0 * u.u[0] - 1.0));

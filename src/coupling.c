@@ -94,7 +94,7 @@ int pl_coupling_lookup_fill(pl_coupling_t *cp, const pl_sim_t *sim, const pl_cou
                             pl_err_t *err)
 {
     for (;;) {
-        size_t need = pl_coupling_lookup_build(v, sim->grid.L, sim->grid.walls_z, cp->lk_start,
+        size_t need = pl_coupling_lookup_build(v, sim->grid.L, sim->grid.walls, cp->lk_start,
                                                cp->lk_list, cp->lk_cap);
         if (need <= cp->lk_cap) return 0;
         pl_free(cp->lk_list);
@@ -124,7 +124,7 @@ static void clear_interiors(pl_coupling_t *cp, pl_sim_t *sim, const double *rad)
     for (size_t i = 0; i < f->n; ++i) {
         double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, p[3];
         for (uint64_t draw = 0; draw < 1000; ++draw) {
-            if (pl_coupling_inside(&v, L, sim->grid.walls_z, cp->lk_start, cp->lk_list, r, p) < 0)
+            if (pl_coupling_inside(&v, L, sim->grid.walls, cp->lk_start, cp->lk_list, r, p) < 0)
                 break;
             pl_rand4_t u = pl_rng_uniform4(cp->seed, PL_RNG_COUPLING + 3, 0, i, draw);
             for (int d = 0; d < 3; ++d) {
@@ -147,8 +147,9 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
     cp->nthreads = sim->nthreads;
     cp->seed = (uint64_t)sc->run.seed;
     size_t nc = col ? col->n : 0;
-    /* Hecht Sec. VIII.A (iii): the fluid carries minus the colloids' weight */
-    if (col && cp->method != PL_COUPLE_NONE && sc->coupling.compensate_gravity && sc->box.walls_z == PL_WALLS_NONE && sim->fluid.n > 0) {
+    /* Hecht Sec. VIII.A (iii): the fluid carries minus the colloids' weight;
+     * only in a periodic box (walls take up momentum: options i and ii) */
+    if (col && cp->method != PL_COUPLE_NONE && sc->coupling.compensate_gravity && !sim->grid.any_walls && sim->fluid.n > 0) {
         double M = 0.0;
         for (size_t k = 0; k < nc; ++k) M += col->mass[k];
         for (int d = 0; d < 3; ++d) cp->fluid_accel[d] = -sc->colloids.gravity[d] * M / (double)sim->fluid.n;
@@ -170,7 +171,6 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         p->placement = sc->coupling.placement;
         p->max_refl = (int)sc->coupling.max_reflections;
         p->seed = cp->seed;
-        p->noslip = sc->box.walls_z == PL_WALLS_NOSLIP;
         memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
         size_t L3 = (size_t)sim->grid.L[0] * (size_t)sim->grid.L[1] * (size_t)sim->grid.L[2];
         cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t));
@@ -201,7 +201,7 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         pl_coupling_colloids_t v = pl_coupling_view(col);
         v.rad = cp->rad_big;
         size_t need;
-        while ((need = pl_coupling_lookup_build(&v, sim->grid.L, sim->grid.walls_z, cp->lk_start,
+        while ((need = pl_coupling_lookup_build(&v, sim->grid.L, sim->grid.walls, cp->lk_start,
                                                 cp->lk_list, cp->lk_cap)) > cp->lk_cap) {
             pl_free(cp->lk_list);
             cp->lk_cap = need;

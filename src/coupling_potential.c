@@ -25,7 +25,7 @@ int pl_coupling_potential_setup(pl_coupling_t *cp, pl_sim_t *sim, pl_err_t *err)
     cp->wca.sigma = sc->coupling.sigma_cf > 0.0 ? sc->coupling.sigma_cf : sc->colloids.radius;
     cp->wca.eps = sc->coupling.epsilon_cf;
     for (int d = 0; d < 3; ++d) cp->wca.L[d] = sim->grid.L[d];
-    cp->wca.walls_z = sim->grid.walls_z;
+    for (int d = 0; d < 3; ++d) cp->wca.walls[d] = sim->grid.walls[d];
     double kT = fmax(sc->fluid.temperature, sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature : 0.0);
     cp->margin = 8.0 * sqrt(kT) * sc->srd.dt + 0.1;
     cp->rad_big = malloc((c->n + 1) * sizeof(double));
@@ -133,31 +133,38 @@ static void wall_add(int64_t acc[6], int top, const double dp[3])
     for (int d = 0; d < 3; ++d) acc[3 * top + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
 }
 
-/* r += v dt, with wall reflection in z (bounce-back for no-slip in the frame
- * of the moving wall, specular for slip, as the streaming does); the
- * displacement is accumulated, the wall impulses added to acc. */
+/* r += v dt, with reflection at the walls of every closed axis (bounce-back
+ * for no-slip in the frame of the wall, the z walls moving and the x/y walls
+ * at rest; specular for slip; as the streaming does); the displacement is
+ * accumulated, the z walls' impulses added to acc (the wall stress is the z
+ * walls'). */
 static void drift_fluid(pl_coupling_t *cp, const pl_sim_t *sim, double dt, int64_t acc[6])
 {
-    const int walls = sim->grid.walls_z, noslip = walls == PL_WALLS_NOSLIP;
-    const double Lz = sim->grid.L[2];
+    static const double at_rest[3] = {0.0, 0.0, 0.0};
+    const pl_grid_t *g = &sim->grid;
     for (size_t j = 0; j < cp->nnear; ++j) {
-        double r0z = NB(cp, 2)[j];
+        const double r0[3] = {NB(cp, 0)[j], NB(cp, 1)[j], NB(cp, 2)[j]};
         for (int d = 0; d < 3; ++d) {
             NB(cp, d)[j] += NB(cp, 3 + d)[j] * dt;
             NB(cp, 9 + d)[j] += NB(cp, 3 + d)[j] * dt;
         }
-        double *z = &NB(cp, 2)[j];
-        if (walls != PL_WALLS_NONE && (*z < 0.0 || *z > Lz)) {
-            int top = *z > Lz;
-            double zw = top ? Lz : 0.0;
-            NB(cp, 11)[j] -= *z - r0z;
-            *z = 2.0 * zw - *z;
-            NB(cp, 11)[j] += *z - r0z;
-            double dp[3] = {0.0, 0.0, -2.0 * NB(cp, 5)[j]};
-            if (noslip)
-                for (int d = 0; d < 3; ++d) dp[d] = 2.0 * (sim->wall_u[top][d] - NB(cp, 3 + d)[j]);
+        for (int a = 0; a < 3; ++a) {
+            double *x = &NB(cp, a)[j];
+            const double La = g->L[a];
+            if (g->walls[a] == PL_WALLS_NONE || !(*x < 0.0 || *x > La)) continue;
+            int top = *x > La;
+            double xw = top ? La : 0.0;
+            NB(cp, 9 + a)[j] -= *x - r0[a];
+            *x = 2.0 * xw - *x;
+            NB(cp, 9 + a)[j] += *x - r0[a];
+            double dp[3] = {0.0, 0.0, 0.0};
+            dp[a] = -2.0 * NB(cp, 3 + a)[j];
+            if (g->walls[a] == PL_WALLS_NOSLIP) {
+                const double *U = a == 2 ? sim->wall_u[top] : at_rest;
+                for (int d = 0; d < 3; ++d) dp[d] = 2.0 * (U[d] - NB(cp, 3 + d)[j]);
+            }
             for (int d = 0; d < 3; ++d) NB(cp, 3 + d)[j] += dp[d];
-            wall_add(acc, top, dp);
+            if (a == 2) wall_add(acc, top, dp);
         }
     }
 }
@@ -223,7 +230,7 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, pl_err_t *err)
         size_t i = cp->near_idx[j];
         for (int d = 0; d < 3; ++d) {
             double x = NB(cp, d)[j];
-            if (d < 2 || sim->grid.walls_z == PL_WALLS_NONE) {
+            if (sim->grid.walls[d] == PL_WALLS_NONE) {
                 x -= L[d] * floor(x / L[d]);
                 if (x >= L[d]) x = 0.0;
             }

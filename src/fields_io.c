@@ -2,7 +2,9 @@
  * layout where it applies: /h5md metadata (version, author, creator), and
  * /observables/fluid_density/value [Lz][Ly][Lx] (particles per cell) and
  * /observables/fluid_velocity/value [Lz][Ly][Lx][3] (mass-weighted mean
- * velocity; 0 where a cell was always empty), each with step and time. */
+ * velocity; 0 where a cell was always empty), each with step and time.
+ * Attributes boundary_x/y/z name each axis' boundary (periodic, or noslip /
+ * slip walls at 0 and L: Hecht Sec. VIII.A, a capillary with walls_xy). */
 #include <hdf5.h>
 #include <math.h>
 #include <stdio.h>
@@ -53,6 +55,10 @@ int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
     pl_h5_h5md_header(f);
     hid_t obs = pl_h5_group(f, "observables");
     pl_h5_attr_str(obs, "layout", "value[z][y][x] on the unshifted cell grid, cell size a0 = 1");
+    int walls[3];
+    pl_scene_box_walls(&sc->box, walls);
+    static const char *const bname[3] = {"boundary_x", "boundary_y", "boundary_z"};
+    for (int d = 0; d < 3; ++d) pl_h5_attr_str(obs, bname[d], pl_scene_boundary_name(walls[d]));
     hsize_t dims[4] = {(hsize_t)L[2], (hsize_t)L[1], (hsize_t)L[0], 3};
     double time = (double)sim->step * sc->srd.dt;
     observable(obs, "fluid_density", 3, dims, rho, sim->step, time);

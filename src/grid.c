@@ -4,15 +4,16 @@
 #include "peloid/rng.h"
 #include "peloid/scene.h"
 
-void pl_grid_init(pl_grid_t *grid, const int L[3], int walls_z)
+void pl_grid_init(pl_grid_t *grid, const int L[3], const int walls[3])
 {
+    grid->any_walls = 0;
     for (int d = 0; d < 3; ++d) {
         grid->L[d] = L[d];
-        grid->n[d] = L[d];
+        grid->walls[d] = walls[d];
+        grid->n[d] = walls[d] != PL_WALLS_NONE ? L[d] + 2 : L[d];
         grid->shift[d] = 0.0;
+        grid->any_walls |= walls[d] != PL_WALLS_NONE;
     }
-    grid->walls_z = walls_z;
-    if (walls_z != PL_WALLS_NONE) grid->n[2] = L[2] + 2;
     grid->ncells = (size_t)grid->n[0] * (size_t)grid->n[1] * (size_t)grid->n[2];
 }
 

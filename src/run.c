@@ -127,6 +127,11 @@ static int write_summary(const writer_t *w, const pl_sim_t *sim, long long first
                    "\"model_temperature_K\": %.10g, \"real_temperature_K\": %.10g}",
                 sc->mapping.map.a0, sc->mapping.map.t0, sc->mapping.map.m_f, sc->mapping.map.kT_model,
                 sc->mapping.map.kT_model / PL_KB, sc->mapping.physical.temperature);
+    int walls[3]; /* each axis: periodic, or noslip / slip walls at 0 and L */
+    pl_scene_box_walls(&sc->box, walls);
+    fprintf(f, ",\n  \"boundaries\": {\"x\": \"%s\", \"y\": \"%s\", \"z\": \"%s\"}",
+            pl_scene_boundary_name(walls[0]), pl_scene_boundary_name(walls[1]),
+            pl_scene_boundary_name(walls[2]));
     if (sim->colloids) {
         const pl_colloid_depl_info_t *d = &sim->colloids->depl;
         fprintf(f, ",\n  \"colloid_pairs\": {\"sigma_cc\": %.10g, \"sigma_rule\": \"%s\", "

@@ -31,6 +31,9 @@ static const pl_key_t box_keys[] = {
     {"walls_z", PL_KEY_CHOICE, OFF(box.walls_z), 0, 0, 0, walls_choices, PL_WALLS_NONE, NULL,
      "-", "planar walls at z = 0 and z = Lz: none (periodic), noslip (bounce-back + "
           "virtual wall particles, Lamura et al.), slip (specular)"},
+    {"walls_xy", PL_KEY_CHOICE, OFF(box.walls_xy), 0, 0, 0, walls_choices, PL_WALLS_NONE, NULL,
+     "-", "walls at x = 0, Lx and y = 0, Ly (a square capillary along z, Hecht Sec. VIII.A "
+          "option ii; with walls_z a closed box): none, noslip, slip as for walls_z; x/y walls are at rest"},
     {"wall_velocity_bottom", PL_KEY_REAL3, OFF(box.wall_velocity[0]), -1e3, 1e3, 0, NULL, 0, NULL,
      "a0 / t0", "walls_z = noslip: velocity [ux, uy, 0] of the wall at z = 0 (shear, Hecht Sec. "
                 "VIII.C): bounce-back and virtual particles in its frame"},

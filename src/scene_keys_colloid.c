@@ -44,7 +44,7 @@ static const pl_key_t colloid_keys[] = {
     {"bd_viscosity", PL_KEY_REAL, OFF(bd_viscosity), 0, 1e9, PL_KEY_MIN_OPEN, NULL, 2.5, NULL,
      "m_f / (a0 t0)", "brownian: solvent viscosity eta of the Stokes friction 6 pi eta R"},
     {"wall_epsilon", PL_KEY_REAL, OFF(wall_epsilon), 0, 1e9, 0, NULL, 2.5, NULL,
-     "kT_ref", "box.walls_z != none: colloid-wall repulsion, PL Eq. 16 form with sigma = R"},
+     "kT_ref", "colloid-wall repulsion at every wall (box.walls_z, box.walls_xy), PL Eq. 16 form with sigma = R"},
     {"wall_n", PL_KEY_REAL, OFF(wall_n), 1, 200, 0, NULL, 24, NULL,
      "-", "exponent n of the colloid-wall repulsion"},
     {"max_overlap", PL_KEY_REAL, OFF(max_overlap), 0, 1, PL_KEY_MIN_OPEN, NULL, 0.1, NULL,

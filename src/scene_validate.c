@@ -39,6 +39,10 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
     if (b->walls_z != PL_WALLS_NONE && b->cells[2] < 2)
         return pl_scene_fail(scene, err, OFF(box.cells), "box.cells",
                              "Lz = %d with walls_z; allowed: Lz >= 2", b->cells[2]);
+    if (b->walls_xy != PL_WALLS_NONE && (b->cells[0] < 2 || b->cells[1] < 2))
+        return pl_scene_fail(scene, err, OFF(box.cells), "box.cells",
+                             "Lx = %d, Ly = %d with walls_xy; allowed: Lx >= 2 and Ly >= 2",
+                             b->cells[0], b->cells[1]);
     for (int w = 0; w < 2; ++w) { /* moving walls (shear, Hecht Sec. VIII.C) */
         const double *u = b->wall_velocity[w];
         const char *key = w ? "box.wall_velocity_top" : "box.wall_velocity_bottom";

@@ -82,7 +82,7 @@ static int stage_collide(pl_sim_t *sim, pl_err_t *err)
     p.heyes = sc->thermostat.type == PL_THERMO_HEYES && sim->step % sc->thermostat.interval == 0;
     p.kT_target = sc->thermostat.temperature;
     p.heyes_eps = sc->thermostat.heyes_epsilon;
-    p.wall_ghosts = sc->box.walls_z == PL_WALLS_NOSLIP;
+    p.wall_ghosts = sc->box.walls_z == PL_WALLS_NOSLIP || sc->box.walls_xy == PL_WALLS_NOSLIP;
     p.ghost_density = sc->fluid.density;
     p.kT_wall = sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature : sc->fluid.temperature;
     memcpy(p.wall_u, sim->wall_u, sizeof p.wall_u);
@@ -172,7 +172,8 @@ static void build_plan(pl_sim_t *sim)
         const double *fv = sc->coupling.flow_velocity;
         if (sim->coupling && sim->coupling->pinned && (fv[0] != 0.0 || fv[1] != 0.0 || fv[2] != 0.0))
             add_stage(sim, "flow-hold", pl_coupling_stage_flow, 1);
-        if (sim->coupling && sc->coupling.drift_interval > 0 && sc->box.walls_z == PL_WALLS_NONE)
+        /* momentum is not conserved with walls: nothing to remove */
+        if (sim->coupling && sc->coupling.drift_interval > 0 && !sim->grid.any_walls)
             add_stage(sim, "drift-removal", pl_coupling_stage_drift, sc->coupling.drift_interval);
     }
 }
@@ -219,7 +220,9 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
      * thread count and binding */
     omp_set_num_threads(sim->nthreads);
     bind_threads(sim->nthreads);
-    pl_grid_init(&sim->grid, scene->box.cells, scene->box.walls_z);
+    int walls[3];
+    pl_scene_box_walls(&scene->box, walls);
+    pl_grid_init(&sim->grid, scene->box.cells, walls);
     double volume = (double)scene->box.cells[0] * scene->box.cells[1] * scene->box.cells[2];
     size_t n = (size_t)llround(scene->fluid.density * volume);
     int rc = pl_fluid_create(n, scene->output.track_fluid, &sim->fluid, err);
@@ -235,14 +238,15 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
     sim->block_sum = pl_alloc(2 * nb * sizeof(double));
     sim->obs_scratch = pl_alloc(pl_srd_observe_scratch(n) * sizeof(double));
     if (scene->output.fields_interval > 0) sim->field_acc = pl_alloc(4 * L3 * sizeof(int64_t));
-    const int walls = scene->box.walls_z != PL_WALLS_NONE;
-    if (walls) {
+    /* the wall stress is the z walls' (x/y walls: not counted) */
+    const int zwalls = scene->box.walls_z != PL_WALLS_NONE;
+    if (zwalls) {
         sim->wall_acc = pl_alloc((size_t)sim->nthreads * PL_WALL_ACC_STRIDE * sizeof(int64_t));
         sim->wall_dp = pl_alloc(6 * nb * sizeof(double));
     }
     memcpy(sim->wall_u, scene->box.wall_velocity, sizeof sim->wall_u); /* shear, Hecht Sec. VIII.C */
     if (!sim->hist || !sim->cell_start || !sim->block_sum || !sim->obs_scratch ||
-        (scene->output.fields_interval > 0 && !sim->field_acc) || (walls && (!sim->wall_acc || !sim->wall_dp))) {
+        (scene->output.fields_interval > 0 && !sim->field_acc) || (zwalls && (!sim->wall_acc || !sim->wall_dp))) {
         pl_sim_free(sim);
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cell arrays (%zu cells)", nc);
     }

@@ -92,6 +92,22 @@ head = open("mapped/thermo.tsv").readline().split()
 assert head[:4] == ["step", "time", "time_s", "temperature_K"], head
 PYEOF
 
+# a capillary (walls_xy): outputs name each axis' boundary, restart refused
+# into another wall layout
+printf 'seed = 8;\nsteps = 10;\nbox: { cells = [5, 6, 4]; walls_xy = "noslip"; };\nfluid: { body_force = [0.0, 0.0, 0.01]; };\noutput: { fields_interval = 2; };\n' > cap.cfg
+"$PELOID" run cap.cfg --out cap --threads 1 2> log.txt && $PY - <<'PYEOF' && ok "capillary: boundaries in summary.json and fields.h5" || bad "capillary outputs: $(cat log.txt)"
+import json, h5py
+s = json.load(open("cap/summary.json"))
+assert s["boundaries"] == {"x": "noslip", "y": "noslip", "z": "periodic"}, s["boundaries"]
+assert s["scene"]["box"]["walls_xy"] == "noslip"
+with h5py.File("cap/fields.h5") as f:
+    a = f["observables"].attrs
+    assert (a["boundary_x"], a["boundary_y"], a["boundary_z"]) == (b"noslip", b"noslip", b"periodic")
+PYEOF
+sed 's/walls_xy = "noslip"/walls_xy = "slip"/' cap.cfg > cap2.cfg
+"$PELOID" run cap2.cfg --out cap2 --restart cap/checkpoint.h5 2> err.txt; rc=$?
+[ $rc -eq 2 ] && grep -q "box.walls_xy" err.txt && ok "restart into another walls_xy refused" || bad "walls_xy restart: rc $rc $(cat err.txt)"
+
 # the quickstart suspension (a few steps) and its plot
 "$PELOID" run "$ROOT/scenes/quickstart.cfg" --out qs --steps 80 2> /dev/null
 if [ $? -eq 0 ] && head -1 qs/thermo.tsv | grep -q "c_zcm" && \

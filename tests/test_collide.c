@@ -20,7 +20,7 @@ static void make_box(box_t *b, int L, double gamma, int nthreads)
 {
     pl_err_t err;
     int Ls[3] = {L, L, L};
-    pl_grid_init(&b->g, Ls, PL_WALLS_NONE);
+    pl_grid_init(&b->g, Ls, (const int[3]){PL_WALLS_NONE, PL_WALLS_NONE, PL_WALLS_NONE});
     size_t n = (size_t)(gamma * L * L * L);
     cr_assert_eq(pl_fluid_create(n, 0, &b->f, &err), 0);
     for (size_t i = 0; i < n; ++i) {

@@ -2,7 +2,8 @@
  * state for 1, 2 and 3 threads, and 2N steps == N steps + checkpoint +
  * restart + N steps, bitwise.  Every feature that touches the state is on:
  * grid shift, no-slip walls with virtual particles, body force, Heyes or
- * rescale thermostat, tracking, fields. */
+ * rescale thermostat, tracking, fields; x/y walls (a capillary, and a box
+ * closed on every axis). */
 #include <criterion/criterion.h>
 #include <stdio.h>
 #include <unistd.h>
@@ -19,6 +20,13 @@ static const char *scenes[] = {
     "fluid: { density = 6.0; };\nsrd: { dt = 1.0; rule = \"hecht_axes\"; };\n"
     "thermostat: { type = \"rescale\"; temperature = 0.8; interval = 2; };\n",
     "seed = 44;\nbox: { cells = [8, 8, 8]; };\nfluid: { density = 3.0; };\nsrd: { dt = 0.1; };\n",
+    "seed = 45;\nbox: { cells = [5, 7, 6]; walls_xy = \"noslip\"; };\n"
+    "fluid: { density = 4.0; body_force = [0.0, 0.0, 0.02]; };\n"
+    "srd: { dt = 0.4; alpha = 120.0; };\nthermostat: { type = \"heyes\"; heyes_epsilon = 0.2; };\n"
+    "output: { track_fluid = true; fields_interval = 2; };\n",
+    "seed = 46;\nbox: { cells = [6, 5, 4]; walls_xy = \"slip\"; walls_z = \"noslip\"; };\n"
+    "fluid: { density = 5.0; body_force = [0.01, -0.02, 0.01]; };\nsrd: { dt = 0.8; rule = \"hecht_axes\"; };\n"
+    "thermostat: { type = \"rescale\"; };\noutput: { track_fluid = true; };\n",
 };
 
 static void assert_same(const pl_sim_t *a, const pl_sim_t *b, const char *what)

@@ -11,7 +11,7 @@ static void fill(pl_fluid_t *f, pl_grid_t *g, size_t n, int L)
 {
     pl_err_t err;
     int Ls[3] = {L, L + 1, L + 2};
-    pl_grid_init(g, Ls, PL_WALLS_NONE);
+    pl_grid_init(g, Ls, (const int[3]){PL_WALLS_NONE, PL_WALLS_NONE, PL_WALLS_NONE});
     cr_assert_eq(pl_fluid_create(n, 1, f, &err), 0);
     for (size_t i = 0; i < n; ++i) {
         pl_rand4_t r = pl_rng_uniform4(7, 1, 0, i, 0);

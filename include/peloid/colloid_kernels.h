@@ -80,16 +80,16 @@ void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_
 
 typedef struct {
     double g[3];      /* acceleration (gravity minus buoyancy) */
-    int walls;        /* repulsive walls at z = 0 and z = Lz */
-    double lz, wall_eps, wall_n;
+    int walls[3];     /* repulsive walls at 0 and L[d] on axis d (closed axes) */
+    double L[3], wall_eps, wall_n;
 } pl_colloid_ext_params_t;
 
 /* Adds gravity and wall forces (walls: PL Eq. 16 form with sigma = R_i at the
- * wall distance); energies into epot rows PL_CE_WALL / PL_CE_GRAVITY when non-NULL
- * (gravity energy needs unwrapped z: zu). */
-void pl_colloid_ext_forces(const pl_colloid_ext_params_t *p, size_t n, const double *z,
-                           const double *zu, const double *rad, const double *mass, double *fx,
-                           double *fy, double *fz, double *epot);
+ * wall distance, on every closed axis); energies into epot rows PL_CE_WALL /
+ * PL_CE_GRAVITY when non-NULL (gravity energy needs unwrapped z: zu). */
+void pl_colloid_ext_forces(const pl_colloid_ext_params_t *p, size_t n, const double *x,
+                           const double *y, const double *z, const double *zu, const double *rad,
+                           const double *mass, double *fx, double *fy, double *fz, double *epot);
 
 /* Velocity Verlet half kick (PL Eq. 19 / Hecht Eq. 8 and the rotational
  * analogue of Hecht Eq. 9): v += h F/m, w += h T/I. */

@@ -25,12 +25,13 @@ uint32_t pl_coupling_cell_of(const pl_grid_t *g, double x, double y, double z);
  * list[] (CSR) name, in index order, the colloids whose bounding cube touches
  * each cell.  Returns the number of list entries needed; fills start/list
  * only when that is <= cap (start is always filled). */
-size_t pl_coupling_lookup_build(const pl_coupling_colloids_t *c, const int L[3], int walls_z,
+size_t pl_coupling_lookup_build(const pl_coupling_colloids_t *c, const int L[3], const int walls[3],
                                 int32_t *start, int32_t *list, size_t cap);
 
 /* Index of the first colloid (list order) that contains the point, or -1;
- * *p receives the minimum-image vector point - centre. */
-int32_t pl_coupling_inside(const pl_coupling_colloids_t *c, const int L[3], int walls_z,
+ * *p receives the vector point - centre (minimum image on periodic axes).
+ * walls: PL_WALLS_* of each axis, as in pl_grid_t. */
+int32_t pl_coupling_inside(const pl_coupling_colloids_t *c, const int L[3], const int walls[3],
                            const int32_t *start, const int32_t *list, const double r[3],
                            double p[3]);
 
@@ -42,8 +43,8 @@ typedef struct {
     int placement;    /* PL_PLACE_* */
     int max_refl;     /* N_max */
     uint64_t seed, step;
-    int noslip;          /* walls_z = noslip: a particle pushed through a wall bounces back */
-    double wall_u[2][3]; /* ... in the frame of the wall (bottom, top) */
+    double wall_u[2][3]; /* z wall velocities (bottom, top): a particle pushed through a
+                          * no-slip wall (grid->walls) bounces back in the wall's frame */
     int64_t *wall_acc;   /* NULL, or the wall impulses (fixed point, bottom xyz, top xyz) */
 } pl_coupling1_params_t;
 
@@ -102,7 +103,7 @@ void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
 
 typedef struct {
     double sigma, eps; /* PL Eq. 17 */
-    int L[3], walls_z;
+    int L[3], walls[3]; /* walls: PL_WALLS_* of each axis */
 } pl_coupling_wca_t;
 
 /* PL Eq. 17 forces between nn fluid particles (x, y, z) and the colloids

@@ -1,8 +1,9 @@
 /* Collision-cell grid: box size, the random shift of the current step, walls.
  *
- * Periodic axes: cell index floor(x - s) mod L.  With walls in z the grid has
- * Lz + 2 layers, index floor(z - s_z) + 1, so that cells cut by a wall exist
- * and can be filled with virtual wall particles (Lamura et al., EPL 56, 319). */
+ * Periodic axes: cell index floor(x - s) mod L.  An axis closed by walls
+ * (z = 0, Lz with walls_z; x = 0, Lx and y = 0, Ly with walls_xy) has L + 2
+ * cells, index floor(x - s) + 1, so that cells cut by a wall exist and can be
+ * filled with virtual wall particles (Lamura et al., EPL 56, 319). */
 #ifndef PELOID_GRID_H
 #define PELOID_GRID_H
 
@@ -13,11 +14,12 @@ typedef struct pl_grid {
     int L[3];        /* box edge in cells (a0 = 1): positions in [0, L) */
     int n[3];        /* cells per axis of the collision grid */
     size_t ncells;   /* n[0] * n[1] * n[2] */
-    int walls_z;     /* PL_WALLS_* */
+    int walls[3];    /* PL_WALLS_* of each axis (PL_WALLS_NONE: periodic) */
+    int any_walls;   /* some axis is closed */
     double shift[3]; /* grid shift of the current step, in [-1/2, 1/2) */
 } pl_grid_t;
 
-void pl_grid_init(pl_grid_t *grid, const int L[3], int walls_z);
+void pl_grid_init(pl_grid_t *grid, const int L[3], const int walls[3]);
 
 /* Draws the grid shift of collision step `step` (zero when disabled). */
 void pl_grid_draw_shift(pl_grid_t *grid, uint64_t seed, uint64_t step, int enabled);

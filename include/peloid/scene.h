@@ -30,8 +30,24 @@ typedef struct {
 typedef struct {
     int cells[3];  /* box edge lengths in cells (a0 = 1) */
     int walls_z;   /* PL_WALLS_*: planar walls at z = 0 and z = Lz */
+    int walls_xy;  /* PL_WALLS_*: walls at x = 0, Lx and y = 0, Ly (a capillary) */
     double wall_velocity[2][3]; /* no-slip wall velocities (bottom, top); z = 0 */
 } pl_scene_box_t;
+
+/* Wall type (PL_WALLS_*) of each axis: walls_xy on x and y, walls_z on z.
+ * Returns 1 when any axis is closed. */
+static inline int pl_scene_box_walls(const pl_scene_box_t *b, int walls[3])
+{
+    walls[0] = walls[1] = b->walls_xy;
+    walls[2] = b->walls_z;
+    return b->walls_xy != PL_WALLS_NONE || b->walls_z != PL_WALLS_NONE;
+}
+
+/* Name of an axis' boundary for outputs: "periodic", "noslip" or "slip". */
+static inline const char *pl_scene_boundary_name(int walls)
+{
+    return walls == PL_WALLS_NOSLIP ? "noslip" : walls == PL_WALLS_SLIP ? "slip" : "periodic";
+}
 
 typedef struct {
     double density;        /* gamma: mean particles per cell */
