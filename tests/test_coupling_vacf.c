@@ -33,8 +33,7 @@
  * momentum (Hasimoto: 1 / xi_L = 1 / xi_inf - 2.837 / (6 pi eta L), -16% in
  * D at L = 16, whatever the surface; PL Eq. 43 applied to xi_S alone gives
  * 2% less), times 1 - 1.1795 phi for the other colloids (PL Sec. VI.C, -7.7%).
- * Expected accuracy ~10%: Eqs. 40-43 against the drag on a pinned sphere
- * agree to 4% (test_coupling_drag), the phi term is a dilute-limit
+ * Expected accuracy ~10%: the phi term is a dilute-limit
  * estimate, SE ~3% from 8 blocks.
  *
  * DISABLED: the expectation, not the coupling, is off.  D is 15-20%
@@ -57,8 +56,8 @@
  *    against 0.0141 +- 0.0003 (seeds 71-74) at 10 t0;
  *  - pinned sphere in fluid at rest, Green-Kubo int <F F> / kT: 132 at
  *    0.5 t0 (Enskog xi_E = 133.7, PL Eq. 40), plateau 60 +- 3 at 15-40 t0
- *    (1 / xi = 0.0167); pinned drag at v = 0.1 (test_coupling_drag) 54 +-
- *    2.5; theory 50.8 (Hasimoto) to 52.0 (PL Eq. 43 on xi_S);
+ *    (1 / xi = 0.0167); pinned drag at v = 0.1 (test_coupling_drag, 4 seeds)
+ *    58.4 +- 0.5; theory 50.8 (Hasimoto) to 52.0 (PL Eq. 43 on xi_S);
  *  - the window is diffusive: after 10 t0 D(t) adds 0.0013 (seed 11) to
  *    0.0025 (seeds 71-74) +- 0.0005, the driven response 0.0029; the
  *    transverse-mode sum of the periodic box (kT / rho L^3) sum_k (1 -
