@@ -1,5 +1,6 @@
 /* Helpers shared by the Criterion suites: build a sim from scene text, run
- * steps, and read PL_QUICK (shrinks physics runs under the sanitizers). */
+ * steps, read PL_QUICK (shrinks physics runs under the sanitizers), and
+ * compare two fluids bitwise. */
 #ifndef PELOID_TEST_SUPPORT_H
 #define PELOID_TEST_SUPPORT_H
 
@@ -32,6 +33,26 @@ static inline void pl_test_steps(pl_sim_t *sim, long long n)
 {
     pl_err_t err = {0, ""};
     for (long long i = 0; i < n; ++i) cr_assert_eq(pl_sim_step(sim, &err), 0, "%s", err.msg);
+}
+
+/* Bitwise equality of the step, the fluid (positions, velocities, tracked
+ * displacements), the accumulated fields and the wall impulses. */
+static inline void pl_test_assert_same_fluid(const pl_sim_t *a, const pl_sim_t *b, const char *what)
+{
+    cr_assert_eq(a->step, b->step, "%s: step", what);
+    size_t n = a->fluid.n;
+    cr_assert_eq(n, b->fluid.n, "%s: fluid size", what);
+    for (int d = 0; d < 3; ++d) {
+        cr_assert_eq(memcmp(a->fluid.r[d], b->fluid.r[d], n * sizeof(pl_real)), 0, "%s: r[%d]", what, d);
+        cr_assert_eq(memcmp(a->fluid.v[d], b->fluid.v[d], n * sizeof(pl_real)), 0, "%s: v[%d]", what, d);
+        if (a->fluid.tracked)
+            cr_assert_eq(memcmp(a->fluid.disp[d], b->fluid.disp[d], n * sizeof(double)), 0, "%s: disp", what);
+    }
+    if (a->field_acc) {
+        size_t L3 = (size_t)a->grid.L[0] * (size_t)a->grid.L[1] * (size_t)a->grid.L[2];
+        cr_assert_eq(memcmp(a->field_acc, b->field_acc, 4 * L3 * sizeof(int64_t)), 0, "%s: fields", what);
+    }
+    cr_assert_eq(memcmp(a->wall_impulse, b->wall_impulse, sizeof a->wall_impulse), 0, "%s: wall impulses", what);
 }
 
 #endif

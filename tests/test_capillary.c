@@ -222,20 +222,7 @@ Test(capillary, closed_box_keeps_every_particle_inside, .timeout = 120)
 
 static void assert_same(const pl_sim_t *a, const pl_sim_t *b, const char *what)
 {
-    cr_assert_eq(a->step, b->step);
-    size_t n = a->fluid.n;
-    cr_assert_eq(n, b->fluid.n);
-    for (int d = 0; d < 3; ++d) {
-        cr_assert_eq(memcmp(a->fluid.r[d], b->fluid.r[d], n * sizeof(pl_real)), 0, "%s: r[%d]", what, d);
-        cr_assert_eq(memcmp(a->fluid.v[d], b->fluid.v[d], n * sizeof(pl_real)), 0, "%s: v[%d]", what, d);
-        if (a->fluid.tracked)
-            cr_assert_eq(memcmp(a->fluid.disp[d], b->fluid.disp[d], n * sizeof(double)), 0, "%s: disp", what);
-    }
-    if (a->field_acc) {
-        size_t L3 = (size_t)a->grid.L[0] * (size_t)a->grid.L[1] * (size_t)a->grid.L[2];
-        cr_assert_eq(memcmp(a->field_acc, b->field_acc, 4 * L3 * sizeof(int64_t)), 0, "%s: fields", what);
-    }
-    cr_assert_eq(memcmp(a->wall_impulse, b->wall_impulse, sizeof a->wall_impulse), 0, "%s: wall impulses", what);
+    pl_test_assert_same_fluid(a, b, what);
     const pl_colloid_t *p = a->colloids, *q = b->colloids;
     if (!p) return;
     const size_t nc = p->n;
@@ -245,6 +232,25 @@ static void assert_same(const pl_sim_t *a, const pl_sim_t *b, const char *what)
         cr_assert_eq(memcmp(pa[k], qa[k], nc * sizeof(double)), 0, "%s: colloid array %zu", what, k);
 }
 
+typedef pl_sim_t *(*scene_maker_t)(size_t k, const char *walls, int nthreads);
+
+/* N steps on 2 threads, checkpoint to path, resume on `resumed_threads`,
+ * N more steps: the state must equal ref's after 2N steps. */
+static void assert_restart_matches(const pl_sim_t *ref, scene_maker_t make, size_t k, const char *walls,
+                                   long long N, int resumed_threads, const char *path, const char *what)
+{
+    pl_err_t err = {0, ""};
+    pl_sim_t *half = make(k, walls, 2);
+    pl_test_steps(half, N);
+    cr_assert_eq(pl_checkpoint_write(half, path, &err), 0, "%s", err.msg);
+    pl_sim_free(half);
+    pl_sim_t *resumed = make(k, walls, resumed_threads);
+    cr_assert_eq(pl_checkpoint_read(resumed, path, &err), 0, "%s", err.msg);
+    pl_test_steps(resumed, N);
+    assert_same(ref, resumed, what);
+    pl_sim_free(resumed);
+}
+
 Test(capillary, thread_count_and_restart_do_not_change_results, .timeout = 120)
 {
     const long long N = pl_test_quick() ? 5 : 25;
@@ -252,7 +258,6 @@ Test(capillary, thread_count_and_restart_do_not_change_results, .timeout = 120)
     int fd = mkstemp(path);
     cr_assert_geq(fd, 0);
     close(fd);
-    pl_err_t err = {0, ""};
     for (size_t k = 0; k < NCLOSED; ++k) {
         const char *wz = k == 1 ? "none" : "noslip"; /* scene 1: open capillary along z */
         pl_sim_t *ref = closed_sim(k, wz, 1);
@@ -263,15 +268,7 @@ Test(capillary, thread_count_and_restart_do_not_change_results, .timeout = 120)
             assert_same(ref, other, "threads");
             pl_sim_free(other);
         }
-        pl_sim_t *half = closed_sim(k, wz, 2);
-        pl_test_steps(half, N);
-        cr_assert_eq(pl_checkpoint_write(half, path, &err), 0, "%s", err.msg);
-        pl_sim_free(half);
-        pl_sim_t *resumed = closed_sim(k, wz, 3);
-        cr_assert_eq(pl_checkpoint_read(resumed, path, &err), 0, "%s", err.msg);
-        pl_test_steps(resumed, N);
-        assert_same(ref, resumed, "restart");
-        pl_sim_free(resumed);
+        assert_restart_matches(ref, closed_sim, k, wz, N, 3, path, "restart");
         pl_sim_free(ref);
     }
     unlink(path);
@@ -320,15 +317,7 @@ Test(capillary, moving_z_walls_in_a_closed_box, .timeout = 120)
         pl_test_steps(other, 2 * N);
         assert_same(ref, other, what);
         pl_sim_free(other);
-        pl_sim_t *half = moving_sim(k, "noslip", 2);
-        pl_test_steps(half, N);
-        cr_assert_eq(pl_checkpoint_write(half, path, &err), 0, "%s", err.msg);
-        pl_sim_free(half);
-        pl_sim_t *resumed = moving_sim(k, "noslip", 1);
-        cr_assert_eq(pl_checkpoint_read(resumed, path, &err), 0, "%s", err.msg);
-        pl_test_steps(resumed, N);
-        assert_same(ref, resumed, what);
-        pl_sim_free(resumed);
+        assert_restart_matches(ref, moving_sim, k, "noslip", N, 1, path, what);
         pl_sim_free(ref);
     }
     unlink(path);

@@ -52,13 +52,7 @@ enum { NSCENES = sizeof scenes / sizeof *scenes };
  * and the fluid arrays. */
 static void assert_same(const pl_sim_t *sa, const pl_sim_t *sb, const char *what)
 {
-    cr_assert_eq(sa->step, sb->step, "%s: step", what);
-    size_t nf = sa->fluid.n;
-    cr_assert_eq(nf, sb->fluid.n);
-    for (int d = 0; d < 3; ++d) {
-        cr_assert_eq(memcmp(sa->fluid.r[d], sb->fluid.r[d], nf * sizeof(pl_real)), 0, "%s: r[%d]", what, d);
-        cr_assert_eq(memcmp(sa->fluid.v[d], sb->fluid.v[d], nf * sizeof(pl_real)), 0, "%s: v[%d]", what, d);
-    }
+    pl_test_assert_same_fluid(sa, sb, what);
     const pl_colloid_t *a = sa->colloids, *b = sb->colloids;
     cr_assert(a && b);
     size_t n = a->n;

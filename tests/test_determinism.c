@@ -29,23 +29,6 @@ static const char *scenes[] = {
     "thermostat: { type = \"rescale\"; };\noutput: { track_fluid = true; };\n",
 };
 
-static void assert_same(const pl_sim_t *a, const pl_sim_t *b, const char *what)
-{
-    cr_assert_eq(a->fluid.n, b->fluid.n);
-    cr_assert_eq(a->step, b->step);
-    size_t n = a->fluid.n;
-    for (int d = 0; d < 3; ++d) {
-        cr_assert_eq(memcmp(a->fluid.r[d], b->fluid.r[d], n * sizeof(pl_real)), 0, "%s: r[%d]", what, d);
-        cr_assert_eq(memcmp(a->fluid.v[d], b->fluid.v[d], n * sizeof(pl_real)), 0, "%s: v[%d]", what, d);
-        if (a->fluid.tracked)
-            cr_assert_eq(memcmp(a->fluid.disp[d], b->fluid.disp[d], n * sizeof(double)), 0, "%s: disp", what);
-    }
-    if (a->field_acc) {
-        size_t L3 = (size_t)a->grid.L[0] * (size_t)a->grid.L[1] * (size_t)a->grid.L[2];
-        cr_assert_eq(memcmp(a->field_acc, b->field_acc, 4 * L3 * sizeof(int64_t)), 0, "%s: fields", what);
-    }
-}
-
 Test(determinism, thread_count_does_not_change_results)
 {
     long long steps = pl_test_quick() ? 10 : 60;
@@ -55,7 +38,7 @@ Test(determinism, thread_count_does_not_change_results)
         for (int t = 2; t <= 3; ++t) {
             pl_sim_t *other = pl_test_sim(scenes[s], t);
             pl_test_steps(other, steps);
-            assert_same(ref, other, "threads");
+            pl_test_assert_same_fluid(ref, other, "threads");
             pl_sim_free(other);
         }
         pl_sim_free(ref);
@@ -81,7 +64,7 @@ Test(determinism, restart_continues_bitwise)
         cr_assert_eq(pl_checkpoint_read(resumed, path, &err), 0, "%s", err.msg);
         cr_assert_eq(resumed->step, N);
         pl_test_steps(resumed, N);
-        assert_same(full, resumed, "restart");
+        pl_test_assert_same_fluid(full, resumed, "restart");
         pl_sim_free(full);
         pl_sim_free(resumed);
     }
