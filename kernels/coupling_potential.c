@@ -4,8 +4,10 @@
  * a radial force: slip surfaces (PL Sec. III.B).  Only the particles near a
  * colloid are integrated at the MD step (src/coupling_potential.c); this
  * file finds them (parallel over the streaming's static chunks) and
- * evaluates the forces (serial, in particle order: each colloid's force is
- * a fixed-order sum, so the result does not depend on the thread count). */
+ * evaluates the forces, in parallel over fixed blocks of particles: each
+ * block sums its reactions on the colloids in particle order into its own
+ * row, and the rows are added in block order, so the result depends on the
+ * number of selected particles and colloids but not on the thread count. */
 #include <math.h>
 #include <omp.h>
 
@@ -31,15 +33,26 @@ void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
     }
 }
 
-double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const double *x,
-                              const double *y, const double *z, double *fx, double *fy,
-                              double *fz, const pl_coupling_colloids_t *c, const int32_t *lk_start,
-                              const int32_t *lk_list, double *cfx, double *cfy, double *cfz)
+size_t pl_coupling_wca_blocks(size_t nn, size_t ncolloids)
+{
+    enum { BLOCK = 2048 };
+    const size_t row = 3 * ncolloids + 1, cap = (size_t)1 << 20; /* doubles of partial sums */
+    size_t nblk = (nn + BLOCK - 1) / BLOCK, most = cap / row;
+    if (nblk > most) nblk = most;
+    return nblk ? nblk : 1;
+}
+
+/* Forces on particles [lo, hi); reactions summed into row (3 nc + 1: x, y,
+ * z per colloid, then the energy). */
+static void wca_block(const pl_coupling_wca_t *w, size_t lo, size_t hi, const double *x, const double *y,
+                      const double *z, double *fx, double *fy, double *fz, const pl_coupling_colloids_t *c,
+                      const int32_t *lk_start, const int32_t *lk_list, double *row)
 {
     const double s2 = w->sigma * w->sigma, rc2 = s2 * cbrt(2.0); /* (2^{1/6} sigma)^2 */
     const int *L = w->L;
+    const size_t nc = c->n;
     double epot = 0.0;
-    for (size_t j = 0; j < nn; ++j) {
+    for (size_t j = lo; j < hi; ++j) {
         double r[3] = {x[j], y[j], z[j]}, F[3] = {0.0, 0.0, 0.0};
         int ic[3];
         for (int d = 0; d < 3; ++d) {
@@ -61,14 +74,39 @@ double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const doubl
             /* PL Eq. 17: F = 24 eps (2 (s/r)^12 - (s/r)^6) / r^2 * dv */
             double ff = 24.0 * w->eps * (2.0 * sr6 * sr6 - sr6) / d2;
             epot += 4.0 * w->eps * (sr6 * sr6 - sr6 + 0.25);
-            for (int a = 0; a < 3; ++a) F[a] += ff * dv[a];
-            cfx[k] -= ff * dv[0];
-            cfy[k] -= ff * dv[1];
-            cfz[k] -= ff * dv[2];
+            for (int a = 0; a < 3; ++a) {
+                F[a] += ff * dv[a];
+                row[(size_t)a * nc + (size_t)k] -= ff * dv[a];
+            }
         }
         fx[j] = F[0];
         fy[j] = F[1];
         fz[j] = F[2];
     }
+    row[3 * nc] = epot;
+}
+
+double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const double *x, const double *y,
+                              const double *z, double *fx, double *fy, double *fz,
+                              const pl_coupling_colloids_t *c, const int32_t *lk_start,
+                              const int32_t *lk_list, double *cfx, double *cfy, double *cfz,
+                              int nthreads, double *partial)
+{
+    const size_t nc = c->n, row = 3 * nc + 1, nblk = pl_coupling_wca_blocks(nn, nc);
+#pragma omp parallel num_threads(nthreads)
+    {
+#pragma omp for schedule(dynamic, 1)
+        for (size_t b = 0; b < nblk; ++b) {
+            double *rb = partial + b * row;
+            for (size_t q = 0; q < row; ++q) rb[q] = 0.0;
+            wca_block(w, nn * b / nblk, nn * (b + 1) / nblk, x, y, z, fx, fy, fz, c, lk_start, lk_list, rb);
+        }
+        double *cf[3] = {cfx, cfy, cfz};
+#pragma omp for schedule(static)
+        for (size_t q = 0; q < 3 * nc; ++q) /* in block order */
+            for (size_t b = 0; b < nblk; ++b) cf[q / nc][q % nc] += partial[b * row + q];
+    }
+    double epot = 0.0;
+    for (size_t b = 0; b < nblk; ++b) epot += partial[b * row + 3 * nc];
     return epot;
 }

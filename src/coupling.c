@@ -236,6 +236,7 @@ void pl_coupling_free(pl_coupling_t *cp)
     pl_free(cp->vsave);
     free(cp->rad_big);
     free(cp->cf);
+    free(cp->wca_partial);
     free(cp->near_idx);
     free(cp->near_owner);
     free(cp->near_buf);

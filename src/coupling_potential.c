@@ -8,7 +8,9 @@
  * unselected particle reaches the cut-off within the step.
  *
  * Determinism: selection is parallel over the streaming's static chunks and
- * gathered in particle order; the MD of the selected particles is serial.
+ * gathered in particle order; the forces are summed over fixed blocks
+ * (kernels/coupling_potential.c), the kicks and drifts are per particle and
+ * the wall impulses are integers: no result depends on the thread count.
  * Momentum: equal and opposite forces in the same Verlet kicks. */
 #include <math.h>
 #include <stdlib.h>
@@ -79,10 +81,12 @@ int pl_coupling_stage_select(pl_sim_t *sim, pl_err_t *err)
         if (!cp->near_idx || !cp->near_owner || !cp->near_buf)
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for %zu near-colloid particles", nn);
     }
-    size_t j = 0;
+    /* gathered in particle order: thread t's chunk goes after those of 0..t-1 */
+#pragma omp parallel for schedule(static) num_threads(cp->nthreads)
     for (int t = 0; t < cp->nthreads; ++t) {
-        size_t lo, hi;
+        size_t lo, hi, j = 0;
         pl_chunk(f->n, t, cp->nthreads, &lo, &hi);
+        for (int u = 0; u < t; ++u) j += cp->counts[(size_t)u * 8 + 2];
         for (size_t q = 0; q < cp->counts[(size_t)t * 8 + 2]; ++q, ++j) {
             size_t i = cp->found[lo + q];
             cp->near_idx[j] = (uint32_t)i;
@@ -93,6 +97,14 @@ int pl_coupling_stage_select(pl_sim_t *sim, pl_err_t *err)
                 NB(cp, 9 + d)[j] = f->tracked ? f->disp[d][i] : 0.0;
             }
         }
+    }
+    const size_t nc = sim->colloids->n, partial = pl_coupling_wca_blocks(nn, nc) * (3 * nc + 1);
+    if (partial > cp->wca_partial_cap) {
+        free(cp->wca_partial);
+        cp->wca_partial_cap = partial;
+        cp->wca_partial = malloc(partial * sizeof *cp->wca_partial);
+        if (!cp->wca_partial)
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the forces of %zu near-colloid particles", nn);
     }
     cp->nnear = nn;
     cp->near_total += nn;
@@ -109,7 +121,8 @@ static void forces(pl_coupling_t *cp, pl_colloid_t *c)
     size_t nn = cp->nnear;
     cp->epot_cf = pl_coupling_wca_forces(&cp->wca, nn, NB(cp, 0), NB(cp, 1), NB(cp, 2), NB(cp, 6),
                                          NB(cp, 7), NB(cp, 8), &v, cp->lk_start, cp->lk_list,
-                                         cp->cf, cp->cf + c->n, cp->cf + 2 * c->n);
+                                         cp->cf, cp->cf + c->n, cp->cf + 2 * c->n, cp->nthreads,
+                                         cp->wca_partial);
     if (cp->pinned) return;
     for (size_t k = 0; k < c->n; ++k) {
         c->fx[k] += cp->cf[k];
@@ -121,11 +134,12 @@ static void forces(pl_coupling_t *cp, pl_colloid_t *c)
 /* v += h (F + g) for the selected particles (m_f = 1). */
 static void kick_fluid(pl_coupling_t *cp, double h, const double g[3])
 {
-    for (int d = 0; d < 3; ++d) {
-        double *v = NB(cp, 3 + d);
-        const double *F = NB(cp, 6 + d);
-        for (size_t j = 0; j < cp->nnear; ++j) v[j] += h * (F[j] + g[d]);
-    }
+    const size_t nn = cp->nnear;
+    double *v[3] = {NB(cp, 3), NB(cp, 4), NB(cp, 5)};
+    const double *F[3] = {NB(cp, 6), NB(cp, 7), NB(cp, 8)};
+#pragma omp parallel for schedule(static) num_threads(cp->nthreads)
+    for (size_t j = 0; j < nn; ++j)
+        for (int d = 0; d < 3; ++d) v[d][j] += h * (F[d][j] + g[d]);
 }
 
 static void wall_add(int64_t acc[6], int top, const double dp[3])
@@ -142,7 +156,10 @@ static void drift_fluid(pl_coupling_t *cp, const pl_sim_t *sim, double dt, int64
 {
     static const double at_rest[3] = {0.0, 0.0, 0.0};
     const pl_grid_t *g = &sim->grid;
-    for (size_t j = 0; j < cp->nnear; ++j) {
+    const size_t nn = cp->nnear;
+    /* integer impulses: the sum is exact in any order */
+#pragma omp parallel for schedule(static) num_threads(cp->nthreads) reduction(+ : acc[:6])
+    for (size_t j = 0; j < nn; ++j) {
         const double r0[3] = {NB(cp, 0)[j], NB(cp, 1)[j], NB(cp, 2)[j]};
         for (int d = 0; d < 3; ++d) {
             NB(cp, d)[j] += NB(cp, 3 + d)[j] * dt;
@@ -169,6 +186,18 @@ static void drift_fluid(pl_coupling_t *cp, const pl_sim_t *sim, double dt, int64
     }
 }
 
+/* First index of the selected list whose owner is >= t (owners ascend). */
+static size_t owner_start(const pl_coupling_t *cp, int t)
+{
+    size_t lo = 0, hi = cp->nnear;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (cp->near_owner[mid] < t) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo;
+}
+
 int pl_coupling_stage_potential_md(pl_sim_t *sim, pl_err_t *err)
 {
     pl_coupling_t *cp = sim->coupling;
@@ -182,7 +211,9 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, pl_err_t *err)
     int64_t wacc[6] = {0, 0, 0, 0, 0, 0}, sacc[6] = {0, 0, 0, 0, 0, 0};
     pl_stream_params_t sp;
     pl_sim_stream_params(sim, &sp);
-    for (size_t j = 0; j < cp->nnear; ++j) {
+    const size_t nnear = cp->nnear;
+#pragma omp parallel for schedule(static) num_threads(cp->nthreads) reduction(+ : sacc[:6])
+    for (size_t j = 0; j < nnear; ++j) {
         size_t i = cp->near_idx[j];
         if (f->tracked)
             for (int d = 0; d < 3; ++d) f->disp[d][i] = NB(cp, 9 + d)[j];
@@ -224,25 +255,31 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, pl_err_t *err)
         for (int k = 0; k < 6; ++k) wacc[k] -= sacc[k];
         pl_sim_wall_add(sim, wacc);
     }
-    /* write the selected particles back, wrapped, into their new cells */
+    /* write the selected particles back, wrapped, into their new cells; the
+     * particles of one owner (a contiguous run of the list) and its
+     * histogram row are handled by one thread */
     const double L[3] = {sim->grid.L[0], sim->grid.L[1], sim->grid.L[2]};
-    for (size_t j = 0; j < cp->nnear; ++j) {
-        size_t i = cp->near_idx[j];
-        for (int d = 0; d < 3; ++d) {
-            double x = NB(cp, d)[j];
-            if (sim->grid.walls[d] == PL_WALLS_NONE) {
-                x -= L[d] * floor(x / L[d]);
-                if (x >= L[d]) x = 0.0;
+#pragma omp parallel for schedule(static) num_threads(cp->nthreads)
+    for (int t = 0; t < cp->nthreads; ++t) {
+        size_t j = owner_start(cp, t), end = owner_start(cp, t + 1);
+        uint32_t *hrow = sim->hist + (size_t)t * sim->grid.ncells;
+        for (; j < end; ++j) {
+            size_t i = cp->near_idx[j];
+            for (int d = 0; d < 3; ++d) {
+                double x = NB(cp, d)[j];
+                if (sim->grid.walls[d] == PL_WALLS_NONE) {
+                    x -= L[d] * floor(x / L[d]);
+                    if (x >= L[d]) x = 0.0;
+                }
+                f->r[d][i] = (pl_real)x;
+                f->v[d][i] = (pl_real)NB(cp, 3 + d)[j];
+                if (f->tracked) f->disp[d][i] = NB(cp, 9 + d)[j];
             }
-            f->r[d][i] = (pl_real)x;
-            f->v[d][i] = (pl_real)NB(cp, 3 + d)[j];
-            if (f->tracked) f->disp[d][i] = NB(cp, 9 + d)[j];
+            uint32_t cell = pl_coupling_cell_of(&sim->grid, f->r[0][i], f->r[1][i], f->r[2][i]);
+            hrow[f->cell[i]]--;
+            hrow[cell]++;
+            f->cell[i] = cell;
         }
-        uint32_t cell = pl_coupling_cell_of(&sim->grid, f->r[0][i], f->r[1][i], f->r[2][i]);
-        uint32_t *hrow = sim->hist + (size_t)cp->near_owner[j] * sim->grid.ncells;
-        hrow[f->cell[i]]--;
-        hrow[cell]++;
-        f->cell[i] = cell;
     }
     return 0;
 }

@@ -51,6 +51,8 @@ typedef struct pl_coupling {
     int32_t *near_owner; /* thread whose chunk (and histogram row) holds it */
     double *near_buf;    /* 12 x near_cap: r, v, f, saved displacement */
     double *cf;          /* 3 x ncolloids: fluid force on the colloids */
+    double *wca_partial; /* per-block partial reactions (pl_coupling_wca_forces) */
+    size_t wca_partial_cap; /* doubles */
     double epot_cf;      /* PL Eq. 17 energy after the last MD step */
     unsigned long long near_total; /* selected particle-steps (cost counter) */
 } pl_coupling_t;

@@ -109,10 +109,14 @@ typedef struct {
 /* PL Eq. 17 forces between nn fluid particles (x, y, z) and the colloids
  * (positions in c; candidates from the lookup built with radii >= the
  * cut-off 2^{1/6} sigma): f overwritten, cf accumulated (+= the reaction).
- * Serial in particle order (deterministic); returns the potential energy. */
-double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const double *x,
-                              const double *y, const double *z, double *fx, double *fy,
-                              double *fz, const pl_coupling_colloids_t *c, const int32_t *lk_start,
-                              const int32_t *lk_list, double *cfx, double *cfy, double *cfz);
+ * Parallel over pl_coupling_wca_blocks(nn, c->n) fixed blocks, each with a
+ * row of 3 c->n + 1 doubles in `partial` (scratch), added in block order:
+ * the same bits for any thread count.  Returns the potential energy. */
+size_t pl_coupling_wca_blocks(size_t nn, size_t ncolloids);
+double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const double *x, const double *y,
+                              const double *z, double *fx, double *fy, double *fz,
+                              const pl_coupling_colloids_t *c, const int32_t *lk_start,
+                              const int32_t *lk_list, double *cfx, double *cfy, double *cfz,
+                              int nthreads, double *partial);
 
 #endif
