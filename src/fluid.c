@@ -3,13 +3,24 @@
 
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 
 void *pl_alloc(size_t bytes)
 {
     size_t rounded = (bytes + PL_ALIGN - 1) / PL_ALIGN * PL_ALIGN;
     if (rounded == 0) rounded = PL_ALIGN;
-    char *p = aligned_alloc(PL_ALIGN, rounded);
-    if (!p) return NULL;
+    /* Arrays of 4 MiB and more start on a 2 MiB boundary and their whole
+     * 2 MiB pages are marked for transparent huge pages (the kernel's THP
+     * mode "madvise"): fewer TLB misses in the streaming and scatter passes
+     * (bench/RESULTS.md: step -8% at 1 thread).  Nothing is touched beyond
+     * `rounded`, so the resident size is unchanged. */
+    const size_t huge = (size_t)2 << 20;
+    void *q = NULL;
+    if (posix_memalign(&q, bytes >= 2 * huge ? huge : PL_ALIGN, rounded)) return NULL;
+    char *p = q;
+#ifdef MADV_HUGEPAGE
+    if (bytes >= 2 * huge) (void)madvise(p, rounded / huge * huge, MADV_HUGEPAGE); /* advice: errors ignored */
+#endif
     /* First touch with the kernels' static partition (pages near threads). */
     const size_t page = 4096;
     size_t npages = (rounded + page - 1) / page;
