@@ -19,46 +19,41 @@ void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
                       const int32_t *lk_start, const int32_t *lk_list, int nthreads,
                       uint32_t *found, uint64_t *counts)
 {
-    const int periodic = g->walls[0] == PL_WALLS_NONE && g->walls[1] == PL_WALLS_NONE && g->walls[2] == PL_WALLS_NONE;
+    /* pl_coupling_inside's test, written out for the selection: the cell is
+     * a truncation clamped to [0, L) (= floor + clip), the minimum image one
+     * conditional shift on periodic axes (positions there are wrapped into
+     * [0, L)), and no early exit, so the outcome is appended without a
+     * branch.  The same selections as pl_coupling_inside (checkpoints of
+     * periodic, z-wall and capillary scenes bitwise equal); select stage
+     * 14 -> 10 ns/particle at 1 thread, 7.5 -> 5.5 at 2 (bench_coupling's
+     * potential case). */
+    const int L0 = g->L[0], L1 = g->L[1], L2 = g->L[2];
+    const int p0 = g->walls[0] == PL_WALLS_NONE, p1 = g->walls[1] == PL_WALLS_NONE, p2 = g->walls[2] == PL_WALLS_NONE;
+    /* half box on periodic axes; never exceeded on closed ones */
+    const double h0 = p0 ? 0.5 * L0 : INFINITY, h1 = p1 ? 0.5 * L1 : INFINITY, h2 = p2 ? 0.5 * L2 : INFINITY;
 #pragma omp parallel num_threads(nthreads)
     {
         int t = omp_get_thread_num();
         size_t lo, hi, m = 0;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
-        if (periodic) {
-            /* pl_coupling_inside's test for fully periodic boxes, written out:
-             * positions are wrapped into [0, L), so the cell is a truncation
-             * and the minimum image one conditional shift; no early exit, so
-             * the particle's outcome is appended without a branch.  The same
-             * selections (checkpoints of scenes/coupling_potential.cfg and
-             * coupling_drag.cfg bitwise equal to the general loop), select
-             * stage 14 -> 10 ns/particle at 1 thread, 7.5 -> 5.5 at 2
-             * (bench_coupling's potential case). */
-            const int L0 = g->L[0], L1 = g->L[1], L2 = g->L[2];
-            const double h0 = 0.5 * L0, h1 = 0.5 * L1, h2 = 0.5 * L2;
-            for (size_t i = lo; i < hi; ++i) {
-                const double x = f->r[0][i], y = f->r[1][i], z = f->r[2][i];
-                int ix = (int)x, iy = (int)y, iz = (int)z; /* x in [0, L) */
-                ix = ix < L0 ? ix : L0 - 1; iy = iy < L1 ? iy : L1 - 1; iz = iz < L2 ? iz : L2 - 1;
-                const size_t cell = ((size_t)iz * (size_t)L1 + (size_t)iy) * (size_t)L0 + (size_t)ix;
-                int in = 0; /* branch-free: the test decides only the append */
-                for (int32_t q = lk_start[cell], e = lk_start[cell + 1]; q < e; ++q) {
-                    const int32_t k = lk_list[q];
-                    double dx = x - c->x[k], dy = y - c->y[k], dz = z - c->z[k];
-                    dx = dx > h0 ? dx - L0 : (dx < -h0 ? dx + L0 : dx);
-                    dy = dy > h1 ? dy - L1 : (dy < -h1 ? dy + L1 : dy);
-                    dz = dz > h2 ? dz - L2 : (dz < -h2 ? dz + L2 : dz);
-                    in |= dx * dx + dy * dy + dz * dz < c->rad[k] * c->rad[k];
-                }
-                found[lo + m] = (uint32_t)i;
-                m += (size_t)in;
+        for (size_t i = lo; i < hi; ++i) {
+            const double x = f->r[0][i], y = f->r[1][i], z = f->r[2][i];
+            int ix = (int)x, iy = (int)y, iz = (int)z;
+            ix = ix < 0 ? 0 : ix < L0 ? ix : L0 - 1;
+            iy = iy < 0 ? 0 : iy < L1 ? iy : L1 - 1;
+            iz = iz < 0 ? 0 : iz < L2 ? iz : L2 - 1;
+            const size_t cell = ((size_t)iz * (size_t)L1 + (size_t)iy) * (size_t)L0 + (size_t)ix;
+            int in = 0;
+            for (int32_t q = lk_start[cell], e = lk_start[cell + 1]; q < e; ++q) {
+                const int32_t k = lk_list[q];
+                double dx = x - c->x[k], dy = y - c->y[k], dz = z - c->z[k];
+                dx = dx > h0 ? dx - L0 : (dx < -h0 ? dx + L0 : dx);
+                dy = dy > h1 ? dy - L1 : (dy < -h1 ? dy + L1 : dy);
+                dz = dz > h2 ? dz - L2 : (dz < -h2 ? dz + L2 : dz);
+                in |= dx * dx + dy * dy + dz * dz < c->rad[k] * c->rad[k];
             }
-        } else {
-            for (size_t i = lo; i < hi; ++i) {
-                double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, q[3];
-                if (pl_coupling_inside(c, g->L, g->walls, lk_start, lk_list, r, q) >= 0)
-                    found[lo + m++] = (uint32_t)i;
-            }
+            found[lo + m] = (uint32_t)i;
+            m += (size_t)in;
         }
         counts[(size_t)t * 8 + 2] = m;
     }
