@@ -46,7 +46,9 @@ double pl_srd_xi_parallel(double xi_S, double xi_E) { return 1.0 / (1.0 / xi_S +
 
 double pl_srd_xi_stokes_pl(double eta, double sigma, double L)
 {
-    return 4.0 * PL_PI * eta * sigma * (1.0 + 2.837 * sigma / L); /* PL Eqs. 42-43 */
+    /* PL Eqs. 42-43 as PL evaluate them: f^-1 = 1 / (1 - 2.837 sigma / L)
+     * reproduces their a_eff (Eq. 44) of 1.55, 3.78, 6.11 a0 */
+    return 4.0 * PL_PI * eta * sigma / (1.0 - 2.837 * sigma / L);
 }
 
 double pl_srd_xi_hasimoto(double xi_inf, double eta, double L)

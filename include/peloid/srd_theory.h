@@ -29,8 +29,14 @@ double pl_srd_xi_enskog(double gamma, double kT, double sigma_cf, double M);
 /* PL Eq. 41: 1 / xi = 1 / xi_S + 1 / xi_E. */
 double pl_srd_xi_parallel(double xi_S, double xi_E);
 /* Stokes friction of a slip sphere in a periodic box of side L, PL Eqs.
- * 42-43 read so that the friction grows in a periodic array:
- * 4 pi eta sigma_cf (1 + 2.837 sigma_cf / L); L = INFINITY: no correction. */
+ * 42-43 as PL evaluate them: 4 pi eta sigma_cf / (1 - 2.837 sigma_cf / L).
+ * PL write f ~ 1 + 2.837 sigma_cf / L (lowest order) and xi_S = 4 pi eta
+ * sigma_cf f^-1; their effective radii a_eff = 1.55, 3.78, 6.11 a0 (PL Eq.
+ * 44, sigma_cf = 2, 4, 6, L = 16 sigma_cf) follow from f^-1 = 1 / (1 -
+ * 2.837 sigma_cf / L), Hasimoto's drag factor of a fixed stick-sphere
+ * array, and from neither 1 + 2.837 sigma_cf / L (1.52, 3.69, 5.97) nor
+ * 1 / (1 + 2.837 sigma_cf / L) (1.21, 2.83, 4.50).  L = INFINITY: no
+ * correction. */
 double pl_srd_xi_stokes_pl(double eta, double sigma_cf, double L);
 /* Friction of a sphere free to move in a periodic box of side L with zero
  * total momentum (Hasimoto 1959; Duenweg & Kremer 1993): the periodic images
