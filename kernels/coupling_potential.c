@@ -10,50 +10,134 @@
  * number of selected particles and colloids but not on the thread count. */
 #include <math.h>
 #include <omp.h>
+#include <string.h>
 
 #include "peloid/coupling_kernels.h"
 #include "peloid/scene.h"
 #include "peloid/srd_kernels.h"
 
+/* Geometry of the selection test: box, periodic flags and half boxes. */
+typedef struct {
+    int L0, L1, L2;
+    double h0, h1, h2; /* half box on periodic axes; never exceeded on closed ones */
+} find_geom_t;
+
+static find_geom_t find_geom(const pl_grid_t *g)
+{
+    find_geom_t q = {g->L[0], g->L[1], g->L[2], INFINITY, INFINITY, INFINITY};
+    if (g->walls[0] == PL_WALLS_NONE) q.h0 = 0.5 * q.L0;
+    if (g->walls[1] == PL_WALLS_NONE) q.h1 = 0.5 * q.L1;
+    if (g->walls[2] == PL_WALLS_NONE) q.h2 = 0.5 * q.L2;
+    return q;
+}
+
+/* pl_coupling_inside's test, written out for the selection: the cell is a
+ * truncation clamped to [0, L) (= floor + clip), the minimum image one
+ * conditional shift on periodic axes (positions there are wrapped into
+ * [0, L)), and no early exit, so the outcome is appended without a branch.
+ * The same selections as pl_coupling_inside (checkpoints of periodic, z-wall
+ * and capillary scenes bitwise equal); select stage 14 -> 10 ns/particle at
+ * 1 thread, 7.5 -> 5.5 at 2 (bench_coupling's potential case). */
+static inline int near_any(const find_geom_t *q, const pl_coupling_colloids_t *c, const int32_t *lk_start,
+                           const int32_t *lk_list, double x, double y, double z)
+{
+    int ix = (int)x, iy = (int)y, iz = (int)z;
+    ix = ix < 0 ? 0 : ix < q->L0 ? ix : q->L0 - 1;
+    iy = iy < 0 ? 0 : iy < q->L1 ? iy : q->L1 - 1;
+    iz = iz < 0 ? 0 : iz < q->L2 ? iz : q->L2 - 1;
+    const size_t cell = ((size_t)iz * (size_t)q->L1 + (size_t)iy) * (size_t)q->L0 + (size_t)ix;
+    int in = 0;
+    for (int32_t p = lk_start[cell], e = lk_start[cell + 1]; p < e; ++p) {
+        const int32_t k = lk_list[p];
+        double dx = x - c->x[k], dy = y - c->y[k], dz = z - c->z[k];
+        dx = dx > q->h0 ? dx - q->L0 : (dx < -q->h0 ? dx + q->L0 : dx);
+        dy = dy > q->h1 ? dy - q->L1 : (dy < -q->h1 ? dy + q->L1 : dy);
+        dz = dz > q->h2 ? dz - q->L2 : (dz < -q->h2 ? dz + q->L2 : dz);
+        in |= dx * dx + dy * dy + dz * dz < c->rad[k] * c->rad[k];
+    }
+    return in;
+}
+
 void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
                       const int32_t *lk_start, const int32_t *lk_list, int nthreads,
                       uint32_t *found, uint64_t *counts)
 {
-    /* pl_coupling_inside's test, written out for the selection: the cell is
-     * a truncation clamped to [0, L) (= floor + clip), the minimum image one
-     * conditional shift on periodic axes (positions there are wrapped into
-     * [0, L)), and no early exit, so the outcome is appended without a
-     * branch.  The same selections as pl_coupling_inside (checkpoints of
-     * periodic, z-wall and capillary scenes bitwise equal); select stage
-     * 14 -> 10 ns/particle at 1 thread, 7.5 -> 5.5 at 2 (bench_coupling's
-     * potential case). */
-    const int L0 = g->L[0], L1 = g->L[1], L2 = g->L[2];
-    const int p0 = g->walls[0] == PL_WALLS_NONE, p1 = g->walls[1] == PL_WALLS_NONE, p2 = g->walls[2] == PL_WALLS_NONE;
-    /* half box on periodic axes; never exceeded on closed ones */
-    const double h0 = p0 ? 0.5 * L0 : INFINITY, h1 = p1 ? 0.5 * L1 : INFINITY, h2 = p2 ? 0.5 * L2 : INFINITY;
+    const find_geom_t q = find_geom(g);
 #pragma omp parallel num_threads(nthreads)
     {
         int t = omp_get_thread_num();
         size_t lo, hi, m = 0;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
         for (size_t i = lo; i < hi; ++i) {
-            const double x = f->r[0][i], y = f->r[1][i], z = f->r[2][i];
-            int ix = (int)x, iy = (int)y, iz = (int)z;
-            ix = ix < 0 ? 0 : ix < L0 ? ix : L0 - 1;
-            iy = iy < 0 ? 0 : iy < L1 ? iy : L1 - 1;
-            iz = iz < 0 ? 0 : iz < L2 ? iz : L2 - 1;
-            const size_t cell = ((size_t)iz * (size_t)L1 + (size_t)iy) * (size_t)L0 + (size_t)ix;
-            int in = 0;
-            for (int32_t q = lk_start[cell], e = lk_start[cell + 1]; q < e; ++q) {
-                const int32_t k = lk_list[q];
-                double dx = x - c->x[k], dy = y - c->y[k], dz = z - c->z[k];
-                dx = dx > h0 ? dx - L0 : (dx < -h0 ? dx + L0 : dx);
-                dy = dy > h1 ? dy - L1 : (dy < -h1 ? dy + L1 : dy);
-                dz = dz > h2 ? dz - L2 : (dz < -h2 ? dz + L2 : dz);
-                in |= dx * dx + dy * dy + dz * dz < c->rad[k] * c->rad[k];
-            }
             found[lo + m] = (uint32_t)i;
-            m += (size_t)in;
+            m += (size_t)near_any(&q, c, lk_start, lk_list, f->r[0][i], f->r[1][i], f->r[2][i]);
+        }
+        counts[(size_t)t * 8 + 2] = m;
+    }
+}
+
+/* Collision cells along one axis, under shift s, that can hold a point
+ * within R of x: those of [x - R, x + R] widened by 1e-6 a0 against
+ * rounding (the cells are floor(x - s) of the stored positions, the test
+ * near_any's, both in double: errors ~1e-12 a0); periodic axes wrap (every
+ * cell once the span covers the axis), closed axes (cells 0 .. L + 1,
+ * kernels/coupling_lookup.c) are clipped. */
+static int axis_cells(double x, double R, double s, int n, int periodic, int *idx)
+{
+    const double eps = 1e-6;
+    int lo = (int)floor(x - R - eps - s), hi = (int)floor(x + R + eps - s);
+    if (!periodic) {
+        lo = lo + 1 < 0 ? 0 : lo + 1;
+        hi = hi + 1 > n - 1 ? n - 1 : hi + 1;
+    } else if (hi - lo + 1 >= n) {
+        lo = 0;
+        hi = n - 1;
+    }
+    int m = 0;
+    for (int i = lo; i <= hi; ++i) idx[m++] = periodic ? ((i % n) + n) % n : i;
+    return m;
+}
+
+void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
+                             const int32_t *lk_start, const int32_t *lk_list, const uint32_t *cell_start,
+                             uint8_t *marks, int *axis_buf, int nthreads, uint32_t *found, uint64_t *counts)
+{
+    const find_geom_t q = find_geom(g);
+    const size_t ncells = g->ncells;
+    /* mark the cells a selection sphere reaches (serial: colloids are few) */
+    memset(marks, 0, ncells);
+    int *ax[3] = {axis_buf, axis_buf + g->n[0], axis_buf + g->n[0] + g->n[1]};
+    for (size_t k = 0; k < c->n; ++k) {
+        const double r[3] = {c->x[k], c->y[k], c->z[k]};
+        int m[3];
+        for (int d = 0; d < 3; ++d)
+            m[d] = axis_cells(r[d], c->rad[k], g->shift[d], g->n[d], g->walls[d] == PL_WALLS_NONE, ax[d]);
+        for (int a = 0; a < m[2]; ++a)
+            for (int b = 0; b < m[1]; ++b) {
+                uint8_t *row = marks + ((size_t)ax[2][a] * (size_t)g->n[1] + (size_t)ax[1][b]) * (size_t)g->n[0];
+                for (int e = 0; e < m[0]; ++e) row[ax[0][e]] = 1;
+            }
+    }
+#pragma omp parallel num_threads(nthreads)
+    {
+        int t = omp_get_thread_num();
+        size_t lo, hi, m = 0;
+        pl_chunk(f->n, t, nthreads, &lo, &hi);
+        /* first cell ending after lo */
+        size_t a = 0, b = ncells;
+        while (a < b) {
+            size_t mid = a + (b - a) / 2;
+            if (cell_start[mid + 1] <= lo) a = mid + 1;
+            else b = mid;
+        }
+        for (size_t cl = a; cl < ncells && cell_start[cl] < hi; ++cl) {
+            if (!marks[cl]) continue;
+            size_t i0 = cell_start[cl] > lo ? cell_start[cl] : lo;
+            size_t i1 = cell_start[cl + 1] < hi ? cell_start[cl + 1] : hi;
+            for (size_t i = i0; i < i1; ++i) {
+                found[lo + m] = (uint32_t)i;
+                m += (size_t)near_any(&q, c, lk_start, lk_list, f->r[0][i], f->r[1][i], f->r[2][i]);
+            }
         }
         counts[(size_t)t * 8 + 2] = m;
     }

@@ -125,6 +125,7 @@ int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err)
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: cannot open checkpoint (missing or not HDF5)", path);
         goto out;
     }
+    sim->fluid_sorted = 0; /* cell_start is not stored */
     long long meta[8];
     pl_fluid_t *fl = &sim->fluid;
     const pl_scene_t *sc = &sim->scene;

@@ -235,6 +235,8 @@ void pl_coupling_free(pl_coupling_t *cp)
     free(cp->col_idx);
     pl_free(cp->vsave);
     free(cp->rad_big);
+    pl_free(cp->marks);
+    free(cp->axis_buf);
     free(cp->cf);
     free(cp->wca_partial);
     free(cp->near_idx);

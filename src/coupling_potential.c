@@ -36,7 +36,9 @@ int pl_coupling_potential_setup(pl_coupling_t *cp, pl_sim_t *sim, pl_err_t *err)
     cp->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t));
     size_t L3 = (size_t)sim->grid.L[0] * (size_t)sim->grid.L[1] * (size_t)sim->grid.L[2];
     cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t));
-    if (!cp->rad_big || !cp->cf || !cp->found || !cp->counts || !cp->lk_start)
+    cp->marks = pl_alloc(sim->grid.ncells);
+    cp->axis_buf = malloc((size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(int));
+    if (!cp->rad_big || !cp->cf || !cp->found || !cp->counts || !cp->lk_start || !cp->marks || !cp->axis_buf)
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the potential coupling");
     return 0;
 }
@@ -67,7 +69,11 @@ int pl_coupling_stage_select(pl_sim_t *sim, pl_err_t *err)
     int rc = lookup_big(cp, sim, err);
     if (rc) return rc;
     pl_coupling_colloids_t v = big_view(cp, sim->colloids);
-    pl_coupling_find(f, &sim->grid, &v, cp->lk_start, cp->lk_list, cp->nthreads, cp->found, cp->counts);
+    if (sim->fluid_sorted) /* the same list, from the cells near colloids */
+        pl_coupling_find_sorted(f, &sim->grid, &v, cp->lk_start, cp->lk_list, sim->cell_start, cp->marks,
+                                cp->axis_buf, cp->nthreads, cp->found, cp->counts);
+    else
+        pl_coupling_find(f, &sim->grid, &v, cp->lk_start, cp->lk_list, cp->nthreads, cp->found, cp->counts);
     size_t nn = 0;
     for (int t = 0; t < cp->nthreads; ++t) nn += cp->counts[(size_t)t * 8 + 2];
     if (nn > cp->near_cap) {

@@ -31,6 +31,7 @@ static int stage_stream(pl_sim_t *sim, pl_err_t *err)
 {
     (void)err;
     const pl_scene_t *sc = &sim->scene;
+    sim->fluid_sorted = 0;
     pl_grid_draw_shift(&sim->grid, (uint64_t)sc->run.seed, (uint64_t)sim->step, sc->srd.grid_shift);
     pl_stream_params_t p;
     pl_sim_stream_params(sim, &p);
@@ -65,6 +66,7 @@ static int stage_sort(pl_sim_t *sim, pl_err_t *err)
 {
     (void)err;
     pl_srd_sort(&sim->fluid, sim->hist, sim->cell_start, sim->grid.ncells, sim->nthreads);
+    sim->fluid_sorted = 1;
     return 0;
 }
 

@@ -5,6 +5,7 @@
  * fluid; without compensation the drift removal brings it back to rest. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "peloid/colloid.h"
@@ -127,4 +128,72 @@ Test(coupling_system, drift_removal_without_compensation, .timeout = 120)
                 "thermostat: { type = \"heyes\"; };\n", &worst, &vrel);
     cr_log_info("drift removal: max |P|/sqrt(M) = %.3g", worst);
     cr_expect_lt(worst, 1e-9, "drift removal left |P|/sqrt(M) = %.3g", worst);
+}
+
+/* The potential coupling's selection from the sorted cells
+ * (pl_coupling_find_sorted, used while the fluid is as the last sort left
+ * it) lists exactly the particles of the full scan, in the same order and
+ * thread chunks: periodic, z-wall and capillary boxes, selection radii from
+ * PL's (cut-off + margin) up to more than the box, 1 and 3 threads, after
+ * every step of a run. */
+Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
+{
+    const char *walls[3] = {"", "walls_z = \"noslip\";", "walls_xy = \"noslip\";"};
+    const double radii[3] = {2.0 * pow(2.0, 1.0 / 6.0) + 0.9, 4.7, 7.0};
+    long long steps = pl_test_quick() ? 3 : 12;
+    for (int b = 0; b < 3; ++b) {
+        char text[1024];
+        snprintf(text, sizeof text,
+                 "seed = 9;\nbox: { cells = [12, 12, 12]; %s };\nfluid: { density = 5.0; temperature = 1.0; };\n"
+                 "srd: { dt = 0.1; };\ncolloids: { count = 8; radius = 2.0; mass_density = 10.0; temperature = 1.0;\n"
+                 "  init = \"random\"; pairs = \"hertz\"; substeps = 4; };\n"
+                 "coupling: { method = \"potential\"; sigma_cf = 2.0; };\n",
+                 walls[b]);
+        pl_sim_t *sim = pl_test_sim(text, 2);
+        const pl_fluid_t *f = &sim->fluid;
+        const size_t L3 = 12 * 12 * 12;
+        int32_t *start = malloc((L3 + 1) * sizeof *start);
+        size_t cap = 8 * L3;
+        int32_t *list = malloc(cap * sizeof *list);
+        uint32_t *fa = malloc(f->n * sizeof *fa), *fb = malloc(f->n * sizeof *fb);
+        uint64_t ca[3 * 8], cb[3 * 8];
+        uint8_t *marks = malloc(sim->grid.ncells);
+        int axis[64];
+        double rad[8];
+        cr_assert(start && list && fa && fb && marks);
+        size_t listed = 0;
+        for (long long s = 0; s < steps; ++s) {
+            pl_test_steps(sim, 1);
+            cr_assert(sim->fluid_sorted, "the sort is the last stage that moves particles");
+            for (int r = 0; r < 3; ++r) {
+                pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
+                for (size_t k = 0; k < v.n; ++k) rad[k] = radii[r];
+                v.rad = rad;
+                size_t need = pl_coupling_lookup_build(&v, sim->grid.L, sim->grid.walls, start, list, cap);
+                cr_assert_leq(need, cap);
+                for (int nt = 1; nt <= 3; nt += 2) {
+                    pl_coupling_find(f, &sim->grid, &v, start, list, nt, fa, ca);
+                    pl_coupling_find_sorted(f, &sim->grid, &v, start, list, sim->cell_start, marks, axis, nt, fb,
+                                            cb);
+                    for (int t = 0; t < nt; ++t) {
+                        size_t lo, hi;
+                        pl_chunk(f->n, t, nt, &lo, &hi);
+                        cr_assert_eq(ca[t * 8 + 2], cb[t * 8 + 2], "box %d, R %g, %d threads: chunk %d lists %llu vs %llu",
+                                     b, radii[r], nt, t, (unsigned long long)ca[t * 8 + 2],
+                                     (unsigned long long)cb[t * 8 + 2]);
+                        cr_assert(same(fa + lo, fb + lo, ca[t * 8 + 2] * sizeof *fa), "box %d, R %g: lists differ", b,
+                                  radii[r]);
+                        listed += ca[t * 8 + 2];
+                    }
+                }
+            }
+        }
+        cr_expect_gt(listed, 0);
+        free(start);
+        free(list);
+        free(fa);
+        free(fb);
+        free(marks);
+        pl_sim_free(sim);
+    }
 }

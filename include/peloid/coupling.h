@@ -46,6 +46,8 @@ typedef struct pl_coupling {
     pl_coupling_wca_t wca;
     double margin;       /* selection shell beyond the cut-off */
     double *rad_big;     /* ncolloids: cut-off + margin (lookup radii) */
+    uint8_t *marks;      /* grid ncells: cells a selection sphere reaches */
+    int *axis_buf;       /* grid n[0] + n[1] + n[2] (scratch) */
     size_t nnear, near_cap;
     uint32_t *near_idx;  /* selected particles, ascending */
     int32_t *near_owner; /* thread whose chunk (and histogram row) holds it */

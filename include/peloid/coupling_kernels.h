@@ -100,6 +100,15 @@ void pl_coupling2_collide(const pl_coupling2_params_t *p, const pl_coupling2_cel
 void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
                       const int32_t *lk_start, const int32_t *lk_list, int nthreads,
                       uint32_t *found, uint64_t *counts);
+/* The same list from the particles of the collision cells a colloid's
+ * sphere reaches, when the fluid is still as the last sort left it: sorted
+ * by collision cell under g->shift, cell c holding [cell_start[c],
+ * cell_start[c + 1]).  Cost ~ the particles near colloids plus one byte and
+ * one offset per cell, instead of every particle.  marks: g->ncells bytes,
+ * axis_buf: n[0] + n[1] + n[2] ints (scratch). */
+void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
+                             const int32_t *lk_start, const int32_t *lk_list, const uint32_t *cell_start,
+                             uint8_t *marks, int *axis_buf, int nthreads, uint32_t *found, uint64_t *counts);
 
 typedef struct {
     double sigma, eps; /* PL Eq. 17 */

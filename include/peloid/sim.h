@@ -34,6 +34,9 @@ struct pl_sim {
     pl_grid_t grid;
     uint32_t *hist;       /* nthreads x ncells */
     uint32_t *cell_start; /* ncells + 1 */
+    /* no particle moved since the last sort: the fluid is in collision-cell
+     * order under grid.shift, with cell_start (0 after creation or restart) */
+    int fluid_sorted;
     double *block_sum;    /* 2 x ceil(ncells / PL_CELL_BLOCK) */
     double *obs_scratch;  /* pl_srd_observe_scratch(n) */
     double last_kT_meas;  /* PL Eq. A1 temperature of the last collision */
