@@ -48,28 +48,6 @@ static double heyes_zeta(const pl_collide_params_t *p, uint64_t cell, size_t M, 
     return pl_heyes_zeta(p->heyes_eps, p->kT_target, (double)M, K, r.u[0], r.u[1], r.u[2]);
 }
 
-/* Number of virtual particles for cell c, or 0 when no no-slip wall cuts
- * it; *wall receives the z wall whose velocity they carry (0 bottom, 1 top)
- * or -1 for a cell cut by x/y walls only (at rest). */
-static int ghost_count(const pl_grid_t *g, const pl_collide_params_t *p, size_t c, size_t M,
-                       int *wall)
-{
-    const size_t n0 = (size_t)g->n[0], n1 = (size_t)g->n[1];
-    int cut = 0;
-    *wall = -1;
-    for (int d = 0; d < 3; ++d) {
-        if (g->walls[d] != PL_WALLS_NOSLIP) continue;
-        const size_t i = d == 0 ? c % n0 : d == 1 ? c / n0 % n1 : c / (n0 * n1); /* cell index on axis d */
-        double lo = (double)i - 1.0 + g->shift[d], hi = lo + 1.0, L = g->L[d];
-        if (lo >= 0.0 && hi <= L) continue;
-        cut = 1;
-        if (d == 2) *wall = lo < 0.0 ? 0 : 1;
-    }
-    if (!cut) return 0;
-    int target = (int)lround(p->ghost_density);
-    return (int)M < target ? target - (int)M : 0;
-}
-
 enum { ROT_BATCH = 32 };
 
 void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_start,
@@ -100,7 +78,7 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
             double (*const Rc)[3] = Rb[c - c_base];
             const size_t s = cell_start[c], e = cell_start[c + 1], M = e - s;
             int wall = 0, ng = 0;
-            if (p->wall_ghosts && M >= 1) ng = ghost_count(g, p, c, M, &wall);
+            if (p->wall_ghosts && M >= 1) ng = pl_srd_ghost_count(g, p->ghost_density, c, M, &wall);
             if (M + (size_t)ng < 2) continue;
             double P[3] = {0.0, 0.0, 0.0}, S = 0.0; /* one pass: momentum and sum v^2 */
             for (size_t i = s; i < e; ++i) {
@@ -112,13 +90,10 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
             double u[3], ur[3];
             for (int d = 0; d < 3; ++d) ur[d] = P[d] / (double)M;
             if (ng > 0) {
-                pl_rand4_t r = pl_rng_uniform4(p->seed, PL_RNG_WALL_GHOST, p->step, c, 0);
-                double gs[4], sd = sqrt((double)ng * p->kT_wall);
-                pl_rng_gauss2(r.u[0], r.u[1], &gs[0], &gs[1]);
-                pl_rng_gauss2(r.u[2], r.u[3], &gs[2], &gs[3]);
+                double N[3];
+                pl_srd_ghost_noise(p->seed, p->step, c, ng, p->kT_wall, N);
                 const double *U = wall >= 0 ? p->wall_u[wall] : at_rest;
-                for (int d = 0; d < 3; ++d)
-                    u[d] = (P[d] + (double)ng * U[d] + sd * gs[d]) / (double)(M + (size_t)ng);
+                for (int d = 0; d < 3; ++d) u[d] = (P[d] + (double)ng * U[d] + N[d]) / (double)(M + (size_t)ng);
             } else {
                 for (int d = 0; d < 3; ++d) u[d] = ur[d];
             }

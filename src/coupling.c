@@ -186,6 +186,12 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         p->seed = cp->seed;
         p->kT_target = sc->thermostat.temperature;
         p->heyes_eps = sc->thermostat.heyes_epsilon;
+        /* virtual wall particles: as stage_collide sets them for the fluid */
+        p->wall_ghosts = sc->box.walls_z == PL_WALLS_NOSLIP || sc->box.walls_xy == PL_WALLS_NOSLIP;
+        p->ghost_density = sc->fluid.density;
+        p->kT_wall = sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature : sc->fluid.temperature;
+        memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
+        if (p->wall_ghosts && !(p->wall_fix = malloc(6 * (nc + 1) * sizeof *p->wall_fix))) rc = PL_ERR_NOMEM;
         cp->keys = malloc((nc + 1) * sizeof *cp->keys);
         cp->occ_cell = malloc((nc + 1) * sizeof *cp->occ_cell);
         cp->occ_save = malloc((nc + 1) * sizeof *cp->occ_save);
@@ -229,6 +235,7 @@ void pl_coupling_free(pl_coupling_t *cp)
     pl_free(cp->found);
     pl_free(cp->counts);
     free(cp->keys);
+    free(cp->p2.wall_fix);
     free(cp->occ_cell);
     free(cp->occ_save);
     free(cp->occ_col);

@@ -97,8 +97,12 @@ int pl_coupling_stage_collide(pl_sim_t *sim, pl_err_t *err)
     cp->p2.step = (uint64_t)sim->step;
     cp->p2.heyes = sc->thermostat.type == PL_THERMO_HEYES && sim->step % sc->thermostat.interval == 0;
     pl_coupling2_cells_t oc = {cp->nocc, cp->occ_cell, cp->occ_save, cp->occ_col, cp->col_idx};
-    pl_coupling2_collide(&cp->p2, &oc, sim->cell_start, cp->vsave, &sim->fluid, c->mass, c->vx,
+    pl_coupling2_collide(&cp->p2, &oc, &sim->grid, sim->cell_start, cp->vsave, &sim->fluid, c->mass, c->vx,
                          c->vy, c->vz);
+    /* the z walls' push in the occupied cells, replacing the fluid kernel's
+     * count there; summed in cell order (deterministic) */
+    for (size_t j = 0; cp->p2.wall_fix && j < cp->nocc; ++j)
+        for (int k = 0; k < 6; ++k) sim->wall_impulse[k / 3][k % 3] += cp->p2.wall_fix[6 * j + (size_t)k];
     if (cp->pinned) pl_coupling_absorb_pinned(cp, c, sim->scene.srd.dt);
     return 0;
 }

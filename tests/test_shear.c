@@ -164,7 +164,13 @@ Test(shear, wall_impulse_balances_momentum_for_every_coupling, .timeout = 120)
     static const char *couplings[] = {"", "coupling: { method = \"hecht1\"; };\n",
                                       "coupling: { method = \"hecht1\"; boundary = \"slip\"; placement = \"nearest\"; };\n",
                                       "coupling: { method = \"hecht2\"; };\n",
-                                      "coupling: { method = \"potential\"; sigma_cf = 2.0; };\n"};
+                                      "coupling: { method = \"potential\"; sigma_cf = 2.0; };\n",
+                                      "coupling: { method = \"hecht2\"; };\n"};
+    /* the last case: Hecht's small colloids (R = 0.62 a0), whose centres
+     * enter collision cells cut by a wall, where coupling II adds the
+     * virtual particles and corrects the wall's count */
+    static const char *colloids[] = {"", "colloids: { count = 8; radius = 2.0; init = \"random\"; pairs = \"hertz\"; };\n",
+                                     "colloids: { count = 60; radius = 0.62; init = \"random\"; pairs = \"hertz\"; substeps = 16; };\n"};
     for (size_t k = 0; k < sizeof couplings / sizeof *couplings; ++k) {
         char scene[1024];
         snprintf(scene, sizeof scene,
@@ -172,8 +178,7 @@ Test(shear, wall_impulse_balances_momentum_for_every_coupling, .timeout = 120)
                  "  wall_velocity_bottom = [-0.3, 0.2, 0.0]; wall_velocity_top = [0.3, -0.1, 0.0]; };\n"
                  "fluid: { density = 5.0; };\nsrd: { dt = 0.1; };\nthermostat: { type = \"heyes\"; };\n"
                  "%s%s",
-                 *couplings[k] ? "colloids: { count = 8; radius = 2.0; init = \"random\"; pairs = \"hertz\"; };\n" : "",
-                 couplings[k]);
+                 colloids[k == 5 ? 2 : *couplings[k] ? 1 : 0], couplings[k]);
         pl_sim_t *sim = pl_test_sim(scene, 2);
         double P0[3], P1[3], M, W0[2] = {0, 0}, B0[2];
         pl_test_steps(sim, 5);

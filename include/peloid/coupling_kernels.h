@@ -68,6 +68,11 @@ typedef struct {
     uint64_t seed, step;
     int heyes;           /* mass-weighted Heyes thermostat this step (Hecht Sec. VIII.B) */
     double kT_target, heyes_eps;
+    /* virtual wall particles, as in the fluid collision (pl_collide_params_t) */
+    int wall_ghosts;
+    double ghost_density, kT_wall, wall_u[2][3];
+    double *wall_fix;    /* NULL, or 6 per occupied cell: the correction to
+                          * the z walls' impulse the fluid kernel counted */
 } pl_coupling2_params_t;
 
 /* Cells holding colloids: occ_cell[j] (j < nocc) with the colloids
@@ -89,7 +94,7 @@ void pl_coupling2_save(const pl_fluid_t *f, const uint32_t *cell_start,
  * velocities and the colloid velocities with the mass-weighted mean velocity
  * (Hecht Eq. 15) and writes both (the fluid kernel's result for these cells
  * is overwritten).  One rotation per cell from its own random stream. */
-void pl_coupling2_collide(const pl_coupling2_params_t *p, const pl_coupling2_cells_t *oc,
+void pl_coupling2_collide(const pl_coupling2_params_t *p, const pl_coupling2_cells_t *oc, const pl_grid_t *g,
                           const uint32_t *cell_start, const double *vsave, pl_fluid_t *f,
                           const double *cmass, double *cvx, double *cvy, double *cvz);
 

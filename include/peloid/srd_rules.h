@@ -7,6 +7,7 @@
 
 #include <math.h>
 
+#include "peloid/grid.h"
 #include "peloid/rng.h"
 #include "peloid/scene.h"
 
@@ -63,6 +64,42 @@ static inline void pl_srd_rotation(int rule, double cos_a, double sin_a, uint64_
     R[2][0] = n[2] * n[0] * oc - n[1] * sa;
     R[2][1] = n[2] * n[1] * oc + n[0] * sa;
     R[2][2] = ca + n[2] * n[2] * oc;
+}
+
+/* Virtual wall particles of collision cell c holding M >= 1 real bodies of
+ * the fluid: 0 when no no-slip wall cuts the cell, else enough to fill it to
+ * the mean density gamma (Hecht Sec. VIII.A; PL Sec. II.D); *wall receives
+ * the z wall whose velocity they carry (0 bottom, 1 top) or -1 for a cell
+ * cut by x/y walls only (at rest). */
+static inline int pl_srd_ghost_count(const pl_grid_t *g, double gamma, size_t c, size_t M, int *wall)
+{
+    const size_t n0 = (size_t)g->n[0], n1 = (size_t)g->n[1];
+    int cut = 0;
+    *wall = -1;
+    for (int d = 0; d < 3; ++d) {
+        if (g->walls[d] != PL_WALLS_NOSLIP) continue;
+        const size_t i = d == 0 ? c % n0 : d == 1 ? c / n0 % n1 : c / (n0 * n1); /* cell index on axis d */
+        double lo = (double)i - 1.0 + g->shift[d], hi = lo + 1.0, L = g->L[d];
+        if (lo >= 0.0 && hi <= L) continue;
+        cut = 1;
+        if (d == 2) *wall = lo < 0.0 ? 0 : 1;
+    }
+    if (!cut) return 0;
+    int target = (int)lround(gamma);
+    return (int)M < target ? target - (int)M : 0;
+}
+
+/* Thermal part of the momentum the ng virtual particles of cell c bring
+ * (they add ng U + noise): a Maxwell-Boltzmann sum at kT_wall, one draw of
+ * the wall-ghost stream. */
+static inline void pl_srd_ghost_noise(uint64_t seed, uint64_t step, uint64_t c, int ng, double kT_wall,
+                                      double noise[3])
+{
+    pl_rand4_t r = pl_rng_uniform4(seed, PL_RNG_WALL_GHOST, step, c, 0);
+    double gs[4], sd = sqrt((double)ng * kT_wall);
+    pl_rng_gauss2(r.u[0], r.u[1], &gs[0], &gs[1]);
+    pl_rng_gauss2(r.u[2], r.u[3], &gs[2], &gs[3]);
+    for (int d = 0; d < 3; ++d) noise[d] = sd * gs[d];
 }
 
 /* Heyes Monte Carlo scale factor (Hecht Sec. VIII.B, Eq. 33) for a cell of
