@@ -8,7 +8,8 @@
  * step.  Cases: the bare fluid (no colloids), the colloids with no coupling
  * (MD only), and the couplings hecht1 (stick_stochastic, entry placement),
  * hecht2 and potential (sigma_cf = 2 a0, epsilon_cf = 2.5 kT; colloid WCA
- * of PL Eq. 16 with sigma_cc = 4.3 a0).
+ * of PL Eq. 16 with sigma_cc = 4.3 a0), and potential-1: the potential
+ * coupling with a single colloid (its cost where colloids are few).
  *
  * Per case and thread count: median (min..max) over `reps` repetitions of the
  * wall time per step per fluid particle, fluid particle-updates/s (per core),
@@ -35,6 +36,7 @@ enum { MAX_REPS = 32 };
 typedef struct {
     const char *name;
     const char *text; /* scene tail after the common head */
+    int colloids;     /* -1: the run's count (64; quick 27) */
 } case_t;
 
 static const char *HEAD =
@@ -48,14 +50,20 @@ static const char *HEAD =
     "colloids: { count = %d; radius = 2.0; mass_density = 5.0; temperature = 1.0;\n"           \
     "  init = \"lattice\"; pairs = \"" pairs "\"; substeps = 4; };\n"
 
+#define POTENTIAL                                                                              \
+    COLLOIDS("wca") "wca: { epsilon = 2.5; sigma = 4.3; n = 24.0; };\n"                         \
+                    "coupling: { method = \"potential\"; sigma_cf = 2.0; epsilon_cf = 2.5; };\n"
+
 static const case_t CASES[] = {
-    {"fluid", ""},
-    {"colloid-md", COLLOIDS("hertz") "coupling: { method = \"none\"; };\n"},
-    {"hecht1", COLLOIDS("hertz") "coupling: { method = \"hecht1\"; boundary = \"stick_stochastic\";"
-                                 " placement = \"entry\"; };\n"},
-    {"hecht2", COLLOIDS("hertz") "coupling: { method = \"hecht2\"; };\n"},
-    {"potential", COLLOIDS("wca") "wca: { epsilon = 2.5; sigma = 4.3; n = 24.0; };\n"
-                                  "coupling: { method = \"potential\"; sigma_cf = 2.0; epsilon_cf = 2.5; };\n"},
+    {"fluid", "", 0},
+    {"colloid-md", COLLOIDS("hertz") "coupling: { method = \"none\"; };\n", -1},
+    {"hecht1",
+     COLLOIDS("hertz") "coupling: { method = \"hecht1\"; boundary = \"stick_stochastic\"; placement = \"entry\"; };\n",
+     -1},
+    {"hecht2", COLLOIDS("hertz") "coupling: { method = \"hecht2\"; };\n", -1},
+    {"potential", POTENTIAL, -1},
+    /* one colloid: the selection's cost where colloids are few */
+    {"potential-1", POTENTIAL, 1},
 };
 enum { NCASES = sizeof CASES / sizeof CASES[0] };
 
@@ -168,7 +176,8 @@ int main(int argc, char **argv)
         for (int k = 0; k < NCASES && !rc; ++k) {
             double ns[MAX_REPS], share, nf, med, lo, hi;
             char stages[512];
-            rc = run_case(&CASES[k], L, ncolloids, t, reps, rep_seconds, ns, &share, &nf, stages, sizeof stages);
+            const int nc = CASES[k].colloids < 0 ? ncolloids : CASES[k].colloids;
+            rc = run_case(&CASES[k], L, nc, t, reps, rep_seconds, ns, &share, &nf, stages, sizeof stages);
             if (rc) break;
             bench_stats(ns, reps, &med, &lo, &hi);
             if (k == 0) fluid_ns = med;
@@ -176,7 +185,7 @@ int main(int argc, char **argv)
             char line[1024];
             snprintf(line, sizeof line,
                      "%s\t%d\t%d\t%.0f\t%d\t%.3f\t%.3f\t%.3f\t%.4g\t%.4g\t%.3f\t%.3f\t%.2f\t%.2f\t%.1f\t%d\t%s\n",
-                     CASES[k].name, L, t, nf, k ? ncolloids : 0, med, lo, hi, ups, ups / t, med / fluid_ns,
+                     CASES[k].name, L, t, nf, nc, med, lo, hi, ups, ups / t, med / fluid_ns,
                      share, gbs, stream, 100.0 * gbs / stream, reps, stages);
             fputs(line, stdout);
             fputs(line, tsv);
