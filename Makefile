@@ -90,7 +90,7 @@ check-cli: $(BIN)
 # shrinks the physics runs; the sanitizers slow code ~3-10x).
 ASAN_TESTS := test_scene test_collide test_sort test_determinism test_colloid_forces \
               test_colloid_guards test_colloid_md test_colloid_restart test_capillary \
-              test_coupling_restart
+              test_coupling_restart test_coupling_system
 check-asan: | deps
 	@$(MAKE) --no-print-directory BUILD=build-asan \
 	  OPTFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \

@@ -14,9 +14,9 @@
  * occupied cell cut by a no-slip wall (Hecht's R = 0.62 a0 colloids resting
  * on a wall) gets the virtual particles the fluid kernel gave it: the same
  * number (from the fluid count) and the same draw, now in the mass-weighted
- * mean, without the Heyes factor, as there; the push of a z wall the fluid
- * kernel counted for the cell is replaced by the change of the cell's fluid
- * + colloid momentum (p->wall_fix, summed in cell order by the caller).
+ * mean, without the Heyes factor, as there; the walls' push the fluid kernel
+ * counted for the cell is replaced by the change of the cell's fluid +
+ * colloid momentum (p->wall_fix, summed in cell order by the caller).
  *
  * Random numbers: Philox (seed, PL_RNG_COUPLING + 0 / + 1), counter (step,
  * cell).  Cells are independent and each owns its fluid and colloids: the
@@ -26,6 +26,7 @@
 #include "peloid/coupling_kernels.h"
 #include "peloid/rng.h"
 #include "peloid/scene.h"
+#include "peloid/srd_kernels.h"
 #include "peloid/srd_rules.h"
 
 /* Same two rules as the fluid collision (include/peloid/srd_rules.h). */
@@ -73,7 +74,7 @@ void pl_coupling2_collide(const pl_coupling2_params_t *p, const pl_coupling2_cel
         const int32_t k0 = oc->occ_col[j], k1 = oc->occ_col[j + 1];
         const size_t nbody = (size_t)(e - s) + (size_t)(k1 - k0);
         if (p->wall_fix)
-            for (int q = 0; q < 6; ++q) p->wall_fix[6 * j + (size_t)q] = 0.0;
+            for (int q = 0; q < PL_WALL_ACC_N; ++q) p->wall_fix[PL_WALL_ACC_N * j + (size_t)q] = 0.0;
         int wall = -1, ng = 0; /* virtual particles, as in kernels/srd_collide.c */
         if (p->wall_ghosts && e - s >= 1) ng = pl_srd_ghost_count(g, p->ghost_density, c, e - s, &wall);
         if (nbody < 2) continue;
@@ -116,7 +117,7 @@ void pl_coupling2_collide(const pl_coupling2_params_t *p, const pl_coupling2_cel
                 for (int b = 0; b < 3; ++b) R[a][b] *= zeta;
         }
         /* the fluid kernel's count for this cell: its result minus Pf */
-        const int fix = p->wall_fix && ng > 0 && wall >= 0;
+        const int fix = p->wall_fix && ng > 0, slot = wall >= 0 ? wall : 2;
         double Qfk[3] = {0.0, 0.0, 0.0};
         for (uint32_t i = s; fix && i < e; ++i) {
             Qfk[0] += vx[i];
@@ -147,6 +148,7 @@ void pl_coupling2_collide(const pl_coupling2_params_t *p, const pl_coupling2_cel
         }
         /* the wall gave the cell Pn - P; the fluid kernel counted Qfk - Pf */
         if (fix)
-            for (int d = 0; d < 3; ++d) p->wall_fix[6 * j + 3 * (size_t)wall + (size_t)d] = (Pn[d] - P[d]) - (Qfk[d] - Pf[d]);
+            for (int d = 0; d < 3; ++d)
+                p->wall_fix[PL_WALL_ACC_N * j + 3 * (size_t)slot + (size_t)d] = (Pn[d] - P[d]) - (Qfk[d] - Pf[d]);
     }
 }

@@ -22,11 +22,11 @@
  * cell cut by a z wall and an x/y wall (an edge of a closed box) takes the
  * z wall's velocity: a moving z wall is what drives the flow, and where it
  * meets a wall at rest the velocity is singular anyway (lid-driven cavity).
- * The momentum they give the real particles of the cell is the z wall's
- * share of the shear stress there (summed per block when p->wall_dp is set);
- * that is also counted for such an edge cell (to the z wall whose velocity
- * the virtual particles carry), but not for a cell cut by x/y walls only:
- * the wall stress is the z walls'.
+ * The momentum they give the real particles of the cell is the wall's share
+ * of the stress there (summed per block when p->wall_dp is set): counted to
+ * the z wall whose velocity the virtual particles carry for a cell a z wall
+ * cuts (an edge cell too), to the x/y walls' slot for a cell cut by x/y
+ * walls only.
  *
  * Random numbers: Philox keyed (seed, purpose), counter (step, cell): the
  * result does not depend on which thread handles a cell. */
@@ -60,7 +60,7 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
     /* Cells are independent; blocks of cells give fixed-order partial sums. */
 #pragma omp parallel for schedule(static)
     for (size_t b = 0; b < nblocks; ++b) {
-        double sum2 = 0.0, dof = 0.0, wdp[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+        double sum2 = 0.0, dof = 0.0, wdp[PL_WALL_ACC_N] = {0.0};
         size_t c_hi = (b + 1) * PL_CELL_BLOCK < ncells ? (b + 1) * PL_CELL_BLOCK : ncells;
         /* The rotations of ROT_BATCH cells are drawn first, in a loop without
          * data-dependent branches, so that the out-of-order core overlaps the
@@ -122,8 +122,8 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
                     Q[0] += vx[i]; Q[1] += vy[i]; Q[2] += vz[i];
                     S1 += (double)vx[i] * vx[i] + (double)vy[i] * vy[i] + (double)vz[i] * vz[i];
                 }
-                if (wall >= 0) /* the z wall's push; x/y walls only: not counted */
-                    for (int d = 0; d < 3; ++d) wdp[3 * wall + d] += Q[d] - P[d];
+                const int slot = wall >= 0 ? wall : 2; /* the z wall's push, or the x/y walls' */
+                for (int d = 0; d < 3; ++d) wdp[3 * slot + d] += Q[d] - P[d];
                 if (M < 2) continue;
                 sum2 += S1 - (Q[0] * Q[0] + Q[1] * Q[1] + Q[2] * Q[2]) / (double)M;
             }
@@ -132,7 +132,7 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
         block_sum[2 * b] = sum2;
         block_sum[2 * b + 1] = dof;
         if (p->wall_dp)
-            for (size_t k = 0; k < 6; ++k) p->wall_dp[6 * b + k] = wdp[k];
+            for (size_t k = 0; k < PL_WALL_ACC_N; ++k) p->wall_dp[PL_WALL_ACC_N * b + k] = wdp[k];
     }
 }
 

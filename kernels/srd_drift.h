@@ -58,12 +58,12 @@ static inline int pl_drift_cell_1d(double x, double s, int n)
     return i;
 }
 
-/* Impulse dp (m_f = 1) given by wall `top` to a particle, added in fixed
- * point (PL_FIELD_FIXED_SHIFT) to acc[3 top + d]: integer sums do not depend
- * on the order, hence not on the thread count. */
-static inline void pl_drift_wall_acc(int64_t *acc, int top, const double dp[3])
+/* Impulse dp (m_f = 1) given by a wall to a particle, added in fixed point
+ * (PL_FIELD_FIXED_SHIFT) to acc[3 slot + d] (slot: pl_wall_slot): integer
+ * sums do not depend on the order, hence not on the thread count. */
+static inline void pl_drift_wall_acc(int64_t *acc, int slot, const double dp[3])
 {
-    for (int d = 0; d < 3; ++d) acc[3 * top + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
+    for (int d = 0; d < 3; ++d) acc[3 * slot + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
 }
 
 /* 1 when r lies beyond a wall of a closed axis. */
@@ -80,8 +80,7 @@ static inline int pl_drift_outside(const pl_drift_t *c, const double r[3])
  * bounces first off the wall it would have crossed earliest, then moves on
  * for the rest of the step; near an edge or corner this repeats for the next
  * wall (at most 8 bounces).  acc (NULL: not wanted) receives the impulse of
- * every bounce off a z wall (pl_drift_wall_acc): the wall stress is the z
- * walls'; the x/y walls' momentum exchange is not counted.  Out of line: few
+ * every bounce (pl_drift_wall_acc, the x/y walls in one slot).  Out of line: few
  * particles reach a wall in a step, and inlined it kept pl_drift_one from
  * being inlined. */
 __attribute__((noinline)) static void pl_drift_reflect(const pl_drift_t *c, double r[3], double v[3],
@@ -115,9 +114,9 @@ __attribute__((noinline)) static void pl_drift_reflect(const pl_drift_t *c, doub
         } else {
             v[ax] = -v[ax];
         }
-        if (acc && ax == 2) {
+        if (acc) {
             const double dp[3] = {v[0] - vin[0], v[1] - vin[1], v[2] - vin[2]};
-            pl_drift_wall_acc(acc, top, dp);
+            pl_drift_wall_acc(acc, pl_wall_slot(ax, top), dp);
         }
         for (int d = 0; d < 3; ++d) r[d] = p[d] + v[d] * t_left;
     }
@@ -132,7 +131,7 @@ __attribute__((noinline)) static void pl_drift_reflect(const pl_drift_t *c, doub
  * store (exactly representable in pl_real), dr the unwrapped displacement
  * and the function value is the collision cell.  closed[d] != 0 exactly
  * when axis d has walls (c->wall[d] != PL_WALLS_NONE).  wall_acc: NULL, or
- * the fixed-point z wall impulses (bottom xyz, top xyz) to add the bounces
+ * the fixed-point wall impulses (PL_WALL_ACC_N slots) to add the bounces
  * to. */
 static inline __attribute__((always_inline)) uint32_t
 pl_drift_one_closed(const pl_drift_t *c, const int closed[3], double r[3], double v[3], double dr[3],

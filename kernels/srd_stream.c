@@ -11,7 +11,7 @@
 #include "srd_drift.h"
 
 /* Drift + store + bin of particles [lo, hi) one by one (walls, tracking);
- * wall_acc: NULL, or this thread's z wall impulses. */
+ * wall_acc: NULL, or this thread's wall impulses (PL_WALL_ACC_N slots). */
 static inline __attribute__((always_inline)) void moved_range(pl_fluid_t *f, const pl_drift_t *c,
                                                               const int closed[3], uint32_t *restrict h,
                                                               size_t lo, size_t hi, int tracked,
@@ -118,7 +118,7 @@ void pl_srd_stream_count(const pl_fluid_t *f, const pl_grid_t *g, const pl_strea
 }
 
 void pl_srd_stream_wall_impulse(const pl_grid_t *g, const pl_stream_params_t *p, const double r0[3],
-                                const double v0[3], int64_t acc[6])
+                                const double v0[3], int64_t acc[PL_WALL_ACC_N])
 {
     pl_drift_t c;
     pl_drift_init(&c, g, p, 1);

@@ -1,7 +1,8 @@
 /* Coupling and wall part of the checkpoint: the run counters that thermo.tsv
  * reports as sums since step 0, so that a restarted run writes the same rows
  * as an uninterrupted one:
- *   - /wall_impulse (walls): momentum each wall gave the fluid (wall stress);
+ *   - /wall_impulse (walls): momentum each z wall gave the fluid (wall
+ *     stress), bottom xyz, top xyz; /side_wall_impulse: the x/y walls';
  *   - /coupling/counters: coupling I reflections and truncations, the
  *     potential coupling's selected particle-steps;
  *   - /coupling/pinned: impulse (momentum, angular momentum) the pinned
@@ -17,8 +18,10 @@
 int pl_ckpt_coupling_write(hid_t f, const pl_sim_t *sim)
 {
     int bad = 0;
-    if (sim->wall_acc)
+    if (sim->wall_acc) {
         bad |= pl_ckpt_write_1d(f, "wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[0][0], 6);
+        bad |= pl_ckpt_write_1d(f, "side_wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[2][0], 3);
+    }
     const pl_coupling_t *cp = sim->coupling;
     if (!cp) return bad ? -1 : 0;
     hid_t g = pl_ckpt_group_create(f, "coupling");
@@ -35,8 +38,16 @@ int pl_ckpt_coupling_write(hid_t f, const pl_sim_t *sim)
 
 int pl_ckpt_coupling_read(hid_t f, pl_sim_t *sim, const char *path, pl_err_t *err)
 {
-    if (sim->wall_acc && pl_ckpt_read_1d(f, "wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[0][0], 6))
-        return pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint has no wall_impulse (the scene has walls)", path);
+    const pl_scene_t *sc = &sim->scene;
+    if (sc->box.walls_z != PL_WALLS_NONE &&
+        pl_ckpt_read_1d(f, "wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[0][0], 6))
+        return pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint has no wall_impulse (the scene has z walls)", path);
+    if (sc->box.walls_xy != PL_WALLS_NONE &&
+        pl_ckpt_read_1d(f, "side_wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[2][0], 3))
+        return pl_err_set(err, PL_ERR_INPUT,
+                          "%s: checkpoint has no side_wall_impulse (the scene has x/y walls; a checkpoint from "
+                          "before peloid counted their momentum cannot continue it)",
+                          path);
     pl_coupling_t *cp = sim->coupling;
     if (!cp) return 0;
     hid_t g = H5Lexists(f, "coupling", H5P_DEFAULT) > 0 ? H5Gopen2(f, "coupling", H5P_DEFAULT) : -1;

@@ -191,7 +191,8 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         p->ghost_density = sc->fluid.density;
         p->kT_wall = sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature : sc->fluid.temperature;
         memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
-        if (p->wall_ghosts && !(p->wall_fix = malloc(6 * (nc + 1) * sizeof *p->wall_fix))) rc = PL_ERR_NOMEM;
+        if (p->wall_ghosts && !(p->wall_fix = malloc(PL_WALL_ACC_N * (nc + 1) * sizeof *p->wall_fix)))
+            rc = PL_ERR_NOMEM;
         cp->keys = malloc((nc + 1) * sizeof *cp->keys);
         cp->occ_cell = malloc((nc + 1) * sizeof *cp->occ_cell);
         cp->occ_save = malloc((nc + 1) * sizeof *cp->occ_save);

@@ -148,23 +148,17 @@ static void kick_fluid(pl_coupling_t *cp, double h, const double g[3])
         for (int d = 0; d < 3; ++d) v[d][j] += h * (F[d][j] + g[d]);
 }
 
-static void wall_add(int64_t acc[6], int top, const double dp[3])
-{
-    for (int d = 0; d < 3; ++d) acc[3 * top + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
-}
-
 /* r += v dt, with reflection at the walls of every closed axis (bounce-back
  * for no-slip in the frame of the wall, the z walls moving and the x/y walls
  * at rest; specular for slip; as the streaming does); the displacement is
- * accumulated, the z walls' impulses added to acc (the wall stress is the z
- * walls'). */
-static void drift_fluid(pl_coupling_t *cp, const pl_sim_t *sim, double dt, int64_t acc[6])
+ * accumulated, the walls' impulses added to acc (PL_WALL_ACC_N slots). */
+static void drift_fluid(pl_coupling_t *cp, const pl_sim_t *sim, double dt, int64_t acc[PL_WALL_ACC_N])
 {
     static const double at_rest[3] = {0.0, 0.0, 0.0};
     const pl_grid_t *g = &sim->grid;
     const size_t nn = cp->nnear;
     /* integer impulses: the sum is exact in any order */
-#pragma omp parallel for schedule(static) num_threads(cp->nthreads) reduction(+ : acc[:6])
+#pragma omp parallel for schedule(static) num_threads(cp->nthreads) reduction(+ : acc[:PL_WALL_ACC_N])
     for (size_t j = 0; j < nn; ++j) {
         const double r0[3] = {NB(cp, 0)[j], NB(cp, 1)[j], NB(cp, 2)[j]};
         for (int d = 0; d < 3; ++d) {
@@ -187,7 +181,8 @@ static void drift_fluid(pl_coupling_t *cp, const pl_sim_t *sim, double dt, int64
                 for (int d = 0; d < 3; ++d) dp[d] = 2.0 * (U[d] - NB(cp, 3 + d)[j]);
             }
             for (int d = 0; d < 3; ++d) NB(cp, 3 + d)[j] += dp[d];
-            if (a == 2) wall_add(acc, top, dp);
+            const int slot = pl_wall_slot(a, top);
+            for (int d = 0; d < 3; ++d) acc[3 * slot + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
         }
     }
 }
@@ -214,11 +209,11 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, pl_err_t *err)
     for (int d = 0; d < 3; ++d) g[d] = sc->fluid.body_force[d] + cp->fluid_accel[d];
     /* undo the free streaming of the selected particles, and the wall
      * impulses it counted for them (recomputed bitwise, in fixed point) */
-    int64_t wacc[6] = {0, 0, 0, 0, 0, 0}, sacc[6] = {0, 0, 0, 0, 0, 0};
+    int64_t wacc[PL_WALL_ACC_N] = {0}, sacc[PL_WALL_ACC_N] = {0};
     pl_stream_params_t sp;
     pl_sim_stream_params(sim, &sp);
     const size_t nnear = cp->nnear;
-#pragma omp parallel for schedule(static) num_threads(cp->nthreads) reduction(+ : sacc[:6])
+#pragma omp parallel for schedule(static) num_threads(cp->nthreads) reduction(+ : sacc[:PL_WALL_ACC_N])
     for (size_t j = 0; j < nnear; ++j) {
         size_t i = cp->near_idx[j];
         if (f->tracked)
@@ -258,7 +253,7 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, pl_err_t *err)
     }
     if (cp->pinned) cp->pinned_time += sc->srd.dt;
     if (sim->wall_acc) {
-        for (int k = 0; k < 6; ++k) wacc[k] -= sacc[k];
+        for (int k = 0; k < PL_WALL_ACC_N; ++k) wacc[k] -= sacc[k];
         pl_sim_wall_add(sim, wacc);
     }
     /* write the selected particles back, wrapped, into their new cells; the

@@ -20,7 +20,7 @@ int pl_coupling_stage_reflect(pl_sim_t *sim, pl_err_t *err)
     cp->p1.step = (uint64_t)sim->step;
     pl_coupling_colloids_t v = pl_coupling_view(c);
     double *const vel[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
-    int64_t wall[6] = {0, 0, 0, 0, 0, 0};
+    int64_t wall[PL_WALL_ACC_N] = {0};
     cp->p1.wall_acc = sim->wall_acc ? wall : NULL;
     pl_coupling1_reflect(&sim->fluid, &sim->grid, &cp->p1, &v, vel, cp->lk_start, cp->lk_list,
                          sim->hist, cp->nthreads, cp->found, cp->counts);
@@ -99,10 +99,11 @@ int pl_coupling_stage_collide(pl_sim_t *sim, pl_err_t *err)
     pl_coupling2_cells_t oc = {cp->nocc, cp->occ_cell, cp->occ_save, cp->occ_col, cp->col_idx};
     pl_coupling2_collide(&cp->p2, &oc, &sim->grid, sim->cell_start, cp->vsave, &sim->fluid, c->mass, c->vx,
                          c->vy, c->vz);
-    /* the z walls' push in the occupied cells, replacing the fluid kernel's
+    /* the walls' push in the occupied cells, replacing the fluid kernel's
      * count there; summed in cell order (deterministic) */
     for (size_t j = 0; cp->p2.wall_fix && j < cp->nocc; ++j)
-        for (int k = 0; k < 6; ++k) sim->wall_impulse[k / 3][k % 3] += cp->p2.wall_fix[6 * j + (size_t)k];
+        for (int k = 0; k < PL_WALL_ACC_N; ++k)
+            sim->wall_impulse[k / 3][k % 3] += cp->p2.wall_fix[PL_WALL_ACC_N * j + (size_t)k];
     if (cp->pinned) pl_coupling_absorb_pinned(cp, c, sim->scene.srd.dt);
     return 0;
 }

@@ -22,11 +22,13 @@ typedef struct {
     long long step_last_row;
 } writer_t;
 
-static void thermo_header(FILE *f, int mapped, int tracked, int walls, int colloids, int reflect, int pinned)
+static void thermo_header(FILE *f, int mapped, int tracked, int walls, int side_walls, int colloids, int reflect,
+                          int pinned)
 {
-    fprintf(f, "step\ttime\t%stemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%s%s%s%smupdates_per_s\n",
+    fprintf(f, "step\ttime\t%stemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%s%s%s%s%smupdates_per_s\n",
             mapped ? "time_s\ttemperature_K\t" : "", tracked ? "msd\t" : "",
             walls ? "sxz_bottom\tsxz_top\tsyz_bottom\tsyz_top\t" : "",
+            side_walls ? "s_side_x\ts_side_y\ts_side_z\t" : "",
             colloids ? "c_kin_trans\tc_kin_rot\tc_dlvo\tc_hertz\tc_wca\tc_wall\tc_gravity\tc_depl\tc_total\tc_zcm\t" : "",
             reflect ? "cpl_events\tcpl_truncations\t" : "",
             pinned ? "cpl_drag_x\tcpl_drag_y\tcpl_drag_z\t" : "");
@@ -36,6 +38,12 @@ static void thermo_header(FILE *f, int mapped, int tracked, int walls, int collo
 static int noslip_walls(const pl_sim_t *sim)
 {
     return sim->scene.box.walls_z == PL_WALLS_NOSLIP && sim->fluid.n > 0;
+}
+
+/* The x/y walls' stress: no-slip capillary walls. */
+static int noslip_side_walls(const pl_sim_t *sim)
+{
+    return sim->scene.box.walls_xy == PL_WALLS_NOSLIP && sim->fluid.n > 0;
 }
 
 /* Coupling I counters (cumulative reflections and truncations, Hecht Sec. IV). */
@@ -63,6 +71,9 @@ static void thermo_row(writer_t *w, const pl_sim_t *sim)
     if (noslip_walls(sim)) /* PL Eq. 13 stress from each wall's momentum, mean since step 0 */
         fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t%.10g\t", pl_sim_wall_stress(sim, 0, 0),
                 pl_sim_wall_stress(sim, 1, 0), pl_sim_wall_stress(sim, 0, 1), pl_sim_wall_stress(sim, 1, 1));
+    if (noslip_side_walls(sim)) /* force per area on the x/y walls, mean since step 0 */
+        fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t", pl_sim_wall_stress(sim, 2, 0), pl_sim_wall_stress(sim, 2, 1),
+                pl_sim_wall_stress(sim, 2, 2));
     if (sim->colloids) { /* colloid energy terms (src/colloid_state.c) */
         pl_colloid_energy_t ce;
         pl_colloid_energy(sim->colloids, &ce);
@@ -215,7 +226,7 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         rc = pl_err_set(err, PL_ERR_IO, "%s: cannot write", path);
         goto done;
     }
-    thermo_header(w.thermo, scene->mapping.enabled, sim->fluid.tracked, noslip_walls(sim),
+    thermo_header(w.thermo, scene->mapping.enabled, sim->fluid.tracked, noslip_walls(sim), noslip_side_walls(sim),
                   sim->colloids != NULL, reflecting(sim), sim->coupling && sim->coupling->pinned);
     if (sim->colloids && scene->colloids.trajectory_interval > 0) {
         pl_path_join(path, sizeof path, w.dir, "colloids.h5");

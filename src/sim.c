@@ -38,23 +38,28 @@ static int stage_stream(pl_sim_t *sim, pl_err_t *err)
     p.wall_acc = sim->wall_acc; /* NULL without walls */
     pl_srd_stream_bin(&sim->fluid, &sim->grid, &p, sim->hist, sim->nthreads);
     if (sim->wall_acc) { /* integer sums: the same for any thread count */
-        int64_t acc[6] = {0, 0, 0, 0, 0, 0};
+        int64_t acc[PL_WALL_ACC_N] = {0};
         for (int t = 0; t < sim->nthreads; ++t)
-            for (int k = 0; k < 6; ++k) acc[k] += sim->wall_acc[(size_t)t * PL_WALL_ACC_STRIDE + (size_t)k];
+            for (int k = 0; k < PL_WALL_ACC_N; ++k) acc[k] += sim->wall_acc[(size_t)t * PL_WALL_ACC_STRIDE + (size_t)k];
         pl_sim_wall_add(sim, acc);
     }
     return 0;
 }
 
-void pl_sim_wall_add(pl_sim_t *sim, const int64_t acc[6])
+void pl_sim_wall_add(pl_sim_t *sim, const int64_t acc[PL_WALL_ACC_N])
 {
-    for (int k = 0; k < 6; ++k) sim->wall_impulse[k / 3][k % 3] += ldexp((double)acc[k], -PL_FIELD_FIXED_SHIFT);
+    for (int k = 0; k < PL_WALL_ACC_N; ++k)
+        sim->wall_impulse[k / 3][k % 3] += ldexp((double)acc[k], -PL_FIELD_FIXED_SHIFT);
 }
 
 double pl_sim_wall_stress(const pl_sim_t *sim, int wall, int d)
 {
-    const double area = (double)sim->grid.L[0] * sim->grid.L[1], t = (double)sim->step * sim->scene.srd.dt;
-    return t > 0.0 ? (wall ? 1.0 : -1.0) * sim->wall_impulse[wall][d] / (area * t) : 0.0;
+    const int *L = sim->grid.L;
+    const double t = (double)sim->step * sim->scene.srd.dt;
+    if (!(t > 0.0)) return 0.0;
+    if (wall == 2) /* the x/y walls: force the fluid exerts on them per area */
+        return -sim->wall_impulse[2][d] / (2.0 * ((double)L[0] + L[1]) * L[2] * t);
+    return (wall ? 1.0 : -1.0) * sim->wall_impulse[wall][d] / ((double)L[0] * L[1] * t);
 }
 
 /* pl_srd_stream_count + pl_srd_stream_sort (drift inside the scatter) leave
@@ -94,7 +99,8 @@ static int stage_collide(pl_sim_t *sim, pl_err_t *err)
      * (deterministic) */
     size_t nb = (sim->grid.ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
     for (size_t b = 0; p.wall_dp && b < nb; ++b)
-        for (int k = 0; k < 6; ++k) sim->wall_impulse[k / 3][k % 3] += p.wall_dp[6 * b + (size_t)k];
+        for (int k = 0; k < PL_WALL_ACC_N; ++k)
+            sim->wall_impulse[k / 3][k % 3] += p.wall_dp[PL_WALL_ACC_N * b + (size_t)k];
     double s2 = 0.0, dof = 0.0;
     for (size_t b = 0; b < nb; ++b) {
         s2 += sim->block_sum[2 * b];
@@ -240,15 +246,15 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
     sim->block_sum = pl_alloc(2 * nb * sizeof(double));
     sim->obs_scratch = pl_alloc(pl_srd_observe_scratch(n) * sizeof(double));
     if (scene->output.fields_interval > 0) sim->field_acc = pl_alloc(4 * L3 * sizeof(int64_t));
-    /* the wall stress is the z walls' (x/y walls: not counted) */
-    const int zwalls = scene->box.walls_z != PL_WALLS_NONE;
-    if (zwalls) {
+    /* the momentum each wall exchanges (wall stress) */
+    const int any_walls = sim->grid.any_walls;
+    if (any_walls) {
         sim->wall_acc = pl_alloc((size_t)sim->nthreads * PL_WALL_ACC_STRIDE * sizeof(int64_t));
-        sim->wall_dp = pl_alloc(6 * nb * sizeof(double));
+        sim->wall_dp = pl_alloc(PL_WALL_ACC_N * nb * sizeof(double));
     }
     memcpy(sim->wall_u, scene->box.wall_velocity, sizeof sim->wall_u); /* shear, Hecht Sec. VIII.C */
     if (!sim->hist || !sim->cell_start || !sim->block_sum || !sim->obs_scratch ||
-        (scene->output.fields_interval > 0 && !sim->field_acc) || (zwalls && (!sim->wall_acc || !sim->wall_dp))) {
+        (scene->output.fields_interval > 0 && !sim->field_acc) || (any_walls && (!sim->wall_acc || !sim->wall_dp))) {
         pl_sim_free(sim);
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cell arrays (%zu cells)", nc);
     }

@@ -335,6 +335,52 @@ Test(capillary, moving_z_walls_in_a_closed_box, .timeout = 120)
     pl_sim_free(sim);
 }
 
+/* The x/y walls' count (sim->wall_impulse[2], thermo's s_side_*): in a
+ * capillary periodic along z with a body force g on the fluid, the z
+ * momentum of fluid + colloids changes by exactly N g t plus what the x/y
+ * walls gave: streaming bounce-backs, virtual particles of cells they cut,
+ * coupling I pushes through them, the potential coupling's own reflections,
+ * and coupling II cells holding one of Hecht's R = 0.62 a0 colloids.
+ * Tolerance as tests/test_shear.c (1e-7 against sqrt(M kT) ~ 1e2). */
+Test(capillary, side_walls_balance_the_momentum_for_every_coupling, .timeout = 120)
+{
+    static const char *cases[][2] = {
+        {"", ""},
+        {"colloids: { count = 8; radius = 2.0; init = \"random\"; pairs = \"hertz\"; };\n",
+         "coupling: { method = \"hecht1\"; };\n"},
+        {"colloids: { count = 8; radius = 2.0; init = \"random\"; pairs = \"hertz\"; };\n",
+         "coupling: { method = \"hecht1\"; boundary = \"slip\"; placement = \"nearest\"; };\n"},
+        {"colloids: { count = 8; radius = 2.0; init = \"random\"; pairs = \"hertz\"; };\n",
+         "coupling: { method = \"hecht2\"; };\n"},
+        {"colloids: { count = 8; radius = 2.0; init = \"random\"; pairs = \"hertz\"; };\n",
+         "coupling: { method = \"potential\"; sigma_cf = 2.0; };\n"},
+        {"colloids: { count = 30; radius = 0.62; init = \"random\"; pairs = \"hertz\"; substeps = 16; };\n",
+         "coupling: { method = \"hecht2\"; };\n"},
+    };
+    const double g = 0.02, dt = 0.1;
+    for (size_t k = 0; k < sizeof cases / sizeof *cases; ++k) {
+        char scene[1024];
+        snprintf(scene, sizeof scene,
+                 "seed = 5;\nbox: { cells = [10, 10, 10]; walls_xy = \"noslip\"; };\n"
+                 "fluid: { density = 5.0; body_force = [0.0, 0.0, %g]; };\nsrd: { dt = %g; };\n"
+                 "thermostat: { type = \"heyes\"; };\n%s%s",
+                 g, dt, cases[k][0], cases[k][1]);
+        pl_sim_t *sim = pl_test_sim(scene, 2);
+        double P0[3], P1[3], M;
+        pl_test_steps(sim, 5);
+        pl_coupling_total_momentum(sim, P0, &M);
+        const double S0 = sim->wall_impulse[2][2];
+        const long long n = pl_test_quick() ? 10 : 100;
+        pl_test_steps(sim, n);
+        pl_coupling_total_momentum(sim, P1, &M);
+        const double S = sim->wall_impulse[2][2] - S0, body = (double)sim->fluid.n * g * dt * (double)n;
+        cr_assert(fabs(S) > 1.0, "case %zu: the x/y walls exchanged no P_z (%g)", k, S);
+        cr_assert(fabs(P1[2] - P0[2] - body - S) < 1e-7,
+                  "case %zu: P_z changed by %.12g, body force %.12g + x/y walls %.12g", k, P1[2] - P0[2], body, S);
+        pl_sim_free(sim);
+    }
+}
+
 static void expect_error(const char *text, const char *needle)
 {
     static pl_scene_t scene;

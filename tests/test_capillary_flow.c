@@ -18,7 +18,14 @@
  * With that b, u_mean gives nu, which must agree with PL Eqs. 9-12 within 5%
  * (the tolerance of the planar test; the SRD viscosity at lambda = 0.1 is
  * measured 2-3% above PL in tests/test_viscosity.c).  Errors: 10 blocks,
- * 3 standard errors must fit inside the tolerances. */
+ * 3 standard errors must fit inside the tolerances.
+ *
+ * Wall stress: in the steady flow the x/y walls take up the body force, so
+ * the mean shear stress on them (thermo's s_side_z: the impulse they gave
+ * the fluid per area 4 W Lz and time) is rho g W^2 / (4 W) = gamma g W / 4;
+ * checked per block against that within 3 standard errors (the fluid's
+ * momentum fluctuations, ~sqrt(N kT) over a block of 400 t0, are ~0.2% of
+ * it), and the x, y components vanish (|mean| < 3 SE). */
 #include <math.h>
 #include <stdio.h>
 
@@ -94,10 +101,14 @@ Test(capillary, poiseuille_in_a_square_duct, .timeout = 300)
     pl_test_steps(sim, relax);
     const size_t L2 = (size_t)W * (size_t)W, L3 = L2 * (size_t)Lz;
     const double fix = 1.0 / (double)(1LL << PL_FIELD_FIXED_SHIFT);
-    double um[NB], uc[NB], slip[NB], nu[NB];
+    double um[NB], uc[NB], slip[NB], nu[NB], tau[3][NB];
     for (int b = 0; b < NB; ++b) {
         memset(sim->field_acc, 0, 4 * L3 * sizeof(int64_t));
+        double I0[3];
+        for (int d = 0; d < 3; ++d) I0[d] = sim->wall_impulse[2][d];
         pl_test_steps(sim, per);
+        for (int d = 0; d < 3; ++d) /* force per area on the walls */
+            tau[d][b] = -(sim->wall_impulse[2][d] - I0[d]) / (4.0 * W * Lz * (double)per * lambda);
         double n_all = 0, p_all = 0, n_c = 0, p_c = 0;
         for (size_t c = 0; c < L3; ++c) {
             const int ix = (int)(c % (size_t)W), iy = (int)(c / (size_t)W % (size_t)W);
@@ -119,6 +130,12 @@ Test(capillary, poiseuille_in_a_square_duct, .timeout = 300)
     mean_sem(uc, &muc, &suc);
     mean_sem(slip, &mb, &sb);
     mean_sem(nu, &mnu, &snu);
+    double mt[3], st[3];
+    for (int d = 0; d < 3; ++d) mean_sem(tau[d], &mt[d], &st[d]);
+    const double tau_th = gamma * g * W / 4.0;
+    printf("capillary poiseuille: wall stress (x, y, z) = %.3g +- %.2g, %.3g +- %.2g, %.5f +- %.5f "
+           "(gamma g W / 4 = %.5f, %+.2f%%)\n",
+           mt[0], st[0], mt[1], st[1], mt[2], st[2], tau_th, 100 * (mt[2] / tau_th - 1));
     /* the series with PL's nu and the planar slip length */
     const double A = 0.5 * W + b_planar;
     const double um_th = g / th.nu * duct_average(0.5 * W, A), uc_th = g / th.nu * duct_average(1.0, A);
@@ -134,6 +151,11 @@ Test(capillary, poiseuille_in_a_square_duct, .timeout = 300)
         cr_assert_lt(3 * snu / th.nu, 0.05, "statistical error of nu too large");
         cr_assert_lt(fabs(mb - b_planar), 0.1, "slip length %.3f +- %.3f a0, planar %.2f", mb, sb, b_planar);
         cr_assert_lt(fabs(mnu / th.nu - 1), 0.05, "nu = %.4f +- %.4f vs PL %.4f", mnu, snu, th.nu);
+        cr_assert_lt(fabs(mt[2] - tau_th), 3 * st[2] + 1e-12, "wall stress %.5f +- %.5f vs gamma g W / 4 = %.5f",
+                     mt[2], st[2], tau_th);
+        cr_assert_lt(st[2], 0.01 * tau_th, "wall stress too noisy: %.5f +- %.5f", mt[2], st[2]);
+        for (int d = 0; d < 2; ++d)
+            cr_assert_lt(fabs(mt[d]), 3 * st[d] + 1e-12, "wall stress component %d: %.3g +- %.2g", d, mt[d], st[d]);
     }
     pl_sim_free(sim);
 }

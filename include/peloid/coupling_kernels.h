@@ -45,7 +45,7 @@ typedef struct {
     uint64_t seed, step;
     double wall_u[2][3]; /* z wall velocities (bottom, top): a particle pushed through a
                           * no-slip wall (grid->walls) bounces back in the wall's frame */
-    int64_t *wall_acc;   /* NULL, or the wall impulses (fixed point, bottom xyz, top xyz) */
+    int64_t *wall_acc;   /* NULL, or the wall impulses (fixed point, PL_WALL_ACC_N slots) */
 } pl_coupling1_params_t;
 
 /* After stream+bin: every fluid particle found inside a colloid is moved out
@@ -71,8 +71,8 @@ typedef struct {
     /* virtual wall particles, as in the fluid collision (pl_collide_params_t) */
     int wall_ghosts;
     double ghost_density, kT_wall, wall_u[2][3];
-    double *wall_fix;    /* NULL, or 6 per occupied cell: the correction to
-                          * the z walls' impulse the fluid kernel counted */
+    double *wall_fix;    /* NULL, or PL_WALL_ACC_N per occupied cell: the
+                          * correction to the wall impulse the fluid kernel counted */
 } pl_coupling2_params_t;
 
 /* Cells holding colloids: occ_cell[j] (j < nocc) with the colloids

@@ -42,10 +42,11 @@ struct pl_sim {
     double last_kT_meas;  /* PL Eq. A1 temperature of the last collision */
     double wall_u[2][3];  /* wall velocities (bottom, top): box.wall_velocity_* */
     /* walls: impulse the walls gave fluid (and colloids) since step 0,
-     * (bottom, top) x (x, y, z); checkpointed.  The wall stress (PL Eq. 13). */
-    double wall_impulse[2][3];
+     * (bottom z wall, top z wall, the x/y walls together) x (x, y, z);
+     * checkpointed.  The wall stress (PL Eq. 13). */
+    double wall_impulse[3][3];
     int64_t *wall_acc;    /* nthreads x PL_WALL_ACC_STRIDE (streaming bounces) */
-    double *wall_dp;      /* 6 x blocks (virtual particles of the collision) */
+    double *wall_dp;      /* PL_WALL_ACC_N x blocks (virtual particles of the collision) */
     /* time-averaged fields */
     int64_t *field_acc;   /* 4 x L0 L1 L2, fixed point */
     long long field_samples;
@@ -69,13 +70,16 @@ int pl_sim_step(pl_sim_t *sim, pl_err_t *err);
 /* Drift parameters of the current step (dt, body force, wall velocities). */
 void pl_sim_stream_params(const pl_sim_t *sim, pl_stream_params_t *p);
 
-/* Adds fixed-point wall impulses (bottom xyz, top xyz; 2^-PL_FIELD_FIXED_SHIFT)
- * to sim->wall_impulse. */
-void pl_sim_wall_add(pl_sim_t *sim, const int64_t acc[6]);
+/* Adds fixed-point wall impulses (PL_WALL_ACC_N slots: bottom xyz, top xyz,
+ * x/y walls xyz; 2^-PL_FIELD_FIXED_SHIFT) to sim->wall_impulse. */
+void pl_sim_wall_add(pl_sim_t *sim, const int64_t acc[PL_WALL_ACC_N]);
 
-/* Shear stress sigma_{dz} (d = x, y) from the momentum wall w gave the fluid
- * since step 0, per wall area and time (PL Eq. 13): +F_top / A and -F_bottom / A,
- * so both walls measure the same stress; 0 before the first step. */
+/* wall 0, 1: shear stress sigma_{dz} (d = x, y) from the momentum z wall
+ * `wall` gave the fluid since step 0, per wall area and time (PL Eq. 13):
+ * +F_top / A and -F_bottom / A, so both walls measure the same stress.
+ * wall 2: the force per area (component d) the fluid exerts on the x/y walls
+ * of a capillary together, -F / (2 (Lx + Ly) Lz): for flow along z, the mean
+ * wall shear stress.  0 before the first step. */
 double pl_sim_wall_stress(const pl_sim_t *sim, int wall, int d);
 
 /* Observables of the current state (fixed-order reductions). */

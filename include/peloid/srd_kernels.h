@@ -11,10 +11,14 @@
 #include "peloid/grid.h"
 
 /* ---- streaming fused with cell binning (kernels/srd_stream.c) ---------- */
-/* Wall impulse accumulators: PL_WALL_ACC_STRIDE int64 per thread (one cache
- * line), the first 6 the impulse (bottom xyz, top xyz) in fixed point
- * 2^-PL_FIELD_FIXED_SHIFT. */
-enum { PL_WALL_ACC_STRIDE = 8 };
+/* Wall impulse accumulators: PL_WALL_ACC_STRIDE int64 per thread (two cache
+ * lines), the first PL_WALL_ACC_N the impulse in fixed point
+ * 2^-PL_FIELD_FIXED_SHIFT given by three "slots": the bottom z wall (xyz),
+ * the top z wall (xyz), and the x/y walls of a capillary together (xyz). */
+enum { PL_WALL_ACC_N = 9, PL_WALL_ACC_STRIDE = 16 };
+
+/* Slot of wall `top` (0: at 0, 1: at L) of axis `axis`. */
+static inline int pl_wall_slot(int axis, int top) { return axis == 2 ? top : 2; }
 
 typedef struct {
     double dt;          /* collision time step */
@@ -32,11 +36,11 @@ void pl_srd_stream_bin(pl_fluid_t *fluid, const pl_grid_t *grid, const pl_stream
                        uint32_t *hist, int nthreads);
 
 /* The impulse pl_srd_stream_bin's bounces give one particle that starts at
- * (r0, v0), added to acc (fixed point, bottom xyz, top xyz) bitwise as the
+ * (r0, v0), added to acc (fixed point, PL_WALL_ACC_N slots) bitwise as the
  * streaming adds it: lets a caller take back the count of a particle whose
  * streaming it replaces (the potential coupling). */
 void pl_srd_stream_wall_impulse(const pl_grid_t *g, const pl_stream_params_t *p, const double r0[3],
-                                const double v0[3], int64_t acc[6]);
+                                const double v0[3], int64_t acc[PL_WALL_ACC_N]);
 
 /* Cell binning only (no motion): used after initialisation and restart. */
 void pl_srd_bin(pl_fluid_t *fluid, const pl_grid_t *grid, uint32_t *hist, int nthreads);
@@ -85,8 +89,8 @@ typedef struct {
     double ghost_density; /* gamma */
     double kT_wall;
     double wall_u[2][3];
-    double *wall_dp;      /* NULL, or 6 x nblocks: momentum the virtual particles
-                           * gave the cells of block b (bottom xyz, top xyz) */
+    double *wall_dp;      /* NULL, or PL_WALL_ACC_N x nblocks: momentum the virtual
+                           * particles gave the cells of block b (slots as wall_acc) */
 } pl_collide_params_t;
 
 /* Fixed-order reductions are done over blocks of this many cells. */
