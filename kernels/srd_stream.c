@@ -123,6 +123,13 @@ void pl_srd_stream_wall_impulse(const pl_grid_t *g, const pl_stream_params_t *p,
     pl_drift_t c;
     pl_drift_init(&c, g, p, 1);
     if (!c.walls) return;
+    /* the first steps of pl_drift_one_closed: no wall crossed, no impulse */
+    int out = 0;
+    for (int d = 0; d < 3; ++d) {
+        const double x = r0[d] + (v0[d] + c.a[d]) * c.dt;
+        out |= c.wall[d] && (x < 0.0 || x > c.L[d]);
+    }
+    if (!out) return;
     double r[3] = {r0[0], r0[1], r0[2]}, v[3] = {v0[0], v0[1], v0[2]}, dr[3];
     (void)pl_drift_one(&c, r, v, dr, acc);
 }
