@@ -161,22 +161,29 @@ static void wca_block(const pl_coupling_wca_t *w, size_t lo, size_t hi, const do
     const double s2 = w->sigma * w->sigma, rc2 = s2 * cbrt(2.0); /* (2^{1/6} sigma)^2 */
     const int *L = w->L;
     const size_t nc = c->n;
+    /* half box on periodic axes, never exceeded on closed ones */
+    double hL[3];
+    for (int d = 0; d < 3; ++d) hL[d] = w->walls[d] == PL_WALLS_NONE ? 0.5 * L[d] : INFINITY;
     double epot = 0.0;
     for (size_t j = lo; j < hi; ++j) {
         double r[3] = {x[j], y[j], z[j]}, F[3] = {0.0, 0.0, 0.0};
         int ic[3];
         for (int d = 0; d < 3; ++d) {
-            double u = r[d] - L[d] * floor(r[d] / L[d]);
-            ic[d] = (int)floor(u);
-            if (ic[d] < 0) ic[d] = 0;
-            if (ic[d] >= L[d]) ic[d] = L[d] - 1;
+            /* the lookup cell (positions here are unwrapped by at most one
+             * step's drift; closed axes clipped): any cell next to the
+             * particle lists every colloid within the cut-off (lookup radii:
+             * cut-off + margin) */
+            const double u = hL[d] == INFINITY ? r[d] : r[d] < 0.0 ? r[d] + L[d] : r[d] >= L[d] ? r[d] - L[d] : r[d];
+            ic[d] = (int)u;
+            ic[d] = ic[d] < 0 ? 0 : ic[d] < L[d] ? ic[d] : L[d] - 1;
         }
         size_t cell = ((size_t)ic[2] * (size_t)L[1] + (size_t)ic[1]) * (size_t)L[0] + (size_t)ic[0];
         for (int32_t q = lk_start[cell]; q < lk_start[cell + 1]; ++q) {
             int32_t k = lk_list[q];
             double dv[3] = {r[0] - c->x[k], r[1] - c->y[k], r[2] - c->z[k]};
-            for (int a = 0; a < 3; ++a)
-                if (w->walls[a] == PL_WALLS_NONE) dv[a] -= L[a] * nearbyint(dv[a] / L[a]);
+            /* minimum image: equal to dv - L nearbyint(dv / L) wherever the
+             * pair can be within the cut-off (|dv| < L / 2 + rc, L > 2 rc) */
+            for (int a = 0; a < 3; ++a) dv[a] = dv[a] > hL[a] ? dv[a] - L[a] : (dv[a] < -hL[a] ? dv[a] + L[a] : dv[a]);
             double d2 = dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2];
             if (d2 >= rc2) continue;
             double sr6 = s2 / d2;
