@@ -38,7 +38,7 @@
  * the Barker-Henderson radius (1.015, 1.045, 1.078 sigma_cf).
  *
  * Tests: sigma_cf = 2 a0 (the issue's size, ~12 s) against PL's evaluation
- * within 10% (seed 5: 57.4 +- 2.1, +2.0%), with a_eff carried to PL's box L =
+ * within 10% (seed 5: 57.4 +- 2.1, +1.9%), with a_eff carried to PL's box L =
  * 16 sigma_cf by PL Eqs. 41-43 within 10% of PL's 1.55 a0 (seed 5: 1.58;
  * measured directly at L = 32: 1.65 +- 0.05); sigma_cf = 3 a0 (~45 s)
  * against the point-force form within 10% (seed 5: 89.3 +- 3.1, +2.1%). */
@@ -53,7 +53,7 @@ static const double PI = 3.14159265358979323846;
 
 /* One pinned sphere of radius sigma in a periodic box of L = 8 sigma, flow
  * v0, burn-in, then 20 blocks of 2000 steps; returns the friction F / v0 and
- * its block standard error (0 when quick). */
+ * its block standard error. */
 static double pinned_friction(double sigma, double v0, long long burn_steps, double *se_out)
 {
     const double L = 8.0 * sigma;
