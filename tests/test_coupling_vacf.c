@@ -41,9 +41,10 @@
  * errors of the test's run, 2.5 of the run-to-run scatter (below).
  * Measured: seed 11, 0.01619 +- 0.00066 (-9.0%); seeds 71-74, 2e5 steps
  * each: 0.0187, 0.0161, 0.0169, 0.0143 (scatter 11% per run, larger than
- * the blocks' 6%), mean 0.0165 +- 0.0009.  All five: 8 +- 4% below PL's kT
- * / xi and 4 +- 4% below kT / xi of the pinned drag (1 / 58.4 = 0.01712,
- * test_coupling_drag): the Einstein relation holds within the statistics.
+ * the blocks' 6%), mean 0.0165 +- 0.0009.  All five, weighted by length:
+ * 8 +- 5% below PL's kT / xi and 4 +- 5% below kT / xi of the pinned drag
+ * (1 / 58.4 = 0.01712, test_coupling_drag): the Einstein relation holds
+ * within the statistics.
  * Other measures of the same mobility: a colloid driven by a force, U / F =
  * 0.0170 +- 0.0004 (4 or 16 MD substeps, with or without the thermostat;
  * coupling I slip as control: 0.0173 +- 0.0006); the transient response to
