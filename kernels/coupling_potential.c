@@ -16,20 +16,26 @@
 #include "peloid/scene.h"
 #include "peloid/srd_kernels.h"
 
-/* Geometry of the selection test: box, periodic flags and half boxes. */
+/* The box for the minimum image: sides, and half sides on periodic axes
+ * (INFINITY on closed ones: never exceeded). */
 typedef struct {
-    int L0, L1, L2;
-    double h0, h1, h2; /* half box on periodic axes; never exceeded on closed ones */
-} find_geom_t;
+    int L[3];
+    double h[3];
+} image_box_t;
 
-static find_geom_t find_geom(const pl_grid_t *g)
+static image_box_t image_box(const int L[3], const int walls[3])
 {
-    find_geom_t q = {g->L[0], g->L[1], g->L[2], INFINITY, INFINITY, INFINITY};
-    if (g->walls[0] == PL_WALLS_NONE) q.h0 = 0.5 * q.L0;
-    if (g->walls[1] == PL_WALLS_NONE) q.h1 = 0.5 * q.L1;
-    if (g->walls[2] == PL_WALLS_NONE) q.h2 = 0.5 * q.L2;
+    image_box_t q;
+    for (int d = 0; d < 3; ++d) {
+        q.L[d] = L[d];
+        q.h[d] = walls[d] == PL_WALLS_NONE ? 0.5 * L[d] : INFINITY;
+    }
     return q;
 }
+
+/* Minimum image of a separation d along an axis: one conditional shift
+ * (separations here stay within one box side). */
+static inline double min_image(double d, double h, int L) { return d > h ? d - L : (d < -h ? d + L : d); }
 
 /* pl_coupling_inside's test, written out for the selection: the cell is a
  * truncation clamped to [0, L) (= floor + clip), the minimum image one
@@ -38,21 +44,20 @@ static find_geom_t find_geom(const pl_grid_t *g)
  * The same selections as pl_coupling_inside (checkpoints of periodic, z-wall
  * and capillary scenes bitwise equal); select stage 14 -> 10 ns/particle at
  * 1 thread, 7.5 -> 5.5 at 2 (bench_coupling's potential case). */
-static inline int near_any(const find_geom_t *q, const pl_coupling_colloids_t *c, const int32_t *lk_start,
+static inline int near_any(const image_box_t *q, const pl_coupling_colloids_t *c, const int32_t *lk_start,
                            const int32_t *lk_list, double x, double y, double z)
 {
     int ix = (int)x, iy = (int)y, iz = (int)z;
-    ix = ix < 0 ? 0 : ix < q->L0 ? ix : q->L0 - 1;
-    iy = iy < 0 ? 0 : iy < q->L1 ? iy : q->L1 - 1;
-    iz = iz < 0 ? 0 : iz < q->L2 ? iz : q->L2 - 1;
-    const size_t cell = ((size_t)iz * (size_t)q->L1 + (size_t)iy) * (size_t)q->L0 + (size_t)ix;
+    ix = ix < 0 ? 0 : ix < q->L[0] ? ix : q->L[0] - 1;
+    iy = iy < 0 ? 0 : iy < q->L[1] ? iy : q->L[1] - 1;
+    iz = iz < 0 ? 0 : iz < q->L[2] ? iz : q->L[2] - 1;
+    const size_t cell = ((size_t)iz * (size_t)q->L[1] + (size_t)iy) * (size_t)q->L[0] + (size_t)ix;
     int in = 0;
     for (int32_t p = lk_start[cell], e = lk_start[cell + 1]; p < e; ++p) {
         const int32_t k = lk_list[p];
-        double dx = x - c->x[k], dy = y - c->y[k], dz = z - c->z[k];
-        dx = dx > q->h0 ? dx - q->L0 : (dx < -q->h0 ? dx + q->L0 : dx);
-        dy = dy > q->h1 ? dy - q->L1 : (dy < -q->h1 ? dy + q->L1 : dy);
-        dz = dz > q->h2 ? dz - q->L2 : (dz < -q->h2 ? dz + q->L2 : dz);
+        const double dx = min_image(x - c->x[k], q->h[0], q->L[0]);
+        const double dy = min_image(y - c->y[k], q->h[1], q->L[1]);
+        const double dz = min_image(z - c->z[k], q->h[2], q->L[2]);
         in |= dx * dx + dy * dy + dz * dz < c->rad[k] * c->rad[k];
     }
     return in;
@@ -62,7 +67,7 @@ void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
                       const int32_t *lk_start, const int32_t *lk_list, int nthreads,
                       uint32_t *found, uint64_t *counts)
 {
-    const find_geom_t q = find_geom(g);
+    const image_box_t q = image_box(g->L, g->walls);
 #pragma omp parallel num_threads(nthreads)
     {
         int t = omp_get_thread_num();
@@ -102,7 +107,7 @@ void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
                              const int32_t *lk_start, const int32_t *lk_list, const uint32_t *cell_start,
                              uint8_t *marks, int *axis_buf, int nthreads, uint32_t *found, uint64_t *counts)
 {
-    const find_geom_t q = find_geom(g);
+    const image_box_t q = image_box(g->L, g->walls);
     const size_t ncells = g->ncells;
     /* mark the cells a selection sphere reaches (serial: colloids are few) */
     memset(marks, 0, ncells);
@@ -161,9 +166,7 @@ static void wca_block(const pl_coupling_wca_t *w, size_t lo, size_t hi, const do
     const double s2 = w->sigma * w->sigma, rc2 = s2 * cbrt(2.0); /* (2^{1/6} sigma)^2 */
     const int *L = w->L;
     const size_t nc = c->n;
-    /* half box on periodic axes, never exceeded on closed ones */
-    double hL[3];
-    for (int d = 0; d < 3; ++d) hL[d] = w->walls[d] == PL_WALLS_NONE ? 0.5 * L[d] : INFINITY;
+    const image_box_t q = image_box(w->L, w->walls);
     double epot = 0.0;
     for (size_t j = lo; j < hi; ++j) {
         double r[3] = {x[j], y[j], z[j]}, F[3] = {0.0, 0.0, 0.0};
@@ -173,17 +176,17 @@ static void wca_block(const pl_coupling_wca_t *w, size_t lo, size_t hi, const do
              * step's drift; closed axes clipped): any cell next to the
              * particle lists every colloid within the cut-off (lookup radii:
              * cut-off + margin) */
-            const double u = hL[d] == INFINITY ? r[d] : r[d] < 0.0 ? r[d] + L[d] : r[d] >= L[d] ? r[d] - L[d] : r[d];
+            const double u = q.h[d] == INFINITY ? r[d] : r[d] < 0.0 ? r[d] + L[d] : r[d] >= L[d] ? r[d] - L[d] : r[d];
             ic[d] = (int)u;
             ic[d] = ic[d] < 0 ? 0 : ic[d] < L[d] ? ic[d] : L[d] - 1;
         }
         size_t cell = ((size_t)ic[2] * (size_t)L[1] + (size_t)ic[1]) * (size_t)L[0] + (size_t)ic[0];
-        for (int32_t q = lk_start[cell]; q < lk_start[cell + 1]; ++q) {
-            int32_t k = lk_list[q];
+        for (int32_t p = lk_start[cell]; p < lk_start[cell + 1]; ++p) {
+            int32_t k = lk_list[p];
             double dv[3] = {r[0] - c->x[k], r[1] - c->y[k], r[2] - c->z[k]};
-            /* minimum image: equal to dv - L nearbyint(dv / L) wherever the
-             * pair can be within the cut-off (|dv| < L / 2 + rc, L > 2 rc) */
-            for (int a = 0; a < 3; ++a) dv[a] = dv[a] > hL[a] ? dv[a] - L[a] : (dv[a] < -hL[a] ? dv[a] + L[a] : dv[a]);
+            /* equal to dv - L nearbyint(dv / L) wherever the pair can be
+             * within the cut-off (|dv| < L / 2 + rc, L > 2 rc) */
+            for (int a = 0; a < 3; ++a) dv[a] = min_image(dv[a], q.h[a], L[a]);
             double d2 = dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2];
             if (d2 >= rc2) continue;
             double sr6 = s2 / d2;
