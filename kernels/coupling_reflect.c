@@ -158,9 +158,7 @@ static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
                 if (g->walls[d] == PL_WALLS_NOSLIP) /* bounce-back in the wall's frame, as streaming does */
                     for (int e = 0; e < 3; ++e) dp[e] = 2.0 * ((d == 2 ? prm->wall_u[top][e] : 0.0) - v[e]);
                 for (int e = 0; e < 3; ++e) v[e] += dp[e];
-                if (prm->wall_acc) /* the z wall's, or the x/y walls' slot */
-                    for (int e = 0; e < 3; ++e)
-                        prm->wall_acc[3 * pl_wall_slot(d, top) + e] += llround(ldexp(dp[e], PL_FIELD_FIXED_SHIFT));
+                if (prm->wall_acc) pl_wall_acc_add(prm->wall_acc, pl_wall_slot(d, top), dp);
             }
         }
         cnt[0]++;

@@ -58,14 +58,6 @@ static inline int pl_drift_cell_1d(double x, double s, int n)
     return i;
 }
 
-/* Impulse dp (m_f = 1) given by a wall to a particle, added in fixed point
- * (PL_FIELD_FIXED_SHIFT) to acc[3 slot + d] (slot: pl_wall_slot): integer
- * sums do not depend on the order, hence not on the thread count. */
-static inline void pl_drift_wall_acc(int64_t *acc, int slot, const double dp[3])
-{
-    for (int d = 0; d < 3; ++d) acc[3 * slot + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
-}
-
 /* 1 when r lies beyond a wall of a closed axis. */
 static inline int pl_drift_outside(const pl_drift_t *c, const double r[3])
 {
@@ -80,7 +72,7 @@ static inline int pl_drift_outside(const pl_drift_t *c, const double r[3])
  * bounces first off the wall it would have crossed earliest, then moves on
  * for the rest of the step; near an edge or corner this repeats for the next
  * wall (at most 8 bounces).  acc (NULL: not wanted) receives the impulse of
- * every bounce (pl_drift_wall_acc, the x/y walls in one slot).  Out of line: few
+ * every bounce (pl_wall_acc_add, the x/y walls in one slot).  Out of line: few
  * particles reach a wall in a step, and inlined it kept pl_drift_one from
  * being inlined. */
 __attribute__((noinline)) static void pl_drift_reflect(const pl_drift_t *c, double r[3], double v[3],
@@ -116,7 +108,7 @@ __attribute__((noinline)) static void pl_drift_reflect(const pl_drift_t *c, doub
         }
         if (acc) {
             const double dp[3] = {v[0] - vin[0], v[1] - vin[1], v[2] - vin[2]};
-            pl_drift_wall_acc(acc, pl_wall_slot(ax, top), dp);
+            pl_wall_acc_add(acc, pl_wall_slot(ax, top), dp);
         }
         for (int d = 0; d < 3; ++d) r[d] = p[d] + v[d] * t_left;
     }

@@ -186,10 +186,8 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         p->seed = cp->seed;
         p->kT_target = sc->thermostat.temperature;
         p->heyes_eps = sc->thermostat.heyes_epsilon;
-        /* virtual wall particles: as stage_collide sets them for the fluid */
-        p->wall_ghosts = sc->box.walls_z == PL_WALLS_NOSLIP || sc->box.walls_xy == PL_WALLS_NOSLIP;
-        p->ghost_density = sc->fluid.density;
-        p->kT_wall = sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature : sc->fluid.temperature;
+        /* virtual wall particles: those of the fluid collision */
+        p->wall_ghosts = pl_sim_wall_ghosts(sim, &p->ghost_density, &p->kT_wall);
         memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
         if (p->wall_ghosts && !(p->wall_fix = malloc(PL_WALL_ACC_N * (nc + 1) * sizeof *p->wall_fix)))
             rc = PL_ERR_NOMEM;

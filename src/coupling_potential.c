@@ -181,8 +181,7 @@ static void drift_fluid(pl_coupling_t *cp, const pl_sim_t *sim, double dt, int64
                 for (int d = 0; d < 3; ++d) dp[d] = 2.0 * (U[d] - NB(cp, 3 + d)[j]);
             }
             for (int d = 0; d < 3; ++d) NB(cp, 3 + d)[j] += dp[d];
-            const int slot = pl_wall_slot(a, top);
-            for (int d = 0; d < 3; ++d) acc[3 * slot + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
+            pl_wall_acc_add(acc, pl_wall_slot(a, top), dp);
         }
     }
 }

@@ -102,8 +102,7 @@ int pl_coupling_stage_collide(pl_sim_t *sim, pl_err_t *err)
     /* the walls' push in the occupied cells, replacing the fluid kernel's
      * count there; summed in cell order (deterministic) */
     for (size_t j = 0; cp->p2.wall_fix && j < cp->nocc; ++j)
-        for (int k = 0; k < PL_WALL_ACC_N; ++k)
-            sim->wall_impulse[k / 3][k % 3] += cp->p2.wall_fix[PL_WALL_ACC_N * j + (size_t)k];
+        pl_sim_wall_add_momentum(sim, cp->p2.wall_fix + PL_WALL_ACC_N * j);
     if (cp->pinned) pl_coupling_absorb_pinned(cp, c, sim->scene.srd.dt);
     return 0;
 }

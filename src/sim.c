@@ -52,6 +52,19 @@ void pl_sim_wall_add(pl_sim_t *sim, const int64_t acc[PL_WALL_ACC_N])
         sim->wall_impulse[k / 3][k % 3] += ldexp((double)acc[k], -PL_FIELD_FIXED_SHIFT);
 }
 
+void pl_sim_wall_add_momentum(pl_sim_t *sim, const double dp[PL_WALL_ACC_N])
+{
+    for (int k = 0; k < PL_WALL_ACC_N; ++k) sim->wall_impulse[k / 3][k % 3] += dp[k];
+}
+
+int pl_sim_wall_ghosts(const pl_sim_t *sim, double *density, double *kT_wall)
+{
+    const pl_scene_t *sc = &sim->scene;
+    *density = sc->fluid.density;
+    *kT_wall = sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature : sc->fluid.temperature;
+    return sc->box.walls_z == PL_WALLS_NOSLIP || sc->box.walls_xy == PL_WALLS_NOSLIP;
+}
+
 double pl_sim_wall_stress(const pl_sim_t *sim, int wall, int d)
 {
     const int *L = sim->grid.L;
@@ -89,18 +102,14 @@ static int stage_collide(pl_sim_t *sim, pl_err_t *err)
     p.heyes = sc->thermostat.type == PL_THERMO_HEYES && sim->step % sc->thermostat.interval == 0;
     p.kT_target = sc->thermostat.temperature;
     p.heyes_eps = sc->thermostat.heyes_epsilon;
-    p.wall_ghosts = sc->box.walls_z == PL_WALLS_NOSLIP || sc->box.walls_xy == PL_WALLS_NOSLIP;
-    p.ghost_density = sc->fluid.density;
-    p.kT_wall = sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature : sc->fluid.temperature;
+    p.wall_ghosts = pl_sim_wall_ghosts(sim, &p.ghost_density, &p.kT_wall);
     memcpy(p.wall_u, sim->wall_u, sizeof p.wall_u);
     p.wall_dp = p.wall_ghosts ? sim->wall_dp : NULL;
     pl_srd_collide(&sim->fluid, &sim->grid, sim->cell_start, &p, sim->block_sum);
     /* PL Eqs. A1-A2 and the virtual particles' push, summed in block order
      * (deterministic) */
     size_t nb = (sim->grid.ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
-    for (size_t b = 0; p.wall_dp && b < nb; ++b)
-        for (int k = 0; k < PL_WALL_ACC_N; ++k)
-            sim->wall_impulse[k / 3][k % 3] += p.wall_dp[PL_WALL_ACC_N * b + (size_t)k];
+    for (size_t b = 0; p.wall_dp && b < nb; ++b) pl_sim_wall_add_momentum(sim, p.wall_dp + PL_WALL_ACC_N * b);
     double s2 = 0.0, dof = 0.0;
     for (size_t b = 0; b < nb; ++b) {
         s2 += sim->block_sum[2 * b];

@@ -73,6 +73,14 @@ void pl_sim_stream_params(const pl_sim_t *sim, pl_stream_params_t *p);
 /* Adds fixed-point wall impulses (PL_WALL_ACC_N slots: bottom xyz, top xyz,
  * x/y walls xyz; 2^-PL_FIELD_FIXED_SHIFT) to sim->wall_impulse. */
 void pl_sim_wall_add(pl_sim_t *sim, const int64_t acc[PL_WALL_ACC_N]);
+/* The same in double (slots as above): the virtual particles' push. */
+void pl_sim_wall_add_momentum(pl_sim_t *sim, const double dp[PL_WALL_ACC_N]);
+
+/* Virtual wall particles of the collision (Lamura et al. 2001; walls:
+ * Hecht Sec. VIII.A): 1 when a no-slip wall needs them, with the density
+ * they fill a cut cell to and their temperature.  The fluid collision and
+ * coupling II take them from here. */
+int pl_sim_wall_ghosts(const pl_sim_t *sim, double *density, double *kT_wall);
 
 /* wall 0, 1: shear stress sigma_{dz} (d = x, y) from the momentum z wall
  * `wall` gave the fluid since step 0, per wall area and time (PL Eq. 13):

@@ -4,6 +4,7 @@
 #ifndef PELOID_SRD_KERNELS_H
 #define PELOID_SRD_KERNELS_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -123,5 +124,13 @@ void pl_srd_observe(const pl_fluid_t *fluid, double *scratch, pl_fluid_obs_t *ob
  * thread count).  acc: 4 x ncells_unshifted int64 (count, px, py, pz). */
 enum { PL_FIELD_FIXED_SHIFT = 32 };
 void pl_srd_fields_accumulate(const pl_fluid_t *fluid, const int L[3], int64_t *acc);
+
+/* Impulse dp (m_f = 1) a wall gave a particle, added in fixed point
+ * (PL_FIELD_FIXED_SHIFT) to acc[3 slot + d] (slot: pl_wall_slot): integer
+ * sums do not depend on the order, hence not on the thread count. */
+static inline void pl_wall_acc_add(int64_t *acc, int slot, const double dp[3])
+{
+    for (int d = 0; d < 3; ++d) acc[3 * slot + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
+}
 
 #endif

@@ -68,9 +68,10 @@ static inline void pl_srd_rotation(int rule, double cos_a, double sin_a, uint64_
 
 /* Virtual wall particles of collision cell c holding M >= 1 real bodies of
  * the fluid: 0 when no no-slip wall cuts the cell, else enough to fill it to
- * the mean density gamma (Hecht Sec. VIII.A; PL Sec. II.D); *wall receives
- * the z wall whose velocity they carry (0 bottom, 1 top) or -1 for a cell
- * cut by x/y walls only (at rest). */
+ * the mean density gamma (Lamura et al. 2001; the walls are Hecht Sec.
+ * VIII.A options i, ii); *wall receives the z wall whose velocity they
+ * carry (0 bottom, 1 top) or -1 for a cell cut by x/y walls only (at
+ * rest). */
 static inline int pl_srd_ghost_count(const pl_grid_t *g, double gamma, size_t c, size_t M, int *wall)
 {
     const size_t n0 = (size_t)g->n[0], n1 = (size_t)g->n[1];
