@@ -107,6 +107,11 @@ PYEOF
 sed 's/walls_xy = "noslip"/walls_xy = "slip"/' cap.cfg > cap2.cfg
 "$PELOID" run cap2.cfg --out cap2 --restart cap/checkpoint.h5 2> err.txt; rc=$?
 [ $rc -eq 2 ] && grep -q "box.walls_xy" err.txt && ok "restart into another walls_xy refused" || bad "walls_xy restart: rc $rc $(cat err.txt)"
+head -1 cap/thermo.tsv | grep -q "s_side_z" && ok "capillary thermo has the x/y walls' stress (s_side_z)" || bad "capillary thermo header: $(head -1 cap/thermo.tsv)"
+# a capillary checkpoint from before the x/y walls' momentum was counted
+cp cap/checkpoint.h5 old.h5 && $PY -c 'import h5py; f = h5py.File("old.h5", "a"); del f["side_wall_impulse"]; f.close()'
+"$PELOID" run cap.cfg --out cap3 --restart old.h5 2> err.txt; rc=$?
+[ $rc -eq 2 ] && grep -q "side_wall_impulse" err.txt && [ ! -e cap3 ] && ok "restart from a checkpoint without side_wall_impulse refused, nothing written" || bad "old capillary checkpoint: rc $rc $(cat err.txt)"
 
 # the quickstart suspension (a few steps) and its plot
 "$PELOID" run "$ROOT/scenes/quickstart.cfg" --out qs --steps 80 2> /dev/null
