@@ -42,9 +42,9 @@ int main(void)
                 pairs += dx * dx + dy * dy + dz * dz < rc * rc;
             }
         int reps = 50;
-        pl_colloid_forces(c);
+        pl_colloid_forces(c, &err);
         double t0 = omp_get_wtime();
-        for (int r = 0; r < reps; ++r) pl_colloid_forces(c);
+        for (int r = 0; r < reps; ++r) pl_colloid_forces(c, &err);
         double el = (omp_get_wtime() - t0) / reps;
         printf("kernel=colloid_pairs threads=%d n=%zu pairs=%lld ns_per_pair=%.3f pairs_per_s=%.4g\n", t,
                c->n, pairs, el * 1e9 / (double)pairs, (double)pairs / el);

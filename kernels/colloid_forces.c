@@ -1,4 +1,5 @@
-/* Colloid pair forces and torques over linked cells.
+/* Colloid pair forces, torques and energies over the Verlet neighbour list
+ * (kernels/colloid_neighbors.c).
  *
  * Terms (each switched on by a bit of p->terms, formulas in colloid_pair.h):
  *   DLVO: Hecht Eqs. 1-2 with the parabolic primary minimum (Hecht Sec. II)
@@ -9,17 +10,27 @@
  *   depletion_comp: Phi_comp = -Phi_depl (PL Sec. III.C.1, Eqs. 22-23),
  *          cubic Hermite interpolation of the table built by src/depletion.c
  *
- * Race-free accumulation: full neighbour lists without Newton's third law.
- * Thread t owns a static block of particles i and writes only f[i], t[i],
- * epot[., i] and the guard slots of i; each pair is evaluated twice (once
- * from each side).  The partners of i are visited in a fixed order (neighbour
- * cells in fixed offset order, particles within a cell in index order), so
- * each sum is formed in the same order for any thread count: the forces are
- * bitwise identical for 1, 2, ... threads.
+ * Race-free accumulation with Newton's third law: a half list, each pair
+ * evaluated once by its owner.  Pass 1 (parallel over owners, static blocks)
+ * evaluates the owner's pairs in ascending partner index, sums them into the
+ * owner's force and torque and stores each pair's force (and the partner's
+ * torque) in the partner's reverse entry.  Pass 2 (parallel over colloids)
+ * adds to each colloid its reverse entries, contiguous and in ascending
+ * owner index.  Every entry is written by the thread of the pair's owner
+ * and read after the barrier, so there are no races and no atomics; each sum is formed in an order fixed
+ * by the indices alone, so the forces are bitwise identical for any thread
+ * count and for any valid list (see colloid_neighbors.c).  Chosen over
+ * per-thread force buffers because their reduction order would follow the
+ * thread count (and their size grows with it); the entries cost 24 bytes per
+ * pair (48 with torques), which stay in cache for the colloid numbers of
+ * interest.
  *
  * The term mask is a compile-time constant inside each specialised loop
- * (pair_loop is force-inlined into one case per mask), so a term that is off
- * costs nothing in the inner loop (DESIGN.md "Scene -> plan"). */
+ * (owner_pairs is force-inlined into one case per mask), so a term that is off
+ * costs nothing in the inner loop (DESIGN.md "Scene -> plan").  Energies are
+ * computed only by the energy pass (pl_colloid_pair_energies), when asked for;
+ * the force pass computes none (this file is built with -fno-math-errno so
+ * the compiler drops the logarithm of the unused van der Waals energy). */
 #include <math.h>
 
 #include "peloid/colloid_kernels.h"
@@ -32,10 +43,17 @@ typedef struct {
     int32_t jov, jom, jdamp;
 } acc_t;
 
+/* One pair, i the owner: adds the force on i and i's torque (and, when E,
+ * the pair's whole energy) to a, its guard maxima to a's, and returns in
+ * tj the torque on j.  Returns the force on i in fo (zero beyond the
+ * cut-off).  T: term mask; E: energies wanted. */
 static inline __attribute__((always_inline)) void pair_eval(
     const pl_colloid_pair_params_t *p, const pl_colloid_view_t *v, size_t i, size_t j, double dx,
-    double dy, double dz, double r2, const unsigned T, acc_t *a)
+    double dy, double dz, double r2, const unsigned T, const int E, acc_t *a, double fo[3],
+    double tj[3])
 {
+    fo[0] = fo[1] = fo[2] = 0.0;
+    tj[0] = tj[1] = tj[2] = 0.0;
     double ri = v->rad[i], rj = v->rad[j], d = ri + rj;
     double rc = d + p->gap_cut;
     double wsig = 0.0, wrc = 0.0;
@@ -50,14 +68,13 @@ static inline __attribute__((always_inline)) void pair_eval(
     double ex = dx * inv, ey = dy * inv, ez = dz * inv;
     double h = r - d, delta = -h;
     double fr = 0.0, k2 = 0.0, zeta = 0.0;
-    double mred = v->mass[i] * v->mass[j] / (v->mass[i] + v->mass[j]);
     if (T & PL_CT_DLVO) {
         if (h < p->dlvo_hcut) {
             pl_pair_val_t s = pl_pair_dlvo(r, d, p->coul_C, p->kappa, p->hamaker, p->prim_hm,
                                            p->prim_h0, p->dlvo_shift);
             fr += s.f;
             k2 += s.k2;
-            a->e[PL_CE_DLVO] += 0.5 * s.u;
+            if (E) a->e[PL_CE_DLVO] += s.u;
         }
     }
     if (T & PL_CT_WCA) {
@@ -65,7 +82,7 @@ static inline __attribute__((always_inline)) void pair_eval(
             pl_pair_val_t s = pl_pair_wca(r, wsig, p->wca_eps, p->wca_n);
             fr += s.f;
             k2 += s.k2;
-            a->e[PL_CE_WCA] += 0.5 * s.u;
+            if (E) a->e[PL_CE_WCA] += s.u;
         }
     }
     if ((T & PL_CT_DEPL) && r < p->dep_rc) {
@@ -73,7 +90,7 @@ static inline __attribute__((always_inline)) void pair_eval(
         pl_depletion_table_eval(p->dep_u, p->dep_du, p->dep_inv_h, r, &u, &f, &kk);
         fr += f;
         k2 += kk;
-        a->e[PL_CE_DEPL] += 0.5 * u;
+        if (E) a->e[PL_CE_DEPL] += u;
     }
     double vrx = v->vx[i] - v->vx[j], vry = v->vy[i] - v->vy[j], vrz = v->vz[i] - v->vz[j];
     double vn = vrx * ex + vry * ey + vrz * ez;
@@ -81,7 +98,7 @@ static inline __attribute__((always_inline)) void pair_eval(
         pl_pair_val_t s = pl_pair_hertz(delta, p->hertz_K);
         fr += s.f;
         k2 += s.k2;
-        a->e[PL_CE_HERTZ] += 0.5 * s.u;
+        if (E) a->e[PL_CE_HERTZ] += s.u;
         double zd = p->hertz_beta * sqrt(delta); /* Hecht Eq. 6 */
         zeta += zd;
         fr -= zd * vn;
@@ -99,13 +116,17 @@ static inline __attribute__((always_inline)) void pair_eval(
             double sn = sx * ex + sy * ey + sz * ez;
             double gt = p->hertz_gamma_t;
             double ftx = -gt * (sx - sn * ex), fty = -gt * (sy - sn * ey), ftz = -gt * (sz - sn * ez);
-            a->f[0] += ftx;
-            a->f[1] += fty;
-            a->f[2] += ftz;
-            /* torque (-a_i e) x F_t */
-            a->t[0] -= ai * (ey * ftz - ez * fty);
-            a->t[1] -= ai * (ez * ftx - ex * ftz);
-            a->t[2] -= ai * (ex * fty - ey * ftx);
+            fo[0] = ftx;
+            fo[1] = fty;
+            fo[2] = ftz;
+            /* torques (-a_i e) x F_t on i and (a_j e) x (-F_t) on j */
+            double cx = ey * ftz - ez * fty, cy = ez * ftx - ex * ftz, cz = ex * fty - ey * ftx;
+            a->t[0] -= ai * cx;
+            a->t[1] -= ai * cy;
+            a->t[2] -= ai * cz;
+            tj[0] = -(aj * cx);
+            tj[1] = -(aj * cy);
+            tj[2] = -(aj * cz);
             zeta += gt;
         }
     }
@@ -114,95 +135,136 @@ static inline __attribute__((always_inline)) void pair_eval(
         zeta += zl;
         fr -= zl * vn; /* Hecht Eq. 4 */
     }
-    a->f[0] += fr * ex;
-    a->f[1] += fr * ey;
-    a->f[2] += fr * ez;
-    double ov = delta / d;
-    if (ov > a->ov) { a->ov = ov; a->jov = (int32_t)j; }
-    double om2 = k2 / mred;
-    if (om2 > a->om2) { a->om2 = om2; a->jom = (int32_t)j; }
-    double dr = zeta / mred;
-    if (dr > a->damp) { a->damp = dr; a->jdamp = (int32_t)j; }
+    fo[0] += fr * ex;
+    fo[1] += fr * ey;
+    fo[2] += fr * ez;
+    a->f[0] += fo[0];
+    a->f[1] += fo[1];
+    a->f[2] += fo[2];
+    if (delta > 0.0) { /* the maximum starts at 0: only overlaps can raise it */
+        double ov = delta / d;
+        if (ov > a->ov) { a->ov = ov; a->jov = (int32_t)j; }
+    }
+    /* k2 / m_red > max as k2 (m_i + m_j) > max m_i m_j: the division only
+     * when the maximum grows */
+    double msum = v->mass[i] + v->mass[j], mprod = v->mass[i] * v->mass[j];
+    if (k2 * msum > a->om2 * mprod) { a->om2 = k2 * msum / mprod; a->jom = (int32_t)j; }
+    if (zeta * msum > a->damp * mprod) { a->damp = zeta * msum / mprod; a->jdamp = (int32_t)j; }
 }
 
-static inline __attribute__((always_inline)) void pair_loop(const pl_colloid_pair_params_t *p,
-                                                            const pl_colloid_cells_t *c,
-                                                            const pl_colloid_view_t *v,
-                                                            const unsigned T)
+/* The pairs colloid i owns: pass 1 (E = 0: forces, torques, guard maxima,
+ * pair slots) or the energy pass (E = 1: only the owner's pair energies). */
+static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_pair_params_t *p,
+                                                              const pl_colloid_nlist_t *nl,
+                                                              const pl_colloid_view_t *v, size_t i,
+                                                              const unsigned T, const int E)
 {
-    const int *nc = c->nc;
-    int lo[3], hi[3];
-    for (int d = 0; d < 3; ++d) {
-        lo[d] = nc[d] == 1 ? 0 : -1;
-        hi[d] = nc[d] == 1 ? 0 : 1;
-    }
-    double L[3] = {p->box[0], p->box[1], p->box[2]};
-    double iL[3] = {1.0 / L[0], 1.0 / L[1], 1.0 / L[2]};
-    /* static schedule: equal blocks of particles; the cost per particle is
-     * nearly uniform at the densities of interest */
-#pragma omp parallel for schedule(static) if (v->n >= PL_COLLOID_OMP_MIN)
-    for (size_t i = 0; i < v->n; ++i) {
-        acc_t a = {{0}, {0}, {0}, 0.0, 0.0, 0.0, -1, -1, -1};
-        int32_t ci = c->cell[i];
-        int cx = ci % nc[0], cy = (ci / nc[0]) % nc[1], cz = ci / (nc[0] * nc[1]);
-        for (int oz = lo[2]; oz <= hi[2]; ++oz) {
-            int zz = cz + oz;
-            if (zz < 0 || zz >= nc[2]) {
-                if (!p->periodic[2]) continue;
-                zz = (zz + nc[2]) % nc[2];
-            }
-            for (int oy = lo[1]; oy <= hi[1]; ++oy) {
-                int yy = cy + oy;
-                if (yy < 0 || yy >= nc[1]) {
-                    if (!p->periodic[1]) continue;
-                    yy = (yy + nc[1]) % nc[1];
-                }
-                for (int ox = lo[0]; ox <= hi[0]; ++ox) {
-                    int xx = cx + ox;
-                    if (xx < 0 || xx >= nc[0]) {
-                        if (!p->periodic[0]) continue;
-                        xx = (xx + nc[0]) % nc[0];
-                    }
-                    int32_t cc = (zz * nc[1] + yy) * nc[0] + xx;
-                    for (int32_t k = c->start[cc]; k < c->start[cc + 1]; ++k) {
-                        size_t j = (size_t)c->list[k];
-                        if (j == i) continue;
-                        double dx = v->x[i] - v->x[j], dy = v->y[i] - v->y[j], dz = v->z[i] - v->z[j];
-                        if (p->periodic[0]) dx -= L[0] * rint(dx * iL[0]);
-                        if (p->periodic[1]) dy -= L[1] * rint(dy * iL[1]);
-                        if (p->periodic[2]) dz -= L[2] * rint(dz * iL[2]);
-                        pair_eval(p, v, i, j, dx, dy, dz, dx * dx + dy * dy + dz * dz, T, &a);
-                    }
-                }
+    acc_t a = {{0}, {0}, {0}, 0.0, 0.0, 0.0, -1, -1, -1};
+    const double L[3] = {p->box[0], p->box[1], p->box[2]};
+    const double iL[3] = {1.0 / L[0], 1.0 / L[1], 1.0 / L[2]};
+    const int per[3] = {p->periodic[0], p->periodic[1], p->periodic[2]};
+    const double xi = v->x[i], yi = v->y[i], zi = v->z[i];
+    for (int32_t s = nl->start[i]; s < nl->start[i + 1]; ++s) {
+        size_t j = (size_t)nl->nbr[s];
+        double dx = xi - v->x[j], dy = yi - v->y[j], dz = zi - v->z[j];
+        if (per[0]) dx -= L[0] * rint(dx * iL[0]);
+        if (per[1]) dy -= L[1] * rint(dy * iL[1]);
+        if (per[2]) dz -= L[2] * rint(dz * iL[2]);
+        double fo[3], tj[3];
+        pair_eval(p, v, i, j, dx, dy, dz, dx * dx + dy * dy + dz * dz, T, E, &a, fo, tj);
+        if (!E) {
+            size_t q = 3 * (size_t)nl->rpos[s];
+            nl->pf[q] = fo[0];
+            nl->pf[q + 1] = fo[1];
+            nl->pf[q + 2] = fo[2];
+            if ((T & PL_CT_HERTZ) && p->hertz_gamma_t > 0.0) {
+                nl->pt[q] = tj[0];
+                nl->pt[q + 1] = tj[1];
+                nl->pt[q + 2] = tj[2];
             }
         }
-        v->fx[i] = a.f[0];
-        v->fy[i] = a.f[1];
-        v->fz[i] = a.f[2];
-        v->tx[i] = a.t[0];
-        v->ty[i] = a.t[1];
-        v->tz[i] = a.t[2];
-        if (v->epot)
-            for (int e = 0; e < PL_CE_NTERMS; ++e) v->epot[(size_t)e * v->n + i] = a.e[e];
-        v->g_overlap[i] = a.ov;
-        v->g_omega2[i] = a.om2;
-        v->g_damp[i] = a.damp;
-        v->g_partner[i] = a.jov;
-        v->g_partner[v->n + i] = a.jom;
-        v->g_partner[2 * v->n + i] = a.jdamp;
+    }
+    if (E) {
+        v->epot[(size_t)PL_CE_DLVO * v->n + i] = a.e[PL_CE_DLVO];
+        v->epot[(size_t)PL_CE_HERTZ * v->n + i] = a.e[PL_CE_HERTZ];
+        v->epot[(size_t)PL_CE_WCA * v->n + i] = a.e[PL_CE_WCA];
+        v->epot[(size_t)PL_CE_DEPL * v->n + i] = a.e[PL_CE_DEPL];
+        return;
+    }
+    v->fx[i] = a.f[0];
+    v->fy[i] = a.f[1];
+    v->fz[i] = a.f[2];
+    v->tx[i] = a.t[0];
+    v->ty[i] = a.t[1];
+    v->tz[i] = a.t[2];
+    v->g_overlap[i] = a.ov;
+    v->g_omega2[i] = a.om2;
+    v->g_damp[i] = a.damp;
+    v->g_partner[i] = a.jov;
+    v->g_partner[v->n + i] = a.jom;
+    v->g_partner[2 * v->n + i] = a.jdamp;
+}
+
+/* One worksharing loop per term mask inside one parallel region: the switch
+ * runs in the outlined region, so each case calls owner_pairs with a literal
+ * mask and the compiler specialises it (a mask passed into the region as a
+ * variable would not be constant there).  Static schedule: equal blocks of
+ * owners; the owner rule spreads the pairs evenly over indices. */
+#define CASE(m)                                                                            \
+    case m:                                                                                \
+        _Pragma("omp for schedule(static)") for (size_t i = 0; i < v->n; ++i)              \
+            owner_pairs(p, nl, v, i, m, E);                                                \
+        break;
+#define ALL_CASES \
+    CASE(0) CASE(1) CASE(2) CASE(3) CASE(4) CASE(5) CASE(6) CASE(7) \
+    CASE(8) CASE(9) CASE(10) CASE(11) CASE(12) CASE(13) CASE(14) CASE(15) \
+    CASE(16) CASE(17) CASE(18) CASE(19) CASE(20) CASE(21) CASE(22) CASE(23) \
+    CASE(24) CASE(25) CASE(26) CASE(27) CASE(28) CASE(29) CASE(30) CASE(31)
+
+/* Pass 2: the pairs others own with i, in ascending owner index (Newton's
+ * third law: the force on i is minus the force on the owner). */
+static void reverse_add(const pl_colloid_nlist_t *nl, const pl_colloid_view_t *v, int torques)
+{
+#pragma omp parallel for schedule(static) if (v->n >= PL_COLLOID_OMP_MIN)
+    for (size_t i = 0; i < v->n; ++i) {
+        const size_t q0 = 3 * (size_t)nl->rstart[i], q1 = 3 * (size_t)nl->rstart[i + 1];
+        double fx = v->fx[i], fy = v->fy[i], fz = v->fz[i];
+        for (size_t q = q0; q < q1; q += 3) {
+            fx -= nl->pf[q];
+            fy -= nl->pf[q + 1];
+            fz -= nl->pf[q + 2];
+        }
+        v->fx[i] = fx;
+        v->fy[i] = fy;
+        v->fz[i] = fz;
+        if (!torques) continue;
+        double tx = v->tx[i], ty = v->ty[i], tz = v->tz[i];
+        for (size_t q = q0; q < q1; q += 3) {
+            tx += nl->pt[q];
+            ty += nl->pt[q + 1];
+            tz += nl->pt[q + 2];
+        }
+        v->tx[i] = tx;
+        v->ty[i] = ty;
+        v->tz[i] = tz;
     }
 }
 
-#define CASE(m) \
-    case m: pair_loop(p, cells, v, m); break;
-
-void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_cells_t *cells,
+void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
                             const pl_colloid_view_t *v)
 {
-    switch (p->terms & PL_CT_ALL) {
-        CASE(0) CASE(1) CASE(2) CASE(3) CASE(4) CASE(5) CASE(6) CASE(7)
-        CASE(8) CASE(9) CASE(10) CASE(11) CASE(12) CASE(13) CASE(14) CASE(15)
-        CASE(16) CASE(17) CASE(18) CASE(19) CASE(20) CASE(21) CASE(22) CASE(23)
-        CASE(24) CASE(25) CASE(26) CASE(27) CASE(28) CASE(29) CASE(30) CASE(31)
-    }
+    enum { E = 0 };
+    const unsigned mask = p->terms & PL_CT_ALL;
+#pragma omp parallel if (v->n >= PL_COLLOID_OMP_MIN)
+    switch (mask) { ALL_CASES }
+    reverse_add(nl, v, (p->terms & PL_CT_HERTZ) && p->hertz_gamma_t > 0.0);
+}
+
+void pl_colloid_pair_energies(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
+                              const pl_colloid_view_t *v)
+{
+    enum { E = 1 };
+    const unsigned mask = p->terms & PL_CT_ALL;
+#pragma omp parallel if (v->n >= PL_COLLOID_OMP_MIN)
+    switch (mask) { ALL_CASES }
 }

@@ -33,8 +33,19 @@ void pl_colloid_kick(size_t n, double h, const double *restrict mass,
 void pl_colloid_quat_rotate(double px, double py, double pz, double q[4])
 {
     /* Hecht Eq. 10: q <- exp(phi/2) q, phi = omega dt in the space frame */
-    double th = sqrt(px * px + py * py + pz * pz);
-    double c = cos(0.5 * th), s = th > 0.0 ? sin(0.5 * th) / th : 0.5;
+    double th2 = px * px + py * py + pz * pz;
+    double c, s;
+    if (th2 < 1e-4) {
+        /* |phi| < 0.01 (the usual MD step): Taylor series of cos(th/2) and
+         * sin(th/2)/th to x^4, x = th^2/4; the next terms are below 1e-22 */
+        double x = 0.25 * th2;
+        c = 1.0 - x * (1.0 / 2 - x * (1.0 / 24 - x * (1.0 / 720 - x * (1.0 / 40320))));
+        s = 0.5 * (1.0 - x * (1.0 / 6 - x * (1.0 / 120 - x * (1.0 / 5040 - x * (1.0 / 362880)))));
+    } else {
+        double th = sqrt(th2);
+        c = cos(0.5 * th);
+        s = sin(0.5 * th) / th;
+    }
     double a0 = c, a1 = s * px, a2 = s * py, a3 = s * pz;
     double r0 = a0 * q[0] - a1 * q[1] - a2 * q[2] - a3 * q[3];
     double r1 = a0 * q[1] + a1 * q[0] + a2 * q[3] - a3 * q[2];

@@ -22,6 +22,23 @@ static void *zalloc(size_t bytes)
 
 enum { NDBL = 27, NI32 = 6 };
 
+static pl_colloid_view_t colloid_view(pl_colloid_t *c)
+{
+    pl_colloid_view_t v = {.n = c->n, .x = c->x, .y = c->y, .z = c->z, .vx = c->vx, .vy = c->vy,
+                           .vz = c->vz, .wx = c->wx, .wy = c->wy, .wz = c->wz, .rad = c->rad,
+                           .mass = c->mass, .fx = c->fx, .fy = c->fy, .fz = c->fz, .tx = c->tx,
+                           .ty = c->ty, .tz = c->tz, .epot = c->epot, .g_overlap = c->g_overlap,
+                           .g_omega2 = c->g_omega2, .g_damp = c->g_damp, .g_partner = c->g_partner};
+    return v;
+}
+
+static void nlist_free(pl_colloid_nlist_t *nl)
+{
+    void *a[] = {nl->start, nl->nbr, nl->rstart, nl->rpos, nl->pf, nl->pt, nl->x0, nl->y0, nl->z0};
+    for (size_t k = 0; k < sizeof a / sizeof *a; ++k) free(a[k]);
+    memset(nl, 0, sizeof *nl);
+}
+
 int pl_colloid_alloc(size_t n, pl_colloid_t **out, pl_err_t *err)
 {
     pl_colloid_t *c = calloc(1, sizeof *c);
@@ -44,6 +61,14 @@ int pl_colloid_alloc(size_t n, pl_colloid_t **out, pl_err_t *err)
     c->cells.list = zalloc(n * sizeof(int32_t));
     c->cells.cell = zalloc(n * sizeof(int32_t));
     fail |= !c->ix || !c->iy || !c->iz || !c->g_partner || !c->cells.list || !c->cells.cell;
+    pl_colloid_nlist_t *nl = &c->nlist;
+    nl->n = n;
+    nl->start = zalloc((n + 1) * sizeof(int32_t));
+    nl->rstart = zalloc((n + 1) * sizeof(int32_t));
+    nl->x0 = zalloc(n * sizeof(double));
+    nl->y0 = zalloc(n * sizeof(double));
+    nl->z0 = zalloc(n * sizeof(double));
+    fail |= !nl->start || !nl->rstart || !nl->x0 || !nl->y0 || !nl->z0;
     if (fail) {
         pl_colloid_free(c);
         return pl_err_set(err, PL_ERR_NOMEM, "colloids: out of memory for %zu colloids", n);
@@ -68,19 +93,76 @@ void pl_colloid_free(pl_colloid_t *c)
     free(c->cells.list);
     free(c->cells.cell);
     free(c->cells.start);
+    nlist_free(&c->nlist);
     free(c->dep_table);
     free(c);
 }
 
-void pl_colloid_forces(pl_colloid_t *c)
+/* Slot arrays of the neighbour list for at least `need` pairs (grown by a
+ * quarter beyond the need, so rebuilds rarely allocate). */
+static int nlist_reserve(pl_colloid_nlist_t *nl, size_t need, pl_err_t *err)
 {
+    if (need <= nl->cap) return 0;
+    size_t cap = need + need / 4 + 64;
+    free(nl->nbr);
+    free(nl->rpos);
+    free(nl->pf);
+    free(nl->pt);
+    nl->nbr = zalloc(cap * sizeof(int32_t));
+    nl->rpos = zalloc(cap * sizeof(int32_t));
+    nl->pf = zalloc(3 * cap * sizeof(double));
+    nl->pt = zalloc(3 * cap * sizeof(double));
+    int fail = !nl->nbr || !nl->rpos || !nl->pf || !nl->pt;
+    nl->cap = fail ? 0 : cap;
+    if (fail)
+        return pl_err_set(err, PL_ERR_NOMEM, "colloids: out of memory for a neighbour list of %zu pairs",
+                          need);
+    return 0;
+}
+
+/* Cells and neighbour list for the present positions. */
+static int nlist_build(pl_colloid_t *c, pl_err_t *err)
+{
+    pl_colloid_nlist_t *nl = &c->nlist;
     pl_colloid_cells_build(&c->cells, c->n, c->x, c->y, c->z);
-    pl_colloid_view_t v = {c->n, c->x, c->y, c->z, c->vx, c->vy, c->vz, c->wx, c->wy, c->wz,
-                           c->rad, c->mass, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz, c->epot,
-                           c->g_overlap, c->g_omega2, c->g_damp, c->g_partner};
-    pl_colloid_pair_forces(&c->pair, &c->cells, &v);
+    pl_colloid_nlist_count(nl, &c->cells, c->box, c->periodic, c->x, c->y, c->z);
+    for (size_t i = 0; i < c->n; ++i) nl->start[i + 1] += nl->start[i];
+    if (nlist_reserve(nl, (size_t)nl->start[c->n], err)) return err->code;
+    pl_colloid_nlist_fill(nl, &c->cells, c->box, c->periodic, c->x, c->y, c->z);
+    return 0;
+}
+
+int pl_colloid_neighbors_init(pl_colloid_t *c, double rc, double skin_fraction, pl_err_t *err)
+{
+    double skin = skin_fraction * rc;
+    for (int k = 0; k < 3; ++k)
+        if (c->periodic[k]) skin = fmin(skin, fmax(0.0, 0.5 * c->box[k] - rc));
+    c->nlist.skin = skin;
+    c->nlist.rlist = rc + skin;
+    c->nlist.builds = 0; /* the next force evaluation builds the list */
+    pl_colloid_cells_dims(c->box, c->periodic, c->nlist.rlist, c->cells.nc);
+    c->cells.ncells = (size_t)c->cells.nc[0] * (size_t)c->cells.nc[1] * (size_t)c->cells.nc[2];
+    for (int k = 0; k < 3; ++k) c->cells.inv_cl[k] = c->cells.nc[k] / c->box[k];
+    free(c->cells.start);
+    c->cells.start = zalloc((c->cells.ncells + 1) * sizeof(int32_t));
+    if (!c->cells.start) return pl_err_set(err, PL_ERR_NOMEM, "colloids: out of memory (cells)");
+    return 0;
+}
+
+int pl_colloid_forces(pl_colloid_t *c, pl_err_t *err)
+{
+    pl_colloid_nlist_t *nl = &c->nlist;
+    double half = 0.5 * nl->skin;
+    /* rebuild when a colloid may have moved a pair from beyond the list
+     * radius to inside the cut-off (a function of the state alone) */
+    if (nl->builds == 0 ||
+        !(pl_colloid_nlist_max_disp2(nl, c->box, c->periodic, c->x, c->y, c->z) <= half * half))
+        if (nlist_build(c, err)) return err->code;
+    pl_colloid_view_t v = colloid_view(c);
+    pl_colloid_pair_forces(&c->pair, nl, &v);
     for (size_t i = 0; i < c->n; ++i) c->zu[i] = c->z[i] + (double)c->iz[i] * c->box[2];
     pl_colloid_ext_forces(&c->ext, c->n, c->x, c->y, c->z, c->zu, c->rad, c->mass, c->fx, c->fy, c->fz, c->epot);
+    return 0;
 }
 
 /* sigma_cc and the spurious depletion it leaves (PL Sec. III.C.1); with
@@ -145,19 +227,15 @@ int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
     unsigned t = c->pair.terms;
     c->nve = c->integrator == PL_CINT_VERLET && !(t & PL_CT_LUB) &&
              !((t & PL_CT_HERTZ) && (cs->hertz.beta > 0.0 || cs->hertz.gamma_t > 0.0));
-    /* cells sized by the largest pair cut-off */
+    /* neighbour list radius: the largest pair cut-off plus the skin (the
+     * skin capped so the list keeps to the minimum image); cells sized by it */
     double rmax = 0.0;
     for (size_t i = 0; i < c->n; ++i) rmax = fmax(rmax, c->rad[i]);
     double rc = 2.0 * rmax + c->pair.gap_cut;
     if (t & PL_CT_WCA) rc = fmax(rc, (c->pair.wca_sigma > 0 ? c->pair.wca_sigma : 2.0 * rmax) * c->pair.wca_rfac);
     if (t & PL_CT_DEPL) rc = fmax(rc, c->pair.dep_rc);
-    pl_colloid_cells_dims(c->box, c->periodic, rc, c->cells.nc);
-    c->cells.ncells = (size_t)c->cells.nc[0] * (size_t)c->cells.nc[1] * (size_t)c->cells.nc[2];
-    for (int k = 0; k < 3; ++k) c->cells.inv_cl[k] = c->cells.nc[k] / c->box[k];
-    free(c->cells.start);
-    c->cells.start = zalloc((c->cells.ncells + 1) * sizeof(int32_t));
-    if (!c->cells.start) return pl_err_set(err, PL_ERR_NOMEM, "colloids: out of memory (cells)");
-    pl_colloid_forces(c);
+    if (pl_colloid_neighbors_init(c, rc, cs->neighbor_skin, err)) return err->code;
+    if (pl_colloid_forces(c, err)) return err->code;
     pl_colloid_energy_t e;
     pl_colloid_energy(c, &e);
     c->e0 = e.total;
@@ -343,9 +421,13 @@ int pl_colloid_create(const pl_scene_t *scene, pl_colloid_t **out, pl_err_t *err
     return 0;
 }
 
-void pl_colloid_energy(const pl_colloid_t *c, pl_colloid_energy_t *e)
+void pl_colloid_energy(pl_colloid_t *c, pl_colloid_energy_t *e)
 {
     memset(e, 0, sizeof *e);
+    /* the pair energies of the positions the last force evaluation saw (its
+     * list is valid for them) */
+    pl_colloid_view_t v = colloid_view(c);
+    pl_colloid_pair_energies(&c->pair, &c->nlist, &v);
     for (size_t i = 0; i < c->n; ++i) {
         e->kin_trans += 0.5 * c->mass[i] * (c->vx[i] * c->vx[i] + c->vy[i] * c->vy[i] + c->vz[i] * c->vz[i]);
         e->kin_rot += 0.5 * c->inertia[i] * (c->wx[i] * c->wx[i] + c->wy[i] * c->wy[i] + c->wz[i] * c->wz[i]);

@@ -15,7 +15,7 @@ int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err)
                          c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3);
         /* velocity-dependent forces (damping, friction, lubrication) see the
          * half-step velocities */
-        pl_colloid_forces(c);
+        if (pl_colloid_forces(c, err)) return err->code;
         pl_colloid_kick(n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
                         c->vx, c->vy, c->vz, c->wx, c->wy, c->wz);
     } else {
@@ -23,7 +23,7 @@ int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err)
         pl_colloid_bd_step(&bp, n, c->box, c->periodic, c->rad, c->x, c->y, c->z, c->ix, c->iy,
                            c->iz, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz, c->vx, c->vy, c->vz,
                            c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3);
-        pl_colloid_forces(c);
+        if (pl_colloid_forces(c, err)) return err->code;
     }
     c->md_step++;
     int check_e = c->nve && c->max_energy_drift > 0.0 && c->md_step % c->guard_interval == 0;

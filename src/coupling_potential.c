@@ -119,9 +119,9 @@ int pl_coupling_stage_select(pl_sim_t *sim, pl_err_t *err)
 
 /* Fluid forces on the selected particles and the colloids (the colloids'
  * own forces recomputed first). */
-static void forces(pl_coupling_t *cp, pl_colloid_t *c)
+static int forces(pl_coupling_t *cp, pl_colloid_t *c, pl_err_t *err)
 {
-    if (!cp->pinned) pl_colloid_forces(c);
+    if (!cp->pinned && pl_colloid_forces(c, err)) return err->code;
     memset(cp->cf, 0, 3 * c->n * sizeof(double));
     pl_coupling_colloids_t v = big_view(cp, c);
     size_t nn = cp->nnear;
@@ -129,12 +129,13 @@ static void forces(pl_coupling_t *cp, pl_colloid_t *c)
                                          NB(cp, 7), NB(cp, 8), &v, cp->lk_start, cp->lk_list,
                                          cp->cf, cp->cf + c->n, cp->cf + 2 * c->n, cp->nthreads,
                                          cp->wca_partial);
-    if (cp->pinned) return;
+    if (cp->pinned) return 0;
     for (size_t k = 0; k < c->n; ++k) {
         c->fx[k] += cp->cf[k];
         c->fy[k] += cp->cf[c->n + k];
         c->fz[k] += cp->cf[2 * c->n + k];
     }
+    return 0;
 }
 
 /* v += h (F + g) for the selected particles (m_f = 1). */
@@ -224,7 +225,7 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, pl_err_t *err)
         }
     }
     const double dtm = c->dt, h = 0.5 * dtm;
-    forces(cp, c);
+    if (forces(cp, c, err)) return err->code;
     for (int s = 0; s < c->substeps; ++s) { /* PL Eqs. 18-19 */
         if (!cp->pinned) {
             pl_colloid_kick(c->n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
@@ -237,7 +238,7 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, pl_err_t *err)
         if (cp->pinned) /* impulse of the fluid force over this MD step (trapezoid) */
             for (size_t k = 0; k < c->n; ++k)
                 for (int d = 0; d < 3; ++d) cp->impulse[d] += h * cp->cf[(size_t)d * c->n + k];
-        forces(cp, c);
+        if (forces(cp, c, err)) return err->code;
         if (cp->pinned)
             for (size_t k = 0; k < c->n; ++k)
                 for (int d = 0; d < 3; ++d) cp->impulse[d] += h * cp->cf[(size_t)d * c->n + k];

@@ -57,6 +57,10 @@ static const pl_key_t colloid_keys[] = {
      "kT_ref per colloid", "guard: abs(E - E_0) / N allowed in undamped NVE runs (0: off)"},
     {"guard_interval", PL_KEY_INT, OFF(guard_interval), 1, 1e12, 0, NULL, 100, NULL,
      "MD steps", "interval of the energy-drift check (the other guards act every MD step)"},
+    {"neighbor_skin", PL_KEY_REAL, OFF(neighbor_skin), 0, 1, 0, NULL, 0.1, NULL,
+     "-", "skin of the colloid Verlet neighbour lists as a fraction of the largest pair "
+          "cut-off: pairs closer than (1 + skin) r_c are listed and the lists are rebuilt "
+          "when a colloid has moved by half the skin (results do not depend on it)"},
     {"trajectory_interval", PL_KEY_INT, OFF(trajectory_interval), 0, 1e15, 0, NULL, 0, NULL,
      "collision steps", "write colloids.h5 (H5MD) every N collision steps (0: off)"},
 };

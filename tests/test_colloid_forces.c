@@ -1,11 +1,13 @@
 /* Colloid pair terms: force = -dU/dr by central finite differences, the
  * curvature U'' likewise, closed-form values at hand-computed points, the
  * DLVO secondary minimum of two Hecht Fig. 1 parameter sets, the parabolic
- * primary minimum, the cut-off, and the linked-cell kernel against a direct
- * O(N^2) pair sum. */
+ * primary minimum, the cut-off, and the neighbour-list kernel against a
+ * direct O(N^2) pair sum (fresh, while colloids move, with another skin). */
 #include <criterion/criterion.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "peloid/colloid.h"
 #include "peloid/colloid_pair.h"
@@ -132,11 +134,41 @@ Test(colloid_forces, dlvo_fig1_secondary_minimum)
     }
 }
 
-/* The linked-cell kernel against a direct O(N^2) sum of the same pair terms
- * (conservative terms; relative 1e-12: only the summation order differs). */
-Test(colloid_forces, kernel_matches_direct_sum)
+/* The conservative pair forces of every colloid against a direct O(N^2) sum
+ * over all pairs with the minimum image (DLVO + Hertz + WCA with sigma =
+ * R_i + R_j, as set by the tests below); relative 1e-12: only the summation
+ * order differs.  Returns the number of pairs inside their cut-off. */
+static long direct_sum_check(const pl_colloid_t *c, const char *what)
 {
-    size_t n = 300;
+    const pl_colloid_pair_params_t *p = &c->pair;
+    long inside = 0;
+    for (size_t i = 0; i < c->n; ++i) {
+        double f[3] = {0, 0, 0};
+        for (size_t j = 0; j < c->n; ++j) {
+            if (j == i) continue;
+            double dd[3] = {c->x[i] - c->x[j], c->y[i] - c->y[j], c->z[i] - c->z[j]};
+            double r2 = 0;
+            for (int k = 0; k < 3; ++k) dd[k] -= c->box[k] * rint(dd[k] / c->box[k]), r2 += dd[k] * dd[k];
+            double r = sqrt(r2), d = c->rad[i] + c->rad[j], fr = 0;
+            if (r - d < p->dlvo_hcut) {
+                fr += pl_pair_dlvo(r, d, p->coul_C, p->kappa, p->hamaker, p->prim_hm, p->prim_h0, p->dlvo_shift).f;
+                inside += j > i;
+            }
+            if (r < d) fr += pl_pair_hertz(d - r, p->hertz_K).f;
+            if (r < d * p->wca_rfac) fr += pl_pair_wca(r, d, p->wca_eps, p->wca_n).f;
+            for (int k = 0; k < 3; ++k) f[k] += fr * dd[k] / r;
+        }
+        double got[3] = {c->fx[i], c->fy[i], c->fz[i]};
+        for (int k = 0; k < 3; ++k)
+            if (!(fabs(got[k] - f[k]) <= 1e-12 * (1 + fabs(f[k]))))
+                cr_assert_fail("%s: particle %zu axis %d: %.17g vs %.17g", what, i, k, got[k], f[k]);
+    }
+    return inside;
+}
+
+/* 300 polydisperse colloids with DLVO + Hertz + WCA in a periodic 40^3 box. */
+static pl_colloid_t *random_colloids(size_t n, double skin_fraction)
+{
     pl_colloid_t *c;
     pl_err_t err;
     cr_assert_eq(pl_colloid_alloc(n, &c, &err), 0);
@@ -155,31 +187,66 @@ Test(colloid_forces, kernel_matches_direct_sum)
         c->z[i] = 40.0 * rand() / RAND_MAX;
         c->rad[i] = 1.8 + 0.4 * rand() / RAND_MAX, c->mass[i] = 100, c->inertia[i] = 100;
     }
-    int nc[3];
-    pl_colloid_cells_dims(c->box, c->periodic, 4.4 + p->gap_cut, nc);
-    cr_assert(nc[0] >= 3, "test wants real cells, got %d", nc[0]);
-    for (int k = 0; k < 3; ++k) c->cells.nc[k] = nc[k], c->cells.inv_cl[k] = nc[k] / 40.0;
-    c->cells.ncells = (size_t)(nc[0] * nc[1] * nc[2]);
-    c->cells.start = calloc(c->cells.ncells + 1, sizeof(int32_t));
-    pl_colloid_forces(c);
-    for (size_t i = 0; i < n; ++i) {
-        double f[3] = {0, 0, 0};
-        for (size_t j = 0; j < n; ++j) {
-            if (j == i) continue;
-            double dd[3] = {c->x[i] - c->x[j], c->y[i] - c->y[j], c->z[i] - c->z[j]};
-            double r2 = 0;
-            for (int k = 0; k < 3; ++k) dd[k] -= 40.0 * rint(dd[k] / 40.0), r2 += dd[k] * dd[k];
-            double r = sqrt(r2), d = c->rad[i] + c->rad[j], fr = 0;
-            if (r - d < p->dlvo_hcut)
-                fr += pl_pair_dlvo(r, d, p->coul_C, p->kappa, p->hamaker, p->prim_hm, p->prim_h0, p->dlvo_shift).f;
-            if (r < d) fr += pl_pair_hertz(d - r, 1e3).f;
-            if (r < d * p->wca_rfac) fr += pl_pair_wca(r, d, 2.5, 24).f;
-            for (int k = 0; k < 3; ++k) f[k] += fr * dd[k] / r;
-        }
-        double got[3] = {c->fx[i], c->fy[i], c->fz[i]};
-        for (int k = 0; k < 3; ++k)
-            cr_expect(fabs(got[k] - f[k]) <= 1e-12 * (1 + fabs(f[k])), "particle %zu axis %d: %.17g vs %.17g",
-                      i, k, got[k], f[k]);
-    }
+    cr_assert_eq(pl_colloid_neighbors_init(c, 4.4 + p->gap_cut, skin_fraction, &err), 0);
+    cr_assert(c->nlist.skin == skin_fraction * (4.4 + p->gap_cut), "skin not capped");
+    return c;
+}
+
+/* The neighbour-list kernel against the direct sum on a fresh list. */
+Test(colloid_forces, kernel_matches_direct_sum)
+{
+    pl_colloid_t *c = random_colloids(300, 0.1);
+    pl_err_t err;
+    cr_assert(c->cells.nc[0] >= 3, "test wants real cells, got %d", c->cells.nc[0]);
+    cr_assert_eq(pl_colloid_forces(c, &err), 0);
+    cr_expect(direct_sum_check(c, "fresh list") > 100, "too few pairs for a test");
     pl_colloid_free(c);
+}
+
+/* The list stays right while colloids move: fast random displacements
+ * (uniform in +-0.15 a0 per axis and step; the half-skin is ~0.37 a0, used
+ * up by some colloid every few steps)
+ * with a force evaluation after each, against the direct sum every step;
+ * several rebuilds, and steps where the old list is kept. */
+Test(colloid_forces, moving_colloids_keep_a_valid_list)
+{
+    pl_colloid_t *c = random_colloids(300, 0.1);
+    pl_err_t err;
+    cr_assert_eq(pl_colloid_forces(c, &err), 0);
+    long long b0 = c->nlist.builds;
+    for (int step = 0; step < 40; ++step) {
+        for (size_t i = 0; i < c->n; ++i) {
+            double *x[3] = {&c->x[i], &c->y[i], &c->z[i]};
+            for (int k = 0; k < 3; ++k) {
+                *x[k] += 0.3 * ((double)rand() / RAND_MAX - 0.5);
+                *x[k] -= 40.0 * floor(*x[k] / 40.0);
+            }
+        }
+        cr_assert_eq(pl_colloid_forces(c, &err), 0);
+        char what[32];
+        snprintf(what, sizeof what, "step %d", step);
+        direct_sum_check(c, what);
+    }
+    long long builds = c->nlist.builds - b0;
+    cr_expect(builds >= 3 && builds < 40, "%lld rebuilds in 40 steps: the test should see both", builds);
+    pl_colloid_free(c);
+}
+
+/* A list with a larger skin (more listed pairs; here a single cell, so the
+ * other scan path) gives the same forces bit for bit: the kernel's sums do
+ * not depend on the list. */
+Test(colloid_forces, forces_do_not_depend_on_the_list)
+{
+    pl_colloid_t *a = random_colloids(300, 0.1), *b = random_colloids(300, 0.3);
+    pl_err_t err;
+    cr_assert_eq(pl_colloid_forces(a, &err), 0);
+    cr_assert_eq(pl_colloid_forces(b, &err), 0);
+    cr_assert(b->nlist.npairs > a->nlist.npairs, "the wider list lists more pairs");
+    cr_assert(a->cells.nc[0] >= 3 && b->cells.nc[0] == 1, "cells %d / %d", a->cells.nc[0], b->cells.nc[0]);
+    size_t n = a->n;
+    cr_expect_eq(memcmp(a->fx, b->fx, n * sizeof *a->fx), 0);
+    cr_expect_eq(memcmp(a->fy, b->fy, n * sizeof *a->fy), 0);
+    cr_expect_eq(memcmp(a->fz, b->fz, n * sizeof *a->fz), 0);
+    pl_colloid_free(a);
+    pl_colloid_free(b);
 }

@@ -36,7 +36,7 @@ static pl_colloid_t *head_on(const char *body, double v, double gap)
         c->x[i] = 20.0 + (i ? 0.5 : -0.5) * (d + gap), c->y[i] = c->z[i] = 20.0;
         c->vx[i] = i ? -v : v, c->vy[i] = c->vz[i] = c->wx[i] = c->wy[i] = c->wz[i] = 0;
     }
-    pl_colloid_forces(c);
+    pl_colloid_forces(c, &err);
     pl_colloid_energy_t e;
     pl_colloid_energy(c, &e);
     c->e0 = e.total; /* reference of the energy-drift guard for the new state */
@@ -138,7 +138,7 @@ Test(colloid_guards, nan_and_overlap)
     cr_expect(strstr(err.msg, "guard nan: MD step 1: colloid 1") != NULL, "%s", err.msg);
     c->vy[1] = 0, c->y[1] = 20, c->x[1] = c->x[0] + 0.8 * (c->rad[0] + c->rad[1]);
     c->vx[0] = c->vx[1] = 0;
-    pl_colloid_forces(c);
+    pl_colloid_forces(c, &err);
     cr_expect_eq(pl_colloid_guard(c, 0, &err), PL_ERR_GUARD);
     cr_expect(strstr(err.msg, "guard overlap") && strstr(err.msg, "0.2 of R_i+R_j") &&
                   strstr(err.msg, "colloids.max_overlap = 0.1"), "%s", err.msg);

@@ -67,11 +67,18 @@ static void assert_same(const pl_sim_t *sa, const pl_sim_t *sb, const char *what
     SAME(rad, n, what); SAME(mass, n, what); SAME(inertia, n, what);
     SAME(fx, n, what); SAME(fy, n, what); SAME(fz, n, what);
     SAME(tx, n, what); SAME(ty, n, what); SAME(tz, n, what);
-    SAME(zu, n, what); SAME(epot, (size_t)PL_CE_NTERMS * n, what);
+    SAME(zu, n, what);
+    /* epot: the rows the force evaluation writes (the pair rows are filled
+     * on demand by pl_colloid_energy, whose result e0 is compared above) */
+    for (int k = 0; k < PL_CE_NTERMS; ++k)
+        if (k == PL_CE_WALL || k == PL_CE_GRAVITY)
+            cr_assert_eq(memcmp(a->epot + (size_t)k * n, b->epot + (size_t)k * n, n * sizeof *a->epot), 0,
+                         "%s: colloid epot row %d differs", what, k);
     SAME(g_overlap, n, what); SAME(g_omega2, n, what); SAME(g_damp, n, what);
     SAME(g_partner, 3 * n, what);
-    SAME(cells.list, n, what); SAME(cells.cell, n, what);
-    SAME(cells.start, a->cells.ncells + 1, what);
+    /* the linked cells and the neighbour list are not compared: a restart
+     * rebuilds them from the restored positions, and the forces above (every
+     * one of them compared) do not depend on when the list was built */
 }
 
 /* The scenes really move every piece of state (else the test proves little);

@@ -60,6 +60,7 @@ typedef struct pl_colloid {
     double *g_overlap, *g_omega2, *g_damp;
     int32_t *g_partner;
     pl_colloid_cells_t cells;
+    pl_colloid_nlist_t nlist; /* rebuilt when the skin is used up */
     /* parameters derived from the scene */
     pl_colloid_pair_params_t pair;
     pl_colloid_ext_params_t ext;
@@ -108,8 +109,15 @@ void pl_colloid_free(pl_colloid_t *c);
 int pl_colloid_alloc(size_t n, pl_colloid_t **out, pl_err_t *err);
 /* Derives parameters from the scene, builds cells, computes the forces. */
 int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
-/* Recomputes cells, pair and external forces (and the per-particle energies). */
-void pl_colloid_forces(pl_colloid_t *c);
+/* Linked cells and neighbour list for pair cut-off rc (a0) with a skin of
+ * skin_fraction rc (capped so that rc + skin <= L/2 on periodic axes); the
+ * next pl_colloid_forces builds the list.  Called by pl_colloid_setup. */
+int pl_colloid_neighbors_init(pl_colloid_t *c, double rc, double skin_fraction, pl_err_t *err);
+/* Pair and external forces and torques of the present positions (the
+ * neighbour list rebuilt first when a colloid has moved by more than half
+ * the skin since its build); the external-force energy rows of epot.
+ * PL_ERR_NOMEM when a grown neighbour list cannot be allocated. */
+int pl_colloid_forces(pl_colloid_t *c, pl_err_t *err);
 
 /* One MD step (velocity Verlet + quaternions, or BD), then the guards. */
 int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err);
@@ -120,8 +128,10 @@ int pl_colloid_advance(pl_colloid_t *c, long long collision_step, pl_err_t *err)
  * (src/colloid_guard.c).  PL_ERR_GUARD with the message on failure. */
 int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err);
 
-/* Kinetic + potential energy terms of the current state (fixed-order sums). */
-void pl_colloid_energy(const pl_colloid_t *c, pl_colloid_energy_t *e);
+/* Kinetic + potential energy terms of the current state (fixed-order sums);
+ * evaluates the pair energies (into epot) for the positions of the last
+ * force evaluation. */
+void pl_colloid_energy(pl_colloid_t *c, pl_colloid_energy_t *e);
 /* Total linear momentum and angular momentum about the origin (unwrapped). */
 void pl_colloid_momentum(const pl_colloid_t *c, double p[3], double l[3]);
 

@@ -49,7 +49,7 @@ typedef struct {
     size_t n;
     const double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *rad, *mass;
     double *fx, *fy, *fz, *tx, *ty, *tz;
-    double *epot;         /* PL_CE_NTERMS x n per-particle energies, or NULL */
+    double *epot;         /* PL_CE_NTERMS x n per-particle energies */
     double *g_overlap;    /* n: largest overlap (R_i+R_j-r)/(R_i+R_j)        */
     double *g_omega2;     /* n: largest positive curvature / reduced mass    */
     double *g_damp;       /* n: largest dissipative rate zeta / reduced mass */
@@ -73,10 +73,65 @@ void pl_colloid_cells_dims(const double box[3], const int periodic[3], double rc
 void pl_colloid_cells_build(pl_colloid_cells_t *cells, size_t n, const double *x, const double *y,
                             const double *z);
 
-/* Pair forces, torques, energies and guard quantities; overwrites f, t.
- * `terms` of p must be a subset of PL_CT_ALL. */
-void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_cells_t *cells,
+/* Verlet neighbour list (half list: each pair once) built from the linked
+ * cells, kernels/colloid_neighbors.c.  Pair (i, j), i < j, belongs to i when
+ * i + j is odd and to j when it is even, so every colloid owns about half of
+ * its pairs whatever its index (a plain i < j rule would give the first
+ * thread three quarters of the work).  A colloid's own partners are listed in
+ * ascending index; the reverse entries of a colloid are the pairs other
+ * colloids own with it, in ascending owner index: the force kernel writes a
+ * pair's result into its partner's reverse entry (rpos) and each colloid then
+ * reads its own entries contiguously. */
+typedef struct {
+    size_t n, cap;       /* colloids; capacity of the slot arrays */
+    size_t npairs;       /* listed pairs (slots in use) */
+    double rlist;        /* list radius: largest pair cut-off + skin */
+    double skin;
+    int32_t *start;      /* n + 1: the own slots of i are start[i] .. start[i+1]-1 */
+    int32_t *nbr;        /* cap: partner of each slot */
+    int32_t *rstart;     /* n + 1: the reverse entries of i are rstart[i] .. rstart[i+1]-1 */
+    int32_t *rpos;       /* cap: reverse entry of each slot */
+    double *pf;          /* 3 cap: per reverse entry, the force on the owner from i */
+    double *pt;          /* 3 cap: per reverse entry, the torque on i (tangential friction) */
+    double *x0, *y0, *z0;    /* n: positions at the last build */
+    long long builds;        /* list builds so far (diagnostic, not state) */
+} pl_colloid_nlist_t;
+
+/* Pair (i, j) is owned by i (see pl_colloid_nlist_t). */
+static inline int pl_colloid_pair_owner(size_t i, size_t j)
+{
+    return ((i + j) & 1u) ? i < j : i > j;
+}
+
+/* Largest squared displacement since the last build, with the minimum image
+ * on periodic axes (a max: exact and the same for any thread count). */
+double pl_colloid_nlist_max_disp2(const pl_colloid_nlist_t *nl, const double box[3],
+                                  const int periodic[3], const double *x, const double *y,
+                                  const double *z);
+/* Counts the own partners of each colloid within rlist into start[1..n] (the
+ * counts, not yet summed); the cells must be built for these positions. */
+void pl_colloid_nlist_count(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
+                            const double box[3], const int periodic[3], const double *x,
+                            const double *y, const double *z);
+/* Fills the list after pl_colloid_nlist_count (start summed in place, the
+ * slot arrays holding at least start[n] entries): partners, reverse slots,
+ * reference positions. */
+void pl_colloid_nlist_fill(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
+                           const double box[3], const int periodic[3], const double *x,
+                           const double *y, const double *z);
+
+/* Pair forces, torques and guard quantities over the neighbour list;
+ * overwrites f, t.  `terms` of p must be a subset of PL_CT_ALL.  The guard
+ * slots of i hold the maxima over the pairs i owns, so the maximum over all
+ * colloids is the maximum over all pairs.  v->epot is not touched. */
+void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
                             const pl_colloid_view_t *v);
+
+/* Pair energies of the present positions: rows PL_CE_DLVO, _HERTZ, _WCA,
+ * _DEPL of v->epot get, for each colloid, the energies of the pairs it owns
+ * (other rows and the forces are not touched). */
+void pl_colloid_pair_energies(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
+                              const pl_colloid_view_t *v);
 
 typedef struct {
     double g[3];      /* acceleration (gravity minus buoyancy) */

@@ -26,21 +26,23 @@ typedef struct {
  * in kT / a0 (src/colloid_params.c converts it). */
 static inline pl_pair_val_t pl_pair_coulomb(double r, double d, double C, double kappa)
 {
-    double u = C * d * d / r * exp(-kappa * (r - d));
-    double g = 1.0 / r + kappa;
-    pl_pair_val_t v = {u, u * g, u * (g * g + 1.0 / (r * r))};
+    double ir = 1.0 / r;
+    double u = C * d * d * ir * exp(-kappa * (r - d));
+    double g = ir + kappa;
+    pl_pair_val_t v = {u, u * g, u * (g * g + ir * ir)};
     return v;
 }
 
-/* Hecht Eq. 2 (r > d); F = -A d^6 / (6 r^3 (r^2-d^2)^2). */
+/* Hecht Eq. 2 (r > d); F = -A d^6 / (6 r^3 (r^2-d^2)^2).  Two reciprocals
+ * (1/r, shared with the caller's, and 1/(r^2-d^2)) instead of five divisions. */
 static inline pl_pair_val_t pl_pair_vdw(double r, double d, double A)
 {
     double d2 = d * d, r2 = r * r, s = r2 - d2;
-    double u = -A / 12.0 * (d2 / s + d2 / r2 + 2.0 * log(s / r2));
+    double ir = 1.0 / r, ir2 = ir * ir, is = 1.0 / s;
+    double u = -A / 12.0 * (d2 * is + d2 * ir2 + 2.0 * log(s * ir2));
     double c = A * d2 * d2 * d2 / 6.0;
-    double dudr = c / (r2 * r * s * s);
-    double k2 = c * (-3.0 / (r2 * r2 * s * s) - 4.0 / (r2 * s * s * s));
-    pl_pair_val_t v = {u, -dudr, k2};
+    double q = c * ir2 * is * is;
+    pl_pair_val_t v = {u, -(q * ir), -q * (3.0 * ir2 + 4.0 * is)};
     return v;
 }
 

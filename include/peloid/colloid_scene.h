@@ -42,6 +42,7 @@ typedef struct {
     double wall_epsilon, wall_n;
     double max_overlap, min_contact_steps, max_energy_drift;
     long long guard_interval;     /* MD steps between energy-drift checks */
+    double neighbor_skin;         /* Verlet-list skin / largest pair cut-off */
     long long trajectory_interval; /* collision steps; 0 = no trajectory */
     pl_scene_dlvo_t dlvo;
     pl_scene_hertz_t hertz;

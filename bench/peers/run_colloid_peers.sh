@@ -1,0 +1,44 @@
+#!/bin/bash
+# Colloid MD side by side: LAMMPS (`pair_style table` of peloid's own DLVO +
+# Hertz pair, `fix nve`, neighbour skin 0.3) and peloid's colloid MD
+# (build/bench/bench_colloid_md: analytic pair, velocity Verlet with
+# rotation, guards) on the same colloids, cut-off, time step and number of
+# steps, interleaved in one run, at 1 and 2 MPI ranks / OpenMP threads.
+# Prints colloid-steps/s per core (median, min, max of REPS) and the ratio.
+#
+#   bench/peers/run_colloid_peers.sh [SCENE] [STEPS] [REPS]
+#   (defaults bench/scenes/fig14_model.cfg 3200 5)
+# Needs: Debian package `lammps`, build/bench/bench_colloid_md.
+set -eu
+cd "$(dirname "$0")/../.."
+SCENE=${1:-bench/scenes/fig14_model.cfg}; STEPS=${2:-3200}; REPS=${3:-5}
+OUT=bench/out; mkdir -p "$OUT"; TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
+TSV=$OUT/colloid_peers.tsv
+command -v lmp >/dev/null || { echo "lmp not found: apt-get install -y lammps" >&2; exit 1; }
+[ -x build/bench/bench_colloid_md ] || make build/bench/bench_colloid_md >/dev/null
+read -r RC DT < <(build/bench/bench_colloid_md --lammps "$TMP" "$SCENE")
+N=$(awk '/ atoms$/ {print $1}' "$TMP/colloids.data")
+MPIRUN="mpirun --allow-run-as-root --oversubscribe --bind-to core"
+med() { sort -g | awk '{a[NR]=$1} END{m=(NR%2)?a[(NR+1)/2]:(a[NR/2]+a[NR/2+1])/2; printf "%.4g %.4g %.4g\n", m, a[1], a[NR]}'; }
+
+echo "# run_colloid_peers: $SCENE, $N colloids, cut-off $RC a0, dt $DT, $STEPS steps, $REPS reps, $(lmp -h | grep -m1 'Parallel Simulator' | sed 's/.*Simulator - /LAMMPS /')"
+printf "code\tranks_or_threads\tcolloids\tsteps\tcolloid_steps_per_s_per_core_median\tmin\tmax\tneighbors_per_colloid\n" | tee "$TSV"
+for P in 1 2; do
+  for r in $(seq "$REPS"); do
+    OMP_NUM_THREADS=1 $MPIRUN -np "$P" lmp -in bench/peers/in.colloid_md -var DIR "$TMP" -var RC "$RC" \
+        -var DT "$DT" -var STEPS "$STEPS" -log none -screen "$TMP/lmp.$P.$r" >/dev/null 2>&1 \
+        || { echo "LAMMPS failed:"; tail "$TMP/lmp.$P.$r"; exit 1; }
+    awk -v n="$N" -v s="$STEPS" -v p="$P" '/^Loop time of/ {print n*s/$4/p}' "$TMP/lmp.$P.$r" >> "$TMP/lmp.$P"
+    awk '/^Ave neighs\/atom/ {print $4}' "$TMP/lmp.$P.$r" > "$TMP/lmp.neigh"
+    PL_BENCH_THREADS=$P PL_BENCH_ONLY_THREADS=1 build/bench/bench_colloid_md "$SCENE" "$STEPS" 1 > "$TMP/pl.$P.$r"
+    sed -n 's/.*colloid_steps_per_s=\([0-9.e+]*\).*/\1/p' "$TMP/pl.$P.$r" | awk -v p="$P" '{print $1/p}' >> "$TMP/pl.$P"
+    sed -n 's/.* n=\([0-9]*\) .*listed_pairs=\([0-9]*\).*/\1 \2/p; s/.*pairs_in_cutoff=\([0-9]*\).*/\1/p' "$TMP/pl.$P.$r" > /dev/null
+    PAIRS=$(sed -n 's/.*pairs_in_cutoff=\([0-9]*\).*/\1/p' "$TMP/pl.$P.$r")
+  done
+  read -r lm llo lhi < <(med < "$TMP/lmp.$P")
+  read -r pm plo phi < <(med < "$TMP/pl.$P")
+  printf "lammps\t%d\t%d\t%d\t%s\t%s\t%s\t%s\n" "$P" "$N" "$STEPS" "$lm" "$llo" "$lhi" "$(cat "$TMP/lmp.neigh")" | tee -a "$TSV"
+  printf "peloid\t%d\t%d\t%d\t%s\t%s\t%s\t%s\n" "$P" "$N" "$STEPS" "$pm" "$plo" "$phi" \
+      "$(awk -v a="$PAIRS" -v n="$N" 'BEGIN{printf "%.1f", a/n}')" | tee -a "$TSV"
+  awk -v a="$pm" -v b="$lm" -v p=$P 'BEGIN{printf "# %d core(s): peloid / LAMMPS per core = %.2f\n", p, a/b}' | tee -a "$TSV"
+done

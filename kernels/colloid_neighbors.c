@@ -1,0 +1,143 @@
+/* Verlet neighbour lists of the colloids, built from the linked cells
+ * (kernels/colloid_cells.c) with a skin: a pair is listed when its centres are
+ * closer than rlist = (largest pair cut-off) + skin, and the list stays valid
+ * until some colloid has moved by more than skin / 2 since the build (then no
+ * pair can have come from beyond rlist to inside the cut-off).  The caller
+ * (src/colloid_state.c) checks the displacement before every force
+ * evaluation and rebuilds when it is exceeded.
+ *
+ * Why the trajectory does not depend on when the list was built: the force
+ * kernel adds, for each colloid, its own pairs in ascending partner index and
+ * then its reverse pairs in ascending owner index, and a listed pair beyond
+ * its cut-off adds exactly +0.0.  Any valid list (any superset of the pairs
+ * inside the cut-off, in that order) therefore gives the same bits: a restart,
+ * which rebuilds the list from the checkpointed positions, continues bitwise.
+ *
+ * Threads: the count and fill passes are parallel over colloids, each writing
+ * only its own count / slots (static blocks; slot ranges come from the prefix
+ * sum, so the list is the same for any thread count).  The reverse entries
+ * come from a serial counting transpose (O(pairs), only at a build). */
+#include <math.h>
+
+#include "peloid/colloid_kernels.h"
+
+static inline double min_image(double d, double L, int per)
+{
+    return per ? d - L * rint(d / L) : d;
+}
+
+/* The own partners of i within rlist, from the 27 (or fewer) cells around
+ * i's cell; written to out (when non-NULL) in ascending index. */
+static size_t scan_cells(const pl_colloid_cells_t *c, const double box[3], const int periodic[3],
+                         double rl2, const double *x, const double *y, const double *z, size_t i,
+                         int32_t *out)
+{
+    const int *nc = c->nc;
+    int lo[3], hi[3];
+    for (int d = 0; d < 3; ++d) {
+        lo[d] = nc[d] == 1 ? 0 : -1;
+        hi[d] = nc[d] == 1 ? 0 : 1;
+    }
+    int32_t ci = c->cell[i];
+    int cx = ci % nc[0], cy = (ci / nc[0]) % nc[1], cz = ci / (nc[0] * nc[1]);
+    size_t m = 0;
+    for (int oz = lo[2]; oz <= hi[2]; ++oz) {
+        int zz = cz + oz;
+        if (zz < 0 || zz >= nc[2]) {
+            if (!periodic[2]) continue;
+            zz = (zz + nc[2]) % nc[2];
+        }
+        for (int oy = lo[1]; oy <= hi[1]; ++oy) {
+            int yy = cy + oy;
+            if (yy < 0 || yy >= nc[1]) {
+                if (!periodic[1]) continue;
+                yy = (yy + nc[1]) % nc[1];
+            }
+            for (int ox = lo[0]; ox <= hi[0]; ++ox) {
+                int xx = cx + ox;
+                if (xx < 0 || xx >= nc[0]) {
+                    if (!periodic[0]) continue;
+                    xx = (xx + nc[0]) % nc[0];
+                }
+                int32_t cc = (zz * nc[1] + yy) * nc[0] + xx;
+                for (int32_t k = c->start[cc]; k < c->start[cc + 1]; ++k) {
+                    size_t j = (size_t)c->list[k];
+                    if (j == i || !pl_colloid_pair_owner(i, j)) continue;
+                    double dx = min_image(x[i] - x[j], box[0], periodic[0]);
+                    double dy = min_image(y[i] - y[j], box[1], periodic[1]);
+                    double dz = min_image(z[i] - z[j], box[2], periodic[2]);
+                    if (dx * dx + dy * dy + dz * dz >= rl2) continue;
+                    if (out) {
+                        /* insertion into the ascending run out[0..m) */
+                        size_t q = m;
+                        while (q > 0 && out[q - 1] > (int32_t)j) {
+                            out[q] = out[q - 1];
+                            --q;
+                        }
+                        out[q] = (int32_t)j;
+                    }
+                    ++m;
+                }
+            }
+        }
+    }
+    return m;
+}
+
+double pl_colloid_nlist_max_disp2(const pl_colloid_nlist_t *nl, const double box[3],
+                                  const int periodic[3], const double *x, const double *y,
+                                  const double *z)
+{
+    double m = 0.0;
+    size_t n = nl->n;
+    /* max is exact, so the reduction order does not matter */
+#pragma omp parallel for schedule(static) reduction(max : m) if (n >= PL_COLLOID_OMP_MIN)
+    for (size_t i = 0; i < n; ++i) {
+        double dx = min_image(x[i] - nl->x0[i], box[0], periodic[0]);
+        double dy = min_image(y[i] - nl->y0[i], box[1], periodic[1]);
+        double dz = min_image(z[i] - nl->z0[i], box[2], periodic[2]);
+        double d2 = dx * dx + dy * dy + dz * dz;
+        /* a non-finite position forces a rebuild; the NaN guard reports it */
+        if (!(d2 <= m)) m = isnan(d2) ? INFINITY : d2;
+    }
+    return m;
+}
+
+void pl_colloid_nlist_count(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
+                            const double box[3], const int periodic[3], const double *x,
+                            const double *y, const double *z)
+{
+    size_t n = nl->n;
+    double rl2 = nl->rlist * nl->rlist;
+    nl->start[0] = 0;
+#pragma omp parallel for schedule(static) if (n >= PL_COLLOID_OMP_MIN)
+    for (size_t i = 0; i < n; ++i)
+        nl->start[i + 1] = (int32_t)scan_cells(cells, box, periodic, rl2, x, y, z, i, NULL);
+}
+
+void pl_colloid_nlist_fill(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
+                           const double box[3], const int periodic[3], const double *x,
+                           const double *y, const double *z)
+{
+    size_t n = nl->n;
+    double rl2 = nl->rlist * nl->rlist;
+#pragma omp parallel for schedule(static) if (n >= PL_COLLOID_OMP_MIN)
+    for (size_t i = 0; i < n; ++i) {
+        scan_cells(cells, box, periodic, rl2, x, y, z, i, nl->nbr + nl->start[i]);
+        nl->x0[i] = x[i];
+        nl->y0[i] = y[i];
+        nl->z0[i] = z[i];
+    }
+    nl->npairs = (size_t)nl->start[n];
+    /* reverse list: counting transpose, owners in ascending order */
+    int32_t *rs = nl->rstart;
+    for (size_t i = 0; i <= n; ++i) rs[i] = 0;
+    for (size_t p = 0; p < nl->npairs; ++p) rs[nl->nbr[p] + 1]++;
+    for (size_t i = 0; i < n; ++i) rs[i + 1] += rs[i];
+    for (size_t i = 0; i < n; ++i)
+        for (int32_t p = nl->start[i]; p < nl->start[i + 1]; ++p)
+            nl->rpos[p] = rs[nl->nbr[p]]++;
+    for (size_t i = n; i > 0; --i) rs[i] = rs[i - 1];
+    rs[0] = 0;
+    nl->builds++;
+}
