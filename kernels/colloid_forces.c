@@ -70,8 +70,14 @@ static inline __attribute__((always_inline)) void pair_eval(
     double fr = 0.0, k2 = 0.0, zeta = 0.0;
     if (T & PL_CT_DLVO) {
         if (h < p->dlvo_hcut) {
-            pl_pair_val_t s = pl_pair_dlvo(r, d, p->coul_C, p->kappa, p->hamaker, p->prim_hm,
-                                           p->prim_h0, p->dlvo_shift);
+            pl_pair_val_t s;
+            if (h >= p->coul_hcut) { /* Eq. 1 below 1e-15 there: its exp skipped */
+                s = pl_pair_vdw(r, d, p->hamaker);
+                s.u -= p->dlvo_shift;
+            } else {
+                s = pl_pair_dlvo(r, d, p->coul_C, p->kappa, p->hamaker, p->prim_hm, p->prim_h0,
+                                 p->dlvo_shift);
+            }
             fr += s.f;
             k2 += s.k2;
             if (E) a->e[PL_CE_DLVO] += s.u;

@@ -119,6 +119,12 @@ int pl_colloid_dlvo_setup(const pl_scene_dlvo_t *s, double d, pl_colloid_pair_pa
     if (isnan(hc)) hc = hm; /* |V| < tol everywhere outside the primary minimum */
     pl_pair_val_t vc = pl_pair_dlvo_raw(d + hc, d, p->coul_C, p->kappa, p->hamaker);
     p->dlvo_hcut = hc;
+    /* Eq. 1 is below eps in energy and force for gaps beyond coul_hcut:
+     * |U| <= C d e^{-kappa h}, |F| <= C d (1/d + kappa) e^{-kappa h} for
+     * r >= d, taken at twice the reference diameter (polydisperse pairs) */
+    const double eps = 1e-15, dh = 2.0 * d;
+    double cb = p->coul_C * dh * fmax(1.0, 1.0 / dh + p->kappa);
+    p->coul_hcut = fmax(hm, cb > eps ? log(cb / eps) / p->kappa : 0.0);
     p->dlvo_shift = vc.u;
     info->hcut = hc;
     info->trunc_u = fabs(vc.u);

@@ -250,3 +250,26 @@ Test(colloid_forces, forces_do_not_depend_on_the_list)
     pl_colloid_free(a);
     pl_colloid_free(b);
 }
+
+/* The kernel drops Eq. 1 beyond coul_hcut: there its energy and force are
+ * below 1e-15 (kT, kT/a0) for contact distances up to twice the reference,
+ * for both Hecht Fig. 1 sets and Fig. 14's strongly screened one (kappa =
+ * 3e8 /m, Psi0 = 50 mV at a0 = 0.403 um), and the skip is real (inside the
+ * cut-off). */
+Test(colloid_forces, coulomb_skip_below_round_off)
+{
+    struct { double psi, kappa, a0, d; } set[] = {
+        {20, 1.4e8, 1.25e-7, 4.0}, {50, 2.0e8, 1.25e-7, 4.0}, {50, 3.0e8, 4.03e-7, 1.24}};
+    for (int k = 0; k < 3; ++k) {
+        pl_scene_dlvo_t s = {81, set[k].psi, 1, 300, set[k].kappa, 4.76e-20, set[k].a0, 6.0, 0.0, 1e-3};
+        pl_colloid_pair_params_t p;
+        pl_colloid_dlvo_info_t info;
+        pl_err_t err;
+        cr_assert_eq(pl_colloid_dlvo_setup(&s, set[k].d, &p, &info, &err), 0, "%s", err.msg);
+        cr_expect(p.coul_hcut < p.dlvo_hcut, "set %d: coul_hcut %g >= cut-off %g", k, p.coul_hcut, p.dlvo_hcut);
+        for (double d = set[k].d; d <= 2.0 * set[k].d; d += 0.25 * set[k].d) {
+            pl_pair_val_t v = pl_pair_coulomb(d + p.coul_hcut, d, p.coul_C, p.kappa);
+            cr_expect(v.u < 1e-15 && v.f < 1e-15, "set %d d %g: U %g F %g at the skip gap", k, d, v.u, v.f);
+        }
+    }
+}

@@ -30,6 +30,9 @@ typedef struct {
     int periodic[3]; /* minimum image along this axis */
     /* DLVO, Hecht Eqs. 1-2 + parabolic primary minimum (see colloid_pair.h) */
     double coul_C, kappa, hamaker, prim_hm, prim_h0, dlvo_shift, dlvo_hcut;
+    /* gap beyond which the screened Coulomb term of Eq. 1 is below 1e-15 kT
+     * and kT/a0 (the kernel skips its exponential there) */
+    double coul_hcut;
     /* Hertz, Hecht Eqs. 3 and 6 + tangential viscous friction */
     double hertz_K, hertz_beta, hertz_gamma_t;
     /* lubrication, Hecht Eqs. 4-5 */
