@@ -1,0 +1,45 @@
+#!/bin/bash
+# Time to science: wall seconds per second of real (physical) time for the
+# scenes of the papers' production runs, at 1 and 2 threads.
+#
+#   bench/time_to_science.sh [STEPS] [REPS]     (defaults 40 3)
+#
+# Each scene runs STEPS collision steps REPS times per thread count (median
+# of the run loop's wall time from summary.json); the wall time of one real
+# second is that per step times the steps of one real second:
+#   - bench/scenes/fig9_model.cfg, fig14_model.cfg: model-unit copies of
+#     Hecht's Fig. 9 and Fig. 14 conditions, whose `steps` (1140) is one
+#     second at the Hecht mapping of their resolution;
+#   - scenes/quickstart.cfg (physical units): 1 / (srd.dt t0), t0 from the
+#     mapping in summary.json.
+# A short run extrapolated: in the clustering scenes the pair count, and so
+# the cost per step, changes as clusters form (measured from the start).
+set -eu
+cd "$(dirname "$0")/.."
+STEPS=${1:-40}; REPS=${2:-3}
+[ -x bin/peloid ] || make bin/peloid >/dev/null
+OUT=bench/out; mkdir -p "$OUT"; TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
+TSV=$OUT/time_to_science.tsv
+printf "scene\tthreads\tsteps_per_real_s\twall_s_per_step_median\tmin\tmax\twall_s_per_real_s\n" | tee "$TSV"
+for scene in bench/scenes/fig9_model.cfg bench/scenes/fig14_model.cfg scenes/quickstart.cfg; do
+  for t in 1 2; do
+    : > "$TMP/w"
+    for r in $(seq "$REPS"); do
+      bin/peloid run "$scene" --steps "$STEPS" --threads "$t" --out "$TMP/o" --force >/dev/null 2>&1
+      /usr/bin/python3 - "$TMP/o/summary.json" "$STEPS" "$scene" >> "$TMP/w" <<'EOF'
+import json, re, sys
+d = json.load(open(sys.argv[1]))
+m = d.get("mapping") or {}
+u = m.get("units") if isinstance(m, dict) else None
+if u:
+    per_s = 1.0 / (d["scene"]["srd"]["dt"] * u["t0_s"])
+else:  # the scene file's own steps = one real second
+    per_s = int(re.search(r"^steps\s*=\s*(\d+)", open(sys.argv[3]).read(), re.M).group(1))
+print(d["wall_seconds"] / int(sys.argv[2]), per_s)
+EOF
+    done
+    sort -g "$TMP/w" | awk -v s="$scene" -v t="$t" '{w[NR]=$1; p=$2}
+      END{m=(NR%2)?w[(NR+1)/2]:(w[NR/2]+w[NR/2+1])/2;
+          printf "%s\t%d\t%.4g\t%.4g\t%.4g\t%.4g\t%.4g\n", s, t, p, m, w[1], w[NR], m*p}' | tee -a "$TSV"
+  done
+done
