@@ -98,8 +98,14 @@ static inline __attribute__((always_inline)) void pair_eval(
         k2 += kk;
         if (E) a->e[PL_CE_DEPL] += u;
     }
-    double vrx = v->vx[i] - v->vx[j], vry = v->vy[i] - v->vy[j], vrz = v->vz[i] - v->vz[j];
-    double vn = vrx * ex + vry * ey + vrz * ez;
+    /* relative velocity: only the dissipative terms read it */
+    double vrx = 0.0, vry = 0.0, vrz = 0.0, vn = 0.0;
+    if (((T & PL_CT_HERTZ) && delta > 0.0) || ((T & PL_CT_LUB) && h < p->lub_hcut)) {
+        vrx = v->vx[i] - v->vx[j];
+        vry = v->vy[i] - v->vy[j];
+        vrz = v->vz[i] - v->vz[j];
+        vn = vrx * ex + vry * ey + vrz * ez;
+    }
     if ((T & PL_CT_HERTZ) && delta > 0.0) {
         pl_pair_val_t s = pl_pair_hertz(delta, p->hertz_K);
         fr += s.f;

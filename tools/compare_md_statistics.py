@@ -45,7 +45,7 @@ def run(binary, seed, steps, tmp):
     with open(cfg, "w") as f:
         f.write(SCENE.format(seed=seed, steps=steps))
     out = os.path.join(tmp, "%s_%d" % (os.path.basename(os.path.dirname(os.path.abspath(binary))), seed))
-    subprocess.run([binary, "run", cfg, "--out", out, "--force", "--threads", "2"], check=True,
+    subprocess.run([binary, "run", cfg, "--out", out, "--force", "--threads", "1"], check=True,
                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     return out
 
