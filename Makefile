@@ -52,9 +52,11 @@ $(BUILD)/%.o: %.c | deps
 	@$(CC) $(CFLAGS_ALL) -MMD -MP -c $< -o $@
 
 # The colloid pair kernel computes energies only when asked: without errno
-# the compiler may drop the unused logarithm of the van der Waals energy
-# (the results are the same; no code reads errno after a math call).
-$(BUILD)/kernels/colloid_forces.o: CFLAGS_ALL += -fno-math-errno
+# the compiler may drop the unused logarithm of the van der Waals energy (no
+# code reads errno after a math call); without trapping math it may turn the
+# far-pair selects into SIMD blends (no code reads the floating-point
+# exception flags).  Neither changes a computed value.
+$(BUILD)/kernels/colloid_forces.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 
 $(LIB): $(LIB_OBJ)
 	@rm -f $@

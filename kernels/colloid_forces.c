@@ -175,24 +175,82 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
     const double L[3] = {p->box[0], p->box[1], p->box[2]};
     const double iL[3] = {1.0 / L[0], 1.0 / L[1], 1.0 / L[2]};
     const int per[3] = {p->periodic[0], p->periodic[1], p->periodic[2]};
+    const double pL[3] = {per[0] ? L[0] : 0.0, per[1] ? L[1] : 0.0, per[2] ? L[2] : 0.0};
     const double xi = v->x[i], yi = v->y[i], zi = v->z[i];
-    for (int32_t s = nl->start[i]; s < nl->start[i + 1]; ++s) {
-        size_t j = (size_t)nl->nbr[s];
-        double dx = xi - v->x[j], dy = yi - v->y[j], dz = zi - v->z[j];
-        if (per[0]) dx -= L[0] * rint(dx * iL[0]);
-        if (per[1]) dy -= L[1] * rint(dy * iL[1]);
-        if (per[2]) dz -= L[2] * rint(dz * iL[2]);
-        double fo[3], tj[3];
-        pair_eval(p, v, i, j, dx, dy, dz, dx * dx + dy * dy + dz * dz, T, E, &a, fo, tj);
-        if (!E) {
-            size_t q = 3 * (size_t)nl->rpos[s];
-            nl->pf[q] = fo[0];
-            nl->pf[q + 1] = fo[1];
-            nl->pf[q + 2] = fo[2];
-            if ((T & PL_CT_HERTZ) && p->hertz_gamma_t > 0.0) {
-                nl->pt[q] = tj[0];
-                nl->pt[q + 1] = tj[1];
-                nl->pt[q + 2] = tj[2];
+    /* far pairs, vectorised: beyond every term but the van der Waals tail of
+     * Eq. 2 (gap >= far_gap, outside the WCA and depletion ranges) the force
+     * is F/r = -A d^6 / (6 r^4 (r^2 - d^2)^2), no square root; the pairs of
+     * a block are classified and these forces computed in SIMD lanes, then
+     * added in slot order with the others (so the sums keep their order) */
+    enum { BLK = 32 };
+    const int FAR = !E && (T & PL_CT_DLVO);
+    double bfx[BLK], bfy[BLK], bfz[BLK], bcls[BLK]; /* bcls: 0 out of range, 1 far, 2 other */
+    const double far_gap = (T & PL_CT_LUB) && p->lub_hcut > p->coul_hcut ? p->lub_hcut : p->coul_hcut;
+    const double ri = v->rad[i];
+    for (int32_t s0 = nl->start[i]; s0 < nl->start[i + 1]; s0 += BLK) {
+        const int m = nl->start[i + 1] - s0 < BLK ? nl->start[i + 1] - s0 : BLK;
+        if (FAR) {
+#pragma omp simd
+            for (int k = 0; k < m; ++k) {
+                size_t j = (size_t)nl->nbr[s0 + k];
+                double dx = xi - v->x[j], dy = yi - v->y[j], dz = zi - v->z[j];
+                /* minimum image without a branch: on a closed axis pL = 0
+                 * and dx - 0 is dx exactly */
+                dx -= pL[0] * rint(dx * iL[0]);
+                dy -= pL[1] * rint(dy * iL[1]);
+                dz -= pL[2] * rint(dz * iL[2]);
+                double r2 = dx * dx + dy * dy + dz * dz;
+                double d = ri + v->rad[j], rc = d + p->gap_cut, rf = d + far_gap;
+                if (T & PL_CT_WCA) {
+                    double wrc = (p->wca_sigma > 0.0 ? p->wca_sigma : d) * p->wca_rfac;
+                    rc = rc > wrc ? rc : wrc;
+                    rf = rf > wrc ? rf : wrc;
+                }
+                if (T & PL_CT_DEPL) {
+                    rc = rc > p->dep_rc ? rc : p->dep_rc;
+                    rf = rf > p->dep_rc ? rf : p->dep_rc;
+                }
+                double rd = d + p->dlvo_hcut;
+                int in = r2 < rc * rc, far = in & (r2 >= rf * rf) & (r2 < rd * rd);
+                /* lanes that are not far compute on harmless operands and
+                 * are zeroed (selects of values, no branch) */
+                double d2 = d * d, r2f = far ? r2 : 2.0, sf = far ? r2 - d2 : 1.0;
+                double ir2 = 1.0 / r2f, is = 1.0 / sf;
+                double fc = -(p->hamaker * d2 * d2 * d2 / 6.0) * (ir2 * ir2) * (is * is);
+                double fm = far ? 1.0 : 0.0;
+                bfx[k] = fm * (fc * dx);
+                bfy[k] = fm * (fc * dy);
+                bfz[k] = fm * (fc * dz);
+                bcls[k] = in ? (far ? 1.0 : 2.0) : 0.0;
+            }
+        }
+        for (int k = 0; k < m; ++k) {
+            const int32_t s = s0 + k;
+            double fo[3], tj[3];
+            if (FAR && bcls[k] != 2.0) {
+                fo[0] = bfx[k], fo[1] = bfy[k], fo[2] = bfz[k];
+                a.f[0] += fo[0];
+                a.f[1] += fo[1];
+                a.f[2] += fo[2];
+                tj[0] = tj[1] = tj[2] = 0.0; /* van der Waals tail: no torque, k2 < 0, no contact */
+            } else {
+                size_t j = (size_t)nl->nbr[s];
+                double dx = xi - v->x[j], dy = yi - v->y[j], dz = zi - v->z[j];
+                if (per[0]) dx -= L[0] * rint(dx * iL[0]);
+                if (per[1]) dy -= L[1] * rint(dy * iL[1]);
+                if (per[2]) dz -= L[2] * rint(dz * iL[2]);
+                pair_eval(p, v, i, j, dx, dy, dz, dx * dx + dy * dy + dz * dz, T, E, &a, fo, tj);
+            }
+            if (!E) {
+                size_t q = 3 * (size_t)nl->rpos[s];
+                nl->pf[q] = fo[0];
+                nl->pf[q + 1] = fo[1];
+                nl->pf[q + 2] = fo[2];
+                if ((T & PL_CT_HERTZ) && p->hertz_gamma_t > 0.0) {
+                    nl->pt[q] = tj[0];
+                    nl->pt[q + 1] = tj[1];
+                    nl->pt[q + 2] = tj[2];
+                }
             }
         }
     }
