@@ -1,7 +1,10 @@
-/* Colloid pair-force throughput: ordered pairs within the cut-off evaluated
- * per second (full neighbour lists: every pair counted from both sides), for
- * 1 and 2 threads (or PL_BENCH_THREADS), DLVO + Hertz + WCA, random
- * polydisperse colloids at volume fraction ~0.27 (simple cubic lattice).  One line per case:
+/* Colloid pair-force throughput of one force evaluation (the neighbour list
+ * already built: the colloids do not move): ordered pairs within the cut-off
+ * per second (each unordered pair is evaluated once, Newton's third law, and
+ * counted twice, as the figures of the former full lists were), for 1 and 2
+ * threads (or PL_BENCH_THREADS), DLVO + Hertz + WCA, polydisperse colloids
+ * at volume fraction ~0.27 (simple cubic lattice).  The whole MD step on a
+ * dense suspension: bench_colloid_md.  One line per case:
  *   kernel threads n pairs ns_per_pair pairs_per_s */
 #include <math.h>
 #include <omp.h>
