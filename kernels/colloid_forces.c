@@ -293,9 +293,9 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
 
 /* Pass 2: the pairs others own with i, in ascending owner index (Newton's
  * third law: the force on i is minus the force on the owner). */
-static void reverse_add(const pl_colloid_nlist_t *nl, const pl_colloid_view_t *v, int torques)
+static inline void reverse_add(const pl_colloid_nlist_t *nl, const pl_colloid_view_t *v, int torques)
 {
-#pragma omp parallel for schedule(static) if (v->n >= PL_COLLOID_OMP_MIN)
+#pragma omp for schedule(static)
     for (size_t i = 0; i < v->n; ++i) {
         const size_t q0 = 3 * (size_t)nl->rstart[i], q1 = 3 * (size_t)nl->rstart[i + 1];
         double fx = v->fx[i], fy = v->fy[i], fz = v->fz[i];
@@ -325,9 +325,13 @@ void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_
 {
     enum { E = 0 };
     const unsigned mask = p->terms & PL_CT_ALL;
+    const int torques = (p->terms & PL_CT_HERTZ) && p->hertz_gamma_t > 0.0;
+    /* one parallel region: pass 1, the barrier of its loop, pass 2 */
 #pragma omp parallel if (v->n >= PL_COLLOID_OMP_MIN)
-    switch (mask) { ALL_CASES }
-    reverse_add(nl, v, (p->terms & PL_CT_HERTZ) && p->hertz_gamma_t > 0.0);
+    {
+        switch (mask) { ALL_CASES }
+        reverse_add(nl, v, torques);
+    }
 }
 
 void pl_colloid_pair_energies(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
