@@ -35,9 +35,9 @@ size_t pl_srd_guard_scan(const pl_fluid_t *f, const int Lc[3], double vmax2, int
      * the pages it first touched */
 #pragma omp parallel num_threads(nthreads) reduction(min : first)
     {
-        size_t lo, hi;
+        size_t lo, hi, mine = n; /* (the private `first` starts at SIZE_MAX) */
         pl_chunk(n, omp_get_thread_num(), nthreads, &lo, &hi);
-        for (size_t i0 = lo; i0 < hi && first == n; i0 += GUARD_BLOCK) {
+        for (size_t i0 = lo; i0 < hi && mine == n; i0 += GUARD_BLOCK) {
             const size_t i1 = hi - i0 < GUARD_BLOCK ? hi : i0 + GUARD_BLOCK;
             int bad = 0;
 #pragma omp simd reduction(| : bad)
@@ -45,10 +45,11 @@ size_t pl_srd_guard_scan(const pl_fluid_t *f, const int Lc[3], double vmax2, int
             if (!bad) continue;
             for (size_t i = i0; i < i1; ++i)
                 if (bad_one(x, y, z, vx, vy, vz, i, L, vmax2)) {
-                    first = i;
+                    mine = i;
                     break;
                 }
         }
+        if (mine < first) first = mine;
     }
     return first;
 }
