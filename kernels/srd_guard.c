@@ -1,7 +1,8 @@
 /* Fluid guard scan (src/fluid_guard.c reports what it finds): the lowest
  * index of a particle whose position is outside [0, L] on some axis (which
  * catches NaN and Inf too) or whose speed^2 exceeds a bound (or is not
- * finite).  One read-only pass over r and v (48 B per particle in double).
+ * finite); positions = 0: the speeds only.  One read-only pass over r and v
+ * (48 B per particle in double; 24 B for the speeds).
  *
  * Each thread scans its static chunk in blocks: a branch-free, vectorised
  * "any bad?" test per block, and only a flagged block is rescanned for the
@@ -14,6 +15,13 @@
 
 enum { GUARD_BLOCK = 512 };
 
+static inline int bad_v(const pl_real *restrict vx, const pl_real *restrict vy, const pl_real *restrict vz,
+                        size_t i, double vmax2)
+{
+    const double u = vx[i], v = vy[i], w = vz[i];
+    return !(u * u + v * v + w * w <= vmax2);
+}
+
 static inline int bad_one(const pl_real *restrict x, const pl_real *restrict y, const pl_real *restrict z,
                           const pl_real *restrict vx, const pl_real *restrict vy,
                           const pl_real *restrict vz, size_t i, const double L[3], double vmax2)
@@ -24,7 +32,7 @@ static inline int bad_one(const pl_real *restrict x, const pl_real *restrict y, 
     return !ok;
 }
 
-size_t pl_srd_guard_scan(const pl_fluid_t *f, const int Lc[3], double vmax2, int nthreads)
+size_t pl_srd_guard_scan(const pl_fluid_t *f, const int Lc[3], double vmax2, int positions, int nthreads)
 {
     const double L[3] = {Lc[0], Lc[1], Lc[2]};
     const pl_real *restrict x = f->r[0], *restrict y = f->r[1], *restrict z = f->r[2];
@@ -40,11 +48,16 @@ size_t pl_srd_guard_scan(const pl_fluid_t *f, const int Lc[3], double vmax2, int
         for (size_t i0 = lo; i0 < hi && mine == n; i0 += GUARD_BLOCK) {
             const size_t i1 = hi - i0 < GUARD_BLOCK ? hi : i0 + GUARD_BLOCK;
             int bad = 0;
+            if (positions) {
 #pragma omp simd reduction(| : bad)
-            for (size_t i = i0; i < i1; ++i) bad |= bad_one(x, y, z, vx, vy, vz, i, L, vmax2);
+                for (size_t i = i0; i < i1; ++i) bad |= bad_one(x, y, z, vx, vy, vz, i, L, vmax2);
+            } else {
+#pragma omp simd reduction(| : bad)
+                for (size_t i = i0; i < i1; ++i) bad |= bad_v(vx, vy, vz, i, vmax2);
+            }
             if (!bad) continue;
             for (size_t i = i0; i < i1; ++i)
-                if (bad_one(x, y, z, vx, vy, vz, i, L, vmax2)) {
+                if (positions ? bad_one(x, y, z, vx, vy, vz, i, L, vmax2) : bad_v(vx, vy, vz, i, vmax2)) {
                     mine = i;
                     break;
                 }

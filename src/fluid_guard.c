@@ -18,7 +18,13 @@
  *     inside [min(T0, T*) / F, max(T0, T*) F], F = PL_FLUID_GUARD_KT_FACTOR;
  *   - no overflow of the fixed-point wall impulse sums (pl_wall_acc_add).
  * The per-particle scan is kernels/srd_guard.c (lowest failing index: the
- * same for any thread count); the rest is O(1). */
+ * same for any thread count).  Every step it checks the speeds (24 B per
+ * particle): the next stream then never sees a non-finite or runaway
+ * velocity, and positions stay finite and in the box by induction (finite
+ * r + finite v dt, wrapped or reflected).  The positions themselves (the
+ * full 48 B) every PL_FLUID_GUARD_SCAN_INTERVAL steps and before every thermo
+ * row, checkpoint and fields file (src/run.c), so nothing non-finite reaches
+ * an output.  Costs: README "Fluid guard". */
 #include <math.h>
 #include <stdio.h>
 
@@ -49,7 +55,7 @@ void pl_fluid_guard_setup(pl_sim_t *sim)
 
 static const char *const axis[3] = {"x", "y", "z"};
 
-int pl_fluid_guard_check(const pl_sim_t *sim, long long step, pl_err_t *err)
+int pl_fluid_guard_check(const pl_sim_t *sim, long long step, int scan, pl_err_t *err)
 {
     const pl_fluid_t *f = &sim->fluid;
     const pl_scene_t *sc = &sim->scene;
@@ -59,7 +65,7 @@ int pl_fluid_guard_check(const pl_sim_t *sim, long long step, pl_err_t *err)
                           "+-2^62 (2^-%d units); bound 2^62; lower box.wall_velocity_* or srd.dt (the fluid "
                           "is running away)", step, PL_FIELD_FIXED_SHIFT);
     const double vmax = sim->guard_vmax;
-    size_t i = pl_srd_guard_scan(f, sc->box.cells, vmax * vmax, sim->nthreads);
+    size_t i = pl_srd_guard_scan(f, sc->box.cells, vmax * vmax, scan, sim->nthreads);
     if (i < f->n) {
         double r[3], v[3];
         for (int d = 0; d < 3; ++d) {
@@ -101,6 +107,8 @@ int pl_fluid_guard_check(const pl_sim_t *sim, long long step, pl_err_t *err)
 int pl_fluid_guard_stage(pl_sim_t *sim, pl_err_t *err)
 {
     /* the stage runs inside step `step` -> step + 1: it checks the state
-     * the thermo row of step + 1 would show */
-    return pl_fluid_guard_check(sim, sim->step + 1, err);
+     * the thermo row of step + 1 would show; positions every
+     * PL_FLUID_GUARD_SCAN_INTERVAL steps (the run loop adds a scan before
+     * every output) */
+    return pl_fluid_guard_check(sim, sim->step + 1, (sim->step + 1) % PL_FLUID_GUARD_SCAN_INTERVAL == 0, err);
 }

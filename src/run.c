@@ -212,11 +212,15 @@ static int loop(pl_sim_t *sim, writer_t *w, const pl_run_opts_t *o, long long la
     while (sim->step < last) {
         rc = pl_sim_step(sim, err);
         if (rc) return rc;
-        if ((sim->step % sc->output.thermo_interval == 0 || sim->step == last) && (rc = thermo_row(w, sim, err)))
+        const int row = sim->step % sc->output.thermo_interval == 0 || sim->step == last;
+        const int ckpt = sc->output.checkpoint_interval > 0 && sim->step % sc->output.checkpoint_interval == 0;
+        /* the guard's particle scan before anything is written (the stage
+         * scanned this state already on multiples of its interval) */
+        if ((row || ckpt) && sim->fluid.n > 0 && sim->step % PL_FLUID_GUARD_SCAN_INTERVAL != 0 &&
+            (rc = pl_fluid_guard_check(sim, sim->step, 1, err)))
             return rc;
-        if (sc->output.checkpoint_interval > 0 && sim->step % sc->output.checkpoint_interval == 0 &&
-            (rc = write_checkpoint(w, sim, err)))
-            return rc;
+        if (row && (rc = thermo_row(w, sim, err))) return rc;
+        if (ckpt && (rc = write_checkpoint(w, sim, err))) return rc;
         if (o->progress && omp_get_wtime() - t_progress > 0.25) {
             progress(sim, first, last, w->t_start);
             t_progress = omp_get_wtime();
@@ -251,7 +255,7 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         goto done;
     }
     /* a restarted state must pass the fluid guard before anything is written */
-    if (o->restart && (rc = pl_fluid_guard_check(sim, first, err))) {
+    if (o->restart && (rc = pl_fluid_guard_check(sim, first, 1, err))) {
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: the checkpointed state fails the fluid guard: %s", o->restart,
                         err->msg);
         goto done;

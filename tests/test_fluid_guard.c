@@ -24,13 +24,13 @@ static int step_rc(pl_sim_t *sim, pl_err_t *err)
 Test(fluid_guard, nan_velocity)
 {
     pl_sim_t *sim = pl_test_sim(FLUID, 2);
-    pl_test_steps(sim, 2);
+    pl_test_steps(sim, 9);
     sim->fluid.v[1][123] = (pl_real)NAN;
     pl_err_t err;
-    int rc = step_rc(sim, &err);
+    int rc = step_rc(sim, &err); /* step 9 -> 10: the stage's particle scan */
     cr_expect_eq(rc, PL_ERR_GUARD, "rc %d: %s", rc, err.msg);
     /* the stream turned the NaN velocity into a NaN position: reported as such */
-    cr_expect(strstr(err.msg, "guard fluid_nan: step 3: fluid particle") && strstr(err.msg, "non-finite") &&
+    cr_expect(strstr(err.msg, "guard fluid_nan: step 10: fluid particle") && strstr(err.msg, "non-finite") &&
                   strstr(err.msg, "srd.dt"), "%s", err.msg);
     pl_sim_free(sim);
 }
@@ -41,7 +41,7 @@ Test(fluid_guard, position_outside)
     pl_sim_t *sim = pl_test_sim(FLUID, 1);
     sim->fluid.r[2][7] = (pl_real)1e9;
     pl_err_t err;
-    cr_expect_eq(pl_fluid_guard_check(sim, 0, &err), PL_ERR_GUARD);
+    cr_expect_eq(pl_fluid_guard_check(sim, 0, 1, &err), PL_ERR_GUARD);
     cr_expect(strstr(err.msg, "guard fluid_box: step 0: fluid particle 7 is at z = 1000000000"), "%s", err.msg);
     pl_sim_free(sim);
 }
@@ -57,7 +57,7 @@ Test(fluid_guard, speed_lowest_index_any_threads)
         sim->fluid.v[0][1500] = (pl_real)30.0;
         sim->fluid.v[0][100] = (pl_real)19.0;
         pl_err_t err;
-        cr_expect_eq(pl_fluid_guard_check(sim, 5, &err), PL_ERR_GUARD);
+        cr_expect_eq(pl_fluid_guard_check(sim, 5, 1, &err), PL_ERR_GUARD);
         cr_expect(strstr(err.msg, "guard fluid_speed: step 5: fluid particle 1500 has speed |v| = 30"), "%d: %s", t,
                   err.msg);
         pl_sim_free(sim);
@@ -93,7 +93,7 @@ Test(fluid_guard, wall_accumulator_overflow)
     pl_sim_t *sim = pl_test_sim("seed = 3;\nbox: { cells = [8, 8, 8]; walls_z = \"noslip\"; };\n", 1);
     pl_sim_wall_add(sim, acc);
     pl_err_t err;
-    cr_expect_eq(pl_fluid_guard_check(sim, 9, &err), PL_ERR_GUARD);
+    cr_expect_eq(pl_fluid_guard_check(sim, 9, 1, &err), PL_ERR_GUARD);
     cr_expect(strstr(err.msg, "guard wall_impulse: step 9") && strstr(err.msg, "box.wall_velocity_"), "%s",
               err.msg);
     pl_sim_free(sim);
@@ -107,13 +107,13 @@ Test(fluid_guard, temperature_band)
     cr_expect(fabs(sim->guard_kT_lo - 0.1) < 1e-15 && fabs(sim->guard_kT_hi - 20.0) < 1e-15);
     pl_err_t err;
     sim->last_kT_meas = 19.0;
-    cr_expect_eq(pl_fluid_guard_check(sim, 1, &err), 0);
+    cr_expect_eq(pl_fluid_guard_check(sim, 1, 1, &err), 0);
     sim->last_kT_meas = 21.0;
-    cr_expect_eq(pl_fluid_guard_check(sim, 1, &err), PL_ERR_GUARD);
+    cr_expect_eq(pl_fluid_guard_check(sim, 1, 1, &err), PL_ERR_GUARD);
     cr_expect(strstr(err.msg, "guard fluid_temperature: step 1") && strstr(err.msg, "bound [0.1, 20]"), "%s",
               err.msg);
     sim->last_kT_meas = NAN;
-    cr_expect_eq(pl_fluid_guard_check(sim, 1, &err), PL_ERR_GUARD);
+    cr_expect_eq(pl_fluid_guard_check(sim, 1, 1, &err), PL_ERR_GUARD);
     pl_sim_free(sim);
 }
 

@@ -98,9 +98,10 @@ double pl_sim_wall_stress(const pl_sim_t *sim, int wall, int d);
 void pl_sim_observe(const pl_sim_t *sim, pl_fluid_obs_t *obs, double *kT);
 
 /* ---- fluid guard (src/fluid_guard.c) ---------------------------------- */
-/* The guard stage runs every PL_FLUID_GUARD_INTERVAL steps, after the
- * collision and thermostat (its cost: README "Guards"). */
-enum { PL_FLUID_GUARD_INTERVAL = 1 };
+/* The guard stage runs every step, after the collision and thermostat: the
+ * speeds and the O(1) checks every step, the positions too every
+ * PL_FLUID_GUARD_SCAN_INTERVAL steps and before every output (src/run.c). */
+enum { PL_FLUID_GUARD_INTERVAL = 1, PL_FLUID_GUARD_SCAN_INTERVAL = 10 };
 /* Speed bound: PL_FLUID_GUARD_SIGMAS thermal speeds sqrt(kT_max / m_f) plus
  * twice the fastest wall or imposed flow (a bounce-back off a wall moving
  * with U gives 2U - v); kT_max is the largest temperature the scene names
@@ -117,8 +118,9 @@ void pl_fluid_guard_setup(pl_sim_t *sim);
  * beyond guard_vmax, kT_cell outside the band, or an overflowed wall impulse
  * accumulator. */
 int pl_fluid_guard_stage(pl_sim_t *sim, pl_err_t *err);
-/* The same checks on the current state outside the plan (after a restart). */
-int pl_fluid_guard_check(const pl_sim_t *sim, long long step, pl_err_t *err);
+/* The same checks on the current state outside the plan (before an output,
+ * after a restart); scan = 0 leaves out the positions. */
+int pl_fluid_guard_check(const pl_sim_t *sim, long long step, int scan, pl_err_t *err);
 
 /* Initial fluid: uniform positions, uniform or Gaussian velocities with zero
  * total momentum and exactly the scene temperature (src/fluid_init.c). */

@@ -127,9 +127,9 @@ void pl_srd_fields_accumulate(const pl_fluid_t *fluid, const int L[3], int64_t *
 
 /* ---- fluid guard scan (kernels/srd_guard.c) --------------------------- */
 /* Lowest index i with a position outside [0, L_d] on some axis d (NaN and
- * Inf included) or |v_i|^2 > vmax2 (or not finite); f->n when there is
- * none.  Independent of nthreads. */
-size_t pl_srd_guard_scan(const pl_fluid_t *f, const int L[3], double vmax2, int nthreads);
+ * Inf included; only when `positions`) or |v_i|^2 > vmax2 (or not finite);
+ * f->n when there is none.  Independent of nthreads. */
+size_t pl_srd_guard_scan(const pl_fluid_t *f, const int L[3], double vmax2, int positions, int nthreads);
 
 /* A wall impulse accumulator slot that overflowed (sticky): the fluid guard
  * reports it (src/fluid_guard.c). */
