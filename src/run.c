@@ -254,10 +254,22 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                         (long long)PL_RUN_MAX_STEP, (long long)PL_RUN_MAX_STEP);
         goto done;
     }
+    long long md_last; /* the colloid MD step counter: substeps per collision step */
+    if (sim->colloids && (__builtin_mul_overflow(nsteps, (long long)scene->colloids.substeps, &md_last) ||
+                          __builtin_add_overflow(md_last, sim->colloids->md_step, &md_last) ||
+                          md_last > PL_RUN_MAX_STEP)) {
+        rc = pl_err_set(err, PL_ERR_INPUT,
+                        "%s: colloid MD step %lld + %lld steps x %lld substeps passes the largest step %lld",
+                        o->restart ? o->restart : scene->path, sim->colloids->md_step, nsteps,
+                        (long long)scene->colloids.substeps, (long long)PL_RUN_MAX_STEP);
+        goto done;
+    }
     /* a restarted state must pass the fluid guard before anything is written */
-    if (o->restart && (rc = pl_fluid_guard_check(sim, first, 1, err))) {
-        rc = pl_err_set(err, PL_ERR_INPUT, "%s: the checkpointed state fails the fluid guard: %s", o->restart,
-                        err->msg);
+    if (o->restart && pl_fluid_guard_check(sim, first, 1, err)) {
+        char why[sizeof err->msg];
+        snprintf(why, sizeof why, "%s", err->msg);
+        rc = pl_err_set(err, PL_ERR_INPUT, "%s: the checkpointed state fails the fluid guard: %.700s", o->restart,
+                        why);
         goto done;
     }
     if (o->out_dir) snprintf(w.dir, sizeof w.dir, "%s", o->out_dir);

@@ -2,7 +2,8 @@
 # Issue 18, checkpoint and guard side, through bin/peloid:
 #  - a corrupted checkpoint is refused (exit 2, one line, nothing written):
 #    NaN in fluid/x, a flipped exponent bit, x = 1e300 and -1e9, a step of
-#    -7 and 2^63-3, a wrong checksum, an unknown format version (the value
+#    -7 and 2^63-3, a wrong checksum, an unknown format version, colloid
+#    positions, image counters and MD step counters out of range (the value
 #    cases rewrite the checksum, so that the range check itself is tested);
 #  - a restart into a scene with another physics key is refused with the key
 #    and both values (srd.dt, fluid.temperature, srd.rule, fluid.body_force,
@@ -104,6 +105,17 @@ corrupt a/checkpoint.h5 nover.h5 'del f.attrs["format_version"]'
 CMD=("$PELOID" run walls.cfg --restart nover.h5); refused format_1 "format version 1"
 corrupt a/checkpoint.h5 keys.h5 'f.attrs.modify("scene_keys", f.attrs["scene_keys"].replace(b"srd.dt = 0.5", b"srd.dt = 0.6"))'
 CMD=("$PELOID" run walls.cfg --restart keys.h5); refused fingerprint_mismatch "do not match scene_fingerprint"
+
+# colloids: a position outside the box, an image counter beyond 2^30, an MD
+# step counter that the run would overflow
+printf 'seed = 2;\nsteps = 5;\nbox: { cells = [8, 8, 8]; };\nfluid: { density = 0.0; };\ncolloids: { count = 8; radius = 1.0; pairs = ""; };\n' > col.cfg
+"$PELOID" run col.cfg --out c 2> /dev/null && ok "colloid scene runs" || bad "colloid scene"
+corrupt c/checkpoint.h5 cx.h5 'd = f["colloids/y"]; a = d[()]; a[3] = 1e300; d[...] = a; fix(d)'
+CMD=("$PELOID" run col.cfg --restart cx.h5); refused colloid_outside "colloids/y[3] = 1.0000000000000001e+300 is outside the box"
+corrupt c/checkpoint.h5 ci.h5 'd = f["colloids/iz"]; a = d[()]; a[5] = 2**31 - 5; d[...] = a; fix(d)'
+CMD=("$PELOID" run col.cfg --restart ci.h5); refused colloid_image "colloids/iz[5] = 2147483643"
+corrupt c/checkpoint.h5 cm.h5 'd = f["colloids/md_step"]; a = d[()]; a[0] = (1 << 62) - 3; d[...] = a; fix(d)'
+CMD=("$PELOID" run col.cfg --restart cm.h5); refused colloid_md_step "colloid MD step 4611686018427387901" "largest step"
 
 # restart into a changed physics key
 mk dt.cfg noslip 's/dt = 0.5/dt = 10.0/'
