@@ -92,12 +92,14 @@ check-unit: $(TEST_BIN)
 
 check-cli: $(BIN)
 	@bash tests/cli.sh ./$(BIN)
+	@bash tests/restart_guard.sh ./$(BIN)
+	@bash tests/full_disk.sh ./$(BIN)
 
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
 # shrinks the physics runs; the sanitizers slow code ~3-10x).
 ASAN_TESTS := test_scene test_collide test_sort test_determinism test_colloid_forces \
               test_colloid_guards test_colloid_md test_colloid_restart test_capillary \
-              test_coupling_restart test_coupling_system
+              test_coupling_restart test_coupling_system test_fluid_guard
 check-asan: | deps
 	@$(MAKE) --no-print-directory BUILD=build-asan \
 	  OPTFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \

@@ -62,9 +62,14 @@ static inline void wrap(double *x, int32_t *img, double L)
 {
     double k = floor(*x / L);
     if (k != 0.0) {
+        if (!isfinite(k)) return; /* NaN/Inf position: the NaN guard reports it */
         *x -= k * L;
         if (*x >= L) *x -= L; /* rounding of -tiny + L */
-        *img += (int32_t)k;
+        /* saturated beyond PL_COLLOID_IMAGE_MAX (the colloid guard stops
+         * the run): no int32 overflow */
+        const double im = (double)*img + k;
+        *img = im > PL_COLLOID_IMAGE_MAX ? PL_COLLOID_IMAGE_MAX + 1
+               : im < -PL_COLLOID_IMAGE_MAX ? -PL_COLLOID_IMAGE_MAX - 1 : (int32_t)im;
     }
 }
 

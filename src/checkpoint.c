@@ -4,11 +4,24 @@
  * the stable sort depends on it), tracking arrays, step, field accumulators,
  * with colloids the group /colloids (src/checkpoint_colloid.c), and the wall
  * and coupling run counters (src/checkpoint_coupling.c).
- * Written to "<path>.tmp" and renamed.  No object carries a time stamp, so
- * the same state gives the same bytes. */
+ * Written to "<path>.tmp", fsync'ed, renamed, and the directory fsync'ed.
+ * No object carries a time stamp, so the same state gives the same bytes.
+ *
+ * Nothing read is trusted (format 2): the root attribute format_version must
+ * be PL_CKPT_FORMAT, every dataset carries its FNV-1a checksum
+ * ("fnv1a64"), the scene fingerprint must match (src/checkpoint_scene.c),
+ * and every array is range-checked before the first kernel sees it
+ * (finite; positions inside the box; velocities within the fluid guard's
+ * one-cell-per-step bound; ids a permutation; counts >= 0). */
+#include <errno.h>
+#include <fcntl.h>
 #include <hdf5.h>
+#include <libgen.h>
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "checkpoint_h5.h"
 #include "peloid/colloid.h"
@@ -31,23 +44,80 @@ int pl_ckpt_write_1d(hid_t g, const char *name, hid_t type, const void *data, si
     hid_t ds = H5Dcreate2(g, name, type, sp, H5P_DEFAULT, dcpl, H5P_DEFAULT);
     H5Pclose(dcpl);
     herr_t st = ds < 0 ? -1 : n ? H5Dwrite(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) : 0;
-    if (ds >= 0) H5Dclose(ds);
+    long long sum = (long long)pl_ckpt_fnv1a(data, n * H5Tget_size(type));
+    if (st >= 0 && pl_ckpt_attr_i64(ds, "fnv1a64", &sum, 1, 1)) st = -1;
+    if (ds >= 0 && H5Dclose(ds) < 0) st = -1;
     H5Sclose(sp);
     return st < 0 ? -1 : 0;
 }
 
-int pl_ckpt_read_1d(hid_t g, const char *name, hid_t type, void *data, size_t n)
+int pl_ckpt_read_1d(hid_t g, const char *name, hid_t type, void *data, size_t n, const char *path,
+                    pl_err_t *err)
 {
+    char where[256];
+    if (H5Iget_name(g, where, sizeof where) < 0) where[0] = '\0';
+    const char *sep = strcmp(where, "/") ? "/" : "";
+    if (H5Lexists(g, name, H5P_DEFAULT) <= 0)
+        return pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint has no dataset %s%s%s", path, where, sep, name);
     hid_t ds = H5Dopen2(g, name, H5P_DEFAULT);
-    if (ds < 0) return -1;
+    if (ds < 0) return pl_err_set(err, PL_ERR_INPUT, "%s: cannot open dataset %s%s%s", path, where, sep, name);
     hid_t sp = H5Dget_space(ds);
     hsize_t dims[1] = {0};
     int ok = H5Sget_simple_extent_ndims(sp) == 1 && H5Sget_simple_extent_dims(sp, dims, NULL) == 1 &&
              dims[0] == n;
     herr_t st = !ok ? -1 : n ? H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) : 0;
+    long long sum = 0;
+    int has_sum = st >= 0 && pl_ckpt_attr_i64(ds, "fnv1a64", &sum, 1, 0) == 0;
     H5Sclose(sp);
     H5Dclose(ds);
+    if (!ok)
+        return pl_err_set(err, PL_ERR_INPUT, "%s: dataset %s%s%s has %llu elements, the scene needs %zu", path,
+                          where, sep, name, (unsigned long long)dims[0], n);
+    if (st < 0) return pl_err_set(err, PL_ERR_INPUT, "%s: dataset %s%s%s is unreadable", path, where, sep, name);
+    if (!has_sum)
+        return pl_err_set(err, PL_ERR_INPUT, "%s: dataset %s%s%s has no checksum (attribute fnv1a64)", path,
+                          where, sep, name);
+    uint64_t got = pl_ckpt_fnv1a(data, n * H5Tget_size(type));
+    if (got != (uint64_t)sum)
+        return pl_err_set(err, PL_ERR_INPUT,
+                          "%s: dataset %s%s%s fails its checksum (stored fnv1a64 %016llx, data %016llx): "
+                          "the checkpoint is corrupt", path, where, sep, name, (unsigned long long)sum,
+                          (unsigned long long)got);
+    return 0;
+}
+
+int pl_ckpt_attr_str(hid_t obj, const char *name, const char *value)
+{
+    hid_t t = H5Tcopy(H5T_C_S1);
+    H5Tset_size(t, strlen(value) + 1);
+    hid_t sp = H5Screate(H5S_SCALAR);
+    hid_t a = H5Acreate2(obj, name, t, sp, H5P_DEFAULT, H5P_DEFAULT);
+    herr_t st = a >= 0 ? H5Awrite(a, t, value) : -1;
+    if (a >= 0 && H5Aclose(a) < 0) st = -1;
+    H5Sclose(sp);
+    H5Tclose(t);
     return st < 0 ? -1 : 0;
+}
+
+char *pl_ckpt_attr_str_read(hid_t obj, const char *name)
+{
+    if (H5Aexists(obj, name) <= 0) return NULL;
+    hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
+    if (a < 0) return NULL;
+    hid_t t = H5Aget_type(a);
+    char *s = NULL;
+    size_t n = t >= 0 && H5Tget_class(t) == H5T_STRING && !H5Tis_variable_str(t) ? H5Tget_size(t) : 0;
+    if (n > 0 && n < ((size_t)1 << 24) && (s = malloc(n + 1))) {
+        if (H5Aread(a, t, s) < 0) {
+            free(s);
+            s = NULL;
+        } else {
+            s[n] = '\0';
+        }
+    }
+    if (t >= 0) H5Tclose(t);
+    H5Aclose(a);
+    return s;
 }
 
 int pl_ckpt_attr_i64(hid_t obj, const char *name, long long *v, int n, int write)
@@ -72,24 +142,53 @@ int pl_ckpt_attr_i64(hid_t obj, const char *name, long long *v, int n, int write
 
 hid_t pl_ckpt_group_create(hid_t f, const char *name) { return pl_h5_group(f, name); }
 
+/* fsync of the file, then of its directory: the rename that follows (or
+ * has just happened) survives a crash with the data it names. */
+int pl_fsync_path(const char *path, int dir)
+{
+    char buf[1100];
+    snprintf(buf, sizeof buf, "%s", path);
+    const char *p = dir ? dirname(buf) : buf;
+    int fd = open(p, O_RDONLY | (dir ? O_DIRECTORY : 0));
+    if (fd < 0) return -1;
+    int rc = fsync(fd);
+    int e = errno;
+    close(fd);
+    errno = e;
+    return rc;
+}
+
+static int write_failed(pl_err_t *err, const char *tmp, const char *what)
+{
+    char why[256];
+    pl_h5_error_text(why, sizeof why);
+    unlink(tmp); /* a partial file must not take the space the next try needs */
+    return pl_err_set(err, PL_ERR_IO, "%s: %s: %s", tmp, what, why);
+}
+
 int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
 {
     char tmp[1100];
     snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    pl_h5_quiet();
+    errno = 0;
     hid_t f = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-    if (f < 0) return pl_err_set(err, PL_ERR_IO, "%s: cannot create HDF5 file", tmp);
+    if (f < 0) return write_failed(err, tmp, "cannot create the checkpoint");
     const pl_fluid_t *fl = &sim->fluid;
     const pl_scene_t *sc = &sim->scene;
     long long meta[8] = {sim->step, sc->run.seed, (long long)fl->n, sc->box.cells[0], sc->box.cells[1],
                          sc->box.cells[2], fl->tracked, (long long)sizeof(pl_real)};
     long long ncol = sim->colloids ? (long long)sim->colloids->n : 0;
     long long samples = sim->field_samples;
-    int bad = pl_ckpt_attr_i64(f, "peloid_checkpoint", meta, 8, 1);
+    long long version = PL_CKPT_FORMAT;
+    int bad = pl_ckpt_attr_i64(f, "format_version", &version, 1, 1);
+    bad |= pl_ckpt_attr_i64(f, "peloid_checkpoint", meta, 8, 1);
     bad |= pl_ckpt_attr_i64(f, "field_samples", &samples, 1, 1);
     bad |= pl_ckpt_attr_i64(f, "colloid_count", &ncol, 1, 1);
     /* only with x/y walls, so that other checkpoints stay as they were */
     long long walls_xy = sc->box.walls_xy;
     if (walls_xy != PL_WALLS_NONE) bad |= pl_ckpt_attr_i64(f, "walls_xy", &walls_xy, 1, 1);
+    bad |= pl_ckpt_scene_write(f, sc);
     hid_t g = pl_ckpt_group_create(f, "fluid");
     for (int d = 0; d < 3 && g >= 0; ++d) {
         bad |= pl_ckpt_write_1d(g, rnames[d], H5_REAL, fl->r[d], fl->n);
@@ -107,13 +206,91 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
     bad |= pl_ckpt_coupling_write(f, sim);
     /* kT_cell of the last collision: the thermo row at the restart step */
     bad |= pl_ckpt_write_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, &sim->last_kT_meas, 1);
-    if (H5Fclose(f) < 0) bad = 1;
-    if (bad) return pl_err_set(err, PL_ERR_IO, "%s: writing the checkpoint failed", tmp);
-    if (rename(tmp, path)) return pl_err_set(err, PL_ERR_IO, "%s: cannot rename to %s", tmp, path);
+    if (bad) {
+        char why[256];
+        pl_h5_error_text(why, sizeof why); /* before H5Fclose clears the stack */
+        H5Fclose(f);
+        unlink(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: writing the checkpoint failed: %s", tmp, why);
+    }
+    if (H5Fclose(f) < 0) return write_failed(err, tmp, "writing the checkpoint failed");
+    if (pl_fsync_path(tmp, 0)) {
+        int e = errno;
+        unlink(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: fsync failed: %s", tmp, strerror(e));
+    }
+    if (rename(tmp, path)) {
+        int e = errno;
+        unlink(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: cannot rename to %s: %s", tmp, path, strerror(e));
+    }
+    if (pl_fsync_path(path, 1))
+        return pl_err_set(err, PL_ERR_IO, "%s: fsync of the directory failed: %s", path, strerror(errno));
+    return 0;
+}
+
+/* Range checks of the fluid state just read (serial, once per restart). */
+static int check_fluid(const pl_sim_t *sim, const char *path, pl_err_t *err)
+{
+    const pl_fluid_t *fl = &sim->fluid;
+    const pl_scene_t *sc = &sim->scene;
+    const double vmax = sim->guard_vmax; /* the fluid guard's speed bound */
+    for (size_t i = 0; i < fl->n; ++i) {
+        double v2 = 0.0;
+        for (int d = 0; d < 3; ++d) {
+            const double x = fl->r[d][i], v = fl->v[d][i], L = sc->box.cells[d];
+            v2 += v * v;
+            if (!(x >= 0.0 && x <= L))
+                return pl_err_set(err, PL_ERR_INPUT,
+                                  "%s: fluid/%s[%zu] = %.17g is outside the box [0, %g] (corrupt checkpoint)",
+                                  path, rnames[d], i, x, L);
+            if (!isfinite(v))
+                return pl_err_set(err, PL_ERR_INPUT, "%s: fluid/%s[%zu] = %g is not finite (corrupt checkpoint)",
+                                  path, vnames[d], i, v);
+            if (fl->tracked && !isfinite(fl->disp[d][i]))
+                return pl_err_set(err, PL_ERR_INPUT, "%s: fluid/%s[%zu] = %g is not finite", path, dnames[d], i,
+                                  fl->disp[d][i]);
+        }
+        if (!(v2 <= vmax * vmax))
+            return pl_err_set(err, PL_ERR_INPUT,
+                              "%s: fluid particle %zu has speed %.4g; bound %.4g (the fluid guard's, src/"
+                              "fluid_guard.c; corrupt checkpoint)", path, i, sqrt(v2), vmax);
+    }
+    if (fl->tracked) { /* ids: a permutation of 0 .. n-1 */
+        unsigned char *seen = calloc(fl->n ? fl->n : 1, 1);
+        if (!seen) return pl_err_set(err, PL_ERR_NOMEM, "out of memory checking fluid/id");
+        for (size_t i = 0; i < fl->n; ++i) {
+            uint32_t id = fl->id[i];
+            if (id >= fl->n || seen[id]) {
+                free(seen);
+                return pl_err_set(err, PL_ERR_INPUT, "%s: fluid/id[%zu] = %u is %s (corrupt checkpoint)", path, i,
+                                  id, id >= fl->n ? "out of range" : "a duplicate");
+            }
+            seen[id] = 1;
+        }
+        free(seen);
+    }
+    if (sim->field_acc) {
+        size_t L3 = (size_t)sc->box.cells[0] * (size_t)sc->box.cells[1] * (size_t)sc->box.cells[2];
+        for (size_t c = 0; c < L3; ++c)
+            if (sim->field_acc[c] < 0)
+                return pl_err_set(err, PL_ERR_INPUT, "%s: field_accumulator count of cell %zu is negative (%lld)",
+                                  path, c, (long long)sim->field_acc[c]);
+    }
+    if (sim->field_samples < 0 || sim->field_samples > sim->step)
+        return pl_err_set(err, PL_ERR_INPUT, "%s: field_samples = %lld; allowed 0 .. step %lld", path,
+                          sim->field_samples, sim->step);
+    if (!(sim->last_kT_meas >= 0.0 && isfinite(sim->last_kT_meas)))
+        return pl_err_set(err, PL_ERR_INPUT, "%s: kT_cell = %g; allowed finite >= 0", path, sim->last_kT_meas);
     return 0;
 }
 
 int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err)
+{
+    return pl_checkpoint_restart(sim, path, NULL, err);
+}
+
+int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, pl_err_t *err)
 {
     H5E_auto2_t old_fn;
     void *old_data;
@@ -133,6 +310,15 @@ int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err)
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: not a peloid checkpoint", path);
         goto close;
     }
+    long long version = 1; /* files without the attribute: format 1 */
+    if (H5Aexists(f, "format_version") > 0 && pl_ckpt_attr_i64(f, "format_version", &version, 1, 0))
+        version = -1;
+    if (version != PL_CKPT_FORMAT) {
+        rc = pl_err_set(err, PL_ERR_INPUT,
+                        "%s: checkpoint format version %lld; this peloid reads version %d only (format 1 had "
+                        "no checksums and no scene fingerprint)", path, version, PL_CKPT_FORMAT);
+        goto close;
+    }
     if (meta[1] != sc->run.seed || meta[2] != (long long)fl->n || meta[3] != sc->box.cells[0] ||
         meta[4] != sc->box.cells[1] || meta[5] != sc->box.cells[2] || meta[6] != fl->tracked ||
         meta[7] != (long long)sizeof(pl_real)) {
@@ -141,6 +327,11 @@ int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err)
                         "box %lldx%lldx%lld, tracked %lld/%d, real size %lld/%zu)",
                         path, meta[1], sc->run.seed, meta[2], fl->n, meta[3], meta[4], meta[5], meta[6],
                         fl->tracked, meta[7], sizeof(pl_real));
+        goto close;
+    }
+    if (meta[0] < 0) {
+        rc = pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint step %lld; allowed >= 0 (corrupt checkpoint)", path,
+                        meta[0]);
         goto close;
     }
     /* fluid-only checkpoints written before colloids existed have no count */
@@ -169,38 +360,41 @@ int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err)
                         wn[sc->box.walls_xy]);
         goto close;
     }
+    if ((rc = pl_ckpt_scene_check(f, sc, changed, path, err))) goto close;
     sim->step = meta[0];
-    int bad = pl_ckpt_attr_i64(f, "field_samples", &sim->field_samples, 1, 0);
-    hid_t g = H5Gopen2(f, "fluid", H5P_DEFAULT);
-    for (int d = 0; d < 3 && g >= 0; ++d) {
-        bad |= pl_ckpt_read_1d(g, rnames[d], H5_REAL, fl->r[d], fl->n);
-        bad |= pl_ckpt_read_1d(g, vnames[d], H5_REAL, fl->v[d], fl->n);
-        if (fl->tracked) bad |= pl_ckpt_read_1d(g, dnames[d], H5T_NATIVE_DOUBLE, fl->disp[d], fl->n);
+    if (pl_ckpt_attr_i64(f, "field_samples", &sim->field_samples, 1, 0)) {
+        rc = pl_err_set(err, PL_ERR_INPUT, "%s: unreadable attribute field_samples", path);
+        goto close;
     }
-    if (fl->tracked && g >= 0) bad |= pl_ckpt_read_1d(g, "id", H5T_NATIVE_UINT32, fl->id, fl->n);
-    if (g >= 0) H5Gclose(g);
-    else bad = 1;
-    if (sim->field_acc) {
+    hid_t g = H5Lexists(f, "fluid", H5P_DEFAULT) > 0 ? H5Gopen2(f, "fluid", H5P_DEFAULT) : -1;
+    if (g < 0) {
+        rc = pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint has no /fluid group", path);
+        goto close;
+    }
+    for (int d = 0; d < 3 && !rc; ++d) {
+        rc = pl_ckpt_read_1d(g, rnames[d], H5_REAL, fl->r[d], fl->n, path, err);
+        if (!rc) rc = pl_ckpt_read_1d(g, vnames[d], H5_REAL, fl->v[d], fl->n, path, err);
+        if (!rc && fl->tracked) rc = pl_ckpt_read_1d(g, dnames[d], H5T_NATIVE_DOUBLE, fl->disp[d], fl->n, path, err);
+    }
+    if (!rc && fl->tracked) rc = pl_ckpt_read_1d(g, "id", H5T_NATIVE_UINT32, fl->id, fl->n, path, err);
+    H5Gclose(g);
+    if (!rc && sim->field_acc) {
         size_t L3 = (size_t)sc->box.cells[0] * (size_t)sc->box.cells[1] * (size_t)sc->box.cells[2];
         if (H5Lexists(f, "field_accumulator", H5P_DEFAULT) > 0)
-            bad |= pl_ckpt_read_1d(f, "field_accumulator", H5T_NATIVE_INT64, sim->field_acc, 4 * L3);
+            rc = pl_ckpt_read_1d(f, "field_accumulator", H5T_NATIVE_INT64, sim->field_acc, 4 * L3, path, err);
         else
             sim->field_samples = 0;
     }
-    if (bad) {
-        rc = pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint is incomplete or corrupt", path);
-        goto close;
-    }
-    if (sim->colloids) rc = pl_ckpt_colloid_read(f, sim->colloids, sc, path, err);
+    if (!rc && H5Lexists(f, "kT_cell", H5P_DEFAULT) > 0)
+        rc = pl_ckpt_read_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, &sim->last_kT_meas, 1, path, err);
+    if (!rc) rc = check_fluid(sim, path, err);
+    if (!rc && sim->colloids) rc = pl_ckpt_colloid_read(f, sim->colloids, sc, path, err);
     /* the colloid set-up the reader redoes knows nothing of the coupling:
      * coupled colloids exchange energy with the fluid, no NVE drift guard
      * (as pl_coupling_create decided) */
     if (!rc && sim->colloids && sim->coupling && sim->coupling->method != PL_COUPLE_NONE)
         sim->colloids->nve = 0;
     if (!rc) rc = pl_ckpt_coupling_read(f, sim, path, err);
-    if (!rc && H5Lexists(f, "kT_cell", H5P_DEFAULT) > 0 &&
-        pl_ckpt_read_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, &sim->last_kT_meas, 1))
-        rc = pl_err_set(err, PL_ERR_INPUT, "%s: unreadable kT_cell", path);
 close:
     H5Fclose(f);
 out:

@@ -11,7 +11,11 @@
  * images only, recomputed bitwise by the set-up on reading) and scratch
  * (guard maxima, linked cells, unwrapped heights) that the next force
  * evaluation rebuilds. */
+#include <math.h>
+#include <stdio.h>
+
 #include "checkpoint_h5.h"
+#include "peloid/colloid_kernels.h"
 
 enum { NPOS = 16, NFORCE = 6, NIMG = 3 };
 
@@ -67,6 +71,42 @@ int pl_ckpt_colloid_write(hid_t f, const pl_colloid_t *c)
     return bad ? -1 : 0;
 }
 
+/* Range checks of the arrays read before the set-up: finite, inside the
+ * box (periodic or walled), radius, mass and inertia positive, quaternion
+ * of unit norm, image counters within PL_COLLOID_IMAGE_MAX. */
+static int check_state(const pl_colloid_t *c, const darr_t p[NPOS], int32_t *const img[NIMG], const char *path,
+                       pl_err_t *err)
+{
+    for (size_t i = 0; i < c->n; ++i) {
+        for (int k = 0; k < NPOS; ++k)
+            if (!isfinite(p[k].a[i]))
+                return pl_err_set(err, PL_ERR_INPUT, "%s: colloids/%s[%zu] = %g is not finite (corrupt checkpoint)",
+                                  path, p[k].name, i, p[k].a[i]);
+        for (int d = 0; d < 3; ++d)
+            if (!(p[d].a[i] >= 0.0 && p[d].a[i] <= c->box[d]))
+                return pl_err_set(err, PL_ERR_INPUT,
+                                  "%s: colloids/%s[%zu] = %.17g is outside the box [0, %g] (corrupt checkpoint)",
+                                  path, p[d].name, i, p[d].a[i], c->box[d]);
+        for (int k = 13; k < NPOS; ++k) /* rad, mass, inertia */
+            if (!(p[k].a[i] > 0.0))
+                return pl_err_set(err, PL_ERR_INPUT, "%s: colloids/%s[%zu] = %g; allowed > 0 (corrupt checkpoint)",
+                                  path, p[k].name, i, p[k].a[i]);
+        const double qn = c->q0[i] * c->q0[i] + c->q1[i] * c->q1[i] + c->q2[i] * c->q2[i] + c->q3[i] * c->q3[i];
+        if (!(fabs(qn - 1.0) < 1e-6))
+            return pl_err_set(err, PL_ERR_INPUT,
+                              "%s: colloids/q0..q3[%zu] has |q|^2 = %.17g; allowed 1 +- 1e-6 (corrupt checkpoint)",
+                              path, i, qn);
+        for (int k = 0; k < NIMG; ++k)
+            if (img[k][i] > PL_COLLOID_IMAGE_MAX || img[k][i] < -PL_COLLOID_IMAGE_MAX)
+                return pl_err_set(err, PL_ERR_INPUT, "%s: colloids/%s[%zu] = %d; allowed |%s| <= %d (corrupt "
+                                  "checkpoint)", path, img_names[k], i, img[k][i], img_names[k],
+                                  PL_COLLOID_IMAGE_MAX);
+    }
+    if (c->md_step < 0)
+        return pl_err_set(err, PL_ERR_INPUT, "%s: colloids/md_step = %lld; allowed >= 0", path, c->md_step);
+    return 0;
+}
+
 int pl_ckpt_colloid_read(hid_t f, pl_colloid_t *c, const pl_scene_t *scene, const char *path,
                          pl_err_t *err)
 {
@@ -78,19 +118,25 @@ int pl_ckpt_colloid_read(hid_t f, pl_colloid_t *c, const pl_scene_t *scene, cons
     pos_arrays(c, p);
     force_arrays(c, fo);
     image_arrays(c, img);
-    int bad = 0;
-    for (int k = 0; k < NPOS; ++k) bad |= pl_ckpt_read_1d(g, p[k].name, H5T_NATIVE_DOUBLE, p[k].a, n);
-    for (int k = 0; k < NIMG; ++k) bad |= pl_ckpt_read_1d(g, img_names[k], H5T_NATIVE_INT32, img[k], n);
-    bad |= pl_ckpt_read_1d(g, "md_step", H5T_NATIVE_LLONG, &c->md_step, 1);
+    int rc = 0;
+    for (int k = 0; k < NPOS && !rc; ++k) rc = pl_ckpt_read_1d(g, p[k].name, H5T_NATIVE_DOUBLE, p[k].a, n, path, err);
+    for (int k = 0; k < NIMG && !rc; ++k)
+        rc = pl_ckpt_read_1d(g, img_names[k], H5T_NATIVE_INT32, img[k], n, path, err);
+    if (!rc) rc = pl_ckpt_read_1d(g, "md_step", H5T_NATIVE_LLONG, &c->md_step, 1, path, err);
+    if (!rc) rc = check_state(c, p, img, path, err);
     /* cells sized for the restored radii; forces, energies, e0 recomputed ... */
-    if (!bad && pl_colloid_setup(c, scene, err)) {
-        H5Gclose(g);
-        return err->code;
-    }
+    if (!rc) rc = pl_colloid_setup(c, scene, err);
     /* ... and forces, torques, e0 replaced by the stored ones */
-    for (int k = 0; k < NFORCE; ++k) bad |= pl_ckpt_read_1d(g, fo[k].name, H5T_NATIVE_DOUBLE, fo[k].a, n);
-    bad |= pl_ckpt_read_1d(g, "e0", H5T_NATIVE_DOUBLE, &c->e0, 1);
+    for (int k = 0; k < NFORCE && !rc; ++k)
+        rc = pl_ckpt_read_1d(g, fo[k].name, H5T_NATIVE_DOUBLE, fo[k].a, n, path, err);
+    if (!rc) rc = pl_ckpt_read_1d(g, "e0", H5T_NATIVE_DOUBLE, &c->e0, 1, path, err);
+    for (size_t i = 0; i < n && !rc; ++i)
+        for (int k = 0; k < NFORCE && !rc; ++k)
+            if (!isfinite(fo[k].a[i]))
+                rc = pl_err_set(err, PL_ERR_INPUT, "%s: colloids/%s[%zu] = %g is not finite (corrupt checkpoint)",
+                                path, fo[k].name, i, fo[k].a[i]);
+    if (!rc && !isfinite(c->e0))
+        rc = pl_err_set(err, PL_ERR_INPUT, "%s: colloids/e0 = %g is not finite (corrupt checkpoint)", path, c->e0);
     H5Gclose(g);
-    if (bad) return pl_err_set(err, PL_ERR_INPUT, "%s: /colloids in the checkpoint is incomplete or corrupt", path);
-    return 0;
+    return rc;
 }

@@ -11,6 +11,8 @@
  * coupling II's colloid binning and saved velocities, the potential
  * coupling's near list, its forces and epot_cf (recomputed at the start of
  * each MD stage), and fluid_accel (from the scene's masses). */
+#include <math.h>
+
 #include "checkpoint_h5.h"
 #include "peloid/coupling.h"
 #include "peloid/sim.h"
@@ -39,25 +41,36 @@ int pl_ckpt_coupling_write(hid_t f, const pl_sim_t *sim)
 int pl_ckpt_coupling_read(hid_t f, pl_sim_t *sim, const char *path, pl_err_t *err)
 {
     const pl_scene_t *sc = &sim->scene;
-    if (sc->box.walls_z != PL_WALLS_NONE &&
-        pl_ckpt_read_1d(f, "wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[0][0], 6))
+    if (sc->box.walls_z != PL_WALLS_NONE && H5Lexists(f, "wall_impulse", H5P_DEFAULT) <= 0)
         return pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint has no wall_impulse (the scene has z walls)", path);
-    if (sc->box.walls_xy != PL_WALLS_NONE &&
-        pl_ckpt_read_1d(f, "side_wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[2][0], 3))
+    if (sc->box.walls_z != PL_WALLS_NONE &&
+        pl_ckpt_read_1d(f, "wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[0][0], 6, path, err))
+        return err->code;
+    if (sc->box.walls_xy != PL_WALLS_NONE && H5Lexists(f, "side_wall_impulse", H5P_DEFAULT) <= 0)
         return pl_err_set(err, PL_ERR_INPUT,
                           "%s: checkpoint has no side_wall_impulse (the scene has x/y walls; a checkpoint from "
                           "before peloid counted their momentum cannot continue it)",
                           path);
+    if (sc->box.walls_xy != PL_WALLS_NONE &&
+        pl_ckpt_read_1d(f, "side_wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[2][0], 3, path, err))
+        return err->code;
+    for (int k = 0; k < 9; ++k)
+        if (!isfinite(sim->wall_impulse[k / 3][k % 3]))
+            return pl_err_set(err, PL_ERR_INPUT, "%s: wall impulse %d is not finite (corrupt checkpoint)", path, k);
     pl_coupling_t *cp = sim->coupling;
     if (!cp) return 0;
     hid_t g = H5Lexists(f, "coupling", H5P_DEFAULT) > 0 ? H5Gopen2(f, "coupling", H5P_DEFAULT) : -1;
     if (g < 0) return pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint has no /coupling group (the scene has a coupling)", path);
     unsigned long long cnt[3];
     double pin[7];
-    int bad = pl_ckpt_read_1d(g, "counters", H5T_NATIVE_ULLONG, cnt, 3);
-    bad |= pl_ckpt_read_1d(g, "pinned", H5T_NATIVE_DOUBLE, pin, 7);
+    int rc = pl_ckpt_read_1d(g, "counters", H5T_NATIVE_ULLONG, cnt, 3, path, err);
+    if (!rc) rc = pl_ckpt_read_1d(g, "pinned", H5T_NATIVE_DOUBLE, pin, 7, path, err);
     H5Gclose(g);
-    if (bad) return pl_err_set(err, PL_ERR_INPUT, "%s: /coupling in the checkpoint is incomplete or corrupt", path);
+    if (rc) return rc;
+    for (int k = 0; k < 7; ++k)
+        if (!isfinite(pin[k]) || (k == 6 && pin[k] < 0.0))
+            return pl_err_set(err, PL_ERR_INPUT, "%s: /coupling/pinned[%d] = %g is out of range (corrupt checkpoint)",
+                              path, k, pin[k]);
     cp->events = cnt[0];
     cp->truncations = cnt[1];
     cp->near_total = cnt[2];

@@ -6,15 +6,41 @@
 #define PELOID_CHECKPOINT_H5_H
 
 #include <hdf5.h>
+#include <stdint.h>
 
 #include "peloid/colloid.h"
 #include "peloid/error.h"
 #include "peloid/scene.h"
 
-/* 1-d dataset `name` of n elements under g; 0 or -1. */
+/* Format of the files pl_checkpoint_write writes (root attribute
+ * "format_version"); the reader refuses any other.  2: per-dataset
+ * checksums and the scene fingerprint. */
+enum { PL_CKPT_FORMAT = 2 };
+
+/* 64-bit FNV-1a hash of n bytes (the per-dataset checksum). */
+uint64_t pl_ckpt_fnv1a(const void *data, size_t n);
+
+/* 1-d dataset `name` of n elements under g, with the attribute "fnv1a64":
+ * the FNV-1a hash of its n elements' bytes in memory; 0 or -1.  type must be
+ * a native type (file and memory bytes are then the same). */
 int pl_ckpt_write_1d(hid_t g, const char *name, hid_t type, const void *data, size_t n);
-/* Reads dataset `name`; -1 if it is missing, not 1-d or not of length n. */
-int pl_ckpt_read_1d(hid_t g, const char *name, hid_t type, void *data, size_t n);
+/* Reads dataset `name` and verifies its checksum; on failure sets err
+ * (PL_ERR_INPUT, naming path and dataset: missing, not 1-d, not of length n,
+ * unreadable, or checksum mismatch) and returns its code. */
+int pl_ckpt_read_1d(hid_t g, const char *name, hid_t type, void *data, size_t n, const char *path,
+                    pl_err_t *err);
+/* String attribute (write: 0 or -1; read: malloc'ed text or NULL). */
+int pl_ckpt_attr_str(hid_t obj, const char *name, const char *value);
+char *pl_ckpt_attr_str_read(hid_t obj, const char *name);
+
+/* Scene fingerprint (src/checkpoint_scene.c): writes the root attributes
+ * scene_keys and scene_fingerprint; 0 or -1. */
+int pl_ckpt_scene_write(hid_t f, const pl_scene_t *scene);
+/* PL_ERR_INPUT listing every physics key whose value differs between the
+ * checkpoint and `scene` and is not named in `changed` (comma separated,
+ * NULL: none). */
+int pl_ckpt_scene_check(hid_t f, const pl_scene_t *scene, const char *changed, const char *path,
+                        pl_err_t *err);
 /* Writes (write != 0) or reads an n-element int64 attribute; a read of an
  * attribute with another element count fails (-1). */
 int pl_ckpt_attr_i64(hid_t obj, const char *name, long long *v, int n, int write);
@@ -24,7 +50,9 @@ hid_t pl_ckpt_group_create(hid_t f, const char *name);
 /* Writes group /colloids (the complete colloid state: see the .c). */
 int pl_ckpt_colloid_write(hid_t f, const pl_colloid_t *c);
 /* Reads group /colloids into c, created from `scene` with the same count
- * (the caller checked it).  PL_ERR_INPUT if the group is incomplete. */
+ * (the caller checked it).  PL_ERR_INPUT if the group is incomplete, a
+ * checksum fails or a value is out of range (non-finite, outside the box,
+ * non-positive radius or mass, image counter beyond PL_COLLOID_IMAGE_MAX). */
 int pl_ckpt_colloid_read(hid_t f, pl_colloid_t *c, const pl_scene_t *scene, const char *path,
                          pl_err_t *err);
 

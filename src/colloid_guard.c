@@ -7,6 +7,8 @@
  *   - a dissipative rate zeta/m_red with dt zeta/m_red > 0.5 (explicit
  *     damping overshoots; the friction would reverse the relative velocity)
  *   - NaN/Inf in position, velocity, force
+ *   - an image counter beyond PL_COLLOID_IMAGE_MAX (the drift saturates it
+ *     before its int32 could overflow)
  *   - drift of the total energy in undamped NVE runs beyond
  *     colloids.max_energy_drift kT per colloid (Hecht Sec. IX.A)
  * Each message names step, particles, quantity, bound and the parameter to
@@ -15,6 +17,7 @@
 #include <math.h>
 
 #include "peloid/colloid.h"
+#include "peloid/colloid_kernels.h"
 
 static size_t argmax(const double *a, size_t n)
 {
@@ -38,6 +41,16 @@ int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err)
                               "velocity or force (x=%g v=%g f=%g); bound: finite; reduce the time "
                               "step (srd.dt or raise colloids.substeps)",
                               st, i, c->x[i], c->vx[i], c->fx[i]);
+    }
+    for (size_t i = 0; i < n; ++i) {
+        const int32_t im[3] = {c->ix[i], c->iy[i], c->iz[i]};
+        for (int d = 0; d < 3; ++d)
+            if (im[d] > PL_COLLOID_IMAGE_MAX || im[d] < -PL_COLLOID_IMAGE_MAX)
+                return pl_err_set(err, PL_ERR_GUARD,
+                                  "guard image: MD step %lld: colloid %zu crossed the periodic box more than "
+                                  "%d times along %c (image counter int32); bound %d; the colloid is running "
+                                  "away: lower colloids.gravity or srd.dt, or raise colloids.substeps",
+                                  st, i, PL_COLLOID_IMAGE_MAX, "xyz"[d], PL_COLLOID_IMAGE_MAX);
     }
     size_t w = argmax(c->g_overlap, n);
     if (c->g_overlap[w] > c->max_overlap)

@@ -7,6 +7,7 @@
  *   /particles/colloids/radius, mass  (time independent, N)
  * Written to PATH.tmp and renamed to PATH on close (DESIGN.md: outputs are
  * written atomically); an existing PATH is refused unless overwrite. */
+#include <errno.h>
 #include <hdf5.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,6 +16,7 @@
 
 #include "peloid/colloid.h"
 #include "peloid/h5.h"
+#include "peloid/io.h"
 
 enum { NTS = 5 };
 static const char *const TS_NAMES[NTS] = {"position", "velocity", "orientation", "angular_velocity", "image"};
@@ -41,13 +43,31 @@ static hid_t ext_dataset(hid_t g, const char *name, hid_t type, int rank, hsize_
     return d;
 }
 
-static void fixed_1d(hid_t g, const char *name, const double *v, hsize_t n)
+static int fixed_1d(hid_t g, const char *name, const double *v, hsize_t n)
 {
     hid_t sp = H5Screate_simple(1, &n, NULL);
     hid_t d = H5Dcreate2(g, name, H5T_NATIVE_DOUBLE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v);
-    H5Dclose(d);
+    int bad = d < 0 || H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) < 0;
+    if (d >= 0 && H5Dclose(d) < 0) bad = 1;
     H5Sclose(sp);
+    return bad ? -1 : 0;
+}
+
+/* Closes every handle of t (none stays open for HDF5's exit handler) and
+ * frees it; 0 or -1. */
+static int traj_release(pl_colloid_traj_t *t)
+{
+    int bad = 0;
+    for (int k = 0; k < NTS; ++k) {
+        if (t->val[k] > 0 && H5Dclose(t->val[k]) < 0) bad = 1;
+        if (t->step[k] > 0 && H5Dclose(t->step[k]) < 0) bad = 1;
+        if (t->time[k] > 0 && H5Dclose(t->time[k]) < 0) bad = 1;
+    }
+    if (t->file > 0 && H5Fclose(t->file) < 0) bad = 1;
+    free(t->buf);
+    free(t->ibuf);
+    free(t);
+    return bad ? -1 : 0;
 }
 
 int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, int overwrite,
@@ -62,15 +82,18 @@ int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, int overwrite,
     t->n = c->n;
     t->buf = malloc((c->n ? c->n : 1) * 4 * sizeof(double));
     t->ibuf = malloc((c->n ? c->n : 1) * 3 * sizeof(int));
-    H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+    pl_h5_quiet();
+    errno = 0;
     t->file = H5Fcreate(t->tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     if (t->file < 0 || !t->buf || !t->ibuf) {
-        free(t->buf);
-        free(t->ibuf);
-        free(t);
-        return pl_err_set(err, PL_ERR_IO, "%s: cannot create HDF5 file", path);
+        char why[256];
+        pl_h5_error_text(why, sizeof why);
+        int oom = !t->buf || !t->ibuf;
+        traj_release(t);
+        return oom ? pl_err_set(err, PL_ERR_NOMEM, "out of memory") :
+                     pl_err_set(err, PL_ERR_IO, "%s: cannot create HDF5 file: %s", t->tmp, why);
     }
-    pl_h5_h5md_header(t->file);
+    int bad = pl_h5_h5md_header(t->file);
     hid_t sp, a;
     hid_t parts = H5Gcreate2(t->file, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     hid_t col = H5Gcreate2(parts, "colloids", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
@@ -94,20 +117,29 @@ int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, int overwrite,
     H5Aclose(a);
     H5Tclose(st);
     H5Sclose(sp);
-    fixed_1d(box, "edges", c->box, 3);
+    bad |= fixed_1d(box, "edges", c->box, 3);
     H5Gclose(box);
-    fixed_1d(col, "radius", c->rad, c->n);
-    fixed_1d(col, "mass", c->mass, c->n);
+    bad |= fixed_1d(col, "radius", c->rad, c->n);
+    bad |= fixed_1d(col, "mass", c->mass, c->n);
     for (int k = 0; k < NTS; ++k) {
         hid_t tg = H5Gcreate2(col, TS_NAMES[k], H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
         hsize_t w = k == 2 ? 4 : 3;
         t->val[k] = ext_dataset(tg, "value", k == 4 ? H5T_NATIVE_INT : H5T_NATIVE_DOUBLE, 3, c->n, w);
         t->step[k] = ext_dataset(tg, "step", H5T_NATIVE_LLONG, 1, 0, 0);
         t->time[k] = ext_dataset(tg, "time", H5T_NATIVE_DOUBLE, 1, 0, 0);
-        H5Gclose(tg);
+        bad |= tg < 0 || t->val[k] < 0 || t->step[k] < 0 || t->time[k] < 0;
+        if (tg >= 0) H5Gclose(tg);
     }
-    H5Gclose(col);
-    H5Gclose(parts);
+    if (col >= 0) H5Gclose(col);
+    if (parts >= 0) H5Gclose(parts);
+    if (bad || H5Fflush(t->file, H5F_SCOPE_GLOBAL) < 0) {
+        char why[256], tmp[1100];
+        pl_h5_error_text(why, sizeof why);
+        snprintf(tmp, sizeof tmp, "%s", t->tmp);
+        traj_release(t);
+        unlink(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: cannot write the trajectory header: %s", path, why);
+    }
     *out = t;
     return 0;
 }
@@ -147,24 +179,31 @@ int pl_colloid_traj_write(pl_colloid_traj_t *t, const pl_colloid_t *c, long long
         bad |= append(t->time[k], H5T_NATIVE_DOUBLE, 1, t->nframes, 1, 1, &time);
     }
     t->nframes++;
-    if (bad) return pl_err_set(err, PL_ERR_IO, "%s: HDF5 write failed at step %lld", t->tmp, step);
-    H5Fflush(t->file, H5F_SCOPE_GLOBAL);
+    if (!bad) {
+        errno = 0;
+        bad = H5Fflush(t->file, H5F_SCOPE_GLOBAL) < 0;
+    }
+    if (bad) {
+        char why[256];
+        pl_h5_error_text(why, sizeof why);
+        return pl_err_set(err, PL_ERR_IO, "%s: writing the frame of step %lld failed: %s", t->tmp, step, why);
+    }
     return 0;
 }
 
 int pl_colloid_traj_close(pl_colloid_traj_t *t, pl_err_t *err)
 {
     if (!t) return 0;
-    for (int k = 0; k < NTS; ++k) {
-        H5Dclose(t->val[k]);
-        H5Dclose(t->step[k]);
-        H5Dclose(t->time[k]);
+    char tmp[1100], path[1024], why[256] = "";
+    snprintf(tmp, sizeof tmp, "%s", t->tmp);
+    snprintf(path, sizeof path, "%s", t->path);
+    errno = 0;
+    int rc = traj_release(t);
+    if (rc) pl_h5_error_text(why, sizeof why);
+    else if (pl_fsync_path(tmp, 0) || rename(tmp, path) || pl_fsync_path(path, 1)) {
+        rc = -1;
+        snprintf(why, sizeof why, "%s", strerror(errno));
     }
-    int rc = H5Fclose(t->file) < 0 ? -1 : 0;
-    if (!rc && rename(t->tmp, t->path) != 0) rc = -1;
-    if (rc) pl_err_set(err, PL_ERR_IO, "%s: cannot finish the trajectory", t->path);
-    free(t->buf);
-    free(t->ibuf);
-    free(t);
+    if (rc) pl_err_set(err, PL_ERR_IO, "%s: cannot finish the trajectory: %s", path, why);
     return rc ? PL_ERR_IO : 0;
 }

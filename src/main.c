@@ -7,6 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "peloid/h5.h"
 #include "peloid/run.h"
 #include "peloid/scene.h"
 
@@ -14,11 +15,15 @@ static const char *const usage =
     "usage: peloid COMMAND [ARGS]\n"
     "\n"
     "commands:\n"
-    "  run SCENE [--out DIR] [--steps N] [--threads N] [--restart CHECKPOINT] [--force]\n"
+    "  run SCENE [--out DIR] [--steps N] [--threads N] [--restart CHECKPOINT]\n"
+    "            [--restart-changed KEY[,KEY...]] [--force]\n"
     "        run a scene; writes DIR/{thermo.tsv, summary.json, checkpoint.h5, scene.cfg\n"
     "        [, fields.h5]}.  DIR defaults to out/<scene name>; an existing DIR is\n"
     "        refused unless --force.  --steps N runs N steps (default: the scene's\n"
-    "        steps); --restart continues from a checkpoint of the same scene.\n"
+    "        steps); --restart continues from a checkpoint of the same scene: every\n"
+    "        physics key (all but name, steps, output.*, colloids.trajectory_interval\n"
+    "        and the colloid guard bounds) must equal the checkpoint's, unless named\n"
+    "        in --restart-changed (e.g. --restart-changed srd.dt,thermostat.type).\n"
     "        --threads N sets the OpenMP thread count (results do not depend on it).\n"
     "  check SCENE      validate a scene without running it\n"
     "  params SCENE [--json] [--strict]\n"
@@ -53,7 +58,8 @@ static int parse_ll(const char *s, long long lo, long long *out)
 
 static int cmd_run(int argc, char **argv)
 {
-    pl_run_opts_t o = {NULL, -1, 0, NULL, 0, isatty(2)};
+    pl_run_opts_t o = {.out_dir = NULL, .steps = -1, .threads = 0, .restart = NULL, .force = 0,
+                       .progress = isatty(2), .restart_changed = NULL};
     const char *scene_path = NULL;
     char msg[256];
     for (int i = 0; i < argc; ++i) {
@@ -63,6 +69,7 @@ static int cmd_run(int argc, char **argv)
         if (!strcmp(a, "--force")) o.force = 1;
         else if (!strcmp(a, "--out") && has) o.out_dir = argv[++i];
         else if (!strcmp(a, "--restart") && has) o.restart = argv[++i];
+        else if (!strcmp(a, "--restart-changed") && has) o.restart_changed = argv[++i];
         else if (!strcmp(a, "--steps") && has) {
             if (parse_ll(argv[++i], 0, &o.steps)) {
                 snprintf(msg, sizeof msg, "--steps %s: expected an integer >= 0", argv[i]);
@@ -130,6 +137,7 @@ static int cmd_scene(int argc, char **argv, int params)
 int main(int argc, char **argv)
 {
     gsl_set_error_handler_off();
+    pl_h5_init_process();
     if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
         fputs(usage, argc < 2 ? stderr : stdout);
         return argc < 2 ? PL_ERR_INPUT : 0;

@@ -2,6 +2,8 @@
  * summary.  Order matters for "nothing written on bad input": the scene is
  * validated, the sim built and any restart checkpoint read before the output
  * directory is created. */
+#include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
@@ -17,6 +19,7 @@
 
 typedef struct {
     char dir[1024];
+    char thermo_path[1100];
     FILE *thermo;
     double t_start, t_last_row;
     long long step_last_row;
@@ -52,7 +55,10 @@ static int reflecting(const pl_sim_t *sim)
     return sim->coupling && sim->coupling->method == PL_COUPLE_HECHT1;
 }
 
-static void thermo_row(writer_t *w, const pl_sim_t *sim)
+/* Appends one row and flushes it: PL_ERR_IO naming the file and the system
+ * error when the row did not reach the file (a full disk must not lose rows
+ * silently). */
+static int thermo_row(writer_t *w, const pl_sim_t *sim, pl_err_t *err)
 {
     pl_fluid_obs_t o;
     double kT;
@@ -97,10 +103,16 @@ static void thermo_row(writer_t *w, const pl_sim_t *sim)
         fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t", cp->impulse[0] * s, cp->impulse[1] * s,
                 cp->impulse[2] * s);
     }
-    fprintf(w->thermo, "%.4g\n", rate);
-    fflush(w->thermo);
+    errno = 0;
+    int bad = fprintf(w->thermo, "%.4g\n", rate) < 0;
+    bad |= fflush(w->thermo) != 0;
+    bad |= ferror(w->thermo) != 0;
     w->t_last_row = now;
     w->step_last_row = sim->step;
+    if (bad)
+        return pl_err_set(err, PL_ERR_IO, "%s: writing the row of step %lld failed: %s", w->thermo_path, sim->step,
+                          errno ? strerror(errno) : "stream error");
+    return 0;
 }
 
 static void progress(const pl_sim_t *sim, long long first, long long last, double t0)
@@ -178,6 +190,13 @@ static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *e
     if (!f) return PL_ERR_IO;
     fprintf(f, "# effective scene of %s (every key, defaults filled in)\n", sc->path);
     pl_scene_print(sc, f);
+    errno = 0;
+    if (fflush(f) || ferror(f) || fsync(fileno(f))) { /* name the system error */
+        int e = errno;
+        fclose(f);
+        unlink(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: write failed: %s", tmp, e ? strerror(e) : "stream error");
+    }
     return pl_file_commit(f, tmp, path, err);
 }
 
@@ -188,14 +207,20 @@ static int loop(pl_sim_t *sim, writer_t *w, const pl_run_opts_t *o, long long la
     w->t_start = w->t_last_row = omp_get_wtime();
     w->step_last_row = first;
     double t_progress = w->t_start;
-    if (first == 0 || first % sc->output.thermo_interval == 0) thermo_row(w, sim);
+    int rc = 0;
+    if ((first == 0 || first % sc->output.thermo_interval == 0) && (rc = thermo_row(w, sim, err))) return rc;
     while (sim->step < last) {
-        int rc = pl_sim_step(sim, err);
+        rc = pl_sim_step(sim, err);
         if (rc) return rc;
-        if (sim->step % sc->output.thermo_interval == 0 || sim->step == last) thermo_row(w, sim);
-        if (sc->output.checkpoint_interval > 0 && sim->step % sc->output.checkpoint_interval == 0 &&
-            (rc = write_checkpoint(w, sim, err)))
+        const int row = sim->step % sc->output.thermo_interval == 0 || sim->step == last;
+        const int ckpt = sc->output.checkpoint_interval > 0 && sim->step % sc->output.checkpoint_interval == 0;
+        /* the guard's particle scan before anything is written (the stage
+         * scanned this state already on multiples of its interval) */
+        if ((row || ckpt) && sim->fluid.n > 0 && sim->step % PL_FLUID_GUARD_SCAN_INTERVAL != 0 &&
+            (rc = pl_fluid_guard_check(sim, sim->step, 1, err)))
             return rc;
+        if (row && (rc = thermo_row(w, sim, err))) return rc;
+        if (ckpt && (rc = write_checkpoint(w, sim, err))) return rc;
         if (o->progress && omp_get_wtime() - t_progress > 0.25) {
             progress(sim, first, last, w->t_start);
             t_progress = omp_get_wtime();
@@ -211,19 +236,50 @@ static int loop(pl_sim_t *sim, writer_t *w, const pl_run_opts_t *o, long long la
 int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
 {
     pl_sim_t *sim = NULL;
-    int rc = pl_sim_create(scene, o->threads, &sim, err);
-    if (rc) return rc;
-    if (o->restart && (rc = pl_checkpoint_read(sim, o->restart, err))) goto done;
     writer_t w;
     memset(&w, 0, sizeof w);
+    int rc = pl_sim_create(scene, o->threads, &sim, err);
+    if (rc) return rc;
+    if (o->restart_changed && !o->restart) {
+        rc = pl_err_set(err, PL_ERR_INPUT, "--restart-changed needs --restart CHECKPOINT");
+        goto done;
+    }
+    if (o->restart_changed && (rc = pl_checkpoint_changed_keys_valid(o->restart_changed, err))) goto done;
+    if (o->restart && (rc = pl_checkpoint_restart(sim, o->restart, o->restart_changed, err))) goto done;
+    long long first = sim->step, nsteps = o->steps >= 0 ? o->steps : scene->run.steps, last;
+    if (__builtin_add_overflow(first, nsteps, &last) || last > PL_RUN_MAX_STEP) {
+        rc = pl_err_set(err, PL_ERR_INPUT,
+                        "%s: checkpoint step %lld + %lld steps passes the largest step %lld; allowed: a step "
+                        ">= 0 whose run ends by step %lld", o->restart ? o->restart : scene->path, first, nsteps,
+                        (long long)PL_RUN_MAX_STEP, (long long)PL_RUN_MAX_STEP);
+        goto done;
+    }
+    long long md_last; /* the colloid MD step counter: substeps per collision step */
+    if (sim->colloids && (__builtin_mul_overflow(nsteps, (long long)scene->colloids.substeps, &md_last) ||
+                          __builtin_add_overflow(md_last, sim->colloids->md_step, &md_last) ||
+                          md_last > PL_RUN_MAX_STEP)) {
+        rc = pl_err_set(err, PL_ERR_INPUT,
+                        "%s: colloid MD step %lld + %lld steps x %lld substeps passes the largest step %lld",
+                        o->restart ? o->restart : scene->path, sim->colloids->md_step, nsteps,
+                        (long long)scene->colloids.substeps, (long long)PL_RUN_MAX_STEP);
+        goto done;
+    }
+    /* a restarted state must pass the fluid guard before anything is written */
+    if (o->restart && pl_fluid_guard_check(sim, first, 1, err)) {
+        char why[sizeof err->msg];
+        snprintf(why, sizeof why, "%s", err->msg);
+        rc = pl_err_set(err, PL_ERR_INPUT, "%s: the checkpointed state fails the fluid guard: %.700s", o->restart,
+                        why);
+        goto done;
+    }
     if (o->out_dir) snprintf(w.dir, sizeof w.dir, "%s", o->out_dir);
     else snprintf(w.dir, sizeof w.dir, "out/%s", scene->run.name);
     if ((rc = pl_outdir_prepare(w.dir, o->force, err))) goto done;
     if ((rc = write_scene_echo(&w, &sim->scene, err))) goto done;
     char path[1100];
-    pl_path_join(path, sizeof path, w.dir, "thermo.tsv");
-    if (!(w.thermo = fopen(path, "w"))) {
-        rc = pl_err_set(err, PL_ERR_IO, "%s: cannot write", path);
+    pl_path_join(w.thermo_path, sizeof w.thermo_path, w.dir, "thermo.tsv");
+    if (!(w.thermo = fopen(w.thermo_path, "w"))) {
+        rc = pl_err_set(err, PL_ERR_IO, "%s: cannot write: %s", w.thermo_path, strerror(errno));
         goto done;
     }
     thermo_header(w.thermo, scene->mapping.enabled, sim->fluid.tracked, noslip_walls(sim), noslip_side_walls(sim),
@@ -232,8 +288,6 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         pl_path_join(path, sizeof path, w.dir, "colloids.h5");
         if ((rc = pl_colloid_traj_open(path, sim->colloids, 1, &sim->colloid_traj, err))) goto done;
     }
-    long long first = sim->step;
-    long long last = first + (o->steps >= 0 ? o->steps : scene->run.steps);
     fprintf(stderr, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/\n",
             scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
     if (sim->colloids && (sim->colloids->pair.terms & PL_CT_DLVO)) {
@@ -256,8 +310,17 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     double t0 = omp_get_wtime();
     rc = loop(sim, &w, o, last, err);
     double wall = omp_get_wtime() - t0;
-    fclose(w.thermo);
+    errno = 0;
+    int thermo_bad = fflush(w.thermo) != 0 || fsync(fileno(w.thermo)) != 0;
+    int thermo_errno = errno;
+    thermo_bad |= fclose(w.thermo) != 0;
+    w.thermo = NULL;
     if (rc) goto done; /* the last good checkpoint stays as it was */
+    if (thermo_bad) {
+        rc = pl_err_set(err, PL_ERR_IO, "%s: closing failed: %s", w.thermo_path,
+                        strerror(thermo_errno ? thermo_errno : errno));
+        goto done;
+    }
     if (sim->colloid_traj) {
         rc = pl_colloid_traj_close(sim->colloid_traj, err);
         sim->colloid_traj = NULL;
@@ -273,6 +336,7 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         fprintf(stderr, "peloid: done in %.3g s, %.4g Mupdates/s\n", wall,
                 wall > 0 ? (double)(last - first) * (double)sim->fluid.n / wall / 1e6 : 0.0);
 done:
+    if (w.thermo) fclose(w.thermo);
     pl_sim_free(sim);
     return rc;
 }

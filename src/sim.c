@@ -40,7 +40,12 @@ static int stage_stream(pl_sim_t *sim, pl_err_t *err)
     if (sim->wall_acc) { /* integer sums: the same for any thread count */
         int64_t acc[PL_WALL_ACC_N] = {0};
         for (int t = 0; t < sim->nthreads; ++t)
-            for (int k = 0; k < PL_WALL_ACC_N; ++k) acc[k] += sim->wall_acc[(size_t)t * PL_WALL_ACC_STRIDE + (size_t)k];
+            for (int k = 0; k < PL_WALL_ACC_N; ++k) {
+                const int64_t a = sim->wall_acc[(size_t)t * PL_WALL_ACC_STRIDE + (size_t)k];
+                if (acc[k] == PL_WALL_ACC_OVERFLOW) continue;
+                if (a == PL_WALL_ACC_OVERFLOW || __builtin_add_overflow(acc[k], a, &acc[k]))
+                    acc[k] = PL_WALL_ACC_OVERFLOW;
+            }
         pl_sim_wall_add(sim, acc);
     }
     return 0;
@@ -48,8 +53,13 @@ static int stage_stream(pl_sim_t *sim, pl_err_t *err)
 
 void pl_sim_wall_add(pl_sim_t *sim, const int64_t acc[PL_WALL_ACC_N])
 {
-    for (int k = 0; k < PL_WALL_ACC_N; ++k)
+    for (int k = 0; k < PL_WALL_ACC_N; ++k) {
+        if (acc[k] == PL_WALL_ACC_OVERFLOW) { /* the fluid guard stops the run */
+            sim->wall_acc_overflow = 1;
+            continue;
+        }
         sim->wall_impulse[k / 3][k % 3] += ldexp((double)acc[k], -PL_FIELD_FIXED_SHIFT);
+    }
 }
 
 void pl_sim_wall_add_momentum(pl_sim_t *sim, const double dp[PL_WALL_ACC_N])
@@ -184,6 +194,9 @@ static void build_plan(pl_sim_t *sim)
         if (m == PL_COUPLE_HECHT2) add_stage(sim, "coupling2-collide", pl_coupling_stage_collide, 1);
         if (sc->thermostat.type == PL_THERMO_RESCALE)
             add_stage(sim, "thermostat-rescale", stage_rescale, sc->thermostat.interval);
+        /* last before anything samples or moves the fluid again: nothing
+         * non-finite reaches an output or the next stream */
+        add_stage(sim, "fluid-guard", pl_fluid_guard_stage, PL_FLUID_GUARD_INTERVAL);
         if (sc->output.fields_interval > 0)
             add_stage(sim, "fields", stage_fields, sc->output.fields_interval);
         const double *fv = sc->coupling.flow_velocity;
@@ -278,6 +291,7 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
         pl_sim_free(sim);
         return rc;
     }
+    pl_fluid_guard_setup(sim);
     build_plan(sim);
     *out = sim;
     return 0;

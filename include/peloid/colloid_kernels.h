@@ -10,6 +10,9 @@
 /* Below this many colloids the kernels run serially: a parallel region costs
  * more than the work (results are identical either way). */
 #define PL_COLLOID_OMP_MIN 256
+/* Largest |image counter| (ix, iy, iz: int32): the drift saturates a counter
+ * that would pass it (no int32 overflow) and the colloid guard stops the run. */
+#define PL_COLLOID_IMAGE_MAX (1 << 30)
 
 /* Pair terms a scene switches on (bit mask). */
 enum {

@@ -15,7 +15,13 @@ typedef struct {
     const char *restart;     /* checkpoint to continue from, or NULL */
     int force;               /* write into an existing output directory */
     int progress;            /* progress line on stderr */
+    const char *restart_changed; /* --restart-changed: comma-separated scene keys
+                                  * allowed to differ from the checkpoint's, or NULL */
 } pl_run_opts_t;
+
+/* Largest step a run may reach (steps and checkpoint steps above it are
+ * refused): 2^62, far from signed overflow in step arithmetic. */
+#define PL_RUN_MAX_STEP (1LL << 62)
 
 int pl_run(const pl_scene_t *scene, const pl_run_opts_t *opts, pl_err_t *err);
 

@@ -47,6 +47,10 @@ struct pl_sim {
     double wall_impulse[3][3];
     int64_t *wall_acc;    /* nthreads x PL_WALL_ACC_STRIDE (streaming bounces) */
     double *wall_dp;      /* PL_WALL_ACC_N x blocks (virtual particles of the collision) */
+    int wall_acc_overflow; /* a fixed-point wall impulse sum overflowed (guard) */
+    /* fluid guard bounds (pl_fluid_guard_setup, src/fluid_guard.c) */
+    double guard_vmax;             /* largest speed allowed */
+    double guard_kT_lo, guard_kT_hi; /* kT_cell band with a thermostat (else 0, inf) */
     /* time-averaged fields */
     int64_t *field_acc;   /* 4 x L0 L1 L2, fixed point */
     long long field_samples;
@@ -92,6 +96,31 @@ double pl_sim_wall_stress(const pl_sim_t *sim, int wall, int d);
 
 /* Observables of the current state (fixed-order reductions). */
 void pl_sim_observe(const pl_sim_t *sim, pl_fluid_obs_t *obs, double *kT);
+
+/* ---- fluid guard (src/fluid_guard.c) ---------------------------------- */
+/* The guard stage runs every step, after the collision and thermostat: the
+ * speeds and the O(1) checks every step, the positions too every
+ * PL_FLUID_GUARD_SCAN_INTERVAL steps and before every output (src/run.c). */
+enum { PL_FLUID_GUARD_INTERVAL = 1, PL_FLUID_GUARD_SCAN_INTERVAL = 10 };
+/* Speed bound: PL_FLUID_GUARD_SIGMAS thermal speeds sqrt(kT_max / m_f) plus
+ * twice the fastest wall or imposed flow (a bounce-back off a wall moving
+ * with U gives 2U - v); kT_max is the largest temperature the scene names
+ * (fluid, thermostat, walls).  Never below a0 / srd.dt (one cell per step). */
+#define PL_FLUID_GUARD_SIGMAS 20.0
+/* Temperature band with a thermostat: the collision-cell temperature kT_cell
+ * (PL Eq. A1) must stay within [min(T0, T*) / F, max(T0, T*) F], T0 the
+ * initial and T* the target temperature, F = PL_FLUID_GUARD_KT_FACTOR. */
+#define PL_FLUID_GUARD_KT_FACTOR 10.0
+/* Computes the bounds into sim (after the coupling is created). */
+void pl_fluid_guard_setup(pl_sim_t *sim);
+/* The stage: PL_ERR_GUARD naming step, particle, quantity, bound and the
+ * parameter to change, for a position outside the box or non-finite, a speed
+ * beyond guard_vmax, kT_cell outside the band, or an overflowed wall impulse
+ * accumulator. */
+int pl_fluid_guard_stage(pl_sim_t *sim, pl_err_t *err);
+/* The same checks on the current state outside the plan (before an output,
+ * after a restart); scan = 0 leaves out the positions. */
+int pl_fluid_guard_check(const pl_sim_t *sim, long long step, int scan, pl_err_t *err);
 
 /* Initial fluid: uniform positions, uniform or Gaussian velocities with zero
  * total momentum and exactly the scene temperature (src/fluid_init.c). */

@@ -125,12 +125,34 @@ void pl_srd_observe(const pl_fluid_t *fluid, double *scratch, pl_fluid_obs_t *ob
 enum { PL_FIELD_FIXED_SHIFT = 32 };
 void pl_srd_fields_accumulate(const pl_fluid_t *fluid, const int L[3], int64_t *acc);
 
+/* ---- fluid guard scan (kernels/srd_guard.c) --------------------------- */
+/* Lowest index i with a position outside [0, L_d] on some axis d (NaN and
+ * Inf included; only when `positions`) or |v_i|^2 > vmax2 (or not finite);
+ * f->n when there is none.  Independent of nthreads. */
+size_t pl_srd_guard_scan(const pl_fluid_t *f, const int L[3], double vmax2, int positions, int nthreads);
+
+/* A wall impulse accumulator slot that overflowed (sticky): the fluid guard
+ * reports it (src/fluid_guard.c). */
+#define PL_WALL_ACC_OVERFLOW INT64_MIN
+
 /* Impulse dp (m_f = 1) a wall gave a particle, added in fixed point
  * (PL_FIELD_FIXED_SHIFT) to acc[3 slot + d] (slot: pl_wall_slot): integer
- * sums do not depend on the order, hence not on the thread count. */
+ * sums do not depend on the order, hence not on the thread count.  A sum
+ * that would leave +-2^62 (or a non-finite dp) leaves the slot at
+ * PL_WALL_ACC_OVERFLOW instead of wrapping. */
 static inline void pl_wall_acc_add(int64_t *acc, int slot, const double dp[3])
 {
-    for (int d = 0; d < 3; ++d) acc[3 * slot + d] += llround(ldexp(dp[d], PL_FIELD_FIXED_SHIFT));
+    for (int d = 0; d < 3; ++d) {
+        int64_t *a = &acc[3 * slot + d];
+        const double q = ldexp(dp[d], PL_FIELD_FIXED_SHIFT);
+        int64_t s;
+        if (*a == PL_WALL_ACC_OVERFLOW) continue;
+        if (!(fabs(q) < 0x1p62) || __builtin_add_overflow(*a, llround(q), &s) || s < -(INT64_C(1) << 62) ||
+            s > (INT64_C(1) << 62))
+            *a = PL_WALL_ACC_OVERFLOW;
+        else
+            *a = s;
+    }
 }
 
 #endif

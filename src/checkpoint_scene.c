@@ -1,0 +1,233 @@
+/* Scene fingerprint of a checkpoint: the root attribute "scene_keys" holds
+ * every physics-relevant effective key of the scene that wrote it, one
+ * "key = value" line each (reals in the shortest of 15..17 digits that
+ * reads back exactly), enumerated from the schema (src/scene_keys*.c), and
+ * "scene_fingerprint" the 64-bit FNV-1a hash of that text.  A restart
+ * compares every key with the scene it continues in and refuses any
+ * difference that `--restart-changed KEY[,KEY...]` does not name.
+ *
+ * Not physics, so free to change on restart: the run's name and length, the
+ * output intervals, the colloid trajectory interval and the guard bounds
+ * (they stop a run, they do not change its trajectory). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "checkpoint_h5.h"
+
+static const char *const not_physics[] = {
+    "name",
+    "steps",
+    "output.thermo_interval",
+    "output.checkpoint_interval",
+    "output.fields_interval",
+    "output.fields_start",
+    "colloids.trajectory_interval",
+    "colloids.max_overlap",
+    "colloids.min_contact_steps",
+    "colloids.max_energy_drift",
+    "colloids.guard_interval",
+    "coarse_graining.strict",
+};
+
+uint64_t pl_ckpt_fnv1a(const void *data, size_t n)
+{
+    /* FNV-1a, 64 bit (Fowler, Noll, Vo): offset basis and prime */
+    const unsigned char *p = data;
+    uint64_t h = 14695981039346656037ULL;
+    for (size_t i = 0; i < n; ++i) {
+        h ^= p[i];
+        h *= 1099511628211ULL;
+    }
+    return h;
+}
+
+static void full_name(const pl_section_t *sec, const pl_key_t *k, char *buf, size_t n)
+{
+    if (*sec->name) snprintf(buf, n, "%s.%s", sec->name, k->name);
+    else snprintf(buf, n, "%s", k->name);
+}
+
+static int is_physics(const char *name)
+{
+    for (size_t i = 0; i < sizeof not_physics / sizeof not_physics[0]; ++i)
+        if (!strcmp(name, not_physics[i])) return 0;
+    return 1;
+}
+
+/* Shortest of %.15g .. %.17g that reads back as v. */
+static void real_text(char *buf, size_t n, double v)
+{
+    for (int prec = 15; prec <= 17; ++prec) {
+        snprintf(buf, n, "%.*g", prec, v);
+        if (strtod(buf, NULL) == v) return;
+    }
+}
+
+static void value_text(const pl_key_t *k, const pl_scene_t *scene, char *buf, size_t n)
+{
+    const char *base = (const char *)scene + k->offset;
+    switch (k->type) {
+    case PL_KEY_INT: snprintf(buf, n, "%lld", *(const long long *)base); break;
+    case PL_KEY_REAL: real_text(buf, n, *(const double *)base); break;
+    case PL_KEY_BOOL: snprintf(buf, n, "%s", *(const int *)base ? "true" : "false"); break;
+    case PL_KEY_STRING: snprintf(buf, n, "\"%.127s\"", base); break;
+    case PL_KEY_CHOICE: snprintf(buf, n, "\"%s\"", k->choices[*(const int *)base]); break;
+    case PL_KEY_INT3: {
+        const int *v = (const int *)base;
+        snprintf(buf, n, "[%d, %d, %d]", v[0], v[1], v[2]);
+        break;
+    }
+    case PL_KEY_REAL3: {
+        const double *v = (const double *)base;
+        char a[3][32];
+        for (int d = 0; d < 3; ++d) real_text(a[d], sizeof a[d], v[d]);
+        snprintf(buf, n, "[%s, %s, %s]", a[0], a[1], a[2]);
+        break;
+    }
+    }
+}
+
+/* The fingerprint text of `scene` (malloc'ed, NULL when out of memory). */
+static char *scene_text(const pl_scene_t *scene)
+{
+    size_t ns, cap = 4096, len = 0;
+    const pl_section_t *const *all = pl_scene_sections(&ns);
+    char *s = malloc(cap);
+    if (!s) return NULL;
+    s[0] = '\0';
+    for (size_t j = 0; j < ns; ++j)
+        for (size_t i = 0; i < all[j]->nkeys; ++i) {
+            char name[128], val[256];
+            full_name(all[j], &all[j]->keys[i], name, sizeof name);
+            if (!is_physics(name)) continue;
+            value_text(&all[j]->keys[i], scene, val, sizeof val);
+            size_t need = strlen(name) + strlen(val) + 5;
+            if (len + need >= cap) {
+                char *t = realloc(s, cap = 2 * cap + need);
+                if (!t) {
+                    free(s);
+                    return NULL;
+                }
+                s = t;
+            }
+            len += (size_t)snprintf(s + len, cap - len, "%s = %s\n", name, val);
+        }
+    return s;
+}
+
+int pl_ckpt_scene_write(hid_t f, const pl_scene_t *scene)
+{
+    char *text = scene_text(scene);
+    if (!text) return -1;
+    int bad = pl_ckpt_attr_str(f, "scene_keys", text);
+    long long h = (long long)pl_ckpt_fnv1a(text, strlen(text));
+    bad |= pl_ckpt_attr_i64(f, "scene_fingerprint", &h, 1, 1);
+    free(text);
+    return bad ? -1 : 0;
+}
+
+/* 1 when `name` is one of the comma-separated keys in `list`. */
+static int listed(const char *list, const char *name)
+{
+    size_t n = strlen(name);
+    for (const char *p = list; p && *p;) {
+        const char *e = strchr(p, ',');
+        size_t m = e ? (size_t)(e - p) : strlen(p);
+        if (m == n && !strncmp(p, name, n)) return 1;
+        p = e ? e + 1 : NULL;
+    }
+    return 0;
+}
+
+/* Value of key `name` in fingerprint text `t` into buf; 0 if absent. */
+static int lookup(const char *t, const char *name, char *buf, size_t n)
+{
+    size_t m = strlen(name);
+    for (const char *p = t; p && *p;) {
+        const char *e = strchr(p, '\n');
+        size_t len = e ? (size_t)(e - p) : strlen(p);
+        if (len > m + 3 && !strncmp(p, name, m) && !strncmp(p + m, " = ", 3)) {
+            size_t v = len - m - 3;
+            if (v >= n) v = n - 1;
+            memcpy(buf, p + m + 3, v);
+            buf[v] = '\0';
+            return 1;
+        }
+        p = e ? e + 1 : NULL;
+    }
+    return 0;
+}
+
+int pl_ckpt_scene_check(hid_t f, const pl_scene_t *scene, const char *changed, const char *path,
+                        pl_err_t *err)
+{
+    char *old = pl_ckpt_attr_str_read(f, "scene_keys");
+    if (!old) return pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint has no scene_keys (scene fingerprint)", path);
+    long long h = 0;
+    if (pl_ckpt_attr_i64(f, "scene_fingerprint", &h, 1, 0) || (uint64_t)h != pl_ckpt_fnv1a(old, strlen(old))) {
+        free(old);
+        return pl_err_set(err, PL_ERR_INPUT, "%s: scene_keys do not match scene_fingerprint (corrupt checkpoint)",
+                          path);
+    }
+    char *now = scene_text(scene);
+    if (!now) {
+        free(old);
+        return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
+    }
+    char diff[900];
+    size_t len = 0;
+    int ndiff = 0;
+    /* keys of this scene, then keys only the checkpoint has */
+    for (int pass = 0; pass < 2; ++pass) {
+        const char *src = pass ? old : now, *other = pass ? now : old;
+        for (const char *p = src; *p;) {
+            const char *e = strchr(p, '\n'), *eq = strstr(p, " = ");
+            if (!e || !eq || eq > e) break;
+            char name[128], a[256], b[256];
+            snprintf(name, sizeof name, "%.*s", (int)(eq - p), p);
+            snprintf(a, sizeof a, "%.*s", (int)(e - eq - 3), eq + 3);
+            int has = lookup(other, name, b, sizeof b);
+            p = e + 1;
+            if (pass && has) continue; /* compared in the first pass */
+            if (has && !strcmp(a, b)) continue;
+            if (listed(changed, name)) continue;
+            const char *vck = pass ? a : has ? b : "(absent)", *vsc = pass ? "(absent)" : a;
+            if (len < sizeof diff)
+                len += (size_t)snprintf(diff + len, sizeof diff - len, "%s%s %s -> %s", ndiff ? "; " : "", name,
+                                        vck, vsc);
+            ndiff++;
+        }
+    }
+    free(old);
+    free(now);
+    if (ndiff)
+        return pl_err_set(err, PL_ERR_INPUT,
+                          "%s: checkpoint was written by another scene: %d physics key(s) differ "
+                          "(checkpoint -> scene): %s; name deliberate changes with --restart-changed KEY[,KEY...]",
+                          path, ndiff, diff);
+    return 0;
+}
+
+int pl_checkpoint_changed_keys_valid(const char *list, pl_err_t *err)
+{
+    size_t ns;
+    const pl_section_t *const *all = pl_scene_sections(&ns);
+    for (const char *p = list; p && *p;) {
+        const char *e = strchr(p, ',');
+        size_t m = e ? (size_t)(e - p) : strlen(p);
+        int found = 0;
+        for (size_t j = 0; j < ns && !found; ++j)
+            for (size_t i = 0; i < all[j]->nkeys && !found; ++i) {
+                char name[128];
+                full_name(all[j], &all[j]->keys[i], name, sizeof name);
+                found = strlen(name) == m && !strncmp(name, p, m);
+            }
+        if (!found)
+            return pl_err_set(err, PL_ERR_INPUT,
+                              "--restart-changed: '%.*s' is not a scene key (expected section.key, e.g. srd.dt; "
+                              "see peloid keys)", (int)m, p);
+        p = e ? e + 1 : NULL;
+    }
+    return 0;
+}
