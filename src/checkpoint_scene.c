@@ -7,8 +7,9 @@
  * difference that `--restart-changed KEY[,KEY...]` does not name.
  *
  * Not physics, so free to change on restart: the run's name and length, the
- * output intervals, the colloid trajectory interval and the guard bounds
- * (they stop a run, they do not change its trajectory). */
+ * output intervals, the colloid trajectory interval, the guard bounds
+ * (they stop a run, they do not change its trajectory) and the neighbour-list
+ * skin (the forces are bitwise the same for any valid list). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,6 +28,7 @@ static const char *const not_physics[] = {
     "colloids.min_contact_steps",
     "colloids.max_energy_drift",
     "colloids.guard_interval",
+    "colloids.neighbor_skin", /* the forces do not depend on the list's skin */
     "coarse_graining.strict",
 };
 
