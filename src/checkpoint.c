@@ -7,6 +7,7 @@
  * Written to "<path>.tmp" and renamed.  No object carries a time stamp, so
  * the same state gives the same bytes. */
 #include <hdf5.h>
+#include <limits.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -74,7 +75,7 @@ hid_t pl_ckpt_group_create(hid_t f, const char *name) { return pl_h5_group(f, na
 
 int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
 {
-    char tmp[1100];
+    char tmp[PATH_MAX + 8];
     snprintf(tmp, sizeof tmp, "%s.tmp", path);
     hid_t f = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     if (f < 0) return pl_err_set(err, PL_ERR_IO, "%s: cannot create HDF5 file", tmp);

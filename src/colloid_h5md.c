@@ -8,6 +8,7 @@
  * Written to PATH.tmp and renamed to PATH on close (DESIGN.md: outputs are
  * written atomically); an existing PATH is refused unless overwrite. */
 #include <hdf5.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,7 +25,7 @@ struct pl_colloid_traj {
     hid_t val[NTS], step[NTS], time[NTS];
     hsize_t nframes;
     size_t n;
-    char path[1024], tmp[1100];
+    char path[PATH_MAX], tmp[PATH_MAX + 8];
     double *buf;
     int *ibuf;
 };

@@ -6,6 +6,7 @@
  * Attributes boundary_x/y/z name each axis' boundary (periodic, or noslip /
  * slip walls at 0 and L: Hecht Sec. VIII.A, a capillary with walls_xy). */
 #include <hdf5.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -44,7 +45,7 @@ int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
             vel[3 * c + (size_t)d] =
                 cnt > 0 ? (double)sim->field_acc[(size_t)(d + 1) * L3 + c] * inv_fixed / (double)cnt : 0.0;
     }
-    char tmp[1100];
+    char tmp[PATH_MAX + 8];
     snprintf(tmp, sizeof tmp, "%s.tmp", path);
     hid_t f = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     if (f < 0) {

@@ -2,6 +2,7 @@
  * summary.  Order matters for "nothing written on bad input": the scene is
  * validated, the sim built and any restart checkpoint read before the output
  * directory is created. */
+#include <limits.h>
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
@@ -16,7 +17,7 @@
 #include "peloid/srd_theory.h"
 
 typedef struct {
-    char dir[1024];
+    char dir[PATH_MAX]; /* resolved output directory (pl_outdir_prepare) */
     FILE *thermo;
     double t_start, t_last_row;
     long long step_last_row;
@@ -116,7 +117,7 @@ static void progress(const pl_sim_t *sim, long long first, long long last, doubl
 static int write_summary(const writer_t *w, const pl_sim_t *sim, long long first, double wall,
                          pl_err_t *err)
 {
-    char path[1100], tmp[1200], topo[256];
+    char path[PATH_MAX], tmp[PATH_MAX + 8], topo[256];
     pl_path_join(path, sizeof path, w->dir, "summary.json");
     FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
     if (!f) return PL_ERR_IO;
@@ -165,14 +166,14 @@ static int write_summary(const writer_t *w, const pl_sim_t *sim, long long first
 
 static int write_checkpoint(const writer_t *w, const pl_sim_t *sim, pl_err_t *err)
 {
-    char path[1100];
+    char path[PATH_MAX];
     pl_path_join(path, sizeof path, w->dir, "checkpoint.h5");
     return pl_checkpoint_write(sim, path, err);
 }
 
 static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *err)
 {
-    char path[1100], tmp[1200];
+    char path[PATH_MAX], tmp[PATH_MAX + 8];
     pl_path_join(path, sizeof path, w->dir, "scene.cfg");
     FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
     if (!f) return PL_ERR_IO;
@@ -216,11 +217,17 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     if (o->restart && (rc = pl_checkpoint_read(sim, o->restart, err))) goto done;
     writer_t w;
     memset(&w, 0, sizeof w);
-    if (o->out_dir) snprintf(w.dir, sizeof w.dir, "%s", o->out_dir);
-    else snprintf(w.dir, sizeof w.dir, "out/%s", scene->run.name);
-    if ((rc = pl_outdir_prepare(w.dir, o->force, err))) goto done;
+    char given[PATH_MAX];
+    if (o->out_dir && strlen(o->out_dir) >= sizeof given) {
+        rc = pl_err_set(err, PL_ERR_INPUT, "--out %.80s...: %zu characters; allowed: < %d", o->out_dir,
+                        strlen(o->out_dir), PATH_MAX - 32);
+        goto done;
+    }
+    if (o->out_dir) snprintf(given, sizeof given, "%s", o->out_dir);
+    else snprintf(given, sizeof given, "out/%s", scene->run.name);
+    if ((rc = pl_outdir_prepare(given, o->force, scene->path, w.dir, sizeof w.dir, err))) goto done;
     if ((rc = write_scene_echo(&w, &sim->scene, err))) goto done;
-    char path[1100];
+    char path[PATH_MAX];
     pl_path_join(path, sizeof path, w.dir, "thermo.tsv");
     if (!(w.thermo = fopen(path, "w"))) {
         rc = pl_err_set(err, PL_ERR_IO, "%s: cannot write", path);
