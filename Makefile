@@ -8,7 +8,7 @@
 
 CC       ?= gcc
 PYTHON   := /usr/bin/python3
-PKGS     := hdf5 gsl hwloc libconfig
+PKGS     := hdf5 gsl hwloc libconfig jansson
 GIT_REV  := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
 OPTFLAGS ?= -O3 -march=native
 WARN     := -Wall -Wextra -Wconversion -Wshadow -Werror
@@ -29,7 +29,7 @@ BENCH_SRC:= $(wildcard bench/*.c)
 BENCH_BIN:= $(patsubst bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
 
 # Debian packages the build, the tests and the tools need.
-DEB_PKGS := libgsl-dev libhwloc-dev librandom123-dev libhdf5-dev libconfig-dev \
+DEB_PKGS := libgsl-dev libhwloc-dev librandom123-dev libhdf5-dev libconfig-dev libjansson-dev \
             libcriterion-dev pkg-config hwloc python3-numpy python3-h5py \
             python3-matplotlib python3-scipy
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)

@@ -3,6 +3,7 @@
  * 4 I/O failure, 5 out of memory. */
 #include <errno.h>
 #include <gsl/gsl_errno.h>
+#include <jansson.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -124,17 +125,19 @@ static int cmd_scene(int argc, char **argv, int params)
     pl_err_t err = {0, ""};
     if (!scene) return PL_ERR_NOMEM;
     int rc = pl_scene_load_flags(path, flags, scene, &err);
-    if (!rc) {
+    if (!rc && params && json) {
+        rc = pl_params_write_json(scene, stdout, strict, &err);
+    } else if (!rc && params) {
+        pl_params_print(scene, stdout);
         /* A scene with physical{} adds the unit mapping report (mapping.h). */
-        int mapped = scene->mapping.enabled;
-        if (params && json && mapped) printf("{\"srd\": ");
-        if (params) pl_params_print(scene, stdout, json);
-        else printf("%s: ok\n", path);
-        if (params && mapped) {
-            if (json) printf(", \"mapping\": ");
-            rc = pl_mapping_report(scene, stdout, json, strict, &err);
-            if (json) printf("}\n");
-        }
+        rc = pl_mapping_report(scene, stdout, 0, strict, &err);
+    } else if (!rc) { /* check: run's validation, including the derived values summary.json gets */
+        json_t *derived = NULL, *mapping = NULL;
+        rc = pl_params_json(scene, &derived, &err);
+        if (!rc) rc = pl_mapping_report_json(scene, &mapping, &err);
+        json_decref(derived);
+        json_decref(mapping);
+        if (!rc) printf("%s: ok\n", path);
     }
     free(scene);
     return rc ? fail(&err) : 0;

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "json_build.h"
 #include "peloid/scene.h"
 
 #define OFF(m) offsetof(pl_scene_t, m)
@@ -173,20 +174,39 @@ int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
     return 0;
 }
 
-int pl_mapping_report(const struct pl_scene *scene, FILE *out, int json, int strict, pl_err_t *err)
+int pl_mapping_report_json(const struct pl_scene *scene, struct json_t **out, pl_err_t *err)
 {
     const pl_scene_mapping_t *mp = &scene->mapping;
     if (!mp->enabled) {
-        if (json) fprintf(out, "null\n");
+        *out = json_null();
         return 0;
     }
-    if (json) pl_mapping_print_json(&mp->map, &mp->colloid, out);
-    else pl_mapping_print_text(&mp->map, &mp->colloid, out);
-    if (strict || mp->cg.strict) {
+    return pl_mapping_json(&mp->map, &mp->colloid, scene->path, out, err);
+}
+
+int pl_mapping_report_strict(const struct pl_scene *scene, int strict, pl_err_t *err)
+{
+    const pl_scene_mapping_t *mp = &scene->mapping;
+    if (mp->enabled && (strict || mp->cg.strict)) {
         for (int i = 0; i < mp->map.nwarn; ++i)
             if (mp->map.warn[i].severity == PL_SEV_WARNING)
                 return pl_err_set(err, PL_ERR_INPUT, "%s: strict mapping audit: %s: %s", scene->path,
                                   mp->map.warn[i].name, mp->map.warn[i].text);
     }
     return 0;
+}
+
+int pl_mapping_report(const struct pl_scene *scene, FILE *out, int json, int strict, pl_err_t *err)
+{
+    const pl_scene_mapping_t *mp = &scene->mapping;
+    if (json) {
+        json_t *doc = NULL;
+        int rc = pl_mapping_report_json(scene, &doc, err);
+        if (!rc) rc = pl_json_dump(doc, out, "stdout", err);
+        json_decref(doc);
+        if (rc) return rc;
+    } else if (mp->enabled) {
+        pl_mapping_print_text(&mp->map, &mp->colloid, out);
+    }
+    return pl_mapping_report_strict(scene, strict, err);
 }

@@ -91,7 +91,7 @@ expect_refused dotdot_name 'name = "..";\nsteps = 1;\n' "dotdot_name.cfg:1" "'na
 expect_refused quote_name 'name = "a\\"b";\n' "quote_name.cfg:1" "'name'" "[A-Za-z0-9._-]"
 # integers in 64 bits (issue 18): libconfig 1.5 wraps values without L to 32 bits
 printf 'seed = 4294967297;\nsteps = 0;\nbox: { cells = [4, 4, 4]; };\n' > wide.cfg
-"$PELOID" run wide.cfg --out wide 2> err.txt && grep -q "^seed = 4294967297;" wide/scene.cfg && ok "seed = 4294967297 kept in 64 bits" || bad "seed 4294967297: $(cat err.txt; grep seed wide/scene.cfg)"
+"$PELOID" run wide.cfg --out wide 2> err.txt && grep -q "^seed = 4294967297L;" wide/scene.cfg && ok "seed = 4294967297 kept in 64 bits" || bad "seed 4294967297: $(cat err.txt; grep seed wide/scene.cfg)"
 expect_refused wrap_cells 'box: { cells = [4294967328, 32, 32]; };\n' "wrap_cells.cfg:1" "box.cells" "4294967328"
 expect_refused wrap_count 'colloids: { count = 4294967360; };\n' "wrap_count.cfg:1" "colloids.count" "4294967360"
 expect_refused huge_steps 'steps = 99999999999999999999;\n' "huge_steps.cfg:1" "'steps'" "99999999999999999999" "64-bit"
@@ -183,6 +183,24 @@ PYEOF
 "$PELOID" params small.cfg > params.txt && grep -q "nu_col" params.txt && grep -q "D_f" params.txt && grep -q "Sc" params.txt && ok "params" || bad "params"
 "$PELOID" params small.cfg --json | $PY -c 'import json,sys; d=json.load(sys.stdin); d=d.get("srd", d); assert d["nu"] > 0' && ok "params --json" || bad "params --json"
 "$PELOID" keys | grep -q '| `density` |' && ok "keys prints the reference" || bad "keys"
+
+# JSON through jansson (issue 18): every shipped scene's check and params --json,
+# and summary.json of short runs, parsed strictly (no NaN / Infinity)
+STRICT='import json,sys; json.load(open(sys.argv[1]), parse_constant=lambda c: sys.exit("bad constant "+c))'
+nj=0; badj=""
+for s in "$ROOT"/scenes/*.cfg; do
+  n=$(basename "$s" .cfg)
+  "$PELOID" check "$s" > /dev/null 2> err.txt || badj="$badj $n(check: $(cat err.txt))"
+  "$PELOID" params "$s" --json > "p_$n.json" 2> err.txt && $PY -c "$STRICT" "p_$n.json" || badj="$badj $n(params: $(cat err.txt))"
+  nj=$((nj+1))
+done
+[ -z "$badj" ] && ok "check + params --json of all $nj shipped scenes: strict JSON" || bad "shipped scenes JSON:$badj"
+for f in run1 mapped cap qs; do $PY -c "$STRICT" $f/summary.json || badj="$badj $f"; done
+[ -z "$badj" ] && ok "summary.json of the runs above: strict JSON" || bad "summary.json strict:$badj"
+printf 'srd: { dt = 1e-320; };\n' > denormal.cfg
+"$PELOID" run denormal.cfg --out denormal 2> err.txt; rc=$?
+[ $rc -eq 2 ] && [ ! -e denormal ] && grep -q "derived.nu_col" err.txt && ok "srd.dt = 1e-320: non-finite derived value refused before JSON, nothing written" || bad "denormal dt: rc $rc $(cat err.txt)"
+"$PELOID" check denormal.cfg 2> /dev/null; [ $? -eq 2 ] && ok "check refuses it too" || bad "check denormal dt"
 
 $PY "$ROOT/tools/readme_keys.py" "$PELOID" "$ROOT/README.md" --check && ok "README scene reference matches peloid keys" || bad "README reference stale (make readme)"
 

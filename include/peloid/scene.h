@@ -199,7 +199,10 @@ void pl_scene_print_reference(void *file_ptr);
 /* Writes the effective scene as libconfig text (echoed into outputs). */
 void pl_scene_print(const pl_scene_t *scene, void *file_ptr);
 
-/* Writes the effective scene as a JSON object (summary.json). */
-void pl_scene_print_json(const pl_scene_t *scene, void *file_ptr, const char *indent);
+/* The effective scene as a jansson object (summary.json): one member per
+ * key, sections as nested objects.  A non-finite number is an error naming
+ * the key. */
+struct json_t;
+int pl_scene_json(const pl_scene_t *scene, struct json_t **out, pl_err_t *err);
 
 #endif
