@@ -61,6 +61,12 @@ $(BIN): $(BUILD)/src/main.o $(LIB)
 	@echo "  LD      $@"
 	@$(CC) $(CFLAGS_ALL) -o $@ $^ $(LDLIBS_ALL)
 
+# The CLI of another build (the sanitizer build: build-asan/bin/peloid).
+$(BUILD)/bin/peloid: $(BUILD)/src/main.o $(LIB)
+	@mkdir -p $(dir $@)
+	@echo "  LD      $@"
+	@$(CC) $(CFLAGS_ALL) -o $@ $^ $(LDLIBS_ALL)
+
 $(BUILD)/tests/%: tests/%.c $(LIB) | deps
 	@mkdir -p $(dir $@)
 	@echo "  TEST    $@"
@@ -87,16 +93,19 @@ check-cli: $(BIN)
 	@bash tests/cli.sh ./$(BIN)
 
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
-# shrinks the physics runs; the sanitizers slow code ~3-10x).
+# shrinks the physics runs; the sanitizers slow code ~3-10x), and the
+# sanitizer CLI on the adversarial scene set (tests/bad_scenes).
 ASAN_TESTS := test_scene test_collide test_sort test_determinism test_colloid_forces \
               test_colloid_guards test_colloid_md test_colloid_restart test_capillary \
               test_coupling_restart test_coupling_system
 check-asan: | deps
 	@$(MAKE) --no-print-directory BUILD=build-asan \
 	  OPTFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
-	  $(patsubst %,build-asan/tests/%,$(ASAN_TESTS))
+	  $(patsubst %,build-asan/tests/%,$(ASAN_TESTS)) build-asan/bin/peloid
 	@set -e; for t in $(ASAN_TESTS); do \
 	  echo "== asan $$t"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$$t --jobs 1; done
+	@echo "== asan bin/peloid on tests/bad_scenes"
+	@ASAN_OPTIONS=detect_leaks=1 bash tests/bad_scenes.sh build-asan/bin/peloid
 
 bench: $(BENCH_BIN)
 	@mkdir -p bench/out

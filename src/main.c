@@ -3,7 +3,6 @@
  * 4 I/O failure, 5 out of memory. */
 #include <errno.h>
 #include <gsl/gsl_errno.h>
-#include <jansson.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -36,9 +35,17 @@ static const char *const usage =
     "exit codes: 0 ok, 2 bad input (nothing written), 3 stability guard tripped,\n"
     "            4 I/O error, 5 out of memory\n";
 
+/* One line: control characters a message quotes from the input (a newline
+ * in a scene string) are shown escaped. */
 static int fail(const pl_err_t *err)
 {
-    fprintf(stderr, "peloid: error: %s\n", err->msg);
+    fputs("peloid: error: ", stderr);
+    for (const unsigned char *c = (const unsigned char *)err->msg; *c; ++c) {
+        if (*c >= 0x20 && *c != 0x7f) fputc(*c, stderr);
+        else if (*c == '\n') fputs("\\n", stderr);
+        else fprintf(stderr, "\\x%02x", *c);
+    }
+    fputc('\n', stderr);
     return err->code ? err->code : 1;
 }
 
@@ -132,11 +139,7 @@ static int cmd_scene(int argc, char **argv, int params)
         /* A scene with physical{} adds the unit mapping report (mapping.h). */
         rc = pl_mapping_report(scene, stdout, 0, strict, &err);
     } else if (!rc) { /* check: run's validation, including the derived values summary.json gets */
-        json_t *derived = NULL, *mapping = NULL;
-        rc = pl_params_json(scene, &derived, &err);
-        if (!rc) rc = pl_mapping_report_json(scene, &mapping, &err);
-        json_decref(derived);
-        json_decref(mapping);
+        rc = pl_run_check(scene, &err);
         if (!rc) printf("%s: ok\n", path);
     }
     free(scene);

@@ -16,10 +16,11 @@
 #define DLVO_KAPPA_R_MIN 5.0
 
 /* The physical front end is on when any key of physical{} is in the file. */
-static int section_given(const pl_scene_t *s, const pl_section_t *sec)
+/* 1 + the offset of the first key of `sec` given in the file; 0: none. */
+static size_t section_given(const pl_scene_t *s, const pl_section_t *sec)
 {
     for (size_t i = 0; i < sec->nkeys; ++i)
-        if (pl_scene_line_of(s, sec->keys[i].offset) > 0) return 1;
+        if (pl_scene_line_of(s, sec->keys[i].offset) > 0) return sec->keys[i].offset + 1;
     return 0;
 }
 
@@ -128,10 +129,11 @@ static int apply_box(pl_scene_t *s, pl_err_t *err)
 int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
 {
     pl_scene_mapping_t *mp = &s->mapping;
-    mp->enabled = section_given(s, &pl_scene_section_physical);
+    mp->enabled = section_given(s, &pl_scene_section_physical) != 0;
     if (!mp->enabled) {
-        if (section_given(s, &pl_scene_section_coarse_graining))
-            return pl_scene_fail(s, err, OFF(mapping.cg.coupling), "coarse_graining",
+        size_t cg_key = section_given(s, &pl_scene_section_coarse_graining);
+        if (cg_key)
+            return pl_scene_fail(s, err, cg_key - 1, "coarse_graining",
                                  "has no effect without a physical{} section (give at least physical.radius)");
         return 0;
     }

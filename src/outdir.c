@@ -43,9 +43,11 @@ int pl_outdir_prepare(const char *dir, int force, const char *scene_path, char *
         while (hl > 1 && head[hl - 1] == '/') head[--hl] = '\0';
         if (lstat(head, &st) == 0) break;
         char *slash = strrchr(head, '/');
-        char t[PATH_MAX];
-        snprintf(t, sizeof t, "%s%s%s", slash ? slash + 1 : head, *tail ? "/" : "", tail);
-        snprintf(tail, sizeof tail, "%s", t);
+        const char *seg = slash ? slash + 1 : head; /* prepend "seg/" to tail (both parts of dir) */
+        size_t sl = strlen(seg), tl = strlen(tail);
+        memmove(tail + sl + (tl ? 1 : 0), tail, tl + 1);
+        memcpy(tail, seg, sl);
+        if (tl) tail[sl] = '/';
         if (!slash) {
             snprintf(head, sizeof head, ".");
             break;

@@ -1,9 +1,12 @@
 /* `peloid params`: the SRD fluid's derived parameters from PL Sec. II.B,
  * as text or as JSON (jansson; also the "derived" object of summary.json). */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "json_build.h"
+#include "peloid/colloid.h"
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"
 
@@ -36,12 +39,39 @@ int pl_params_json(const pl_scene_t *sc, struct json_t **out, pl_err_t *err)
             shear[d] = (sc->box.wall_velocity[1][d] - sc->box.wall_velocity[0][d]) / sc->box.cells[2];
         pl_json_reals(&b, o, "wall_shear_rate", shear, 2);
     }
+    if (b.failed && err->code == PL_ERR_INPUT) { /* name the input that gives it */
+        char what[sizeof err->msg];
+        const char *p = strstr(err->msg, "'derived.");
+        snprintf(what, sizeof what, "%s", p ? p + 1 : err->msg);
+        char *q = strchr(what, '\'');
+        if (q) *q = '\0';
+        json_decref(o);
+        return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.dt), "srd.dt",
+                             "%g with fluid.density = %g, kT = %g, alpha = %g deg gives a non-finite %s "
+                             "(PL Eqs. 4-15); allowed: values with finite derived parameters",
+                             sc->srd.dt, sc->fluid.density, kT, sc->srd.alpha_deg, what);
+    }
     if (b.failed || !o) {
         json_decref(o);
         return b.failed ? err->code : pl_err_set(err, PL_ERR_NOMEM, "out of memory building JSON");
     }
     *out = o;
     return 0;
+}
+
+int pl_run_check(const pl_scene_t *sc, pl_err_t *err)
+{
+    json_t *derived = NULL, *mapping = NULL;
+    int rc = pl_params_json(sc, &derived, err);
+    if (!rc) rc = pl_mapping_report_json(sc, &mapping, err);
+    json_decref(derived);
+    json_decref(mapping);
+    if (!rc && sc->colloids.count > 0) { /* placement: init file, overlaps */
+        pl_colloid_t *c = NULL;
+        rc = pl_colloid_create(sc, &c, err);
+        pl_colloid_free(c);
+    }
+    return rc;
 }
 
 int pl_params_write_json(const pl_scene_t *sc, FILE *out, int strict, pl_err_t *err)

@@ -110,7 +110,8 @@ static int get_integer(const ctx_t *c, const config_setting_t *s, const config_s
     char lit[64], range[128], units[64], what[512];
     int rc = pl_scene_text_integer(c->text, (int)config_setting_source_line(s), config_setting_name(s), elem,
                                    libval, &v, lit, sizeof lit);
-    range_text(k, range, sizeof range);
+    snprintf(range, sizeof range, "%s %.0f and %s %.0f", (k->flags & PL_KEY_MIN_OPEN) ? ">" : ">=", k->min,
+             (k->flags & PL_KEY_MAX_OPEN) ? "<" : "<=", k->max);
     units_text(k, units, sizeof units);
     char el[32] = "";
     if (elem >= 0) snprintf(el, sizeof el, "element %d: ", elem);
@@ -336,8 +337,18 @@ static int load_text(const pl_scene_text_t *text, const char *label, pl_scene_t 
     if (config_read_string(&cfg, text->text) != CONFIG_TRUE) {
         int line;
         int fi = pl_scene_text_where(text, config_error_line(&cfg), &line);
-        rc = pl_err_set(err, PL_ERR_INPUT, "%s:%d: syntax error: %s", text->files[fi], line,
-                        config_error_text(&cfg));
+        char src[80];
+        int el = config_error_line(&cfg);
+        if (el > (int)text->nlines) { /* libconfig met the end of the text */
+            fi = pl_scene_text_where(text, (int)text->nlines, &line);
+            rc = pl_err_set(err, PL_ERR_INPUT, "%s:%d: syntax error: %s at the end of the file; allowed: every "
+                            "'{', '[', '(' closed", text->files[fi], line, config_error_text(&cfg));
+        } else {
+            pl_scene_text_line(text, el, src, sizeof src);
+            rc = pl_err_set(err, PL_ERR_INPUT, "%s:%d: syntax error: %s in \"%s\"; allowed: settings "
+                            "`key = value;` and groups `name: { ... };`", text->files[fi], line,
+                            config_error_text(&cfg), src);
+        }
     }
     if (!rc) {
         pl_scene_defaults(scene);

@@ -142,7 +142,8 @@ static int include(pl_scene_text_t *t, int fi, int line, const char *p, const ch
     if ((size_t)dl + n > PATH_MAX)
         return pl_err_set(err, PL_ERR_INPUT, "%s:%d: @include \"%.200s\": path longer than %d characters",
                           file, line, rel, PATH_MAX);
-    snprintf(full, sizeof full, "%.*s%s", dl, file, rel);
+    memcpy(full, file, (size_t)dl); /* dl + n <= PATH_MAX checked above */
+    memcpy(full + dl, rel, n + 1);
     struct stat st;
     if (stat(full, &st))
         return pl_err_set(err, PL_ERR_INPUT, "%s:%d: @include \"%.200s\": cannot open %.300s: %s", file, line,
@@ -160,7 +161,7 @@ static int include(pl_scene_text_t *t, int fi, int line, const char *p, const ch
                           file, line, rel, real, t->root);
     if (depth + 1 >= MAX_DEPTH)
         return pl_err_set(err, PL_ERR_INPUT, "%s:%d: @include \"%.200s\": nested more than %d deep (an include "
-                          "cycle?)", file, line, rel, MAX_DEPTH);
+                          "cycle?)", file, line, rel, MAX_DEPTH - 1);
     if (t->nfiles >= PL_SCENE_TEXT_MAX_FILES)
         return pl_err_set(err, PL_ERR_INPUT, "%s:%d: @include \"%.200s\": more than %d included files; "
                           "allowed: at most %d", file, line, rel, PL_SCENE_TEXT_MAX_FILES - 1,
@@ -216,10 +217,10 @@ static int add_file(pl_scene_text_t *t, const char *name, const char *data, size
                         key_before(s, p, key, sizeof key);
                         int shown = eol - p > 40 ? 40 : (int)(eol - p);
                         if (key[0])
-                            return pl_err_set(err, PL_ERR_INPUT, "%s:%d: key '%s': unterminated string %.*s; "
+                            return pl_err_set(err, PL_ERR_INPUT, "%s:%d: key '%s': unterminated string (%.*s); "
                                               "allowed: a string closed by '\"' on the line it starts",
                                               name, line, key, shown, p);
-                        return pl_err_set(err, PL_ERR_INPUT, "%s:%d: unterminated string %.*s; allowed: a "
+                        return pl_err_set(err, PL_ERR_INPUT, "%s:%d: unterminated string (%.*s); allowed: a "
                                           "string closed by '\"' on the line it starts", name, line, shown, p);
                     }
                     p = q;
@@ -281,6 +282,19 @@ void pl_scene_text_free(pl_scene_text_t *t)
     free(t->line_of);
     for (int i = 0; i < t->nfiles; ++i) free(t->files[i]);
     memset(t, 0, sizeof *t);
+}
+
+void pl_scene_text_line(const pl_scene_text_t *t, int line, char *buf, size_t n)
+{
+    buf[0] = '\0';
+    if (line < 1 || (size_t)line > t->nlines) return;
+    const char *s = t->text;
+    for (int l = 1; l < line; ++l) s = strchr(s, '\n') + 1;
+    while (*s == ' ' || *s == '\t') ++s;
+    size_t len = strcspn(s, "\r\n");
+    if (len + 1 > n) len = n - 1;
+    memcpy(buf, s, len);
+    buf[len] = '\0';
 }
 
 int pl_scene_text_where(const pl_scene_text_t *t, int line, int *file_line)

@@ -37,6 +37,9 @@ void pl_scene_text_free(pl_scene_text_t *t);
  * index 0 is the scene itself. */
 int pl_scene_text_where(const pl_scene_text_t *t, int line, int *file_line);
 
+/* Text of expanded line `line` (leading blanks dropped), cut to n - 1. */
+void pl_scene_text_line(const pl_scene_text_t *t, int line, char *buf, size_t n);
+
 /* Integer value of setting `name` (element `elem` of an array; -1: a scalar)
  * given on expanded line `line`, read from the text as written.  `libval` is
  * libconfig's (possibly wrapped) value, used to pick the right occurrence.

@@ -202,6 +202,10 @@ printf 'srd: { dt = 1e-320; };\n' > denormal.cfg
 [ $rc -eq 2 ] && [ ! -e denormal ] && grep -q "derived.nu_col" err.txt && ok "srd.dt = 1e-320: non-finite derived value refused before JSON, nothing written" || bad "denormal dt: rc $rc $(cat err.txt)"
 "$PELOID" check denormal.cfg 2> /dev/null; [ $? -eq 2 ] && ok "check refuses it too" || bad "check denormal dt"
 
+# the adversarial scene set (issue 18): each refused with exit 2, one line
+# naming file, line and key, nothing written (tests/bad_scenes.sh)
+bash "$ROOT/tests/bad_scenes.sh" "$PELOID" > bad.txt 2>&1 && ok "$(tail -1 bad.txt)" || bad "bad scenes: $(cat bad.txt)"
+
 $PY "$ROOT/tools/readme_keys.py" "$PELOID" "$ROOT/README.md" --check && ok "README scene reference matches peloid keys" || bad "README reference stale (make readme)"
 
 echo "$pass passed, $fail failed"

@@ -27,6 +27,10 @@ void pl_params_print(const pl_scene_t *scene, FILE *out);
 struct json_t;
 int pl_params_json(const pl_scene_t *scene, struct json_t **out, pl_err_t *err);
 
+/* `peloid check`: what `run` validates short of running: the derived values
+ * (finite), the mapping report, the colloid placement (init file, overlaps). */
+int pl_run_check(const pl_scene_t *scene, pl_err_t *err);
+
 /* `peloid params --json`: the object above, or {"srd": ..., "mapping": ...}
  * for a scene with physical{} (strict: audit warnings are errors). */
 int pl_params_write_json(const pl_scene_t *scene, FILE *out, int strict, pl_err_t *err);
