@@ -84,12 +84,18 @@ static double number_of(const config_setting_t *s)
 }
 
 static int check_number(const ctx_t *c, const config_setting_t *s, const char *sec,
-                        const pl_key_t *k, double v)
+                        const pl_key_t *k, int elem, double v)
 {
     if (in_range(k, v)) return 0;
-    char range[128], what[256];
+    char range[128], what[512], lit[64];
     range_text(k, range, sizeof range);
-    snprintf(what, sizeof what, "value %g is out of range; allowed: %s%s%s%s", v, range,
+    if (isfinite(v) || pl_scene_text_token(c->text, (int)config_setting_source_line(s), config_setting_name(s),
+                                           elem, lit, sizeof lit))
+        snprintf(lit, sizeof lit, "%g", v);
+    char el[32] = "";
+    if (elem >= 0) snprintf(el, sizeof el, "element %d: ", elem);
+    snprintf(what, sizeof what, "%svalue %s is out of range%s; allowed: %s%s%s%s", el, lit,
+             isfinite(v) ? "" : " (not a finite double)", range,
              *k->units && strcmp(k->units, "-") ? " (" : "", strcmp(k->units, "-") ? k->units : "",
              *k->units && strcmp(k->units, "-") ? ")" : "");
     return where_fail(c, s, sec, k->name, what);
@@ -161,7 +167,7 @@ static int apply_key(const ctx_t *c, const config_setting_t *s, const char *sec,
         if (!is_number(t)) { bad_type = 1; break; }
         {
             double v = number_of(s);
-            if (check_number(c, s, sec, k, v)) return PL_ERR_INPUT;
+            if (check_number(c, s, sec, k, -1, v)) return PL_ERR_INPUT;
             *(double *)base = v;
         }
         return 0;
@@ -218,7 +224,7 @@ static int apply_key(const ctx_t *c, const config_setting_t *s, const char *sec,
                 ((int *)base)[i] = (int)v; /* the schema bounds INT3 keys to int */
             } else {
                 double v = number_of(e);
-                if (check_number(c, s, sec, k, v)) return PL_ERR_INPUT;
+                if (check_number(c, s, sec, k, i, v)) return PL_ERR_INPUT;
                 ((double *)base)[i] = v;
             }
         }

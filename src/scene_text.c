@@ -333,7 +333,7 @@ static int parse_literal(const char *lit, long long *out)
 static const char *read_token(const char *p, char *lit, size_t nlit)
 {
     size_t k = 0;
-    while ((isalnum((unsigned char)*p) || *p == '+' || *p == '-') && k + 1 < nlit) lit[k++] = *p++;
+    while ((isalnum((unsigned char)*p) || *p == '+' || *p == '-' || *p == '.') && k + 1 < nlit) lit[k++] = *p++;
     lit[k] = '\0';
     return p;
 }
@@ -344,10 +344,11 @@ static const char *skip_space(const char *p)
     return p;
 }
 
-int pl_scene_text_integer(const pl_scene_text_t *t, int line, const char *name, int elem, long long libval,
-                          long long *out, char *lit, size_t nlit)
+/* Start of the value of setting `name` (element `elem`, -1: a scalar) at
+ * its k-th occurrence (0-based) on expanded line `line`, or NULL. */
+static const char *value_at(const pl_scene_text_t *t, int line, const char *name, int elem, int k)
 {
-    if (line < 1 || (size_t)line > t->nlines || !name || !*name) return -1;
+    if (line < 1 || (size_t)line > t->nlines || !name || !*name) return NULL;
     const char *s = t->text;
     for (int l = 1; l < line; ++l) s = strchr(s, '\n') + 1;
     const char *eol = strchr(s, '\n');
@@ -368,6 +369,26 @@ int pl_scene_text_integer(const pl_scene_text_t *t, int line, const char *name, 
                 p = skip_space(p + 1);
             }
         }
+        if (k-- == 0) return p;
+    }
+    return NULL;
+}
+
+int pl_scene_text_token(const pl_scene_text_t *t, int line, const char *name, int elem, char *lit, size_t nlit)
+{
+    const char *p = value_at(t, line, name, elem, 0);
+    if (!p) return -1;
+    size_t k = 0;
+    while ((isalnum((unsigned char)*p) || strchr("+-.", *p)) && *p && k + 1 < nlit) lit[k++] = *p++;
+    lit[k] = '\0';
+    return k ? 0 : -1;
+}
+
+int pl_scene_text_integer(const pl_scene_text_t *t, int line, const char *name, int elem, long long libval,
+                          long long *out, char *lit, size_t nlit)
+{
+    const char *p;
+    for (int k = 0; (p = value_at(t, line, name, elem, k)); ++k) {
         read_token(p, lit, nlit);
         long long v = 0;
         int rc = parse_literal(lit, &v);

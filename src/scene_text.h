@@ -40,6 +40,10 @@ int pl_scene_text_where(const pl_scene_text_t *t, int line, int *file_line);
 /* Text of expanded line `line` (leading blanks dropped), cut to n - 1. */
 void pl_scene_text_line(const pl_scene_text_t *t, int line, char *buf, size_t n);
 
+/* The literal of setting `name` (element `elem`, -1: a scalar) on expanded
+ * line `line` as written (first occurrence); 0, or -1 when not found. */
+int pl_scene_text_token(const pl_scene_text_t *t, int line, const char *name, int elem, char *lit, size_t nlit);
+
 /* Integer value of setting `name` (element `elem` of an array; -1: a scalar)
  * given on expanded line `line`, read from the text as written.  `libval` is
  * libconfig's (possibly wrapped) value, used to pick the right occurrence.
