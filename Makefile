@@ -8,7 +8,7 @@
 
 CC       ?= gcc
 PYTHON   := /usr/bin/python3
-PKGS     := hdf5 gsl hwloc libconfig
+PKGS     := hdf5 gsl hwloc libconfig jansson
 GIT_REV  := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
 OPTFLAGS ?= -O3 -march=native
 WARN     := -Wall -Wextra -Wconversion -Wshadow -Werror
@@ -29,7 +29,7 @@ BENCH_SRC:= $(wildcard bench/*.c)
 BENCH_BIN:= $(patsubst bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
 
 # Debian packages the build, the tests and the tools need.
-DEB_PKGS := libgsl-dev libhwloc-dev librandom123-dev libhdf5-dev libconfig-dev \
+DEB_PKGS := libgsl-dev libhwloc-dev librandom123-dev libhdf5-dev libconfig-dev libjansson-dev \
             libcriterion-dev pkg-config hwloc python3-numpy python3-h5py \
             python3-matplotlib python3-scipy
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
@@ -68,6 +68,12 @@ $(BIN): $(BUILD)/src/main.o $(LIB)
 	@echo "  LD      $@"
 	@$(CC) $(CFLAGS_ALL) -o $@ $^ $(LDLIBS_ALL)
 
+# The CLI of another build (the sanitizer build: build-asan/bin/peloid).
+$(BUILD)/bin/peloid: $(BUILD)/src/main.o $(LIB)
+	@mkdir -p $(dir $@)
+	@echo "  LD      $@"
+	@$(CC) $(CFLAGS_ALL) -o $@ $^ $(LDLIBS_ALL)
+
 $(BUILD)/tests/%: tests/%.c $(LIB) | deps
 	@mkdir -p $(dir $@)
 	@echo "  TEST    $@"
@@ -96,16 +102,19 @@ check-cli: $(BIN)
 	@bash tests/full_disk.sh ./$(BIN)
 
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
-# shrinks the physics runs; the sanitizers slow code ~3-10x).
+# shrinks the physics runs; the sanitizers slow code ~3-10x), and the
+# sanitizer CLI on the adversarial scene set (tests/bad_scenes).
 ASAN_TESTS := test_scene test_collide test_sort test_determinism test_colloid_forces \
               test_colloid_guards test_colloid_md test_colloid_restart test_capillary \
               test_coupling_restart test_coupling_system test_fluid_guard
 check-asan: | deps
 	@$(MAKE) --no-print-directory BUILD=build-asan \
 	  OPTFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
-	  $(patsubst %,build-asan/tests/%,$(ASAN_TESTS))
+	  $(patsubst %,build-asan/tests/%,$(ASAN_TESTS)) build-asan/bin/peloid
 	@set -e; for t in $(ASAN_TESTS); do \
 	  echo "== asan $$t"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$$t --jobs 1; done
+	@echo "== asan bin/peloid on tests/bad_scenes"
+	@ASAN_OPTIONS=detect_leaks=1 bash tests/bad_scenes.sh build-asan/bin/peloid
 
 bench: $(BENCH_BIN)
 	@mkdir -p bench/out

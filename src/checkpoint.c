@@ -17,6 +17,7 @@
 #include <fcntl.h>
 #include <hdf5.h>
 #include <libgen.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -146,7 +147,7 @@ hid_t pl_ckpt_group_create(hid_t f, const char *name) { return pl_h5_group(f, na
  * has just happened) survives a crash with the data it names. */
 int pl_fsync_path(const char *path, int dir)
 {
-    char buf[1100];
+    char buf[PATH_MAX + 8];
     snprintf(buf, sizeof buf, "%s", path);
     const char *p = dir ? dirname(buf) : buf;
     int fd = open(p, O_RDONLY | (dir ? O_DIRECTORY : 0));
@@ -168,7 +169,7 @@ static int write_failed(pl_err_t *err, const char *tmp, const char *what)
 
 int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
 {
-    char tmp[1100];
+    char tmp[PATH_MAX + 8];
     snprintf(tmp, sizeof tmp, "%s.tmp", path);
     pl_h5_quiet();
     errno = 0;

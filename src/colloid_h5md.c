@@ -9,6 +9,7 @@
  * written atomically); an existing PATH is refused unless overwrite. */
 #include <errno.h>
 #include <hdf5.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -26,7 +27,7 @@ struct pl_colloid_traj {
     hid_t val[NTS], step[NTS], time[NTS];
     hsize_t nframes;
     size_t n;
-    char path[1024], tmp[1100];
+    char path[PATH_MAX], tmp[PATH_MAX + 8];
     double *buf;
     int *ibuf;
 };
@@ -133,7 +134,7 @@ int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, int overwrite,
     if (col >= 0) H5Gclose(col);
     if (parts >= 0) H5Gclose(parts);
     if (bad || H5Fflush(t->file, H5F_SCOPE_GLOBAL) < 0) {
-        char why[256], tmp[1100];
+        char why[256], tmp[PATH_MAX + 8];
         pl_h5_error_text(why, sizeof why);
         snprintf(tmp, sizeof tmp, "%s", t->tmp);
         traj_release(t);
@@ -194,7 +195,7 @@ int pl_colloid_traj_write(pl_colloid_traj_t *t, const pl_colloid_t *c, long long
 int pl_colloid_traj_close(pl_colloid_traj_t *t, pl_err_t *err)
 {
     if (!t) return 0;
-    char tmp[1100], path[1024], why[256] = "";
+    char tmp[PATH_MAX + 8], path[PATH_MAX], why[256] = "";
     snprintf(tmp, sizeof tmp, "%s", t->tmp);
     snprintf(path, sizeof path, "%s", t->path);
     errno = 0;

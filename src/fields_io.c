@@ -7,6 +7,7 @@
  * slip walls at 0 and L: Hecht Sec. VIII.A, a capillary with walls_xy). */
 #include <errno.h>
 #include <hdf5.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -48,7 +49,7 @@ int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
             vel[3 * c + (size_t)d] =
                 cnt > 0 ? (double)sim->field_acc[(size_t)(d + 1) * L3 + c] * inv_fixed / (double)cnt : 0.0;
     }
-    char tmp[1100], why[256];
+    char tmp[PATH_MAX + 8], why[256];
     snprintf(tmp, sizeof tmp, "%s.tmp", path);
     pl_h5_quiet();
     errno = 0;

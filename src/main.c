@@ -1,6 +1,7 @@
 /* peloid command-line driver: parse arguments, load the scene, dispatch.
  * Exit codes: 0 ok, 2 bad input (nothing written), 3 stability guard,
  * 4 I/O failure, 5 out of memory. */
+#include <errno.h>
 #include <gsl/gsl_errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,7 +17,7 @@ static const char *const usage =
     "\n"
     "commands:\n"
     "  run SCENE [--out DIR] [--steps N] [--threads N] [--restart CHECKPOINT]\n"
-    "            [--restart-changed KEY[,KEY...]] [--force]\n"
+    "            [--restart-changed KEY[,KEY...]] [--force] [--allow-include-anywhere]\n"
     "        run a scene; writes DIR/{thermo.tsv, summary.json, checkpoint.h5, scene.cfg\n"
     "        [, fields.h5]}.  DIR defaults to out/<scene name>; an existing DIR is\n"
     "        refused unless --force.  --steps N runs N steps (default: the scene's\n"
@@ -26,8 +27,11 @@ static const char *const usage =
     "        checkpoint's, unless named\n"
     "        in --restart-changed (e.g. --restart-changed srd.dt,thermostat.type).\n"
     "        --threads N sets the OpenMP thread count (results do not depend on it).\n"
-    "  check SCENE      validate a scene without running it\n"
-    "  params SCENE [--json] [--strict]\n"
+    "        A scene's @include files are resolved relative to the including file and\n"
+    "        must lie in the scene's directory tree unless --allow-include-anywhere.\n"
+    "  check SCENE [--allow-include-anywhere]\n"
+    "        validate a scene without running it\n"
+    "  params SCENE [--json] [--strict] [--allow-include-anywhere]\n"
     "        print the derived SRD parameters: lambda, nu_kin, nu_col, nu, eta, D_f,\n"
     "        Sc, tau_f (Padding & Louis 2006, Eqs. 4, 6, 9-15)\n"
     "  keys             print the scene-file reference (every key) as Markdown\n"
@@ -36,9 +40,17 @@ static const char *const usage =
     "exit codes: 0 ok, 2 bad input (nothing written), 3 stability guard tripped,\n"
     "            4 I/O error, 5 out of memory\n";
 
+/* One line: control characters a message quotes from the input (a newline
+ * in a scene string) are shown escaped. */
 static int fail(const pl_err_t *err)
 {
-    fprintf(stderr, "peloid: error: %s\n", err->msg);
+    fputs("peloid: error: ", stderr);
+    for (const unsigned char *c = (const unsigned char *)err->msg; *c; ++c) {
+        if (*c >= 0x20 && *c != 0x7f) fputc(*c, stderr);
+        else if (*c == '\n') fputs("\\n", stderr);
+        else fprintf(stderr, "\\x%02x", *c);
+    }
+    fputc('\n', stderr);
     return err->code ? err->code : 1;
 }
 
@@ -48,11 +60,14 @@ static int bad_usage(const char *what)
     return PL_ERR_INPUT;
 }
 
-static int parse_ll(const char *s, long long lo, long long *out)
+/* A decimal integer in [lo, hi]; anything else (empty, trailing text, out of
+ * the range of long long) is refused. */
+static int parse_ll(const char *s, long long lo, long long hi, long long *out)
 {
     char *end;
+    errno = 0;
     long long v = strtoll(s, &end, 10);
-    if (*s == '\0' || *end != '\0' || v < lo) return -1;
+    if (*s == '\0' || *end != '\0' || errno == ERANGE || v < lo || v > hi) return -1;
     *out = v;
     return 0;
 }
@@ -61,6 +76,7 @@ static int cmd_run(int argc, char **argv)
 {
     pl_run_opts_t o = {.out_dir = NULL, .steps = -1, .threads = 0, .restart = NULL, .force = 0,
                        .progress = isatty(2), .restart_changed = NULL};
+    unsigned flags = 0;
     const char *scene_path = NULL;
     char msg[256];
     for (int i = 0; i < argc; ++i) {
@@ -68,33 +84,35 @@ static int cmd_run(int argc, char **argv)
         int has = i + 1 < argc;
         long long v;
         if (!strcmp(a, "--force")) o.force = 1;
+        else if (!strcmp(a, "--allow-include-anywhere")) flags |= PL_SCENE_INCLUDE_ANYWHERE;
         else if (!strcmp(a, "--out") && has) o.out_dir = argv[++i];
         else if (!strcmp(a, "--restart") && has) o.restart = argv[++i];
         else if (!strcmp(a, "--restart-changed") && has) o.restart_changed = argv[++i];
         else if (!strcmp(a, "--steps") && has) {
-            if (parse_ll(argv[++i], 0, &o.steps)) {
-                snprintf(msg, sizeof msg, "--steps %s: expected an integer >= 0", argv[i]);
+            if (parse_ll(argv[++i], 0, PL_STEPS_MAX, &o.steps)) {
+                snprintf(msg, sizeof msg, "--steps %.100s: expected an integer in 0..%lld", argv[i],
+                         (long long)PL_STEPS_MAX);
                 return bad_usage(msg);
             }
         } else if (!strcmp(a, "--threads") && has) {
-            if (parse_ll(argv[++i], 1, &v) || v > 4096) {
-                snprintf(msg, sizeof msg, "--threads %s: expected an integer in 1..4096", argv[i]);
+            if (parse_ll(argv[++i], 1, 4096, &v)) {
+                snprintf(msg, sizeof msg, "--threads %.100s: expected an integer in 1..4096", argv[i]);
                 return bad_usage(msg);
             }
             o.threads = (int)v;
         } else if (a[0] == '-') {
-            snprintf(msg, sizeof msg, "run: unknown or incomplete option '%s'", a);
+            snprintf(msg, sizeof msg, "run: unknown or incomplete option '%.100s'", a);
             return bad_usage(msg);
         } else if (!scene_path) scene_path = a;
         else {
-            snprintf(msg, sizeof msg, "run: unexpected argument '%s'", a);
+            snprintf(msg, sizeof msg, "run: unexpected argument '%.100s'", a);
             return bad_usage(msg);
         }
     }
     if (!scene_path) return bad_usage("run: missing SCENE");
     pl_scene_t *scene = malloc(sizeof *scene);
     pl_err_t err = {0, ""};
-    int rc = scene ? pl_scene_load(scene_path, scene, &err) : PL_ERR_NOMEM;
+    int rc = scene ? pl_scene_load_flags(scene_path, flags, scene, &err) : PL_ERR_NOMEM;
     if (!rc) rc = pl_run(scene, &o, &err);
     free(scene);
     return rc ? fail(&err) : 0;
@@ -104,13 +122,15 @@ static int cmd_scene(int argc, char **argv, int params)
 {
     const char *path = NULL;
     int json = 0, strict = 0;
+    unsigned flags = 0;
     for (int i = 0; i < argc; ++i) {
-        if (params && !strcmp(argv[i], "--json")) json = 1;
+        if (!strcmp(argv[i], "--allow-include-anywhere")) flags |= PL_SCENE_INCLUDE_ANYWHERE;
+        else if (params && !strcmp(argv[i], "--json")) json = 1;
         else if (params && !strcmp(argv[i], "--strict")) strict = 1;
         else if (argv[i][0] != '-' && !path) path = argv[i];
         else {
             char msg[256];
-            snprintf(msg, sizeof msg, "%s: unexpected argument '%s'", params ? "params" : "check", argv[i]);
+            snprintf(msg, sizeof msg, "%s: unexpected argument '%.100s'", params ? "params" : "check", argv[i]);
             return bad_usage(msg);
         }
     }
@@ -118,18 +138,16 @@ static int cmd_scene(int argc, char **argv, int params)
     pl_scene_t *scene = malloc(sizeof *scene);
     pl_err_t err = {0, ""};
     if (!scene) return PL_ERR_NOMEM;
-    int rc = pl_scene_load(path, scene, &err);
-    if (!rc) {
+    int rc = pl_scene_load_flags(path, flags, scene, &err);
+    if (!rc && params && json) {
+        rc = pl_params_write_json(scene, stdout, strict, &err);
+    } else if (!rc && params) {
+        pl_params_print(scene, stdout);
         /* A scene with physical{} adds the unit mapping report (mapping.h). */
-        int mapped = scene->mapping.enabled;
-        if (params && json && mapped) printf("{\"srd\": ");
-        if (params) pl_params_print(scene, stdout, json);
-        else printf("%s: ok\n", path);
-        if (params && mapped) {
-            if (json) printf(", \"mapping\": ");
-            rc = pl_mapping_report(scene, stdout, json, strict, &err);
-            if (json) printf("}\n");
-        }
+        rc = pl_mapping_report(scene, stdout, 0, strict, &err);
+    } else if (!rc) { /* check: run's validation, including the derived values summary.json gets */
+        rc = pl_run_check(scene, &err);
+        if (!rc) printf("%s: ok\n", path);
     }
     free(scene);
     return rc ? fail(&err) : 0;

@@ -1,11 +1,13 @@
 /* The mapping report: units, derived SRD/MD parameters, time-scale tables
  * (Hecht Tables II-IV; PL Table III) for reality and model in seconds and in
  * steps, dimensionless numbers (PL Table II) side by side, and the audit
- * warnings - as readable text and as one JSON object.  NaN (undefined, e.g.
- * no gravity) prints as "-" / null. */
+ * warnings - as readable text and as one JSON object (jansson).  NaN
+ * (undefined, e.g. no gravity) prints as "-" / null; an infinite value is an
+ * error in JSON. */
 #include <math.h>
 #include <stdio.h>
 
+#include "json_build.h"
 #include "peloid/mapping.h"
 
 static const char *coupling_name(int c) { return c == PL_COUPLING_I ? "I" : "II"; }
@@ -16,12 +18,6 @@ static void num(FILE *f, double v)
 {
     if (isfinite(v)) fprintf(f, " %12.4g", v);
     else fprintf(f, " %12s", "-");
-}
-
-static void jnum(FILE *f, const char *key, double v, int comma)
-{
-    if (isfinite(v)) fprintf(f, "\"%s\": %.10g%s", key, v, comma ? ", " : "");
-    else fprintf(f, "\"%s\": null%s", key, comma ? ", " : "");
 }
 
 typedef struct {
@@ -109,90 +105,88 @@ void pl_mapping_print_text(const pl_mapping_t *m, const pl_mapping_colloid_t *c,
     if (m->nwarn == 0) fprintf(f, "  audit: all numbers in the recommended ranges\n");
 }
 
-static void jstr(FILE *f, const char *s)
+static void jrows(pl_json_t *b, json_t *doc, const char *key, const row_t *r, int n, double dt, double md_dt)
 {
-    fputc('"', f);
-    for (; *s; ++s) {
-        if (*s == '"' || *s == '\\') fputc('\\', f);
-        fputc(*s, f);
-    }
-    fputc('"', f);
-}
-
-static void jrows(FILE *f, const char *key, const row_t *r, int n, double dt, double md_dt)
-{
-    fprintf(f, "  \"%s\": {", key);
+    json_t *o = json_object();
     for (int i = 0; i < n; ++i) {
-        fprintf(f, "%s\"%s\": {", i ? ", " : "", r[i].name);
-        jnum(f, "real_s", r[i].real, 1);
-        jnum(f, "model_s", r[i].model, dt > 0);
+        json_t *row = json_object();
+        pl_json_real_or_null(b, row, "real_s", r[i].real);
+        pl_json_real_or_null(b, row, "model_s", r[i].model);
         if (dt > 0) {
-            jnum(f, "srd_steps", r[i].model / dt, 1);
-            jnum(f, "md_steps", r[i].model / md_dt, 0);
+            pl_json_real_or_null(b, row, "srd_steps", r[i].model / dt);
+            pl_json_real_or_null(b, row, "md_steps", r[i].model / md_dt);
         }
-        fprintf(f, "}");
+        pl_json_set(b, o, r[i].name, row);
     }
-    fprintf(f, "},\n");
+    pl_json_set(b, doc, key, o);
 }
 
-void pl_mapping_print_json(const pl_mapping_t *m, const pl_mapping_colloid_t *c, FILE *f)
+int pl_mapping_json(const pl_mapping_t *m, const pl_mapping_colloid_t *c, const char *where, struct json_t **out,
+                    pl_err_t *err)
 {
     const pl_mapping_cg_t *cg = &m->cg;
-    fprintf(f, "{\n  \"coupling\": \"%s\", \"time_match\": \"%s\", \"viscosity_formula\": \"%s\",\n",
-            coupling_name(cg->coupling), match_name(cg->match), visc_name(cg->viscosity));
-    fprintf(f, "  \"units\": {");
-    jnum(f, "a0_m", m->a0, 1);
-    jnum(f, "t0_s", m->t0, 1);
-    jnum(f, "m_f_kg", m->m_f, 1);
-    jnum(f, "kT_model_J", m->kT_model, 1);
-    jnum(f, "energy_scale", m->energy_scale, 0);
-    fprintf(f, "},\n  \"srd\": {");
-    jnum(f, "gamma", cg->gamma, 1);
-    jnum(f, "lambda", cg->lambda, 1);
-    jnum(f, "dt_s", m->dt, 1);
-    jnum(f, "dt_t0", cg->lambda, 1);
-    jnum(f, "nu_nu0", m->nu_sim, 1);
-    jnum(f, "nu_dt_over_a2", m->nu_coeff, 1);
-    jnum(f, "nu_model_m2_s", m->model.nu, 1);
-    jnum(f, "D_fluid_D0", m->d_fluid_sim, 0);
-    fprintf(f, "},\n  \"colloid\": {");
-    jnum(f, "radius_a0", m->sigma, 1);
-    jnum(f, "mass_m_f", m->mass_sim, 1);
-    jnum(f, "gravity_model_m_s2", m->model.g, 1);
-    jnum(f, "gravity_a0_t0_2", m->g_sim, 1);
-    jnum(f, "hamaker_model_J", m->model.hamaker, 1);
-    jnum(f, "D_col_a0_2_t0", m->d_col_sim, 1);
+    pl_json_t b = {err, where, "mapping", 0};
+    json_t *doc = json_object(), *o;
+    pl_json_str(&b, doc, "coupling", coupling_name(cg->coupling));
+    pl_json_str(&b, doc, "time_match", match_name(cg->match));
+    pl_json_str(&b, doc, "viscosity_formula", visc_name(cg->viscosity));
+    const struct { const char *key; double v; } units[] = {
+        {"a0_m", m->a0}, {"t0_s", m->t0}, {"m_f_kg", m->m_f}, {"kT_model_J", m->kT_model},
+        {"energy_scale", m->energy_scale}};
+    o = json_object();
+    for (size_t i = 0; i < sizeof units / sizeof units[0]; ++i) pl_json_real_or_null(&b, o, units[i].key, units[i].v);
+    pl_json_set(&b, doc, "units", o);
+    const struct { const char *key; double v; } srd[] = {
+        {"gamma", cg->gamma}, {"lambda", cg->lambda}, {"dt_s", m->dt}, {"dt_t0", cg->lambda},
+        {"nu_nu0", m->nu_sim}, {"nu_dt_over_a2", m->nu_coeff}, {"nu_model_m2_s", m->model.nu},
+        {"D_fluid_D0", m->d_fluid_sim}};
+    o = json_object();
+    for (size_t i = 0; i < sizeof srd / sizeof srd[0]; ++i) pl_json_real_or_null(&b, o, srd[i].key, srd[i].v);
+    pl_json_set(&b, doc, "srd", o);
+    o = json_object();
+    const struct { const char *key; double v; } col[] = {
+        {"radius_a0", m->sigma}, {"mass_m_f", m->mass_sim}, {"gravity_model_m_s2", m->model.g},
+        {"gravity_a0_t0_2", m->g_sim}, {"hamaker_model_J", m->model.hamaker}, {"D_col_a0_2_t0", m->d_col_sim}};
+    for (size_t i = 0; i < sizeof col / sizeof col[0]; ++i) pl_json_real_or_null(&b, o, col[i].key, col[i].v);
     if (c) {
-        jnum(f, "hamaker_kT", c->hamaker, 1);
-        jnum(f, "coulomb_kT_a0", c->coulomb, 1);
-        jnum(f, "kappa_a0", c->kappa, 1);
-        jnum(f, "primary_minimum_a0", c->primary_minimum, 1);
-        fprintf(f, "\"n_colloids\": %lld, ", c->n_colloids);
+        pl_json_real_or_null(&b, o, "hamaker_kT", c->hamaker);
+        pl_json_real_or_null(&b, o, "coulomb_kT_a0", c->coulomb);
+        pl_json_real_or_null(&b, o, "kappa_a0", c->kappa);
+        pl_json_real_or_null(&b, o, "primary_minimum_a0", c->primary_minimum);
+        pl_json_int(&b, o, "n_colloids", c->n_colloids);
     }
-    jnum(f, "md_dt_s", m->md_dt, 1);
-    jnum(f, "md_dt_t0", m->md_dt / m->t0, 1);
-    fprintf(f, "\"md_substeps\": %lld},\n", m->md_substeps);
+    pl_json_real_or_null(&b, o, "md_dt_s", m->md_dt);
+    pl_json_real_or_null(&b, o, "md_dt_t0", m->md_dt / m->t0);
+    pl_json_int(&b, o, "md_substeps", m->md_substeps);
+    pl_json_set(&b, doc, "colloid", o);
     row_t rows[8];
-    jrows(f, "hecht_times", rows, hecht_rows(m, rows), m->dt, m->md_dt);
-    jrows(f, "pl_times", rows, pl_rows(m, rows), m->dt, m->md_dt);
+    jrows(&b, doc, "hecht_times", rows, hecht_rows(m, rows), m->dt, m->md_dt);
+    jrows(&b, doc, "pl_times", rows, pl_rows(m, rows), m->dt, m->md_dt);
     int n = number_rows(m, rows);
-    fprintf(f, "  \"numbers\": {");
+    o = json_object();
     for (int i = 0; i < n; ++i) {
-        fprintf(f, "%s\"%s\": {", i ? ", " : "", rows[i].name);
-        jnum(f, "real", rows[i].real, 1);
-        jnum(f, "model", rows[i].model, 1);
-        fprintf(f, "\"recommended\": ");
-        jstr(f, rows[i].src);
-        fprintf(f, "}");
+        json_t *row = json_object();
+        pl_json_real_or_null(&b, row, "real", rows[i].real);
+        pl_json_real_or_null(&b, row, "model", rows[i].model);
+        pl_json_str(&b, row, "recommended", rows[i].src);
+        pl_json_set(&b, o, rows[i].name, row);
     }
-    fprintf(f, "},\n  \"warnings\": [");
+    pl_json_set(&b, doc, "numbers", o);
+    json_t *w = json_array();
     for (int i = 0; i < m->nwarn; ++i) {
-        fprintf(f, "%s{\"name\": \"%s\", \"severity\": \"%s\", ", i ? ", " : "", m->warn[i].name,
-                m->warn[i].severity == PL_SEV_WARNING ? "warning" : "note");
-        jnum(f, "value", m->warn[i].value, 1);
-        fprintf(f, "\"text\": ");
-        jstr(f, m->warn[i].text);
-        fprintf(f, "}");
+        json_t *row = json_object();
+        pl_json_str(&b, row, "name", m->warn[i].name);
+        pl_json_str(&b, row, "severity", m->warn[i].severity == PL_SEV_WARNING ? "warning" : "note");
+        pl_json_real_or_null(&b, row, "value", m->warn[i].value);
+        pl_json_str(&b, row, "text", m->warn[i].text);
+        if (!row || json_array_append_new(w, row)) b.failed = b.failed ? 1 : (pl_err_set(err, PL_ERR_NOMEM,
+                                                                                      "out of memory"), 1);
     }
-    fprintf(f, "]\n}\n");
+    pl_json_set(&b, doc, "warnings", w);
+    if (b.failed || !doc) {
+        json_decref(doc);
+        return b.failed ? err->code : pl_err_set(err, PL_ERR_NOMEM, "out of memory building JSON");
+    }
+    *out = doc;
+    return 0;
 }

@@ -9,16 +9,18 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "json_build.h"
 #include "peloid/scene.h"
 
 #define OFF(m) offsetof(pl_scene_t, m)
 #define DLVO_KAPPA_R_MIN 5.0
 
 /* The physical front end is on when any key of physical{} is in the file. */
-static int section_given(const pl_scene_t *s, const pl_section_t *sec)
+/* 1 + the offset of the first key of `sec` given in the file; 0: none. */
+static size_t section_given(const pl_scene_t *s, const pl_section_t *sec)
 {
     for (size_t i = 0; i < sec->nkeys; ++i)
-        if (pl_scene_line_of(s, sec->keys[i].offset) > 0) return 1;
+        if (pl_scene_line_of(s, sec->keys[i].offset) > 0) return sec->keys[i].offset + 1;
     return 0;
 }
 
@@ -127,10 +129,11 @@ static int apply_box(pl_scene_t *s, pl_err_t *err)
 int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
 {
     pl_scene_mapping_t *mp = &s->mapping;
-    mp->enabled = section_given(s, &pl_scene_section_physical);
+    mp->enabled = section_given(s, &pl_scene_section_physical) != 0;
     if (!mp->enabled) {
-        if (section_given(s, &pl_scene_section_coarse_graining))
-            return pl_scene_fail(s, err, OFF(mapping.cg.coupling), "coarse_graining",
+        size_t cg_key = section_given(s, &pl_scene_section_coarse_graining);
+        if (cg_key)
+            return pl_scene_fail(s, err, cg_key - 1, "coarse_graining",
                                  "has no effect without a physical{} section (give at least physical.radius)");
         return 0;
     }
@@ -173,20 +176,39 @@ int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
     return 0;
 }
 
-int pl_mapping_report(const struct pl_scene *scene, FILE *out, int json, int strict, pl_err_t *err)
+int pl_mapping_report_json(const struct pl_scene *scene, struct json_t **out, pl_err_t *err)
 {
     const pl_scene_mapping_t *mp = &scene->mapping;
     if (!mp->enabled) {
-        if (json) fprintf(out, "null\n");
+        *out = json_null();
         return 0;
     }
-    if (json) pl_mapping_print_json(&mp->map, &mp->colloid, out);
-    else pl_mapping_print_text(&mp->map, &mp->colloid, out);
-    if (strict || mp->cg.strict) {
+    return pl_mapping_json(&mp->map, &mp->colloid, scene->path, out, err);
+}
+
+int pl_mapping_report_strict(const struct pl_scene *scene, int strict, pl_err_t *err)
+{
+    const pl_scene_mapping_t *mp = &scene->mapping;
+    if (mp->enabled && (strict || mp->cg.strict)) {
         for (int i = 0; i < mp->map.nwarn; ++i)
             if (mp->map.warn[i].severity == PL_SEV_WARNING)
                 return pl_err_set(err, PL_ERR_INPUT, "%s: strict mapping audit: %s: %s", scene->path,
                                   mp->map.warn[i].name, mp->map.warn[i].text);
     }
     return 0;
+}
+
+int pl_mapping_report(const struct pl_scene *scene, FILE *out, int json, int strict, pl_err_t *err)
+{
+    const pl_scene_mapping_t *mp = &scene->mapping;
+    if (json) {
+        json_t *doc = NULL;
+        int rc = pl_mapping_report_json(scene, &doc, err);
+        if (!rc) rc = pl_json_dump(doc, out, "stdout", err);
+        json_decref(doc);
+        if (rc) return rc;
+    } else if (mp->enabled) {
+        pl_mapping_print_text(&mp->map, &mp->colloid, out);
+    }
+    return pl_mapping_report_strict(scene, strict, err);
 }

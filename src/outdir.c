@@ -1,5 +1,7 @@
 /* Output directory creation and atomic file writes (DESIGN.md "Errors"). */
 #include <errno.h>
+#include <limits.h>
+#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -12,33 +14,107 @@ void pl_path_join(char *buf, size_t n, const char *dir, const char *name)
     snprintf(buf, n, "%s/%s", dir, name);
 }
 
-static int mkdir_p(const char *dir)
+/* dir is an ancestor of (or the same as) path; both resolved. */
+static int contains(const char *dir, const char *path)
 {
-    char tmp[1024];
-    snprintf(tmp, sizeof tmp, "%s", dir);
-    for (char *p = tmp + 1; *p; ++p) {
-        if (*p != '/') continue;
-        *p = '\0';
-        if (mkdir(tmp, 0777) && errno != EEXIST) return -1;
-        *p = '/';
-    }
-    if (mkdir(tmp, 0777) && errno != EEXIST) return -1;
-    return 0;
+    size_t n = strlen(dir);
+    if (n == 1 && dir[0] == '/') return 1;
+    return strncmp(dir, path, n) == 0 && (path[n] == '/' || path[n] == '\0');
 }
 
-int pl_outdir_prepare(const char *dir, int force, pl_err_t *err)
+/* The output directory is resolved before anything is created: the longest
+ * prefix that exists goes through realpath(), the rest must be plain names
+ * (no "." or ".."), so no spelling of the path reaches an existing directory
+ * that the existence check did not see (`victim/newdir/..` is `victim`). */
+int pl_outdir_prepare(const char *dir, int force, const char *scene_path, char *resolved, size_t n,
+                      pl_err_t *err)
 {
+    size_t len = strlen(dir);
+    if (len == 0) return pl_err_set(err, PL_ERR_INPUT, "--out \"\": empty output directory");
+    if (len + 32 >= PATH_MAX) /* room for "/checkpoint.h5.tmp" */
+        return pl_err_set(err, PL_ERR_INPUT, "%.80s...: output directory is %zu characters; allowed: < %d",
+                          dir, len, PATH_MAX - 32);
+    /* head = longest existing prefix, tail = the components still to create */
+    char head[PATH_MAX], tail[PATH_MAX] = "";
+    snprintf(head, sizeof head, "%s", dir);
     struct stat st;
-    if (stat(dir, &st) == 0) {
-        if (!S_ISDIR(st.st_mode))
-            return pl_err_set(err, PL_ERR_INPUT, "%s: output path exists and is not a directory", dir);
+    for (;;) {
+        size_t hl = strlen(head);
+        while (hl > 1 && head[hl - 1] == '/') head[--hl] = '\0';
+        if (lstat(head, &st) == 0) break;
+        char *slash = strrchr(head, '/');
+        const char *seg = slash ? slash + 1 : head; /* prepend "seg/" to tail (both parts of dir) */
+        size_t sl = strlen(seg), tl = strlen(tail);
+        memmove(tail + sl + (tl ? 1 : 0), tail, tl + 1);
+        memcpy(tail, seg, sl);
+        if (tl) tail[sl] = '/';
+        if (!slash) {
+            snprintf(head, sizeof head, ".");
+            break;
+        }
+        if (slash == head) {
+            snprintf(head, sizeof head, "/");
+            break;
+        }
+        *slash = '\0';
+    }
+    char real[PATH_MAX];
+    if (!realpath(head, real))
+        return pl_err_set(err, PL_ERR_INPUT, "%s: cannot resolve %s: %s", dir, head, strerror(errno));
+    if (stat(real, &st) || !S_ISDIR(st.st_mode)) {
+        if (!*tail) return pl_err_set(err, PL_ERR_INPUT, "%s: output path exists and is not a directory", dir);
+        return pl_err_set(err, PL_ERR_INPUT, "%s: %s is not a directory", dir, head);
+    }
+    size_t rl = strlen(real), base_len = rl;
+    char tmp[PATH_MAX], exist[PATH_MAX];
+    memcpy(exist, real, rl + 1);
+    snprintf(tmp, sizeof tmp, "%s", tail);
+    for (char *save = NULL, *c = strtok_r(tmp, "/", &save); c; c = strtok_r(NULL, "/", &save)) {
+        if (!strcmp(c, ".") || !strcmp(c, ".."))
+            return pl_err_set(err, PL_ERR_INPUT, "%s: '%s' after the part of the path that exists (%s); "
+                              "allowed: plain directory names there", dir, c, exist);
+        size_t cl = strlen(c);
+        if (cl > NAME_MAX)
+            return pl_err_set(err, PL_ERR_INPUT, "%.80s...: a directory name of %zu characters; allowed: <= %d",
+                              dir, cl, NAME_MAX);
+        if (rl + 1 + cl + 32 >= PATH_MAX || rl + 1 + cl >= n)
+            return pl_err_set(err, PL_ERR_INPUT, "%.80s...: output directory path is longer than %d characters",
+                              dir, PATH_MAX - 32);
+        if (rl > 1) real[rl++] = '/';
+        memcpy(real + rl, c, cl + 1);
+        rl += cl;
+    }
+    if (rl + 32 >= PATH_MAX || rl >= n)
+        return pl_err_set(err, PL_ERR_INPUT, "%.80s...: output directory path is longer than %d characters", dir,
+                          PATH_MAX - 32);
+    if (!*tail) { /* it exists */
         if (!force)
             return pl_err_set(err, PL_ERR_INPUT,
-                              "%s: output directory exists; use --force to write into it or --out DIR", dir);
-        return 0;
+                              "%s: output directory exists; use --force to write into it or --out DIR%s%s%s",
+                              dir, strcmp(real, dir) ? " (" : "", strcmp(real, dir) ? real : "",
+                              strcmp(real, dir) ? ")" : "");
+        char cwd[PATH_MAX], sd[PATH_MAX], scene_dir[PATH_MAX];
+        if (getcwd(cwd, sizeof cwd) && contains(real, cwd))
+            return pl_err_set(err, PL_ERR_INPUT, "%s: output directory %s holds the working directory; "
+                              "refused even with --force", dir, real);
+        const char *slash = scene_path ? strrchr(scene_path, '/') : NULL;
+        snprintf(sd, sizeof sd, "%.*s", slash ? (int)(slash - scene_path) + (slash == scene_path) : 1,
+                 slash ? scene_path : ".");
+        if (scene_path && realpath(sd, scene_dir) && contains(real, scene_dir))
+            return pl_err_set(err, PL_ERR_INPUT, "%s: output directory %s holds the scene file; refused even "
+                              "with --force", dir, real);
     }
-    if (mkdir_p(dir))
-        return pl_err_set(err, PL_ERR_IO, "%s: cannot create output directory: %s", dir, strerror(errno));
+    memcpy(resolved, real, rl + 1);
+    /* create the missing components, one at a time */
+    for (size_t i = base_len + 1; i <= rl; ++i) {
+        if (resolved[i] != '/' && resolved[i] != '\0') continue;
+        char keep = resolved[i];
+        resolved[i] = '\0';
+        int bad = mkdir(resolved, 0777) && errno != EEXIST;
+        int e = errno;
+        resolved[i] = keep;
+        if (bad) return pl_err_set(err, PL_ERR_IO, "%s: cannot create output directory: %s", resolved, strerror(e));
+    }
     return 0;
 }
 

@@ -1,14 +1,109 @@
-/* `peloid params`: the SRD fluid's derived parameters from PL Sec. II.B. */
+/* `peloid params`: the SRD fluid's derived parameters from PL Sec. II.B,
+ * as text or as JSON (jansson; also the "derived" object of summary.json). */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
+#include <string.h>
 
+#include "json_build.h"
+#include "peloid/colloid.h"
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"
 
-void pl_params_print(const pl_scene_t *sc, FILE *out, int json)
+/* kT of the fluid: the thermostat's target, else the initial temperature. */
+static double fluid_kT(const pl_scene_t *sc)
 {
-    const double kT = sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature
-                                                            : sc->fluid.temperature;
+    return sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature : sc->fluid.temperature;
+}
+
+int pl_params_json(const pl_scene_t *sc, struct json_t **out, pl_err_t *err)
+{
+    const double kT = fluid_kT(sc);
+    pl_srd_theory_t t;
+    pl_srd_theory(sc->fluid.density, sc->srd.alpha_deg * M_PI / 180.0, sc->srd.dt, kT, &t);
+    pl_json_t b = {err, sc->path, "derived", 0};
+    json_t *o = json_object();
+    const struct { const char *key; double v; } v[] = {
+        {"lambda", t.lambda}, {"f_kin", t.f_kin}, {"f_col", t.f_col}, {"nu_kin", t.nu_kin},
+        {"nu_col", t.nu_col}, {"nu", t.nu},       {"eta", t.eta},     {"D_f", t.D_f},
+        {"Sc", t.Sc},         {"tau_f", t.tau_f}, {"c_s", t.c_s},     {"kT", kT},
+    };
+    /* without fluid (density 0) the SRD transport coefficients are undefined: null */
+    for (size_t i = 0; i < sizeof v / sizeof v[0]; ++i) {
+        if (sc->fluid.density > 0) pl_json_real(&b, o, v[i].key, v[i].v);
+        else pl_json_real_or_null(&b, o, v[i].key, v[i].v);
+    }
+    if (sc->box.walls_z == PL_WALLS_NOSLIP) { /* nominal shear rate (u_top - u_bottom) / Lz, Hecht Sec. VIII.C */
+        double shear[2];
+        for (int d = 0; d < 2; ++d)
+            shear[d] = (sc->box.wall_velocity[1][d] - sc->box.wall_velocity[0][d]) / sc->box.cells[2];
+        pl_json_reals(&b, o, "wall_shear_rate", shear, 2);
+    }
+    if (b.failed && err->code == PL_ERR_INPUT) { /* name the input that gives it */
+        char what[sizeof err->msg];
+        const char *p = strstr(err->msg, "'derived.");
+        snprintf(what, sizeof what, "%s", p ? p + 1 : err->msg);
+        char *q = strchr(what, '\'');
+        if (q) *q = '\0';
+        json_decref(o);
+        return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.dt), "srd.dt",
+                             "%g with fluid.density = %g, kT = %g, alpha = %g deg gives a non-finite %s "
+                             "(PL Eqs. 4-15); allowed: values with finite derived parameters",
+                             sc->srd.dt, sc->fluid.density, kT, sc->srd.alpha_deg, what);
+    }
+    if (b.failed || !o) {
+        json_decref(o);
+        return b.failed ? err->code : pl_err_set(err, PL_ERR_NOMEM, "out of memory building JSON");
+    }
+    *out = o;
+    return 0;
+}
+
+int pl_run_check(const pl_scene_t *sc, pl_err_t *err)
+{
+    json_t *derived = NULL, *mapping = NULL;
+    int rc = pl_params_json(sc, &derived, err);
+    if (!rc) rc = pl_mapping_report_json(sc, &mapping, err);
+    json_decref(derived);
+    json_decref(mapping);
+    if (!rc && sc->colloids.count > 0) { /* placement: init file, overlaps */
+        pl_colloid_t *c = NULL;
+        rc = pl_colloid_create(sc, &c, err);
+        pl_colloid_free(c);
+    }
+    return rc;
+}
+
+int pl_params_write_json(const pl_scene_t *sc, FILE *out, int strict, pl_err_t *err)
+{
+    json_t *srd = NULL, *map = NULL, *doc;
+    int rc = pl_params_json(sc, &srd, err);
+    if (rc) return rc;
+    if (!sc->mapping.enabled) {
+        doc = srd;
+    } else { /* a scene with physical{} adds the unit mapping report (mapping.h) */
+        if ((rc = pl_mapping_report_json(sc, &map, err)) || (rc = pl_mapping_report_strict(sc, strict, err))) {
+            json_decref(srd);
+            json_decref(map);
+            return rc;
+        }
+        doc = json_object();
+        pl_json_t b = {err, sc->path, "", 0};
+        pl_json_set(&b, doc, "srd", srd);
+        pl_json_set(&b, doc, "mapping", map);
+        if (b.failed) {
+            json_decref(doc);
+            return err->code;
+        }
+    }
+    rc = pl_json_dump(doc, out, "stdout", err);
+    json_decref(doc);
+    return rc;
+}
+
+void pl_params_print(const pl_scene_t *sc, FILE *out)
+{
+    const double kT = fluid_kT(sc);
     pl_srd_theory_t t;
     pl_srd_theory(sc->fluid.density, sc->srd.alpha_deg * M_PI / 180.0, sc->srd.dt, kT, &t);
     const int hecht = sc->srd.rule == PL_RULE_HECHT_AXES;
@@ -17,16 +112,6 @@ void pl_params_print(const pl_scene_t *sc, FILE *out, int json)
     double shear[2];
     for (int d = 0; d < 2; ++d)
         shear[d] = (sc->box.wall_velocity[1][d] - sc->box.wall_velocity[0][d]) / sc->box.cells[2];
-    if (json) {
-        fprintf(out,
-                "{\"lambda\": %.10g, \"f_kin\": %.10g, \"f_col\": %.10g, \"nu_kin\": %.10g, "
-                "\"nu_col\": %.10g, \"nu\": %.10g, \"eta\": %.10g, \"D_f\": %.10g, \"Sc\": %.10g, "
-                "\"tau_f\": %.10g, \"c_s\": %.10g, \"kT\": %.10g",
-                t.lambda, t.f_kin, t.f_col, t.nu_kin, t.nu_col, t.nu, t.eta, t.D_f, t.Sc, t.tau_f, t.c_s, kT);
-        if (sheared) fprintf(out, ", \"wall_shear_rate\": [%.10g, %.10g]", shear[0], shear[1]);
-        fprintf(out, "}\n");
-        return;
-    }
     fprintf(out, "SRD fluid of scene %s (units: a0 = 1, m_f = 1, kT_ref = 1)\n", sc->path);
     fprintf(out, "  gamma = %g particles/cell, dt = %g, alpha = %g deg (%s), kT = %g\n", sc->fluid.density,
             sc->srd.dt, sc->srd.alpha_deg, hecht ? "hecht_axes: 90 deg" : "random_axis", kT);

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "json_build.h"
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
 #include "peloid/io.h"
@@ -18,8 +19,8 @@
 #include "peloid/srd_theory.h"
 
 typedef struct {
-    char dir[1024];
-    char thermo_path[1100];
+    char dir[PATH_MAX]; /* resolved output directory (pl_outdir_prepare) */
+    char thermo_path[PATH_MAX + 16];
     FILE *thermo;
     double t_start, t_last_row;
     long long step_last_row;
@@ -125,66 +126,105 @@ static void progress(const pl_sim_t *sim, long long first, long long last, doubl
     fflush(stderr);
 }
 
-static int write_summary(const writer_t *w, const pl_sim_t *sim, long long first, double wall,
-                         pl_err_t *err)
+/* The part of summary.json known before the run (build info, scene, derived
+ * parameters, mapping, boundaries, colloid pair settings): built before the
+ * output directory is created, so that a non-finite value is bad input with
+ * nothing written. */
+static int summary_head(const pl_sim_t *sim, json_t **out, pl_err_t *err)
 {
-    char path[1100], tmp[1200], topo[256];
-    pl_path_join(path, sizeof path, w->dir, "summary.json");
-    FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
-    if (!f) return PL_ERR_IO;
     const pl_scene_t *sc = &sim->scene;
-    pl_topology_summary(topo, sizeof topo);
-    double updates = (double)(sim->step - first) * (double)sim->fluid.n;
-    fprintf(f, "{\n  \"peloid\": {\"git_revision\": \"%s\", \"compiler\": \"%s\", \"cflags\": \"%s\", "
-               "\"real\": \"%s\"},\n",
-            PL_GIT_REV, __VERSION__, PL_CFLAGS, PL_REAL_NAME);
-    fprintf(f, "  \"scene_file\": \"%s\",\n  \"scene\": ", sc->path);
-    pl_scene_print_json(sc, f, "  ");
-    fprintf(f, ",\n  \"derived\": ");
-    pl_params_print(sc, f, 1);
-    fprintf(f, "  ,\"mapping\": ");
-    pl_err_t ignored;
-    pl_mapping_report(sc, f, 1, 0, &ignored); /* null without physical{} */
-    if (sc->mapping.enabled)
-        fprintf(f, ",\n  \"units_si\": {\"a0_m\": %.10g, \"t0_s\": %.10g, \"m_f_kg\": %.10g, \"kT_J\": %.10g, "
-                   "\"model_temperature_K\": %.10g, \"real_temperature_K\": %.10g}",
-                sc->mapping.map.a0, sc->mapping.map.t0, sc->mapping.map.m_f, sc->mapping.map.kT_model,
-                sc->mapping.map.kT_model / PL_KB, sc->mapping.physical.temperature);
+    pl_json_t b = {err, sc->path, "", 0};
+    json_t *doc = json_object(), *o = json_object(), *v = NULL;
+    pl_json_str(&b, o, "git_revision", PL_GIT_REV);
+    pl_json_str(&b, o, "compiler", __VERSION__);
+    pl_json_str(&b, o, "cflags", PL_CFLAGS);
+    pl_json_str(&b, o, "real", PL_REAL_NAME);
+    pl_json_set(&b, doc, "peloid", o);
+    pl_json_str(&b, doc, "scene_file", sc->path);
+    int rc = 0;
+    if (!b.failed && !(rc = pl_scene_json(sc, &v, err))) pl_json_set(&b, doc, "scene", v);
+    if (!b.failed && !rc && !(rc = pl_params_json(sc, &v, err))) pl_json_set(&b, doc, "derived", v);
+    if (!b.failed && !rc && !(rc = pl_mapping_report_json(sc, &v, err))) pl_json_set(&b, doc, "mapping", v);
+    if (!b.failed && !rc && sc->mapping.enabled) {
+        const pl_mapping_t *m = &sc->mapping.map;
+        b.prefix = "units_si";
+        o = json_object();
+        pl_json_real(&b, o, "a0_m", m->a0);
+        pl_json_real(&b, o, "t0_s", m->t0);
+        pl_json_real(&b, o, "m_f_kg", m->m_f);
+        pl_json_real(&b, o, "kT_J", m->kT_model);
+        pl_json_real(&b, o, "model_temperature_K", m->kT_model / PL_KB);
+        pl_json_real(&b, o, "real_temperature_K", sc->mapping.physical.temperature);
+        pl_json_set(&b, doc, "units_si", o);
+    }
     int walls[3]; /* each axis: periodic, or noslip / slip walls at 0 and L */
     pl_scene_box_walls(&sc->box, walls);
-    fprintf(f, ",\n  \"boundaries\": {\"x\": \"%s\", \"y\": \"%s\", \"z\": \"%s\"}",
-            pl_scene_boundary_name(walls[0]), pl_scene_boundary_name(walls[1]),
-            pl_scene_boundary_name(walls[2]));
+    o = json_object();
+    pl_json_str(&b, o, "x", pl_scene_boundary_name(walls[0]));
+    pl_json_str(&b, o, "y", pl_scene_boundary_name(walls[1]));
+    pl_json_str(&b, o, "z", pl_scene_boundary_name(walls[2]));
+    pl_json_set(&b, doc, "boundaries", o);
     if (sim->colloids) {
         const pl_colloid_depl_info_t *d = &sim->colloids->depl;
-        fprintf(f, ",\n  \"colloid_pairs\": {\"sigma_cc\": %.10g, \"sigma_rule\": \"%s\", "
-                   "\"d_match\": %.10g, \"phi_cc_at_d_match\": %.10g, \"depletion_at_sigma_cc\": %.10g, "
-                   "\"depletion_comp\": %s}",
-                d->sigma_cc, d->rule == PL_SIGMA_PL ? "pl" : "fixed", d->d_match, d->phi_match,
-                d->phi_sigma, d->table_n ? "true" : "false");
+        b.prefix = "colloid_pairs";
+        o = json_object();
+        pl_json_real(&b, o, "sigma_cc", d->sigma_cc);
+        pl_json_str(&b, o, "sigma_rule", d->rule == PL_SIGMA_PL ? "pl" : "fixed");
+        pl_json_real(&b, o, "d_match", d->d_match);
+        pl_json_real(&b, o, "phi_cc_at_d_match", d->phi_match);
+        pl_json_real(&b, o, "depletion_at_sigma_cc", d->phi_sigma);
+        pl_json_set(&b, o, "depletion_comp", json_boolean(d->table_n));
+        pl_json_set(&b, doc, "colloid_pairs", o);
     }
-    fprintf(f, ",\n  \"threads\": %d,\n  \"topology\": \"%s\",\n", sim->nthreads, topo);
-    fprintf(f, "  \"fluid_particles\": %zu,\n  \"first_step\": %lld,\n  \"last_step\": %lld,\n",
-            sim->fluid.n, first, sim->step);
-    fprintf(f, "  \"wall_seconds\": %.6g,\n  \"particle_updates_per_second\": %.6g,\n", wall,
-            wall > 0 ? updates / wall : 0.0);
-    fprintf(f, "  \"stage_seconds\": {");
-    for (int k = 0; k < sim->nstages; ++k)
-        fprintf(f, "%s\"%s\": %.6g", k ? ", " : "", sim->stages[k].name, sim->stages[k].seconds);
-    fprintf(f, "}\n}\n");
+    if (rc || b.failed || !doc) {
+        json_decref(doc);
+        return rc ? rc : b.failed ? err->code : pl_err_set(err, PL_ERR_NOMEM, "out of memory building JSON");
+    }
+    *out = doc;
+    return 0;
+}
+
+/* summary.json: the head and what the run measured. */
+static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, long long first, double wall,
+                         pl_err_t *err)
+{
+    char path[PATH_MAX], tmp[PATH_MAX + 8], topo[256];
+    pl_topology_summary(topo, sizeof topo);
+    double updates = (double)(sim->step - first) * (double)sim->fluid.n;
+    pl_json_t b = {err, path, "", 0};
+    pl_path_join(path, sizeof path, w->dir, "summary.json");
+    pl_json_int(&b, doc, "threads", sim->nthreads);
+    pl_json_str(&b, doc, "topology", topo);
+    pl_json_int(&b, doc, "fluid_particles", (long long)sim->fluid.n);
+    pl_json_int(&b, doc, "first_step", first);
+    pl_json_int(&b, doc, "last_step", sim->step);
+    pl_json_real(&b, doc, "wall_seconds", wall);
+    pl_json_real(&b, doc, "particle_updates_per_second", wall > 0 ? updates / wall : 0.0);
+    json_t *st = json_object();
+    b.prefix = "stage_seconds";
+    for (int k = 0; k < sim->nstages; ++k) pl_json_real(&b, st, sim->stages[k].name, sim->stages[k].seconds);
+    pl_json_set(&b, doc, "stage_seconds", st);
+    if (b.failed) return err->code;
+    FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
+    if (!f) return PL_ERR_IO;
+    if (pl_json_dump(doc, f, tmp, err)) {
+        fclose(f);
+        remove(tmp);
+        return PL_ERR_IO;
+    }
     return pl_file_commit(f, tmp, path, err);
 }
 
 static int write_checkpoint(const writer_t *w, const pl_sim_t *sim, pl_err_t *err)
 {
-    char path[1100];
+    char path[PATH_MAX];
     pl_path_join(path, sizeof path, w->dir, "checkpoint.h5");
     return pl_checkpoint_write(sim, path, err);
 }
 
 static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *err)
 {
-    char path[1100], tmp[1200];
+    char path[PATH_MAX], tmp[PATH_MAX + 8];
     pl_path_join(path, sizeof path, w->dir, "scene.cfg");
     FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
     if (!f) return PL_ERR_IO;
@@ -236,6 +276,7 @@ static int loop(pl_sim_t *sim, writer_t *w, const pl_run_opts_t *o, long long la
 int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
 {
     pl_sim_t *sim = NULL;
+    json_t *summary = NULL;
     writer_t w;
     memset(&w, 0, sizeof w);
     int rc = pl_sim_create(scene, o->threads, &sim, err);
@@ -272,11 +313,18 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                         why);
         goto done;
     }
-    if (o->out_dir) snprintf(w.dir, sizeof w.dir, "%s", o->out_dir);
-    else snprintf(w.dir, sizeof w.dir, "out/%s", scene->run.name);
-    if ((rc = pl_outdir_prepare(w.dir, o->force, err))) goto done;
+    if ((rc = summary_head(sim, &summary, err))) goto done;
+    char given[PATH_MAX];
+    if (o->out_dir && strlen(o->out_dir) >= sizeof given) {
+        rc = pl_err_set(err, PL_ERR_INPUT, "--out %.80s...: %zu characters; allowed: < %d", o->out_dir,
+                        strlen(o->out_dir), PATH_MAX - 32);
+        goto done;
+    }
+    if (o->out_dir) snprintf(given, sizeof given, "%s", o->out_dir);
+    else snprintf(given, sizeof given, "out/%s", scene->run.name);
+    if ((rc = pl_outdir_prepare(given, o->force, scene->path, w.dir, sizeof w.dir, err))) goto done;
     if ((rc = write_scene_echo(&w, &sim->scene, err))) goto done;
-    char path[1100];
+    char path[PATH_MAX];
     pl_path_join(w.thermo_path, sizeof w.thermo_path, w.dir, "thermo.tsv");
     if (!(w.thermo = fopen(w.thermo_path, "w"))) {
         rc = pl_err_set(err, PL_ERR_IO, "%s: cannot write: %s", w.thermo_path, strerror(errno));
@@ -331,12 +379,13 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         pl_path_join(path, sizeof path, w.dir, "fields.h5");
         if ((rc = pl_fields_write(sim, path, err))) goto done;
     }
-    rc = write_summary(&w, sim, first, wall, err);
+    rc = write_summary(&w, summary, sim, first, wall, err);
     if (!rc)
         fprintf(stderr, "peloid: done in %.3g s, %.4g Mupdates/s\n", wall,
                 wall > 0 ? (double)(last - first) * (double)sim->fluid.n / wall / 1e6 : 0.0);
 done:
     if (w.thermo) fclose(w.thermo);
+    json_decref(summary);
     pl_sim_free(sim);
     return rc;
 }

@@ -17,11 +17,11 @@ static const char *const rule_choices[] = {"random_axis", "hecht_axes", NULL};
 static const char *const thermo_choices[] = {"none", "heyes", "rescale", NULL};
 
 static const pl_key_t run_keys[] = {
-    {"name", PL_KEY_STRING, OFF(run.name), 0, 0, 0, NULL, 0, "",
-     "-", "scene name; names the default output directory out/<name> (default: file name without .cfg)"},
+    {"name", PL_KEY_STRING, OFF(run.name), 0, 0, PL_KEY_SAFE_NAME, NULL, 0, "",
+     "-", "scene name: letters, digits, `.`, `_`, `-` (not `.` or `..`); names the default output directory out/<name> (default: file name without .cfg)"},
     {"seed", PL_KEY_INT, OFF(run.seed), 0, 9.2e18, 0, NULL, 1, NULL,
      "-", "seed of every random stream (Philox key); same seed => bitwise identical run"},
-    {"steps", PL_KEY_INT, OFF(run.steps), 0, 1e15, 0, NULL, 1000, NULL,
+    {"steps", PL_KEY_INT, OFF(run.steps), 0, (double)PL_STEPS_MAX, 0, NULL, 1000, NULL,
      "collision steps", "number of SRD steps to run (`--steps` overrides)"},
 };
 

@@ -1,8 +1,12 @@
 /* Scene loading: libconfig file -> validated pl_scene_t.
  *
- * Every setting in the file is matched against the schema (scene_keys.c);
- * unknown keys, wrong types and out-of-range values are refused with
- * "FILE:LINE: key 'section.key': problem; allowed: ...". */
+ * The file and its @include files are first expanded by src/scene_text.c
+ * (includes relative to the including file, inside the scene's directory
+ * tree), then parsed by libconfig.  Every setting is matched against the
+ * schema (scene_keys.c); unknown keys, wrong types and out-of-range values
+ * are refused with "FILE:LINE: key 'section.key': problem; allowed: ...".
+ * Integers are range-checked in 64 bits as written in the file (libconfig
+ * 1.5 wraps values without the L suffix to 32 bits). */
 #include <errno.h>
 #include <libconfig.h>
 #include <math.h>
@@ -10,6 +14,7 @@
 #include <string.h>
 
 #include "peloid/scene.h"
+#include "scene_text.h"
 
 static const char *type_name(int t)
 {
@@ -40,16 +45,17 @@ static const char *expected_name(pl_key_type_t t)
 }
 
 typedef struct {
-    const char *label; /* file name used in messages */
+    const pl_scene_text_t *text; /* expanded text: file and line of each setting */
     pl_err_t *err;
 } ctx_t;
 
 static int where_fail(const ctx_t *c, const config_setting_t *s, const char *sec,
                       const char *key, const char *what)
 {
-    const char *file = config_setting_source_file(s);
-    return pl_err_set(c->err, PL_ERR_INPUT, "%s:%u: key '%s%s%s': %s", file ? file : c->label,
-                      config_setting_source_line(s), sec, *sec ? "." : "", key, what);
+    int line;
+    int fi = pl_scene_text_where(c->text, (int)config_setting_source_line(s), &line);
+    return pl_err_set(c->err, PL_ERR_INPUT, "%s:%d: key '%s%s%s': %s", c->text->files[fi], line, sec,
+                      *sec ? "." : "", key, what);
 }
 
 static void range_text(const pl_key_t *k, char *buf, size_t n)
@@ -78,15 +84,65 @@ static double number_of(const config_setting_t *s)
 }
 
 static int check_number(const ctx_t *c, const config_setting_t *s, const char *sec,
-                        const pl_key_t *k, double v)
+                        const pl_key_t *k, int elem, double v)
 {
     if (in_range(k, v)) return 0;
-    char range[128], what[256];
+    char range[128], what[512], lit[64];
     range_text(k, range, sizeof range);
-    snprintf(what, sizeof what, "value %g is out of range; allowed: %s%s%s%s", v, range,
+    if (isfinite(v) || pl_scene_text_token(c->text, (int)config_setting_source_line(s), config_setting_name(s),
+                                           elem, lit, sizeof lit))
+        snprintf(lit, sizeof lit, "%g", v);
+    char el[32] = "";
+    if (elem >= 0) snprintf(el, sizeof el, "element %d: ", elem);
+    snprintf(what, sizeof what, "%svalue %s is out of range%s; allowed: %s%s%s%s", el, lit,
+             isfinite(v) ? "" : " (not a finite double)", range,
              *k->units && strcmp(k->units, "-") ? " (" : "", strcmp(k->units, "-") ? k->units : "",
              *k->units && strcmp(k->units, "-") ? ")" : "");
     return where_fail(c, s, sec, k->name, what);
+}
+
+static void units_text(const pl_key_t *k, char *buf, size_t n)
+{
+    if (*k->units && strcmp(k->units, "-")) snprintf(buf, n, " (%s)", k->units);
+    else buf[0] = '\0';
+}
+
+/* An integer setting (or element `elem` of an integer array) as written in
+ * the file, range-checked in 64 bits. */
+static int get_integer(const ctx_t *c, const config_setting_t *s, const config_setting_t *e, const char *sec,
+                       const pl_key_t *k, int elem, long long *out)
+{
+    long long libval = config_setting_get_int64(e), v = libval;
+    char lit[64], range[128], units[64], what[512];
+    int rc = pl_scene_text_integer(c->text, (int)config_setting_source_line(s), config_setting_name(s), elem,
+                                   libval, &v, lit, sizeof lit);
+    snprintf(range, sizeof range, "%s %.0f and %s %.0f", (k->flags & PL_KEY_MIN_OPEN) ? ">" : ">=", k->min,
+             (k->flags & PL_KEY_MAX_OPEN) ? "<" : "<=", k->max);
+    units_text(k, units, sizeof units);
+    char el[32] = "";
+    if (elem >= 0) snprintf(el, sizeof el, "element %d: ", elem);
+    if (rc == 1) {
+        snprintf(what, sizeof what, "%svalue %s does not fit in a 64-bit integer; allowed: %s%s", el, lit, range,
+                 units);
+        return where_fail(c, s, sec, k->name, what);
+    }
+    if (rc < 0) snprintf(lit, sizeof lit, "%lld", libval);
+    if (!in_range(k, (double)v)) {
+        snprintf(what, sizeof what, "%svalue %s is out of range; allowed: %s%s", el, lit, range, units);
+        return where_fail(c, s, sec, k->name, what);
+    }
+    *out = v;
+    return 0;
+}
+
+/* Scene names name the output directory out/<name>: a safe character set. */
+static const char *bad_name(const char *v)
+{
+    if (!strcmp(v, ".") || !strcmp(v, "..")) return "is a directory reference";
+    if (strspn(v, "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789._-") != strlen(v))
+        return "contains a character outside [A-Za-z0-9._-]";
+    if (v[0] == '-') return "starts with '-'";
+    return NULL;
 }
 
 static int apply_key(const ctx_t *c, const config_setting_t *s, const char *sec,
@@ -97,24 +153,21 @@ static int apply_key(const ctx_t *c, const config_setting_t *s, const char *sec,
     char what[512];
     if (scene->norigin < PL_SCENE_MAX_KEYS) {
         scene->origin[scene->norigin].offset = k->offset;
-        scene->origin[scene->norigin].line = (int)config_setting_source_line(s);
+        int line;
+        scene->origin[scene->norigin].file = pl_scene_text_where(c->text, (int)config_setting_source_line(s), &line);
+        scene->origin[scene->norigin].line = line;
         scene->norigin++;
     }
     int bad_type = 0;
     switch (k->type) {
     case PL_KEY_INT:
         if (!is_integer(t)) { bad_type = 1; break; }
-        {
-            double v = number_of(s);
-            if (check_number(c, s, sec, k, v)) return PL_ERR_INPUT;
-            *(long long *)base = config_setting_get_int64(s);
-        }
-        return 0;
+        return get_integer(c, s, s, sec, k, -1, (long long *)base);
     case PL_KEY_REAL:
         if (!is_number(t)) { bad_type = 1; break; }
         {
             double v = number_of(s);
-            if (check_number(c, s, sec, k, v)) return PL_ERR_INPUT;
+            if (check_number(c, s, sec, k, -1, v)) return PL_ERR_INPUT;
             *(double *)base = v;
         }
         return 0;
@@ -126,8 +179,16 @@ static int apply_key(const ctx_t *c, const config_setting_t *s, const char *sec,
         if (t != CONFIG_TYPE_STRING) { bad_type = 1; break; }
         {
             const char *v = config_setting_get_string(s);
+            const char *why = (k->flags & PL_KEY_SAFE_NAME) && *v ? bad_name(v) : NULL;
+            if (why) {
+                snprintf(what, sizeof what, "\"%.200s\" %s; allowed: letters, digits, '.', '_', '-' "
+                         "(not \".\" or \"..\", not starting with '-')", v, why);
+                return where_fail(c, s, sec, k->name, what);
+            }
             if (strlen(v) >= 128 || strchr(v, '/')) {
-                return where_fail(c, s, sec, k->name, "string must be shorter than 128 characters and contain no '/'");
+                snprintf(what, sizeof what, "\"%.200s\" is %zu characters%s; allowed: a string shorter than 128 "
+                         "characters without '/'", v, strlen(v), strchr(v, '/') ? " with '/'" : "");
+                return where_fail(c, s, sec, k->name, what);
             }
             snprintf(base, 128, "%s", v);
         }
@@ -157,10 +218,15 @@ static int apply_key(const ctx_t *c, const config_setting_t *s, const char *sec,
                          expected_name(k->type));
                 return where_fail(c, s, sec, k->name, what);
             }
-            double v = number_of(e);
-            if (check_number(c, s, sec, k, v)) return PL_ERR_INPUT;
-            if (k->type == PL_KEY_INT3) ((int *)base)[i] = (int)v;
-            else ((double *)base)[i] = v;
+            if (k->type == PL_KEY_INT3) {
+                long long v;
+                if (get_integer(c, s, e, sec, k, i, &v)) return PL_ERR_INPUT;
+                ((int *)base)[i] = (int)v; /* the schema bounds INT3 keys to int */
+            } else {
+                double v = number_of(e);
+                if (check_number(c, s, sec, k, i, v)) return PL_ERR_INPUT;
+                ((double *)base)[i] = v;
+            }
         }
         return 0;
     }
@@ -253,57 +319,77 @@ void pl_scene_defaults(pl_scene_t *scene)
     }
 }
 
-static void default_name(pl_scene_t *scene, const char *label)
+static int default_name(pl_scene_t *scene, const char *label, pl_err_t *err)
 {
-    if (scene->run.name[0]) return;
+    if (scene->run.name[0]) return 0;
     const char *slash = strrchr(label, '/');
     const char *b = slash ? slash + 1 : label;
     snprintf(scene->run.name, sizeof scene->run.name, "%s", b);
     char *dot = strrchr(scene->run.name, '.');
     if (dot && dot != scene->run.name) memset(dot, 0, sizeof scene->run.name - (size_t)(dot - scene->run.name));
+    const char *why = strlen(b) >= sizeof scene->run.name ? "is 128 characters or longer" : bad_name(scene->run.name);
+    if (why)
+        return pl_err_set(err, PL_ERR_INPUT, "%s: key 'name' (default: the file name) \"%.200s\" %s; allowed: "
+                          "letters, digits, '.', '_', '-'; set name = \"...\" in the scene", label,
+                          scene->run.name, why);
+    return 0;
 }
 
-static int load_common(config_t *cfg, int read_ok, const char *label, pl_scene_t *scene, pl_err_t *err)
+static int load_text(const pl_scene_text_t *text, const char *label, pl_scene_t *scene, pl_err_t *err)
 {
-    if (!read_ok) {
-        const char *f = config_error_file(cfg);
-        if (config_error_type(cfg) == CONFIG_ERR_FILE_IO)
-            pl_err_set(err, PL_ERR_INPUT, "%s: cannot read scene file: %s", label, strerror(errno));
-        else
-            pl_err_set(err, PL_ERR_INPUT, "%s:%d: syntax error: %s", f ? f : label,
-                       config_error_line(cfg), config_error_text(cfg));
-        return PL_ERR_INPUT;
+    config_t cfg;
+    config_init(&cfg);
+    int rc = 0;
+    if (config_read_string(&cfg, text->text) != CONFIG_TRUE) {
+        int line;
+        int fi = pl_scene_text_where(text, config_error_line(&cfg), &line);
+        char src[80];
+        int el = config_error_line(&cfg);
+        if (el > (int)text->nlines) { /* libconfig met the end of the text */
+            fi = pl_scene_text_where(text, (int)text->nlines, &line);
+            rc = pl_err_set(err, PL_ERR_INPUT, "%s:%d: syntax error: %s at the end of the file; allowed: every "
+                            "'{', '[', '(' closed", text->files[fi], line, config_error_text(&cfg));
+        } else {
+            pl_scene_text_line(text, el, src, sizeof src);
+            rc = pl_err_set(err, PL_ERR_INPUT, "%s:%d: syntax error: %s in \"%s\"; allowed: settings "
+                            "`key = value;` and groups `name: { ... };`", text->files[fi], line,
+                            config_error_text(&cfg), src);
+        }
     }
-    pl_scene_defaults(scene);
-    snprintf(scene->path, sizeof scene->path, "%s", label);
-    ctx_t c = {label, err};
-    if (apply_root(&c, config_root_setting(cfg), scene)) return PL_ERR_INPUT;
-    default_name(scene, label);
-    return pl_scene_validate(scene, err);
+    if (!rc) {
+        pl_scene_defaults(scene);
+        snprintf(scene->path, sizeof scene->path, "%s", label);
+        for (int i = 1; i < text->nfiles && i < PL_SCENE_MAX_FILES; ++i)
+            snprintf(scene->include_path[i - 1], sizeof scene->include_path[i - 1], "%s", text->files[i]);
+        ctx_t c = {text, err};
+        if (apply_root(&c, config_root_setting(&cfg), scene) || default_name(scene, label, err)) rc = PL_ERR_INPUT;
+    }
+    config_destroy(&cfg);
+    return rc ? rc : pl_scene_validate(scene, err);
+}
+
+int pl_scene_load_flags(const char *path, unsigned flags, pl_scene_t *scene, pl_err_t *err)
+{
+    if (strlen(path) >= sizeof scene->path)
+        return pl_err_set(err, PL_ERR_INPUT, "%.100s...: scene path longer than %zu characters", path,
+                          sizeof scene->path - 1);
+    pl_scene_text_t text;
+    int rc = pl_scene_text_read(&text, path, (flags & PL_SCENE_INCLUDE_ANYWHERE) != 0, err);
+    if (!rc) rc = load_text(&text, path, scene, err);
+    pl_scene_text_free(&text);
+    return rc;
 }
 
 int pl_scene_load(const char *path, pl_scene_t *scene, pl_err_t *err)
 {
-    config_t cfg;
-    config_init(&cfg);
-    errno = 0;
-    FILE *f = fopen(path, "r");
-    int rc;
-    if (!f) {
-        rc = pl_err_set(err, PL_ERR_INPUT, "%s: cannot open scene file: %s", path, strerror(errno));
-    } else {
-        fclose(f);
-        rc = load_common(&cfg, config_read_file(&cfg, path) == CONFIG_TRUE, path, scene, err);
-    }
-    config_destroy(&cfg);
-    return rc;
+    return pl_scene_load_flags(path, 0, scene, err);
 }
 
 int pl_scene_load_string(const char *text, const char *label, pl_scene_t *scene, pl_err_t *err)
 {
-    config_t cfg;
-    config_init(&cfg);
-    int rc = load_common(&cfg, config_read_string(&cfg, text) == CONFIG_TRUE, label, scene, err);
-    config_destroy(&cfg);
+    pl_scene_text_t t;
+    int rc = pl_scene_text_string(&t, text, label, err);
+    if (!rc) rc = load_text(&t, label, scene, err);
+    pl_scene_text_free(&t);
     return rc;
 }

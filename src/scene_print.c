@@ -1,8 +1,10 @@
-/* Printing the scene: the Markdown key reference (README) and the effective
- * scene as libconfig text (echoed into every run's outputs). */
+/* Printing the scene: the Markdown key reference (README), the effective
+ * scene as libconfig text (echoed into every run's outputs) and as a JSON
+ * object (summary.json). */
 #include <stdio.h>
 #include <string.h>
 
+#include "json_build.h"
 #include "peloid/scene.h"
 
 static void default_text(const pl_key_t *k, char *buf, size_t n)
@@ -74,10 +76,21 @@ static void print_value(FILE *f, const pl_key_t *k, const pl_scene_t *scene)
 {
     const char *base = (const char *)scene + k->offset;
     switch (k->type) {
-    case PL_KEY_INT: fprintf(f, "%lld", *(const long long *)base); break;
+    case PL_KEY_INT: { /* L beyond 32 bits, as libconfig wants it */
+        long long v = *(const long long *)base;
+        fprintf(f, "%lld%s", v, v > 2147483647LL || v < -2147483648LL ? "L" : "");
+        break;
+    }
     case PL_KEY_REAL: print_real(f, *(const double *)base); break;
     case PL_KEY_BOOL: fprintf(f, "%s", *(const int *)base ? "true" : "false"); break;
-    case PL_KEY_STRING: fprintf(f, "\"%s\"", base); break;
+    case PL_KEY_STRING: /* escaped, so that the echo loads back */
+        fputc('"', f);
+        for (const char *c = base; *c; ++c) {
+            if (*c == '"' || *c == '\\') fputc('\\', f);
+            fputc(*c, f);
+        }
+        fputc('"', f);
+        break;
     case PL_KEY_CHOICE: fprintf(f, "\"%s\"", k->choices[*(const int *)base]); break;
     case PL_KEY_INT3: {
         const int *v = (const int *)base;
@@ -118,36 +131,44 @@ void pl_scene_print(const pl_scene_t *scene, void *file_ptr)
     }
 }
 
-static void json_value(FILE *f, const pl_key_t *k, const pl_scene_t *scene)
+static void put_value(pl_json_t *b, json_t *obj, const pl_key_t *k, const pl_scene_t *scene)
 {
     const char *base = (const char *)scene + k->offset;
+    json_t *a;
     switch (k->type) {
-    case PL_KEY_BOOL: fprintf(f, "%s", *(const int *)base ? "true" : "false"); break;
-    default: print_value(f, k, scene); break;
+    case PL_KEY_INT: pl_json_int(b, obj, k->name, *(const long long *)base); return;
+    case PL_KEY_REAL: pl_json_real(b, obj, k->name, *(const double *)base); return;
+    case PL_KEY_BOOL: pl_json_set(b, obj, k->name, json_boolean(*(const int *)base)); return;
+    case PL_KEY_STRING: pl_json_str(b, obj, k->name, base); return;
+    case PL_KEY_CHOICE: pl_json_str(b, obj, k->name, k->choices[*(const int *)base]); return;
+    case PL_KEY_INT3:
+        a = json_array();
+        for (int d = 0; a && d < 3; ++d) json_array_append_new(a, json_integer(((const int *)base)[d]));
+        pl_json_set(b, obj, k->name, a);
+        return;
+    case PL_KEY_REAL3: pl_json_reals(b, obj, k->name, (const double *)base, 3); return;
     }
 }
 
-void pl_scene_print_json(const pl_scene_t *scene, void *file_ptr, const char *indent)
+int pl_scene_json(const pl_scene_t *scene, struct json_t **out, pl_err_t *err)
 {
-    FILE *f = file_ptr;
+    pl_json_t b = {err, scene->path, "scene", 0};
     size_t ns;
     const pl_section_t *const *all = pl_scene_sections(&ns);
-    const char *sep = "\n";
-    fprintf(f, "{");
+    json_t *root = json_object();
     for (size_t j = 0; j < ns; ++j) {
         const pl_section_t *sec = all[j];
-        const char *inner = *sec->name ? "    " : "  ";
-        if (*sec->name) {
-            fprintf(f, "%s%s  \"%s\": {", sep, indent, sec->name);
-            sep = "\n";
-        }
+        json_t *obj = *sec->name ? json_object() : root;
         for (size_t i = 0; i < sec->nkeys; ++i) {
-            fprintf(f, "%s%s%s\"%s\": ", sep, indent, inner, sec->keys[i].name);
-            json_value(f, &sec->keys[i], scene);
-            sep = ",\n";
+            b.prefix = *sec->name ? sec->name : "scene";
+            put_value(&b, obj, &sec->keys[i], scene);
         }
-        if (*sec->name) fprintf(f, "\n%s  }", indent);
-        sep = ",\n";
+        if (*sec->name) pl_json_set(&b, root, sec->name, obj);
     }
-    fprintf(f, "\n%s}", indent);
+    if (b.failed || !root) {
+        json_decref(root);
+        return b.failed ? err->code : pl_err_set(err, PL_ERR_NOMEM, "out of memory building JSON");
+    }
+    *out = root;
+    return 0;
 }

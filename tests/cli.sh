@@ -72,6 +72,37 @@ before=$(md5sum run1/thermo.tsv)
 [ $rc -eq 2 ] && grep -q "exists; use --force" err.txt && [ "$(md5sum run1/thermo.tsv)" = "$before" ] && ok "existing output directory refused, untouched" || bad "existing out dir: $(cat err.txt)"
 "$PELOID" run small.cfg --out run1 --force 2> err.txt && ok "--force writes into it" || bad "--force"
 
+# output paths (issue 18): resolved before anything is created
+mkdir victim && echo keep > victim/thermo.tsv
+for f in "" --force; do
+  "$PELOID" run small.cfg --out victim/newdir/.. $f 2> err.txt; rc=$?
+  [ $rc -eq 2 ] && [ "$(cat victim/thermo.tsv)" = keep ] && [ ! -e victim/newdir ] && [ $(wc -l < err.txt) -eq 1 ] \
+    && ok "--out victim/newdir/.. $f refused, victim untouched" || bad "--out victim/newdir/.. $f: rc $rc $(cat err.txt)"
+done
+"$PELOID" run small.cfg --out victim/. 2> err.txt; [ $? -eq 2 ] && grep -q "exists" err.txt && ok "--out victim/. refused: exists" || bad "--out victim/.: $(cat err.txt)"
+"$PELOID" run small.cfg --out . --force 2> err.txt; [ $? -eq 2 ] && grep -q "working directory" err.txt && ok "--out . --force refused (holds the working directory)" || bad "--out . --force: $(cat err.txt)"
+mkdir -p sc/deep && cp small.cfg sc/deep/s.cfg
+"$PELOID" run sc/deep/s.cfg --out sc --force 2> err.txt; [ $? -eq 2 ] && grep -q "holds the scene" err.txt && [ ! -e sc/thermo.tsv ] && ok "--out <scene's ancestor> --force refused" || bad "--out scene ancestor: $(cat err.txt)"
+long=$(printf 'd%.0s' $(seq 1 5000))
+"$PELOID" run small.cfg --out "$long" 2> err.txt; [ $? -eq 2 ] && [ ! -e "${long:0:200}" ] && ok "--out of 5000 characters refused" || bad "long --out: $(cat err.txt)"
+long=$(for i in $(seq 1 21); do printf 'e%.0s' $(seq 1 200); printf /; done)
+"$PELOID" run small.cfg --out "lp/$long" 2> err.txt; [ $? -eq 2 ] && [ ! -e lp ] && ok "--out longer than PATH_MAX in 200-character names refused, nothing created" || bad "long --out path: $(cat err.txt)"
+expect_refused dotdot_name 'name = "..";\nsteps = 1;\n' "dotdot_name.cfg:1" "'name'" '".."'
+expect_refused quote_name 'name = "a\\"b";\n' "quote_name.cfg:1" "'name'" "[A-Za-z0-9._-]"
+# integers in 64 bits (issue 18): libconfig 1.5 wraps values without L to 32 bits
+printf 'seed = 4294967297;\nsteps = 0;\nbox: { cells = [4, 4, 4]; };\n' > wide.cfg
+"$PELOID" run wide.cfg --out wide 2> err.txt && grep -q "^seed = 4294967297L;" wide/scene.cfg && ok "seed = 4294967297 kept in 64 bits" || bad "seed 4294967297: $(cat err.txt; grep seed wide/scene.cfg)"
+expect_refused wrap_cells 'box: { cells = [4294967328, 32, 32]; };\n' "wrap_cells.cfg:1" "box.cells" "4294967328"
+expect_refused wrap_count 'colloids: { count = 4294967360; };\n' "wrap_count.cfg:1" "colloids.count" "4294967360"
+expect_refused huge_steps 'steps = 99999999999999999999;\n' "huge_steps.cfg:1" "'steps'" "99999999999999999999" "64-bit"
+"$PELOID" run small.cfg --steps 99999999999999999999 --out hs 2> err.txt; [ $? -eq 2 ] && [ ! -e hs ] && ok "--steps 99999999999999999999 refused" || bad "--steps overflow: $(cat err.txt)"
+# @include (issue 18): relative to the including file, inside the scene's tree
+mkdir -p inc/sub && printf 'steps = 3;\n@include "sub/b.cfg"\n' > inc/a.cfg && printf '@include "c.cfg"\n' > inc/sub/b.cfg && printf 'seed = -3;\n' > inc/sub/c.cfg
+"$PELOID" check inc/a.cfg 2> err.txt; [ $? -eq 2 ] && grep -q "inc/sub/c.cfg:1: key 'seed'" err.txt && ok "nested @include resolved relative to the including file; error names it" || bad "nested include: $(cat err.txt)"
+printf '@include "../small.cfg"\n' > inc/up.cfg
+"$PELOID" check inc/up.cfg 2> err.txt; [ $? -eq 2 ] && grep -q "outside" err.txt && ok "@include outside the scene's tree refused" || bad "include outside: $(cat err.txt)"
+"$PELOID" check inc/up.cfg --allow-include-anywhere > /dev/null 2> err.txt && ok "--allow-include-anywhere accepts it" || bad "--allow-include-anywhere: $(cat err.txt)"
+
 # determinism through the files: threads, and 2N == N + restart + N
 "$PELOID" run small.cfg --out run2 --threads 2 2> /dev/null
 cmp -s run1/checkpoint.h5 run2/checkpoint.h5 && ok "checkpoint bitwise identical for 1 and 2 threads" || bad "threads change the checkpoint"
@@ -167,6 +198,28 @@ PYEOF
 "$PELOID" params small.cfg > params.txt && grep -q "nu_col" params.txt && grep -q "D_f" params.txt && grep -q "Sc" params.txt && ok "params" || bad "params"
 "$PELOID" params small.cfg --json | $PY -c 'import json,sys; d=json.load(sys.stdin); d=d.get("srd", d); assert d["nu"] > 0' && ok "params --json" || bad "params --json"
 "$PELOID" keys | grep -q '| `density` |' && ok "keys prints the reference" || bad "keys"
+
+# JSON through jansson (issue 18): every shipped scene's check and params --json,
+# and summary.json of short runs, parsed strictly (no NaN / Infinity)
+STRICT='import json,sys; json.load(open(sys.argv[1]), parse_constant=lambda c: sys.exit("bad constant "+c))'
+nj=0; badj=""
+for s in "$ROOT"/scenes/*.cfg; do
+  n=$(basename "$s" .cfg)
+  "$PELOID" check "$s" > /dev/null 2> err.txt || badj="$badj $n(check: $(cat err.txt))"
+  "$PELOID" params "$s" --json > "p_$n.json" 2> err.txt && $PY -c "$STRICT" "p_$n.json" || badj="$badj $n(params: $(cat err.txt))"
+  nj=$((nj+1))
+done
+[ -z "$badj" ] && ok "check + params --json of all $nj shipped scenes: strict JSON" || bad "shipped scenes JSON:$badj"
+for f in run1 mapped cap qs; do $PY -c "$STRICT" $f/summary.json || badj="$badj $f"; done
+[ -z "$badj" ] && ok "summary.json of the runs above: strict JSON" || bad "summary.json strict:$badj"
+printf 'srd: { dt = 1e-320; };\n' > denormal.cfg
+"$PELOID" run denormal.cfg --out denormal 2> err.txt; rc=$?
+[ $rc -eq 2 ] && [ ! -e denormal ] && grep -q "derived.nu_col" err.txt && ok "srd.dt = 1e-320: non-finite derived value refused before JSON, nothing written" || bad "denormal dt: rc $rc $(cat err.txt)"
+"$PELOID" check denormal.cfg 2> /dev/null; [ $? -eq 2 ] && ok "check refuses it too" || bad "check denormal dt"
+
+# the adversarial scene set (issue 18): each refused with exit 2, one line
+# naming file, line and key, nothing written (tests/bad_scenes.sh)
+bash "$ROOT/tests/bad_scenes.sh" "$PELOID" > bad.txt 2>&1 && ok "$(tail -1 bad.txt)" || bad "bad scenes: $(cat bad.txt)"
 
 $PY "$ROOT/tools/readme_keys.py" "$PELOID" "$ROOT/README.md" --check && ok "README scene reference matches peloid keys" || bad "README reference stale (make readme)"
 

@@ -151,7 +151,7 @@ Test(coupling_thermal, hecht2_settled_on_wall, .timeout = 300)
     enum { NB = 10 };
     double blk[NB] = {0}, blkn[NB] = {0}, tf = 0.0, zmean = 0.0, vz = 0.0;
     long long ns = 0;
-    const pl_colloid_t *c = sim->colloids;
+    pl_colloid_t *c = sim->colloids; /* pl_colloid_energy evaluates the pair energies */
     for (long long s = 0; s < steps; s += 5) {
         pl_test_steps(sim, 5);
         pl_colloid_energy_t e;

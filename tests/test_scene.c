@@ -117,3 +117,42 @@ Test(scene, printed_scene_loads_back_identically)
     cr_assert_eq(memcmp(&first.thermostat, &scene.thermostat, sizeof scene.thermostat), 0);
     free(buf);
 }
+
+/* Issue 18: integers as written, in 64 bits (libconfig 1.5 alone wraps
+ * 4294967296 to 0 when the L suffix is missing). */
+Test(scene, integers_in_64_bits)
+{
+    cr_assert_eq(load("steps = 4294967296;\nseed = 4294967297;\n"), 0, "%s", err.msg);
+    cr_expect_eq(scene.run.steps, 4294967296LL);
+    cr_expect_eq(scene.run.seed, 4294967297LL);
+    cr_assert_eq(load("seed = 0x100000001;\n"), 0, "%s", err.msg);
+    cr_expect_eq(scene.run.seed, 4294967297LL);
+    cr_assert_eq(load("steps = 2147483648L;\n"), 0, "%s", err.msg);
+    cr_expect_eq(scene.run.steps, 2147483648LL);
+    expect_error("box: { cells = [4294967328, 32, 32]; };", "s.cfg:1: key 'box.cells'", "4294967328");
+    expect_error("colloids: { count = 4294967360; };", "colloids.count", "4294967360");
+    expect_error("thermostat: { interval = -4294967295; };", "thermostat.interval", "-4294967295");
+    expect_error("\nsteps = 99999999999999999999;", "s.cfg:2: key 'steps'", "99999999999999999999 does not fit");
+}
+
+Test(scene, names_are_safe)
+{
+    cr_assert_eq(load("name = \"run-1.a_b\";"), 0, "%s", err.msg);
+    expect_error("name = \"..\";", "key 'name'", "\"..\"");
+    expect_error("name = \"a/b\";", "key 'name'", "[A-Za-z0-9._-]");
+    expect_error("name = \"a\\\"b\";", "key 'name'", "[A-Za-z0-9._-]");
+}
+
+Test(scene, strings_and_comments_closed)
+{
+    expect_error("seed = 1;\nname = \"abc;\nsteps = 2;\n", "s.cfg:2: key 'name'", "unterminated string");
+    expect_error("seed = 1;\n/* open\nsteps = 2;\n", "s.cfg:2", "unterminated comment");
+    expect_error("seed = 1;\nbox: { cells = [8, 8, 8];\n", "s.cfg:2", "end of the file");
+}
+
+Test(scene, include_is_checked)
+{
+    expect_error("@include \"/\"\n", "s.cfg:1", "is a directory");
+    expect_error("seed = 1;\n@include \"/etc/hostname\"\n", "s.cfg:2", "outside");
+    expect_error("@include \"no/such/file.cfg\"\n", "s.cfg:1", "No such file");
+}

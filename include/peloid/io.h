@@ -9,9 +9,14 @@
 #include "peloid/error.h"
 #include "peloid/sim.h"
 
-/* Creates `dir` (and parents).  If it exists and !force: PL_ERR_INPUT and
- * nothing is created or touched. */
-int pl_outdir_prepare(const char *dir, int force, pl_err_t *err);
+/* Resolves `dir` (realpath of the part that exists; the rest must be plain
+ * names, no "." or "..") into `resolved` (n bytes) and creates what is
+ * missing.  If it exists and !force, or (even with force) it holds the
+ * working directory or the directory of `scene_path` (may be NULL), or the
+ * path is longer than PATH_MAX allows: PL_ERR_INPUT and nothing is created
+ * or touched. */
+int pl_outdir_prepare(const char *dir, int force, const char *scene_path, char *resolved, size_t n,
+                      pl_err_t *err);
 
 /* "<dir>/<name>" into buf. */
 void pl_path_join(char *buf, size_t n, const char *dir, const char *name);

@@ -252,7 +252,9 @@ int pl_mapping_scene_apply(struct pl_scene *scene, pl_err_t *err);
 /* ---- reports ----------------------------------------------------------- */
 /* Readable report / one JSON object; `colloid` may be NULL. */
 void pl_mapping_print_text(const pl_mapping_t *m, const pl_mapping_colloid_t *colloid, FILE *out);
-void pl_mapping_print_json(const pl_mapping_t *m, const pl_mapping_colloid_t *colloid, FILE *out);
+struct json_t;
+int pl_mapping_json(const pl_mapping_t *m, const pl_mapping_colloid_t *colloid, const char *where,
+                    struct json_t **out, pl_err_t *err);
 
 /* For `peloid params SCENE` and summary.json: when the scene has a
  * physical{} section, writes the mapping report (text or JSON) to `out`;
@@ -260,5 +262,12 @@ void pl_mapping_print_json(const pl_mapping_t *m, const pl_mapping_colloid_t *co
  * coarse_graining.strict) any warning becomes PL_ERR_INPUT with the first
  * warning in err.  Returns 0 or PL_ERR_INPUT. */
 int pl_mapping_report(const struct pl_scene *scene, FILE *out, int json, int strict, pl_err_t *err);
+
+/* The mapping report as a jansson object (JSON null without physical{}). */
+int pl_mapping_report_json(const struct pl_scene *scene, struct json_t **out, pl_err_t *err);
+
+/* With strict (or coarse_graining.strict): the first audit warning as
+ * PL_ERR_INPUT; else 0. */
+int pl_mapping_report_strict(const struct pl_scene *scene, int strict, pl_err_t *err);
 
 #endif

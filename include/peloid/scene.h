@@ -21,6 +21,9 @@ enum { PL_VEL_GAUSSIAN = 0, PL_VEL_UNIFORM = 1 };
 enum { PL_RULE_RANDOM_AXIS = 0, PL_RULE_HECHT_AXES = 1 };
 enum { PL_THERMO_NONE = 0, PL_THERMO_HEYES = 1, PL_THERMO_RESCALE = 2 };
 
+/* Largest number of steps of a run (run.steps and --steps). */
+#define PL_STEPS_MAX 1000000000000000LL
+
 typedef struct {
     char name[128];
     long long seed;
@@ -82,13 +85,15 @@ typedef struct {
  * the line too. */
 typedef struct {
     size_t offset;
+    int file; /* 0: the scene file (path), i > 0: include_path[i - 1] */
     int line;
 } pl_scene_origin_t;
 
-enum { PL_SCENE_MAX_KEYS = 256 };
+enum { PL_SCENE_MAX_KEYS = 256, PL_SCENE_MAX_FILES = 8 /* the scene + its @include files */ };
 
 typedef struct pl_scene {
     char path[512];
+    char include_path[PL_SCENE_MAX_FILES - 1][512]; /* @include files, in reading order */
     pl_scene_origin_t origin[PL_SCENE_MAX_KEYS];
     int norigin;
     pl_scene_run_t run;
@@ -114,7 +119,8 @@ typedef enum {
     PL_KEY_CHOICE, /* int: index into choices */
 } pl_key_type_t;
 
-enum { PL_KEY_MIN_OPEN = 1u, PL_KEY_MAX_OPEN = 2u, PL_KEY_INT32 = 4u };
+/* PL_KEY_SAFE_NAME: a string that names a file or directory ([A-Za-z0-9._-]). */
+enum { PL_KEY_MIN_OPEN = 1u, PL_KEY_MAX_OPEN = 2u, PL_KEY_INT32 = 4u, PL_KEY_SAFE_NAME = 8u };
 
 typedef struct {
     const char *name;
@@ -164,6 +170,11 @@ void pl_scene_defaults(pl_scene_t *scene);
  * message "FILE:LINE: key 'a.b': <what is wrong>; <what is allowed>". */
 int pl_scene_load(const char *path, pl_scene_t *scene, pl_err_t *err);
 
+/* Same, with PL_SCENE_* flags: PL_SCENE_INCLUDE_ANYWHERE lets @include name
+ * files outside the scene's directory tree (--allow-include-anywhere). */
+enum { PL_SCENE_INCLUDE_ANYWHERE = 1u };
+int pl_scene_load_flags(const char *path, unsigned flags, pl_scene_t *scene, pl_err_t *err);
+
 /* Same, from a string (tests); `label` stands in for the file name. */
 int pl_scene_load_string(const char *text, const char *label, pl_scene_t *scene,
                          pl_err_t *err);
@@ -188,7 +199,10 @@ void pl_scene_print_reference(void *file_ptr);
 /* Writes the effective scene as libconfig text (echoed into outputs). */
 void pl_scene_print(const pl_scene_t *scene, void *file_ptr);
 
-/* Writes the effective scene as a JSON object (summary.json). */
-void pl_scene_print_json(const pl_scene_t *scene, void *file_ptr, const char *indent);
+/* The effective scene as a jansson object (summary.json): one member per
+ * key, sections as nested objects.  A non-finite number is an error naming
+ * the key. */
+struct json_t;
+int pl_scene_json(const pl_scene_t *scene, struct json_t **out, pl_err_t *err);
 
 #endif
