@@ -160,7 +160,8 @@ Test(depletion, scene_rule_and_kernel_term)
     for (double r = 3.0; r < 4.6; r += 0.29) {
         c->x[0] = 3.0, c->y[0] = c->z[0] = 6.0;
         c->x[1] = 3.0 + r, c->y[1] = c->z[1] = 6.0;
-        pl_colloid_forces(c, &err);
+        pl_err_t ferr;
+        cr_assert_eq(pl_colloid_forces(c, &ferr), 0, "%s", ferr.msg);
         pl_colloid_energy_t e;
         pl_colloid_energy(c, &e);
         double dphi, phi = phi_of(&p, r, &dphi);
