@@ -1,0 +1,28 @@
+#!/bin/bash
+# Interleaved A/B of two peloid binaries on one scene: the colloid MD stage
+# seconds (summary.json stage_seconds "colloid-md") of STEPS collision steps,
+# PAIRS alternating pairs at 1 and 2 threads; medians, min..max and the ratio.
+#
+#   bench/ab_colloid_md.sh OLD_PELOID NEW_PELOID [SCENE] [STEPS] [PAIRS]
+#   (defaults bench/scenes/fig14_model.cfg 10 3)
+set -eu
+cd "$(dirname "$0")/.."
+A=$1; B=$2; SCENE=${3:-bench/scenes/fig14_model.cfg}; STEPS=${4:-10}; PAIRS=${5:-3}
+TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
+stage() { /usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["stage_seconds"]["colloid-md"])' "$1"; }
+med() { sort -g | awk '{a[NR]=$1} END{m=(NR%2)?a[(NR+1)/2]:(a[NR/2]+a[NR/2+1])/2; printf "%.4g %.4g %.4g\n", m, a[1], a[NR]}'; }
+echo "# ab_colloid_md: $SCENE, $STEPS steps, $PAIRS pairs; A = $A, B = $B"
+printf "threads\tA_median_s\tA_min\tA_max\tB_median_s\tB_min\tB_max\tA_over_B\n"
+for t in 1 2; do
+  for r in $(seq "$PAIRS"); do
+    for x in A B; do
+      bin=$A; [ $x = B ] && bin=$B
+      "$bin" run "$SCENE" --steps "$STEPS" --threads "$t" --out "$TMP/o" --force >/dev/null 2>&1
+      stage "$TMP/o/summary.json" >> "$TMP/$x.$t"
+    done
+  done
+  read -r am alo ahi < <(med < "$TMP/A.$t")
+  read -r bm blo bhi < <(med < "$TMP/B.$t")
+  printf "%d\t%s\t%s\t%s\t%s\t%s\t%s\t%.2f\n" "$t" "$am" "$alo" "$ahi" "$bm" "$blo" "$bhi" \
+      "$(awk -v a="$am" -v b="$bm" 'BEGIN{print a/b}')"
+done
