@@ -2,6 +2,7 @@
 #
 #   make run     install dependencies, build, run scenes/quickstart.cfg and plot it
 #   make check   install dependencies, build, run the test suite
+#   make validate  the long physics validations (drag, diffusion, VACF)
 #   make bench   kernel and whole-step benchmarks (bench/out/*.tsv)
 #
 # src/ + kernels/ build build/libpeloid.a, which bin/peloid, tests/ and bench/ link.
@@ -34,7 +35,7 @@ DEB_PKGS := libgsl-dev libhwloc-dev librandom123-dev libhdf5-dev libconfig-dev l
             python3-matplotlib python3-scipy
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: all deps run check check-unit check-cli check-asan bench clean keys readme
+.PHONY: all deps run check check-unit check-cli check-asan validate bench clean keys readme
 all: $(BIN)
 
 # Installs only what is missing; a no-op on a machine that has everything.
@@ -93,8 +94,18 @@ run: $(BIN)
 check: check-unit check-cli check-asan
 	@echo "make check: all suites passed"
 
-check-unit: $(TEST_BIN)
-	@set -e; for t in $(TEST_BIN); do echo "== $$t"; $$t --jobs 1; done
+# The long physics validations (each several minutes on 2 cores) run in
+# `make validate`; `make check` runs everything else.  CI runs both.
+VALIDATE_TESTS := test_coupling_drag test_coupling_vacf
+VALIDATE_BIN := $(patsubst %,$(BUILD)/tests/%,$(VALIDATE_TESTS))
+CHECK_BIN := $(filter-out $(VALIDATE_BIN),$(TEST_BIN))
+
+check-unit: $(CHECK_BIN)
+	@set -e; for t in $(CHECK_BIN); do echo "== $$t"; $$t --jobs 1; done
+
+validate: $(VALIDATE_BIN)
+	@set -e; for t in $(VALIDATE_BIN); do echo "== $$t"; $$t --jobs 1; done
+	@echo "make validate: all suites passed"
 
 check-cli: $(BIN)
 	@bash tests/cli.sh ./$(BIN)
