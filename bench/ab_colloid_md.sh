@@ -7,10 +7,10 @@
 #   (defaults bench/scenes/fig14_model.cfg 10 3)
 set -eu
 cd "$(dirname "$0")/.."
+. bench/common.sh
 A=$1; B=$2; SCENE=${3:-bench/scenes/fig14_model.cfg}; STEPS=${4:-10}; PAIRS=${5:-3}
 TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
 stage() { /usr/bin/python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["stage_seconds"]["colloid-md"])' "$1"; }
-med() { sort -g | awk '{a[NR]=$1} END{m=(NR%2)?a[(NR+1)/2]:(a[NR/2]+a[NR/2+1])/2; printf "%.4g %.4g %.4g\n", m, a[1], a[NR]}'; }
 echo "# ab_colloid_md: $SCENE, $STEPS steps, $PAIRS pairs; A = $A, B = $B"
 printf "threads\tA_median_s\tA_min\tA_max\tB_median_s\tB_min\tB_max\tA_over_B\n"
 for t in 1 2; do

@@ -11,6 +11,7 @@
 # Needs: Debian package `lammps`, build/bench/bench_colloid_md.
 set -eu
 cd "$(dirname "$0")/../.."
+. bench/common.sh
 SCENE=${1:-bench/scenes/fig14_model.cfg}; STEPS=${2:-3200}; REPS=${3:-5}
 OUT=bench/out; mkdir -p "$OUT"; TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
 TSV=$OUT/colloid_peers.tsv
@@ -18,10 +19,8 @@ command -v lmp >/dev/null || { echo "lmp not found: apt-get install -y lammps" >
 [ -x build/bench/bench_colloid_md ] || make build/bench/bench_colloid_md >/dev/null
 read -r RC DT < <(build/bench/bench_colloid_md --lammps "$TMP" "$SCENE")
 N=$(awk '/ atoms$/ {print $1}' "$TMP/colloids.data")
-MPIRUN="mpirun --allow-run-as-root --oversubscribe --bind-to core"
-med() { sort -g | awk '{a[NR]=$1} END{m=(NR%2)?a[(NR+1)/2]:(a[NR/2]+a[NR/2+1])/2; printf "%.4g %.4g %.4g\n", m, a[1], a[NR]}'; }
 
-echo "# run_colloid_peers: $SCENE, $N colloids, cut-off $RC a0, dt $DT, $STEPS steps, $REPS reps, $(lmp -h | grep -m1 'Parallel Simulator' | sed 's/.*Simulator - /LAMMPS /')"
+echo "# run_colloid_peers: $SCENE, $N colloids, cut-off $RC a0, dt $DT, $STEPS steps, $REPS reps, $(lammps_version)"
 printf "code\tranks_or_threads\tcolloids\tsteps\tcolloid_steps_per_s_per_core_median\tmin\tmax\tneighbors_per_colloid\n" | tee "$TSV"
 for P in 1 2; do
   for r in $(seq "$REPS"); do
@@ -32,7 +31,6 @@ for P in 1 2; do
     awk '/^Ave neighs\/atom/ {print $4}' "$TMP/lmp.$P.$r" > "$TMP/lmp.neigh"
     PL_BENCH_THREADS=$P PL_BENCH_ONLY_THREADS=1 build/bench/bench_colloid_md "$SCENE" "$STEPS" 1 > "$TMP/pl.$P.$r"
     sed -n 's/.*colloid_steps_per_s=\([0-9.e+]*\).*/\1/p' "$TMP/pl.$P.$r" | awk -v p="$P" '{print $1/p}' >> "$TMP/pl.$P"
-    sed -n 's/.* n=\([0-9]*\) .*listed_pairs=\([0-9]*\).*/\1 \2/p; s/.*pairs_in_cutoff=\([0-9]*\).*/\1/p' "$TMP/pl.$P.$r" > /dev/null
     PAIRS=$(sed -n 's/.*pairs_in_cutoff=\([0-9]*\).*/\1/p' "$TMP/pl.$P.$r")
   done
   read -r lm llo lhi < <(med < "$TMP/lmp.$P")

@@ -8,6 +8,7 @@
 # Needs: Debian package `lammps` (lmp with the SRD package), bin/peloid.
 set -eu
 cd "$(dirname "$0")/../.."
+. bench/common.sh
 L=${1:-32}; STEPS=${2:-100}; REPS=${3:-3}
 OUT=bench/out; mkdir -p "$OUT"; TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
 TSV=$OUT/peers.tsv
@@ -17,10 +18,8 @@ lmp -h | grep -qw SRD || { echo "lmp has no SRD package" >&2; exit 1; }
 N=$((10 * L * L * L))
 sed "s/cells = \[32, 32, 32\]/cells = [$L, $L, $L]/; s/steps = 100/steps = $STEPS/" \
     bench/peers/srd_fluid.cfg > "$TMP/scene.cfg"
-MPIRUN="mpirun --allow-run-as-root --oversubscribe --bind-to core"
-med() { sort -g | awk '{a[NR]=$1} END{m=(NR%2)?a[(NR+1)/2]:(a[NR/2]+a[NR/2+1])/2; printf "%.4g %.4g %.4g\n", m, a[1], a[NR]}'; }
 
-echo "# run_peers: L=$L ($N SRD particles), $STEPS steps, $REPS reps, $(lmp -h | grep -m1 'Parallel Simulator' | sed 's/.*Simulator - /LAMMPS /')"
+echo "# run_peers: L=$L ($N SRD particles), $STEPS steps, $REPS reps, $(lammps_version)"
 printf "code\tranks_or_threads\tparticles\tsteps\tupdates_per_s_per_core_median\tmin\tmax\n" | tee "$TSV"
 for P in 1 2; do
   for r in $(seq "$REPS"); do
