@@ -31,6 +31,14 @@ int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err)
                              "coupling's fluid (PL Sec. III.C.1); allowed only with "
                              "coupling.method = \"potential\" and fluid.density > 0");
     if (cs->count == 0) return 0;
+    /* work: random placement tests each colloid against all placed before
+     * it, count^2/2 distance checks at least (1e11: about an hour) */
+    double checks = 0.5 * (double)cs->count * (double)cs->count;
+    if (cs->init == PL_CINIT_RANDOM && checks > 1e11)
+        return pl_scene_fail(scene, err, OFF(colloids.count), "colloids.count",
+                             "%lld colloids placed at random take %.3g distance checks (hours); "
+                             "allowed: count <= 447213 with init = \"random\", or init = \"lattice\" "
+                             "or \"file\"", cs->count, checks);
     if (cs->init == PL_CINIT_FILE && !cs->init_file[0])
         return pl_scene_fail(scene, err, OFF(colloids.init), "colloids.init",
                              "\"file\" needs colloids.init_file");

@@ -2,6 +2,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
+#include <unistd.h>
 
 #include "peloid/scene.h"
 
@@ -73,6 +74,18 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
     if (np > 4.0e9)
         return pl_scene_fail(scene, err, OFF(fluid.density), "fluid.density",
                              "%.3g fluid particles (density x cells); allowed: < 4e9", np);
+    /* memory: ~101 B per fluid particle (state, sort twin, cell index),
+     * ~24 B per cell (cell arrays), ~600 B per colloid (state, scratch,
+     * neighbour list); refused beyond the machine's physical memory */
+    double need = 101.0 * np + 24.0 * ncells + 600.0 * (double)scene->colloids.count;
+    long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
+    double have = pages > 0 && psize > 0 ? (double)pages * (double)psize : 0.0;
+    if (have > 0.0 && need > have)
+        return pl_scene_fail(scene, err, np > 0.0 ? OFF(fluid.density) : OFF(box.cells),
+                             np > 0.0 ? "fluid.density" : "box.cells",
+                             "the run needs about %.3g GB (%.3g fluid particles, %.3g cells, %lld "
+                             "colloids); this machine has %.3g GB; allowed: a smaller box or density",
+                             need / 1e9, np, ncells, scene->colloids.count, have / 1e9);
     if (scene->fluid.density > 0 && np < 2.0)
         return pl_scene_fail(scene, err, OFF(fluid.density), "fluid.density",
                              "%.3g fluid particles in the box; allowed: at least 2", np);
