@@ -87,19 +87,6 @@ int pl_ckpt_read_1d(hid_t g, const char *name, hid_t type, void *data, size_t n,
     return 0;
 }
 
-int pl_ckpt_attr_str(hid_t obj, const char *name, const char *value)
-{
-    hid_t t = H5Tcopy(H5T_C_S1);
-    H5Tset_size(t, strlen(value) + 1);
-    hid_t sp = H5Screate(H5S_SCALAR);
-    hid_t a = H5Acreate2(obj, name, t, sp, H5P_DEFAULT, H5P_DEFAULT);
-    herr_t st = a >= 0 ? H5Awrite(a, t, value) : -1;
-    if (a >= 0 && H5Aclose(a) < 0) st = -1;
-    H5Sclose(sp);
-    H5Tclose(t);
-    return st < 0 ? -1 : 0;
-}
-
 char *pl_ckpt_attr_str_read(hid_t obj, const char *name)
 {
     if (H5Aexists(obj, name) <= 0) return NULL;

@@ -30,7 +30,6 @@ int pl_ckpt_write_1d(hid_t g, const char *name, hid_t type, const void *data, si
 int pl_ckpt_read_1d(hid_t g, const char *name, hid_t type, void *data, size_t n, const char *path,
                     pl_err_t *err);
 /* String attribute (write: 0 or -1; read: malloc'ed text or NULL). */
-int pl_ckpt_attr_str(hid_t obj, const char *name, const char *value);
 char *pl_ckpt_attr_str_read(hid_t obj, const char *name);
 
 /* Scene fingerprint (src/checkpoint_scene.c): writes the root attributes

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "checkpoint_h5.h"
+#include "peloid/h5.h"
 
 static const char *const not_physics[] = {
     "name",
@@ -122,7 +123,7 @@ int pl_ckpt_scene_write(hid_t f, const pl_scene_t *scene)
 {
     char *text = scene_text(scene);
     if (!text) return -1;
-    int bad = pl_ckpt_attr_str(f, "scene_keys", text);
+    int bad = pl_h5_attr_str(f, "scene_keys", text);
     long long h = (long long)pl_ckpt_fnv1a(text, strlen(text));
     bad |= pl_ckpt_attr_i64(f, "scene_fingerprint", &h, 1, 1);
     free(text);
