@@ -111,6 +111,7 @@ check-cli: $(BIN)
 	@bash tests/cli.sh ./$(BIN)
 	@bash tests/restart_guard.sh ./$(BIN)
 	@bash tests/full_disk.sh ./$(BIN)
+	@bash tests/regression.sh ./$(BIN)
 
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
 # shrinks the physics runs; the sanitizers slow code ~3-10x), and the
