@@ -3,7 +3,7 @@
  * (rotation), Euler-Maruyama:
  *   x(t+dt) = x + F dt / zeta_t + sqrt(2 kT dt / zeta_t) xi
  * (PL Sec. III compares SRD against such BD in Fig. 4).  The noise is
- * counter-based (Philox keyed by the seed and PL_RNG_COLLOID + 1, counter =
+ * counter-based (Philox keyed by the seed and PL_RNG_BD_NOISE, counter =
  * step, particle, draw), so each particle's kick is independent of the thread
  * count; each loop iteration writes only particle i.  An overdamped particle
  * has no velocity of its own: v and w are set to the drift F/zeta, T/zeta_r
@@ -40,8 +40,8 @@ void pl_colloid_bd_step(const pl_colloid_bd_params_t *p, size_t n, const double 
         double R = rad[i];
         double zt = 6.0 * M_PI * p->eta * R, zr = 8.0 * M_PI * p->eta * R * R * R;
         double st = sqrt(2.0 * p->kT * dt / zt), sr = sqrt(2.0 * p->kT * dt / zr);
-        pl_rand4_t a = pl_rng_uniform4(p->seed, PL_RNG_COLLOID + 1, p->step, i, 0);
-        pl_rand4_t b = pl_rng_uniform4(p->seed, PL_RNG_COLLOID + 1, p->step, i, 1);
+        pl_rand4_t a = pl_rng_uniform4(p->seed, PL_RNG_BD_NOISE, p->step, i, 0);
+        pl_rand4_t b = pl_rng_uniform4(p->seed, PL_RNG_BD_NOISE, p->step, i, 1);
         double g[6];
         pl_rng_gauss2(a.u[0], a.u[1], &g[0], &g[1]);
         pl_rng_gauss2(a.u[2], a.u[3], &g[2], &g[3]);

@@ -18,7 +18,7 @@
  * counted for the cell is replaced by the change of the cell's fluid +
  * colloid momentum (p->wall_fix, summed in cell order by the caller).
  *
- * Random numbers: Philox (seed, PL_RNG_COUPLING + 0 / + 1), counter (step,
+ * Random numbers: Philox (seed, PL_RNG_COUPLE2_ROTATE / PL_RNG_COUPLE2_THERMOSTAT), counter (step,
  * cell).  Cells are independent and each owns its fluid and colloids: the
  * result does not depend on the thread count. */
 #include <math.h>
@@ -32,13 +32,13 @@
 /* Same two rules as the fluid collision (include/peloid/srd_rules.h). */
 static void rotation(const pl_coupling2_params_t *p, uint64_t cell, double R[3][3])
 {
-    pl_srd_rotation(p->rule, p->cos_a, p->sin_a, p->seed, PL_RNG_COUPLING + 0, p->step, cell, R);
+    pl_srd_rotation(p->rule, p->cos_a, p->sin_a, p->seed, PL_RNG_COUPLE2_ROTATE, p->step, cell, R);
 }
 
 /* Mass-weighted Heyes factor (Hecht Eq. 33 with K = sum m (v-u)^2 / 2). */
 static double heyes_zeta(const pl_coupling2_params_t *p, uint64_t cell, size_t nbody, double K)
 {
-    pl_rand4_t r = pl_rng_uniform4(p->seed, PL_RNG_COUPLING + 1, p->step, cell, 0);
+    pl_rand4_t r = pl_rng_uniform4(p->seed, PL_RNG_COUPLE2_THERMOSTAT, p->step, cell, 0);
     return pl_heyes_zeta(p->heyes_eps, p->kT_target, (double)nbody, K, r.u[0], r.u[1], r.u[2]);
 }
 

@@ -34,8 +34,8 @@
  * static chunks of the streaming; the reflections (few) then run serially in
  * particle order, each particle's cell moved in the histogram row of the
  * thread that streamed it, so the counting sort stays consistent and the
- * result is bitwise the same for any thread count.  Random numbers: Philox (seed, PL_RNG_COUPLING
- * + 2), counter (step, particle index, reflection number); particle indices
+ * result is bitwise the same for any thread count.  Random numbers: Philox (seed,
+ * PL_RNG_REFLECT), counter (step, particle index, reflection number); particle indices
  * are those of the last (thread-independent) counting sort. */
 #include <math.h>
 #include <omp.h>
@@ -101,7 +101,7 @@ static void reflect_one(const pl_coupling1_params_t *prm, const pl_coupling_coll
     if (prm->boundary == PL_BOUND_STICK_BOUNCE) { /* g -> -g */
         for (int d = 0; d < 3; ++d) J[d] = -2.0 * (mu_n * gn * n[d] + mu_t * gt[d]);
     } else {
-        pl_rand4_t r = pl_rng_uniform4(prm->seed, PL_RNG_COUPLING + 2, prm->step, idx, nref);
+        pl_rand4_t r = pl_rng_uniform4(prm->seed, PL_RNG_REFLECT, prm->step, idx, nref);
         double gn_new = sqrt(-2.0 * prm->kT / mu_n * log(r.u[0])); /* Hecht Eq. 13 */
         for (int d = 0; d < 3; ++d) J[d] = mu_n * (gn_new - gn) * n[d];
         if (prm->boundary == PL_BOUND_STICK_STOCHASTIC) { /* Hecht Eq. 14 / PL Eq. 21 */

@@ -270,7 +270,7 @@ static int place_random(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
     for (size_t i = 0; i < c->n; ++i) {
         int ok = 0;
         for (uint64_t att = 0; att < 100000 && !ok; ++att) {
-            pl_rand4_t u = pl_rng_uniform4(c->seed, PL_RNG_COLLOID + 2, att, i, 0);
+            pl_rand4_t u = pl_rng_uniform4(c->seed, PL_RNG_COLLOID_PLACE, att, i, 0);
             double R = c->rad[i];
             double *const x[3] = {&c->x[i], &c->y[i], &c->z[i]};
             for (int k = 0; k < 3; ++k) { /* closed axes: the colloid clear of the walls */
@@ -353,7 +353,7 @@ int pl_colloid_create(const pl_scene_t *scene, pl_colloid_t **out, pl_err_t *err
     pl_scene_box_walls(&scene->box, walls);
     for (int k = 0; k < 3; ++k) c->periodic[k] = walls[k] == PL_WALLS_NONE;
     for (size_t i = 0; i < c->n; ++i) {
-        pl_rand4_t u = pl_rng_uniform4(c->seed, PL_RNG_COLLOID + 4, 0, i, 0);
+        pl_rand4_t u = pl_rng_uniform4(c->seed, PL_RNG_COLLOID_RADIUS, 0, i, 0);
         c->rad[i] = cs->radius * (1.0 + sqrt(3.0) * cs->polydispersity * (2.0 * u.u[0] - 1.0));
     }
     int rc = 0;
@@ -369,9 +369,9 @@ int pl_colloid_create(const pl_scene_t *scene, pl_colloid_t **out, pl_err_t *err
         double R = c->rad[i];
         c->mass[i] = cs->mass_density * 4.0 / 3.0 * M_PI * R * R * R;
         c->inertia[i] = 0.4 * c->mass[i] * R * R;
-        pl_rand4_t a = pl_rng_uniform4(c->seed, PL_RNG_COLLOID + 3, 0, i, 0);
-        pl_rand4_t b = pl_rng_uniform4(c->seed, PL_RNG_COLLOID + 3, 0, i, 1);
-        pl_rand4_t q = pl_rng_uniform4(c->seed, PL_RNG_COLLOID + 3, 0, i, 2);
+        pl_rand4_t a = pl_rng_uniform4(c->seed, PL_RNG_COLLOID_VEL, 0, i, 0);
+        pl_rand4_t b = pl_rng_uniform4(c->seed, PL_RNG_COLLOID_VEL, 0, i, 1);
+        pl_rand4_t q = pl_rng_uniform4(c->seed, PL_RNG_COLLOID_VEL, 0, i, 2);
         double g[6], sv = sqrt(cs->temperature / c->mass[i]), sw = sqrt(cs->temperature / c->inertia[i]);
         pl_rng_gauss2(a.u[0], a.u[1], &g[0], &g[1]);
         pl_rng_gauss2(a.u[2], a.u[3], &g[2], &g[3]);

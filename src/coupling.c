@@ -126,7 +126,7 @@ static void clear_interiors(pl_coupling_t *cp, pl_sim_t *sim, const double *rad)
         for (uint64_t draw = 0; draw < 1000; ++draw) {
             if (pl_coupling_inside(&v, L, sim->grid.walls, cp->lk_start, cp->lk_list, r, p) < 0)
                 break;
-            pl_rand4_t u = pl_rng_uniform4(cp->seed, PL_RNG_COUPLING + 3, 0, i, draw);
+            pl_rand4_t u = pl_rng_uniform4(cp->seed, PL_RNG_FLUID_REPLACE, 0, i, draw);
             for (int d = 0; d < 3; ++d) {
                 r[d] = u.u[d] * L[d];
                 if (r[d] >= L[d]) r[d] = 0.0;

@@ -173,7 +173,7 @@ void pl_colloid_quat_rotate(double phi_x, double phi_y, double phi_z, double q[4
 
 typedef struct {
     double dt, kT, eta;  /* Stokes friction 6 pi eta R, 8 pi eta R^3 */
-    uint64_t seed, step; /* counter-based noise (PL_RNG_COLLOID + 1) */
+    uint64_t seed, step; /* counter-based noise (PL_RNG_BD_NOISE) */
 } pl_colloid_bd_params_t;
 
 /* One Brownian dynamics step (overdamped Langevin with Stokes friction):

@@ -20,8 +20,16 @@ typedef enum {
     PL_RNG_THERMOSTAT = 5,
     PL_RNG_WALL_GHOST = 6,
     PL_RNG_WALL_THERMAL = 7,
-    PL_RNG_COLLOID = 16,   /* colloid modules use PL_RNG_COLLOID + k */
-    PL_RNG_COUPLING = 32,  /* coupling modules use PL_RNG_COUPLING + k */
+    /* colloids */
+    PL_RNG_BD_NOISE = 17,         /* Brownian displacements (kernels/colloid_bd.c) */
+    PL_RNG_COLLOID_PLACE = 18,    /* random placement attempts */
+    PL_RNG_COLLOID_VEL = 19,      /* initial translational/rotational velocities */
+    PL_RNG_COLLOID_RADIUS = 20,   /* polydisperse radii */
+    /* colloid-solvent couplings */
+    PL_RNG_COUPLE2_ROTATE = 32,   /* coupling II rotation of a cell with colloids */
+    PL_RNG_COUPLE2_THERMOSTAT = 33, /* coupling II Heyes factor */
+    PL_RNG_REFLECT = 34,          /* coupling I thermal wall velocities (Hecht Eq. 13) */
+    PL_RNG_FLUID_REPLACE = 35,    /* fluid particles moved out of colloids at start */
 } pl_rng_purpose_t;
 
 typedef struct {
