@@ -62,8 +62,9 @@ static int lookup_big(pl_coupling_t *cp, const pl_sim_t *sim, pl_err_t *err)
 
 #define NB(cp, a) ((cp)->near_buf + (size_t)(a) * (cp)->near_cap)
 
-int pl_coupling_stage_select(pl_sim_t *sim, pl_err_t *err)
+int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     pl_coupling_t *cp = sim->coupling;
     pl_fluid_t *f = &sim->fluid;
     int rc = lookup_big(cp, sim, err);
@@ -199,8 +200,9 @@ static size_t owner_start(const pl_coupling_t *cp, int t)
     return lo;
 }
 
-int pl_coupling_stage_potential_md(pl_sim_t *sim, pl_err_t *err)
+int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     pl_coupling_t *cp = sim->coupling;
     pl_colloid_t *c = sim->colloids;
     pl_fluid_t *f = &sim->fluid;

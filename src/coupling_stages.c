@@ -11,8 +11,9 @@
 
 /* Coupling I after stream+bin: reflections with their impulses on the
  * colloids, event counters. */
-int pl_coupling_stage_reflect(pl_sim_t *sim, pl_err_t *err)
+int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     pl_coupling_t *cp = sim->coupling;
     pl_colloid_t *c = sim->colloids;
     int rc = pl_coupling_lookup_update(cp, sim, err);
@@ -53,8 +54,9 @@ static int cmp_u64(const void *a, const void *b)
 /* Coupling II before the fluid collision: colloids binned into the shifted
  * collision cells (sorted by cell, then index), the fluid velocities of the
  * occupied cells saved. */
-int pl_coupling_stage_save(pl_sim_t *sim, pl_err_t *err)
+int pl_coupling_stage_save(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     pl_coupling_t *cp = sim->coupling;
     const pl_colloid_t *c = sim->colloids;
     for (size_t k = 0; k < c->n; ++k)
@@ -88,8 +90,9 @@ int pl_coupling_stage_save(pl_sim_t *sim, pl_err_t *err)
 
 /* Coupling II after the fluid collision: the occupied cells again, with the
  * colloids (Hecht Eq. 15). */
-int pl_coupling_stage_collide(pl_sim_t *sim, pl_err_t *err)
+int pl_coupling_stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     (void)err;
     pl_coupling_t *cp = sim->coupling;
     pl_colloid_t *c = sim->colloids;
@@ -125,8 +128,9 @@ void pl_coupling_total_momentum(const pl_sim_t *sim, double p[3], double *mass)
 
 /* Hecht Sec. VIII.A: the centre-of-mass velocity of fluid + colloids is
  * subtracted from every velocity. */
-int pl_coupling_stage_drift(pl_sim_t *sim, pl_err_t *err)
+int pl_coupling_stage_drift(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     (void)err;
     double P[3], M;
     pl_coupling_total_momentum(sim, P, &M);
@@ -144,8 +148,9 @@ int pl_coupling_stage_drift(pl_sim_t *sim, pl_err_t *err)
     return 0;
 }
 
-int pl_coupling_stage_flow(pl_sim_t *sim, pl_err_t *err)
+int pl_coupling_stage_flow(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     (void)err;
     pl_fluid_obs_t o;
     pl_fluid_t *f = &sim->fluid;

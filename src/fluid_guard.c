@@ -104,8 +104,9 @@ int pl_fluid_guard_check(const pl_sim_t *sim, long long step, int scan, pl_err_t
     return 0;
 }
 
-int pl_fluid_guard_stage(pl_sim_t *sim, pl_err_t *err)
+int pl_fluid_guard_stage(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     /* the stage runs inside step `step` -> step + 1: it checks the state
      * the thermo row of step + 1 would show; positions every
      * PL_FLUID_GUARD_SCAN_INTERVAL steps (the run loop adds a scan before

@@ -38,7 +38,7 @@ static const char *const usage =
     "  --help           this text\n"
     "\n"
     "exit codes: 0 ok, 2 bad input (nothing written), 3 stability guard tripped,\n"
-    "            4 I/O error, 5 out of memory\n";
+    "            4 I/O error, 5 out of memory, 6 internal limit\n";
 
 /* One line: control characters a message quotes from the input (a newline
  * in a scene string) are shown escaped. */
@@ -72,10 +72,31 @@ static int parse_ll(const char *s, long long lo, long long hi, long long *out)
     return 0;
 }
 
+/* The run's information lines, on stderr. */
+static void log_line(const char *line, void *user)
+{
+    (void)user;
+    fprintf(stderr, "%s\n", line);
+}
+
+/* One updating progress line on a terminal. */
+static void progress_line(const pl_run_progress_t *p, void *user)
+{
+    (void)user;
+    double done = (double)(p->step - p->first), todo = (double)(p->last - p->first);
+    double eta = done > 0 ? p->elapsed_s * (todo - done) / done : 0.0;
+    double rate = p->elapsed_s > 0 ? p->fluid_updates / p->elapsed_s / 1e6 : 0.0;
+    fprintf(stderr, "\r  step %lld/%lld  %5.1f%%  ETA %6.1f s  %8.2f Mupdates/s ", p->step, p->last,
+            todo > 0 ? 100.0 * done / todo : 100.0, eta, rate);
+    if (p->done) fputc('\n', stderr);
+    fflush(stderr);
+}
+
 static int cmd_run(int argc, char **argv)
 {
     pl_run_opts_t o = {.out_dir = NULL, .steps = -1, .threads = 0, .restart = NULL, .force = 0,
-                       .progress = isatty(2), .restart_changed = NULL};
+                       .progress = isatty(2) ? progress_line : NULL, .progress_interval_s = 0.25,
+                       .log = log_line, .user = NULL, .restart_changed = NULL};
     unsigned flags = 0;
     const char *scene_path = NULL;
     char msg[256];

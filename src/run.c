@@ -1,8 +1,9 @@
-/* The run loop: step the plan, write thermo rows, checkpoints, fields and the
- * summary.  Order matters for "nothing written on bad input": the scene is
+/* The run: build the simulation, open the outputs, add the writers to the
+ * plan, walk it, then the final checkpoint, fields and summary.  Order matters for "nothing written on bad input": the scene is
  * validated, the sim built and any restart checkpoint read before the output
  * directory is created. */
 #include <errno.h>
+#include <stdarg.h>
 #include <limits.h>
 #include <math.h>
 #include <omp.h>
@@ -17,95 +18,43 @@
 #include "peloid/mapping.h"
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"
+#include "peloid/thermo.h"
 
 typedef struct {
     char dir[PATH_MAX]; /* resolved output directory (pl_outdir_prepare) */
     char thermo_path[PATH_MAX + 16];
     FILE *thermo;
-    double t_start, t_last_row;
+    pl_thermo_table_t columns;
+    double t_last_row;
     long long step_last_row;
 } writer_t;
 
-static void thermo_header(FILE *f, int mapped, int tracked, int walls, int side_walls, int colloids, int reflect,
-                          int pinned)
+/* One line to the driver's log callback (nothing without one). */
+static void say(const pl_run_opts_t *o, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void say(const pl_run_opts_t *o, const char *fmt, ...)
 {
-    fprintf(f, "step\ttime\t%stemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%s%s%s%s%smupdates_per_s\n",
-            mapped ? "time_s\ttemperature_K\t" : "", tracked ? "msd\t" : "",
-            walls ? "sxz_bottom\tsxz_top\tsyz_bottom\tsyz_top\t" : "",
-            side_walls ? "s_side_x\ts_side_y\ts_side_z\t" : "",
-            colloids ? "c_kin_trans\tc_kin_rot\tc_dlvo\tc_hertz\tc_wca\tc_wall\tc_gravity\tc_depl\tc_total\tc_zcm\t" : "",
-            reflect ? "cpl_events\tcpl_truncations\t" : "",
-            pinned ? "cpl_drag_x\tcpl_drag_y\tcpl_drag_z\t" : "");
+    if (!o->log) return;
+    char line[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(line, sizeof line, fmt, ap);
+    va_end(ap);
+    o->log(line, o->user);
 }
 
-/* Wall shear stresses: no-slip walls (moving or not). */
-static int noslip_walls(const pl_sim_t *sim)
+/* Writer stage: one thermo.tsv row, flushed.  PL_ERR_IO naming the file and
+ * the system error when the row did not reach the file (a full disk must not
+ * lose rows silently). */
+static int stage_thermo(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    return sim->scene.box.walls_z == PL_WALLS_NOSLIP && sim->fluid.n > 0;
-}
-
-/* The x/y walls' stress: no-slip capillary walls. */
-static int noslip_side_walls(const pl_sim_t *sim)
-{
-    return sim->scene.box.walls_xy == PL_WALLS_NOSLIP && sim->fluid.n > 0;
-}
-
-/* Coupling I counters (cumulative reflections and truncations, Hecht Sec. IV). */
-static int reflecting(const pl_sim_t *sim)
-{
-    return sim->coupling && sim->coupling->method == PL_COUPLE_HECHT1;
-}
-
-/* Appends one row and flushes it: PL_ERR_IO naming the file and the system
- * error when the row did not reach the file (a full disk must not lose rows
- * silently). */
-static int thermo_row(writer_t *w, const pl_sim_t *sim, pl_err_t *err)
-{
-    pl_fluid_obs_t o;
-    double kT;
-    pl_sim_observe(sim, &o, &kT);
+    writer_t *w = ctx;
     double now = omp_get_wtime();
     double steps = (double)(sim->step - w->step_last_row);
     double rate = now > w->t_last_row && steps > 0 ? steps * (double)sim->fluid.n / (now - w->t_last_row) / 1e6 : 0.0;
-    const double time = (double)sim->step * sim->scene.srd.dt;
-    fprintf(w->thermo, "%lld\t%.10g\t", sim->step, time);
-    const pl_scene_mapping_t *map = &sim->scene.mapping;
-    if (map->enabled) /* physical units: kT = 1 is the model temperature kT_model (Hecht Sec. VII) */
-        fprintf(w->thermo, "%.10g\t%.10g\t", time * map->map.t0, kT * map->map.kT_model / PL_KB);
-    fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t", kT, sim->last_kT_meas, o.momentum[0],
-            o.momentum[1], o.momentum[2], o.kinetic);
-    if (sim->fluid.tracked) fprintf(w->thermo, "%.10g\t", o.msd);
-    if (noslip_walls(sim)) /* PL Eq. 13 stress from each wall's momentum, mean since step 0 */
-        fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t%.10g\t", pl_sim_wall_stress(sim, 0, 0),
-                pl_sim_wall_stress(sim, 1, 0), pl_sim_wall_stress(sim, 0, 1), pl_sim_wall_stress(sim, 1, 1));
-    if (noslip_side_walls(sim)) /* force per area on the x/y walls, mean since step 0 */
-        fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t", pl_sim_wall_stress(sim, 2, 0), pl_sim_wall_stress(sim, 2, 1),
-                pl_sim_wall_stress(sim, 2, 2));
-    if (sim->colloids) { /* colloid energy terms (src/colloid_state.c) */
-        pl_colloid_energy_t ce;
-        pl_colloid_energy(sim->colloids, &ce);
-        fprintf(w->thermo, "%.10g\t%.10g\t", ce.kin_trans, ce.kin_rot);
-        for (int k = 0; k < PL_CE_NTERMS; ++k) fprintf(w->thermo, "%.10g\t", ce.pot[k]);
-        fprintf(w->thermo, "%.10g\t", ce.total);
-        /* centre-of-mass height of the colloids (unwrapped z): sedimentation */
-        const pl_colloid_t *c = sim->colloids;
-        double mz = 0.0, m = 0.0;
-        for (size_t k = 0; k < c->n; ++k) { /* fixed order */
-            mz += c->mass[k] * (c->z[k] + (double)c->iz[k] * c->box[2]);
-            m += c->mass[k];
-        }
-        fprintf(w->thermo, "%.10g\t", m > 0.0 ? mz / m : 0.0);
-    }
-    if (reflecting(sim))
-        fprintf(w->thermo, "%llu\t%llu\t", sim->coupling->events, sim->coupling->truncations);
-    if (sim->coupling && sim->coupling->pinned) { /* mean force per pinned colloid so far */
-        const pl_coupling_t *cp = sim->coupling;
-        double s = cp->pinned_time > 0 ? 1.0 / (cp->pinned_time * (double)sim->colloids->n) : 0.0;
-        fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t", cp->impulse[0] * s, cp->impulse[1] * s,
-                cp->impulse[2] * s);
-    }
+    pl_thermo_sample_t smp;
+    pl_thermo_sample(sim, rate, &smp);
     errno = 0;
-    int bad = fprintf(w->thermo, "%.4g\n", rate) < 0;
+    int bad = pl_thermo_row(&w->columns, &smp, w->thermo) < 0;
     bad |= fflush(w->thermo) != 0;
     bad |= ferror(w->thermo) != 0;
     w->t_last_row = now;
@@ -116,14 +65,29 @@ static int thermo_row(writer_t *w, const pl_sim_t *sim, pl_err_t *err)
     return 0;
 }
 
-static void progress(const pl_sim_t *sim, long long first, long long last, double t0)
+static int write_checkpoint(const writer_t *w, const pl_sim_t *sim, pl_err_t *err)
 {
-    double el = omp_get_wtime() - t0, done = (double)(sim->step - first), todo = (double)(last - first);
-    double eta = done > 0 ? el * (todo - done) / done : 0.0;
-    double rate = el > 0 ? done * (double)sim->fluid.n / el / 1e6 : 0.0;
-    fprintf(stderr, "\r  step %lld/%lld  %5.1f%%  ETA %6.1f s  %8.2f Mupdates/s ", sim->step, last,
-            todo > 0 ? 100.0 * done / todo : 100.0, eta, rate);
-    fflush(stderr);
+    char path[PATH_MAX];
+    pl_path_join(path, sizeof path, w->dir, "checkpoint.h5");
+    return pl_checkpoint_write(sim, path, err);
+}
+
+/* Writer stage: checkpoint.h5 every output.checkpoint_interval steps. */
+static int stage_checkpoint(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    return write_checkpoint(ctx, sim, err);
+}
+
+static void report_progress(const pl_run_opts_t *o, const pl_sim_t *sim, double t0, long long md0, int done)
+{
+    const long long first = sim->first_step;
+    pl_run_progress_t p = {.step = sim->step, .first = first, .last = sim->last_step, .done = done};
+    p.elapsed_s = omp_get_wtime() - t0;
+    p.time = (double)sim->step * sim->scene.srd.dt;
+    p.time_s = sim->scene.mapping.enabled ? p.time * sim->scene.mapping.map.t0 : 0.0;
+    p.fluid_updates = (double)(sim->step - first) * (double)sim->fluid.n;
+    p.md_steps = sim->colloids ? (double)(sim->colloids->md_step - md0) : 0.0;
+    o->progress(&p, o->user);
 }
 
 /* The part of summary.json known before the run (build info, scene, derived
@@ -215,13 +179,6 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
     return pl_file_commit(f, tmp, path, err);
 }
 
-static int write_checkpoint(const writer_t *w, const pl_sim_t *sim, pl_err_t *err)
-{
-    char path[PATH_MAX];
-    pl_path_join(path, sizeof path, w->dir, "checkpoint.h5");
-    return pl_checkpoint_write(sim, path, err);
-}
-
 static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *err)
 {
     char path[PATH_MAX], tmp[PATH_MAX + 8];
@@ -240,37 +197,41 @@ static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *e
     return pl_file_commit(f, tmp, path, err);
 }
 
-static int loop(pl_sim_t *sim, writer_t *w, const pl_run_opts_t *o, long long last, pl_err_t *err)
+/* The writers join the plan as after-step stages: thermo rows every
+ * output.thermo_interval steps, on the start state and on the last;
+ * checkpoints every output.checkpoint_interval steps. */
+static int add_writers(pl_sim_t *sim, writer_t *w, pl_err_t *err)
 {
     const pl_scene_t *sc = &sim->scene;
-    long long first = sim->step;
-    w->t_start = w->t_last_row = omp_get_wtime();
-    w->step_last_row = first;
-    double t_progress = w->t_start;
-    int rc = 0;
-    if ((first == 0 || first % sc->output.thermo_interval == 0) && (rc = thermo_row(w, sim, err))) return rc;
-    while (sim->step < last) {
+    pl_stage_t thermo = {.name = "thermo", .fn = stage_thermo, .ctx = w, .interval = sc->output.thermo_interval,
+                         .phase = PL_PHASE_AFTER, .at_start = 1, .at_end = 1, .writes = 1};
+    int rc = pl_sim_add_stage(sim, &thermo, err);
+    if (!rc && sc->output.checkpoint_interval > 0) {
+        pl_stage_t ck = {.name = "checkpoint", .fn = stage_checkpoint, .ctx = w,
+                         .interval = sc->output.checkpoint_interval, .phase = PL_PHASE_AFTER, .writes = 1};
+        rc = pl_sim_add_stage(sim, &ck, err);
+    }
+    return rc;
+}
+
+/* Walks the plan from the present step to `last`. */
+static int loop(pl_sim_t *sim, writer_t *w, const pl_run_opts_t *o, long long last, pl_err_t *err)
+{
+    const double t0 = omp_get_wtime();
+    const long long md0 = sim->colloids ? sim->colloids->md_step : 0;
+    w->t_last_row = t0;
+    w->step_last_row = sim->step;
+    double t_progress = t0;
+    int rc = pl_sim_begin(sim, last, err);
+    while (!rc && sim->step < last) {
         rc = pl_sim_step(sim, err);
-        if (rc) return rc;
-        const int row = sim->step % sc->output.thermo_interval == 0 || sim->step == last;
-        const int ckpt = sc->output.checkpoint_interval > 0 && sim->step % sc->output.checkpoint_interval == 0;
-        /* the guard's particle scan before anything is written (the stage
-         * scanned this state already on multiples of its interval) */
-        if ((row || ckpt) && sim->fluid.n > 0 && sim->step % PL_FLUID_GUARD_SCAN_INTERVAL != 0 &&
-            (rc = pl_fluid_guard_check(sim, sim->step, 1, err)))
-            return rc;
-        if (row && (rc = thermo_row(w, sim, err))) return rc;
-        if (ckpt && (rc = write_checkpoint(w, sim, err))) return rc;
-        if (o->progress && omp_get_wtime() - t_progress > 0.25) {
-            progress(sim, first, last, w->t_start);
+        if (o->progress && omp_get_wtime() - t_progress > o->progress_interval_s) {
+            report_progress(o, sim, t0, md0, 0);
             t_progress = omp_get_wtime();
         }
     }
-    if (o->progress) {
-        progress(sim, first, last, w->t_start);
-        fputc('\n', stderr);
-    }
-    return 0;
+    if (!rc && o->progress) report_progress(o, sim, t0, md0, 1);
+    return rc;
 }
 
 int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
@@ -330,27 +291,28 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         rc = pl_err_set(err, PL_ERR_IO, "%s: cannot write: %s", w.thermo_path, strerror(errno));
         goto done;
     }
-    thermo_header(w.thermo, scene->mapping.enabled, sim->fluid.tracked, noslip_walls(sim), noslip_side_walls(sim),
-                  sim->colloids != NULL, reflecting(sim), sim->coupling && sim->coupling->pinned);
+    pl_thermo_table_build(sim, &w.columns);
+    pl_thermo_header(&w.columns, w.thermo);
+    if ((rc = add_writers(sim, &w, err))) goto done;
     if (sim->colloids && scene->colloids.trajectory_interval > 0) {
         pl_path_join(path, sizeof path, w.dir, "colloids.h5");
         if ((rc = pl_colloid_traj_open(path, sim->colloids, 1, &sim->colloid_traj, err))) goto done;
     }
-    fprintf(stderr, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/\n",
+    say(o, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/",
             scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
     if (sim->colloids && (sim->colloids->pair.terms & PL_CT_DLVO)) {
         const pl_colloid_dlvo_info_t *d = &sim->colloids->dlvo;
-        fprintf(stderr, "peloid: DLVO: primary minimum matched at gap %.4g a0 (curvature %.4g kT/a0^2); "
+        say(o, "peloid: DLVO: primary minimum matched at gap %.4g a0 (curvature %.4g kT/a0^2); "
                         "barrier %.4g kT at %.4g a0; secondary minimum %.4g kT at %.4g a0; cut-off gap "
-                        "%.4g a0, truncation error |V| = %.3g kT, |F| = %.3g kT/a0\n",
+                        "%.4g a0, truncation error |V| = %.3g kT, |F| = %.3g kT/a0",
                 d->hm, d->curvature, d->barrier_u, d->barrier_h, d->secmin_u, d->secmin_h, d->hcut,
                 d->trunc_u, d->trunc_f);
     }
     if (sim->colloids && (sim->colloids->pair.terms & (PL_CT_WCA | PL_CT_DEPL))) {
         const pl_colloid_depl_info_t *d = &sim->colloids->depl;
-        fprintf(stderr, "peloid: colloid-colloid sigma_cc = %.6g a0 (%s); phi_cc = %.4g kT at twice the "
+        say(o, "peloid: colloid-colloid sigma_cc = %.6g a0 (%s); phi_cc = %.4g kT at twice the "
                         "colloid-fluid cut-off %.6g a0; depletion potential at sigma_cc %.4g kT "
-                        "(PL Eqs. 22-23)%s\n",
+                        "(PL Eqs. 22-23)%s",
                 d->sigma_cc, d->rule == PL_SIGMA_PL ? "wca.sigma_rule = pl, PL Sec. III.C.1" : "wca.sigma",
                 d->phi_match, d->d_match, d->phi_sigma,
                 d->table_n ? "; compensated by depletion_comp" : "");
@@ -381,7 +343,7 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     }
     rc = write_summary(&w, summary, sim, first, wall, err);
     if (!rc)
-        fprintf(stderr, "peloid: done in %.3g s, %.4g Mupdates/s\n", wall,
+        say(o, "peloid: done in %.3g s, %.4g Mupdates/s", wall,
                 wall > 0 ? (double)(last - first) * (double)sim->fluid.n / wall / 1e6 : 0.0);
 done:
     if (w.thermo) fclose(w.thermo);

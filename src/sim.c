@@ -27,8 +27,9 @@ void pl_sim_stream_params(const pl_sim_t *sim, pl_stream_params_t *p)
     memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
 }
 
-static int stage_stream(pl_sim_t *sim, pl_err_t *err)
+static int stage_stream(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     (void)err;
     const pl_scene_t *sc = &sim->scene;
     sim->fluid_sorted = 0;
@@ -90,16 +91,18 @@ double pl_sim_wall_stress(const pl_sim_t *sim, int wall, int d)
  * 248 B per particle), but on the 2-core development machine, where these
  * kernels are latency bound, it measured slower at 1 thread and equal at 2
  * (bench/RESULTS.md); bench_srd times both pipelines. */
-static int stage_sort(pl_sim_t *sim, pl_err_t *err)
+static int stage_sort(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     (void)err;
     pl_srd_sort(&sim->fluid, sim->hist, sim->cell_start, sim->grid.ncells, sim->nthreads);
     sim->fluid_sorted = 1;
     return 0;
 }
 
-static int stage_collide(pl_sim_t *sim, pl_err_t *err)
+static int stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     (void)err;
     const pl_scene_t *sc = &sim->scene;
     pl_collide_params_t p;
@@ -129,8 +132,9 @@ static int stage_collide(pl_sim_t *sim, pl_err_t *err)
     return 0;
 }
 
-static int stage_rescale(pl_sim_t *sim, pl_err_t *err)
+static int stage_rescale(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     (void)err;
     if (sim->last_kT_meas <= 0.0) return 0;
     double factor = sqrt(sim->scene.thermostat.temperature / sim->last_kT_meas); /* PL App. A */
@@ -139,8 +143,9 @@ static int stage_rescale(pl_sim_t *sim, pl_err_t *err)
     return 0;
 }
 
-static int stage_fields(pl_sim_t *sim, pl_err_t *err)
+static int stage_fields(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     (void)err;
     if (sim->step < sim->scene.output.fields_start) return 0;
     pl_srd_fields_accumulate(&sim->fluid, sim->grid.L, sim->field_acc);
@@ -149,13 +154,15 @@ static int stage_fields(pl_sim_t *sim, pl_err_t *err)
 }
 
 /* Colloid MD: colloids.substeps MD steps of dt_MD = srd.dt / substeps. */
-static int stage_colloid_md(pl_sim_t *sim, pl_err_t *err)
+static int stage_colloid_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     return pl_colloid_advance(sim->colloids, sim->step, err);
 }
 
-static int stage_colloid_traj(pl_sim_t *sim, pl_err_t *err)
+static int stage_colloid_traj(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
+    (void)ctx;
     if (!sim->colloid_traj) return 0;
     return pl_colloid_traj_write(sim->colloid_traj, sim->colloids, sim->step,
                                  (double)sim->step * sim->scene.srd.dt, err);
@@ -163,20 +170,56 @@ static int stage_colloid_traj(pl_sim_t *sim, pl_err_t *err)
 
 static void add_stage(pl_sim_t *sim, const char *name, pl_stage_fn fn, long long interval)
 {
-    pl_stage_t *s = &sim->stages[sim->nstages++];
-    s->name = name;
-    s->fn = fn;
-    s->interval = interval > 0 ? interval : 1;
-    s->seconds = 0.0;
+    pl_stage_t s = {.name = name, .fn = fn, .interval = interval, .phase = PL_PHASE_STEP};
+    pl_sim_add_stage(sim, &s, NULL); /* the built-in stages fit PL_MAX_STAGES */
 }
 
+int pl_sim_add_stage(pl_sim_t *sim, const pl_stage_t *stage, pl_err_t *err)
+{
+    if (sim->nstages >= PL_MAX_STAGES)
+        return err ? pl_err_set(err, PL_ERR_INTERNAL, "plan full: %d stages, stage %s left out", PL_MAX_STAGES,
+                                stage->name)
+                   : PL_ERR_INTERNAL;
+    pl_stage_t *s = &sim->stages[sim->nstages++];
+    *s = *stage;
+    if (s->interval <= 0) s->interval = 1;
+    s->seconds = 0.0;
+    return 0;
+}
+
+/* After-step stage: before any output is written, the fluid guard's
+ * particle scan on the state it writes (the fluid-guard stage scanned this
+ * state already on multiples of its scan interval). */
+static int stage_output_guard(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    if (sim->step % PL_FLUID_GUARD_SCAN_INTERVAL == 0) return 0;
+    for (int k = 0; k < sim->nstages; ++k) {
+        const pl_stage_t *s = &sim->stages[k];
+        if (s->phase == PL_PHASE_AFTER && s->writes && pl_sim_stage_due(sim, s, sim->step))
+            return pl_fluid_guard_check(sim, sim->step, 1, err);
+    }
+    return 0;
+}
+
+/* The step's plan: the fluid's and colloids' stages in the order their
+ * data flow needs (the couplings' stages between them); writers and
+ * observers add after-step stages when the run opens its outputs. */
 static void build_plan(pl_sim_t *sim)
 {
     const pl_scene_t *sc = &sim->scene;
     sim->nstages = 0;
+    if (sim->fluid.n > 0) { /* first of the after-step stages */
+        pl_stage_t g = {.name = "output-guard", .fn = stage_output_guard, .interval = 1, .phase = PL_PHASE_AFTER};
+        pl_sim_add_stage(sim, &g, NULL);
+    }
     if (sim->colloids) {
-        if (sc->colloids.trajectory_interval > 0)
-            add_stage(sim, "colloid-trajectory", stage_colloid_traj, sc->colloids.trajectory_interval);
+        if (sc->colloids.trajectory_interval > 0) {
+            pl_stage_t t = {.name = "colloid-trajectory", .fn = stage_colloid_traj,
+                            .interval = sc->colloids.trajectory_interval, .phase = PL_PHASE_AFTER,
+                            .at_start = 1, .at_end = 1, .writes = 1};
+            pl_sim_add_stage(sim, &t, NULL);
+        }
         /* pinned colloids do not move; the potential coupling runs the
          * colloid MD together with the fluid near them */
         if (!(sim->coupling && (sim->coupling->pinned || sim->coupling->method == PL_COUPLE_POTENTIAL)))
@@ -314,17 +357,48 @@ void pl_sim_free(pl_sim_t *sim)
     free(sim);
 }
 
-int pl_sim_step(pl_sim_t *sim, pl_err_t *err)
+int pl_sim_stage_due(const pl_sim_t *sim, const pl_stage_t *s, long long step)
 {
+    if (s->except > 0 && step % s->except == 0) return 0;
+    return step % s->interval == 0 || (s->phase == PL_PHASE_AFTER && s->at_end && step == sim->last_step);
+}
+
+static int run_stage(pl_sim_t *sim, pl_stage_t *s, pl_err_t *err)
+{
+    double t0 = omp_get_wtime();
+    int rc = s->fn(sim, s->ctx, err);
+    s->seconds += omp_get_wtime() - t0;
+    return rc;
+}
+
+int pl_sim_begin(pl_sim_t *sim, long long last, pl_err_t *err)
+{
+    sim->first_step = sim->step;
+    sim->last_step = last;
     for (int k = 0; k < sim->nstages; ++k) {
         pl_stage_t *s = &sim->stages[k];
-        if (sim->step % s->interval) continue;
-        double t0 = omp_get_wtime();
-        int rc = s->fn(sim, err);
-        s->seconds += omp_get_wtime() - t0;
-        if (rc) return rc;
+        int rc;
+        if (s->phase == PL_PHASE_AFTER && s->at_start && sim->step % s->interval == 0 &&
+            (rc = run_stage(sim, s, err)))
+            return rc;
+    }
+    return 0;
+}
+
+int pl_sim_step(pl_sim_t *sim, pl_err_t *err)
+{
+    int rc;
+    for (int k = 0; k < sim->nstages; ++k) {
+        pl_stage_t *s = &sim->stages[k];
+        if (s->phase == PL_PHASE_STEP && pl_sim_stage_due(sim, s, sim->step) && (rc = run_stage(sim, s, err)))
+            return rc;
     }
     sim->step++;
+    for (int k = 0; k < sim->nstages; ++k) {
+        pl_stage_t *s = &sim->stages[k];
+        if (s->phase == PL_PHASE_AFTER && pl_sim_stage_due(sim, s, sim->step) && (rc = run_stage(sim, s, err)))
+            return rc;
+    }
     return 0;
 }
 

@@ -38,6 +38,9 @@ typedef struct {
  * ~1e-5 kT (cubic Hermite, checked in tests/test_depletion.c). */
 #define PL_COLLOID_DEPL_TABLE 256
 
+/* Names of the energy terms PL_CE_* (thermo columns), in enum order. */
+extern const char *const pl_colloid_energy_names[PL_CE_NTERMS];
+
 typedef struct {
     double kin_trans, kin_rot;
     double pot[PL_CE_NTERMS]; /* PL_CE_DLVO, _HERTZ, _WCA, _WALL, _GRAVITY, _DEPL */

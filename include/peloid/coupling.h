@@ -73,18 +73,18 @@ int pl_coupling_lookup_fill(pl_coupling_t *cp, const struct pl_sim *sim,
                             const pl_coupling_colloids_t *v, pl_err_t *err);
 
 /* Plan stages (src/coupling_stages.c). */
-int pl_coupling_stage_reflect(struct pl_sim *sim, pl_err_t *err);
-int pl_coupling_stage_save(struct pl_sim *sim, pl_err_t *err);
-int pl_coupling_stage_collide(struct pl_sim *sim, pl_err_t *err);
-int pl_coupling_stage_drift(struct pl_sim *sim, pl_err_t *err);
+int pl_coupling_stage_reflect(struct pl_sim *sim, void *ctx, pl_err_t *err);
+int pl_coupling_stage_save(struct pl_sim *sim, void *ctx, pl_err_t *err);
+int pl_coupling_stage_collide(struct pl_sim *sim, void *ctx, pl_err_t *err);
+int pl_coupling_stage_drift(struct pl_sim *sim, void *ctx, pl_err_t *err);
 /* Pinned colloids in a flow: the fluid mean velocity is set to
  * coupling.flow_velocity (a uniform shift, i.e. an adaptive body force). */
-int pl_coupling_stage_flow(struct pl_sim *sim, pl_err_t *err);
+int pl_coupling_stage_flow(struct pl_sim *sim, void *ctx, pl_err_t *err);
 /* Potential coupling: select the fluid near colloids (before stream+bin),
  * then integrate them with the colloids at the MD step (after it). */
 int pl_coupling_potential_setup(pl_coupling_t *cp, struct pl_sim *sim, pl_err_t *err);
-int pl_coupling_stage_select(struct pl_sim *sim, pl_err_t *err);
-int pl_coupling_stage_potential_md(struct pl_sim *sim, pl_err_t *err);
+int pl_coupling_stage_select(struct pl_sim *sim, void *ctx, pl_err_t *err);
+int pl_coupling_stage_potential_md(struct pl_sim *sim, void *ctx, pl_err_t *err);
 
 /* Pinned colloids: their velocities (changed by a coupling stage) are taken
  * back to zero and the momentum they had gained is added to cp->impulse. */

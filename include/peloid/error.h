@@ -12,6 +12,7 @@ enum {
     PL_ERR_GUARD = 3,  /* a stability guard tripped during the run             */
     PL_ERR_IO = 4,     /* file system / HDF5 failure                           */
     PL_ERR_NOMEM = 5,
+    PL_ERR_INTERNAL = 6, /* a program limit or invariant (a bug to report)     */
 };
 
 typedef struct pl_err {

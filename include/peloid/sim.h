@@ -14,12 +14,25 @@
 #include "peloid/srd_kernels.h"
 
 typedef struct pl_sim pl_sim_t;
-typedef int (*pl_stage_fn)(pl_sim_t *sim, pl_err_t *err);
+/* A stage acts on the simulation; ctx is the registering module's own
+ * state (writers: their open files; observers: their accumulators). */
+typedef int (*pl_stage_fn)(pl_sim_t *sim, void *ctx, pl_err_t *err);
+
+typedef enum {
+    PL_PHASE_STEP,  /* advances the state of step `step` (stream, collide, MD, ...) */
+    PL_PHASE_AFTER, /* samples or writes the state once step `step` is complete */
+} pl_stage_phase_t;
 
 typedef struct {
     const char *name;
     pl_stage_fn fn;
+    void *ctx;
     long long interval; /* run when step % interval == 0 */
+    long long except;   /* > 0: not when step % except == 0 (another variant runs then) */
+    pl_stage_phase_t phase;
+    int at_start;       /* PL_PHASE_AFTER: also on the state a run starts from */
+    int at_end;         /* PL_PHASE_AFTER: also on the run's last state */
+    int writes;         /* writes an output: the fluid guard scans the state first */
     double seconds;     /* wall time spent (profile in summary.json) */
 } pl_stage_t;
 
@@ -62,13 +75,26 @@ struct pl_sim {
     /* plan */
     pl_stage_t stages[PL_MAX_STAGES];
     int nstages;
+    long long first_step, last_step; /* of the present run (pl_sim_begin) */
 };
 
 /* Builds state (fresh initialisation) and plan from a validated scene. */
 int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_t *err);
 void pl_sim_free(pl_sim_t *sim);
 
-/* One collision step: every stage whose interval divides the step. */
+/* Appends a stage to the plan (writers and observers register theirs after
+ * the simulation is built); PL_ERR_INTERNAL when the plan is full. */
+int pl_sim_add_stage(pl_sim_t *sim, const pl_stage_t *stage, pl_err_t *err);
+
+/* Whether stage s runs when the state is at step `step`. */
+int pl_sim_stage_due(const pl_sim_t *sim, const pl_stage_t *s, long long step);
+
+/* Starts a run to step `last`: the after-step stages that want the start
+ * state (at_start, interval dividing the first step) run on it. */
+int pl_sim_begin(pl_sim_t *sim, long long last, pl_err_t *err);
+
+/* One collision step: the step stages due at `step`, then step + 1, then
+ * the after-step stages due at the new step. */
 int pl_sim_step(pl_sim_t *sim, pl_err_t *err);
 
 /* Drift parameters of the current step (dt, body force, wall velocities). */
@@ -117,7 +143,7 @@ void pl_fluid_guard_setup(pl_sim_t *sim);
  * parameter to change, for a position outside the box or non-finite, a speed
  * beyond guard_vmax, kT_cell outside the band, or an overflowed wall impulse
  * accumulator. */
-int pl_fluid_guard_stage(pl_sim_t *sim, pl_err_t *err);
+int pl_fluid_guard_stage(pl_sim_t *sim, void *ctx, pl_err_t *err);
 /* The same checks on the current state outside the plan (before an output,
  * after a restart); scan = 0 leaves out the positions. */
 int pl_fluid_guard_check(const pl_sim_t *sim, long long step, int scan, pl_err_t *err);

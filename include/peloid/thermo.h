@@ -1,0 +1,49 @@
+/* thermo.tsv columns: one table per module (fluid, physical units, walls,
+ * colloids, couplings), each row a column's name, unit and value function.
+ * The header and every row are written from the same table, so a column
+ * cannot shift against its name; a module adds a column by adding a row. */
+#ifndef PELOID_THERMO_H
+#define PELOID_THERMO_H
+
+#include <stdio.h>
+
+#include "peloid/colloid.h"
+#include "peloid/error.h"
+#include "peloid/fluid.h"
+#include "peloid/sim.h"
+
+/* What one row samples once, shared by the value functions. */
+typedef struct {
+    const pl_sim_t *sim;
+    pl_fluid_obs_t fluid; /* pl_sim_observe */
+    double kT;            /* fluid temperature, centre-of-mass frame */
+    pl_colloid_energy_t ce; /* colloids only */
+    double rate;          /* fluid updates per second since the last row (1e6) */
+} pl_thermo_sample_t;
+
+typedef enum { PL_THERMO_REAL, PL_THERMO_INT, PL_THERMO_RATE } pl_thermo_format_t;
+
+typedef struct {
+    const char *name;
+    const char *unit;           /* model units (a0, t0, m_f, kT) or SI */
+    pl_thermo_format_t format;  /* %.10g, %lld, %.4g */
+    double (*value)(const pl_thermo_sample_t *s, int arg);
+    long long (*ivalue)(const pl_thermo_sample_t *s, int arg); /* PL_THERMO_INT */
+    int arg;                    /* passed to value (a component, a term) */
+} pl_thermo_column_t;
+
+/* The columns of this simulation, in order (at most PL_THERMO_MAX_COLUMNS). */
+enum { PL_THERMO_MAX_COLUMNS = 96 };
+typedef struct {
+    pl_thermo_column_t col[PL_THERMO_MAX_COLUMNS];
+    int n;
+} pl_thermo_table_t;
+
+void pl_thermo_table_build(const pl_sim_t *sim, pl_thermo_table_t *t);
+void pl_thermo_header(const pl_thermo_table_t *t, FILE *f);
+/* Samples the state (fluid observables, colloid energies) into s. */
+void pl_thermo_sample(const pl_sim_t *sim, double rate, pl_thermo_sample_t *s);
+/* One row; returns what fprintf returned last (< 0 on a write error). */
+int pl_thermo_row(const pl_thermo_table_t *t, const pl_thermo_sample_t *s, FILE *f);
+
+#endif
