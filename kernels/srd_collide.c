@@ -50,90 +50,107 @@ static double heyes_zeta(const pl_collide_params_t *p, uint64_t cell, size_t M, 
 
 enum { ROT_BATCH = 32 };
 
+/* One block of PL_CELL_BLOCK cells.  HEYES is a constant at each call
+ * site, so each entry point below compiles its own loop (the thermostat
+ * costs nothing in the steps that do not apply it). */
+static inline __attribute__((always_inline)) void collide_block(pl_real *restrict vx, pl_real *restrict vy,
+                                                                pl_real *restrict vz, const pl_grid_t *g,
+                                                                const uint32_t *cell_start,
+                                                                const pl_collide_params_t *p, double *block_sum,
+                                                                size_t b, const int HEYES)
+{
+    static const double at_rest[3] = {0.0, 0.0, 0.0};
+    const size_t ncells = g->ncells;
+    double sum2 = 0.0, dof = 0.0, wdp[PL_WALL_ACC_N] = {0.0};
+    size_t c_hi = (b + 1) * PL_CELL_BLOCK < ncells ? (b + 1) * PL_CELL_BLOCK : ncells;
+    /* The rotations of ROT_BATCH cells are drawn first, in a loop without
+     * data-dependent branches, so that the out-of-order core overlaps the
+     * Philox rounds and sincos of neighbouring cells; they depend on
+     * (seed, step, cell) only, so the result is unchanged. */
+    double Rb[ROT_BATCH][3][3];
+    size_t c_base = b * PL_CELL_BLOCK, c_rot = c_base;
+    for (size_t c = b * PL_CELL_BLOCK; c < c_hi; ++c) {
+        if (c == c_rot) {
+            const size_t nr = c_hi - c < ROT_BATCH ? c_hi - c : ROT_BATCH;
+            for (size_t k = 0; k < nr; ++k) rotation_matrix(p, c + k, Rb[k]);
+            c_base = c;
+            c_rot = c + nr;
+        }
+        double (*const Rc)[3] = Rb[c - c_base];
+        const size_t s = cell_start[c], e = cell_start[c + 1], M = e - s;
+        int wall = 0, ng = 0;
+        if (p->wall_ghosts && M >= 1) ng = pl_srd_ghost_count(g, p->ghost_density, c, M, &wall);
+        if (M + (size_t)ng < 2) continue;
+        double P[3] = {0.0, 0.0, 0.0}, S = 0.0; /* one pass: momentum and sum v^2 */
+        for (size_t i = s; i < e; ++i) {
+            P[0] += vx[i];
+            P[1] += vy[i];
+            P[2] += vz[i];
+            S += (double)vx[i] * vx[i] + (double)vy[i] * vy[i] + (double)vz[i] * vz[i];
+        }
+        double u[3], ur[3];
+        for (int d = 0; d < 3; ++d) ur[d] = P[d] / (double)M;
+        if (ng > 0) {
+            double N[3];
+            pl_srd_ghost_noise(p->seed, p->step, c, ng, p->kT_wall, N);
+            const double *U = wall >= 0 ? p->wall_u[wall] : at_rest;
+            for (int d = 0; d < 3; ++d) u[d] = (P[d] + (double)ng * U[d] + N[d]) / (double)(M + (size_t)ng);
+        } else {
+            for (int d = 0; d < 3; ++d) u[d] = ur[d];
+        }
+        /* K2 = sum (v - u)^2 = S - 2 u.P + M u^2, invariant under the
+         * rotation (a second pass over the cell saved; the cancellation
+         * costs ~1e-16 S, far below the thermal K2 ~ S) */
+        const double K2 = S - 2.0 * (u[0] * P[0] + u[1] * P[1] + u[2] * P[2]) +
+                          (double)M * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+        double zeta = 1.0;
+        if (HEYES && ng == 0 && M >= 2) zeta = heyes_zeta(p, c, M, 0.5 * K2);
+        double R[3][3];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) R[i][j] = Rc[i][j] * zeta;
+        for (size_t i = s; i < e; ++i) {
+            double a = vx[i] - u[0], bb = vy[i] - u[1], cc = vz[i] - u[2];
+            vx[i] = (pl_real)(u[0] + R[0][0] * a + R[0][1] * bb + R[0][2] * cc);
+            vy[i] = (pl_real)(u[1] + R[1][0] * a + R[1][1] * bb + R[1][2] * cc);
+            vz[i] = (pl_real)(u[2] + R[2][0] * a + R[2][1] * bb + R[2][2] * cc);
+        }
+        if (ng == 0) {
+            if (M < 2) continue;
+            sum2 += zeta * zeta * K2;
+        } else { /* the real particles' own mean moved: measure again */
+            double Q[3] = {0.0, 0.0, 0.0}, S1 = 0.0;
+            for (size_t i = s; i < e; ++i) {
+                Q[0] += vx[i]; Q[1] += vy[i]; Q[2] += vz[i];
+                S1 += (double)vx[i] * vx[i] + (double)vy[i] * vy[i] + (double)vz[i] * vz[i];
+            }
+            const int slot = wall >= 0 ? wall : 2; /* the z wall's push, or the x/y walls' */
+            for (int d = 0; d < 3; ++d) wdp[3 * slot + d] += Q[d] - P[d];
+            if (M < 2) continue;
+            sum2 += S1 - (Q[0] * Q[0] + Q[1] * Q[1] + Q[2] * Q[2]) / (double)M;
+        }
+        dof += 3.0 * (double)(M - 1);
+    }
+    block_sum[2 * b] = sum2;
+    block_sum[2 * b + 1] = dof;
+    if (p->wall_dp)
+        for (size_t k = 0; k < PL_WALL_ACC_N; ++k) p->wall_dp[PL_WALL_ACC_N * b + k] = wdp[k];
+}
+
+/* Cells are independent; blocks of cells give fixed-order partial sums. */
 void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_start,
                     const pl_collide_params_t *p, double *block_sum)
 {
-    pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
-    const size_t ncells = g->ncells;
-    static const double at_rest[3] = {0.0, 0.0, 0.0};
-    const size_t nblocks = (ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
-    /* Cells are independent; blocks of cells give fixed-order partial sums. */
+    const size_t nblocks = (g->ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
 #pragma omp parallel for schedule(static)
-    for (size_t b = 0; b < nblocks; ++b) {
-        double sum2 = 0.0, dof = 0.0, wdp[PL_WALL_ACC_N] = {0.0};
-        size_t c_hi = (b + 1) * PL_CELL_BLOCK < ncells ? (b + 1) * PL_CELL_BLOCK : ncells;
-        /* The rotations of ROT_BATCH cells are drawn first, in a loop without
-         * data-dependent branches, so that the out-of-order core overlaps the
-         * Philox rounds and sincos of neighbouring cells; they depend on
-         * (seed, step, cell) only, so the result is unchanged. */
-        double Rb[ROT_BATCH][3][3];
-        size_t c_base = b * PL_CELL_BLOCK, c_rot = c_base;
-        for (size_t c = b * PL_CELL_BLOCK; c < c_hi; ++c) {
-            if (c == c_rot) {
-                const size_t nr = c_hi - c < ROT_BATCH ? c_hi - c : ROT_BATCH;
-                for (size_t k = 0; k < nr; ++k) rotation_matrix(p, c + k, Rb[k]);
-                c_base = c;
-                c_rot = c + nr;
-            }
-            double (*const Rc)[3] = Rb[c - c_base];
-            const size_t s = cell_start[c], e = cell_start[c + 1], M = e - s;
-            int wall = 0, ng = 0;
-            if (p->wall_ghosts && M >= 1) ng = pl_srd_ghost_count(g, p->ghost_density, c, M, &wall);
-            if (M + (size_t)ng < 2) continue;
-            double P[3] = {0.0, 0.0, 0.0}, S = 0.0; /* one pass: momentum and sum v^2 */
-            for (size_t i = s; i < e; ++i) {
-                P[0] += vx[i];
-                P[1] += vy[i];
-                P[2] += vz[i];
-                S += (double)vx[i] * vx[i] + (double)vy[i] * vy[i] + (double)vz[i] * vz[i];
-            }
-            double u[3], ur[3];
-            for (int d = 0; d < 3; ++d) ur[d] = P[d] / (double)M;
-            if (ng > 0) {
-                double N[3];
-                pl_srd_ghost_noise(p->seed, p->step, c, ng, p->kT_wall, N);
-                const double *U = wall >= 0 ? p->wall_u[wall] : at_rest;
-                for (int d = 0; d < 3; ++d) u[d] = (P[d] + (double)ng * U[d] + N[d]) / (double)(M + (size_t)ng);
-            } else {
-                for (int d = 0; d < 3; ++d) u[d] = ur[d];
-            }
-            /* K2 = sum (v - u)^2 = S - 2 u.P + M u^2, invariant under the
-             * rotation (a second pass over the cell saved; the cancellation
-             * costs ~1e-16 S, far below the thermal K2 ~ S) */
-            const double K2 = S - 2.0 * (u[0] * P[0] + u[1] * P[1] + u[2] * P[2]) +
-                              (double)M * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-            double zeta = 1.0;
-            if (p->heyes && ng == 0 && M >= 2) zeta = heyes_zeta(p, c, M, 0.5 * K2);
-            double R[3][3];
-            for (int i = 0; i < 3; ++i)
-                for (int j = 0; j < 3; ++j) R[i][j] = Rc[i][j] * zeta;
-            for (size_t i = s; i < e; ++i) {
-                double a = vx[i] - u[0], bb = vy[i] - u[1], cc = vz[i] - u[2];
-                vx[i] = (pl_real)(u[0] + R[0][0] * a + R[0][1] * bb + R[0][2] * cc);
-                vy[i] = (pl_real)(u[1] + R[1][0] * a + R[1][1] * bb + R[1][2] * cc);
-                vz[i] = (pl_real)(u[2] + R[2][0] * a + R[2][1] * bb + R[2][2] * cc);
-            }
-            if (ng == 0) {
-                if (M < 2) continue;
-                sum2 += zeta * zeta * K2;
-            } else { /* the real particles' own mean moved: measure again */
-                double Q[3] = {0.0, 0.0, 0.0}, S1 = 0.0;
-                for (size_t i = s; i < e; ++i) {
-                    Q[0] += vx[i]; Q[1] += vy[i]; Q[2] += vz[i];
-                    S1 += (double)vx[i] * vx[i] + (double)vy[i] * vy[i] + (double)vz[i] * vz[i];
-                }
-                const int slot = wall >= 0 ? wall : 2; /* the z wall's push, or the x/y walls' */
-                for (int d = 0; d < 3; ++d) wdp[3 * slot + d] += Q[d] - P[d];
-                if (M < 2) continue;
-                sum2 += S1 - (Q[0] * Q[0] + Q[1] * Q[1] + Q[2] * Q[2]) / (double)M;
-            }
-            dof += 3.0 * (double)(M - 1);
-        }
-        block_sum[2 * b] = sum2;
-        block_sum[2 * b + 1] = dof;
-        if (p->wall_dp)
-            for (size_t k = 0; k < PL_WALL_ACC_N; ++k) p->wall_dp[PL_WALL_ACC_N * b + k] = wdp[k];
-    }
+    for (size_t b = 0; b < nblocks; ++b) collide_block(f->v[0], f->v[1], f->v[2], g, cell_start, p, block_sum, b, 0);
+}
+
+void pl_srd_collide_heyes(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_start,
+                          const pl_collide_params_t *p, double *block_sum)
+{
+    const size_t nblocks = (g->ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
+#pragma omp parallel for schedule(static)
+    for (size_t b = 0; b < nblocks; ++b) collide_block(f->v[0], f->v[1], f->v[2], g, cell_start, p, block_sum, b, 1);
 }
 
 void pl_srd_rescale(pl_fluid_t *f, const uint32_t *cell_start, size_t ncells, double factor)

@@ -11,7 +11,7 @@
 #include "peloid/rng.h"
 #include "peloid/sim.h"
 
-static const double PI = 3.14159265358979323846;
+
 
 #define OFF(m) offsetof(pl_scene_t, m)
 
@@ -23,7 +23,7 @@ static const double PI = 3.14159265358979323846;
 double pl_coupling2_friction(const pl_scene_t *scene, double mass)
 {
     double gamma = scene->fluid.density;
-    double cos_a = scene->srd.rule == PL_RULE_HECHT_AXES ? 0.0 : cos(scene->srd.alpha_deg * PI / 180.0);
+    double cos_a = scene->srd.rule == PL_RULE_HECHT_AXES ? 0.0 : cos(scene->srd.alpha_deg * PL_PI / 180.0);
     double mu = mass * gamma / (mass + gamma);
     return 2.0 / 3.0 * (1.0 - cos_a) * mu / scene->srd.dt;
 }
@@ -46,7 +46,7 @@ static int check_settling(const pl_scene_t *scene, pl_err_t *err)
         scene->coupling.pinned)
         return 0;
     double rmax = cs->radius * (1.0 + sqrt(3.0) * cs->polydispersity);
-    double mass = cs->mass_density * 4.0 / 3.0 * PI * rmax * rmax * rmax;
+    double mass = cs->mass_density * 4.0 / 3.0 * PL_PI * rmax * rmax * rmax;
     double kT = scene->thermostat.type != PL_THERMO_NONE ? scene->thermostat.temperature
                                                          : scene->fluid.temperature;
     double xi = pl_coupling2_friction(scene, mass);
@@ -181,8 +181,8 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
     } else if (cp->method == PL_COUPLE_HECHT2) {
         pl_coupling2_params_t *p = &cp->p2;
         p->rule = sc->srd.rule;
-        p->cos_a = cos(sc->srd.alpha_deg * PI / 180.0);
-        p->sin_a = sin(sc->srd.alpha_deg * PI / 180.0);
+        p->cos_a = cos(sc->srd.alpha_deg * PL_PI / 180.0);
+        p->sin_a = sin(sc->srd.alpha_deg * PL_PI / 180.0);
         p->seed = cp->seed;
         p->kT_target = sc->thermostat.temperature;
         p->heyes_eps = sc->thermostat.heyes_epsilon;

@@ -90,24 +90,38 @@ int pl_coupling_stage_save(pl_sim_t *sim, void *ctx, pl_err_t *err)
 
 /* Coupling II after the fluid collision: the occupied cells again, with the
  * colloids (Hecht Eq. 15). */
-int pl_coupling_stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
+static int collide(pl_sim_t *sim, int heyes)
 {
-    (void)ctx;
-    (void)err;
     pl_coupling_t *cp = sim->coupling;
     pl_colloid_t *c = sim->colloids;
-    const pl_scene_t *sc = &sim->scene;
     cp->p2.step = (uint64_t)sim->step;
-    cp->p2.heyes = sc->thermostat.type == PL_THERMO_HEYES && sim->step % sc->thermostat.interval == 0;
     pl_coupling2_cells_t oc = {cp->nocc, cp->occ_cell, cp->occ_save, cp->occ_col, cp->col_idx};
-    pl_coupling2_collide(&cp->p2, &oc, &sim->grid, sim->cell_start, cp->vsave, &sim->fluid, c->mass, c->vx,
-                         c->vy, c->vz);
+    if (heyes)
+        pl_coupling2_collide_heyes(&cp->p2, &oc, &sim->grid, sim->cell_start, cp->vsave, &sim->fluid, c->mass,
+                                   c->vx, c->vy, c->vz);
+    else
+        pl_coupling2_collide(&cp->p2, &oc, &sim->grid, sim->cell_start, cp->vsave, &sim->fluid, c->mass, c->vx,
+                             c->vy, c->vz);
     /* the walls' push in the occupied cells, replacing the fluid kernel's
      * count there; summed in cell order (deterministic) */
     for (size_t j = 0; cp->p2.wall_fix && j < cp->nocc; ++j)
         pl_sim_wall_add_momentum(sim, cp->p2.wall_fix + PL_WALL_ACC_N * j);
     if (cp->pinned) pl_coupling_absorb_pinned(cp, c, sim->scene.srd.dt);
     return 0;
+}
+
+int pl_coupling_stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    (void)err;
+    return collide(sim, 0);
+}
+
+int pl_coupling_stage_collide_heyes(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    (void)err;
+    return collide(sim, 1);
 }
 
 void pl_coupling_total_momentum(const pl_sim_t *sim, double p[3], double *mass)

@@ -13,8 +13,6 @@
 #include "peloid/coupling.h"
 #include "peloid/sim.h"
 
-static const double PI = 3.14159265358979323846;
-
 /* ---- stages ------------------------------------------------------------ */
 
 void pl_sim_stream_params(const pl_sim_t *sim, pl_stream_params_t *p)
@@ -100,35 +98,58 @@ static int stage_sort(pl_sim_t *sim, void *ctx, pl_err_t *err)
     return 0;
 }
 
-static int stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
+/* The collision's parameters, fixed for the run: computed once when the
+ * plan is built (only the step changes). */
+static void collide_params(const pl_sim_t *sim, pl_collide_params_t *p)
 {
-    (void)ctx;
-    (void)err;
     const pl_scene_t *sc = &sim->scene;
-    pl_collide_params_t p;
-    memset(&p, 0, sizeof p);
-    p.rule = sc->srd.rule;
-    p.cos_a = cos(sc->srd.alpha_deg * PI / 180.0);
-    p.sin_a = sin(sc->srd.alpha_deg * PI / 180.0);
-    p.seed = (uint64_t)sc->run.seed;
-    p.step = (uint64_t)sim->step;
-    p.heyes = sc->thermostat.type == PL_THERMO_HEYES && sim->step % sc->thermostat.interval == 0;
-    p.kT_target = sc->thermostat.temperature;
-    p.heyes_eps = sc->thermostat.heyes_epsilon;
-    p.wall_ghosts = pl_sim_wall_ghosts(sim, &p.ghost_density, &p.kT_wall);
-    memcpy(p.wall_u, sim->wall_u, sizeof p.wall_u);
-    p.wall_dp = p.wall_ghosts ? sim->wall_dp : NULL;
-    pl_srd_collide(&sim->fluid, &sim->grid, sim->cell_start, &p, sim->block_sum);
-    /* PL Eqs. A1-A2 and the virtual particles' push, summed in block order
-     * (deterministic) */
+    memset(p, 0, sizeof *p);
+    p->rule = sc->srd.rule;
+    p->cos_a = cos(sc->srd.alpha_deg * PL_PI / 180.0);
+    p->sin_a = sin(sc->srd.alpha_deg * PL_PI / 180.0);
+    p->seed = (uint64_t)sc->run.seed;
+    p->kT_target = sc->thermostat.temperature;
+    p->heyes_eps = sc->thermostat.heyes_epsilon;
+    double kT_wall;
+    p->wall_ghosts = pl_sim_wall_ghosts(sim, &p->ghost_density, &kT_wall);
+    p->kT_wall = kT_wall;
+    memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
+    p->wall_dp = p->wall_ghosts ? sim->wall_dp : NULL;
+}
+
+/* PL Eqs. A1-A2 and the virtual particles' push, summed in block order
+ * (deterministic) */
+static void collide_sums(pl_sim_t *sim, const pl_collide_params_t *p)
+{
     size_t nb = (sim->grid.ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
-    for (size_t b = 0; p.wall_dp && b < nb; ++b) pl_sim_wall_add_momentum(sim, p.wall_dp + PL_WALL_ACC_N * b);
+    for (size_t b = 0; p->wall_dp && b < nb; ++b) pl_sim_wall_add_momentum(sim, p->wall_dp + PL_WALL_ACC_N * b);
     double s2 = 0.0, dof = 0.0;
     for (size_t b = 0; b < nb; ++b) {
         s2 += sim->block_sum[2 * b];
         dof += sim->block_sum[2 * b + 1];
     }
     sim->last_kT_meas = dof > 0 ? s2 / dof : 0.0;
+}
+
+static int stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    (void)err;
+    sim->collide.step = (uint64_t)sim->step;
+    pl_srd_collide(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum);
+    collide_sums(sim, &sim->collide);
+    return 0;
+}
+
+/* The collision with the Heyes thermostat (Hecht Sec. VIII.B): the plan's
+ * variant on multiples of thermostat.interval. */
+static int stage_collide_heyes(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    (void)err;
+    sim->collide.step = (uint64_t)sim->step;
+    pl_srd_collide_heyes(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum);
+    collide_sums(sim, &sim->collide);
     return 0;
 }
 
@@ -233,8 +254,25 @@ static void build_plan(pl_sim_t *sim)
         if (m == PL_COUPLE_HECHT1) add_stage(sim, "coupling1-reflect", pl_coupling_stage_reflect, 1);
         add_stage(sim, "sort", stage_sort, 1);
         if (m == PL_COUPLE_HECHT2) add_stage(sim, "coupling2-save", pl_coupling_stage_save, 1);
-        add_stage(sim, "collide", stage_collide, 1);
-        if (m == PL_COUPLE_HECHT2) add_stage(sim, "coupling2-collide", pl_coupling_stage_collide, 1);
+        collide_params(sim, &sim->collide);
+        if (sc->thermostat.type == PL_THERMO_HEYES) { /* one of the two variants each step */
+            const long long k = sc->thermostat.interval;
+            pl_stage_t plain = {.name = "collide", .fn = stage_collide, .interval = 1, .except = k};
+            pl_stage_t heyes = {.name = "collide+heyes", .fn = stage_collide_heyes, .interval = k};
+            if (k > 1) pl_sim_add_stage(sim, &plain, NULL);
+            pl_sim_add_stage(sim, &heyes, NULL);
+            if (m == PL_COUPLE_HECHT2) {
+                pl_stage_t c2 = {.name = "coupling2-collide", .fn = pl_coupling_stage_collide, .interval = 1,
+                                 .except = k};
+                pl_stage_t c2h = {.name = "coupling2-collide+heyes", .fn = pl_coupling_stage_collide_heyes,
+                                  .interval = k};
+                if (k > 1) pl_sim_add_stage(sim, &c2, NULL);
+                pl_sim_add_stage(sim, &c2h, NULL);
+            }
+        } else {
+            add_stage(sim, "collide", stage_collide, 1);
+            if (m == PL_COUPLE_HECHT2) add_stage(sim, "coupling2-collide", pl_coupling_stage_collide, 1);
+        }
         if (sc->thermostat.type == PL_THERMO_RESCALE)
             add_stage(sim, "thermostat-rescale", stage_rescale, sc->thermostat.interval);
         /* last before anything samples or moves the fluid again: nothing

@@ -74,10 +74,10 @@ static void check_conservation(int rule, int heyes)
     p.sin_a = sin(130.0 * M_PI / 180.0);
     p.seed = 11;
     p.step = 3;
-    p.heyes = heyes;
     p.kT_target = 0.5;
     p.heyes_eps = 0.3;
-    pl_srd_collide(&b.f, &b.g, b.start, &p, b.block);
+    if (heyes) pl_srd_collide_heyes(&b.f, &b.g, b.start, &p, b.block);
+    else pl_srd_collide(&b.f, &b.g, b.start, &p, b.block);
     int changed_K = 0;
     for (size_t c = 0; c < nc; ++c) {
         double P[3], K, s;

@@ -76,6 +76,9 @@ int pl_coupling_lookup_fill(pl_coupling_t *cp, const struct pl_sim *sim,
 int pl_coupling_stage_reflect(struct pl_sim *sim, void *ctx, pl_err_t *err);
 int pl_coupling_stage_save(struct pl_sim *sim, void *ctx, pl_err_t *err);
 int pl_coupling_stage_collide(struct pl_sim *sim, void *ctx, pl_err_t *err);
+/* The same with the Heyes thermostat (the plan's variant on multiples of
+ * thermostat.interval). */
+int pl_coupling_stage_collide_heyes(struct pl_sim *sim, void *ctx, pl_err_t *err);
 int pl_coupling_stage_drift(struct pl_sim *sim, void *ctx, pl_err_t *err);
 /* Pinned colloids in a flow: the fluid mean velocity is set to
  * coupling.flow_velocity (a uniform shift, i.e. an adaptive body force). */

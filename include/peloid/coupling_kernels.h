@@ -66,8 +66,7 @@ typedef struct {
     int rule;            /* PL_RULE_* */
     double cos_a, sin_a; /* random_axis rotation angle */
     uint64_t seed, step;
-    int heyes;           /* mass-weighted Heyes thermostat this step (Hecht Sec. VIII.B) */
-    double kT_target, heyes_eps;
+    double kT_target, heyes_eps; /* pl_coupling2_collide_heyes (Hecht Sec. VIII.B) */
     /* virtual wall particles, as in the fluid collision (pl_collide_params_t) */
     int wall_ghosts;
     double ghost_density, kT_wall, wall_u[2][3];
@@ -95,6 +94,11 @@ void pl_coupling2_save(const pl_fluid_t *f, const uint32_t *cell_start,
  * (Hecht Eq. 15) and writes both (the fluid kernel's result for these cells
  * is overwritten).  One rotation per cell from its own random stream. */
 void pl_coupling2_collide(const pl_coupling2_params_t *p, const pl_coupling2_cells_t *oc, const pl_grid_t *g,
+                          const uint32_t *cell_start, const double *vsave, pl_fluid_t *f,
+                          const double *cmass, double *cvx, double *cvy, double *cvz);
+/* The same with the mass-weighted Heyes thermostat in cells without
+ * virtual wall particles. */
+void pl_coupling2_collide_heyes(const pl_coupling2_params_t *p, const pl_coupling2_cells_t *oc, const pl_grid_t *g,
                           const uint32_t *cell_start, const double *vsave, pl_fluid_t *f,
                           const double *cmass, double *cvx, double *cvy, double *cvz);
 

@@ -14,4 +14,7 @@ typedef double pl_real;
 
 #define PL_ALIGN 64
 
+/* The one spelling of pi. */
+#define PL_PI 3.14159265358979323846
+
 #endif

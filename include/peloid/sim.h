@@ -53,6 +53,7 @@ struct pl_sim {
     double *block_sum;    /* 2 x ceil(ncells / PL_CELL_BLOCK) */
     double *obs_scratch;  /* pl_srd_observe_scratch(n) */
     double last_kT_meas;  /* PL Eq. A1 temperature of the last collision */
+    pl_collide_params_t collide; /* fixed when the plan is built; the stage sets the step */
     double wall_u[2][3];  /* wall velocities (bottom, top): box.wall_velocity_* */
     /* walls: impulse the walls gave fluid (and colloids) since step 0,
      * (bottom z wall, top z wall, the x/y walls together) x (x, y, z);

@@ -82,8 +82,7 @@ typedef struct {
     int rule;            /* PL_RULE_* */
     double cos_a, sin_a; /* rotation angle (random_axis rule) */
     uint64_t seed, step;
-    int heyes;           /* apply the Heyes MC thermostat this step */
-    double kT_target;    /* thermostat target kT* */
+    double kT_target;    /* Heyes thermostat target kT* (pl_srd_collide_heyes) */
     double heyes_eps;
     /* walls: virtual particles fill cells cut by a no-slip wall */
     int wall_ghosts;
@@ -103,6 +102,10 @@ enum { PL_CELL_BLOCK = 2048 };
  * block_sum[2b+1] the degrees of freedom 3(M-1) (PL Eqs. A1-A2). */
 void pl_srd_collide(pl_fluid_t *fluid, const pl_grid_t *grid, const uint32_t *cell_start,
                     const pl_collide_params_t *p, double *block_sum);
+/* The same with the Heyes Monte Carlo cell thermostat (Hecht Sec. VIII.B,
+ * Eq. 33) in every cell without virtual wall particles. */
+void pl_srd_collide_heyes(pl_fluid_t *fluid, const pl_grid_t *grid, const uint32_t *cell_start,
+                          const pl_collide_params_t *p, double *block_sum);
 
 /* PL Appendix A: scale v - u in every cell with >= 2 particles by `factor`. */
 void pl_srd_rescale(pl_fluid_t *fluid, const uint32_t *cell_start, size_t ncells, double factor);
