@@ -13,7 +13,7 @@ static void default_text(const pl_key_t *k, char *buf, size_t n)
     case PL_KEY_INT: case PL_KEY_REAL: snprintf(buf, n, "%g", k->def); break;
     case PL_KEY_BOOL: snprintf(buf, n, "%s", k->def != 0 ? "true" : "false"); break;
     case PL_KEY_CHOICE: snprintf(buf, n, "\"%s\"", k->choices[(int)k->def]); break;
-    case PL_KEY_STRING: snprintf(buf, n, "%s", k->def_str && *k->def_str ? k->def_str : "(derived)"); break;
+    case PL_KEY_STRING: if (k->def_str && *k->def_str) snprintf(buf, n, "\"%s\"", k->def_str); else snprintf(buf, n, "(derived)"); break;
     case PL_KEY_INT3: case PL_KEY_REAL3: snprintf(buf, n, "[%g, %g, %g]", k->def, k->def, k->def); break;
     }
 }

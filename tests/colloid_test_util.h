@@ -7,12 +7,9 @@
 #include <stdlib.h>
 
 #include "peloid/colloid.h"
+#include "support.h"
 
-static inline int quick(void)
-{
-    const char *q = getenv("PL_QUICK");
-    return q && *q && *q != '0';
-}
+static inline int quick(void) { return pl_test_quick(); }
 
 /* Loads a scene from `body`, asserting success. */
 static inline void scene_from(const char *body, pl_scene_t *s)

@@ -11,11 +11,19 @@
 #include "peloid/scene.h"
 #include "peloid/sim.h"
 
+/* The one quick-mode switch: PL_QUICK set and not "0" (sanitizer runs). */
 static inline int pl_test_quick(void)
 {
     const char *q = getenv("PL_QUICK");
     return q && *q && strcmp(q, "0");
 }
+
+/* A physics check that needs the full run reports "skipped" under PL_QUICK,
+ * never "passed". */
+#define PL_SKIP_IF_QUICK(why)                                                                                   \
+    do {                                                                                                        \
+        if (pl_test_quick()) cr_skip_test("skipped under PL_QUICK: %s", why);                                  \
+    } while (0)
 
 static inline pl_sim_t *pl_test_sim(const char *scene_text, int nthreads)
 {

@@ -77,7 +77,7 @@ Test(coupling_thermal, hecht1_stick_equipartition, .timeout = 300)
     temps_t t = measure(text, steps, 200);
     cr_log_info("hecht1 stick: T_c = %.4f +- %.4f, T_rot = %.4f, T_fluid = %.4f", t.tc, t.tc_se,
                 t.tr, t.tf);
-    if (pl_test_quick()) return;
+    PL_SKIP_IF_QUICK("a statistical check of the full run");
     cr_expect_lt(fabs(t.tc / t.tf - 1.0), 0.07, "T_c %.4f vs fluid %.4f", t.tc, t.tf);
     cr_expect_lt(fabs(t.tr / t.tf - 1.0), 0.07, "T_rot %.4f vs fluid %.4f", t.tr, t.tf);
     cr_expect_lt(fabs(t.tf - 1.0), 0.03, "fluid held at the wall temperature: %.4f", t.tf);
@@ -95,7 +95,7 @@ Test(coupling_thermal, hecht1_slip_equipartition, .timeout = 300)
     long long steps = pl_test_quick() ? 100 : 8000;
     temps_t t = measure(text, steps, 200);
     cr_log_info("hecht1 slip: T_c = %.4f +- %.4f, T_fluid = %.4f", t.tc, t.tc_se, t.tf);
-    if (pl_test_quick()) return;
+    PL_SKIP_IF_QUICK("a statistical check of the full run");
     cr_expect_lt(fabs(t.tc / t.tf - 1.0), 0.07, "T_c %.4f vs fluid %.4f", t.tc, t.tf);
 }
 
@@ -110,7 +110,7 @@ Test(coupling_thermal, hecht2_equipartition, .timeout = 300)
     long long steps = pl_test_quick() ? 100 : 8000;
     temps_t t = measure(text, steps, 200);
     cr_log_info("hecht2: T_c = %.4f +- %.4f, T_fluid = %.4f", t.tc, t.tc_se, t.tf);
-    if (pl_test_quick()) return;
+    PL_SKIP_IF_QUICK("a statistical check of the full run");
     cr_expect_lt(fabs(t.tc / t.tf - 1.0), 0.03, "T_c %.4f vs fluid %.4f", t.tc, t.tf);
 }
 
@@ -125,7 +125,7 @@ Test(coupling_thermal, potential_equipartition, .timeout = 300)
     long long steps = pl_test_quick() ? 100 : 4000;
     temps_t t = measure(text, steps, 200);
     cr_log_info("potential: T_c = %.4f +- %.4f, T_fluid = %.4f", t.tc, t.tc_se, t.tf);
-    if (pl_test_quick()) return;
+    PL_SKIP_IF_QUICK("a statistical check of the full run");
     cr_expect_lt(fabs(t.tc / t.tf - 1.0), 0.05, "T_c %.4f vs fluid %.4f", t.tc, t.tf);
 }
 
@@ -179,7 +179,7 @@ Test(coupling_thermal, hecht2_settled_on_wall, .timeout = 300)
     vz /= (double)ns;
     cr_log_info("sediment settled: T_c = %.4f +- %.4f, T_fluid = %.4f, mean height %.3f a0 "
                 "(R = %g), mean v_z %.2g", tc, sqrt(var / NB), tf, zmean, R, vz);
-    if (pl_test_quick()) return;
+    PL_SKIP_IF_QUICK("a statistical check of the full run");
     cr_expect_lt(zmean, 3.0 * R, "colloids not settled: mean height %.3f a0", zmean);
     cr_expect_lt(fabs(tc / tf - 1.0), 0.03, "settled colloids at T_c %.4f vs fluid %.4f", tc, tf);
     cr_expect_lt(fabs(tf - 1.0), 0.01, "fluid held at the thermostat: %.4f", tf);

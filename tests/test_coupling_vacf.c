@@ -168,7 +168,7 @@ Test(coupling_vacf, potential_enskog_time, .timeout = 600)
                 "M <V^2> / kT = %.3f; C(%.1f) = %.3f (exp(-t/tau_E) %.3f)",
                 tm, tse, tE, 100.0 * (tm / tE - 1.0), M * c0, KMAX / 2 * DT, ch,
                 exp(-KMAX / 2 * DT / tE));
-    if (quick) return;
+    PL_SKIP_IF_QUICK("a statistical check of the full run");
     cr_expect_lt(tse / tm, 0.05, "VACF too noisy to judge: %.3f +- %.3f", tm, tse);
     cr_expect_lt(fabs(tm / tE - 1.0), 0.15, "decay time %.3f vs tau_E %.3f (PL Eq. 53)", tm, tE);
     cr_expect_lt(fabs(M * c0 - 1.0), 0.05, "equipartition: M <V^2> / kT = %.3f", M * c0);
@@ -218,7 +218,7 @@ Test(coupling_vacf, potential_diffusion, .timeout = 900)
     cr_log_info("MSD 40-100 t0: D = %.5f +- %.5f; kT / xi (PL Eqs. 40-43) %.5f: %+.1f%%; point-force "
                 "finite-size form %.5f; pinned-drag friction 1 / 58.4 = %.5f",
                 Dm, Dse, 1.0 / xi_pl, 100.0 * (Dm * xi_pl - 1.0), 1.0 / xi_pf, 1.0 / 58.4);
-    if (quick) return;
+    PL_SKIP_IF_QUICK("a statistical check of the full run");
     cr_expect_lt(Dse / Dm, 0.05, "MSD too noisy to judge: %.5f +- %.5f", Dm, Dse);
     cr_expect_lt(fabs(Dm * xi_pl - 1.0), 0.15, "D %.5f vs kT / xi %.5f (PL Eqs. 40-43)", Dm, 1.0 / xi_pl);
 }
