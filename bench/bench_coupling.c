@@ -30,6 +30,7 @@
 
 #include "bench_common.h"
 #include "peloid/sim.h"
+#include "peloid_build.h" /* PL_GIT_REV, PL_CFLAGS (generated) */
 
 enum { MAX_REPS = 32 };
 

@@ -40,6 +40,7 @@
 
 #include "bench_common.h"
 #include "peloid/sim.h"
+#include "peloid_build.h" /* PL_GIT_REV, PL_CFLAGS (generated) */
 
 enum { MAX_SIZES = 8, MAX_REPS = 32, MAX_KERN = PL_MAX_STAGES + 1 };
 
@@ -142,7 +143,8 @@ static int fused_step(pl_sim_t *sim, pl_err_t *err, double sec[3])
     double t2 = omp_get_wtime();
     int rc = 0;
     for (int k = 0; k < sim->nstages; ++k) /* the plan's collide stage */
-        if (!strcmp(sim->stages[k].name, "collide")) rc = sim->stages[k].fn(sim, err);
+        if (!strncmp(sim->stages[k].name, "collide", 7)) /* collide or collide+heyes */
+            rc = sim->stages[k].fn(sim, sim->stages[k].ctx, err);
     double t3 = omp_get_wtime();
     sec[0] += t1 - t0;
     sec[1] += t2 - t1;

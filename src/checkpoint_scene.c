@@ -16,6 +16,7 @@
 
 #include "checkpoint_h5.h"
 #include "peloid/h5.h"
+#include "peloid/io.h"
 
 static const char *const not_physics[] = {
     "name",

@@ -121,7 +121,7 @@ int pl_depletion_potential(const pl_depletion_params_t *p, double d, double *phi
                                 GSL_INTEG_GAUSS61, w, &v, &e);
         *phi = pre * 4.0 * M_PI * v;
     } else {
-        double lo = fmax(0.0, d - c.rc), J, dJ;
+        double lo = fmax(0.0, d - c.rc), J = 0.0, dJ = 0.0; /* read only when both integrals succeeded */
         gsl_function gj = {j_integrand, &c}, gd = {dj_integrand, &c};
         s = integrate(&c, &gj, lo, c.rc, d, w, &J);
         if (!s) s = integrate(&c, &gd, lo, c.rc, d, w, &dJ);

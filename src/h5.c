@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include "peloid_build.h" /* PL_GIT_REV, PL_CFLAGS (generated) */
 
 hid_t pl_h5_group(hid_t parent, const char *name)
 {

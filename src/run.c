@@ -19,6 +19,7 @@
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"
 #include "peloid/thermo.h"
+#include "peloid_build.h" /* PL_GIT_REV, PL_CFLAGS (generated) */
 
 typedef struct {
     char dir[PATH_MAX]; /* resolved output directory (pl_outdir_prepare) */

@@ -26,8 +26,8 @@ static void make_box(box_t *b, int L, double gamma, int nthreads)
     for (size_t i = 0; i < n; ++i) {
         pl_rand4_t r = pl_rng_uniform4(99, 1, 0, i, 0), q = pl_rng_uniform4(99, 2, 0, i, 0);
         for (int d = 0; d < 3; ++d) {
-            b->f.r[d][i] = r.u[d] * L;
-            b->f.v[d][i] = 2.0 * q.u[d] - 1.0 + 0.3 * d; /* a mean flow too */
+            b->f.r[d][i] = (pl_real)(r.u[d] * L);
+            b->f.v[d][i] = (pl_real)(2.0 * q.u[d] - 1.0 + 0.3 * d); /* a mean flow too */
         }
     }
     b->hist = pl_alloc((size_t)nthreads * b->g.ncells * sizeof(uint32_t));

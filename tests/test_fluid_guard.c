@@ -32,7 +32,7 @@ Test(fluid_guard, nan_velocity)
     for (int k = 0; k < sim->nstages && !found; ++k)
         if (!strcmp(sim->stages[k].name, "fluid-guard")) {
             found = 1;
-            cr_expect_eq(sim->stages[k].fn(sim, &err), PL_ERR_GUARD);
+            cr_expect_eq(sim->stages[k].fn(sim, sim->stages[k].ctx, &err), PL_ERR_GUARD);
             cr_expect(strstr(err.msg, "fluid particle 123"), "%s", err.msg);
         }
     cr_expect(found);

@@ -16,8 +16,8 @@ static void fill(pl_fluid_t *f, pl_grid_t *g, size_t n, int L)
     for (size_t i = 0; i < n; ++i) {
         pl_rand4_t r = pl_rng_uniform4(7, 1, 0, i, 0);
         for (int d = 0; d < 3; ++d) {
-            f->r[d][i] = r.u[d] * Ls[d];
-            f->v[d][i] = (double)i; /* original index, to check stability */
+            f->r[d][i] = (pl_real)(r.u[d] * Ls[d]);
+            f->v[d][i] = (pl_real)i; /* original index, to check stability */
         }
         f->id[i] = (uint32_t)i;
     }
