@@ -211,6 +211,5 @@ void pl_colloid_depletion_params(const pl_scene_t *scene, pl_depletion_params_t 
     dp->n = 6.0; /* PL Eq. 17 */
     dp->hard_sphere = 0;
     dp->density = scene->fluid.density;
-    dp->kT = scene->thermostat.type != PL_THERMO_NONE ? scene->thermostat.temperature
-                                                       : scene->fluid.temperature;
+    dp->kT = pl_scene_kT(scene);
 }

@@ -47,8 +47,7 @@ static int check_settling(const pl_scene_t *scene, pl_err_t *err)
         return 0;
     double rmax = cs->radius * (1.0 + sqrt(3.0) * cs->polydispersity);
     double mass = cs->mass_density * 4.0 / 3.0 * PL_PI * rmax * rmax * rmax;
-    double kT = scene->thermostat.type != PL_THERMO_NONE ? scene->thermostat.temperature
-                                                         : scene->fluid.temperature;
+    double kT = pl_scene_kT(scene);
     double xi = pl_coupling2_friction(scene, mass);
     double vs = mass * gn / xi, e = mass * vs * vs / kT;
     if (e <= bound) return 0;
@@ -164,9 +163,7 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
     if (cp->method == PL_COUPLE_HECHT1) {
         pl_coupling1_params_t *p = &cp->p1;
         p->dt = sc->srd.dt;
-        p->kT = sc->coupling.wall_temperature > 0.0 ? sc->coupling.wall_temperature
-                : sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature
-                                                        : sc->fluid.temperature;
+        p->kT = sc->coupling.wall_temperature > 0.0 ? sc->coupling.wall_temperature : pl_scene_kT(sc);
         p->boundary = sc->coupling.boundary;
         p->placement = sc->coupling.placement;
         p->max_refl = (int)sc->coupling.max_reflections;

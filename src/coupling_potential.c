@@ -28,7 +28,7 @@ int pl_coupling_potential_setup(pl_coupling_t *cp, pl_sim_t *sim, pl_err_t *err)
     cp->wca.eps = sc->coupling.epsilon_cf;
     for (int d = 0; d < 3; ++d) cp->wca.L[d] = sim->grid.L[d];
     for (int d = 0; d < 3; ++d) cp->wca.walls[d] = sim->grid.walls[d];
-    double kT = fmax(sc->fluid.temperature, sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature : 0.0);
+    double kT = pl_scene_kT_max(sc);
     cp->margin = 8.0 * sqrt(kT) * sc->srd.dt + 0.1;
     cp->rad_big = malloc((c->n + 1) * sizeof(double));
     cp->cf = malloc(3 * (c->n + 1) * sizeof(double));

@@ -34,8 +34,7 @@
 void pl_fluid_guard_setup(pl_sim_t *sim)
 {
     const pl_scene_t *sc = &sim->scene;
-    double kT = sc->fluid.temperature, u = 0.0;
-    if (sc->thermostat.type != PL_THERMO_NONE && sc->thermostat.temperature > kT) kT = sc->thermostat.temperature;
+    double kT = pl_scene_kT_max(sc), u = 0.0;
     if (sc->coupling.wall_temperature > kT) kT = sc->coupling.wall_temperature;
     for (int w = 0; w < 2; ++w) {
         const double *U = sc->box.wall_velocity[w];

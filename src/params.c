@@ -10,15 +10,10 @@
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"
 
-/* kT of the fluid: the thermostat's target, else the initial temperature. */
-static double fluid_kT(const pl_scene_t *sc)
-{
-    return sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature : sc->fluid.temperature;
-}
 
 int pl_params_json(const pl_scene_t *sc, struct json_t **out, pl_err_t *err)
 {
-    const double kT = fluid_kT(sc);
+    const double kT = pl_scene_kT(sc);
     pl_srd_theory_t t;
     pl_srd_theory(sc->fluid.density, sc->srd.alpha_deg * M_PI / 180.0, sc->srd.dt, kT, &t);
     pl_json_t b = {err, sc->path, "derived", 0};
@@ -103,7 +98,7 @@ int pl_params_write_json(const pl_scene_t *sc, FILE *out, int strict, pl_err_t *
 
 void pl_params_print(const pl_scene_t *sc, FILE *out)
 {
-    const double kT = fluid_kT(sc);
+    const double kT = pl_scene_kT(sc);
     pl_srd_theory_t t;
     pl_srd_theory(sc->fluid.density, sc->srd.alpha_deg * M_PI / 180.0, sc->srd.dt, kT, &t);
     const int hecht = sc->srd.rule == PL_RULE_HECHT_AXES;

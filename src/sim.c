@@ -70,7 +70,7 @@ int pl_sim_wall_ghosts(const pl_sim_t *sim, double *density, double *kT_wall)
 {
     const pl_scene_t *sc = &sim->scene;
     *density = sc->fluid.density;
-    *kT_wall = sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature : sc->fluid.temperature;
+    *kT_wall = pl_scene_kT(sc);
     return sc->box.walls_z == PL_WALLS_NOSLIP || sc->box.walls_xy == PL_WALLS_NOSLIP;
 }
 

@@ -107,6 +107,20 @@ typedef struct pl_scene {
     pl_scene_coupling_t coupling; /* colloid-solvent coupling (coupling_scene.h) */
 } pl_scene_t;
 
+/* The one kT of a scene (model units): the thermostat's target, else the
+ * fluid's initial temperature. */
+static inline double pl_scene_kT(const pl_scene_t *sc)
+{
+    return sc->thermostat.type != PL_THERMO_NONE ? sc->thermostat.temperature : sc->fluid.temperature;
+}
+
+/* The largest of the fluid's initial and the thermostat's temperature. */
+static inline double pl_scene_kT_max(const pl_scene_t *sc)
+{
+    const double t = sc->fluid.temperature;
+    return sc->thermostat.type != PL_THERMO_NONE && sc->thermostat.temperature > t ? sc->thermostat.temperature : t;
+}
+
 /* ---- schema ---------------------------------------------------------- */
 
 typedef enum {
