@@ -10,24 +10,16 @@
 #include "peloid/coupling_kernels.h"
 #include "peloid/scene.h"
 
-static inline int cell_1d(double x, double s, int n)
-{
-    int i = (int)floor(x - s);
-    if (i < 0) i += n;
-    else if (i >= n) i -= n;
-    return i;
-}
-
 uint32_t pl_coupling_cell_of(const pl_grid_t *g, double x, double y, double z)
 {
     const double r[3] = {x, y, z};
     int ic[3];
     for (int d = 0; d < 3; ++d) {
         if (g->walls[d] == PL_WALLS_NONE) {
-            ic[d] = cell_1d(r[d], g->shift[d], g->n[d]);
+            ic[d] = pl_grid_cell_periodic(r[d], g->shift[d], g->n[d]);
             continue;
         }
-        ic[d] = (int)floor(r[d] - g->shift[d]) + 1; /* closed axis: cells 0 .. L+1 */
+        ic[d] = pl_grid_cell_closed(r[d], g->shift[d]); /* clipped: a point just beyond a wall */
         if (ic[d] < 0) ic[d] = 0;
         if (ic[d] >= g->n[d]) ic[d] = g->n[d] - 1;
     }

@@ -50,13 +50,6 @@ static inline double pl_drift_wrap(double x, double L, double invL)
     return x >= L ? 0.0 : x; /* x slightly below 0 can round up to L */
 }
 
-static inline int pl_drift_cell_1d(double x, double s, int n)
-{
-    int i = (int)floor(x - s);
-    if (i < 0) i += n;
-    else if (i >= n) i -= n;
-    return i;
-}
 
 /* 1 when r lies beyond a wall of a closed axis. */
 static inline int pl_drift_outside(const pl_drift_t *c, const double r[3])
@@ -149,9 +142,9 @@ pl_drift_one_closed(const pl_drift_t *c, const int closed[3], double r[3], doubl
     for (int d = 0; d < 3; ++d) {
         if (closed[d]) { /* closed axis: cells 0 .. L+1, no wrap */
 #ifdef PL_SINGLE
-            ic[d] = (int)floor((double)(pl_real)r[d] - c->s[d]) + 1; /* the stored position */
+            ic[d] = pl_grid_cell_closed((double)(pl_real)r[d], c->s[d]); /* the stored position */
 #else
-            ic[d] = (int)floor(r[d] - c->s[d]) + 1;
+            ic[d] = pl_grid_cell_closed(r[d], c->s[d]);
 #endif
             continue;
         }
@@ -160,7 +153,7 @@ pl_drift_one_closed(const pl_drift_t *c, const int closed[3], double r[3], doubl
         /* the stored (rounded) position is the one binned */
         r[d] = (pl_real)r[d] >= (pl_real)c->L[d] ? 0.0 : (double)(pl_real)r[d];
 #endif
-        ic[d] = pl_drift_cell_1d(r[d], c->s[d], c->n[d]);
+        ic[d] = pl_grid_cell_periodic(r[d], c->s[d], c->n[d]);
     }
 #ifdef PL_SINGLE
     for (int d = 0; d < 3; ++d) v[d] = (double)(pl_real)v[d];
@@ -244,6 +237,7 @@ __attribute__((noinline)) static void pl_drift_block_periodic(const pl_drift_t *
         double r2 = (double)f2 * (double)(f2 < (pl_real)L2);
         v0 = (double)(pl_real)v0; v1 = (double)(pl_real)v1; v2 = (double)(pl_real)v2;
 #endif
+        /* pl_grid_cell_periodic written with the vectorisable floor */
         int ix = pl_drift_ifloor(r0 - s0), iy = pl_drift_ifloor(r1 - s1), iz = pl_drift_ifloor(r2 - s2);
         ix += ix < 0 ? n0 : 0; ix -= ix >= n0 ? n0 : 0;
         iy += iy < 0 ? n1 : 0; iy -= iy >= n1 ? n1 : 0;

@@ -7,6 +7,7 @@
 #ifndef PELOID_GRID_H
 #define PELOID_GRID_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -20,6 +21,21 @@ typedef struct pl_grid {
 } pl_grid_t;
 
 void pl_grid_init(pl_grid_t *grid, const int L[3], const int walls[3]);
+
+/* The one cell-of-position rule (streaming, sort and couplings must agree
+ * bitwise).  Periodic axis of n cells under shift s, x in [0, L):
+ * floor(x - s) mod n. */
+static inline int pl_grid_cell_periodic(double x, double s, int n)
+{
+    int i = (int)floor(x - s);
+    if (i < 0) i += n;
+    else if (i >= n) i -= n;
+    return i;
+}
+
+/* Closed axis (cells 0 .. L+1, the outer ones cut by the walls):
+ * floor(x - s) + 1. */
+static inline int pl_grid_cell_closed(double x, double s) { return (int)floor(x - s) + 1; }
 
 /* Draws the grid shift of collision step `step` (zero when disabled). */
 void pl_grid_draw_shift(pl_grid_t *grid, uint64_t seed, uint64_t step, int enabled);
