@@ -4,7 +4,8 @@
  * the stable sort depends on it), tracking arrays, step, field accumulators,
  * with colloids the group /colloids (src/checkpoint_colloid.c), and the wall
  * and coupling run counters (src/checkpoint_coupling.c).
- * Written to "<path>.tmp", fsync'ed, renamed, and the directory fsync'ed.
+ * Written atomically (pl_atomic_commit); the HDF5 helpers (checksummed 1-d
+ * datasets, attributes) are in src/checkpoint_h5.c.
  * No object carries a time stamp, so the same state gives the same bytes.
  *
  * Nothing read is trusted (format 2): the root attribute format_version must
@@ -14,9 +15,7 @@
  * (finite; positions inside the box; velocities within the fluid guard's
  * one-cell-per-step bound; ids a permutation; counts >= 0). */
 #include <errno.h>
-#include <fcntl.h>
 #include <hdf5.h>
-#include <libgen.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -36,116 +35,6 @@ static const char *const rnames[3] = {"x", "y", "z"};
 static const char *const vnames[3] = {"vx", "vy", "vz"};
 static const char *const dnames[3] = {"disp_x", "disp_y", "disp_z"};
 
-int pl_ckpt_write_1d(hid_t g, const char *name, hid_t type, const void *data, size_t n)
-{
-    hsize_t dims[1] = {n};
-    hid_t sp = H5Screate_simple(1, dims, NULL);
-    hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
-    H5Pset_obj_track_times(dcpl, 0); /* no time stamps: same state => same bytes */
-    hid_t ds = H5Dcreate2(g, name, type, sp, H5P_DEFAULT, dcpl, H5P_DEFAULT);
-    H5Pclose(dcpl);
-    herr_t st = ds < 0 ? -1 : n ? H5Dwrite(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) : 0;
-    long long sum = (long long)pl_ckpt_fnv1a(data, n * H5Tget_size(type));
-    if (st >= 0 && pl_ckpt_attr_i64(ds, "fnv1a64", &sum, 1, 1)) st = -1;
-    if (ds >= 0 && H5Dclose(ds) < 0) st = -1;
-    H5Sclose(sp);
-    return st < 0 ? -1 : 0;
-}
-
-int pl_ckpt_read_1d(hid_t g, const char *name, hid_t type, void *data, size_t n, const char *path,
-                    pl_err_t *err)
-{
-    char where[256];
-    if (H5Iget_name(g, where, sizeof where) < 0) where[0] = '\0';
-    const char *sep = strcmp(where, "/") ? "/" : "";
-    if (H5Lexists(g, name, H5P_DEFAULT) <= 0)
-        return pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint has no dataset %s%s%s", path, where, sep, name);
-    hid_t ds = H5Dopen2(g, name, H5P_DEFAULT);
-    if (ds < 0) return pl_err_set(err, PL_ERR_INPUT, "%s: cannot open dataset %s%s%s", path, where, sep, name);
-    hid_t sp = H5Dget_space(ds);
-    hsize_t dims[1] = {0};
-    int ok = H5Sget_simple_extent_ndims(sp) == 1 && H5Sget_simple_extent_dims(sp, dims, NULL) == 1 &&
-             dims[0] == n;
-    herr_t st = !ok ? -1 : n ? H5Dread(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) : 0;
-    long long sum = 0;
-    int has_sum = st >= 0 && pl_ckpt_attr_i64(ds, "fnv1a64", &sum, 1, 0) == 0;
-    H5Sclose(sp);
-    H5Dclose(ds);
-    if (!ok)
-        return pl_err_set(err, PL_ERR_INPUT, "%s: dataset %s%s%s has %llu elements, the scene needs %zu", path,
-                          where, sep, name, (unsigned long long)dims[0], n);
-    if (st < 0) return pl_err_set(err, PL_ERR_INPUT, "%s: dataset %s%s%s is unreadable", path, where, sep, name);
-    if (!has_sum)
-        return pl_err_set(err, PL_ERR_INPUT, "%s: dataset %s%s%s has no checksum (attribute fnv1a64)", path,
-                          where, sep, name);
-    uint64_t got = pl_ckpt_fnv1a(data, n * H5Tget_size(type));
-    if (got != (uint64_t)sum)
-        return pl_err_set(err, PL_ERR_INPUT,
-                          "%s: dataset %s%s%s fails its checksum (stored fnv1a64 %016llx, data %016llx): "
-                          "the checkpoint is corrupt", path, where, sep, name, (unsigned long long)sum,
-                          (unsigned long long)got);
-    return 0;
-}
-
-char *pl_ckpt_attr_str_read(hid_t obj, const char *name)
-{
-    if (H5Aexists(obj, name) <= 0) return NULL;
-    hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
-    if (a < 0) return NULL;
-    hid_t t = H5Aget_type(a);
-    char *s = NULL;
-    size_t n = t >= 0 && H5Tget_class(t) == H5T_STRING && !H5Tis_variable_str(t) ? H5Tget_size(t) : 0;
-    if (n > 0 && n < ((size_t)1 << 24) && (s = malloc(n + 1))) {
-        if (H5Aread(a, t, s) < 0) {
-            free(s);
-            s = NULL;
-        } else {
-            s[n] = '\0';
-        }
-    }
-    if (t >= 0) H5Tclose(t);
-    H5Aclose(a);
-    return s;
-}
-
-int pl_ckpt_attr_i64(hid_t obj, const char *name, long long *v, int n, int write)
-{
-    hsize_t dims[1] = {(hsize_t)n};
-    if (!write) {
-        hid_t a = H5Aopen(obj, name, H5P_DEFAULT);
-        if (a < 0) return -1;
-        hid_t sp = H5Aget_space(a);
-        herr_t st = H5Sget_simple_extent_npoints(sp) == n ? H5Aread(a, H5T_NATIVE_LLONG, v) : -1;
-        H5Sclose(sp);
-        H5Aclose(a);
-        return st < 0 ? -1 : 0;
-    }
-    hid_t sp = H5Screate_simple(1, dims, NULL);
-    hid_t a = H5Acreate2(obj, name, H5T_NATIVE_LLONG, sp, H5P_DEFAULT, H5P_DEFAULT);
-    herr_t st = a >= 0 ? H5Awrite(a, H5T_NATIVE_LLONG, v) : -1;
-    if (a >= 0) H5Aclose(a);
-    H5Sclose(sp);
-    return st < 0 ? -1 : 0;
-}
-
-hid_t pl_ckpt_group_create(hid_t f, const char *name) { return pl_h5_group(f, name); }
-
-/* fsync of the file, then of its directory: the rename that follows (or
- * has just happened) survives a crash with the data it names. */
-int pl_fsync_path(const char *path, int dir)
-{
-    char buf[PATH_MAX + 8];
-    snprintf(buf, sizeof buf, "%s", path);
-    const char *p = dir ? dirname(buf) : buf;
-    int fd = open(p, O_RDONLY | (dir ? O_DIRECTORY : 0));
-    if (fd < 0) return -1;
-    int rc = fsync(fd);
-    int e = errno;
-    close(fd);
-    errno = e;
-    return rc;
-}
-
 static int write_failed(pl_err_t *err, const char *tmp, const char *what)
 {
     char why[256];
@@ -157,7 +46,7 @@ static int write_failed(pl_err_t *err, const char *tmp, const char *what)
 int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
 {
     char tmp[PATH_MAX + 8];
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    pl_atomic_tmp(path, tmp, sizeof tmp);
     pl_h5_quiet();
     errno = 0;
     hid_t f = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
@@ -202,19 +91,7 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
         return pl_err_set(err, PL_ERR_IO, "%s: writing the checkpoint failed: %s", tmp, why);
     }
     if (H5Fclose(f) < 0) return write_failed(err, tmp, "writing the checkpoint failed");
-    if (pl_fsync_path(tmp, 0)) {
-        int e = errno;
-        unlink(tmp);
-        return pl_err_set(err, PL_ERR_IO, "%s: fsync failed: %s", tmp, strerror(e));
-    }
-    if (rename(tmp, path)) {
-        int e = errno;
-        unlink(tmp);
-        return pl_err_set(err, PL_ERR_IO, "%s: cannot rename to %s: %s", tmp, path, strerror(e));
-    }
-    if (pl_fsync_path(path, 1))
-        return pl_err_set(err, PL_ERR_IO, "%s: fsync of the directory failed: %s", path, strerror(errno));
-    return 0;
+    return pl_atomic_commit(tmp, path, err);
 }
 
 /* Range checks of the fluid state just read (serial, once per restart). */

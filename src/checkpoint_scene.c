@@ -34,18 +34,6 @@ static const char *const not_physics[] = {
     "coarse_graining.strict",
 };
 
-uint64_t pl_ckpt_fnv1a(const void *data, size_t n)
-{
-    /* FNV-1a, 64 bit (Fowler, Noll, Vo): offset basis and prime */
-    const unsigned char *p = data;
-    uint64_t h = 14695981039346656037ULL;
-    for (size_t i = 0; i < n; ++i) {
-        h ^= p[i];
-        h *= 1099511628211ULL;
-    }
-    return h;
-}
-
 static void full_name(const pl_section_t *sec, const pl_key_t *k, char *buf, size_t n)
 {
     if (*sec->name) snprintf(buf, n, "%s.%s", sec->name, k->name);

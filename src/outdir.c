@@ -117,20 +117,3 @@ int pl_outdir_prepare(const char *dir, int force, const char *scene_path, char *
     }
     return 0;
 }
-
-FILE *pl_file_begin(const char *path, char *tmp, size_t ntmp, pl_err_t *err)
-{
-    snprintf(tmp, ntmp, "%s.tmp", path);
-    FILE *f = fopen(tmp, "w");
-    if (!f) pl_err_set(err, PL_ERR_IO, "%s: cannot write: %s", tmp, strerror(errno));
-    return f;
-}
-
-int pl_file_commit(FILE *f, const char *tmp, const char *path, pl_err_t *err)
-{
-    int bad = ferror(f);
-    if (fclose(f) || bad) return pl_err_set(err, PL_ERR_IO, "%s: write failed", tmp);
-    if (rename(tmp, path))
-        return pl_err_set(err, PL_ERR_IO, "%s: cannot rename to %s: %s", tmp, path, strerror(errno));
-    return 0;
-}

@@ -21,7 +21,14 @@ int pl_outdir_prepare(const char *dir, int force, const char *scene_path, char *
 /* "<dir>/<name>" into buf. */
 void pl_path_join(char *buf, size_t n, const char *dir, const char *name);
 
-/* Atomic text file: open "<path>.tmp", then pl_file_commit renames it. */
+/* The one atomic-write helper (src/atomic_file.c).  pl_atomic_tmp: the
+ * temporary name "<path>.tmp" to write first.  pl_atomic_commit: fsync it,
+ * rename it to path, fsync the directory; on failure the temporary file is
+ * removed and PL_ERR_IO names the file and the system error. */
+void pl_atomic_tmp(const char *path, char *tmp, size_t n);
+int pl_atomic_commit(const char *tmp, const char *path, pl_err_t *err);
+/* Atomic text file: open "<path>.tmp"; pl_file_commit checks the stream,
+ * closes it and commits it (pl_atomic_commit). */
 FILE *pl_file_begin(const char *path, char *tmp, size_t ntmp, pl_err_t *err);
 int pl_file_commit(FILE *f, const char *tmp, const char *path, pl_err_t *err);
 
