@@ -16,6 +16,7 @@
 #include "peloid/coupling.h"
 #include "peloid/io.h"
 #include "peloid/mapping.h"
+#include "peloid/module.h"
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"
 #include "peloid/thermo.h"
@@ -129,18 +130,8 @@ static int summary_head(const pl_sim_t *sim, json_t **out, pl_err_t *err)
     pl_json_str(&b, o, "y", pl_scene_boundary_name(walls[1]));
     pl_json_str(&b, o, "z", pl_scene_boundary_name(walls[2]));
     pl_json_set(&b, doc, "boundaries", o);
-    if (sim->colloids) {
-        const pl_colloid_depl_info_t *d = &sim->colloids->depl;
-        b.prefix = "colloid_pairs";
-        o = json_object();
-        pl_json_real(&b, o, "sigma_cc", d->sigma_cc);
-        pl_json_str(&b, o, "sigma_rule", d->rule == PL_SIGMA_PL ? "pl" : "fixed");
-        pl_json_real(&b, o, "d_match", d->d_match);
-        pl_json_real(&b, o, "phi_cc_at_d_match", d->phi_match);
-        pl_json_real(&b, o, "depletion_at_sigma_cc", d->phi_sigma);
-        pl_json_set(&b, o, "depletion_comp", json_boolean(d->table_n));
-        pl_json_set(&b, doc, "colloid_pairs", o);
-    }
+    for (int m = 0; !rc && !b.failed && pl_modules[m]; ++m) /* each module's entries */
+        if (pl_modules[m]->summary) rc = pl_modules[m]->summary(sim, doc, err);
     if (rc || b.failed || !doc) {
         json_decref(doc);
         return rc ? rc : b.failed ? err->code : pl_err_set(err, PL_ERR_NOMEM, "out of memory building JSON");
@@ -205,11 +196,12 @@ static int add_writers(pl_sim_t *sim, writer_t *w, pl_err_t *err)
 {
     const pl_scene_t *sc = &sim->scene;
     pl_stage_t thermo = {.name = "thermo", .fn = stage_thermo, .ctx = w, .interval = sc->output.thermo_interval,
-                         .phase = PL_PHASE_AFTER, .at_start = 1, .at_end = 1, .writes = 1};
+                         .phase = PL_PHASE_AFTER, .slot = PL_SLOT_WRITE, .at_start = 1, .at_end = 1, .writes = 1};
     int rc = pl_sim_add_stage(sim, &thermo, err);
     if (!rc && sc->output.checkpoint_interval > 0) {
         pl_stage_t ck = {.name = "checkpoint", .fn = stage_checkpoint, .ctx = w,
-                         .interval = sc->output.checkpoint_interval, .phase = PL_PHASE_AFTER, .writes = 1};
+                         .interval = sc->output.checkpoint_interval, .phase = PL_PHASE_AFTER,
+                         .slot = PL_SLOT_WRITE, .writes = 1};
         rc = pl_sim_add_stage(sim, &ck, err);
     }
     return rc;

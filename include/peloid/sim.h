@@ -23,6 +23,30 @@ typedef enum {
     PL_PHASE_AFTER, /* samples or writes the state once step `step` is complete */
 } pl_stage_phase_t;
 
+/* Where a stage runs within its phase: the plan is ordered by (phase,
+ * slot), stages of one slot in the order they were added (module order,
+ * src/modules.c).  The step's data flow: colloid MD, then the fluid's
+ * stream, sort and collision with the couplings' stages around them. */
+typedef enum {
+    /* PL_PHASE_STEP */
+    PL_SLOT_COLLOID_MD = 10,   /* colloid MD substeps (velocity Verlet or BD) */
+    PL_SLOT_PRE_STREAM = 20,   /* potential coupling: select the fluid near colloids */
+    PL_SLOT_STREAM = 30,       /* fluid streaming + cell binning */
+    PL_SLOT_POST_STREAM = 40,  /* potential coupling MD; coupling I reflections */
+    PL_SLOT_SORT = 50,         /* counting sort into collision cells */
+    PL_SLOT_PRE_COLLIDE = 60,  /* coupling II: keep the fluid velocities */
+    PL_SLOT_COLLIDE = 70,      /* SRD collision (with the Heyes thermostat variant) */
+    PL_SLOT_POST_COLLIDE = 80, /* coupling II: collide the colloids' cells again */
+    PL_SLOT_THERMOSTAT = 90,   /* rescaling thermostat */
+    PL_SLOT_GUARD = 100,       /* fluid guard: nothing non-finite moves on */
+    PL_SLOT_SAMPLE = 110,      /* time-averaged fields */
+    PL_SLOT_CONSTRAIN = 120,   /* flow hold, drift removal */
+    /* PL_PHASE_AFTER */
+    PL_SLOT_OUTPUT_GUARD = 10, /* the fluid guard's scan of a state about to be written */
+    PL_SLOT_OBSERVE = 20,      /* observers sample the completed step */
+    PL_SLOT_WRITE = 30,        /* writers: trajectory, thermo, checkpoint */
+} pl_stage_slot_t;
+
 typedef struct {
     const char *name;
     pl_stage_fn fn;
@@ -30,6 +54,7 @@ typedef struct {
     long long interval; /* run when step % interval == 0 */
     long long except;   /* > 0: not when step % except == 0 (another variant runs then) */
     pl_stage_phase_t phase;
+    pl_stage_slot_t slot;
     int at_start;       /* PL_PHASE_AFTER: also on the state a run starts from */
     int at_end;         /* PL_PHASE_AFTER: also on the run's last state */
     int writes;         /* writes an output: the fluid guard scans the state first */
@@ -83,8 +108,9 @@ struct pl_sim {
 int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_t *err);
 void pl_sim_free(pl_sim_t *sim);
 
-/* Appends a stage to the plan (writers and observers register theirs after
- * the simulation is built); PL_ERR_INTERNAL when the plan is full. */
+/* Adds a stage to the plan at its (phase, slot), after the stages already
+ * there (writers and observers register theirs after the simulation is
+ * built); PL_ERR_INTERNAL when the plan is full. */
 int pl_sim_add_stage(pl_sim_t *sim, const pl_stage_t *stage, pl_err_t *err);
 
 /* Whether stage s runs when the state is at step `step`. */

@@ -1,7 +1,7 @@
-/* thermo.tsv columns: one table per module (fluid, physical units, walls,
- * colloids, couplings), each row a column's name, unit and value function.
- * The header and every row are written from the same table, so a column
- * cannot shift against its name; a module adds a column by adding a row. */
+/* thermo.tsv columns: each module (peloid/module.h) adds its own, each a
+ * name, unit and value function.  The header and every row are written from
+ * the same table, so a column cannot shift against its name; a module adds
+ * a column by adding a row to its table. */
 #ifndef PELOID_THERMO_H
 #define PELOID_THERMO_H
 
@@ -40,6 +40,8 @@ typedef struct {
 } pl_thermo_table_t;
 
 void pl_thermo_table_build(const pl_sim_t *sim, pl_thermo_table_t *t);
+/* Appends n columns (a module's thermo_columns). */
+void pl_thermo_add(pl_thermo_table_t *t, const pl_thermo_column_t *c, int n);
 void pl_thermo_header(const pl_thermo_table_t *t, FILE *f);
 /* Samples the state (fluid observables, colloid energies) into s. */
 void pl_thermo_sample(const pl_sim_t *sim, double rate, pl_thermo_sample_t *s);

@@ -1,0 +1,41 @@
+/* Modules of a simulation (DESIGN.md "Scene -> plan"): the fluid, the
+ * colloids, the colloid-solvent couplings, the observers.  Each registers
+ * here, in one table row, what it adds to a run; its own file holds its
+ * stages, its thermo columns and its summary entries.  Adding a module (an
+ * observable, a coupling) is its file plus one row of pl_modules
+ * (src/modules.c).  Where a module's stages run in a step is their slot
+ * (pl_stage_slot_t, peloid/sim.h). */
+#ifndef PELOID_MODULE_H
+#define PELOID_MODULE_H
+
+#include "peloid/error.h"
+#include "peloid/sim.h"
+#include "peloid/thermo.h"
+
+struct json_t;
+
+typedef struct pl_module {
+    const char *name;
+    /* Creates the module's state in sim from sim->scene (NULL: nothing to
+     * create; a module the scene does not ask for creates nothing). */
+    int (*create)(pl_sim_t *sim, pl_err_t *err);
+    /* Frees what create made (NULL: nothing). */
+    void (*destroy)(pl_sim_t *sim);
+    /* Adds the stages the scene needs (pl_sim_add_stage, with their slots). */
+    void (*add_stages)(pl_sim_t *sim);
+    /* Adds the thermo.tsv columns the scene needs, in order (pl_thermo_add). */
+    void (*thermo_columns)(const pl_sim_t *sim, pl_thermo_table_t *t);
+    /* Adds its entries to the head of summary.json (NULL: none); a
+     * non-finite value is PL_ERR_INPUT naming the key. */
+    int (*summary)(const pl_sim_t *sim, struct json_t *doc, pl_err_t *err);
+} pl_module_t;
+
+/* The modules, NULL-terminated, in the order they are created, their stages
+ * registered (within a slot), their columns and entries written. */
+extern const pl_module_t *const pl_modules[];
+
+extern const pl_module_t pl_fluid_module;    /* src/fluid_stages.c */
+extern const pl_module_t pl_colloid_module;  /* src/colloid_module.c */
+extern const pl_module_t pl_coupling_module; /* src/coupling_module.c */
+
+#endif

@@ -1,0 +1,123 @@
+/* The colloid module (peloid/module.h): creates the colloids of the scene,
+ * adds their MD stage and trajectory writer, their thermo columns (kinetic
+ * and potential energy terms, centre-of-mass height) and their pair
+ * settings in summary.json. */
+#include <jansson.h>
+
+#include "json_build.h"
+#include "peloid/colloid.h"
+#include "peloid/coupling.h"
+#include "peloid/module.h"
+
+static int colloid_create(pl_sim_t *sim, pl_err_t *err)
+{
+    return sim->scene.colloids.count > 0 ? pl_colloid_create(&sim->scene, &sim->colloids, err) : 0;
+}
+
+static void colloid_destroy(pl_sim_t *sim)
+{
+    pl_colloid_traj_close(sim->colloid_traj, NULL);
+    sim->colloid_traj = NULL;
+    pl_colloid_free(sim->colloids);
+    sim->colloids = NULL;
+}
+
+/* Colloid MD: colloids.substeps MD steps of dt_MD = srd.dt / substeps. */
+static int stage_colloid_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    return pl_colloid_advance(sim->colloids, sim->step, err);
+}
+
+static int stage_colloid_traj(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    if (!sim->colloid_traj) return 0;
+    return pl_colloid_traj_write(sim->colloid_traj, sim->colloids, sim->step,
+                                 (double)sim->step * sim->scene.srd.dt, err);
+}
+
+static void colloid_stages(pl_sim_t *sim)
+{
+    const pl_scene_t *sc = &sim->scene;
+    if (!sim->colloids) return;
+    if (sc->colloids.trajectory_interval > 0) {
+        pl_stage_t t = {.name = "colloid-trajectory", .fn = stage_colloid_traj,
+                        .interval = sc->colloids.trajectory_interval, .phase = PL_PHASE_AFTER,
+                        .at_start = 1, .at_end = 1, .writes = 1, .slot = PL_SLOT_WRITE};
+        pl_sim_add_stage(sim, &t, NULL);
+    }
+    /* pinned colloids do not move; the potential coupling runs the
+     * colloid MD together with the fluid near them */
+    if (!(sim->coupling && (sim->coupling->pinned || sim->coupling->method == PL_COUPLE_POTENTIAL))) {
+        pl_stage_t md = {.name = "colloid-md", .fn = stage_colloid_md, .slot = PL_SLOT_COLLOID_MD};
+        pl_sim_add_stage(sim, &md, NULL);
+    }
+}
+
+/* ---- thermo columns (energies: src/colloid_state.c) ------------------- */
+static double v_ekin(const pl_thermo_sample_t *s, int rot) { return rot ? s->ce.kin_rot : s->ce.kin_trans; }
+static double v_epot(const pl_thermo_sample_t *s, int k) { return s->ce.pot[k]; }
+static double v_etotal(const pl_thermo_sample_t *s, int a)
+{
+    (void)a;
+    return s->ce.total;
+}
+/* centre-of-mass height of the colloids (unwrapped z): sedimentation */
+static double v_zcm(const pl_thermo_sample_t *s, int a)
+{
+    (void)a;
+    const pl_colloid_t *c = s->sim->colloids;
+    double mz = 0.0, m = 0.0;
+    for (size_t k = 0; k < c->n; ++k) { /* fixed order */
+        mz += c->mass[k] * (c->z[k] + (double)c->iz[k] * c->box[2]);
+        m += c->mass[k];
+    }
+    return m > 0.0 ? mz / m : 0.0;
+}
+static const pl_thermo_column_t kin_cols[] = {
+    {.name = "c_kin_trans", .unit = "kT", .value = v_ekin, .arg = 0},
+    {.name = "c_kin_rot", .unit = "kT", .value = v_ekin, .arg = 1},
+};
+static const pl_thermo_column_t tail_cols[] = {
+    {.name = "c_total", .unit = "kT", .value = v_etotal},
+    {.name = "c_zcm", .unit = "a0", .value = v_zcm},
+};
+
+static void colloid_columns(const pl_sim_t *sim, pl_thermo_table_t *t)
+{
+    if (!sim->colloids) return;
+    pl_thermo_add(t, kin_cols, 2);
+    for (int k = 0; k < PL_CE_NTERMS; ++k) { /* one column per energy term, named by its table */
+        pl_thermo_column_t c = {.name = pl_colloid_energy_names[k], .unit = "kT", .value = v_epot, .arg = k};
+        pl_thermo_add(t, &c, 1);
+    }
+    pl_thermo_add(t, tail_cols, 2);
+}
+
+/* summary.json "colloid_pairs": the colloid-colloid diameter and the
+ * spurious depletion (PL Sec. III.C.1). */
+static int colloid_summary(const pl_sim_t *sim, json_t *doc, pl_err_t *err)
+{
+    if (!sim->colloids) return 0;
+    const pl_colloid_depl_info_t *d = &sim->colloids->depl;
+    pl_json_t b = {err, sim->scene.path, "colloid_pairs", 0};
+    json_t *o = json_object();
+    pl_json_real(&b, o, "sigma_cc", d->sigma_cc);
+    pl_json_str(&b, o, "sigma_rule", d->rule == PL_SIGMA_PL ? "pl" : "fixed");
+    pl_json_real(&b, o, "d_match", d->d_match);
+    pl_json_real(&b, o, "phi_cc_at_d_match", d->phi_match);
+    pl_json_real(&b, o, "depletion_at_sigma_cc", d->phi_sigma);
+    pl_json_set(&b, o, "depletion_comp", json_boolean(d->table_n));
+    pl_json_set(&b, doc, "colloid_pairs", o);
+    return b.failed ? err->code : 0;
+}
+
+const pl_module_t pl_colloid_module = {
+    .name = "colloids",
+    .create = colloid_create,
+    .destroy = colloid_destroy,
+    .add_stages = colloid_stages,
+    .thermo_columns = colloid_columns,
+    .summary = colloid_summary,
+};

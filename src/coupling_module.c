@@ -1,0 +1,95 @@
+/* The colloid-solvent coupling module (peloid/module.h): creates the
+ * coupling the scene asks for (Hecht's I and II, PL's potential coupling,
+ * pinned colloids, drift removal), adds its stages at their slots around
+ * the fluid's, and its thermo columns (coupling I event counters, the drag
+ * on pinned colloids).  Hecht Secs. IV-V, VIII.A; PL Secs. III, V. */
+#include "peloid/colloid.h"
+#include "peloid/coupling.h"
+#include "peloid/module.h"
+
+static int coupling_create(pl_sim_t *sim, pl_err_t *err)
+{
+    const pl_scene_t *sc = &sim->scene;
+    if (!sim->colloids || sim->fluid.n == 0 ||
+        (sc->coupling.method == PL_COUPLE_NONE && sc->coupling.drift_interval <= 0))
+        return 0;
+    return pl_coupling_create(sim, &sim->coupling, err);
+}
+
+static void coupling_destroy(pl_sim_t *sim)
+{
+    pl_coupling_free(sim->coupling);
+    sim->coupling = NULL;
+}
+
+static void add(pl_sim_t *sim, const char *name, pl_stage_fn fn, long long interval, long long except,
+                pl_stage_slot_t slot)
+{
+    pl_stage_t s = {.name = name, .fn = fn, .interval = interval, .except = except, .slot = slot};
+    pl_sim_add_stage(sim, &s, NULL);
+}
+
+static void coupling_stages(pl_sim_t *sim)
+{
+    const pl_scene_t *sc = &sim->scene;
+    if (!sim->coupling) return;
+    const int m = sim->coupling->method;
+    if (m == PL_COUPLE_POTENTIAL) {
+        add(sim, "potential-select", pl_coupling_stage_select, 1, 0, PL_SLOT_PRE_STREAM);
+        add(sim, "potential-md", pl_coupling_stage_potential_md, 1, 0, PL_SLOT_POST_STREAM);
+    }
+    if (m == PL_COUPLE_HECHT1) add(sim, "coupling1-reflect", pl_coupling_stage_reflect, 1, 0, PL_SLOT_POST_STREAM);
+    if (m == PL_COUPLE_HECHT2) {
+        add(sim, "coupling2-save", pl_coupling_stage_save, 1, 0, PL_SLOT_PRE_COLLIDE);
+        if (sc->thermostat.type == PL_THERMO_HEYES) { /* the variant of the fluid's collision */
+            const long long k = sc->thermostat.interval;
+            if (k > 1) add(sim, "coupling2-collide", pl_coupling_stage_collide, 1, k, PL_SLOT_POST_COLLIDE);
+            add(sim, "coupling2-collide+heyes", pl_coupling_stage_collide_heyes, k, 0, PL_SLOT_POST_COLLIDE);
+        } else {
+            add(sim, "coupling2-collide", pl_coupling_stage_collide, 1, 0, PL_SLOT_POST_COLLIDE);
+        }
+    }
+    const double *fv = sc->coupling.flow_velocity;
+    if (sim->coupling->pinned && (fv[0] != 0.0 || fv[1] != 0.0 || fv[2] != 0.0))
+        add(sim, "flow-hold", pl_coupling_stage_flow, 1, 0, PL_SLOT_CONSTRAIN);
+    /* momentum is not conserved with walls: nothing to remove */
+    if (sc->coupling.drift_interval > 0 && !sim->grid.any_walls)
+        add(sim, "drift-removal", pl_coupling_stage_drift, sc->coupling.drift_interval, 0, PL_SLOT_CONSTRAIN);
+}
+
+/* ---- thermo columns ------------------------------------------------------ */
+static long long v_events(const pl_thermo_sample_t *s, int trunc)
+{
+    const pl_coupling_t *cp = s->sim->coupling;
+    return (long long)(trunc ? cp->truncations : cp->events);
+}
+static double v_drag(const pl_thermo_sample_t *s, int d) /* mean force per pinned colloid so far */
+{
+    const pl_coupling_t *cp = s->sim->coupling;
+    double k = cp->pinned_time > 0 ? 1.0 / (cp->pinned_time * (double)s->sim->colloids->n) : 0.0;
+    return cp->impulse[d] * k;
+}
+static const pl_thermo_column_t reflect_cols[] = { /* coupling I (Hecht Sec. IV) */
+    {.name = "cpl_events", .unit = "1", .format = PL_THERMO_INT, .ivalue = v_events, .arg = 0},
+    {.name = "cpl_truncations", .unit = "1", .format = PL_THERMO_INT, .ivalue = v_events, .arg = 1},
+};
+static const pl_thermo_column_t pinned_cols[] = {
+    {.name = "cpl_drag_x", .unit = "kT/a0", .value = v_drag, .arg = 0},
+    {.name = "cpl_drag_y", .unit = "kT/a0", .value = v_drag, .arg = 1},
+    {.name = "cpl_drag_z", .unit = "kT/a0", .value = v_drag, .arg = 2},
+};
+
+static void coupling_columns(const pl_sim_t *sim, pl_thermo_table_t *t)
+{
+    if (!sim->coupling) return;
+    if (sim->coupling->method == PL_COUPLE_HECHT1) pl_thermo_add(t, reflect_cols, 2);
+    if (sim->coupling->pinned) pl_thermo_add(t, pinned_cols, 3);
+}
+
+const pl_module_t pl_coupling_module = {
+    .name = "coupling",
+    .create = coupling_create,
+    .destroy = coupling_destroy,
+    .add_stages = coupling_stages,
+    .thermo_columns = coupling_columns,
+};

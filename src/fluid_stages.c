@@ -1,0 +1,282 @@
+/* The SRD fluid module (peloid/module.h): its stages (streaming with
+ * binning, counting sort, collision with or without the Heyes thermostat,
+ * the rescaling thermostat, the fluid guard, field sampling, the guard's
+ * scan before an output) and its thermo columns (temperature, momentum,
+ * kinetic energy, tracked MSD, wall stresses; for physical scenes time in s
+ * and the temperature in K).  PL Eqs. 3, 13, A1-A2; Hecht Eqs. 12, 33. */
+#include <math.h>
+#include <string.h>
+
+#include "peloid/coupling.h"
+#include "peloid/mapping.h"
+#include "peloid/module.h"
+
+/* ---- stages ------------------------------------------------------------ */
+
+void pl_sim_stream_params(const pl_sim_t *sim, pl_stream_params_t *p)
+{
+    const pl_scene_t *sc = &sim->scene;
+    memset(p, 0, sizeof *p);
+    p->dt = sc->srd.dt;
+    for (int d = 0; d < 3; ++d) /* + Hecht Sec. VIII.A (iii) compensation */
+        p->accel[d] = sc->fluid.body_force[d] + (sim->coupling ? sim->coupling->fluid_accel[d] : 0.0);
+    memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
+}
+
+static int stage_stream(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    (void)err;
+    const pl_scene_t *sc = &sim->scene;
+    sim->fluid_sorted = 0;
+    pl_grid_draw_shift(&sim->grid, (uint64_t)sc->run.seed, (uint64_t)sim->step, sc->srd.grid_shift);
+    pl_stream_params_t p;
+    pl_sim_stream_params(sim, &p);
+    p.wall_acc = sim->wall_acc; /* NULL without walls */
+    pl_srd_stream_bin(&sim->fluid, &sim->grid, &p, sim->hist, sim->nthreads);
+    if (sim->wall_acc) { /* integer sums: the same for any thread count */
+        int64_t acc[PL_WALL_ACC_N] = {0};
+        for (int t = 0; t < sim->nthreads; ++t)
+            for (int k = 0; k < PL_WALL_ACC_N; ++k) {
+                const int64_t a = sim->wall_acc[(size_t)t * PL_WALL_ACC_STRIDE + (size_t)k];
+                if (acc[k] == PL_WALL_ACC_OVERFLOW) continue;
+                if (a == PL_WALL_ACC_OVERFLOW || __builtin_add_overflow(acc[k], a, &acc[k]))
+                    acc[k] = PL_WALL_ACC_OVERFLOW;
+            }
+        pl_sim_wall_add(sim, acc);
+    }
+    return 0;
+}
+
+/* pl_srd_stream_count + pl_srd_stream_sort (drift inside the scatter) leave
+ * the same state with one pass less over the particle arrays (192 against
+ * 248 B per particle), but on the 2-core development machine, where these
+ * kernels are latency bound, it measured slower at 1 thread and equal at 2
+ * (bench/RESULTS.md); bench_srd times both pipelines. */
+static int stage_sort(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    (void)err;
+    pl_srd_sort(&sim->fluid, sim->hist, sim->cell_start, sim->grid.ncells, sim->nthreads);
+    sim->fluid_sorted = 1;
+    return 0;
+}
+
+/* The collision's parameters, fixed for the run: computed once when the
+ * plan is built (only the step changes). */
+static void collide_params(const pl_sim_t *sim, pl_collide_params_t *p)
+{
+    const pl_scene_t *sc = &sim->scene;
+    memset(p, 0, sizeof *p);
+    p->rule = sc->srd.rule;
+    p->cos_a = cos(sc->srd.alpha_deg * PL_PI / 180.0);
+    p->sin_a = sin(sc->srd.alpha_deg * PL_PI / 180.0);
+    p->seed = (uint64_t)sc->run.seed;
+    p->kT_target = sc->thermostat.temperature;
+    p->heyes_eps = sc->thermostat.heyes_epsilon;
+    double kT_wall;
+    p->wall_ghosts = pl_sim_wall_ghosts(sim, &p->ghost_density, &kT_wall);
+    p->kT_wall = kT_wall;
+    memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
+    p->wall_dp = p->wall_ghosts ? sim->wall_dp : NULL;
+}
+
+/* PL Eqs. A1-A2 and the virtual particles' push, summed in block order
+ * (deterministic) */
+static void collide_sums(pl_sim_t *sim, const pl_collide_params_t *p)
+{
+    size_t nb = (sim->grid.ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
+    for (size_t b = 0; p->wall_dp && b < nb; ++b) pl_sim_wall_add_momentum(sim, p->wall_dp + PL_WALL_ACC_N * b);
+    double s2 = 0.0, dof = 0.0;
+    for (size_t b = 0; b < nb; ++b) {
+        s2 += sim->block_sum[2 * b];
+        dof += sim->block_sum[2 * b + 1];
+    }
+    sim->last_kT_meas = dof > 0 ? s2 / dof : 0.0;
+}
+
+static int stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    (void)err;
+    sim->collide.step = (uint64_t)sim->step;
+    pl_srd_collide(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum);
+    collide_sums(sim, &sim->collide);
+    return 0;
+}
+
+/* The collision with the Heyes thermostat (Hecht Sec. VIII.B): the plan's
+ * variant on multiples of thermostat.interval. */
+static int stage_collide_heyes(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    (void)err;
+    sim->collide.step = (uint64_t)sim->step;
+    pl_srd_collide_heyes(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum);
+    collide_sums(sim, &sim->collide);
+    return 0;
+}
+
+static int stage_rescale(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    (void)err;
+    if (sim->last_kT_meas <= 0.0) return 0;
+    double factor = sqrt(sim->scene.thermostat.temperature / sim->last_kT_meas); /* PL App. A */
+    pl_srd_rescale(&sim->fluid, sim->cell_start, sim->grid.ncells, factor);
+    sim->last_kT_meas = sim->scene.thermostat.temperature;
+    return 0;
+}
+
+static int stage_fields(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    (void)err;
+    if (sim->step < sim->scene.output.fields_start) return 0;
+    pl_srd_fields_accumulate(&sim->fluid, sim->grid.L, sim->field_acc);
+    sim->field_samples++;
+    return 0;
+}
+
+/* After-step stage: before any output is written, the fluid guard's
+ * particle scan on the state it writes (the fluid-guard stage scanned this
+ * state already on multiples of its scan interval). */
+static int stage_output_guard(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    if (sim->step % PL_FLUID_GUARD_SCAN_INTERVAL == 0) return 0;
+    for (int k = 0; k < sim->nstages; ++k) {
+        const pl_stage_t *s = &sim->stages[k];
+        if (s->phase == PL_PHASE_AFTER && s->writes && pl_sim_stage_due(sim, s, sim->step))
+            return pl_fluid_guard_check(sim, sim->step, 1, err);
+    }
+    return 0;
+}
+
+/* The fluid's stages, each at its slot; none without fluid particles. */
+static void fluid_stages(pl_sim_t *sim)
+{
+    const pl_scene_t *sc = &sim->scene;
+    if (sim->fluid.n == 0) return;
+    pl_stage_t og = {.name = "output-guard", .fn = stage_output_guard, .phase = PL_PHASE_AFTER,
+                     .slot = PL_SLOT_OUTPUT_GUARD};
+    pl_stage_t stream = {.name = "stream+bin", .fn = stage_stream, .slot = PL_SLOT_STREAM};
+    pl_stage_t sort = {.name = "sort", .fn = stage_sort, .slot = PL_SLOT_SORT};
+    pl_sim_add_stage(sim, &og, NULL);
+    pl_sim_add_stage(sim, &stream, NULL);
+    pl_sim_add_stage(sim, &sort, NULL);
+    collide_params(sim, &sim->collide);
+    if (sc->thermostat.type == PL_THERMO_HEYES) { /* one of the two variants each step */
+        const long long k = sc->thermostat.interval;
+        pl_stage_t plain = {.name = "collide", .fn = stage_collide, .except = k, .slot = PL_SLOT_COLLIDE};
+        pl_stage_t heyes = {.name = "collide+heyes", .fn = stage_collide_heyes, .interval = k,
+                            .slot = PL_SLOT_COLLIDE};
+        if (k > 1) pl_sim_add_stage(sim, &plain, NULL);
+        pl_sim_add_stage(sim, &heyes, NULL);
+    } else {
+        pl_stage_t plain = {.name = "collide", .fn = stage_collide, .slot = PL_SLOT_COLLIDE};
+        pl_sim_add_stage(sim, &plain, NULL);
+    }
+    if (sc->thermostat.type == PL_THERMO_RESCALE) {
+        pl_stage_t r = {.name = "thermostat-rescale", .fn = stage_rescale, .interval = sc->thermostat.interval,
+                        .slot = PL_SLOT_THERMOSTAT};
+        pl_sim_add_stage(sim, &r, NULL);
+    }
+    /* last before anything samples or moves the fluid again: nothing
+     * non-finite reaches an output or the next stream */
+    pl_stage_t g = {.name = "fluid-guard", .fn = pl_fluid_guard_stage, .interval = PL_FLUID_GUARD_INTERVAL,
+                    .slot = PL_SLOT_GUARD};
+    pl_sim_add_stage(sim, &g, NULL);
+    if (sc->output.fields_interval > 0) {
+        pl_stage_t f = {.name = "fields", .fn = stage_fields, .interval = sc->output.fields_interval,
+                        .slot = PL_SLOT_SAMPLE};
+        pl_sim_add_stage(sim, &f, NULL);
+    }
+}
+
+/* ---- thermo columns ------------------------------------------------------ */
+
+static double v_time(const pl_thermo_sample_t *s, int a)
+{
+    (void)a;
+    return (double)s->sim->step * s->sim->scene.srd.dt;
+}
+static double v_kT(const pl_thermo_sample_t *s, int a)
+{
+    (void)a;
+    return s->kT;
+}
+static double v_kT_cell(const pl_thermo_sample_t *s, int a)
+{
+    (void)a;
+    return s->sim->last_kT_meas;
+}
+static double v_momentum(const pl_thermo_sample_t *s, int d) { return s->fluid.momentum[d]; }
+static double v_kinetic(const pl_thermo_sample_t *s, int a)
+{
+    (void)a;
+    return s->fluid.kinetic;
+}
+static double v_msd(const pl_thermo_sample_t *s, int a)
+{
+    (void)a;
+    return s->fluid.msd;
+}
+/* physical units (Hecht Sec. VII): kT = 1 is the model temperature */
+static double v_time_s(const pl_thermo_sample_t *s, int a)
+{
+    return v_time(s, a) * s->sim->scene.mapping.map.t0;
+}
+static double v_temperature_K(const pl_thermo_sample_t *s, int a)
+{
+    (void)a;
+    return s->kT * s->sim->scene.mapping.map.kT_model / PL_KB;
+}
+/* arg = 3 wall + d: PL Eq. 13 stress from each wall's momentum, mean since step 0 */
+static double v_wall_stress(const pl_thermo_sample_t *s, int a) { return pl_sim_wall_stress(s->sim, a / 3, a % 3); }
+
+static const pl_thermo_column_t mapped_cols[] = {
+    {.name = "time_s", .unit = "s", .value = v_time_s},
+    {.name = "temperature_K", .unit = "K", .value = v_temperature_K},
+};
+static const pl_thermo_column_t fluid_cols[] = {
+    {.name = "temperature", .unit = "kT", .value = v_kT},
+    {.name = "kT_cell", .unit = "kT", .value = v_kT_cell}, /* PL Eq. A1, last collision */
+    {.name = "px", .unit = "m_f a0/t0", .value = v_momentum, .arg = 0},
+    {.name = "py", .unit = "m_f a0/t0", .value = v_momentum, .arg = 1},
+    {.name = "pz", .unit = "m_f a0/t0", .value = v_momentum, .arg = 2},
+    {.name = "kinetic_energy", .unit = "kT", .value = v_kinetic},
+};
+static const pl_thermo_column_t tracked_cols[] = {
+    {.name = "msd", .unit = "a0^2", .value = v_msd},
+};
+static const pl_thermo_column_t wall_cols[] = {
+    {.name = "sxz_bottom", .unit = "kT/a0^3", .value = v_wall_stress, .arg = 0},
+    {.name = "sxz_top", .unit = "kT/a0^3", .value = v_wall_stress, .arg = 3},
+    {.name = "syz_bottom", .unit = "kT/a0^3", .value = v_wall_stress, .arg = 1},
+    {.name = "syz_top", .unit = "kT/a0^3", .value = v_wall_stress, .arg = 4},
+};
+static const pl_thermo_column_t side_wall_cols[] = { /* force per area on the x/y walls */
+    {.name = "s_side_x", .unit = "kT/a0^3", .value = v_wall_stress, .arg = 6},
+    {.name = "s_side_y", .unit = "kT/a0^3", .value = v_wall_stress, .arg = 7},
+    {.name = "s_side_z", .unit = "kT/a0^3", .value = v_wall_stress, .arg = 8},
+};
+
+#define NCOL(a) ((int)(sizeof(a) / sizeof(a[0])))
+
+static void fluid_columns(const pl_sim_t *sim, pl_thermo_table_t *t)
+{
+    const pl_scene_t *sc = &sim->scene;
+    if (sc->mapping.enabled) pl_thermo_add(t, mapped_cols, NCOL(mapped_cols));
+    pl_thermo_add(t, fluid_cols, NCOL(fluid_cols));
+    if (sim->fluid.tracked) pl_thermo_add(t, tracked_cols, NCOL(tracked_cols));
+    if (sc->box.walls_z == PL_WALLS_NOSLIP && sim->fluid.n > 0) pl_thermo_add(t, wall_cols, NCOL(wall_cols));
+    if (sc->box.walls_xy == PL_WALLS_NOSLIP && sim->fluid.n > 0)
+        pl_thermo_add(t, side_wall_cols, NCOL(side_wall_cols));
+}
+
+const pl_module_t pl_fluid_module = {
+    .name = "fluid",
+    .add_stages = fluid_stages,
+    .thermo_columns = fluid_columns,
+};
