@@ -199,10 +199,10 @@ int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, 
                         meta[0]);
         goto close;
     }
-    /* fluid-only checkpoints written before colloids existed have no count */
+    /* format 2 always writes the count */
     long long ncol = 0, nscene = sim->colloids ? (long long)sim->colloids->n : 0;
-    if (H5Aexists(f, "colloid_count") > 0 && pl_ckpt_attr_i64(f, "colloid_count", &ncol, 1, 0)) {
-        rc = pl_err_set(err, PL_ERR_INPUT, "%s: unreadable attribute colloid_count", path);
+    if (pl_ckpt_attr_i64(f, "colloid_count", &ncol, 1, 0)) {
+        rc = pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint has no readable attribute colloid_count", path);
         goto close;
     }
     if (ncol != nscene) {
@@ -211,7 +211,8 @@ int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, 
                         "has %lld (colloids.count)", path, ncol, nscene);
         goto close;
     }
-    /* checkpoints without the attribute come from scenes without x/y walls */
+    /* format 2 writes walls_xy only for scenes with x/y walls (so that the
+     * other checkpoints stayed byte-identical when x/y walls came) */
     long long walls_xy = PL_WALLS_NONE;
     if (H5Aexists(f, "walls_xy") > 0 && pl_ckpt_attr_i64(f, "walls_xy", &walls_xy, 1, 0)) {
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: unreadable attribute walls_xy", path);

@@ -160,6 +160,10 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
     b.prefix = "stage_seconds";
     for (int k = 0; k < sim->nstages; ++k) pl_json_real(&b, st, sim->stages[k].name, sim->stages[k].seconds);
     pl_json_set(&b, doc, "stage_seconds", st);
+    json_t *units = json_object(); /* thermo.tsv's columns and their units, from the same table */
+    b.prefix = "thermo_units";
+    for (int k = 0; k < w->columns.n; ++k) pl_json_str(&b, units, w->columns.col[k].name, w->columns.col[k].unit);
+    pl_json_set(&b, doc, "thermo_units", units);
     if (b.failed) return err->code;
     FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
     if (!f) return PL_ERR_IO;
