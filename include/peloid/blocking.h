@@ -22,10 +22,12 @@
  * neighbouring blocks, ~tau/B, is smaller than the statistical error of SE_k,
  * ~1/sqrt(n_k).  The second condition (ours) keeps the rule off the top
  * levels, whose few blocks of a run shorter than its correlation time are
- * nearly equal and fake a small SE; 32 blocks know SE_k to 13 %.  When no
+ * nearly equal and fake a small SE; 16 blocks know SE_k to 18 %.  (An
+ * unconverged level has (SE_k/SE_0)^2 ~ 2^k, which fails the first condition
+ * for any block shorter than 2N.)  When no
  * level satisfies both (a run shorter than some tens of correlation times)
  * the result carries plateau = 0 and the SE of the highest level with at
- * least 32 blocks (level 0 if none), which is then a lower bound.
+ * least 16 blocks (level 0 if none), which is then a lower bound.
  *
  * Derived numbers: statistical inefficiency s = N SE^2 / s_0^2 (1 for
  * uncorrelated data, 2 tau_int in general), independent samples N / s.
@@ -43,7 +45,7 @@
 #include <stdint.h>
 
 #define PL_BLOCKING_LEVELS 64     /* 2^64 samples: never the limit */
-#define PL_BLOCKING_MIN_BLOCKS 32 /* fewest blocks of a plateau level */
+#define PL_BLOCKING_MIN_BLOCKS 16 /* fewest blocks of a plateau level */
 
 typedef struct {
     uint64_t n;     /* completed blocks of this level */

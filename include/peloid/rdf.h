@@ -1,0 +1,76 @@
+/* Radial distribution function g(r) of the colloid centres (Hecht Sec. IX.C,
+ * Figs. 5-7 and 10-13; PL Sec. IV.B, Fig. 4).
+ *
+ * Pairs are counted at their minimum-image distance (exact for r < L/2 on
+ * every periodic axis, which create enforces) into nbins bins of width
+ * rmax / nbins.  A sample of n particles is normalised by what an ideal gas
+ * of the same n in the same region would give:
+ *
+ *   g_b = H_b / ( n (n-1)/2  P_b ),   P_b = probability that two independent
+ *                                      uniform points lie r in [r_b, r_b+1) apart
+ *
+ * so that g = 1 exactly in expectation for uncorrelated points.
+ *   periodic box V = Lx Ly Lz:  P_b = (4 pi / 3) (r_{b+1}^3 - r_b^3) / V.
+ *   walls in z (x, y periodic, centres confined to the slab [zlo, zhi] of
+ *   thickness h): a centre at height z sees the fraction
+ *   f(r, z) = |[z - r, z + r] ∩ [zlo, zhi]| / (2 r) of its shell inside the
+ *   slab (Archimedes: a sphere's area is uniform in its axial coordinate);
+ *   averaged over z uniform in the slab, F(r) = 1 - r/(2h) for r <= h and
+ *   h/(2r) for r >= h.  Then P_b = [G(r_{b+1}) - G(r_b)] / (Lx Ly h) with
+ *   G' = 4 pi r^2 F:  G(r) = 4 pi (r^3/3 - r^4/(8h))            (r <= h),
+ *                    G(r) = 5 pi h^3 / 6 + pi h (r^2 - h^2)      (r >= h).
+ *   For colloids of radius a between walls at z = 0 and Lz the slab is the
+ *   region the centres can reach, [a, Lz - a].
+ *
+ * Each sample's g_b goes into a blocking accumulator (peloid/blocking.h), so
+ * the result is mean ± SE over samples with the correlation between
+ * successive samples accounted for.
+ */
+#ifndef PELOID_RDF_H
+#define PELOID_RDF_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "peloid/error.h"
+
+typedef struct {
+    double box[3];   /* Lx, Ly, Lz; x and y are periodic */
+    int z_walls;     /* 0: z periodic; 1: walls, centres in [zlo, zhi] */
+    double zlo, zhi;
+    double rmax;     /* <= L/2 on every periodic axis */
+    size_t nbins;
+} pl_rdf_params_t;
+
+typedef struct pl_rdf pl_rdf_t;
+
+int pl_rdf_create(const pl_rdf_params_t *par, int nthreads, pl_rdf_t **out, pl_err_t *err);
+void pl_rdf_free(pl_rdf_t *r);
+
+/* One configuration of n >= 2 particles (counted on the nthreads given at
+ * create; bitwise the same for any). */
+void pl_rdf_sample(pl_rdf_t *r, size_t n, const double *x, const double *y, const double *z);
+
+/* Bin centres, mean g and its SE (blocking over samples); plateau[b] = 1
+ * when the blocking rule found a plateau (any pointer may be NULL). */
+void pl_rdf_result(const pl_rdf_t *r, double *rmid, double *g, double *se, int *plateau);
+/* Pair counts summed over all samples (nbins values). */
+const uint64_t *pl_rdf_counts(const pl_rdf_t *r);
+uint64_t pl_rdf_samples(const pl_rdf_t *r);
+/* P_b of the header: the ideal-gas probability of bin [r1, r2). */
+double pl_rdf_ideal_fraction(const pl_rdf_params_t *par, double r1, double r2);
+
+/* The pair-count kernel (kernels/rdf_count.c): adds to hist[nbins] the
+ * unordered pairs with minimum-image distance r < rmax, bin floor(r / dr).
+ * scratch holds nthreads x nbins counters. */
+typedef struct {
+    double box[3];
+    int periodic_z;
+    double rmax;
+    size_t nbins;
+} pl_rdf_geom_t;
+
+void pl_rdf_count(const pl_rdf_geom_t *g, size_t n, const double *x, const double *y,
+                  const double *z, uint64_t *hist, uint64_t *scratch, int nthreads);
+
+#endif
