@@ -214,3 +214,46 @@ int pl_mtau_slope(const pl_mtau_t *c, double tmin, double tmax, double slope[PL_
     }
     return PL_OK;
 }
+
+int pl_mtau_integral(const pl_mtau_t *c, double tmax, double integral[PL_MTAU_COLS],
+                     double se[PL_MTAU_COLS], pl_err_t *err)
+{
+    const size_t n = c->par.n, nl = pl_mtau_nlags(c);
+    size_t nk = 0;
+    for (size_t k = 0; k < nl; ++k) {
+        int l, j;
+        slot_of(c, k, &l, &j);
+        double t = (double)j * pow((double)c->par.m, (double)l) * c->par.dt;
+        if (t <= tmax && c->count[(size_t)l * (size_t)c->par.p + (size_t)j]) nk++;
+    }
+    if (nk < 2)
+        return pl_err_set(err, PL_ERR_INPUT, "mtau integral: %zu lags with data in [0, %g], need 2", nk,
+                          tmax);
+    for (int col = 0; col < PL_MTAU_COLS; ++col) {
+        double s = 0.0, s2 = 0.0;
+        for (int pass = 0; pass < 2; ++pass) {
+            double mean = s / (double)n;
+            for (size_t i = 0; i < n; ++i) {
+                double q = 0.0, tprev = 0.0, cprev = 0.0;
+                int have = 0;
+                for (size_t k = 0; k < nl; ++k) {
+                    int l, j;
+                    slot_of(c, k, &l, &j);
+                    double t = (double)j * pow((double)c->par.m, (double)l) * c->par.dt;
+                    uint64_t cnt = c->count[(size_t)l * (size_t)c->par.p + (size_t)j];
+                    if (t > tmax || !cnt) continue;
+                    double v = particle_value(c, i, l, j, col, (double)cnt);
+                    if (have) q += 0.5 * (v + cprev) * (t - tprev);
+                    tprev = t;
+                    cprev = v;
+                    have = 1;
+                }
+                if (pass == 0) s += q;
+                else s2 += (q - mean) * (q - mean);
+            }
+        }
+        integral[col] = s / (double)n;
+        se[col] = n > 1 ? sqrt(s2 / (double)(n - 1) / (double)n) : NAN;
+    }
+    return PL_OK;
+}

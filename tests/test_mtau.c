@@ -280,6 +280,20 @@ Test(mtau, ar1_vacf)
             cr_assert_lt(fabs(x - expect), 4.0 * s + 1e-12, "avg %d lag %g: C = %g, expected %g, SE %g",
                          average, L, x, expect, s);
         }
+        if (!average) {
+            /* Green-Kubo (Hecht Eq. 35 with dt = 1): D = 1/2 + sum_j phi^j =
+             * (1 + phi) / (2 (1 - phi)) = 9.5 per axis; truncated at t = 100
+             * (tail phi^100 / (1 - phi) = 3e-4; the noise of the integral
+             * grows with its length) and the trapezoid on the coarse grid (spacing
+             * h = 2^l, relative error ~ (h ln phi)^2 / 12 on the tail it
+             * covers: ~0.01 in all) against 4 SE. */
+            double I[PL_MTAU_COLS], Ise[PL_MTAU_COLS];
+            cr_assert_eq(pl_mtau_integral(c, 100.0, I, Ise, &err), 0, "%s", err.msg);
+            double Dgk = I[3] / 3.0, Dse = Ise[3] / 3.0, Dexact = (1.0 + phi) / (2.0 * (1.0 - phi));
+            cr_log_info("mtau AR(1) Green-Kubo: D = %.4f +- %.4f (exact %.4f)", Dgk, Dse, Dexact);
+            cr_assert_lt(fabs(Dgk - Dexact), 4.0 * Dse + 0.01);
+            cr_assert_neq(pl_mtau_integral(c, -1.0, I, Ise, &err), 0);
+        }
         free(lag), free(val), free(se);
         for (int d = 0; d < 3; ++d) free(v[d]);
         gsl_rng_free(r);

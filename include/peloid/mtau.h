@@ -79,6 +79,14 @@ void pl_mtau_result(const pl_mtau_t *c, double *lag, uint64_t *origins, double *
 int pl_mtau_slope(const pl_mtau_t *c, double tmin, double tmax, double slope[PL_MTAU_COLS],
                   double se[PL_MTAU_COLS], pl_err_t *err);
 
+/* Trapezoid integral in time of each column over the lags 0..tmax (those
+ * with an origin), per particle, then mean and SE over particles.  On the
+ * uniform lags of level 0 this is Hecht Eq. 35, D_x = dt (g(0)/2 + sum_j
+ * g(j)), truncated at tmax (Green-Kubo, PL Eq. 58 D(t)); the coarse levels
+ * continue it on their wider grid.  Fails when fewer than two lags qualify. */
+int pl_mtau_integral(const pl_mtau_t *c, double tmax, double integral[PL_MTAU_COLS],
+                     double se[PL_MTAU_COLS], pl_err_t *err);
+
 /* The per-particle update (kernels/mtau_push.c), for the owning object. */
 typedef struct {
     int nrecv;          /* levels 0..nrecv-1 receive this sample */
