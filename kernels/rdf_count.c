@@ -14,16 +14,21 @@ static inline __attribute__((always_inline)) void count_rows(const pl_rdf_geom_t
                                                              const double *restrict y,
                                                              const double *restrict z,
                                                              uint64_t *restrict scratch,
-                                                             const int periodic_z)
+                                                             const int periodic_z, const int classes)
 {
     const double Lx = g->box[0], Ly = g->box[1], Lz = g->box[2];
     const double ix = 1.0 / Lx, iy = 1.0 / Ly, iz = 1.0 / Lz;
     const double rmax2 = g->rmax * g->rmax, inv_dr = (double)g->nbins / g->rmax;
     const size_t nb = g->nbins;
+    const int32_t *cls = g->cls;
+    const int ca = g->ca, cb = g->cb;
 #pragma omp for schedule(dynamic, 8)
     for (size_t i = 0; i < n; ++i) {
         uint64_t *h = scratch + (size_t)omp_get_thread_num() * nb;
+        const int ci = classes ? cls[i] : 0;
+        if (classes && ci != ca && ci != cb) continue;
         for (size_t j = i + 1; j < n; ++j) {
+            if (classes && !((ci == ca && cls[j] == cb) || (ci == cb && cls[j] == ca))) continue;
             double dx = x[j] - x[i], dy = y[j] - y[i], dz = z[j] - z[i];
             dx -= Lx * nearbyint(dx * ix);
             dy -= Ly * nearbyint(dy * iy);
@@ -45,8 +50,13 @@ void pl_rdf_count(const pl_rdf_geom_t *g, size_t n, const double *x, const doubl
     for (size_t b = 0; b < (size_t)nthreads * nb; ++b) scratch[b] = 0;
 #pragma omp parallel num_threads(nthreads)
     {
-        if (g->periodic_z) count_rows(g, n, x, y, z, scratch, 1);
-        else count_rows(g, n, x, y, z, scratch, 0);
+        if (g->cls) {
+            if (g->periodic_z) count_rows(g, n, x, y, z, scratch, 1, 1);
+            else count_rows(g, n, x, y, z, scratch, 0, 1);
+        } else {
+            if (g->periodic_z) count_rows(g, n, x, y, z, scratch, 1, 0);
+            else count_rows(g, n, x, y, z, scratch, 0, 0);
+        }
     }
     for (int t = 0; t < nthreads; ++t)
         for (size_t b = 0; b < nb; ++b) hist[b] += scratch[(size_t)t * nb + b];

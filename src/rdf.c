@@ -49,6 +49,9 @@ int pl_rdf_create(const pl_rdf_params_t *par, int nthreads, pl_rdf_t **out, pl_e
                               "rdf: rmax = %g exceeds half the periodic box length %g (axis %d)",
                               par->rmax, par->box[d], d);
     }
+    if ((par->class_a < 0) != (par->class_b < 0))
+        return pl_err_set(err, PL_ERR_INPUT, "rdf: classes (%d, %d): both -1 or both >= 0",
+                          par->class_a, par->class_b);
     if (par->z_walls && !(par->zhi > par->zlo))
         return pl_err_set(err, PL_ERR_INPUT, "rdf: slab [%g, %g] is empty", par->zlo, par->zhi);
     if (nthreads < 1) nthreads = 1;
@@ -84,14 +87,26 @@ void pl_rdf_free(pl_rdf_t *r)
     free(r);
 }
 
-void pl_rdf_sample(pl_rdf_t *r, size_t n, const double *x, const double *y, const double *z)
+void pl_rdf_sample(pl_rdf_t *r, size_t n, const double *x, const double *y, const double *z,
+                   const int32_t *cls)
 {
     const size_t nb = r->par.nbins;
+    const int ca = r->par.class_a, cb = r->par.class_b, classes = ca >= 0;
+    double npairs = 0.5 * (double)n * ((double)n - 1.0);
+    if (classes) {
+        size_t na = 0, nbb = 0;
+        for (size_t i = 0; i < n; ++i) {
+            na += cls[i] == ca;
+            nbb += cls[i] == cb;
+        }
+        npairs = ca == cb ? 0.5 * (double)na * ((double)na - 1.0) : (double)na * (double)nbb;
+    }
+    if (!(npairs > 0.0)) return;
     pl_rdf_geom_t g = {.box = {r->par.box[0], r->par.box[1], r->par.box[2]},
-                       .periodic_z = !r->par.z_walls, .rmax = r->par.rmax, .nbins = nb};
+                       .periodic_z = !r->par.z_walls, .rmax = r->par.rmax, .nbins = nb,
+                       .cls = classes ? cls : NULL, .ca = ca, .cb = cb};
     for (size_t b = 0; b < nb; ++b) r->hist[b] = 0;
     pl_rdf_count(&g, n, x, y, z, r->hist, r->scratch, r->nthreads);
-    double npairs = 0.5 * (double)n * ((double)n - 1.0);
     for (size_t b = 0; b < nb; ++b) {
         r->total[b] += r->hist[b];
         pl_blocking_add(&r->blk[b], (double)r->hist[b] / (npairs * r->pb[b]));

@@ -23,7 +23,8 @@ static void ideal_gas(int z_walls)
     const size_t n = 300, nb = 40;
     const int nsamp = 1000;
     pl_rdf_params_t par = {.box = {12.0, 12.0, z_walls ? 7.0 : 12.0}, .z_walls = z_walls,
-                           .zlo = 1.0, .zhi = 5.0, .rmax = 6.0, .nbins = nb};
+                           .zlo = 1.0, .zhi = 5.0, .rmax = 6.0, .nbins = nb, .class_a = -1,
+                           .class_b = -1};
     pl_rdf_t *r = NULL;
     pl_err_t err = {0, ""};
     cr_assert_eq(pl_rdf_create(&par, 1, &r, &err), 0, "%s", err.msg);
@@ -37,7 +38,7 @@ static void ideal_gas(int z_walls)
             z[i] = z_walls ? par.zlo + (par.zhi - par.zlo) * gsl_rng_uniform(rng)
                            : par.box[2] * gsl_rng_uniform(rng);
         }
-        pl_rdf_sample(r, n, x, y, z);
+        pl_rdf_sample(r, n, x, y, z, NULL);
     }
     double rm[40], g[40], se[40];
     int pl[40];
@@ -96,11 +97,11 @@ static void lattice_counts(const double *x, const double *y, const double *z, si
                            size_t nb, const double *shell, const int *coord, int nshell)
 {
     for (int th = 1; th <= 2; ++th) {
-        pl_rdf_params_t par = {.box = {L, L, L}, .rmax = rmax, .nbins = nb};
+        pl_rdf_params_t par = {.box = {L, L, L}, .rmax = rmax, .nbins = nb, .class_a = -1, .class_b = -1};
         pl_rdf_t *r = NULL;
         pl_err_t err = {0, ""};
         cr_assert_eq(pl_rdf_create(&par, th, &r, &err), 0, "%s", err.msg);
-        pl_rdf_sample(r, n, x, y, z);
+        pl_rdf_sample(r, n, x, y, z, NULL);
         const uint64_t *h = pl_rdf_counts(r);
         uint64_t *want = calloc(nb, sizeof *want);
         double dr = rmax / (double)nb;
@@ -160,7 +161,7 @@ Test(rdf, fcc_shells)
 
 Test(rdf, bad_params)
 {
-    pl_rdf_params_t par = {.box = {10, 10, 10}, .rmax = 6.0, .nbins = 10};
+    pl_rdf_params_t par = {.box = {10, 10, 10}, .rmax = 6.0, .nbins = 10, .class_a = -1, .class_b = -1};
     pl_rdf_t *r = NULL;
     pl_err_t err = {0, ""};
     cr_assert_eq(pl_rdf_create(&par, 1, &r, &err), PL_ERR_INPUT);
@@ -170,4 +171,58 @@ Test(rdf, bad_params)
     par.zlo = par.zhi = 2.0;
     cr_assert_eq(pl_rdf_create(&par, 1, &r, &err), PL_ERR_INPUT);
     cr_assert_null(r);
+    par.z_walls = 0;
+    par.class_a = 1;
+    cr_assert_eq(pl_rdf_create(&par, 1, &r, &err), PL_ERR_INPUT);
+    cr_assert(strstr(err.msg, "classes"), "%s", err.msg);
+}
+
+/* Partial g_ab on the rock-salt colouring of a simple cubic lattice (class
+ * (i + j + k) mod 2): unlike neighbours at 1, sqrt 3, sqrt 5 (6, 8, 24 of
+ * them), like ones at sqrt 2, 2, sqrt 6, sqrt 8 (12, 6, 24, 12); 1 and 2
+ * threads. */
+Test(rdf, partial_rock_salt)
+{
+    const int c = 6;
+    const size_t n = (size_t)(c * c * c), nb = 291;
+    const double rmax = 2.99, dr = rmax / (double)nb;
+    double *x = malloc(n * sizeof *x), *y = malloc(n * sizeof *y), *z = malloc(n * sizeof *z);
+    int32_t *cls = malloc(n * sizeof *cls);
+    size_t q = 0;
+    for (int i = 0; i < c; ++i)
+        for (int j = 0; j < c; ++j)
+            for (int k = 0; k < c; ++k, ++q) {
+                x[q] = i + 0.5, y[q] = j + 0.5, z[q] = k + 0.5;
+                cls[q] = (i + j + k) % 2;
+            }
+    const double sh_ab[] = {1.0, sqrt(3.0), sqrt(5.0)}, sh_aa[] = {sqrt(2.0), 2.0, sqrt(6.0), sqrt(8.0)};
+    const int co_ab[] = {6, 8, 24}, co_aa[] = {12, 6, 24, 12};
+    for (int th = 1; th <= 2; ++th)
+        for (int kind = 0; kind < 3; ++kind) { /* (0,1), (1,0), (0,0) */
+            pl_rdf_params_t par = {.box = {c, c, c}, .rmax = rmax, .nbins = nb,
+                                   .class_a = kind == 1 ? 1 : 0, .class_b = kind == 0 ? 1 : 0};
+            pl_rdf_t *r = NULL;
+            pl_err_t err = {0, ""};
+            cr_assert_eq(pl_rdf_create(&par, th, &r, &err), 0, "%s", err.msg);
+            pl_rdf_sample(r, n, x, y, z, cls);
+            const uint64_t *h = pl_rdf_counts(r);
+            uint64_t *want = calloc(nb, sizeof *want);
+            const double *sh = kind < 2 ? sh_ab : sh_aa;
+            const int *co = kind < 2 ? co_ab : co_aa, ns = kind < 2 ? 3 : 4;
+            /* n/2 particles of a class; unlike pairs n/2 * co, like n/2 * co / 2 */
+            for (int s = 0; s < ns; ++s)
+                want[(size_t)(sh[s] / dr)] += (uint64_t)(n / 2) * (uint64_t)co[s] / (kind < 2 ? 1 : 2);
+            for (size_t b = 0; b < nb; ++b)
+                cr_assert_eq(h[b], want[b], "kind %d, %d threads, r = %.3f: %llu, want %llu", kind, th,
+                             dr * ((double)b + 0.5), (unsigned long long)h[b], (unsigned long long)want[b]);
+            double g[291];
+            pl_rdf_result(r, NULL, g, NULL, NULL);
+            size_t b1 = (size_t)(sh[0] / dr);
+            double P = pl_rdf_ideal_fraction(&par, dr * (double)b1, dr * (double)(b1 + 1));
+            double npair = kind < 2 ? (double)(n / 2) * (double)(n / 2) : 0.5 * (double)(n / 2) * (double)(n / 2 - 1);
+            cr_assert_float_eq(g[b1], (double)want[b1] / (npair * P), 1e-12 * g[b1]);
+            free(want);
+            pl_rdf_free(r);
+        }
+    free(x), free(y), free(z), free(cls);
 }

@@ -22,6 +22,11 @@
  *   For colloids of radius a between walls at z = 0 and Lz the slab is the
  *   region the centres can reach, [a, Lz - a].
  *
+ * Partial g_ab (size classes): with class_a, class_b >= 0 only pairs of one
+ * particle of class a and one of class b count, normalised by the number of
+ * such pairs, n_a n_b (a != b) or n_a (n_a - 1) / 2 (a = b), in place of
+ * n (n-1)/2; P_b is the same for any two independent uniform points.
+ *
  * Each sample's g_b goes into a blocking accumulator (peloid/blocking.h), so
  * the result is mean ± SE over samples with the correlation between
  * successive samples accounted for.
@@ -40,6 +45,7 @@ typedef struct {
     double zlo, zhi;
     double rmax;     /* <= L/2 on every periodic axis */
     size_t nbins;
+    int class_a, class_b; /* both -1: all pairs; else g_ab, classes from cls */
 } pl_rdf_params_t;
 
 typedef struct pl_rdf pl_rdf_t;
@@ -47,9 +53,11 @@ typedef struct pl_rdf pl_rdf_t;
 int pl_rdf_create(const pl_rdf_params_t *par, int nthreads, pl_rdf_t **out, pl_err_t *err);
 void pl_rdf_free(pl_rdf_t *r);
 
-/* One configuration of n >= 2 particles (counted on the nthreads given at
- * create; bitwise the same for any). */
-void pl_rdf_sample(pl_rdf_t *r, size_t n, const double *x, const double *y, const double *z);
+/* One configuration of n particles, cls[i] the class of particle i (NULL
+ * when all pairs count); counted on the nthreads given at create, bitwise
+ * the same for any.  A sample with no pair of the wanted classes is skipped. */
+void pl_rdf_sample(pl_rdf_t *r, size_t n, const double *x, const double *y, const double *z,
+                   const int32_t *cls);
 
 /* Bin centres, mean g and its SE (blocking over samples); plateau[b] = 1
  * when the blocking rule found a plateau (any pointer may be NULL). */
@@ -68,6 +76,8 @@ typedef struct {
     int periodic_z;
     double rmax;
     size_t nbins;
+    const int32_t *cls; /* NULL: all pairs; else only pairs of classes (ca, cb) */
+    int ca, cb;
 } pl_rdf_geom_t;
 
 void pl_rdf_count(const pl_rdf_geom_t *g, size_t n, const double *x, const double *y,
