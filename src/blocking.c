@@ -10,6 +10,9 @@
 #include <math.h>
 #include <string.h>
 
+_Static_assert(sizeof(pl_blocking_level_t) == 5 * 8 && sizeof(pl_blocking_t) == 16 + 40 * PL_BLOCKING_LEVELS,
+               "pl_blocking_t must have no padding (bytewise checkpoints and comparisons)");
+
 void pl_blocking_init(pl_blocking_t *b)
 {
     memset(b, 0, sizeof *b);

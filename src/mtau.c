@@ -16,9 +16,12 @@ struct pl_mtau {
     pl_mtau_params_t par;
     size_t stride;
     double *state;   /* n x stride, see kernels/mtau_push.c */
-    uint64_t nsamp;
-    uint64_t nrecv[PL_MTAU_MAX_LEVELS];
-    uint64_t *count; /* levels x p: origins of each lag slot */
+    /* the counters, one allocation so that a checkpoint sees one array:
+     * count[levels x p] (origins of each lag slot), nrecv[levels] (values
+     * each level has received), nsamp[1] (samples added) */
+    uint64_t *ctr;
+    size_t nctr;
+    uint64_t *count, *nrecv, *nsamp;
 };
 
 int pl_mtau_levels_for(uint64_t nsamples, int p, int m)
@@ -54,12 +57,17 @@ int pl_mtau_create(const pl_mtau_params_t *par, pl_mtau_t **out, pl_err_t *err)
     c->par = *par;
     c->stride = stride;
     c->state = calloc(par->n * stride, sizeof(double));
-    c->count = calloc((size_t)par->levels * (size_t)par->p, sizeof(uint64_t));
-    if (!c->state || !c->count) {
+    size_t nslot = (size_t)par->levels * (size_t)par->p;
+    c->nctr = nslot + (size_t)par->levels + 1;
+    c->ctr = calloc(c->nctr, sizeof(uint64_t));
+    if (!c->state || !c->ctr) {
         pl_mtau_free(c);
         return pl_err_set(err, PL_ERR_NOMEM, "mtau: out of memory for %zu x %zu values", par->n,
                           stride);
     }
+    c->count = c->ctr;
+    c->nrecv = c->ctr + nslot;
+    c->nsamp = c->nrecv + par->levels;
     *out = c;
     return PL_OK;
 }
@@ -68,14 +76,14 @@ void pl_mtau_free(pl_mtau_t *c)
 {
     if (!c) return;
     free(c->state);
-    free(c->count);
+    free(c->ctr);
     free(c);
 }
 
 void pl_mtau_add(pl_mtau_t *c, const double *x, const double *y, const double *z, int nthreads)
 {
     const pl_mtau_params_t *par = &c->par;
-    const uint64_t t = c->nsamp, m = (uint64_t)par->m;
+    const uint64_t t = *c->nsamp, m = (uint64_t)par->m;
     int nr = 1;
     if (!par->average && t == 0) {
         nr = par->levels;
@@ -100,12 +108,18 @@ void pl_mtau_add(pl_mtau_t *c, const double *x, const double *y, const double *z
         for (int j = pp.jmin[l]; j <= pp.jmax[l]; ++j) c->count[(size_t)l * (size_t)par->p + (size_t)j]++;
         c->nrecv[l]++;
     }
-    c->nsamp++;
+    (*c->nsamp)++;
+}
+
+pl_mtau_state_t pl_mtau_state(pl_mtau_t *c)
+{
+    return (pl_mtau_state_t){.values = c->state, .nvalues = c->par.n * c->stride,
+                             .counters = c->ctr, .ncounters = c->nctr};
 }
 
 uint64_t pl_mtau_samples(const pl_mtau_t *c)
 {
-    return c->nsamp;
+    return *c->nsamp;
 }
 
 size_t pl_mtau_nlags(const pl_mtau_t *c)

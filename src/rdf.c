@@ -15,10 +15,9 @@ struct pl_rdf {
     int nthreads;
     double *pb;          /* nbins: ideal-gas probability of each bin */
     uint64_t *hist;      /* nbins: this sample */
-    uint64_t *total;     /* nbins: all samples */
+    uint64_t *total;     /* nbins + 1: all samples, then the sample count */
     uint64_t *scratch;   /* nthreads x nbins */
     pl_blocking_t *blk;  /* nbins */
-    uint64_t nsamp;
 };
 
 /* G(r) = int_0^r 4 pi s^2 F(s) ds for the slab of thickness h. */
@@ -62,7 +61,7 @@ int pl_rdf_create(const pl_rdf_params_t *par, int nthreads, pl_rdf_t **out, pl_e
     size_t nb = par->nbins;
     r->pb = malloc(nb * sizeof *r->pb);
     r->hist = calloc(nb, sizeof *r->hist);
-    r->total = calloc(nb, sizeof *r->total);
+    r->total = calloc(nb + 1, sizeof *r->total);
     r->scratch = calloc(nb * (size_t)nthreads, sizeof *r->scratch);
     r->blk = calloc(nb, sizeof *r->blk);
     if (!r->pb || !r->hist || !r->total || !r->scratch || !r->blk) {
@@ -111,7 +110,7 @@ void pl_rdf_sample(pl_rdf_t *r, size_t n, const double *x, const double *y, cons
         r->total[b] += r->hist[b];
         pl_blocking_add(&r->blk[b], (double)r->hist[b] / (npairs * r->pb[b]));
     }
-    r->nsamp++;
+    r->total[nb]++;
 }
 
 void pl_rdf_result(const pl_rdf_t *r, double *rmid, double *g, double *se, int *plateau)
@@ -131,7 +130,13 @@ const uint64_t *pl_rdf_counts(const pl_rdf_t *r)
     return r->total;
 }
 
+pl_rdf_state_t pl_rdf_state(pl_rdf_t *r)
+{
+    return (pl_rdf_state_t){.counts = r->total, .ncounts = r->par.nbins + 1, .blocking = r->blk,
+                            .nblocking = r->par.nbins};
+}
+
 uint64_t pl_rdf_samples(const pl_rdf_t *r)
 {
-    return r->nsamp;
+    return r->total[r->par.nbins];
 }

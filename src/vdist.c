@@ -60,6 +60,11 @@ const uint64_t *pl_vdist_counts(const pl_vdist_t *h, int axis)
     return h->count + (size_t)axis * (h->par.nbins + 2);
 }
 
+pl_vdist_state_t pl_vdist_state(pl_vdist_t *h)
+{
+    return (pl_vdist_state_t){.counts = h->count, .ncounts = 4 * (h->par.nbins + 2)};
+}
+
 int pl_vdist_chi2(const pl_vdist_t *h, int axis, double sigma, double *chi2, int *dof, double *p,
                   pl_err_t *err)
 {

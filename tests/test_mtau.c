@@ -301,3 +301,44 @@ Test(mtau, ar1_vacf)
         pl_mtau_free(c);
     }
 }
+
+/* A checkpoint of the state (both arrays copied into a fresh object with the
+ * same parameters) continues bitwise: 2N samples = N + restart + N. */
+Test(mtau, restart_continues_bitwise)
+{
+    const size_t n = 7, T = 500;
+    gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(r, 8);
+    double *s = malloc(T * n * 3 * sizeof *s);
+    for (size_t q = 0; q < T * n * 3; ++q) s[q] = gsl_ran_gaussian(r, 1.0);
+    for (int average = 0; average < 2; ++average) {
+        pl_mtau_t *a = make(n, 8, 2, 7, PL_MTAU_AUTO, average);
+        pl_mtau_t *b = make(n, 8, 2, 7, PL_MTAU_AUTO, average);
+        pl_mtau_t *b2 = make(n, 8, 2, 7, PL_MTAU_AUTO, average);
+        for (size_t t = 0; t < T; ++t) {
+            const double *x = s + t * n * 3;
+            double xs[7], ys[7], zs[7];
+            for (size_t i = 0; i < n; ++i) xs[i] = x[3 * i], ys[i] = x[3 * i + 1], zs[i] = x[3 * i + 2];
+            pl_mtau_add(a, xs, ys, zs, 1);
+            if (t == 333) { /* restart b into b2 at an odd sample */
+                pl_mtau_state_t from = pl_mtau_state(b), to = pl_mtau_state(b2);
+                cr_assert_eq(from.nvalues, to.nvalues);
+                cr_assert_eq(from.ncounters, to.ncounters);
+                memcpy(to.values, from.values, from.nvalues * sizeof(double));
+                memcpy(to.counters, from.counters, from.ncounters * sizeof(uint64_t));
+                pl_mtau_free(b);
+                b = b2;
+                b2 = NULL;
+            }
+            pl_mtau_add(b, xs, ys, zs, 1);
+        }
+        pl_mtau_state_t sa = pl_mtau_state(a), sb = pl_mtau_state(b);
+        cr_assert_eq(memcmp(sa.values, sb.values, sa.nvalues * sizeof(double)), 0);
+        cr_assert_eq(memcmp(sa.counters, sb.counters, sa.ncounters * sizeof(uint64_t)), 0);
+        cr_assert_eq(pl_mtau_samples(b), (uint64_t)T);
+        pl_mtau_free(a);
+        pl_mtau_free(b);
+    }
+    free(s);
+    gsl_rng_free(r);
+}

@@ -226,3 +226,39 @@ Test(rdf, partial_rock_salt)
         }
     free(x), free(y), free(z), free(cls);
 }
+
+/* The state view continues bitwise: 20 samples = 9 + copy into a fresh
+ * object + 11, counts and per-bin blocking alike. */
+Test(rdf, restart_continues_bitwise)
+{
+    const size_t n = 50;
+    pl_rdf_params_t par = {.box = {8, 8, 8}, .rmax = 4.0, .nbins = 16, .class_a = -1, .class_b = -1};
+    pl_rdf_t *a = NULL, *b = NULL, *b2 = NULL;
+    pl_err_t err = {0, ""};
+    cr_assert_eq(pl_rdf_create(&par, 1, &a, &err), 0, "%s", err.msg);
+    cr_assert_eq(pl_rdf_create(&par, 2, &b, &err), 0, "%s", err.msg);
+    cr_assert_eq(pl_rdf_create(&par, 1, &b2, &err), 0, "%s", err.msg);
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(rng, 6);
+    double x[50], y[50], z[50];
+    for (int s = 0; s < 20; ++s) {
+        for (size_t i = 0; i < n; ++i)
+            x[i] = 8.0 * gsl_rng_uniform(rng), y[i] = 8.0 * gsl_rng_uniform(rng), z[i] = 8.0 * gsl_rng_uniform(rng);
+        if (s == 9) {
+            pl_rdf_state_t from = pl_rdf_state(b), to = pl_rdf_state(b2);
+            memcpy(to.counts, from.counts, from.ncounts * sizeof *from.counts);
+            memcpy(to.blocking, from.blocking, from.nblocking * sizeof *from.blocking);
+            pl_rdf_free(b);
+            b = b2;
+        }
+        pl_rdf_sample(a, n, x, y, z, NULL);
+        pl_rdf_sample(b, n, x, y, z, NULL);
+    }
+    pl_rdf_state_t sa = pl_rdf_state(a), sb = pl_rdf_state(b);
+    cr_assert_eq(memcmp(sa.counts, sb.counts, sa.ncounts * sizeof *sa.counts), 0);
+    cr_assert_eq(memcmp(sa.blocking, sb.blocking, sa.nblocking * sizeof *sa.blocking), 0);
+    cr_assert_eq(pl_rdf_samples(b), 20);
+    pl_rdf_free(a);
+    pl_rdf_free(b);
+    gsl_rng_free(rng);
+}

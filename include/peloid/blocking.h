@@ -52,14 +52,14 @@ typedef struct {
     double mean;    /* running mean of the block means (Welford) */
     double m2;      /* sum of squared deviations from the mean */
     double pending; /* the first half of the next block of the level above */
-    int has_pending;
+    uint64_t has_pending;
 } pl_blocking_level_t;
 
-/* Plain struct: checkpointable as is, no allocation. Zero-initialise it
- * (or call pl_blocking_init) before use. */
+/* Plain struct without padding bytes: checkpointable and comparable bytewise
+ * as is, no allocation.  Zero-initialise it (or call pl_blocking_init). */
 typedef struct {
-    uint64_t n; /* samples added */
-    int nlev;   /* levels with at least one block */
+    uint64_t n;   /* samples added */
+    int64_t nlev; /* levels with at least one block */
     pl_blocking_level_t lev[PL_BLOCKING_LEVELS];
 } pl_blocking_t;
 

@@ -67,6 +67,17 @@ void pl_mtau_free(pl_mtau_t *c);
 void pl_mtau_add(pl_mtau_t *c, const double *x, const double *y, const double *z, int nthreads);
 
 uint64_t pl_mtau_samples(const pl_mtau_t *c);
+
+/* Everything a checkpoint must hold to continue bitwise (STYLE.md 15): two
+ * arrays owned by c.  Write them out; to restart, create an object with the
+ * same parameters and read them back into the arrays of its state. */
+typedef struct {
+    double *values;     /* per-particle buffers and accumulators */
+    size_t nvalues;
+    uint64_t *counters; /* origins per lag, values per level, samples */
+    size_t ncounters;
+} pl_mtau_state_t;
+pl_mtau_state_t pl_mtau_state(pl_mtau_t *c);
 /* Lag slots, in increasing lag: p + (levels - 1) (p - p/m). */
 size_t pl_mtau_nlags(const pl_mtau_t *c);
 /* lag[k] (time), origins[k], value[PL_MTAU_COLS k + col], se[...]; a lag with

@@ -37,6 +37,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "peloid/blocking.h"
 #include "peloid/error.h"
 
 typedef struct {
@@ -65,6 +66,17 @@ void pl_rdf_result(const pl_rdf_t *r, double *rmid, double *g, double *se, int *
 /* Pair counts summed over all samples (nbins values). */
 const uint64_t *pl_rdf_counts(const pl_rdf_t *r);
 uint64_t pl_rdf_samples(const pl_rdf_t *r);
+
+/* Everything a checkpoint must hold to continue bitwise (STYLE.md 15),
+ * owned by r: counts[nbins] summed over samples and counts[nbins] = the
+ * samples; one plain blocking accumulator per bin. */
+typedef struct {
+    uint64_t *counts;
+    size_t ncounts;
+    pl_blocking_t *blocking;
+    size_t nblocking;
+} pl_rdf_state_t;
+pl_rdf_state_t pl_rdf_state(pl_rdf_t *r);
 /* P_b of the header: the ideal-gas probability of bin [r1, r2). */
 double pl_rdf_ideal_fraction(const pl_rdf_params_t *par, double r1, double r2);
 

@@ -39,6 +39,13 @@ void pl_vdist_sample(pl_vdist_t *h, size_t n, const double *vx, const double *vy
 /* Counts of axis d (0..2; 3 = all axes): nbins + 2 values, [0] below -vmax,
  * [nbins + 1] above vmax. */
 const uint64_t *pl_vdist_counts(const pl_vdist_t *h, int axis);
+/* The checkpoint state (STYLE.md 15): the counts of all four histograms. */
+typedef struct {
+    uint64_t *counts;
+    size_t ncounts;
+} pl_vdist_state_t;
+pl_vdist_state_t pl_vdist_state(pl_vdist_t *h);
+
 /* chi^2 of the histogram of axis (0..3) against N(0, sigma^2), sigma =
  * sqrt(kT / M).  Fails when fewer than two bins are left after merging. */
 int pl_vdist_chi2(const pl_vdist_t *h, int axis, double sigma, double *chi2, int *dof, double *p,
