@@ -133,6 +133,7 @@ int pl_cluster_find(pl_cluster_t *c, size_t n, const double *x, const double *y,
         for (int cy = 0; cy < nc[1]; ++cy)
             for (int cx = 0; cx < nc[0]; ++cx) {
                 int32_t home = (cz * nc[1] + cy) * nc[0] + cx;
+                if (cl->start[home] == cl->start[home + 1]) continue; /* most cells of a dilute suspension */
                 /* the distinct neighbour cells: one offset on a one-cell axis,
                  * wrapped on a periodic one, clipped at walls */
                 int lo[3], hi[3], cc[3] = {cx, cy, cz};

@@ -48,7 +48,7 @@ int pl_mtau_create(const pl_mtau_params_t *par, pl_mtau_t **out, pl_err_t *err)
     if (par->kind != PL_MTAU_AUTO && par->kind != PL_MTAU_MSD)
         return pl_err_set(err, PL_ERR_INPUT, "mtau: unknown kind %d", (int)par->kind);
     if (!(par->dt > 0.0)) return pl_err_set(err, PL_ERR_INPUT, "mtau: dt = %g, need > 0", par->dt);
-    size_t stride = 3 * (size_t)par->levels * (2 * (size_t)par->p + 1);
+    size_t stride = (size_t)par->levels * (6 * (size_t)par->p + 3);
     if (stride > (size_t)INT32_MAX || par->n > SIZE_MAX / sizeof(double) / stride)
         return pl_err_set(err, PL_ERR_INPUT, "mtau: %zu particles x %zu values is too large", par->n,
                           stride);
@@ -144,8 +144,8 @@ static void slot_of(const pl_mtau_t *c, size_t k, int *l, int *j)
 /* Time average of column col of particle i at slot (l, j). */
 static double particle_value(const pl_mtau_t *c, size_t i, int l, int j, int col, double cnt)
 {
-    const double *a = c->state + i * c->stride + (size_t)c->par.levels * (size_t)c->par.p * 3 +
-                      ((size_t)l * (size_t)c->par.p + (size_t)j) * 3;
+    const double *a = c->state + i * c->stride + (size_t)l * (6 * (size_t)c->par.p + 3) +
+                      6 * (size_t)j + 3;
     double s = col < 3 ? a[col] : a[0] + a[1] + a[2];
     return s / cnt;
 }

@@ -102,7 +102,7 @@ int pl_mtau_integral(const pl_mtau_t *c, double tmax, double integral[PL_MTAU_CO
 typedef struct {
     int nrecv;          /* levels 0..nrecv-1 receive this sample */
     int p, m, levels, average, kind;
-    int stride;         /* doubles per particle: 3 levels (2 p + 1) */
+    int stride;         /* doubles per particle: levels (6 p + 3) */
     int head[PL_MTAU_MAX_LEVELS];  /* slot the new value goes to */
     int jmin[PL_MTAU_MAX_LEVELS];  /* smallest lag index of the level */
     int jmax[PL_MTAU_MAX_LEVELS];  /* largest lag index with an origin */
