@@ -5,5 +5,6 @@ const pl_module_t *const pl_modules[] = {
     &pl_fluid_module,
     &pl_colloid_module,
     &pl_coupling_module,
+    &pl_observe_module,
     NULL,
 };

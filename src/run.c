@@ -338,6 +338,8 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         pl_path_join(path, sizeof path, w.dir, "fields.h5");
         if ((rc = pl_fields_write(sim, path, err))) goto done;
     }
+    for (int m = 0; pl_modules[m]; ++m) /* each module's outputs and measured values */
+        if (pl_modules[m]->finish && (rc = pl_modules[m]->finish(sim, w.dir, summary, err))) goto done;
     rc = write_summary(&w, summary, sim, first, wall, err);
     if (!rc)
         say(o, "peloid: done in %.3g s, %.4g Mupdates/s", wall,

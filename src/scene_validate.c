@@ -62,5 +62,6 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
                              "%lld is not before the last step %lld; no field sample would be taken",
                              scene->output.fields_start, scene->run.steps);
     if (pl_colloid_validate_scene(scene, err)) return PL_ERR_INPUT;
-    return pl_coupling_validate_scene(scene, err);
+    if (pl_coupling_validate_scene(scene, err)) return PL_ERR_INPUT;
+    return pl_observe_validate_scene(scene, err);
 }

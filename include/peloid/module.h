@@ -28,6 +28,9 @@ typedef struct pl_module {
     /* Adds its entries to the head of summary.json (NULL: none); a
      * non-finite value is PL_ERR_INPUT naming the key. */
     int (*summary)(const pl_sim_t *sim, struct json_t *doc, pl_err_t *err);
+    /* At the end of a run: writes its output files into dir and adds what it
+     * measured to summary.json (NULL: nothing). */
+    int (*finish)(pl_sim_t *sim, const char *dir, struct json_t *doc, pl_err_t *err);
 } pl_module_t;
 
 /* The modules, NULL-terminated, in the order they are created, their stages
@@ -37,5 +40,6 @@ extern const pl_module_t *const pl_modules[];
 extern const pl_module_t pl_fluid_module;    /* src/fluid_stages.c */
 extern const pl_module_t pl_colloid_module;  /* src/colloid_module.c */
 extern const pl_module_t pl_coupling_module; /* src/coupling_module.c */
+extern const pl_module_t pl_observe_module;  /* src/observe_module.c */
 
 #endif

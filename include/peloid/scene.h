@@ -13,6 +13,7 @@
 
 #include "peloid/colloid_scene.h"
 #include "peloid/coupling_scene.h"
+#include "peloid/observe_scene.h"
 #include "peloid/error.h"
 #include "peloid/mapping.h"
 
@@ -105,6 +106,7 @@ typedef struct pl_scene {
     pl_scene_mapping_t mapping; /* physical{} + coarse_graining{} (mapping.h) */
     pl_scene_colloids_t colloids; /* colloid module (colloid_scene.h) */
     pl_scene_coupling_t coupling; /* colloid-solvent coupling (coupling_scene.h) */
+    pl_scene_observe_t observe;   /* observers (observe_scene.h) */
 } pl_scene_t;
 
 /* The one kT of a scene (model units): the thermostat's target, else the
@@ -165,6 +167,10 @@ extern const pl_section_t pl_scene_section_physical, pl_scene_section_coarse_gra
 extern const pl_section_t pl_scene_section_colloids, pl_scene_section_dlvo, pl_scene_section_hertz,
     pl_scene_section_lubrication, pl_scene_section_wca;
 extern const pl_section_t pl_scene_section_coupling;
+extern const pl_section_t pl_scene_section_observe;
+
+/* Cross-key checks of the observe section (src/observe_module.c). */
+int pl_observe_validate_scene(const pl_scene_t *scene, pl_err_t *err);
 
 /* Cross-key checks of the coupling section (src/coupling_scene.c). */
 int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err);

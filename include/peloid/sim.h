@@ -98,6 +98,8 @@ struct pl_sim {
     struct pl_colloid_traj *colloid_traj; /* opened by the run loop when wanted */
     /* colloid-solvent coupling (NULL without; src/coupling*.c) */
     struct pl_coupling *coupling;
+    /* observers (NULL without; src/observe_module.c) */
+    struct pl_observe *observe;
     /* plan */
     pl_stage_t stages[PL_MAX_STAGES];
     int nstages;

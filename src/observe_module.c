@@ -1,0 +1,573 @@
+/* The observer module (peloid/module.h; DESIGN.md "Observables and their
+ * errors"): after-step stages that sample the colloids and, at the end of
+ * the run, observables.h5 (H5MD /observables) and summary.json
+ * "observables", every average with its standard error.
+ *
+ *   g(r)      colloid centres (Hecht Sec. IX.C, Figs. 5-7, 10-13; PL Fig. 4),
+ *             peloid/rdf.h: ideal-gas normalisation of the accessible region,
+ *             mean and SE per bin by blocking over samples.
+ *   MSD, D    unwrapped colloid positions, multiple-tau correlator
+ *             (peloid/mtau.h, every-m-th coarse-graining: unbiased at every
+ *             lag); D = slope / 6 of the summed-axis MSD, least squares over
+ *             the lags in [T/40, T/4] of the sampled span T (the long-time
+ *             regime with at least 4 independent origins per lag; Hecht
+ *             Eq. 36, PL Sec. VI.C), its SE over colloids.
+ *   clusters  bond = surface gap below observe.clusters_gap, union-find over
+ *             linked cells (peloid/cluster.h; Hecht Figs. 9, 14): number of
+ *             clusters, largest, mean size per sample; their time averages
+ *             with the blocking SE (peloid/blocking.h); the size distribution
+ *             summed over samples.
+ *
+ * Error against run time: at 1/8, 1/4, 1/2 and all of the run the current
+ * estimate and SE of each observable are recorded with the wall time spent;
+ * the summary extrapolates (SE ~ 1/sqrt(t)) the wall time that
+ * observe.target_rel_error would need, flagged when the blocking found no
+ * plateau.  A restarted run's observers start afresh: its observables cover
+ * the steps of that run (summary "observables.first_step"). */
+#include <hdf5.h>
+#include <jansson.h>
+#include <math.h>
+#include <omp.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "json_build.h"
+#include "peloid/blocking.h"
+#include "peloid/cluster.h"
+#include "peloid/colloid.h"
+#include "peloid/h5.h"
+#include "peloid/io.h"
+#include "peloid/mapping.h"
+#include "peloid/module.h"
+#include "peloid/mtau.h"
+#include "peloid/rdf.h"
+
+enum { NFRAC = 4, MSD_P = 16, MSD_M = 2 };
+static const double fractions[NFRAC] = {0.125, 0.25, 0.5, 1.0};
+
+/* Observables of the error-against-time report. */
+enum { OB_D, OB_RDF_PEAK, OB_NCLUSTERS, OB_LARGEST, OB_MEANSIZE, OB_N };
+static const char *const ob_names[OB_N] = {"colloid_D", "rdf_peak", "cluster_number", "largest_cluster",
+                                           "mean_cluster_size"};
+
+typedef struct {
+    long long step;
+    double wall_s, value, se;
+    int valid, plateau;
+} ept_t;
+
+typedef struct pl_observe {
+    long long first, last; /* the run's steps */
+    double t_start;        /* wall clock at the run's start */
+    /* g(r) */
+    pl_rdf_t *rdf;
+    pl_rdf_params_t rdf_par;
+    double rdf_wall;
+    /* MSD */
+    pl_mtau_t *msd;
+    double *u[3]; /* unwrapped positions */
+    double msd_dt, msd_wall;
+    /* clusters */
+    pl_cluster_t *cl;
+    pl_blocking_t cb[3]; /* number, largest, mean size */
+    long long *c_step;
+    double *c_val[3];
+    size_t c_n, c_cap;
+    uint64_t *c_hist; /* size distribution summed over samples */
+    size_t c_hist_len;
+    double cl_wall;
+    /* error against run time */
+    ept_t ept[OB_N][NFRAC];
+    int next_frac;
+} pl_observe_t;
+
+static int any_observer(const pl_scene_observe_t *o)
+{
+    return o->rdf_interval > 0 || o->msd_interval > 0 || o->clusters_interval > 0;
+}
+
+/* ---- scene checks ------------------------------------------------------ */
+
+#define OFFO(m) offsetof(pl_scene_t, observe.m)
+
+int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
+{
+    const pl_scene_observe_t *o = &sc->observe;
+    const struct { long long v; size_t off; const char *key; } need[] = {
+        {o->rdf_interval, OFFO(rdf_interval), "observe.rdf_interval"},
+        {o->msd_interval, OFFO(msd_interval), "observe.msd_interval"},
+        {o->clusters_interval, OFFO(clusters_interval), "observe.clusters_interval"},
+    };
+    for (size_t k = 0; k < sizeof need / sizeof need[0]; ++k)
+        if (need[k].v > 0 && sc->colloids.count == 0)
+            return pl_scene_fail(sc, err, need[k].off, need[k].key,
+                                 "%lld: the observer needs colloids (colloids.count = 0); allowed: 0 without colloids",
+                                 need[k].v);
+    if (o->rdf_interval > 0) {
+        if (sc->box.walls_xy != PL_WALLS_NONE)
+            return pl_scene_fail(sc, err, OFFO(rdf_interval), "observe.rdf_interval",
+                                 "%lld with box.walls_xy: g(r) is normalised for x and y periodic; allowed: 0 "
+                                 "with x/y walls", o->rdf_interval);
+        double half = 0.5 * fmin(sc->box.cells[0], sc->box.cells[1]);
+        if (sc->box.walls_z == PL_WALLS_NONE) half = fmin(half, 0.5 * sc->box.cells[2]);
+        if (o->rdf_rmax > half)
+            return pl_scene_fail(sc, err, OFFO(rdf_rmax), "observe.rdf_rmax",
+                                 "%g a0 is beyond half the periodic box edge; allowed: <= %g a0 (minimum image)",
+                                 o->rdf_rmax, half);
+    }
+    return 0;
+}
+
+/* ---- lifetime ---------------------------------------------------------- */
+
+static int observe_create(pl_sim_t *sim, pl_err_t *err)
+{
+    (void)err;
+    if (!sim->colloids || !any_observer(&sim->scene.observe)) return 0;
+    pl_observe_t *o = calloc(1, sizeof *o);
+    if (!o) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the observers");
+    for (int k = 0; k < 3; ++k) pl_blocking_init(&o->cb[k]);
+    sim->observe = o;
+    return 0;
+}
+
+static void observe_destroy(pl_sim_t *sim)
+{
+    pl_observe_t *o = sim->observe;
+    if (!o) return;
+    pl_rdf_free(o->rdf);
+    pl_mtau_free(o->msd);
+    pl_cluster_free(o->cl);
+    for (int d = 0; d < 3; ++d) {
+        free(o->u[d]);
+        free(o->c_val[d]);
+    }
+    free(o->c_step);
+    free(o->c_hist);
+    free(o);
+    sim->observe = NULL;
+}
+
+/* Samples from `start` to the run's last step, every `interval`. */
+static uint64_t expected_samples(const pl_observe_t *o, long long start, long long interval)
+{
+    long long a = o->first > start ? o->first : start;
+    if (a % interval) a += interval - a % interval;
+    return a > o->last ? 1 : (uint64_t)((o->last - a) / interval + 1);
+}
+
+/* ---- stages ------------------------------------------------------------ */
+
+static int stage_rdf(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    pl_observe_t *o = ctx;
+    const pl_scene_t *sc = &sim->scene;
+    if (sim->step < sc->observe.rdf_start) return 0;
+    const double t0 = omp_get_wtime();
+    const pl_colloid_t *c = sim->colloids;
+    if (!o->rdf) {
+        pl_rdf_params_t *p = &o->rdf_par;
+        memset(p, 0, sizeof *p);
+        for (int d = 0; d < 3; ++d) p->box[d] = c->box[d];
+        p->z_walls = !c->periodic[2];
+        double rmax_r = 0.0; /* the centres' slab between z walls: [R, Lz - R] */
+        for (size_t i = 0; i < c->n; ++i) rmax_r = fmax(rmax_r, c->rad[i]);
+        p->zlo = rmax_r;
+        p->zhi = c->box[2] - rmax_r;
+        double half = 0.5 * fmin(c->box[0], c->box[1]);
+        if (!p->z_walls) half = fmin(half, 0.5 * c->box[2]);
+        p->rmax = sc->observe.rdf_rmax > 0 ? sc->observe.rdf_rmax : half;
+        p->nbins = (size_t)sc->observe.rdf_bins;
+        p->class_a = p->class_b = -1;
+        int rc = pl_rdf_create(p, sim->nthreads, &o->rdf, err);
+        if (rc) return rc;
+    }
+    pl_rdf_sample(o->rdf, c->n, c->x, c->y, c->z, NULL);
+    o->rdf_wall += omp_get_wtime() - t0;
+    return 0;
+}
+
+static int stage_msd(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    pl_observe_t *o = ctx;
+    const pl_scene_t *sc = &sim->scene;
+    if (sim->step < sc->observe.msd_start) return 0;
+    const double t0 = omp_get_wtime();
+    const pl_colloid_t *c = sim->colloids;
+    if (!o->msd) {
+        const uint64_t ns = expected_samples(o, sc->observe.msd_start, sc->observe.msd_interval);
+        o->msd_dt = (double)sc->observe.msd_interval * sc->srd.dt;
+        pl_mtau_params_t p = {.n = c->n, .p = MSD_P, .m = MSD_M, .levels = pl_mtau_levels_for(ns, MSD_P, MSD_M),
+                              .kind = PL_MTAU_MSD, .average = 0, .dt = o->msd_dt};
+        int rc = pl_mtau_create(&p, &o->msd, err);
+        if (rc) return rc;
+        for (int d = 0; d < 3; ++d)
+            if (!(o->u[d] = malloc(c->n * sizeof(double))))
+                return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the MSD observer");
+    }
+    const double *x[3] = {c->x, c->y, c->z};
+    const int32_t *im[3] = {c->ix, c->iy, c->iz};
+    for (int d = 0; d < 3; ++d)
+        for (size_t i = 0; i < c->n; ++i) o->u[d][i] = x[d][i] + (double)im[d][i] * c->box[d];
+    pl_mtau_add(o->msd, o->u[0], o->u[1], o->u[2], sim->nthreads);
+    o->msd_wall += omp_get_wtime() - t0;
+    return 0;
+}
+
+static int stage_clusters(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    pl_observe_t *o = ctx;
+    const pl_scene_t *sc = &sim->scene;
+    if (sim->step < sc->observe.clusters_start) return 0;
+    const double t0 = omp_get_wtime();
+    const pl_colloid_t *c = sim->colloids;
+    if (!o->cl) {
+        pl_cluster_params_t p = {.gap = sc->observe.clusters_gap, .nmax = c->n};
+        for (int d = 0; d < 3; ++d) {
+            p.box[d] = c->box[d];
+            p.periodic[d] = c->periodic[d];
+        }
+        for (size_t i = 0; i < c->n; ++i) p.rad_max = fmax(p.rad_max, c->rad[i]);
+        int rc = pl_cluster_create(&p, &o->cl, err);
+        if (rc) return rc;
+        o->c_cap = expected_samples(o, sc->observe.clusters_start, sc->observe.clusters_interval);
+        o->c_step = malloc(o->c_cap * sizeof *o->c_step);
+        for (int k = 0; k < 3; ++k) o->c_val[k] = malloc(o->c_cap * sizeof(double));
+        o->c_hist_len = c->n + 1;
+        o->c_hist = calloc(o->c_hist_len, sizeof *o->c_hist);
+        if (!o->c_step || !o->c_val[0] || !o->c_val[1] || !o->c_val[2] || !o->c_hist)
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cluster observer");
+    }
+    int rc = pl_cluster_find(o->cl, c->n, c->x, c->y, c->z, c->rad, err);
+    if (rc) return rc;
+    const double v[3] = {(double)pl_cluster_count(o->cl), (double)pl_cluster_largest(o->cl),
+                         pl_cluster_mean_size(o->cl)};
+    for (int k = 0; k < 3; ++k) pl_blocking_add(&o->cb[k], v[k]);
+    if (o->c_n < o->c_cap) {
+        o->c_step[o->c_n] = sim->step;
+        for (int k = 0; k < 3; ++k) o->c_val[k][o->c_n] = v[k];
+        o->c_n++;
+    }
+    size_t len;
+    const uint64_t *h = pl_cluster_size_hist(o->cl, &len);
+    for (size_t s = 0; s < len && s < o->c_hist_len; ++s) o->c_hist[s] += h[s];
+    o->cl_wall += omp_get_wtime() - t0;
+    return 0;
+}
+
+/* D = slope / 6 of the summed MSD over [T/40, T/4] (file header); 0 when
+ * too few lags. */
+static int diffusion(const pl_observe_t *o, double *D, double *se, double *tmin, double *tmax)
+{
+    if (!o->msd || pl_mtau_samples(o->msd) < 8) return 0;
+    const double T = (double)(pl_mtau_samples(o->msd) - 1) * o->msd_dt;
+    *tmax = 0.25 * T;
+    *tmin = 0.1 * *tmax;
+    double s[PL_MTAU_COLS], e[PL_MTAU_COLS];
+    pl_err_t ignore = {0, ""};
+    if (pl_mtau_slope(o->msd, *tmin, *tmax, s, e, &ignore)) return 0;
+    *D = s[3] / 6.0;
+    *se = e[3] / 6.0;
+    return isfinite(*D) && isfinite(*se);
+}
+
+/* The bin of the highest g(r) (the first coordination shell) and its SE. */
+static int rdf_peak(const pl_observe_t *o, double *r, double *g, double *se)
+{
+    if (!o->rdf || pl_rdf_samples(o->rdf) < 2) return 0;
+    const size_t nb = o->rdf_par.nbins;
+    double *rm = malloc(3 * nb * sizeof(double));
+    if (!rm) return 0;
+    double *gg = rm + nb, *ss = gg + nb;
+    pl_rdf_result(o->rdf, rm, gg, ss, NULL);
+    size_t best = 0;
+    for (size_t b = 1; b < nb; ++b)
+        if (gg[b] > gg[best]) best = b;
+    *r = rm[best];
+    *g = gg[best];
+    *se = ss[best];
+    free(rm);
+    return isfinite(*g) && isfinite(*se);
+}
+
+/* Records the estimates of every active observable at the fractions of the
+ * run (1/8, 1/4, 1/2, 1). */
+static int stage_error_time(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)err;
+    pl_observe_t *o = ctx;
+    while (o->next_frac < NFRAC) {
+        const long long at = o->first + (long long)ceil(fractions[o->next_frac] * (double)(o->last - o->first));
+        if (sim->step < at) break;
+        const double wall = omp_get_wtime() - o->t_start;
+        ept_t *e[OB_N];
+        for (int k = 0; k < OB_N; ++k) {
+            e[k] = &o->ept[k][o->next_frac];
+            e[k]->step = sim->step;
+            e[k]->wall_s = wall;
+        }
+        double a, b, c;
+        e[OB_D]->valid = diffusion(o, &e[OB_D]->value, &e[OB_D]->se, &a, &b);
+        e[OB_D]->plateau = 1;
+        e[OB_RDF_PEAK]->valid = rdf_peak(o, &a, &e[OB_RDF_PEAK]->value, &e[OB_RDF_PEAK]->se);
+        e[OB_RDF_PEAK]->plateau = 1;
+        (void)c;
+        for (int k = 0; o->cl && k < 3; ++k) {
+            pl_blocking_result_t r = pl_blocking_result(&o->cb[k]);
+            ept_t *q = e[OB_NCLUSTERS + k];
+            q->valid = o->cb[k].n >= 2 && isfinite(r.mean) && isfinite(r.se);
+            q->value = r.mean;
+            q->se = r.se;
+            q->plateau = r.plateau;
+        }
+        o->next_frac++;
+    }
+    return 0;
+}
+
+/* The run's first state is known when the after-step stages first run. */
+static int stage_begin(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)err;
+    pl_observe_t *o = ctx;
+    if (o->t_start == 0.0) {
+        o->first = sim->first_step;
+        o->last = sim->last_step;
+        o->t_start = omp_get_wtime();
+    }
+    return 0;
+}
+
+static void observe_stages(pl_sim_t *sim)
+{
+    pl_observe_t *o = sim->observe;
+    if (!o) return;
+    const pl_scene_observe_t *so = &sim->scene.observe;
+    pl_stage_t b = {.name = "observe-begin", .fn = stage_begin, .ctx = o, .interval = 1,
+                    .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
+    pl_sim_add_stage(sim, &b, NULL);
+    if (so->rdf_interval > 0) {
+        pl_stage_t s = {.name = "observe-rdf", .fn = stage_rdf, .ctx = o, .interval = so->rdf_interval,
+                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
+        pl_sim_add_stage(sim, &s, NULL);
+    }
+    if (so->msd_interval > 0) {
+        pl_stage_t s = {.name = "observe-msd", .fn = stage_msd, .ctx = o, .interval = so->msd_interval,
+                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
+        pl_sim_add_stage(sim, &s, NULL);
+    }
+    if (so->clusters_interval > 0) {
+        pl_stage_t s = {.name = "observe-clusters", .fn = stage_clusters, .ctx = o,
+                        .interval = so->clusters_interval, .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE,
+                        .at_start = 1};
+        pl_sim_add_stage(sim, &s, NULL);
+    }
+    pl_stage_t e = {.name = "observe-error-time", .fn = stage_error_time, .ctx = o, .interval = 1,
+                    .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
+    pl_sim_add_stage(sim, &e, NULL);
+}
+
+/* ---- outputs ----------------------------------------------------------- */
+
+/* Dataset with a unit attribute (H5MD); 0 or -1. */
+static int put(hid_t g, const char *name, hid_t type, int rank, const hsize_t *dims, const void *data,
+               const char *unit)
+{
+    if (pl_h5_write(g, name, type, rank, dims, data)) return -1;
+    if (!unit) return 0;
+    hid_t ds = H5Dopen2(g, name, H5P_DEFAULT);
+    if (ds < 0) return -1;
+    int bad = pl_h5_attr_str(ds, "unit", unit);
+    if (H5Dclose(ds) < 0) bad = -1;
+    return bad;
+}
+
+/* An H5MD time series group /observables/<name> with step, time, value. */
+static int series(hid_t obs, const char *name, size_t n, const long long *step, double dt, const double *value,
+                  const char *unit)
+{
+    hid_t g = pl_h5_group(obs, name);
+    if (g < 0) return -1;
+    double *t = malloc((n ? n : 1) * sizeof(double));
+    int bad = !t;
+    for (size_t k = 0; t && k < n; ++k) t[k] = (double)step[k] * dt;
+    hsize_t dims[1] = {n};
+    bad |= put(g, "step", H5T_NATIVE_LLONG, 1, dims, step, NULL) != 0;
+    bad |= t && put(g, "time", H5T_NATIVE_DOUBLE, 1, dims, t, "t0") != 0;
+    bad |= put(g, "value", H5T_NATIVE_DOUBLE, 1, dims, value, unit) != 0;
+    free(t);
+    if (H5Gclose(g) < 0) bad = 1;
+    return bad ? -1 : 0;
+}
+
+static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path, pl_err_t *err)
+{
+    char tmp[4200];
+    pl_atomic_tmp(path, tmp, sizeof tmp);
+    pl_h5_quiet();
+    hid_t f = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    if (f < 0) return pl_err_set(err, PL_ERR_IO, "%s: cannot create the observables file", tmp);
+    int bad = pl_h5_h5md_header(f) != 0;
+    hid_t obs = pl_h5_group(f, "observables");
+    bad |= obs < 0;
+    const double dt = sim->scene.srd.dt;
+    if (!bad && o->rdf && pl_rdf_samples(o->rdf) > 0) { /* one frame: the run's average */
+        const size_t nb = o->rdf_par.nbins;
+        double *buf = malloc(3 * nb * sizeof(double));
+        hid_t g = pl_h5_group(obs, "colloid_rdf");
+        bad |= !buf || g < 0;
+        if (!bad) {
+            pl_rdf_result(o->rdf, buf, buf + nb, buf + 2 * nb, NULL);
+            for (size_t k = 0; k < 2 * nb; ++k) /* empty bins (no ideal pair) carry no estimate */
+                if (!isfinite(buf[nb + k])) buf[nb + k] = 0.0;
+            hsize_t d1[1] = {nb}, d2[2] = {1, nb}, one[1] = {1};
+            long long st = sim->step;
+            double t = (double)st * dt;
+            bad |= put(g, "r", H5T_NATIVE_DOUBLE, 1, d1, buf, "a0") != 0;
+            bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, buf + nb, "1") != 0;
+            bad |= put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, buf + 2 * nb, "1") != 0;
+            bad |= put(g, "step", H5T_NATIVE_LLONG, 1, one, &st, NULL) != 0;
+            bad |= put(g, "time", H5T_NATIVE_DOUBLE, 1, one, &t, "t0") != 0;
+            unsigned long long ns = pl_rdf_samples(o->rdf);
+            bad |= put(g, "samples", H5T_NATIVE_ULLONG, 0, NULL, &ns, NULL) != 0;
+        }
+        if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+        free(buf);
+    }
+    if (!bad && o->msd && pl_mtau_samples(o->msd) > 1) {
+        const size_t nl = pl_mtau_nlags(o->msd);
+        double *lag = malloc(nl * (1 + 2 * PL_MTAU_COLS) * sizeof(double));
+        uint64_t *org = malloc(nl * sizeof(uint64_t));
+        hid_t g = pl_h5_group(obs, "colloid_msd");
+        bad |= !lag || !org || g < 0;
+        if (!bad) {
+            double *val = lag + nl, *se = val + nl * PL_MTAU_COLS;
+            pl_mtau_result(o->msd, lag, org, val, se);
+            size_t n = 0; /* the lags with an origin */
+            while (n < nl && org[n] > 0) ++n;
+            for (size_t k = 0; k < n * PL_MTAU_COLS; ++k)
+                if (!isfinite(se[k])) se[k] = 0.0; /* one colloid: no spread */
+            hsize_t d1[1] = {n}, d2[2] = {n, PL_MTAU_COLS};
+            bad |= put(g, "lag", H5T_NATIVE_DOUBLE, 1, d1, lag, "t0") != 0;
+            bad |= put(g, "origins", H5T_NATIVE_UINT64, 1, d1, org, NULL) != 0;
+            bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, val, "a0^2") != 0;
+            bad |= put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, se, "a0^2") != 0;
+            bad |= pl_h5_attr_str(g, "columns", "x y z sum") != 0;
+        }
+        if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+        free(lag);
+        free(org);
+    }
+    if (!bad && o->cl && o->c_n > 0) {
+        static const char *const nm[3] = {"cluster_number", "largest_cluster", "mean_cluster_size"};
+        for (int k = 0; k < 3 && !bad; ++k) bad |= series(obs, nm[k], o->c_n, o->c_step, dt, o->c_val[k], "1") != 0;
+        size_t len = o->c_hist_len; /* trailing empty sizes left out */
+        while (len > 1 && o->c_hist[len - 1] == 0) --len;
+        hsize_t d1[1] = {len};
+        hid_t g = pl_h5_group(obs, "cluster_size_distribution");
+        bad |= g < 0 || put(g, "value", H5T_NATIVE_UINT64, 1, d1, o->c_hist, "1") != 0;
+        if (g >= 0) bad |= pl_h5_attr_str(g, "meaning", "value[s]: clusters of s colloids, summed over samples") != 0;
+        if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+    }
+    if (obs >= 0 && H5Gclose(obs) < 0) bad = 1;
+    if (bad) {
+        char why[256];
+        pl_h5_error_text(why, sizeof why);
+        H5Fclose(f);
+        remove(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: writing the observables failed: %s", tmp, why);
+    }
+    if (H5Fclose(f) < 0) {
+        remove(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: closing the observables file failed", tmp);
+    }
+    return pl_atomic_commit(tmp, path, err);
+}
+
+/* {value, stderr, ..., se_vs_time, wall_s_for_target} of one observable. */
+static json_t *entry(pl_json_t *b, const pl_observe_t *o, int ob, double value, double se, double n_indep,
+                     double ineff, int plateau, double wall, double target, const char *unit)
+{
+    json_t *e = json_object();
+    pl_json_real(b, e, "value", value);
+    pl_json_real(b, e, "stderr", se);
+    pl_json_real(b, e, "n_independent", n_indep);
+    if (ineff > 0) pl_json_real(b, e, "statistical_inefficiency", ineff);
+    pl_json_set(b, e, "plateau", json_boolean(plateau));
+    pl_json_real(b, e, "wall_s", wall);
+    pl_json_str(b, e, "unit", unit);
+    json_t *arr = json_array();
+    for (int k = 0; k < NFRAC; ++k) {
+        const ept_t *p = &o->ept[ob][k];
+        if (!p->valid) continue;
+        json_t *q = json_object();
+        pl_json_real(b, q, "run_fraction", fractions[k]);
+        pl_json_int(b, q, "step", p->step);
+        pl_json_real(b, q, "wall_s", p->wall_s);
+        pl_json_real(b, q, "value", p->value);
+        pl_json_real(b, q, "stderr", p->se);
+        json_array_append_new(arr, q);
+    }
+    pl_json_set(b, e, "se_vs_time", arr);
+    const ept_t *last = &o->ept[ob][NFRAC - 1];
+    if (last->valid && fabs(value) > 0 && se > 0) {
+        pl_json_real(b, e, "target_rel_error", target);
+        pl_json_real(b, e, "wall_s_for_target", pl_blocking_time_for_se(se, last->wall_s, target * fabs(value)));
+        pl_json_set(b, e, "extrapolation_reliable", json_boolean(plateau));
+    }
+    return e;
+}
+
+static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
+{
+    pl_observe_t *o = sim->observe;
+    if (!o) return 0;
+    char path[4096];
+    pl_path_join(path, sizeof path, dir, "observables.h5");
+    int rc = write_h5(sim, o, path, err);
+    if (rc) return rc;
+    const double target = sim->scene.observe.target_rel_error;
+    pl_json_t b = {err, path, "observables", 0};
+    json_t *all = json_object();
+    pl_json_int(&b, all, "first_step", o->first);
+    pl_json_int(&b, all, "last_step", o->last);
+    double D, se, tmin, tmax;
+    if (o->msd && diffusion(o, &D, &se, &tmin, &tmax)) {
+        json_t *e = entry(&b, o, OB_D, D, se, (double)sim->colloids->n, 0.0, 1, o->msd_wall, target, "a0^2/t0");
+        const double fit[2] = {tmin, tmax};
+        pl_json_reals(&b, e, "fit_window_t0", fit, 2);
+        if (sim->scene.mapping.enabled) { /* a0^2 / t0 -> m^2/s */
+            const pl_mapping_t *m = &sim->scene.mapping.map;
+            pl_json_real(&b, e, "value_m2_per_s", D * m->a0 * m->a0 / m->t0);
+            pl_json_real(&b, e, "stderr_m2_per_s", se * m->a0 * m->a0 / m->t0);
+        }
+        pl_json_set(&b, all, "colloid_D", e);
+    }
+    double r, g, gse;
+    if (o->rdf && rdf_peak(o, &r, &g, &gse)) {
+        json_t *e = entry(&b, o, OB_RDF_PEAK, g, gse, (double)pl_rdf_samples(o->rdf), 0.0, 1, o->rdf_wall, target,
+                          "1");
+        pl_json_real(&b, e, "r", r);
+        pl_json_int(&b, e, "samples", (long long)pl_rdf_samples(o->rdf));
+        pl_json_set(&b, all, "rdf_peak", e);
+    }
+    for (int k = 0; o->cl && k < 3; ++k) {
+        if (o->cb[k].n < 2) continue;
+        pl_blocking_result_t res = pl_blocking_result(&o->cb[k]);
+        if (!isfinite(res.mean) || !isfinite(res.se)) continue;
+        json_t *e = entry(&b, o, OB_NCLUSTERS + k, res.mean, res.se, res.n_indep, res.inefficiency, res.plateau,
+                          o->cl_wall, target, "1");
+        pl_json_int(&b, e, "samples", (long long)o->cb[k].n);
+        pl_json_set(&b, all, ob_names[OB_NCLUSTERS + k], e);
+    }
+    pl_json_set(&b, doc, "observables", all);
+    return b.failed ? err->code : 0;
+}
+
+const pl_module_t pl_observe_module = {
+    .name = "observe",
+    .create = observe_create,
+    .destroy = observe_destroy,
+    .add_stages = observe_stages,
+    .finish = observe_finish,
+};

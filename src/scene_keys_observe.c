@@ -1,0 +1,39 @@
+/* Scene schema of the observers: section `observe` (colloid g(r), colloid
+ * MSD and diffusion coefficient, clusters; Hecht Sec. IX, PL Sec. VI).  No
+ * key here changes the trajectory: the checkpoint's scene fingerprint leaves
+ * the section out (src/checkpoint_scene.c). */
+#include <stddef.h>
+
+#include "peloid/scene.h"
+
+#define OFF(member) offsetof(pl_scene_t, observe.member)
+#define N(a) (sizeof(a) / sizeof((a)[0]))
+
+static const pl_key_t observe_keys[] = {
+    {"rdf_interval", PL_KEY_INT, OFF(rdf_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "colloid radial distribution function g(r) every this many steps (0: off); mean and SE per bin by "
+     "blocking over samples; normalised by the ideal gas of the accessible region (slab between z walls)"},
+    {"rdf_start", PL_KEY_INT, OFF(rdf_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "first step g(r) samples (equilibration before it)"},
+    {"rdf_bins", PL_KEY_INT, OFF(rdf_bins), 1, 1e6, 0, NULL, 200, NULL, "-", "g(r) bins over [0, rdf_rmax)"},
+    {"rdf_rmax", PL_KEY_REAL, OFF(rdf_rmax), 0, 1e6, 0, NULL, 0, NULL, "a0",
+     "largest distance of g(r) (0: half the shortest periodic box edge, or the box edge with walls on all "
+     "axes but z)"},
+    {"msd_interval", PL_KEY_INT, OFF(msd_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "colloid mean-squared displacement of the unwrapped positions every this many steps (0: off), by a "
+     "multiple-tau correlator (16 points per level, factor 2) up to the run length; D from its slope"},
+    {"msd_start", PL_KEY_INT, OFF(msd_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "first step the MSD samples"},
+    {"clusters_interval", PL_KEY_INT, OFF(clusters_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "colloid clusters (bond: surface gap below clusters_gap; union-find) every this many steps (0: off): "
+     "number of clusters, largest, mean size over time, their averages with SE, the final size distribution"},
+    {"clusters_start", PL_KEY_INT, OFF(clusters_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "first step the clusters are counted"},
+    {"clusters_gap", PL_KEY_REAL, OFF(clusters_gap), -1e6, 1e6, 0, NULL, 0.1, NULL, "a0",
+     "two colloids are bonded when their surface gap r - R_i - R_j is below this"},
+    {"target_rel_error", PL_KEY_REAL, OFF(target_rel_error), 0, 1, PL_KEY_MIN_OPEN, NULL, 0.01, NULL, "-",
+     "relative standard error the end-of-run report extrapolates the needed wall time to (SE ~ 1/sqrt(t))"},
+};
+
+const pl_section_t pl_scene_section_observe = {"observe", "observers: measured quantities with error bars",
+                                               observe_keys, N(observe_keys)};
