@@ -133,6 +133,7 @@ check-cli: $(BIN)
 	@bash tests/restart_guard.sh ./$(BIN)
 	@bash tests/full_disk.sh ./$(BIN)
 	@bash tests/regression.sh ./$(BIN)
+	@bash tests/observers.sh ./$(BIN)
 
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
 # shrinks the physics runs; the sanitizers slow code ~3-10x), and the
