@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "peloid/h5.h"
+#include "peloid_build.h" /* PL_TOOLS_DIR (generated) */
 #include "peloid/run.h"
 #include "peloid/scene.h"
 
@@ -34,6 +35,10 @@ static const char *const usage =
     "  params SCENE [--json] [--strict] [--allow-include-anywhere]\n"
     "        print the derived SRD parameters: lambda, nu_kin, nu_col, nu, eta, D_f,\n"
     "        Sc, tau_f (Padding & Louis 2006, Eqs. 4, 6, 9-15)\n"
+    "  report OUTDIR    write OUTDIR/report.md with a plot of every observable the run\n"
+    "                   measured (g(r), MSD and D, clusters, thermo) and the error-against-\n"
+    "                   time table (tools/report.py with /usr/bin/python3; PELOID_TOOLS\n"
+    "                   names another tools directory)\n"
     "  keys             print the scene-file reference (every key) as Markdown\n"
     "  --help           this text\n"
     "\n"
@@ -174,6 +179,18 @@ static int cmd_scene(int argc, char **argv, int params)
     return rc ? fail(&err) : 0;
 }
 
+/* `peloid report OUTDIR`: the plotting script of the tools directory. */
+static int cmd_report(int argc, char **argv)
+{
+    if (argc != 1 || argv[0][0] == '-') return bad_usage("report: expected OUTDIR");
+    const char *tools = getenv("PELOID_TOOLS");
+    char script[4096];
+    snprintf(script, sizeof script, "%s/report.py", tools && *tools ? tools : PL_TOOLS_DIR);
+    execl("/usr/bin/python3", "python3", script, argv[0], (char *)NULL);
+    fprintf(stderr, "peloid: error: report: cannot run /usr/bin/python3 %s: %s\n", script, strerror(errno));
+    return PL_ERR_INPUT;
+}
+
 int main(int argc, char **argv)
 {
     gsl_set_error_handler_off();
@@ -186,6 +203,7 @@ int main(int argc, char **argv)
     if (!strcmp(cmd, "run")) return cmd_run(argc - 2, argv + 2);
     if (!strcmp(cmd, "check")) return cmd_scene(argc - 2, argv + 2, 0);
     if (!strcmp(cmd, "params")) return cmd_scene(argc - 2, argv + 2, 1);
+    if (!strcmp(cmd, "report")) return cmd_report(argc - 2, argv + 2);
     if (!strcmp(cmd, "keys")) {
         pl_scene_print_reference(stdout);
         return 0;

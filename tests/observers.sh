@@ -15,7 +15,8 @@
 #  - the observables (observables.h5 and summary.json values) are bitwise the
 #    same at 1 and 2 threads;
 #  - summary.json carries value, stderr, se_vs_time at 1/8, 1/4, 1/2, 1 of the
-#    run, and no non-finite number; observables.h5 carries unit attributes.
+#    run; observables.h5 carries unit attributes;
+#  - peloid report writes report.md with the plots of what the run measured.
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 PY=/usr/bin/python3
@@ -100,5 +101,9 @@ with h5py.File("lat1.0/observables.h5") as f:
 print("gap 2.5: 1 cluster of 64; gap 1: 64 single colloids")
 PY
 ); then ok "clusters on a lattice: $out"; else bad "clusters on a lattice: $out"; fi
+if "$PELOID" report free1 > /dev/null && [ -s free1/report.md ] && [ -s free1/rdf.png ] && [ -s free1/msd.png ] &&
+   grep -q "Error against run time" free1/report.md && "$PELOID" report lat2.5 > /dev/null && [ -s lat2.5/clusters.png ]
+then ok "peloid report: report.md with g(r), MSD, cluster plots and the error table"
+else bad "peloid report"; fi
 echo "observers.sh: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -1,0 +1,172 @@
+#!/usr/bin/python3
+"""The report of a run: OUTDIR/report.md with a PNG plot of every observable
+the run measured, each with its error bars, and the error-against-time table.
+
+    /usr/bin/python3 tools/report.py OUTDIR        (or: peloid report OUTDIR)
+
+Reads OUTDIR/summary.json, OUTDIR/observables.h5 (H5MD /observables, written
+by the observers of the scene's observe{} section) and OUTDIR/thermo.tsv.
+
+  g(r)       colloid_rdf: mean +- SE per bin, the contact-geometry distances
+             2R, (4/3) sqrt(6) R, 2 sqrt(3) R and 4R of touching spheres
+             (Hecht Sec. IX.C) marked.
+  MSD        colloid_msd: summed over axes, +- SE, with 6 D t of the fitted D
+             over its fit window.
+  clusters   cluster_number, largest_cluster, mean_cluster_size over time.
+  thermo     the temperature (and, with colloids, the colloid kinetic
+             energy and centre-of-mass height) over time.
+"""
+import json
+import math
+import os
+import sys
+
+import h5py
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def radius(summary):
+    try:
+        return float(summary["scene"]["colloids"]["radius"])
+    except (KeyError, TypeError, ValueError):
+        return None
+
+
+def plot_rdf(f, summary, outdir, lines):
+    g = f["observables/colloid_rdf"]
+    r, v, se = g["r"][:], g["value"][0], g["value_se"][0]
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.errorbar(r, v, yerr=se, fmt=".-", ms=3, lw=0.8, elinewidth=0.6, capsize=0, label="g(r) +- SE")
+    R = radius(summary)
+    if R:
+        for d, name in ((2 * R, "2R"), (4 / 3 * math.sqrt(6) * R, "(4/3)√6 R"), (2 * math.sqrt(3) * R, "2√3 R"),
+                        (4 * R, "4R")):
+            if d < r[-1]:
+                ax.axvline(d, color="grey", ls=":", lw=0.8)
+                ax.text(d, ax.get_ylim()[1] * 0.95, name, rotation=90, va="top", ha="right", fontsize=7)
+    ax.axhline(1.0, color="k", lw=0.5)
+    ax.set_xlabel("r [a0]")
+    ax.set_ylabel("g(r)")
+    ax.set_title(f"colloid g(r), {int(g['samples'][()])} samples")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "rdf.png"), dpi=120)
+    plt.close(fig)
+    lines += ["## Colloid g(r)", "", "![g(r)](rdf.png)", ""]
+
+
+def plot_msd(f, obs, outdir, lines):
+    g = f["observables/colloid_msd"]
+    lag, v, se = g["lag"][:], g["value"][:, 3], g["value_se"][:, 3]
+    m = lag > 0
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.errorbar(lag[m], v[m], yerr=se[m], fmt=".", ms=3, elinewidth=0.6, label="MSD (x+y+z) +- SE")
+    d = obs.get("colloid_D")
+    if d:
+        t = np.array(d["fit_window_t0"])
+        ax.plot(lag[m], 6 * d["value"] * lag[m], "r-", lw=0.8,
+                label=f"6 D t, D = {d['value']:.4g} ± {d['stderr']:.2g} a0²/t0")
+        ax.axvspan(t[0], t[1], color="r", alpha=0.08, label="fit window")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("lag [t0]")
+    ax.set_ylabel("MSD [a0²]")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "msd.png"), dpi=120)
+    plt.close(fig)
+    lines += ["## Colloid MSD and D", "", "![MSD](msd.png)", ""]
+
+
+def plot_clusters(f, obs, outdir, lines):
+    fig, axs = plt.subplots(3, 1, figsize=(6, 6), sharex=True)
+    for ax, name in zip(axs, ("cluster_number", "largest_cluster", "mean_cluster_size")):
+        g = f["observables/" + name]
+        ax.plot(g["time"][:], g["value"][:], lw=0.8)
+        e = obs.get(name)
+        if e:
+            ax.axhline(e["value"], color="r", lw=0.6)
+            ax.axhspan(e["value"] - e["stderr"], e["value"] + e["stderr"], color="r", alpha=0.15,
+                       label=f"mean {e['value']:.4g} ± {e['stderr']:.2g}" + ("" if e["plateau"] else " (no plateau)"))
+            ax.legend(fontsize=7)
+        ax.set_ylabel(name.replace("_", " "), fontsize=8)
+    axs[-1].set_xlabel("time [t0]")
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "clusters.png"), dpi=120)
+    plt.close(fig)
+    lines += ["## Clusters", "", "![clusters](clusters.png)", ""]
+
+
+def plot_thermo(outdir, lines):
+    path = os.path.join(outdir, "thermo.tsv")
+    if not os.path.exists(path):
+        return
+    data = np.genfromtxt(path, names=True, delimiter="\t")
+    if data.size < 2:
+        return
+    cols = [c for c in ("temperature", "c_kin_trans", "c_zcm") if c in data.dtype.names]
+    fig, axs = plt.subplots(len(cols), 1, figsize=(6, 1.8 * len(cols) + 0.6), sharex=True, squeeze=False)
+    for ax, c in zip(axs[:, 0], cols):
+        ax.plot(data["time"], data[c], lw=0.8)
+        ax.set_ylabel(c, fontsize=8)
+    axs[-1, 0].set_xlabel("time [t0]")
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "thermo.png"), dpi=120)
+    plt.close(fig)
+    lines += ["## Thermo", "", "![thermo](thermo.png)", ""]
+
+
+def error_table(obs, lines):
+    rows = [(k, v) for k, v in obs.items() if isinstance(v, dict) and "se_vs_time" in v]
+    if not rows:
+        return
+    lines += ["## Error against run time", "",
+              "| observable | value ± SE | SE at 1/8, 1/4, 1/2, 1 of the run (wall s) | wall s for the target |",
+              "|---|---|---|---|"]
+    for k, v in rows:
+        pts = ", ".join(f"{p['stderr']:.3g} ({p['wall_s']:.3g} s)" for p in v["se_vs_time"])
+        need = v.get("wall_s_for_target")
+        tgt = (f"{need:.3g} s for {100 * v['target_rel_error']:.3g} %"
+               + ("" if v.get("extrapolation_reliable", True) else " (no plateau: a lower bound)")) if need else "-"
+        lines.append(f"| {k} | {v['value']:.5g} ± {v['stderr']:.2g} {v['unit']} | {pts} | {tgt} |")
+    lines.append("")
+
+
+def main(argv):
+    if len(argv) != 2 or argv[1].startswith("-"):
+        print("usage: report.py OUTDIR", file=sys.stderr)
+        return 2
+    outdir = argv[1]
+    try:
+        summary = json.load(open(os.path.join(outdir, "summary.json")))
+    except OSError as e:
+        print(f"report: {outdir}/summary.json: {e.strerror}", file=sys.stderr)
+        return 2
+    obs = summary.get("observables", {})
+    lines = [f"# Report of {summary.get('scene_file', outdir)}", "",
+             f"steps {summary.get('first_step')}..{summary.get('last_step')}, "
+             f"{summary.get('wall_seconds', 0):.3g} s wall, {summary.get('threads')} thread(s)", ""]
+    h5 = os.path.join(outdir, "observables.h5")
+    if os.path.exists(h5):
+        with h5py.File(h5, "r") as f:
+            have = f["observables"] if "observables" in f else {}
+            if "colloid_rdf" in have:
+                plot_rdf(f, summary, outdir, lines)
+            if "colloid_msd" in have:
+                plot_msd(f, obs, outdir, lines)
+            if "cluster_number" in have:
+                plot_clusters(f, obs, outdir, lines)
+    plot_thermo(outdir, lines)
+    error_table(obs, lines)
+    with open(os.path.join(outdir, "report.md"), "w") as out:
+        out.write("\n".join(lines))
+    print(f"report: {os.path.join(outdir, 'report.md')}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
