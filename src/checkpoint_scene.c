@@ -43,6 +43,7 @@ static void full_name(const pl_section_t *sec, const pl_key_t *k, char *buf, siz
 static int is_physics(const char *name)
 {
     if (!strncmp(name, "observe.", 8)) return 0; /* observers only read the state */
+    if (!strncmp(name, "stop.", 5)) return 0;    /* it ends a run, as steps does */
     for (size_t i = 0; i < sizeof not_physics / sizeof not_physics[0]; ++i)
         if (!strcmp(name, not_physics[i])) return 0;
     return 1;

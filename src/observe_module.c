@@ -103,6 +103,19 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
             return pl_scene_fail(sc, err, need[k].off, need[k].key,
                                  "%lld: the observer needs colloids (colloids.count = 0); allowed: 0 without colloids",
                                  need[k].v);
+    /* the stopping rule's observable needs its observer */
+    static const size_t stop_needs[] = {OFFO(msd_interval), OFFO(rdf_interval), OFFO(clusters_interval),
+                                        OFFO(clusters_interval), OFFO(clusters_interval)};
+    static const char *const stop_keys[] = {"observe.msd_interval", "observe.rdf_interval",
+                                            "observe.clusters_interval", "observe.clusters_interval",
+                                            "observe.clusters_interval"};
+    const int ob = sc->stop.observable - 1;
+    if (ob >= 0 && ob < OB_N && *(const long long *)((const char *)sc + stop_needs[ob]) <= 0)
+        return pl_scene_fail(sc, err, offsetof(pl_scene_t, stop.observable), "stop.observable",
+                             "\"%s\" needs its observer: %s > 0", ob_names[ob], stop_keys[ob]);
+    if (ob >= 0 && !(sc->stop.rel_error > 0))
+        return pl_scene_fail(sc, err, offsetof(pl_scene_t, stop.rel_error), "stop.rel_error",
+                             "%g with stop.observable; allowed: > 0", sc->stop.rel_error);
     if (o->rdf_interval > 0) {
         if (sc->box.walls_xy != PL_WALLS_NONE)
             return pl_scene_fail(sc, err, OFFO(rdf_interval), "observe.rdf_interval",
@@ -289,6 +302,22 @@ static int rdf_peak(const pl_observe_t *o, double *r, double *g, double *se)
     free(rm);
     return isfinite(*g) && isfinite(*se);
 }
+
+int pl_observe_estimate(const pl_sim_t *sim, int ob, double *value, double *se)
+{
+    const pl_observe_t *o = sim->observe;
+    double a, b;
+    if (!o || ob < 0 || ob >= OB_N) return 0;
+    if (ob == OB_D) return diffusion(o, value, se, &a, &b);
+    if (ob == OB_RDF_PEAK) return rdf_peak(o, &a, value, se);
+    if (!o->cl || o->cb[ob - OB_NCLUSTERS].n < 2) return 0;
+    pl_blocking_result_t r = pl_blocking_result(&o->cb[ob - OB_NCLUSTERS]);
+    *value = r.mean;
+    *se = r.se;
+    return isfinite(r.mean) && isfinite(r.se);
+}
+
+const char *pl_observe_name(int ob) { return ob >= 0 && ob < OB_N ? ob_names[ob] : "?"; }
 
 /* Records the estimates of every active observable at the fractions of the
  * run (1/8, 1/4, 1/2, 1). */
@@ -530,7 +559,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
     pl_json_t b = {err, path, "observables", 0};
     json_t *all = json_object();
     pl_json_int(&b, all, "first_step", o->first);
-    pl_json_int(&b, all, "last_step", o->last);
+    pl_json_int(&b, all, "last_step", sim->step); /* < o->last when the stopping rule ended the run */
     double D, se, tmin, tmax;
     if (o->msd && diffusion(o, &D, &se, &tmin, &tmax)) {
         json_t *e = entry(&b, o, OB_D, D, se, (double)sim->colloids->n, 0.0, 1, o->msd_wall, target, "a0^2/t0");

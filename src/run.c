@@ -220,7 +220,7 @@ static int loop(pl_sim_t *sim, writer_t *w, const pl_run_opts_t *o, long long la
     w->step_last_row = sim->step;
     double t_progress = t0;
     int rc = pl_sim_begin(sim, last, err);
-    while (!rc && sim->step < last) {
+    while (!rc && sim->step < last && !sim->stop_requested) {
         rc = pl_sim_step(sim, err);
         if (o->progress && omp_get_wtime() - t_progress > o->progress_interval_s) {
             report_progress(o, sim, t0, md0, 0);

@@ -106,7 +106,7 @@ static const pl_section_t *const sections[] = {
     &pl_scene_section_physical, &pl_scene_section_coarse_graining,
     &pl_scene_section_colloids, &pl_scene_section_dlvo, &pl_scene_section_hertz,
     &pl_scene_section_lubrication, &pl_scene_section_wca, &pl_scene_section_coupling,
-    &pl_scene_section_observe,
+    &pl_scene_section_observe, &pl_scene_section_stop,
 };
 
 const pl_section_t *const *pl_scene_sections(size_t *count)

@@ -37,3 +37,26 @@ static const pl_key_t observe_keys[] = {
 
 const pl_section_t pl_scene_section_observe = {"observe", "observers: measured quantities with error bars",
                                                observe_keys, N(observe_keys)};
+
+#undef OFF
+#define OFF(member) offsetof(pl_scene_t, stop.member)
+
+/* In the order of the observables of src/observe_module.c (after "none"). */
+static const char *const stop_choices[] = {"none", "colloid_D", "rdf_peak", "cluster_number", "largest_cluster",
+                                           "mean_cluster_size", NULL};
+
+static const pl_key_t stop_keys[] = {
+    {"observable", PL_KEY_CHOICE, OFF(observable), 0, 0, 0, stop_choices, 0, NULL, "-",
+     "end the run (final checkpoint and outputs written) once this observable's standard error is below "
+     "rel_error of its value; its observer must be on"},
+    {"rel_error", PL_KEY_REAL, OFF(rel_error), 0, 1, 0, NULL, 0.01, NULL, "-",
+     "the relative standard error that ends the run"},
+    {"check_interval", PL_KEY_INT, OFF(check_interval), 1, 1e15, 0, NULL, 100, NULL, "collision steps",
+     "the rule is checked every this many steps (from the state only: the same step for any thread count)"},
+    {"max_wall_s", PL_KEY_REAL, OFF(max_wall_s), 0, 1e12, 0, NULL, 0, NULL, "s",
+     "end the run after this much wall time (0: no limit); reported, and the one rule that depends on the "
+     "machine"},
+};
+
+const pl_section_t pl_scene_section_stop = {"stop", "stopping rule: end a run at a requested error", stop_keys,
+                                            N(stop_keys)};

@@ -140,7 +140,8 @@ void pl_sim_free(pl_sim_t *sim)
 int pl_sim_stage_due(const pl_sim_t *sim, const pl_stage_t *s, long long step)
 {
     if (s->except > 0 && step % s->except == 0) return 0;
-    return step % s->interval == 0 || (s->phase == PL_PHASE_AFTER && s->at_end && step == sim->last_step);
+    return step % s->interval == 0 ||
+           (s->phase == PL_PHASE_AFTER && s->at_end && (step == sim->last_step || sim->stop_requested));
 }
 
 static int run_stage(pl_sim_t *sim, pl_stage_t *s, pl_err_t *err)
@@ -155,6 +156,7 @@ int pl_sim_begin(pl_sim_t *sim, long long last, pl_err_t *err)
 {
     sim->first_step = sim->step;
     sim->last_step = last;
+    sim->run_wall_start = omp_get_wtime();
     for (int k = 0; k < sim->nstages; ++k) {
         pl_stage_t *s = &sim->stages[k];
         int rc;

@@ -16,6 +16,7 @@
 #    same at 1 and 2 threads;
 #  - summary.json carries value, stderr, se_vs_time at 1/8, 1/4, 1/2, 1 of the
 #    run; observables.h5 carries unit attributes;
+#  - the stopping rule stops at the first check where the target is met;
 #  - peloid report writes report.md with the plots of what the run measured.
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
@@ -101,6 +102,30 @@ with h5py.File("lat1.0/observables.h5") as f:
 print("gap 2.5: 1 cluster of 64; gap 1: 64 single colloids")
 PY
 ); then ok "clusters on a lattice: $out"; else bad "clusters on a lattice: $out"; fi
+# The stopping rule: stop at the first check (every 50 steps) where the
+# number of clusters (free colloids, bond gap 1) has a relative SE <= 1 %;
+# the same step at 1 and 2 threads; runs without the rule to that step and
+# to one check before show the SE on either side of the target (the
+# blocking average at a step does not depend on the planned run length).
+sed -e 's/^name = "free";/name = "stop";/' -e 's/rdf_interval = 10; rdf_start = 100; rdf_bins = 40; msd_interval = 1;/clusters_interval = 2; clusters_gap = 1.0;/' free.cfg > nostop.cfg
+{ cat nostop.cfg; echo 'stop: { observable = "cluster_number"; rel_error = 0.01; check_interval = 50; };'; } > stop.cfg
+"$PELOID" run stop.cfg --threads 1 --out stop1 2> /dev/null && "$PELOID" run stop.cfg --threads 2 --out stop2 2> /dev/null
+S=$($PY -c 'import json; print(json.load(open("stop1/summary.json"))["stop"]["step"])' 2> /dev/null || echo 0)
+S2=$($PY -c 'import json; print(json.load(open("stop2/summary.json"))["stop"]["step"])' 2> /dev/null || echo -1)
+if [ "$S" -gt 50 ] && [ "$S" -lt 6000 ] && [ "$S" = "$S2" ] &&
+   "$PELOID" run nostop.cfg --steps "$S" --out at 2> /dev/null &&
+   "$PELOID" run nostop.cfg --steps $((S - 50)) --out before 2> /dev/null &&
+   out=$($PY - <<'PY'
+import json
+rel = lambda d: (lambda e: e["stderr"] / abs(e["value"]))(json.load(open(d + "/summary.json"))["observables"]["cluster_number"])
+a, b = rel("at"), rel("before")
+assert a <= 0.01 < b, (a, b)
+print(f"relative SE {b:.4f} one check before, {a:.4f} at the stop")
+PY
+)
+then ok "stop rule: stopped at step $S (1 and 2 threads), $out"
+else bad "stop rule: stop step $S / $S2 ${out:-}"; fi
+
 if "$PELOID" report free1 > /dev/null && [ -s free1/report.md ] && [ -s free1/rdf.png ] && [ -s free1/msd.png ] &&
    grep -q "Error against run time" free1/report.md && "$PELOID" report lat2.5 > /dev/null && [ -s lat2.5/clusters.png ]
 then ok "peloid report: report.md with g(r), MSD, cluster plots and the error table"

@@ -41,5 +41,11 @@ extern const pl_module_t pl_fluid_module;    /* src/fluid_stages.c */
 extern const pl_module_t pl_colloid_module;  /* src/colloid_module.c */
 extern const pl_module_t pl_coupling_module; /* src/coupling_module.c */
 extern const pl_module_t pl_observe_module;  /* src/observe_module.c */
+extern const pl_module_t pl_stop_module;     /* src/stop_module.c */
+
+/* The present estimate and SE of observable ob (stop.observable - 1);
+ * 0 when it has none yet (src/observe_module.c). */
+int pl_observe_estimate(const pl_sim_t *sim, int ob, double *value, double *se);
+const char *pl_observe_name(int ob);
 
 #endif

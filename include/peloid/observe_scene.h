@@ -14,4 +14,15 @@ typedef struct {
     double target_rel_error;           /* the error-against-time report's target */
 } pl_scene_observe_t;
 
+/* Section `stop`: end the run when an observable's relative SE reaches
+ * rel_error (checked every check_interval steps, from the state only: the
+ * same step for any thread count), or after max_wall_s of wall time. */
+enum { PL_STOP_NONE = 0 }; /* else 1 + the observable's index (src/observe_module.c) */
+typedef struct {
+    int observable;
+    double rel_error;
+    long long check_interval;
+    double max_wall_s; /* 0: no wall-time limit */
+} pl_scene_stop_t;
+
 #endif

@@ -107,6 +107,7 @@ typedef struct pl_scene {
     pl_scene_colloids_t colloids; /* colloid module (colloid_scene.h) */
     pl_scene_coupling_t coupling; /* colloid-solvent coupling (coupling_scene.h) */
     pl_scene_observe_t observe;   /* observers (observe_scene.h) */
+    pl_scene_stop_t stop;         /* stopping rule (observe_scene.h) */
 } pl_scene_t;
 
 /* The one kT of a scene (model units): the thermostat's target, else the
@@ -167,7 +168,7 @@ extern const pl_section_t pl_scene_section_physical, pl_scene_section_coarse_gra
 extern const pl_section_t pl_scene_section_colloids, pl_scene_section_dlvo, pl_scene_section_hertz,
     pl_scene_section_lubrication, pl_scene_section_wca;
 extern const pl_section_t pl_scene_section_coupling;
-extern const pl_section_t pl_scene_section_observe;
+extern const pl_section_t pl_scene_section_observe, pl_scene_section_stop;
 
 /* Cross-key checks of the observe section (src/observe_module.c). */
 int pl_observe_validate_scene(const pl_scene_t *scene, pl_err_t *err);

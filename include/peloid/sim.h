@@ -104,6 +104,11 @@ struct pl_sim {
     pl_stage_t stages[PL_MAX_STAGES];
     int nstages;
     long long first_step, last_step; /* of the present run (pl_sim_begin) */
+    /* a stage ended the run at this step (the stopping rule); the
+     * after-step stages that write the last state see it at once */
+    int stop_requested;
+    char stop_reason[160];
+    double run_wall_start; /* wall clock at pl_sim_begin */
 };
 
 /* Builds state (fresh initialisation) and plan from a validated scene. */
