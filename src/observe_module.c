@@ -12,6 +12,9 @@
  *             the lags in [T/40, T/4] of the sampled span T (the long-time
  *             regime with at least 4 independent origins per lag; Hecht
  *             Eq. 36, PL Sec. VI.C), its SE over colloids.
+ *   velocity  fluid and colloid velocity components, scaled by sqrt(M / kT)
+ *   distr.    about their mean, histogrammed (peloid/vdist.h): chi^2 against
+ *             the unit Gaussian of Maxwell-Boltzmann (Hecht Figs. 2, 8).
  *   clusters  bond = surface gap below observe.clusters_gap, union-find over
  *             linked cells (peloid/cluster.h; Hecht Figs. 9, 14): number of
  *             clusters, largest, mean size per sample; their time averages
@@ -41,8 +44,9 @@
 #include "peloid/module.h"
 #include "peloid/mtau.h"
 #include "peloid/rdf.h"
+#include "peloid/vdist.h"
 
-enum { NFRAC = 4, MSD_P = 16, MSD_M = 2 };
+enum { NFRAC = 4, MSD_P = 16, MSD_M = 2, VD_BINS = 60 };
 static const double fractions[NFRAC] = {0.125, 0.25, 0.5, 1.0};
 
 /* Observables of the error-against-time report. */
@@ -76,6 +80,11 @@ typedef struct pl_observe {
     uint64_t *c_hist; /* size distribution summed over samples */
     size_t c_hist_len;
     double cl_wall;
+    /* velocity distributions: 0 fluid, 1 colloids */
+    pl_vdist_t *vd[2];
+    double *vs[3]; /* scaled components, fluid count (>= colloid count) */
+    size_t vs_n;
+    double vd_wall;
     /* error against run time */
     ept_t ept[OB_N][NFRAC];
     int next_frac;
@@ -83,7 +92,7 @@ typedef struct pl_observe {
 
 static int any_observer(const pl_scene_observe_t *o)
 {
-    return o->rdf_interval > 0 || o->msd_interval > 0 || o->clusters_interval > 0;
+    return o->rdf_interval > 0 || o->msd_interval > 0 || o->clusters_interval > 0 || o->vdist_interval > 0;
 }
 
 /* ---- scene checks ------------------------------------------------------ */
@@ -97,6 +106,7 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
         {o->rdf_interval, OFFO(rdf_interval), "observe.rdf_interval"},
         {o->msd_interval, OFFO(msd_interval), "observe.msd_interval"},
         {o->clusters_interval, OFFO(clusters_interval), "observe.clusters_interval"},
+        {o->vdist_interval, OFFO(vdist_interval), "observe.vdist_interval"},
     };
     for (size_t k = 0; k < sizeof need / sizeof need[0]; ++k)
         if (need[k].v > 0 && sc->colloids.count == 0)
@@ -151,7 +161,10 @@ static void observe_destroy(pl_sim_t *sim)
     pl_rdf_free(o->rdf);
     pl_mtau_free(o->msd);
     pl_cluster_free(o->cl);
+    pl_vdist_free(o->vd[0]);
+    pl_vdist_free(o->vd[1]);
     for (int d = 0; d < 3; ++d) {
+        free(o->vs[d]);
         free(o->u[d]);
         free(o->c_val[d]);
     }
@@ -265,6 +278,53 @@ static int stage_clusters(pl_sim_t *sim, void *ctx, pl_err_t *err)
     const uint64_t *h = pl_cluster_size_hist(o->cl, &len);
     for (size_t s = 0; s < len && s < o->c_hist_len; ++s) o->c_hist[s] += h[s];
     o->cl_wall += omp_get_wtime() - t0;
+    return 0;
+}
+
+/* Velocity components scaled to the unit Gaussian: (v - <v>) sqrt(M / kT). */
+static void scale_components(double *const out[3], size_t n, const double *const v[3], const double *mass,
+                             double kT)
+{
+    for (int d = 0; d < 3; ++d) {
+        double m = 0.0;
+        for (size_t i = 0; i < n; ++i) m += v[d][i]; /* fixed order */
+        m /= (double)n;
+        for (size_t i = 0; i < n; ++i) out[d][i] = (v[d][i] - m) * sqrt((mass ? mass[i] : 1.0) / kT);
+    }
+}
+
+static int stage_vdist(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    pl_observe_t *o = ctx;
+    if (sim->step < sim->scene.observe.vdist_start) return 0;
+    const double t0 = omp_get_wtime();
+    const pl_colloid_t *c = sim->colloids;
+    const size_t nf = sim->fluid.n;
+    if (!o->vd[1]) {
+        pl_vdist_params_t p = {.nbins = VD_BINS, .vmax = 4.0}; /* unit Gaussian: 4 sigma, the tails apart */
+        for (int k = 0; k < 2; ++k) {
+            int rc = pl_vdist_create(&p, &o->vd[k], err);
+            if (rc) return rc;
+        }
+        o->vs_n = nf > c->n ? nf : c->n;
+        for (int d = 0; d < 3; ++d)
+            if (!(o->vs[d] = malloc(o->vs_n * sizeof(double))))
+                return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the velocity-distribution observer");
+    }
+    const double kT = pl_scene_kT(&sim->scene);
+    if (nf > 1) {
+        for (int d = 0; d < 3; ++d)
+            for (size_t i = 0; i < nf; ++i) o->vs[d][i] = (double)sim->fluid.v[d][i];
+        const double *const v[3] = {o->vs[0], o->vs[1], o->vs[2]};
+        scale_components(o->vs, nf, v, NULL, kT);
+        pl_vdist_sample(o->vd[0], nf, o->vs[0], o->vs[1], o->vs[2]);
+    }
+    if (c->n > 1 && c->integrator != PL_CINT_BROWNIAN) {
+        const double *const v[3] = {c->vx, c->vy, c->vz};
+        scale_components(o->vs, c->n, v, c->mass, kT);
+        pl_vdist_sample(o->vd[1], c->n, o->vs[0], o->vs[1], o->vs[2]);
+    }
+    o->vd_wall += omp_get_wtime() - t0;
     return 0;
 }
 
@@ -391,6 +451,11 @@ static void observe_stages(pl_sim_t *sim)
                         .at_start = 1};
         pl_sim_add_stage(sim, &s, NULL);
     }
+    if (so->vdist_interval > 0) {
+        pl_stage_t s = {.name = "observe-vdist", .fn = stage_vdist, .ctx = o, .interval = so->vdist_interval,
+                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
+        pl_sim_add_stage(sim, &s, NULL);
+    }
     pl_stage_t e = {.name = "observe-error-time", .fn = stage_error_time, .ctx = o, .interval = 1,
                     .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
     pl_sim_add_stage(sim, &e, NULL);
@@ -498,6 +563,23 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
         if (g >= 0) bad |= pl_h5_attr_str(g, "meaning", "value[s]: clusters of s colloids, summed over samples") != 0;
         if (g >= 0 && H5Gclose(g) < 0) bad = 1;
     }
+    static const char *const vname[2] = {"fluid_velocity_distribution", "colloid_velocity_distribution"};
+    for (int k = 0; !bad && k < 2; ++k) {
+        uint64_t tot = 0; /* no sample (e.g. Brownian colloids have no velocity): no group */
+        for (size_t b = 0; o->vd[k] && b < VD_BINS + 2; ++b) tot += pl_vdist_counts(o->vd[k], 3)[b];
+        if (!tot) continue;
+        hid_t g = pl_h5_group(obs, vname[k]);
+        bad |= g < 0;
+        uint64_t buf[4 * (VD_BINS + 2)];
+        for (int a = 0; a < 4; ++a)
+            memcpy(buf + (VD_BINS + 2) * a, pl_vdist_counts(o->vd[k], a), (VD_BINS + 2) * sizeof(uint64_t));
+        hsize_t d2[2] = {4, VD_BINS + 2};
+        if (!bad) bad |= put(g, "value", H5T_NATIVE_UINT64, 2, d2, buf, "1") != 0;
+        if (!bad)
+            bad |= pl_h5_attr_str(g, "meaning", "counts of (v - <v>) sqrt(M/kT) per axis x, y, z, all: bin 0 below "
+                                                "-4, bins 1..60 of width 2/15 over [-4, 4], bin 61 above 4") != 0;
+        if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+    }
     if (obs >= 0 && H5Gclose(obs) < 0) bad = 1;
     if (bad) {
         char why[256];
@@ -588,6 +670,22 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
                           o->cl_wall, target, "1");
         pl_json_int(&b, e, "samples", (long long)o->cb[k].n);
         pl_json_set(&b, all, ob_names[OB_NCLUSTERS + k], e);
+    }
+    static const char *const vkey[2] = {"fluid_velocity_chi2", "colloid_velocity_chi2"};
+    for (int k = 0; k < 2; ++k) {
+        double chi2, p;
+        int dof;
+        pl_err_t ignore = {0, ""};
+        uint64_t tot = 0;
+        for (size_t bb = 0; o->vd[k] && bb < VD_BINS + 2; ++bb) tot += pl_vdist_counts(o->vd[k], 3)[bb];
+        if (!tot || pl_vdist_chi2(o->vd[k], 3, 1.0, &chi2, &dof, &p, &ignore)) continue;
+        json_t *e = json_object();
+        pl_json_real(&b, e, "chi2", chi2);
+        pl_json_int(&b, e, "dof", dof);
+        pl_json_real(&b, e, "p_value", p);
+        pl_json_real(&b, e, "wall_s", o->vd_wall);
+        pl_json_str(&b, e, "against", "unit Gaussian of (v - <v>) sqrt(M/kT), all axes (Maxwell-Boltzmann)");
+        pl_json_set(&b, all, vkey[k], e);
     }
     pl_json_set(&b, doc, "observables", all);
     return b.failed ? err->code : 0;

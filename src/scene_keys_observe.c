@@ -31,6 +31,13 @@ static const pl_key_t observe_keys[] = {
      "first step the clusters are counted"},
     {"clusters_gap", PL_KEY_REAL, OFF(clusters_gap), -1e6, 1e6, 0, NULL, 0.1, NULL, "a0",
      "two colloids are bonded when their surface gap r - R_i - R_j is below this"},
+    {"vdist_interval", PL_KEY_INT, OFF(vdist_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "velocity components of the fluid and of the colloids every this many steps (0: off), each scaled by "
+     "sqrt(M / kT) (kT of the thermostat, else of the fluid) minus the mean: histograms and chi^2 against "
+     "the unit Gaussian of Maxwell-Boltzmann (Hecht Figs. 2, 8); samples closer than the velocity "
+     "correlation time are not independent"},
+    {"vdist_start", PL_KEY_INT, OFF(vdist_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "first step the velocity distributions sample"},
     {"target_rel_error", PL_KEY_REAL, OFF(target_rel_error), 0, 1, PL_KEY_MIN_OPEN, NULL, 0.01, NULL, "-",
      "relative standard error the end-of-run report extrapolates the needed wall time to (SE ~ 1/sqrt(t))"},
 };

@@ -16,6 +16,7 @@
 #    same at 1 and 2 threads;
 #  - summary.json carries value, stderr, se_vs_time at 1/8, 1/4, 1/2, 1 of the
 #    run; observables.h5 carries unit attributes;
+#  - velocity distributions against Maxwell-Boltzmann;
 #  - the stopping rule stops at the first check where the target is met;
 #  - peloid report writes report.md with the plots of what the run measured.
 set -u
@@ -102,6 +103,36 @@ with h5py.File("lat1.0/observables.h5") as f:
 print("gap 2.5: 1 cluster of 64; gap 1: 64 single colloids")
 PY
 ); then ok "clusters on a lattice: $out"; else bad "clusters on a lattice: $out"; fi
+# Velocity distributions (Hecht Fig. 2): a fluid started from the uniform
+# (square-well) distribution is rejected at step 0 (p < 1e-6 with 25600
+# components), and sampled from step 100 on (relaxed within a few collision
+# times) it is Maxwell-Boltzmann (p > 1e-3; chance of a false failure
+# 0.1 %), as are the coupling II colloids' velocities.
+cat > vd.cfg <<'CFG'
+name = "vd";
+seed = 5;
+steps = 200;
+box: { cells = [8, 8, 8]; };
+fluid: { density = 5.0; init_velocity = "uniform"; };
+srd: { dt = 0.5; };
+colloids: { count = 8; radius = 1.5; mass_density = 5.0; init = "lattice"; pairs = "hertz"; substeps = 20; };
+coupling: { method = "hecht2"; };
+observe: { vdist_interval = VDI; };
+CFG
+sed 's/VDI/1000000/' vd.cfg > vd0.cfg; sed -e 's/VDI/20; vdist_start = 100/' -e 's/^steps = 200;/steps = 400;/' vd.cfg > vd1.cfg
+"$PELOID" run vd0.cfg --steps 0 --out vd0 2> /dev/null; "$PELOID" run vd1.cfg --out vd1 2> /dev/null
+if out=$($PY - <<'PY'
+import json, h5py
+p0 = json.load(open("vd0/summary.json"))["observables"]["fluid_velocity_chi2"]["p_value"]
+o = json.load(open("vd1/summary.json"))["observables"]
+p1 = o["fluid_velocity_chi2"]["p_value"]; pc = o["colloid_velocity_chi2"]["p_value"]
+assert p0 < 1e-6 and p1 > 1e-3 and pc > 1e-3, (p0, p1, pc)
+with h5py.File("vd1/observables.h5") as f:
+    assert f["observables/fluid_velocity_distribution/value"].shape == (4, 62)
+print(f"uniform start p = {p0:.2g}; after relaxation fluid p = {p1:.3f}, colloids p = {pc:.3f}")
+PY
+); then ok "velocity distributions: $out"; else bad "velocity distributions: $out"; fi
+
 # The stopping rule: stop at the first check (every 50 steps) where the
 # number of clusters (free colloids, bond gap 1) has a relative SE <= 1 %;
 # the same step at 1 and 2 threads; runs without the rule to that step and

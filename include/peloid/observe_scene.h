@@ -11,6 +11,7 @@ typedef struct {
     long long msd_interval, msd_start; /* colloid MSD, multiple-tau */
     long long clusters_interval, clusters_start;
     double clusters_gap;               /* bond: surface gap below this */
+    long long vdist_interval, vdist_start; /* velocity distributions against Maxwell-Boltzmann */
     double target_rel_error;           /* the error-against-time report's target */
 } pl_scene_observe_t;
 
