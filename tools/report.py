@@ -13,6 +13,8 @@ by the observers of the scene's observe{} section) and OUTDIR/thermo.tsv.
   MSD        colloid_msd: summed over axes, +- SE, with 6 D t of the fitted D
              over its fit window.
   clusters   cluster_number, largest_cluster, mean_cluster_size over time.
+  velocities fluid and colloid velocity distributions against Maxwell-
+             Boltzmann, with the chi^2 p-value.
   thermo     the temperature (and, with colloids, the colloid kinetic
              energy and centre-of-mass height) over time.
 """
@@ -101,6 +103,33 @@ def plot_clusters(f, obs, outdir, lines):
     lines += ["## Clusters", "", "![clusters](clusters.png)", ""]
 
 
+def plot_vdist(f, obs, outdir, lines):
+    names = [n for n in ("fluid_velocity_distribution", "colloid_velocity_distribution") if n in f["observables"]]
+    fig, ax = plt.subplots(figsize=(6, 4))
+    edges = np.linspace(-4, 4, 61)
+    mid, w = 0.5 * (edges[1:] + edges[:-1]), edges[1] - edges[0]
+    for n in names:
+        h = f["observables/" + n + "/value"][3].astype(float)  # all axes
+        tot = h.sum()
+        dens = h[1:-1] / (tot * w)
+        err = np.sqrt(h[1:-1]) / (tot * w)
+        key = n.replace("_distribution", "_chi2")
+        p = obs.get(key, {}).get("p_value")
+        ax.errorbar(mid, dens, yerr=err, fmt=".", ms=3, elinewidth=0.6,
+                    label=n.split("_")[0] + (f" (chi² p = {p:.3g})" if p is not None else ""))
+    x = np.linspace(-4, 4, 400)
+    ax.plot(x, np.exp(-x * x / 2) / math.sqrt(2 * math.pi), "k-", lw=0.8, label="Maxwell-Boltzmann")
+    ax.set_yscale("log")
+    ax.set_ylim(1e-5, 1)
+    ax.set_xlabel("(v - <v>) sqrt(M / kT)")
+    ax.set_ylabel("probability density")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "vdist.png"), dpi=120)
+    plt.close(fig)
+    lines += ["## Velocity distributions", "", "![velocity distributions](vdist.png)", ""]
+
+
 def plot_thermo(outdir, lines):
     path = os.path.join(outdir, "thermo.tsv")
     if not os.path.exists(path):
@@ -160,6 +189,8 @@ def main(argv):
                 plot_msd(f, obs, outdir, lines)
             if "cluster_number" in have:
                 plot_clusters(f, obs, outdir, lines)
+            if "fluid_velocity_distribution" in have or "colloid_velocity_distribution" in have:
+                plot_vdist(f, obs, outdir, lines)
     plot_thermo(outdir, lines)
     error_table(obs, lines)
     with open(os.path.join(outdir, "report.md"), "w") as out:
