@@ -15,6 +15,12 @@
  *   velocity  fluid and colloid velocity components, scaled by sqrt(M / kT)
  *   distr.    about their mean, histogrammed (peloid/vdist.h): chi^2 against
  *             the unit Gaussian of Maxwell-Boltzmann (Hecht Figs. 2, 8).
+ *   sediment  the colloid volume fraction phi(z) (exact sphere slices), the
+ *             mean (unwrapped) height h, <v_z> of the colloids; the settling
+ *             velocity between samples, (h_k - h_{k-1}) / dt minus the fluid's
+ *             mean velocity, whose blocking average is the (hindered)
+ *             settling velocity of Hecht Eq. 37 (Richardson-Zaki) in a
+ *             homogeneous suspension.
  *   clusters  bond = surface gap below observe.clusters_gap, union-find over
  *             linked cells (peloid/cluster.h; Hecht Figs. 9, 14): number of
  *             clusters, largest, mean size per sample; their time averages
@@ -50,9 +56,9 @@ enum { NFRAC = 4, MSD_P = 16, MSD_M = 2, VD_BINS = 60 };
 static const double fractions[NFRAC] = {0.125, 0.25, 0.5, 1.0};
 
 /* Observables of the error-against-time report. */
-enum { OB_D, OB_RDF_PEAK, OB_NCLUSTERS, OB_LARGEST, OB_MEANSIZE, OB_N };
+enum { OB_D, OB_RDF_PEAK, OB_NCLUSTERS, OB_LARGEST, OB_MEANSIZE, OB_SETTLING, OB_N };
 static const char *const ob_names[OB_N] = {"colloid_D", "rdf_peak", "cluster_number", "largest_cluster",
-                                           "mean_cluster_size"};
+                                           "mean_cluster_size", "settling_velocity"};
 
 typedef struct {
     long long step;
@@ -85,6 +91,12 @@ typedef struct pl_observe {
     double *vs[3]; /* scaled components, fluid count (>= colloid count) */
     size_t vs_n;
     double vd_wall;
+    /* sedimentation: phi(z) per sample, mean height, settling velocity */
+    size_t s_bins, s_n, s_cap;
+    long long *s_step;
+    double *s_phi, *s_height, *s_vz, *s_vel; /* s_vel[k]: from heights k-1, k (k >= 1) */
+    pl_blocking_t s_vb; /* settling velocity */
+    double s_wall;
     /* error against run time */
     ept_t ept[OB_N][NFRAC];
     int next_frac;
@@ -92,7 +104,8 @@ typedef struct pl_observe {
 
 static int any_observer(const pl_scene_observe_t *o)
 {
-    return o->rdf_interval > 0 || o->msd_interval > 0 || o->clusters_interval > 0 || o->vdist_interval > 0;
+    return o->rdf_interval > 0 || o->msd_interval > 0 || o->clusters_interval > 0 || o->vdist_interval > 0 ||
+           o->sediment_interval > 0;
 }
 
 /* ---- scene checks ------------------------------------------------------ */
@@ -107,6 +120,7 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
         {o->msd_interval, OFFO(msd_interval), "observe.msd_interval"},
         {o->clusters_interval, OFFO(clusters_interval), "observe.clusters_interval"},
         {o->vdist_interval, OFFO(vdist_interval), "observe.vdist_interval"},
+        {o->sediment_interval, OFFO(sediment_interval), "observe.sediment_interval"},
     };
     for (size_t k = 0; k < sizeof need / sizeof need[0]; ++k)
         if (need[k].v > 0 && sc->colloids.count == 0)
@@ -115,10 +129,10 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
                                  need[k].v);
     /* the stopping rule's observable needs its observer */
     static const size_t stop_needs[] = {OFFO(msd_interval), OFFO(rdf_interval), OFFO(clusters_interval),
-                                        OFFO(clusters_interval), OFFO(clusters_interval)};
+                                        OFFO(clusters_interval), OFFO(clusters_interval), OFFO(sediment_interval)};
     static const char *const stop_keys[] = {"observe.msd_interval", "observe.rdf_interval",
                                             "observe.clusters_interval", "observe.clusters_interval",
-                                            "observe.clusters_interval"};
+                                            "observe.clusters_interval", "observe.sediment_interval"};
     const int ob = sc->stop.observable - 1;
     if (ob >= 0 && ob < OB_N && *(const long long *)((const char *)sc + stop_needs[ob]) <= 0)
         return pl_scene_fail(sc, err, offsetof(pl_scene_t, stop.observable), "stop.observable",
@@ -150,6 +164,7 @@ static int observe_create(pl_sim_t *sim, pl_err_t *err)
     pl_observe_t *o = calloc(1, sizeof *o);
     if (!o) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the observers");
     for (int k = 0; k < 3; ++k) pl_blocking_init(&o->cb[k]);
+    pl_blocking_init(&o->s_vb);
     sim->observe = o;
     return 0;
 }
@@ -170,6 +185,11 @@ static void observe_destroy(pl_sim_t *sim)
     }
     free(o->c_step);
     free(o->c_hist);
+    free(o->s_step);
+    free(o->s_phi);
+    free(o->s_height);
+    free(o->s_vel);
+    free(o->s_vz);
     free(o);
     sim->observe = NULL;
 }
@@ -328,6 +348,71 @@ static int stage_vdist(pl_sim_t *sim, void *ctx, pl_err_t *err)
     return 0;
 }
 
+/* Volume of the part of a sphere (centre zc, radius R) between z = a and b. */
+static double slice_volume(double zc, double R, double a, double b)
+{
+    double lo = fmax(a, zc - R) - zc, hi = fmin(b, zc + R) - zc;
+    if (hi <= lo) return 0.0;
+    return PL_PI * (R * R * (hi - lo) - (hi * hi * hi - lo * lo * lo) / 3.0);
+}
+
+static int stage_sediment(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    pl_observe_t *o = ctx;
+    const pl_scene_t *sc = &sim->scene;
+    if (sim->step < sc->observe.sediment_start) return 0;
+    const double t0 = omp_get_wtime();
+    const pl_colloid_t *c = sim->colloids;
+    const double Lz = c->box[2];
+    if (!o->s_step) {
+        o->s_bins = sc->observe.sediment_bins > 0 ? (size_t)sc->observe.sediment_bins : (size_t)Lz;
+        o->s_cap = expected_samples(o, sc->observe.sediment_start, sc->observe.sediment_interval);
+        o->s_step = malloc(o->s_cap * sizeof *o->s_step);
+        o->s_phi = calloc(o->s_cap * o->s_bins, sizeof(double));
+        o->s_height = malloc(o->s_cap * sizeof(double));
+        o->s_vel = malloc(o->s_cap * sizeof(double));
+        o->s_vz = malloc(o->s_cap * sizeof(double));
+        if (!o->s_step || !o->s_phi || !o->s_height || !o->s_vel || !o->s_vz)
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the sedimentation observer");
+    }
+    if (o->s_n >= o->s_cap) return 0;
+    double *phi = o->s_phi + o->s_n * o->s_bins;
+    const double dz = Lz / (double)o->s_bins, slab = c->box[0] * c->box[1] * dz;
+    double h = 0.0, v = 0.0;
+    for (size_t i = 0; i < c->n; ++i) { /* fixed order */
+        h += c->z[i] + (double)c->iz[i] * Lz;
+        v += c->vz[i];
+        const double R = c->rad[i];
+        /* the slabs the sphere cuts; periodic images in z wrap */
+        const long long b0 = (long long)floor((c->z[i] - R) / dz), b1 = (long long)floor((c->z[i] + R) / dz);
+        for (long long b = b0; b <= b1; ++b) {
+            long long bw = ((b % (long long)o->s_bins) + (long long)o->s_bins) % (long long)o->s_bins;
+            if (!c->periodic[2] && bw != b) continue;
+            phi[bw] += slice_volume(c->z[i], R, (double)b * dz, (double)(b + 1) * dz) / slab;
+        }
+    }
+    h /= (double)c->n;
+    v /= (double)c->n;
+    double uf = 0.0; /* the fluid's mean velocity (the back flow of a periodic box) */
+    if (sim->fluid.n > 0) {
+        pl_fluid_obs_t fo;
+        double kT;
+        pl_sim_observe(sim, &fo, &kT);
+        uf = fo.momentum[2] / (double)sim->fluid.n;
+    }
+    const size_t k = o->s_n;
+    o->s_step[k] = sim->step;
+    o->s_height[k] = h;
+    o->s_vz[k] = v - uf;
+    if (k > 0) { /* from the mean height (Brownian colloids have no velocity) */
+        o->s_vel[k] = (h - o->s_height[k - 1]) / ((double)(sim->step - o->s_step[k - 1]) * sc->srd.dt) - uf;
+        pl_blocking_add(&o->s_vb, o->s_vel[k]);
+    }
+    o->s_n++;
+    o->s_wall += omp_get_wtime() - t0;
+    return 0;
+}
+
 /* D = slope / 6 of the summed MSD over [T/40, T/4] (file header); 0 when
  * too few lags. */
 static int diffusion(const pl_observe_t *o, double *D, double *se, double *tmin, double *tmax)
@@ -370,8 +455,9 @@ int pl_observe_estimate(const pl_sim_t *sim, int ob, double *value, double *se)
     if (!o || ob < 0 || ob >= OB_N) return 0;
     if (ob == OB_D) return diffusion(o, value, se, &a, &b);
     if (ob == OB_RDF_PEAK) return rdf_peak(o, &a, value, se);
-    if (!o->cl || o->cb[ob - OB_NCLUSTERS].n < 2) return 0;
-    pl_blocking_result_t r = pl_blocking_result(&o->cb[ob - OB_NCLUSTERS]);
+    const pl_blocking_t *bl = ob == OB_SETTLING ? &o->s_vb : o->cl ? &o->cb[ob - OB_NCLUSTERS] : NULL;
+    if (!bl || bl->n < 2) return 0;
+    pl_blocking_result_t r = pl_blocking_result(bl);
     *value = r.mean;
     *se = r.se;
     return isfinite(r.mean) && isfinite(r.se);
@@ -401,10 +487,12 @@ static int stage_error_time(pl_sim_t *sim, void *ctx, pl_err_t *err)
         e[OB_RDF_PEAK]->valid = rdf_peak(o, &a, &e[OB_RDF_PEAK]->value, &e[OB_RDF_PEAK]->se);
         e[OB_RDF_PEAK]->plateau = 1;
         (void)c;
-        for (int k = 0; o->cl && k < 3; ++k) {
-            pl_blocking_result_t r = pl_blocking_result(&o->cb[k]);
+        for (int k = 0; k < 4; ++k) {
+            const pl_blocking_t *bl = k == 3 ? &o->s_vb : o->cl ? &o->cb[k] : NULL;
+            if (!bl) continue;
+            pl_blocking_result_t r = pl_blocking_result(bl);
             ept_t *q = e[OB_NCLUSTERS + k];
-            q->valid = o->cb[k].n >= 2 && isfinite(r.mean) && isfinite(r.se);
+            q->valid = bl->n >= 2 && isfinite(r.mean) && isfinite(r.se);
             q->value = r.mean;
             q->se = r.se;
             q->plateau = r.plateau;
@@ -454,6 +542,12 @@ static void observe_stages(pl_sim_t *sim)
     if (so->vdist_interval > 0) {
         pl_stage_t s = {.name = "observe-vdist", .fn = stage_vdist, .ctx = o, .interval = so->vdist_interval,
                         .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
+        pl_sim_add_stage(sim, &s, NULL);
+    }
+    if (so->sediment_interval > 0) {
+        pl_stage_t s = {.name = "observe-sediment", .fn = stage_sediment, .ctx = o,
+                        .interval = so->sediment_interval, .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE,
+                        .at_start = 1};
         pl_sim_add_stage(sim, &s, NULL);
     }
     pl_stage_t e = {.name = "observe-error-time", .fn = stage_error_time, .ctx = o, .interval = 1,
@@ -563,6 +657,31 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
         if (g >= 0) bad |= pl_h5_attr_str(g, "meaning", "value[s]: clusters of s colloids, summed over samples") != 0;
         if (g >= 0 && H5Gclose(g) < 0) bad = 1;
     }
+    if (!bad && o->s_n > 0) {
+        bad |= series(obs, "colloid_height", o->s_n, o->s_step, dt, o->s_height, "a0") != 0;
+        if (o->s_n > 1)
+            bad |= series(obs, "settling_velocity", o->s_n - 1, o->s_step + 1, dt, o->s_vel + 1, "a0/t0") != 0;
+        bad |= series(obs, "colloid_vz", o->s_n, o->s_step, dt, o->s_vz, "a0/t0") != 0;
+        hid_t g = pl_h5_group(obs, "colloid_phi_z");
+        bad |= g < 0;
+        if (!bad) {
+            double *t = malloc(o->s_n * sizeof(double)), *z = malloc(o->s_bins * sizeof(double));
+            bad |= !t || !z;
+            for (size_t k = 0; t && k < o->s_n; ++k) t[k] = (double)o->s_step[k] * dt;
+            const double dzb = sim->colloids->box[2] / (double)o->s_bins;
+            for (size_t k = 0; z && k < o->s_bins; ++k) z[k] = ((double)k + 0.5) * dzb;
+            hsize_t d1[1] = {o->s_n}, d2[2] = {o->s_n, o->s_bins}, dz1[1] = {o->s_bins};
+            if (!bad) {
+                bad |= put(g, "step", H5T_NATIVE_LLONG, 1, d1, o->s_step, NULL) != 0;
+                bad |= put(g, "time", H5T_NATIVE_DOUBLE, 1, d1, t, "t0") != 0;
+                bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, o->s_phi, "1") != 0;
+                bad |= put(g, "z", H5T_NATIVE_DOUBLE, 1, dz1, z, "a0") != 0;
+            }
+            free(t);
+            free(z);
+        }
+        if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+    }
     static const char *const vname[2] = {"fluid_velocity_distribution", "colloid_velocity_distribution"};
     for (int k = 0; !bad && k < 2; ++k) {
         uint64_t tot = 0; /* no sample (e.g. Brownian colloids have no velocity): no group */
@@ -670,6 +789,20 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
                           o->cl_wall, target, "1");
         pl_json_int(&b, e, "samples", (long long)o->cb[k].n);
         pl_json_set(&b, all, ob_names[OB_NCLUSTERS + k], e);
+    }
+    if (o->s_vb.n >= 2) {
+        pl_blocking_result_t res = pl_blocking_result(&o->s_vb);
+        if (isfinite(res.mean) && isfinite(res.se)) {
+            json_t *e = entry(&b, o, OB_SETTLING, res.mean, res.se, res.n_indep, res.inefficiency, res.plateau,
+                              o->s_wall, target, "a0/t0");
+            pl_json_int(&b, e, "samples", (long long)o->s_vb.n);
+            if (sim->scene.mapping.enabled) { /* a0/t0 -> m/s */
+                const pl_mapping_t *m = &sim->scene.mapping.map;
+                pl_json_real(&b, e, "value_m_per_s", res.mean * m->a0 / m->t0);
+                pl_json_real(&b, e, "stderr_m_per_s", res.se * m->a0 / m->t0);
+            }
+            pl_json_set(&b, all, "settling_velocity", e);
+        }
     }
     static const char *const vkey[2] = {"fluid_velocity_chi2", "colloid_velocity_chi2"};
     for (int k = 0; k < 2; ++k) {

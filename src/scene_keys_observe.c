@@ -38,6 +38,14 @@ static const pl_key_t observe_keys[] = {
      "correlation time are not independent"},
     {"vdist_start", PL_KEY_INT, OFF(vdist_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "first step the velocity distributions sample"},
+    {"sediment_interval", PL_KEY_INT, OFF(sediment_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "sedimentation every this many steps (0: off): the colloid volume-fraction profile phi(z) (exact sphere "
+     "slices), the mean height (unwrapped z) and the settling velocity <v_z> of the colloids relative to the "
+     "fluid's mean; its time average with the blocking SE is the (hindered) settling velocity of Hecht Eq. 37"},
+    {"sediment_start", PL_KEY_INT, OFF(sediment_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "first step the sedimentation observer samples"},
+    {"sediment_bins", PL_KEY_INT, OFF(sediment_bins), 0, 1e6, 0, NULL, 0, NULL, "-",
+     "slabs of phi(z) over the box height (0: one per collision cell)"},
     {"target_rel_error", PL_KEY_REAL, OFF(target_rel_error), 0, 1, PL_KEY_MIN_OPEN, NULL, 0.01, NULL, "-",
      "relative standard error the end-of-run report extrapolates the needed wall time to (SE ~ 1/sqrt(t))"},
 };
@@ -50,7 +58,7 @@ const pl_section_t pl_scene_section_observe = {"observe", "observers: measured q
 
 /* In the order of the observables of src/observe_module.c (after "none"). */
 static const char *const stop_choices[] = {"none", "colloid_D", "rdf_peak", "cluster_number", "largest_cluster",
-                                           "mean_cluster_size", NULL};
+                                           "mean_cluster_size", "settling_velocity", NULL};
 
 static const pl_key_t stop_keys[] = {
     {"observable", PL_KEY_CHOICE, OFF(observable), 0, 0, 0, stop_choices, 0, NULL, "-",

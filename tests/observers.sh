@@ -17,6 +17,7 @@
 #  - summary.json carries value, stderr, se_vs_time at 1/8, 1/4, 1/2, 1 of the
 #    run; observables.h5 carries unit attributes;
 #  - velocity distributions against Maxwell-Boltzmann;
+#  - the settling velocity and phi(z) of sedimenting Brownian colloids;
 #  - the stopping rule stops at the first check where the target is met;
 #  - peloid report writes report.md with the plots of what the run measured.
 set -u
@@ -132,6 +133,36 @@ with h5py.File("vd1/observables.h5") as f:
 print(f"uniform start p = {p0:.2g}; after relaxation fluid p = {p1:.3f}, colloids p = {pc:.3f}")
 PY
 ); then ok "velocity distributions: $out"; else bad "velocity distributions: $out"; fi
+
+# Sedimentation of free Brownian colloids in a periodic box under gravity
+# g = -0.02: the settling velocity from the mean height is M g / (6 pi eta R)
+# within 3 SE (blocking over 400 samples); phi(z) of every sample sums to
+# the colloids' volume fraction N (4/3) pi R^3 / V (exact slices: 1e-12).
+cat > sed.cfg <<'CFG'
+name = "sed";
+seed = 5;
+steps = 4000;
+box: { cells = [16, 16, 16]; };
+fluid: { density = 0.0; };
+srd: { dt = 0.1; };
+colloids: { count = 64; radius = 1.0; mass_density = 1.0; init = "random"; pairs = ""; integrator = "brownian";
+  bd_viscosity = 0.02; substeps = 1; max_overlap = 1.0; gravity = [0.0, 0.0, -0.02]; };
+observe: { sediment_interval = 10; };
+CFG
+"$PELOID" run sed.cfg --out sed 2> /dev/null || bad "sedimentation run"
+if out=$($PY - <<'PY'
+import json, math, h5py, numpy as np
+e = json.load(open("sed/summary.json"))["observables"]["settling_velocity"]
+M = 4 / 3 * math.pi
+v0 = -M * 0.02 / (6 * math.pi * 0.02)
+assert abs(e["value"] - v0) < 3 * e["stderr"], (e["value"], e["stderr"], v0)
+with h5py.File("sed/observables.h5") as f:
+    phi = f["observables/colloid_phi_z/value"][:]
+phi_tot = 64 * M / 16**3
+assert np.max(np.abs(phi.mean(axis=1) - phi_tot)) < 1e-12 * phi_tot, np.max(np.abs(phi.mean(axis=1) - phi_tot))
+print(f"v = {e['value']:.4f} +- {e['stderr']:.4f} vs M g / (6 pi eta R) = {v0:.4f}; phi(z) sums to {phi_tot:.5f}")
+PY
+); then ok "sedimentation: $out"; else bad "sedimentation: $out"; fi
 
 # The stopping rule: stop at the first check (every 50 steps) where the
 # number of clusters (free colloids, bond gap 1) has a relative SE <= 1 %;

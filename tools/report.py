@@ -13,6 +13,7 @@ by the observers of the scene's observe{} section) and OUTDIR/thermo.tsv.
   MSD        colloid_msd: summed over axes, +- SE, with 6 D t of the fitted D
              over its fit window.
   clusters   cluster_number, largest_cluster, mean_cluster_size over time.
+  sediment   phi(z, t) and the mean height with the settling velocity.
   velocities fluid and colloid velocity distributions against Maxwell-
              Boltzmann, with the chi^2 p-value.
   thermo     the temperature (and, with colloids, the colloid kinetic
@@ -130,6 +131,31 @@ def plot_vdist(f, obs, outdir, lines):
     lines += ["## Velocity distributions", "", "![velocity distributions](vdist.png)", ""]
 
 
+def plot_sediment(f, obs, outdir, lines):
+    g = f["observables/colloid_phi_z"]
+    t, z, phi = g["time"][:], g["z"][:], g["value"][:]
+    fig, axs = plt.subplots(1, 2, figsize=(9, 3.8))
+    im = axs[0].imshow(phi.T, origin="lower", aspect="auto", extent=[t[0], t[-1], 0, z[-1] + z[0]], cmap="viridis")
+    fig.colorbar(im, ax=axs[0], label="phi")
+    axs[0].set_xlabel("time [t0]")
+    axs[0].set_ylabel("z [a0]")
+    axs[0].set_title("colloid volume fraction phi(z, t)")
+    h = f["observables/colloid_height"]
+    axs[1].plot(h["time"][:], h["value"][:], lw=0.8, label="mean height")
+    e = obs.get("settling_velocity")
+    if e:
+        t0, h0 = h["time"][0], h["value"][0]
+        axs[1].plot(t, h0 + e["value"] * (t - t0), "r--", lw=0.8,
+                    label=f"v = {e['value']:.4g} ± {e['stderr']:.2g} a0/t0")
+    axs[1].set_xlabel("time [t0]")
+    axs[1].set_ylabel("height [a0]")
+    axs[1].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "sediment_phi.png"), dpi=120)
+    plt.close(fig)
+    lines += ["## Sedimentation", "", "![phi(z, t)](sediment_phi.png)", ""]
+
+
 def plot_thermo(outdir, lines):
     path = os.path.join(outdir, "thermo.tsv")
     if not os.path.exists(path):
@@ -189,6 +215,8 @@ def main(argv):
                 plot_msd(f, obs, outdir, lines)
             if "cluster_number" in have:
                 plot_clusters(f, obs, outdir, lines)
+            if "colloid_phi_z" in have:
+                plot_sediment(f, obs, outdir, lines)
             if "fluid_velocity_distribution" in have or "colloid_velocity_distribution" in have:
                 plot_vdist(f, obs, outdir, lines)
     plot_thermo(outdir, lines)

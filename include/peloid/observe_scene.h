@@ -12,6 +12,7 @@ typedef struct {
     long long clusters_interval, clusters_start;
     double clusters_gap;               /* bond: surface gap below this */
     long long vdist_interval, vdist_start; /* velocity distributions against Maxwell-Boltzmann */
+    long long sediment_interval, sediment_start, sediment_bins; /* phi(z, t), settling velocity */
     double target_rel_error;           /* the error-against-time report's target */
 } pl_scene_observe_t;
 
