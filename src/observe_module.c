@@ -21,6 +21,8 @@
  *             mean velocity, whose blocking average is the (hindered)
  *             settling velocity of Hecht Eq. 37 (Richardson-Zaki) in a
  *             homogeneous suspension.
+ *   VACF      <v(0).v(t)> of the colloid velocities (multiple-tau, AUTO) and
+ *             the Green-Kubo D = (1/3) of its integral to T/4 (Hecht Eq. 35).
  *   clusters  bond = surface gap below observe.clusters_gap, union-find over
  *             linked cells (peloid/cluster.h; Hecht Figs. 9, 14): number of
  *             clusters, largest, mean size per sample; their time averages
@@ -77,6 +79,9 @@ typedef struct pl_observe {
     pl_mtau_t *msd;
     double *u[3]; /* unwrapped positions */
     double msd_dt, msd_wall;
+    /* VACF */
+    pl_mtau_t *vacf;
+    double vacf_dt, vacf_wall;
     /* clusters */
     pl_cluster_t *cl;
     pl_blocking_t cb[3]; /* number, largest, mean size */
@@ -104,7 +109,7 @@ typedef struct pl_observe {
 
 static int any_observer(const pl_scene_observe_t *o)
 {
-    return o->rdf_interval > 0 || o->msd_interval > 0 || o->clusters_interval > 0 || o->vdist_interval > 0 ||
+    return o->rdf_interval > 0 || o->msd_interval > 0 || o->vacf_interval > 0 || o->clusters_interval > 0 || o->vdist_interval > 0 ||
            o->sediment_interval > 0;
 }
 
@@ -118,6 +123,7 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
     const struct { long long v; size_t off; const char *key; } need[] = {
         {o->rdf_interval, OFFO(rdf_interval), "observe.rdf_interval"},
         {o->msd_interval, OFFO(msd_interval), "observe.msd_interval"},
+        {o->vacf_interval, OFFO(vacf_interval), "observe.vacf_interval"},
         {o->clusters_interval, OFFO(clusters_interval), "observe.clusters_interval"},
         {o->vdist_interval, OFFO(vdist_interval), "observe.vdist_interval"},
         {o->sediment_interval, OFFO(sediment_interval), "observe.sediment_interval"},
@@ -175,6 +181,7 @@ static void observe_destroy(pl_sim_t *sim)
     if (!o) return;
     pl_rdf_free(o->rdf);
     pl_mtau_free(o->msd);
+    pl_mtau_free(o->vacf);
     pl_cluster_free(o->cl);
     pl_vdist_free(o->vd[0]);
     pl_vdist_free(o->vd[1]);
@@ -258,6 +265,40 @@ static int stage_msd(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_mtau_add(o->msd, o->u[0], o->u[1], o->u[2], sim->nthreads);
     o->msd_wall += omp_get_wtime() - t0;
     return 0;
+}
+
+static int stage_vacf(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    pl_observe_t *o = ctx;
+    const pl_scene_t *sc = &sim->scene;
+    if (sim->step < sc->observe.vacf_start) return 0;
+    const double t0 = omp_get_wtime();
+    const pl_colloid_t *c = sim->colloids;
+    if (!o->vacf) {
+        const uint64_t ns = expected_samples(o, sc->observe.vacf_start, sc->observe.vacf_interval);
+        o->vacf_dt = (double)sc->observe.vacf_interval * sc->srd.dt;
+        pl_mtau_params_t p = {.n = c->n, .p = MSD_P, .m = MSD_M, .levels = pl_mtau_levels_for(ns, MSD_P, MSD_M),
+                              .kind = PL_MTAU_AUTO, .average = 0, .dt = o->vacf_dt};
+        int rc = pl_mtau_create(&p, &o->vacf, err);
+        if (rc) return rc;
+    }
+    pl_mtau_add(o->vacf, c->vx, c->vy, c->vz, sim->nthreads);
+    o->vacf_wall += omp_get_wtime() - t0;
+    return 0;
+}
+
+/* Green-Kubo D = (1/3) int_0^{T/4} <v(0).v(t)> dt (Hecht Eq. 35); 0 when
+ * too few lags. */
+static int green_kubo(const pl_observe_t *o, double *D, double *se, double *tmax)
+{
+    if (!o->vacf || pl_mtau_samples(o->vacf) < 8) return 0;
+    *tmax = 0.25 * (double)(pl_mtau_samples(o->vacf) - 1) * o->vacf_dt;
+    double s[PL_MTAU_COLS], e[PL_MTAU_COLS];
+    pl_err_t ignore = {0, ""};
+    if (pl_mtau_integral(o->vacf, *tmax, s, e, &ignore)) return 0;
+    *D = s[3] / 3.0;
+    *se = e[3] / 3.0;
+    return isfinite(*D) && isfinite(*se);
 }
 
 static int stage_clusters(pl_sim_t *sim, void *ctx, pl_err_t *err)
@@ -533,6 +574,11 @@ static void observe_stages(pl_sim_t *sim)
                         .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
         pl_sim_add_stage(sim, &s, NULL);
     }
+    if (so->vacf_interval > 0) {
+        pl_stage_t s = {.name = "observe-vacf", .fn = stage_vacf, .ctx = o, .interval = so->vacf_interval,
+                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
+        pl_sim_add_stage(sim, &s, NULL);
+    }
     if (so->clusters_interval > 0) {
         pl_stage_t s = {.name = "observe-clusters", .fn = stage_clusters, .ctx = o,
                         .interval = so->clusters_interval, .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE,
@@ -640,6 +686,30 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
             bad |= put(g, "origins", H5T_NATIVE_UINT64, 1, d1, org, NULL) != 0;
             bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, val, "a0^2") != 0;
             bad |= put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, se, "a0^2") != 0;
+            bad |= pl_h5_attr_str(g, "columns", "x y z sum") != 0;
+        }
+        if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+        free(lag);
+        free(org);
+    }
+    if (!bad && o->vacf && pl_mtau_samples(o->vacf) > 1) {
+        const size_t nl = pl_mtau_nlags(o->vacf);
+        double *lag = malloc(nl * (1 + 2 * PL_MTAU_COLS) * sizeof(double));
+        uint64_t *org = malloc(nl * sizeof(uint64_t));
+        hid_t g = pl_h5_group(obs, "colloid_vacf");
+        bad |= !lag || !org || g < 0;
+        if (!bad) {
+            double *val = lag + nl, *se = val + nl * PL_MTAU_COLS;
+            pl_mtau_result(o->vacf, lag, org, val, se);
+            size_t n = 0;
+            while (n < nl && org[n] > 0) ++n;
+            for (size_t k = 0; k < n * PL_MTAU_COLS; ++k)
+                if (!isfinite(se[k])) se[k] = 0.0;
+            hsize_t d1[1] = {n}, d2[2] = {n, PL_MTAU_COLS};
+            bad |= put(g, "lag", H5T_NATIVE_DOUBLE, 1, d1, lag, "t0") != 0;
+            bad |= put(g, "origins", H5T_NATIVE_UINT64, 1, d1, org, NULL) != 0;
+            bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, val, "a0^2/t0^2") != 0;
+            bad |= put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, se, "a0^2/t0^2") != 0;
             bad |= pl_h5_attr_str(g, "columns", "x y z sum") != 0;
         }
         if (g >= 0 && H5Gclose(g) < 0) bad = 1;
@@ -772,6 +842,16 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
             pl_json_real(&b, e, "stderr_m2_per_s", se * m->a0 * m->a0 / m->t0);
         }
         pl_json_set(&b, all, "colloid_D", e);
+    }
+    if (o->vacf && green_kubo(o, &D, &se, &tmax)) {
+        json_t *e = json_object();
+        pl_json_real(&b, e, "value", D);
+        pl_json_real(&b, e, "stderr", se);
+        pl_json_real(&b, e, "n_independent", (double)sim->colloids->n);
+        pl_json_real(&b, e, "integrated_to_t0", tmax);
+        pl_json_real(&b, e, "wall_s", o->vacf_wall);
+        pl_json_str(&b, e, "unit", "a0^2/t0");
+        pl_json_set(&b, all, "colloid_D_green_kubo", e);
     }
     double r, g, gse;
     if (o->rdf && rdf_peak(o, &r, &g, &gse)) {

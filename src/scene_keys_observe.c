@@ -24,6 +24,12 @@ static const pl_key_t observe_keys[] = {
      "multiple-tau correlator (16 points per level, factor 2) up to the run length; D from its slope"},
     {"msd_start", PL_KEY_INT, OFF(msd_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "first step the MSD samples"},
+    {"vacf_interval", PL_KEY_INT, OFF(vacf_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "colloid velocity autocorrelation <v(0).v(t)> every this many steps (0: off; velocity Verlet colloids), "
+     "multiple-tau up to the run length; Green-Kubo D = (1/3) of its integral up to a quarter of the "
+     "sampled span (Hecht Eq. 35, Fig. 3; PL Eq. 58)"},
+    {"vacf_start", PL_KEY_INT, OFF(vacf_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "first step the VACF samples"},
     {"clusters_interval", PL_KEY_INT, OFF(clusters_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "colloid clusters (bond: surface gap below clusters_gap; union-find) every this many steps (0: off): "
      "number of clusters, largest, mean size over time, their averages with SE, the final size distribution"},

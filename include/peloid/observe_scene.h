@@ -9,6 +9,7 @@ typedef struct {
     long long rdf_bins;
     double rdf_rmax;                   /* 0: the largest the box allows */
     long long msd_interval, msd_start; /* colloid MSD, multiple-tau */
+    long long vacf_interval, vacf_start; /* colloid VACF and Green-Kubo D */
     long long clusters_interval, clusters_start;
     double clusters_gap;               /* bond: surface gap below this */
     long long vdist_interval, vdist_start; /* velocity distributions against Maxwell-Boltzmann */
