@@ -77,6 +77,10 @@ void pl_mapping_print_text(const pl_mapping_t *m, const pl_mapping_colloid_t *c,
                 c->hamaker, c->coulomb, c->kappa, c->primary_minimum, c->n_colloids);
     fprintf(f, "  MD: dt_MD = %.4g s = %.4g t0, %lld MD steps per SRD step\n", m->md_dt, m->md_dt / m->t0,
             m->md_substeps);
+    if (c && c->nprov > 0) {
+        fprintf(f, "  model keys derived from physical{} + coarse_graining{}:\n");
+        for (int i = 0; i < c->nprov; ++i) fprintf(f, "    %s\n", c->prov[i]);
+    }
     row_t rows[8];
     const char *title[2] = {"time scales (Hecht Tables II-IV)", "time scales (PL Table III)"};
     for (int k = 0; k < 2; ++k) {

@@ -77,8 +77,17 @@ static void fill_inputs(const pl_scene_t *s, pl_mapping_system_t *r, pl_mapping_
 static int electrostatics(pl_scene_t *s, pl_err_t *err)
 {
     pl_scene_mapping_t *mp = &s->mapping;
-    const pl_scene_physical_t *p = &mp->physical;
+    pl_scene_physical_t *p = &mp->physical;
     double kT = PL_KB * p->temperature;
+    if (pl_scene_line_of(s, OFF(mapping.physical.permittivity)) <= 0) {
+        /* not given: water at the scene's temperature, stated in the report */
+        p->permittivity = pl_mapping_water_permittivity(p->temperature);
+        if (!isfinite(p->permittivity))
+            return pl_scene_fail(s, err, OFF(mapping.physical.temperature), "physical.temperature",
+                                 "%g K is outside 273.15-373.15 K where the water permittivity fit "
+                                 "(Malmberg & Maryott 1956) holds; give physical.permittivity",
+                                 p->temperature);
+    }
     if (p->kappa > 0 && p->ionic_strength > 0)
         return pl_scene_fail(s, err, OFF(mapping.physical.kappa), "physical.kappa",
                              "given together with physical.ionic_strength; give one of them");
@@ -103,6 +112,9 @@ static int electrostatics(pl_scene_t *s, pl_err_t *err)
     return 0;
 }
 
+/* Hecht Sec. VII (phi kept): the colloid count is phi V / (4/3 pi R^3) of
+ * the box actually used (whole cells), so the realised phi differs from the
+ * given one only by rounding the count; rounding the box is reported. */
 static int apply_box(pl_scene_t *s, pl_err_t *err)
 {
     const pl_scene_physical_t *p = &s->mapping.physical;
@@ -122,7 +134,30 @@ static int apply_box(pl_scene_t *s, pl_err_t *err)
     double V = 1.0;
     for (int d = 0; d < 3; ++d) V *= s->box.cells[d] * a0;
     double vc = 4.0 / 3.0 * M_PI * pow(p->radius, 3);
-    s->mapping.colloid.n_colloids = (long long)floor(p->volume_fraction * V / vc + 0.5);
+    pl_mapping_colloid_t *c = &s->mapping.colloid;
+    c->n_colloids = (long long)floor(p->volume_fraction * V / vc + 0.5);
+    c->phi_given = p->volume_fraction;
+    c->phi_realised = (double)c->n_colloids * vc / V;
+    if (given && p->volume_fraction > 0) {
+        double Vg = p->box[0] * p->box[1] * p->box[2];
+        if (fabs(V / Vg - 1.0) > 0.005)
+            pl_mapping_warn(&s->mapping.map, PL_SEV_NOTE, "BOX_ROUNDED", V / Vg,
+                            "physical.box %.4g x %.4g x %.4g um rounded up to %d x %d x %d cells of a0 = "
+                            "%.4g um (volume x %.4f): the count phi V / (4/3 pi R^3) of the given box "
+                            "(%.0f) would give phi = %.4g in the box used; the colloid count is taken "
+                            "from the box used instead: %lld colloids, phi = %.5g",
+                            p->box[0] * 1e6, p->box[1] * 1e6, p->box[2] * 1e6, s->box.cells[0],
+                            s->box.cells[1], s->box.cells[2], a0 * 1e6, V / Vg,
+                            floor(p->volume_fraction * Vg / vc + 0.5),
+                            floor(p->volume_fraction * Vg / vc + 0.5) * vc / V, c->n_colloids,
+                            c->phi_realised);
+    }
+    if (p->volume_fraction > 0 && fabs(c->phi_realised / p->volume_fraction - 1.0) > 0.005)
+        pl_mapping_warn(&s->mapping.map, PL_SEV_WARNING, "PHI_ROUNDED", c->phi_realised,
+                        "%lld colloids in the box realise phi = %.5g, %.2g%% off physical.volume_fraction "
+                        "= %g (too few colloids to round finely); enlarge physical.box",
+                        c->n_colloids, c->phi_realised, 100.0 * (c->phi_realised / p->volume_fraction - 1.0),
+                        p->volume_fraction);
     return 0;
 }
 
@@ -167,6 +202,7 @@ int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
     c->primary_minimum = r.l_min / m->a0;
     c->md_dt = m->md_dt / m->t0;
     c->md_substeps = m->md_substeps;
+    if (pl_mapping_colloids_apply(s, err)) return PL_ERR_INPUT;
     if (mp->cg.strict && pl_mapping_nwarnings(m) > 0) {
         for (int i = 0; i < m->nwarn; ++i)
             if (m->warn[i].severity == PL_SEV_WARNING)
