@@ -86,22 +86,42 @@ static int check_missing(const pl_scene_t *s, pl_err_t *err, size_t off, const c
 }
 
 /* Largest U'' (kT/a0^2) over the gaps a pair of reference diameter d can
- * reach: from the largest overlap the overlap guard allows to the pair
- * cut-off; the same sum of curvatures the force kernel hands the
- * min_contact_steps guard (kernels/colloid_forces.c). */
-static double stiffest(const pl_colloid_pair_params_t *p, double d, double max_overlap, double *h_at)
+ * reach: scanned inward from the pair cut-off, down to the largest overlap
+ * the overlap guard allows, and stopping where the pair energy rises more
+ * than e_reach above the lowest energy met further out (a barrier the pair
+ * cannot cross, or the Hertz wall).  U'' is the sum of curvatures the force
+ * kernel hands the min_contact_steps guard (kernels/colloid_forces.c). */
+static double stiffest(const pl_colloid_pair_params_t *p, double d, double max_overlap, double e_reach,
+                       double *h_at, double *h_reach)
 {
-    double hlo = -max_overlap * d, hhi = fmax(p->gap_cut, 0.0), best = 0.0;
-    *h_at = hlo;
-    const int ng = 20000;
-    for (int k = 0; k <= ng; ++k) {
-        double h = hlo + (hhi - hlo) * (double)k / ng, r = d + h, k2 = 0.0;
-        if ((p->terms & PL_CT_DLVO) && h < p->dlvo_hcut)
-            k2 += pl_pair_dlvo(r, d, p->coul_C, p->kappa, p->hamaker, p->prim_hm, p->prim_h0, p->dlvo_shift).k2;
-        if ((p->terms & PL_CT_HERTZ) && h < 0.0) k2 += pl_pair_hertz(-h, p->hertz_K).k2;
+    double hlo = -max_overlap * d, hhi = fmax(p->gap_cut, 0.0), best = 0.0, umin = INFINITY;
+    *h_at = *h_reach = hlo;
+    const int ng = 200000;
+    for (int k = ng; k >= 0; --k) {
+        double h = hlo + (hhi - hlo) * (double)k / ng, r = d + h, k2 = 0.0, u = 0.0;
+        if ((p->terms & PL_CT_DLVO) && h < p->dlvo_hcut) {
+            pl_pair_val_t v = pl_pair_dlvo(r, d, p->coul_C, p->kappa, p->hamaker, p->prim_hm, p->prim_h0,
+                                           p->dlvo_shift);
+            k2 += v.k2;
+            u += v.u;
+        }
+        if ((p->terms & PL_CT_HERTZ) && h < 0.0) {
+            pl_pair_val_t v = pl_pair_hertz(-h, p->hertz_K);
+            k2 += v.k2;
+            u += v.u;
+        }
         if (p->terms & PL_CT_WCA) {
             double sg = p->wca_sigma > 0.0 ? p->wca_sigma : d;
-            if (r < sg * p->wca_rfac) k2 += pl_pair_wca(r, sg, p->wca_eps, p->wca_n).k2;
+            if (r < sg * p->wca_rfac) {
+                pl_pair_val_t v = pl_pair_wca(r, sg, p->wca_eps, p->wca_n);
+                k2 += v.k2;
+                u += v.u;
+            }
+        }
+        if (u < umin) umin = u;
+        if (u - umin > e_reach) {
+            *h_reach = h;
+            break;
         }
         if (k2 > best) {
             best = k2;
@@ -126,7 +146,8 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
     double shrink = 1.0 - sqrt(3.0) * cs->polydispersity; /* smallest colloid of the distribution */
     double mass = cs->mass_density * 4.0 / 3.0 * M_PI * pow(cs->radius * shrink, 3.0);
     double m_red = 0.5 * mass;
-    double h_at = 0.0, k2 = stiffest(&p, d, cs->max_overlap, &h_at);
+    double e_reach = mp->cg.reach_energy, h_at = 0.0, h_reach = 0.0;
+    double k2 = stiffest(&p, d, cs->max_overlap, e_reach, &h_at, &h_reach);
     long long n_map = mp->map.md_substeps, n_contact = 0, n_damp = 0;
     c->contact_time = k2 > 0.0 ? M_PI * sqrt(m_red / k2) : INFINITY;
     if (cs->min_contact_steps > 0.0 && k2 > 0.0)
@@ -154,8 +175,18 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
                              "dlvo.primary_depth", k2, c->contact_time, n);
     snprintf(c->substeps_reason, sizeof c->substeps_reason,
              "%lld MD steps per SRD step from the %s; mapping %lld, contact %lld (U''max = %.4g kT/a0^2 at gap "
-             "%.3g a0, collision %.4g t0, >= %g steps: colloids.min_contact_steps), damping %lld",
-             n, why, n_map, n_contact, k2, h_at, c->contact_time, cs->min_contact_steps, n_damp);
+             "%.3g a0, collision %.4g t0, >= %g steps: colloids.min_contact_steps; gaps down to %.4g a0 "
+             "reachable with %g kT: coarse_graining.reach_energy), damping %lld",
+             n, why, n_map, n_contact, k2, h_at, c->contact_time, cs->min_contact_steps, h_reach, e_reach,
+             n_damp);
+    c->reach_gap = h_reach;
+    if (h_reach > 0.0 && (p.terms & PL_CT_DLVO))
+        pl_mapping_warn(&mp->map, PL_SEV_NOTE, "CONTACT_SHIELDED", h_reach,
+                        "the DLVO barrier keeps pairs out of gaps below %.4g a0 (more than "
+                        "coarse_graining.reach_energy = %g kT above the outer minimum): the primary minimum "
+                        "and the Hertz contact are not resolved by the MD step; a pair started or pushed "
+                        "there trips the contact guard (raise reach_energy to resolve them)",
+                        h_reach, e_reach);
     if (refuse(s, err, OFF(colloids.substeps), "colloids.substeps",
                "physical{} and coarse_graining{} (MD step, stiffest contact)", (double)cs->substeps, (double)n))
         return PL_ERR_INPUT;

@@ -122,7 +122,7 @@ static int apply_box(pl_scene_t *s, pl_err_t *err)
     int given = p->box[0] > 0 || p->box[1] > 0 || p->box[2] > 0;
     if (given) {
         for (int d = 0; d < 3; ++d) {
-            double n = ceil(p->box[d] / a0 - 1e-9);
+            double n = fmax(1.0, floor(p->box[d] / a0 + 0.5)); /* nearest whole number of cells */
             if (forbid(s, err, OFF(box.cells), "box.cells", n, s->box.cells[d])) return PL_ERR_INPUT;
             if (!(p->box[d] > 0) || n > 4096)
                 return pl_scene_fail(s, err, OFF(mapping.physical.box), "physical.box",

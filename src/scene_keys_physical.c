@@ -54,7 +54,7 @@ static const pl_key_t physical_keys[] = {
     {"volume_fraction", PL_KEY_REAL, P(volume_fraction), 0, 0.74, 0, NULL, 0, NULL,
      "-", "colloid volume fraction phi; with the box gives the number of colloids"},
     {"box", PL_KEY_REAL3, P(box), 0, 1, 0, NULL, 0, NULL,
-     "m", "box edge lengths; 0: keep box.cells (else box.cells = ceil(L / a0), and box.cells must not be set)"},
+     "m", "box edge lengths; 0: keep box.cells (else box.cells = L / a0 rounded to the nearest whole number, box.cells must not be set; the colloid count follows phi in the box used, BOX_ROUNDED note)"},
     {"flow_velocity", PL_KEY_REAL, P(flow_velocity), 0, 1e3, 0, NULL, 0, NULL,
      "m/s", "typical colloid or flow velocity for Re, Pe, Ma when there is no gravity (PL Table V: 1e-5)"},
     {"sound_speed", PL_KEY_REAL, P(sound_speed), 0, 1e5, PL_KEY_MIN_OPEN, NULL, 1480, NULL,
@@ -93,6 +93,10 @@ static const pl_key_t cg_keys[] = {
      "kT/a0^2.5", "model Hertz constant chosen softer than the material (Hecht Sec. II: K is chosen so "
                   "that overlaps stay below ~10% and a collision takes ~20 MD steps, not from the elastic "
                   "modulus); not given: K of physical.young_modulus / hertz_constant in kT/a0^2.5"},
+    {"reach_energy", PL_KEY_REAL, C(reach_energy), 0, 1e6, PL_KEY_MIN_OPEN, NULL, 40, NULL,
+     "kT", "the MD substeps resolve every gap a colliding pair can reach with this energy above the lowest "
+           "pair energy further out (Boltzmann factor e^-40 by default); a DLVO barrier higher than this "
+           "shields the primary minimum and the Hertz contact (note CONTACT_SHIELDED)"},
     {"strict", PL_KEY_BOOL, C(strict), 0, 1, 0, NULL, 0, NULL,
      "-", "treat every audit warning (Ma, Re, Kn, Sc, Pe, time-scale hierarchy) as an error (like --strict)"},
 };

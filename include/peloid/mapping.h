@@ -224,6 +224,7 @@ typedef struct {
     double srd_dt, md_dt;     /* s; 0: derived */
     double md_resolution;
     double hertz_K;           /* model Hertz constant, kT/a0^2.5; 0: from the material */
+    double reach_energy;      /* kT: the MD step resolves the gaps a pair reaches with this energy */
 } pl_scene_cg_t;
 
 /* Colloid parameters in simulation units, for the colloid module. */
@@ -244,6 +245,7 @@ typedef struct {
     double hertz_K;                /* kT / a0^2.5 */
     double lub_viscosity;          /* m_f / (a0 t0) */
     double contact_time;           /* pi sqrt(m_red / U''_max), t0 */
+    double reach_gap;              /* smallest gap the substeps resolve, a0 */
     char substeps_reason[400];     /* which criterion chose md_substeps */
     int nprov;                     /* provenance lines of the derived keys */
     char prov[32][480];
