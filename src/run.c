@@ -30,7 +30,7 @@ static void thermo_header(FILE *f, int mapped, int tracked, int walls, int side_
                           int pinned)
 {
     fprintf(f, "step\ttime\t%stemperature\tkT_cell\tpx\tpy\tpz\tkinetic_energy\t%s%s%s%s%s%smupdates_per_s\n",
-            mapped ? "time_s\ttemperature_K\t" : "", tracked ? "msd\t" : "",
+            mapped ? "time_s\ttemperature_K\tmodel_temperature_K\t" : "", tracked ? "msd\t" : "",
             walls ? "sxz_bottom\tsxz_top\tsyz_bottom\tsyz_top\t" : "",
             side_walls ? "s_side_x\ts_side_y\ts_side_z\t" : "",
             colloids ? "c_kin_trans\tc_kin_rot\tc_dlvo\tc_hertz\tc_wca\tc_wall\tc_gravity\tc_depl\tc_total\tc_zcm\t" : "",
@@ -70,8 +70,11 @@ static int thermo_row(writer_t *w, const pl_sim_t *sim, pl_err_t *err)
     const double time = (double)sim->step * sim->scene.srd.dt;
     fprintf(w->thermo, "%lld\t%.10g\t", sim->step, time);
     const pl_scene_mapping_t *map = &sim->scene.mapping;
-    if (map->enabled) /* physical units: kT = 1 is the model temperature kT_model (Hecht Sec. VII) */
-        fprintf(w->thermo, "%.10g\t%.10g\t", time * map->map.t0, kT * map->map.kT_model / PL_KB);
+    /* physical units: kT = 1 stands for the real temperature T; in the
+     * model's own SI units it is kT_model (Hecht Sec. VII.B) */
+    if (map->enabled)
+        fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t", time * map->map.t0, kT * map->physical.temperature,
+                kT * map->map.kT_model / PL_KB);
     fprintf(w->thermo, "%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t%.10g\t", kT, sim->last_kT_meas, o.momentum[0],
             o.momentum[1], o.momentum[2], o.kinetic);
     if (sim->fluid.tracked) fprintf(w->thermo, "%.10g\t", o.msd);
@@ -340,11 +343,13 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
             scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
     if (sim->colloids && (sim->colloids->pair.terms & PL_CT_DLVO)) {
         const pl_colloid_dlvo_info_t *d = &sim->colloids->dlvo;
+        char bar[64] = "none", sec[64] = "none"; /* NaN: the potential has no barrier / secondary minimum */
+        if (isfinite(d->barrier_u)) snprintf(bar, sizeof bar, "%.4g kT at %.4g a0", d->barrier_u, d->barrier_h);
+        if (isfinite(d->secmin_u)) snprintf(sec, sizeof sec, "%.4g kT at %.4g a0", d->secmin_u, d->secmin_h);
         fprintf(stderr, "peloid: DLVO: primary minimum matched at gap %.4g a0 (curvature %.4g kT/a0^2); "
-                        "barrier %.4g kT at %.4g a0; secondary minimum %.4g kT at %.4g a0; cut-off gap "
+                        "barrier %s; secondary minimum %s; cut-off gap "
                         "%.4g a0, truncation error |V| = %.3g kT, |F| = %.3g kT/a0\n",
-                d->hm, d->curvature, d->barrier_u, d->barrier_h, d->secmin_u, d->secmin_h, d->hcut,
-                d->trunc_u, d->trunc_f);
+                d->hm, d->curvature, bar, sec, d->hcut, d->trunc_u, d->trunc_f);
     }
     if (sim->colloids && (sim->colloids->pair.terms & (PL_CT_WCA | PL_CT_DEPL))) {
         const pl_colloid_depl_info_t *d = &sim->colloids->depl;
