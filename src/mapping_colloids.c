@@ -60,19 +60,23 @@ static int given(const pl_scene_t *s, size_t off) { return pl_scene_line_of(s, o
 /* A derived key in the file: refused unless it carries the derived value
  * itself (an echoed effective scene reloads). */
 static int refuse(const pl_scene_t *s, pl_err_t *err, size_t off, const char *key, const char *from,
-                  double given_v, double derived)
+                  double given_v, double derived, const char *shown)
 {
     if (!given(s, off) || fabs(given_v - derived) <= 1e-12 * fabs(derived)) return 0;
+    char v[64];
+    if (shown) snprintf(v, sizeof v, "\"%s\"", shown);
+    else snprintf(v, sizeof v, "%.6g", derived);
     return pl_scene_fail(s, err, off, key,
-                         "is derived from %s (value %.6g here); remove it, a scene with physical{} "
+                         "is derived from %s (value %s here); remove it, a scene with physical{} "
                          "gives the real suspension once (or remove physical{} and give model units)",
-                         from, derived);
+                         from, v);
 }
 
 typedef struct {
     size_t off;
     const char *key, *from;
     double derived, given;
+    const char *shown; /* the derived value as a word (choices); NULL: the number */
 } derived_t;
 
 static int check_missing(const pl_scene_t *s, pl_err_t *err, size_t off, const char *key, const char *term,
@@ -188,7 +192,8 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
                         "there trips the contact guard (raise reach_energy to resolve them)",
                         h_reach, e_reach);
     if (refuse(s, err, OFF(colloids.substeps), "colloids.substeps",
-               "physical{} and coarse_graining{} (MD step, stiffest contact)", (double)cs->substeps, (double)n))
+               "physical{} and coarse_graining{} (MD step, stiffest contact)", (double)cs->substeps, (double)n,
+               NULL))
         return PL_ERR_INPUT;
     cs->substeps = n;
     mp->map.md_substeps = n;
@@ -269,44 +274,45 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     }
     int method = !have ? s->coupling.method
                  : mp->cg.coupling == PL_COUPLING_I ? PL_COUPLE_HECHT1 : PL_COUPLE_HECHT2;
-    double g = have ? -m->g_sim : 0.0;
+    double g = have && m->g_sim > 0.0 ? -m->g_sim : 0.0;
     double temp = have ? 1.0 : cs->temperature;
     /* the derived keys: refused when given with another value */
     const char *phi_from = "physical.volume_fraction, physical.box and physical.radius";
     derived_t dk[] = {
-        {OFF(colloids.count), "colloids.count", phi_from, (double)c->n_colloids, (double)cs->count},
+        {OFF(colloids.count), "colloids.count", phi_from, (double)c->n_colloids, (double)cs->count, NULL},
         {OFF(colloids.radius), "colloids.radius", "physical.radius and coarse_graining.cell_size", m->sigma,
-         cs->radius},
+         cs->radius, NULL},
         {OFF(colloids.mass_density), "colloids.mass_density",
          "physical.particle_density, solvent_density and coarse_graining.particles_per_cell",
-         mp->cg.particles_per_cell * rho_ratio, cs->mass_density},
+         mp->cg.particles_per_cell * rho_ratio, cs->mass_density, NULL},
         {OFF(colloids.temperature), "colloids.temperature", "physical.temperature (kT_model = 1)", temp,
-         cs->temperature},
+         cs->temperature, NULL},
         {OFF(colloids.gravity), "colloids.gravity", "physical.gravity and the densities (Hecht Eq. 31)", g,
-         cs->gravity[2]},
+         cs->gravity[2], NULL},
         {OFF(colloids.bd_viscosity), "colloids.bd_viscosity", "physical.viscosity (model eta)", eta,
-         cs->bd_viscosity},
-        {OFF(colloids.dlvo.eps_r), "dlvo.eps_r", "physical.permittivity", ph->permittivity, cs->dlvo.eps_r},
+         cs->bd_viscosity, NULL},
+        {OFF(colloids.dlvo.eps_r), "dlvo.eps_r", "physical.permittivity", ph->permittivity, cs->dlvo.eps_r, NULL},
         {OFF(colloids.dlvo.psi0_mV), "dlvo.psi0", "physical.surface_potential", 1e3 * ph->surface_potential,
-         cs->dlvo.psi0_mV},
-        {OFF(colloids.dlvo.z), "dlvo.z", "physical.valence", (double)ph->valence, cs->dlvo.z},
+         cs->dlvo.psi0_mV, NULL},
+        {OFF(colloids.dlvo.z), "dlvo.z", "physical.valence", (double)ph->valence, cs->dlvo.z, NULL},
         {OFF(colloids.dlvo.temperature_K), "dlvo.temperature", "physical.temperature", ph->temperature,
-         cs->dlvo.temperature_K},
+         cs->dlvo.temperature_K, NULL},
         {OFF(colloids.dlvo.kappa_per_m), "dlvo.kappa", "physical.kappa or physical.ionic_strength", mp->kappa,
-         cs->dlvo.kappa_per_m},
-        {OFF(colloids.dlvo.hamaker_J), "dlvo.hamaker", "physical.hamaker", ph->hamaker, cs->dlvo.hamaker_J},
+         cs->dlvo.kappa_per_m, NULL},
+        {OFF(colloids.dlvo.hamaker_J), "dlvo.hamaker", "physical.hamaker", ph->hamaker, cs->dlvo.hamaker_J, NULL},
         {OFF(colloids.dlvo.length_unit_m), "dlvo.length_unit", "physical.radius and coarse_graining.cell_size (a0)",
-         m->a0, cs->dlvo.length_unit_m},
+         m->a0, cs->dlvo.length_unit_m, NULL},
         {OFF(colloids.hertz.K), "hertz.K",
          "physical.young_modulus + poisson_ratio, physical.hertz_constant or coarse_graining.hertz_K", K,
-         cs->hertz.K},
+         cs->hertz.K, NULL},
         {OFF(colloids.lub.viscosity), "lubrication.viscosity", "physical.viscosity (model eta = gamma nu)", eta,
-         cs->lub.viscosity},
+         cs->lub.viscosity, NULL},
         {OFF(coupling.method), "coupling.method", "coarse_graining.coupling", (double)method,
-         (double)s->coupling.method},
+         (double)s->coupling.method, method == PL_COUPLE_HECHT1 ? "hecht1" : method == PL_COUPLE_HECHT2 ? "hecht2" : "none"},
     };
     for (size_t i = 0; i < sizeof dk / sizeof dk[0]; ++i)
-        if (refuse(s, err, dk[i].off, dk[i].key, dk[i].from, dk[i].given, dk[i].derived)) return PL_ERR_INPUT;
+        if (refuse(s, err, dk[i].off, dk[i].key, dk[i].from, dk[i].given, dk[i].derived, dk[i].shown))
+            return PL_ERR_INPUT;
     if (given(s, OFF(colloids.gravity)) && (cs->gravity[0] != 0.0 || cs->gravity[1] != 0.0))
         return pl_scene_fail(s, err, OFF(colloids.gravity), "colloids.gravity",
                              "is derived from physical.gravity (along -z); remove it");
