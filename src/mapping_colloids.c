@@ -213,7 +213,7 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     pl_scene_colloids_t *cs = &s->colloids;
     c->nprov = 0;
     int have = c->n_colloids > 0;
-    if (given(s, OFF(mapping.physical.volume_fraction)) && !have)
+    if (ph->volume_fraction > 0 && !have)
         return pl_scene_fail(s, err, OFF(mapping.physical.volume_fraction), "physical.volume_fraction",
                              "%g gives no colloid in the box (%d x %d x %d cells of %.4g m); allowed: a larger "
                              "physical.box or volume fraction", ph->volume_fraction, s->box.cells[0],
@@ -249,19 +249,19 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
             return PL_ERR_INPUT;
     }
     if (mask & PL_CT_HERTZ) {
-        if (given(s, OFF(mapping.cg.hertz_K))) {
+        if (mp->cg.hertz_K > 0) {
             K = mp->cg.hertz_K;
             K_src = "given: coarse_graining.hertz_K (softer than the material, Hecht Sec. II)";
-        } else if (given(s, OFF(mapping.physical.hertz_constant))) {
+        } else if (ph->hertz_constant > 0) {
             K = ph->hertz_constant * pow(m->a0, 2.5) / kT;
             K_src = "derived: physical.hertz_constant a0^2.5 / kT (Hecht Eq. 3)";
-        } else if (given(s, OFF(mapping.physical.young_modulus)) && given(s, OFF(mapping.physical.poisson_ratio))) {
+        } else if (ph->young_modulus > 0 && given(s, OFF(mapping.physical.poisson_ratio))) {
             K = pl_mapping_hertz_K(ph->young_modulus, ph->poisson_ratio, ph->radius) * pow(m->a0, 2.5) / kT;
             K_src = "derived: Hertz theory from physical.young_modulus, poisson_ratio (Hecht Eq. 3)";
         } else {
             char miss[200];
             snprintf(miss, sizeof miss, "%s",
-                     given(s, OFF(mapping.physical.young_modulus)) ? "physical.poisson_ratio"
+                     ph->young_modulus > 0 ? "physical.poisson_ratio"
                      : given(s, OFF(mapping.physical.poisson_ratio))
                          ? "physical.young_modulus"
                          : "physical.young_modulus + physical.poisson_ratio, or physical.hertz_constant, or "
@@ -310,10 +310,12 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
         {OFF(coupling.method), "coupling.method", "coarse_graining.coupling", (double)method,
          (double)s->coupling.method, method == PL_COUPLE_HECHT1 ? "hecht1" : method == PL_COUPLE_HECHT2 ? "hecht2" : "none"},
     };
-    for (size_t i = 0; i < sizeof dk / sizeof dk[0]; ++i)
+    /* without colloids (no volume fraction) only a hand-given count matters:
+     * the other colloid keys act on nothing (an echoed scene prints them) */
+    for (size_t i = 0; i < (have ? sizeof dk / sizeof dk[0] : 1); ++i)
         if (refuse(s, err, dk[i].off, dk[i].key, dk[i].from, dk[i].given, dk[i].derived, dk[i].shown))
             return PL_ERR_INPUT;
-    if (given(s, OFF(colloids.gravity)) && (cs->gravity[0] != 0.0 || cs->gravity[1] != 0.0))
+    if (have && given(s, OFF(colloids.gravity)) && (cs->gravity[0] != 0.0 || cs->gravity[1] != 0.0))
         return pl_scene_fail(s, err, OFF(colloids.gravity), "colloids.gravity",
                              "is derived from physical.gravity (along -z); remove it");
     if (!have) return 0;

@@ -44,13 +44,13 @@ static const pl_key_t physical_keys[] = {
           "(Malmberg & Maryott 1956: 78.3 at 25 C, 77.6 at 300 K; refused outside 0-100 C)"},
     {"primary_minimum", PL_KEY_REAL, P(primary_minimum), 0, 1e-3, 0, NULL, 0, NULL,
      "m", "distance l from the surface to the primary minimum (Hecht Table I: 8e-9); sets tau_V, Hecht Eq. 26"},
-    {"young_modulus", PL_KEY_REAL, P(young_modulus), 0, 1e13, PL_KEY_MIN_OPEN, NULL, 0, NULL,
-     "Pa", "Young's modulus E of the colloid material; with poisson_ratio gives the Hertz constant "
+    {"young_modulus", PL_KEY_REAL, P(young_modulus), 0, 1e13, 0, NULL, 0, NULL,
+     "Pa", "Young's modulus E of the colloid material (0: not given); with poisson_ratio gives the Hertz constant "
            "K = 4 E sqrt(R/2) / (15 (1 - nu_P^2)) of Hecht Eq. 3 (Al2O3: ~3.7e11)"},
     {"poisson_ratio", PL_KEY_REAL, P(poisson_ratio), -1, 0.5, PL_KEY_MIN_OPEN, NULL, 0, NULL,
      "-", "Poisson ratio nu_P of the colloid material (with young_modulus; Al2O3: ~0.22)"},
-    {"hertz_constant", PL_KEY_REAL, P(hertz_constant), 0, 1e30, PL_KEY_MIN_OPEN, NULL, 0, NULL,
-     "J/m^2.5", "Hertz constant K of Hecht Eq. 3 directly (instead of young_modulus + poisson_ratio)"},
+    {"hertz_constant", PL_KEY_REAL, P(hertz_constant), 0, 1e30, 0, NULL, 0, NULL,
+     "J/m^2.5", "(0: not given) Hertz constant K of Hecht Eq. 3 directly (instead of young_modulus + poisson_ratio)"},
     {"volume_fraction", PL_KEY_REAL, P(volume_fraction), 0, 0.74, 0, NULL, 0, NULL,
      "-", "colloid volume fraction phi; with the box gives the number of colloids"},
     {"box", PL_KEY_REAL3, P(box), 0, 1, 0, NULL, 0, NULL,
@@ -89,10 +89,10 @@ static const pl_key_t cg_keys[] = {
      "s", "MD step; 0: min(tau_V, tau_P) of the model / md_resolution; rounded to divide the SRD step"},
     {"md_resolution", PL_KEY_REAL, C(md_resolution), 1, 1e6, 0, NULL, 20, NULL,
      "steps", "MD steps per shortest colloid time (Hecht Sec. II: ~20 steps per collision)"},
-    {"hertz_K", PL_KEY_REAL, C(hertz_K), 0, 1e15, PL_KEY_MIN_OPEN, NULL, 0, NULL,
+    {"hertz_K", PL_KEY_REAL, C(hertz_K), 0, 1e15, 0, NULL, 0, NULL,
      "kT/a0^2.5", "model Hertz constant chosen softer than the material (Hecht Sec. II: K is chosen so "
                   "that overlaps stay below ~10% and a collision takes ~20 MD steps, not from the elastic "
-                  "modulus); not given: K of physical.young_modulus / hertz_constant in kT/a0^2.5"},
+                  "modulus); 0 / not given: K of physical.young_modulus / hertz_constant in kT/a0^2.5"},
     {"reach_energy", PL_KEY_REAL, C(reach_energy), 0, 1e6, PL_KEY_MIN_OPEN, NULL, 40, NULL,
      "kT", "the MD substeps resolve every gap a colliding pair can reach with this energy above the lowest "
            "pair energy further out (Boltzmann factor e^-40 by default); a DLVO barrier higher than this "
