@@ -234,6 +234,47 @@ int pl_mapping_report_strict(const struct pl_scene *scene, int strict, pl_err_t 
     return 0;
 }
 
+/* The physical{} and coarse_graining{} inputs, each marked given (with its
+ * line), derived (from which relation) or default. */
+static void print_inputs(const pl_scene_t *s, FILE *f)
+{
+    const pl_section_t *secs[2] = {&pl_scene_section_physical, &pl_scene_section_coarse_graining};
+    fprintf(f, "Inputs of the mapping (given: in the file; default: the schema's; derived: computed here):\n");
+    for (int k = 0; k < 2; ++k) {
+        for (size_t i = 0; i < secs[k]->nkeys; ++i) {
+            const pl_key_t *key = &secs[k]->keys[i];
+            const char *base = (const char *)s + key->offset;
+            char v[96];
+            switch (key->type) {
+            case PL_KEY_REAL: snprintf(v, sizeof v, "%.6g", *(const double *)base); break;
+            case PL_KEY_REAL3: {
+                const double *x = (const double *)base;
+                snprintf(v, sizeof v, "[%.6g, %.6g, %.6g]", x[0], x[1], x[2]);
+                break;
+            }
+            case PL_KEY_INT: snprintf(v, sizeof v, "%lld", *(const long long *)base); break;
+            case PL_KEY_BOOL: snprintf(v, sizeof v, "%s", *(const int *)base ? "true" : "false"); break;
+            case PL_KEY_CHOICE: snprintf(v, sizeof v, "\"%s\"", key->choices[*(const int *)base]); break;
+            default: snprintf(v, sizeof v, "-"); break;
+            }
+            int line = pl_scene_line_of(s, key->offset);
+            char how[160];
+            if (line > 0) snprintf(how, sizeof how, "given, line %d", line);
+            else if (key->offset == OFF(mapping.physical.permittivity))
+                snprintf(how, sizeof how, "derived: water at %g K (Malmberg & Maryott 1956)",
+                         s->mapping.physical.temperature);
+            else if (key->offset == OFF(mapping.physical.kappa) && s->mapping.physical.ionic_strength > 0)
+                snprintf(how, sizeof how, "derived: Debye-Hueckel from ionic_strength = %.4g /m",
+                         s->mapping.kappa);
+            else if (key->offset == OFF(mapping.cg.cell_size))
+                snprintf(how, sizeof how, "default: a0/R = %.6g of the coupling (Hecht Sec. VII.B/C)",
+                         s->mapping.map.cg.cell_over_R);
+            else snprintf(how, sizeof how, "default");
+            fprintf(f, "  %s.%-20s = %-28s (%s)\n", secs[k]->name, key->name, v, how);
+        }
+    }
+}
+
 int pl_mapping_report(const struct pl_scene *scene, FILE *out, int json, int strict, pl_err_t *err)
 {
     const pl_scene_mapping_t *mp = &scene->mapping;
@@ -244,6 +285,7 @@ int pl_mapping_report(const struct pl_scene *scene, FILE *out, int json, int str
         json_decref(doc);
         if (rc) return rc;
     } else if (mp->enabled) {
+        print_inputs(scene, out);
         pl_mapping_print_text(&mp->map, &mp->colloid, out);
     }
     return pl_mapping_report_strict(scene, strict, err);
