@@ -146,6 +146,15 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
     if (pl_colloid_pair_params(s, &p, &info, &e))
         return pl_scene_fail(s, err, OFF(mapping.physical.surface_potential), "physical.surface_potential",
                              "the derived DLVO potential: %s", e.msg);
+    if (p.terms & PL_CT_DLVO) {
+        char bar[64] = "none", sec[64] = "none"; /* the potential need not have them */
+        if (isfinite(info.barrier_u)) snprintf(bar, sizeof bar, "%.4g kT at gap %.4g a0", info.barrier_u, info.barrier_h);
+        if (isfinite(info.secmin_u)) snprintf(sec, sizeof sec, "%.4g kT at gap %.4g a0", info.secmin_u, info.secmin_h);
+        prov(c, "DLVO potential (Hecht Eqs. 1-2, parabolic primary minimum of Sec. II): primary minimum -%g kT "
+                "at gap %.4g a0 (matched at %.4g a0, curvature %.4g kT/a0^2); barrier %s; secondary minimum %s; "
+                "cut-off gap %.4g a0",
+             cs->dlvo.primary_depth, info.h0, info.hm, info.curvature, bar, sec, info.hcut);
+    }
     double d = 2.0 * cs->radius, dt = s->srd.dt;
     double shrink = 1.0 - sqrt(3.0) * cs->polydispersity; /* smallest colloid of the distribution */
     double mass = cs->mass_density * 4.0 / 3.0 * M_PI * pow(cs->radius * shrink, 3.0);
