@@ -228,6 +228,12 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
                              "physical.box or volume fraction", ph->volume_fraction, s->box.cells[0],
                              s->box.cells[1], s->box.cells[2], m->a0);
 
+    if (have && mp->cg.fluid_gravity && ph->gravity > 0)
+        return pl_scene_fail(s, err, OFF(mapping.cg.fluid_gravity), "coarse_graining.fluid_gravity",
+                             "with colloids is not supported: the fluid would need the body force and the "
+                             "colloids the full weight, with buoyancy from the fluid's pressure, which "
+                             "coupling II point colloids do not feel; allowed: false (Hecht Eq. 31: "
+                             "weight minus buoyancy on the colloids alone)");
     /* what the model derives, in model units */
     const char *pairs_src = "given";
     if (have && !given(s, OFF(colloids.pairs))) {
