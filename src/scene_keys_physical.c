@@ -2,7 +2,9 @@
  * suspension in SI units, coarse_graining{} the choices that map it onto
  * SRD + MD (Hecht Sec. VII, PL Sec. VII).  A scene with physical{} gets
  * srd.dt, fluid.density, fluid.temperature (and box.cells when physical.box
- * is given) from the mapping; see src/mapping_scene.c. */
+ * is given) from the mapping (src/mapping_scene.c), and with
+ * physical.volume_fraction its colloids, pair terms, coupling method and MD
+ * substeps (src/mapping_colloids.c). */
 #include <stddef.h>
 
 #include "peloid/scene.h"
@@ -82,7 +84,7 @@ static const pl_key_t cg_keys[] = {
     {"enskog", PL_KEY_BOOL, C(enskog), 0, 1, 0, NULL, 0, NULL,
      "-", "add the Enskog friction in parallel (PL Eqs. 40-41) to the model colloid friction"},
     {"fluid_gravity", PL_KEY_BOOL, C(fluid_gravity), 0, 1, 0, NULL, 0, NULL,
-     "-", "gravity also on the fluid (buoyancy); false: Hecht Eq. 31, the colloid alone feels a reduced gravity"},
+     "-", "gravity also on the fluid (buoyancy; audit numbers only, refused with colloids); false: Hecht Eq. 31, the colloid alone feels a reduced gravity"},
     {"srd_dt", PL_KEY_REAL, C(srd_dt), 0, 1e6, 0, NULL, 0, NULL,
      "s", "SRD step; 0: derived from time_match (Hecht Eq. 30); set it to use a rounded step"},
     {"md_dt", PL_KEY_REAL, C(md_dt), 0, 1e6, 0, NULL, 0, NULL,

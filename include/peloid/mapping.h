@@ -261,9 +261,10 @@ typedef struct {
 } pl_scene_mapping_t;
 
 /* Runs the mapping for a scene with a physical{} section and writes the
- * derived values into srd.dt, fluid.density, fluid.temperature and
- * box.cells (refusing those keys if the file also sets them).  A no-op
- * without the section.  Called by pl_scene_validate. */
+ * derived values into srd.dt, fluid.density, fluid.temperature, box.cells
+ * and (pl_mapping_colloids_apply) the colloid sections, refusing those keys
+ * if the file also sets them.  A no-op without the section.  Called by
+ * pl_scene_validate. */
 int pl_mapping_scene_apply(struct pl_scene *scene, pl_err_t *err);
 
 /* Second half of the scene front end (src/mapping_colloids.c): derives
