@@ -17,7 +17,7 @@ int main(void)
                  "box: { cells = [24, 24, 24]; }; fluid: { density = 0.0; }; srd: { dt = 0.1; };\n"
                  "colloids: { count = 27; radius = 2.0; substeps = %d; pairs = \"dlvo, hertz\";\n"
                  "  max_energy_drift = 0.0; min_contact_steps = 0.0; };\n"
-                 "dlvo: { psi0 = 20.0; kappa = 1.4e8; length_unit = 1.25e-7; };\nhertz: { K = 1000.0; };\n",
+                 "dlvo: { psi0 = 20.0; kappa = 1.4e8; hamaker = 4.76e-20; length_unit = 1.25e-7; };\nhertz: { K = 1000.0; };\n",
                  subs[k]);
         pl_scene_t s;
         pl_err_t err;

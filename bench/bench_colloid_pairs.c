@@ -18,7 +18,7 @@ int main(void)
     const char *sc = "box: { cells = [80, 80, 80]; }; fluid: { density = 0.0; };\n"
                      "colloids: { count = 4096; init = \"lattice\"; radius = 2.0; polydispersity = 0.05;\n"
                      "  pairs = \"dlvo, hertz, wca\"; min_contact_steps = 0.0; };\n"
-                     "dlvo: { psi0 = 20.0; kappa = 1.4e8; length_unit = 1.25e-7; cutoff_energy = 0.01; };\n";
+                     "dlvo: { psi0 = 20.0; kappa = 1.4e8; hamaker = 4.76e-20; length_unit = 1.25e-7; cutoff_energy = 0.01; };\n";
     pl_scene_t s;
     pl_err_t err;
     if (pl_scene_load_string(sc, "bench", &s, &err) || 0) {

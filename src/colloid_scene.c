@@ -2,6 +2,7 @@
  * what one key's range cannot express. */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "peloid/colloid.h"
 
@@ -31,6 +32,28 @@ int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err)
                              "coupling's fluid (PL Sec. III.C.1); allowed only with "
                              "coupling.method = \"potential\" and fluid.density > 0");
     if (cs->count == 0) return 0;
+    if ((mask & PL_CT_DLVO) && !scene->mapping.enabled) {
+        /* no material defaults: Hecht Eqs. 1-2 need the suspension's own
+         * constants (a physical{} scene derives them, src/mapping_colloids.c) */
+        static const struct {
+            size_t off;
+            const char *key;
+        } need[] = {{OFF(colloids.dlvo.psi0_mV), "dlvo.psi0"},
+                    {OFF(colloids.dlvo.kappa_per_m), "dlvo.kappa"},
+                    {OFF(colloids.dlvo.hamaker_J), "dlvo.hamaker"},
+                    {OFF(colloids.dlvo.length_unit_m), "dlvo.length_unit"}};
+        char miss[160] = "";
+        for (size_t i = 0; i < sizeof need / sizeof need[0]; ++i)
+            if (pl_scene_line_of(scene, need[i].off) <= 0) {
+                if (miss[0]) strcat(miss, ", ");
+                strcat(miss, need[i].key);
+            }
+        if (miss[0])
+            return pl_scene_fail(scene, err, OFF(colloids.pairs), "colloids.pairs",
+                                 "the dlvo pair term needs its material constants dlvo.psi0, dlvo.kappa, "
+                                 "dlvo.hamaker and dlvo.length_unit (no material defaults); missing: %s",
+                                 miss);
+    }
     /* work: random placement tests each colloid against all placed before
      * it, count^2/2 distance checks at least (1e11: about an hour) */
     double checks = 0.5 * (double)cs->count * (double)cs->count;

@@ -422,6 +422,23 @@ int pl_colloid_create(const pl_scene_t *scene, pl_colloid_t **out, pl_err_t *err
         pl_colloid_free(c);
         return rc;
     }
+    /* the contact guard's criterion on the initial configuration: a pair
+     * that starts unresolved is an input error, not a guard trip at MD step 1 */
+    size_t stiff = 0;
+    for (size_t i = 1; i < c->n; ++i)
+        if (c->g_omega2[i] > c->g_omega2[stiff]) stiff = i;
+    if (c->n && c->min_contact_steps > 0.0 && c->g_omega2[stiff] > 0.0 &&
+        M_PI / sqrt(c->g_omega2[stiff]) / c->dt < c->min_contact_steps) {
+        double tc = M_PI / sqrt(c->g_omega2[stiff]);
+        rc = pl_scene_fail(scene, err, OFF(colloids.init), "colloids.init",
+                           "initial colloids %zu and %d: the collision time pi sqrt(m_red/U'') = %.4g t0 "
+                           "is resolved by %.3g MD steps < colloids.min_contact_steps = %g (the contact "
+                           "guard would stop the run at its first MD step); raise colloids.substeps "
+                           "(physical{}: coarse_graining.reach_energy) or start elsewhere",
+                           stiff, c->g_partner[c->n + stiff], tc, tc / c->dt, c->min_contact_steps);
+        pl_colloid_free(c);
+        return rc;
+    }
     *out = c;
     return 0;
 }

@@ -227,7 +227,14 @@ static double v_time_s(const pl_thermo_sample_t *s, int a)
 {
     return v_time(s, a) * s->sim->scene.mapping.map.t0;
 }
+/* physical units: kT = 1 stands for the real temperature T; in the model's
+ * own SI units it is kT_model (Hecht Sec. VII.B) */
 static double v_temperature_K(const pl_thermo_sample_t *s, int a)
+{
+    (void)a;
+    return s->kT * s->sim->scene.mapping.physical.temperature;
+}
+static double v_model_temperature_K(const pl_thermo_sample_t *s, int a)
 {
     (void)a;
     return s->kT * s->sim->scene.mapping.map.kT_model / PL_KB;
@@ -238,6 +245,7 @@ static double v_wall_stress(const pl_thermo_sample_t *s, int a) { return pl_sim_
 static const pl_thermo_column_t mapped_cols[] = {
     {.name = "time_s", .unit = "s", .value = v_time_s},
     {.name = "temperature_K", .unit = "K", .value = v_temperature_K},
+    {.name = "model_temperature_K", .unit = "K", .value = v_model_temperature_K},
 };
 static const pl_thermo_column_t fluid_cols[] = {
     {.name = "temperature", .unit = "kT", .value = v_kT},

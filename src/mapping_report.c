@@ -77,6 +77,10 @@ void pl_mapping_print_text(const pl_mapping_t *m, const pl_mapping_colloid_t *c,
                 c->hamaker, c->coulomb, c->kappa, c->primary_minimum, c->n_colloids);
     fprintf(f, "  MD: dt_MD = %.4g s = %.4g t0, %lld MD steps per SRD step\n", m->md_dt, m->md_dt / m->t0,
             m->md_substeps);
+    if (c && c->nprov > 0) {
+        fprintf(f, "  model keys derived from physical{} + coarse_graining{}:\n");
+        for (int i = 0; i < c->nprov; ++i) fprintf(f, "    %s\n", c->prov[i]);
+    }
     row_t rows[8];
     const char *title[2] = {"time scales (Hecht Tables II-IV)", "time scales (PL Table III)"};
     for (int k = 0; k < 2; ++k) {
@@ -154,6 +158,13 @@ int pl_mapping_json(const pl_mapping_t *m, const pl_mapping_colloid_t *c, const 
         pl_json_real_or_null(&b, o, "kappa_a0", c->kappa);
         pl_json_real_or_null(&b, o, "primary_minimum_a0", c->primary_minimum);
         pl_json_int(&b, o, "n_colloids", c->n_colloids);
+        if (c->nprov > 0) {
+            pl_json_real_or_null(&b, o, "volume_fraction_given", c->phi_given);
+            pl_json_real_or_null(&b, o, "volume_fraction_realised", c->phi_realised);
+            json_t *a = json_array();
+            for (int i = 0; i < c->nprov; ++i) json_array_append_new(a, json_string(c->prov[i]));
+            pl_json_set(&b, o, "derived_keys", a);
+        }
     }
     pl_json_real_or_null(&b, o, "md_dt_s", m->md_dt);
     pl_json_real_or_null(&b, o, "md_dt_t0", m->md_dt / m->t0);

@@ -77,8 +77,17 @@ static void fill_inputs(const pl_scene_t *s, pl_mapping_system_t *r, pl_mapping_
 static int electrostatics(pl_scene_t *s, pl_err_t *err)
 {
     pl_scene_mapping_t *mp = &s->mapping;
-    const pl_scene_physical_t *p = &mp->physical;
+    pl_scene_physical_t *p = &mp->physical;
     double kT = PL_KB * p->temperature;
+    if (pl_scene_line_of(s, OFF(mapping.physical.permittivity)) <= 0) {
+        /* not given: water at the scene's temperature, stated in the report */
+        p->permittivity = pl_mapping_water_permittivity(p->temperature);
+        if (!isfinite(p->permittivity))
+            return pl_scene_fail(s, err, OFF(mapping.physical.temperature), "physical.temperature",
+                                 "%g K is outside 273.15-373.15 K where the water permittivity fit "
+                                 "(Malmberg & Maryott 1956) holds; give physical.permittivity",
+                                 p->temperature);
+    }
     if (p->kappa > 0 && p->ionic_strength > 0)
         return pl_scene_fail(s, err, OFF(mapping.physical.kappa), "physical.kappa",
                              "given together with physical.ionic_strength; give one of them");
@@ -103,6 +112,9 @@ static int electrostatics(pl_scene_t *s, pl_err_t *err)
     return 0;
 }
 
+/* Hecht Sec. VII (phi kept): the colloid count is phi V / (4/3 pi R^3) of
+ * the box actually used (whole cells), so the realised phi differs from the
+ * given one only by rounding the count; rounding the box is reported. */
 static int apply_box(pl_scene_t *s, pl_err_t *err)
 {
     const pl_scene_physical_t *p = &s->mapping.physical;
@@ -110,7 +122,7 @@ static int apply_box(pl_scene_t *s, pl_err_t *err)
     int given = p->box[0] > 0 || p->box[1] > 0 || p->box[2] > 0;
     if (given) {
         for (int d = 0; d < 3; ++d) {
-            double n = ceil(p->box[d] / a0 - 1e-9);
+            double n = fmax(1.0, floor(p->box[d] / a0 + 0.5)); /* nearest whole number of cells */
             if (forbid(s, err, OFF(box.cells), "box.cells", n, s->box.cells[d])) return PL_ERR_INPUT;
             if (!(p->box[d] > 0) || n > 4096)
                 return pl_scene_fail(s, err, OFF(mapping.physical.box), "physical.box",
@@ -122,7 +134,30 @@ static int apply_box(pl_scene_t *s, pl_err_t *err)
     double V = 1.0;
     for (int d = 0; d < 3; ++d) V *= s->box.cells[d] * a0;
     double vc = 4.0 / 3.0 * M_PI * pow(p->radius, 3);
-    s->mapping.colloid.n_colloids = (long long)floor(p->volume_fraction * V / vc + 0.5);
+    pl_mapping_colloid_t *c = &s->mapping.colloid;
+    c->n_colloids = (long long)floor(p->volume_fraction * V / vc + 0.5);
+    c->phi_given = p->volume_fraction;
+    c->phi_realised = (double)c->n_colloids * vc / V;
+    if (given && p->volume_fraction > 0) {
+        double Vg = p->box[0] * p->box[1] * p->box[2];
+        if (fabs(V / Vg - 1.0) > 0.005)
+            pl_mapping_warn(&s->mapping.map, PL_SEV_NOTE, "BOX_ROUNDED", V / Vg,
+                            "physical.box %.4g x %.4g x %.4g um rounded up to %d x %d x %d cells of a0 = "
+                            "%.4g um (volume x %.4f): the count phi V / (4/3 pi R^3) of the given box "
+                            "(%.0f) would give phi = %.4g in the box used; the colloid count is taken "
+                            "from the box used instead: %lld colloids, phi = %.5g",
+                            p->box[0] * 1e6, p->box[1] * 1e6, p->box[2] * 1e6, s->box.cells[0],
+                            s->box.cells[1], s->box.cells[2], a0 * 1e6, V / Vg,
+                            floor(p->volume_fraction * Vg / vc + 0.5),
+                            floor(p->volume_fraction * Vg / vc + 0.5) * vc / V, c->n_colloids,
+                            c->phi_realised);
+    }
+    if (p->volume_fraction > 0 && fabs(c->phi_realised / p->volume_fraction - 1.0) > 0.005)
+        pl_mapping_warn(&s->mapping.map, PL_SEV_WARNING, "PHI_ROUNDED", c->phi_realised,
+                        "%lld colloids in the box realise phi = %.5g, %.2g%% off physical.volume_fraction "
+                        "= %g (too few colloids to round finely); enlarge physical.box",
+                        c->n_colloids, c->phi_realised, 100.0 * (c->phi_realised / p->volume_fraction - 1.0),
+                        p->volume_fraction);
     return 0;
 }
 
@@ -167,6 +202,7 @@ int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
     c->primary_minimum = r.l_min / m->a0;
     c->md_dt = m->md_dt / m->t0;
     c->md_substeps = m->md_substeps;
+    if (pl_mapping_colloids_apply(s, err)) return PL_ERR_INPUT;
     if (mp->cg.strict && pl_mapping_nwarnings(m) > 0) {
         for (int i = 0; i < m->nwarn; ++i)
             if (m->warn[i].severity == PL_SEV_WARNING)
@@ -198,6 +234,47 @@ int pl_mapping_report_strict(const struct pl_scene *scene, int strict, pl_err_t 
     return 0;
 }
 
+/* The physical{} and coarse_graining{} inputs, each marked given (with its
+ * line), derived (from which relation) or default. */
+static void print_inputs(const pl_scene_t *s, FILE *f)
+{
+    const pl_section_t *secs[2] = {&pl_scene_section_physical, &pl_scene_section_coarse_graining};
+    fprintf(f, "Inputs of the mapping (given: in the file; default: the schema's; derived: computed here):\n");
+    for (int k = 0; k < 2; ++k) {
+        for (size_t i = 0; i < secs[k]->nkeys; ++i) {
+            const pl_key_t *key = &secs[k]->keys[i];
+            const char *base = (const char *)s + key->offset;
+            char v[96];
+            switch (key->type) {
+            case PL_KEY_REAL: snprintf(v, sizeof v, "%.6g", *(const double *)base); break;
+            case PL_KEY_REAL3: {
+                const double *x = (const double *)base;
+                snprintf(v, sizeof v, "[%.6g, %.6g, %.6g]", x[0], x[1], x[2]);
+                break;
+            }
+            case PL_KEY_INT: snprintf(v, sizeof v, "%lld", *(const long long *)base); break;
+            case PL_KEY_BOOL: snprintf(v, sizeof v, "%s", *(const int *)base ? "true" : "false"); break;
+            case PL_KEY_CHOICE: snprintf(v, sizeof v, "\"%s\"", key->choices[*(const int *)base]); break;
+            default: snprintf(v, sizeof v, "-"); break;
+            }
+            int line = pl_scene_line_of(s, key->offset);
+            char how[160];
+            if (line > 0) snprintf(how, sizeof how, "given, line %d", line);
+            else if (key->offset == OFF(mapping.physical.permittivity))
+                snprintf(how, sizeof how, "derived: water at %g K (Malmberg & Maryott 1956)",
+                         s->mapping.physical.temperature);
+            else if (key->offset == OFF(mapping.physical.kappa) && s->mapping.physical.ionic_strength > 0)
+                snprintf(how, sizeof how, "derived: Debye-Hueckel from ionic_strength = %.4g /m",
+                         s->mapping.kappa);
+            else if (key->offset == OFF(mapping.cg.cell_size))
+                snprintf(how, sizeof how, "default: a0/R = %.6g of the coupling (Hecht Sec. VII.B/C)",
+                         s->mapping.map.cg.cell_over_R);
+            else snprintf(how, sizeof how, "default");
+            fprintf(f, "  %s.%-20s = %-28s (%s)\n", secs[k]->name, key->name, v, how);
+        }
+    }
+}
+
 int pl_mapping_report(const struct pl_scene *scene, FILE *out, int json, int strict, pl_err_t *err)
 {
     const pl_scene_mapping_t *mp = &scene->mapping;
@@ -208,6 +285,7 @@ int pl_mapping_report(const struct pl_scene *scene, FILE *out, int json, int str
         json_decref(doc);
         if (rc) return rc;
     } else if (mp->enabled) {
+        print_inputs(scene, out);
         pl_mapping_print_text(&mp->map, &mp->colloid, out);
     }
     return pl_mapping_report_strict(scene, strict, err);

@@ -299,11 +299,13 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
             scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
     if (sim->colloids && (sim->colloids->pair.terms & PL_CT_DLVO)) {
         const pl_colloid_dlvo_info_t *d = &sim->colloids->dlvo;
+        char bar[64] = "none", sec[64] = "none"; /* NaN: the potential has no barrier / secondary minimum */
+        if (isfinite(d->barrier_u)) snprintf(bar, sizeof bar, "%.4g kT at %.4g a0", d->barrier_u, d->barrier_h);
+        if (isfinite(d->secmin_u)) snprintf(sec, sizeof sec, "%.4g kT at %.4g a0", d->secmin_u, d->secmin_h);
         say(o, "peloid: DLVO: primary minimum matched at gap %.4g a0 (curvature %.4g kT/a0^2); "
-                        "barrier %.4g kT at %.4g a0; secondary minimum %.4g kT at %.4g a0; cut-off gap "
-                        "%.4g a0, truncation error |V| = %.3g kT, |F| = %.3g kT/a0",
-                d->hm, d->curvature, d->barrier_u, d->barrier_h, d->secmin_u, d->secmin_h, d->hcut,
-                d->trunc_u, d->trunc_f);
+               "barrier %s; secondary minimum %s; cut-off gap %.4g a0, truncation error |V| = %.3g kT, "
+               "|F| = %.3g kT/a0",
+                d->hm, d->curvature, bar, sec, d->hcut, d->trunc_u, d->trunc_f);
     }
     if (sim->colloids && (sim->colloids->pair.terms & (PL_CT_WCA | PL_CT_DEPL))) {
         const pl_colloid_depl_info_t *d = &sim->colloids->depl;

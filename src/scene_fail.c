@@ -36,5 +36,8 @@ int pl_scene_fail(const pl_scene_t *scene, pl_err_t *err, size_t offset, const c
     int line = pl_scene_line_of(scene, offset);
     if (line > 0)
         return pl_err_set(err, PL_ERR_INPUT, "%s:%d: key '%s': %s", file_of(scene, offset), line, key, what);
+    if (scene->mapping.enabled) /* not in the file: the unit mapping set it */
+        return pl_err_set(err, PL_ERR_INPUT, "%s: key '%s' (derived from physical{}, see peloid params): %s",
+                          scene->path, key, what);
     return pl_err_set(err, PL_ERR_INPUT, "%s: key '%s' (default): %s", scene->path, key, what);
 }

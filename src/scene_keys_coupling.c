@@ -14,7 +14,7 @@ static const char *const placement_choices[] = {"nearest", "entry", NULL};
 
 static const pl_key_t coupling_keys[] = {
     {"method", PL_KEY_CHOICE, OFF(method), 0, 0, 0, method_choices, PL_COUPLE_NONE, NULL,
-     "-", "none: colloids and fluid do not interact; hecht1: fluid particles that stream into a "
+     "-", "(physical{} scenes: derived from coarse_graining.coupling) none: colloids and fluid do not interact; hecht1: fluid particles that stream into a "
           "colloid are reflected off its surface (Hecht Sec. IV); hecht2: colloids join the SRD "
           "collision of their cell with mass-weighted mean velocity (Hecht Sec. V, Eq. 15); "
           "potential: WCA colloid-fluid forces (PL Eq. 17), integrated at the MD step for the "

@@ -2,7 +2,9 @@
  * suspension in SI units, coarse_graining{} the choices that map it onto
  * SRD + MD (Hecht Sec. VII, PL Sec. VII).  A scene with physical{} gets
  * srd.dt, fluid.density, fluid.temperature (and box.cells when physical.box
- * is given) from the mapping; see src/mapping_scene.c. */
+ * is given) from the mapping (src/mapping_scene.c), and with
+ * physical.volume_fraction its colloids, pair terms, coupling method and MD
+ * substeps (src/mapping_colloids.c). */
 #include <stddef.h>
 
 #include "peloid/scene.h"
@@ -39,14 +41,22 @@ static const pl_key_t physical_keys[] = {
      "mol/L", "I = 1/2 sum c_i z_i^2 (a z:z salt of concentration c: I = c z^2); used when kappa = 0"},
     {"valence", PL_KEY_INT, P(valence), 1, 4, PL_KEY_INT32, NULL, 1, NULL,
      "-", "ion charge number z in Hecht Eq. 1"},
-    {"permittivity", PL_KEY_REAL, P(permittivity), 1, 1e3, 0, NULL, 78.5, NULL,
-     "-", "relative permittivity eps_r of the solvent (water at 25 C: 78.5)"},
+    {"permittivity", PL_KEY_REAL, P(permittivity), 1, 1e3, 0, NULL, 0, NULL,
+     "-", "relative permittivity eps_r of the solvent; not given: water at physical.temperature "
+          "(Malmberg & Maryott 1956: 78.3 at 25 C, 77.6 at 300 K; refused outside 0-100 C)"},
     {"primary_minimum", PL_KEY_REAL, P(primary_minimum), 0, 1e-3, 0, NULL, 0, NULL,
      "m", "distance l from the surface to the primary minimum (Hecht Table I: 8e-9); sets tau_V, Hecht Eq. 26"},
+    {"young_modulus", PL_KEY_REAL, P(young_modulus), 0, 1e13, 0, NULL, 0, NULL,
+     "Pa", "Young's modulus E of the colloid material (0: not given); with poisson_ratio gives the Hertz constant "
+           "K = 4 E sqrt(R/2) / (15 (1 - nu_P^2)) of Hecht Eq. 3 (Al2O3: ~3.7e11)"},
+    {"poisson_ratio", PL_KEY_REAL, P(poisson_ratio), -1, 0.5, PL_KEY_MIN_OPEN, NULL, 0, NULL,
+     "-", "Poisson ratio nu_P of the colloid material (with young_modulus; Al2O3: ~0.22)"},
+    {"hertz_constant", PL_KEY_REAL, P(hertz_constant), 0, 1e30, 0, NULL, 0, NULL,
+     "J/m^2.5", "(0: not given) Hertz constant K of Hecht Eq. 3 directly (instead of young_modulus + poisson_ratio)"},
     {"volume_fraction", PL_KEY_REAL, P(volume_fraction), 0, 0.74, 0, NULL, 0, NULL,
      "-", "colloid volume fraction phi; with the box gives the number of colloids"},
     {"box", PL_KEY_REAL3, P(box), 0, 1, 0, NULL, 0, NULL,
-     "m", "box edge lengths; 0: keep box.cells (else box.cells = ceil(L / a0), and box.cells must not be set)"},
+     "m", "box edge lengths; 0: keep box.cells (else box.cells = L / a0 rounded to the nearest whole number, box.cells must not be set; the colloid count follows phi in the box used, BOX_ROUNDED note)"},
     {"flow_velocity", PL_KEY_REAL, P(flow_velocity), 0, 1e3, 0, NULL, 0, NULL,
      "m/s", "typical colloid or flow velocity for Re, Pe, Ma when there is no gravity (PL Table V: 1e-5)"},
     {"sound_speed", PL_KEY_REAL, P(sound_speed), 0, 1e5, PL_KEY_MIN_OPEN, NULL, 1480, NULL,
@@ -74,13 +84,21 @@ static const pl_key_t cg_keys[] = {
     {"enskog", PL_KEY_BOOL, C(enskog), 0, 1, 0, NULL, 0, NULL,
      "-", "add the Enskog friction in parallel (PL Eqs. 40-41) to the model colloid friction"},
     {"fluid_gravity", PL_KEY_BOOL, C(fluid_gravity), 0, 1, 0, NULL, 0, NULL,
-     "-", "gravity also on the fluid (buoyancy); false: Hecht Eq. 31, the colloid alone feels a reduced gravity"},
+     "-", "gravity also on the fluid (buoyancy; audit numbers only, refused with colloids); false: Hecht Eq. 31, the colloid alone feels a reduced gravity"},
     {"srd_dt", PL_KEY_REAL, C(srd_dt), 0, 1e6, 0, NULL, 0, NULL,
      "s", "SRD step; 0: derived from time_match (Hecht Eq. 30); set it to use a rounded step"},
     {"md_dt", PL_KEY_REAL, C(md_dt), 0, 1e6, 0, NULL, 0, NULL,
      "s", "MD step; 0: min(tau_V, tau_P) of the model / md_resolution; rounded to divide the SRD step"},
     {"md_resolution", PL_KEY_REAL, C(md_resolution), 1, 1e6, 0, NULL, 20, NULL,
      "steps", "MD steps per shortest colloid time (Hecht Sec. II: ~20 steps per collision)"},
+    {"hertz_K", PL_KEY_REAL, C(hertz_K), 0, 1e15, 0, NULL, 0, NULL,
+     "kT/a0^2.5", "model Hertz constant chosen softer than the material (Hecht Sec. II: K is chosen so "
+                  "that overlaps stay below ~10% and a collision takes ~20 MD steps, not from the elastic "
+                  "modulus); 0 / not given: K of physical.young_modulus / hertz_constant in kT/a0^2.5"},
+    {"reach_energy", PL_KEY_REAL, C(reach_energy), 0, 1e6, PL_KEY_MIN_OPEN, NULL, 40, NULL,
+     "kT", "the MD substeps resolve every gap a colliding pair can reach with this energy above the lowest "
+           "pair energy further out (Boltzmann factor e^-40 by default); a DLVO barrier higher than this "
+           "shields the primary minimum and the Hertz contact (note CONTACT_SHIELDED)"},
     {"strict", PL_KEY_BOOL, C(strict), 0, 1, 0, NULL, 0, NULL,
      "-", "treat every audit warning (Ma, Re, Kn, Sc, Pe, time-scale hierarchy) as an error (like --strict)"},
 };

@@ -115,12 +115,16 @@ cmp -s run1/checkpoint.h5 resumed/checkpoint.h5 && ok "40 steps == 20 + restart 
 
 # a scene in physical units: mapping report and SI columns in the outputs
 "$PELOID" run "$ROOT/scenes/hecht_table1.cfg" --out mapped --steps 2 2> /dev/null
-$PY - <<'PYEOF' && ok "physical-unit scene: summary.json has mapping + units_si, thermo.tsv has time_s" || bad "mapped outputs"
+$PY - <<'PYEOF' && ok "physical-unit scene: summary.json has mapping + units_si, thermo.tsv has time_s, temperature_K = 300 K (real), model_temperature_K" || bad "mapped outputs"
 import json
 s = json.load(open("mapped/summary.json"))
 assert s["mapping"] is not None and s["units_si"]["a0_m"] > 0 and s["units_si"]["t0_s"] > 0
 head = open("mapped/thermo.tsv").readline().split()
-assert head[:4] == ["step", "time", "time_s", "temperature_K"], head
+assert head[:5] == ["step", "time", "time_s", "temperature_K", "model_temperature_K"], head
+row = dict(zip(head, open("mapped/thermo.tsv").readlines()[-1].split()))
+# temperature_K is the real one (kT = 1 <-> 300 K); the model's own is tiny (Hecht Sec. VII.B)
+assert abs(float(row["temperature_K"]) / 300.0 - 1) < 0.02, row
+assert float(row["model_temperature_K"]) < 0.01, row
 PYEOF
 
 # a capillary (walls_xy): outputs name each axis' boundary, restart refused
@@ -150,6 +154,20 @@ if [ $? -eq 0 ] && head -1 qs/thermo.tsv | grep -q "c_zcm" && \
    $PY "$ROOT/tools/plot_sediment.py" qs > plot.txt 2>&1 && [ -s qs/sediment.png ] && grep -q "Stokes" plot.txt; then
   ok "quickstart runs (80 steps), thermo has c_zcm, tools/plot_sediment.py draws qs/sediment.png"
 else bad "quickstart / plot_sediment: $(tail -3 plot.txt 2>/dev/null)"; fi
+# its real temperature: thermo temperature_K averages 300 K within 3 SE (rows
+# after step 0; SE from the rows, at least the one-sample fluctuation
+# 300 sqrt(2/(3 N_f)) / sqrt(rows) of the 34560 fluid particles)
+qsT=$($PY - <<'PYEOF'
+import math
+rows = [l.split() for l in open("qs/thermo.tsv")]
+k = rows[0].index("temperature_K")
+T = [float(r[k]) for r in rows[2:]]
+n = len(T); m = sum(T) / n
+se = max(math.sqrt(sum((t - m) ** 2 for t in T) / (n - 1) / n), 300 * math.sqrt(2 / (3 * 34560)) / math.sqrt(n))
+print("%.2f %.2f %d %s" % (m, se, n, "ok" if abs(m - 300) <= 3 * se else "bad"))
+PYEOF
+)
+case "$qsT" in *ok) ok "quickstart temperature_K = ${qsT% * ok} (mean, SE, rows): 300 K within 3 SE";; *) bad "quickstart temperature_K: $qsT";; esac
 
 # moving walls: only no-slip walls, moving in their own plane
 expect_refused wall_slip 'box: { walls_z = "slip";\n  wall_velocity_top = [0.1, 0.0, 0.0]; };\n' "wall_slip.cfg:2" "box.wall_velocity_top" "noslip"

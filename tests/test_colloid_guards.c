@@ -77,7 +77,7 @@ Test(colloid_guards, primary_minimum_30kT)
 {
     pl_colloid_t *c = head_on("box: { cells = [40, 40, 40]; }; fluid: { density = 0.0; };\n"
                               "colloids: { count = 2; pairs = \"dlvo, hertz\"; temperature = 0.0; };\n"
-                              "dlvo: { primary_depth = 30.0; psi0 = 20.0; kappa = 1.4e8; length_unit = 1.25e-7; };\n",
+                              "dlvo: { primary_depth = 30.0; psi0 = 20.0; kappa = 1.4e8; hamaker = 4.76e-20; length_unit = 1.25e-7; };\n",
                               0.0, 0.01);
     pl_err_t err = {0, ""};
     int rc = run_steps(c, 4000, &err);

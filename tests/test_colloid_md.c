@@ -19,7 +19,7 @@ static const char *NVE_SCENE =
     "srd: { dt = 0.1; };\n"
     "colloids: { count = 27; radius = 2.0; temperature = 1.0; substeps = 12;\n"
     "  pairs = \"dlvo, hertz\"; max_energy_drift = 0.0; };\n"
-    "dlvo: { psi0 = 20.0; kappa = 1.4e8; length_unit = 1.25e-7; };\n"
+    "dlvo: { psi0 = 20.0; kappa = 1.4e8; hamaker = 4.76e-20; length_unit = 1.25e-7; };\n"
     "hertz: { K = 1000.0; };\n";
 
 /* Undamped: the total energy stays within the bound over 3 10^5 MD steps,
@@ -202,7 +202,7 @@ Test(colloid_md, bitwise_threads)
                      "colloids: { count = 400; init = \"random\"; radius = 1.8; polydispersity = 0.1;\n"
                      "  pairs = \"dlvo, hertz, lubrication, wca\"; substeps = 10; temperature = 3.0;\n"
                      "  min_contact_steps = 0.0; };\n"
-                     "dlvo: { psi0 = 20.0; kappa = 1.4e8; length_unit = 1.25e-7; };\n"
+                     "dlvo: { psi0 = 20.0; kappa = 1.4e8; hamaker = 4.76e-20; length_unit = 1.25e-7; };\n"
                      "hertz: { K = 1000.0; beta = 2.0; gamma_t = 3.0; };\n";
     pl_scene_t s;
     scene_from(sc, &s);

@@ -14,7 +14,7 @@
 #include "peloid/io.h"
 #include "support.h"
 
-#define DLVO "dlvo: { psi0 = 20.0; kappa = 1.4e8; length_unit = 1.25e-7; };\n"
+#define DLVO "dlvo: { psi0 = 20.0; kappa = 1.4e8; hamaker = 4.76e-20; length_unit = 1.25e-7; };\n"
 
 static const char *scenes[] = {
     /* Verlet + rotation, Hertz with damping and tangential friction, DLVO, fluid */

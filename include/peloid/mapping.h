@@ -200,8 +200,11 @@ typedef struct {
     double kappa;             /* 1/m (0: from ionic_strength) */
     double ionic_strength;    /* mol/L */
     long long valence;        /* z of the (symmetric) electrolyte */
-    double permittivity;      /* relative, eps_r */
+    double permittivity;      /* relative, eps_r (0: water at the temperature) */
     double primary_minimum;   /* l, m */
+    double young_modulus;     /* E, Pa (Hertz constant with poisson_ratio) */
+    double poisson_ratio;     /* nu_P */
+    double hertz_constant;    /* K of Hecht Eq. 3, J/m^2.5 (instead of E, nu_P) */
     double volume_fraction;
     double box[3];            /* m; 0: box.cells as given */
     double flow_velocity;     /* m/s */
@@ -220,6 +223,8 @@ typedef struct {
     double mean_free_path;    /* lambda/a0 */
     double srd_dt, md_dt;     /* s; 0: derived */
     double md_resolution;
+    double hertz_K;           /* model Hertz constant, kT/a0^2.5; 0: from the material */
+    double reach_energy;      /* kT: the MD step resolves the gaps a pair reaches with this energy */
 } pl_scene_cg_t;
 
 /* Colloid parameters in simulation units, for the colloid module. */
@@ -232,6 +237,18 @@ typedef struct {
     double md_dt;                  /* t0 */
     long long md_substeps;
     long long n_colloids;          /* from volume_fraction and the box */
+    /* physical{} -> colloids{}, dlvo{}, hertz{}, lubrication{}, coupling{}
+     * (src/mapping_colloids.c) */
+    double phi_given, phi_realised;  /* volume fraction asked for / of the box used */
+    double mass_density;           /* m_f / a0^3 */
+    double inertia;                /* 2/5 M R^2, m_f a0^2 */
+    double hertz_K;                /* kT / a0^2.5 */
+    double lub_viscosity;          /* m_f / (a0 t0) */
+    double contact_time;           /* pi sqrt(m_red / U''_max), t0 */
+    double reach_gap;              /* smallest gap the substeps resolve, a0 */
+    char substeps_reason[400];     /* which criterion chose md_substeps */
+    int nprov;                     /* provenance lines of the derived keys */
+    char prov[32][480];
 } pl_mapping_colloid_t;
 
 typedef struct {
@@ -244,10 +261,28 @@ typedef struct {
 } pl_scene_mapping_t;
 
 /* Runs the mapping for a scene with a physical{} section and writes the
- * derived values into srd.dt, fluid.density, fluid.temperature and
- * box.cells (refusing those keys if the file also sets them).  A no-op
- * without the section.  Called by pl_scene_validate. */
+ * derived values into srd.dt, fluid.density, fluid.temperature, box.cells
+ * and (pl_mapping_colloids_apply) the colloid sections, refusing those keys
+ * if the file also sets them.  A no-op without the section.  Called by
+ * pl_scene_validate. */
 int pl_mapping_scene_apply(struct pl_scene *scene, pl_err_t *err);
+
+/* Second half of the scene front end (src/mapping_colloids.c): derives
+ * colloids{} (count from phi and the box used, radius, mass density, gravity,
+ * substeps), dlvo{}, hertz.K, lubrication.viscosity and coupling.method from
+ * physical{} + coarse_graining{}; refuses a derived key given in the file
+ * (naming it and the physical keys it comes from) and a pair term without
+ * its material constants. */
+int pl_mapping_colloids_apply(struct pl_scene *scene, pl_err_t *err);
+
+/* Relative permittivity of water at T (K), Malmberg & Maryott 1956 fit,
+ * valid 273.15-373.15 K (NaN outside). */
+double pl_mapping_water_permittivity(double T);
+
+/* Hertz constant K (J/m^2.5) of two equal elastic spheres of radius R:
+ * V = K delta^{5/2} (Hecht Eq. 3) with K = (8/15) E* sqrt(R/2), E* = E / (2
+ * (1 - nu_P^2)) (Hertz theory, Landau & Lifshitz Sec. 9). */
+double pl_mapping_hertz_K(double E, double nu_p, double R);
 
 /* ---- reports ----------------------------------------------------------- */
 /* Readable report / one JSON object; `colloid` may be NULL. */

@@ -1,0 +1,385 @@
+/* Scene front end, second half: physical{} + coarse_graining{} -> the colloid
+ * sections in model units (a0, m_f, t0, kT_real = 1), so that a scene in
+ * physical units is the whole truth (DESIGN.md "Units and mapping"):
+ *   colloids.count        phi V_box / (4/3 pi R^3), V of the box used
+ *   colloids.radius       R / a0
+ *   colloids.mass_density gamma rho_p / rho_f (rho_f = gamma m_f / a0^3, Hecht Sec. VII.B)
+ *   colloids.gravity      g_model t0^2 / a0 (Hecht Eq. 31, weight minus buoyancy)
+ *   colloids.temperature  1 (kT_model is the energy unit)
+ *   dlvo.*                Psi0, kappa, A_H, eps_r, z, T, a0 (Hecht Eqs. 1-2; energies
+ *                         in kT: A_H / kT kept, Hecht Sec. VII.B)
+ *   hertz.K               K a0^2.5 / kT (Hecht Eq. 3; K from E, nu_P by Hertz theory)
+ *   lubrication.viscosity eta_model = gamma nu_model (Hecht Eq. 4 with the model fluid)
+ *   coupling.method       hecht1 (coupling I) / hecht2 (coupling II)
+ *   colloids.substeps     the largest of: the mapping's MD step (Hecht Sec. VII:
+ *                         min(tau_V, tau_P) / md_resolution, or md_dt), the contact
+ *                         criterion of the min_contact_steps guard for the stiffest
+ *                         contact the pair terms can produce (Hertz at the largest
+ *                         allowed overlap, the primary minimum, WCA), and the damping
+ *                         guard (Hecht Eqs. 4, 6).
+ * A derived key given in the file is refused, naming it and the physical keys
+ * it comes from; a pair term without its material constants is refused,
+ * naming the missing keys. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "peloid/colloid.h"
+#include "peloid/colloid_pair.h"
+#include "peloid/scene.h"
+
+#define OFF(m) offsetof(pl_scene_t, m)
+
+double pl_mapping_water_permittivity(double T)
+{
+    double t = T - 273.15;
+    if (!(t >= 0.0 && t <= 100.0)) return NAN;
+    /* Malmberg & Maryott, J. Res. NBS 56, 1 (1956), Eq. 5 */
+    return 87.740 - 0.40008 * t + 9.398e-4 * t * t - 1.410e-6 * t * t * t;
+}
+
+double pl_mapping_hertz_K(double E, double nu_p, double R)
+{
+    double Es = E / (2.0 * (1.0 - nu_p * nu_p));
+    return 8.0 / 15.0 * Es * sqrt(0.5 * R);
+}
+
+static void prov(pl_mapping_colloid_t *c, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void prov(pl_mapping_colloid_t *c, const char *fmt, ...)
+{
+    if (c->nprov >= (int)(sizeof c->prov / sizeof c->prov[0])) return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(c->prov[c->nprov++], sizeof c->prov[0], fmt, ap);
+    va_end(ap);
+}
+
+static int given(const pl_scene_t *s, size_t off) { return pl_scene_line_of(s, off) > 0; }
+
+/* A derived key in the file: refused unless it carries the derived value
+ * itself (an echoed effective scene reloads). */
+static int refuse(const pl_scene_t *s, pl_err_t *err, size_t off, const char *key, const char *from,
+                  double given_v, double derived, const char *shown)
+{
+    if (!given(s, off) || fabs(given_v - derived) <= 1e-12 * fabs(derived)) return 0;
+    char v[64];
+    if (shown) snprintf(v, sizeof v, "\"%s\"", shown);
+    else snprintf(v, sizeof v, "%.6g", derived);
+    return pl_scene_fail(s, err, off, key,
+                         "is derived from %s (value %s here); remove it, a scene with physical{} "
+                         "gives the real suspension once (or remove physical{} and give model units)",
+                         from, v);
+}
+
+typedef struct {
+    size_t off;
+    const char *key, *from;
+    double derived, given;
+    const char *shown; /* the derived value as a word (choices); NULL: the number */
+} derived_t;
+
+static int check_missing(const pl_scene_t *s, pl_err_t *err, size_t off, const char *key, const char *term,
+                         const char *needs, const char *missing)
+{
+    if (!missing[0]) return 0;
+    return pl_scene_fail(s, err, off, key,
+                         "the %s pair term needs the material constants %s; missing: %s (no material "
+                         "defaults: give them in physical{})",
+                         term, needs, missing);
+}
+
+/* Largest U'' (kT/a0^2) over the gaps a pair of reference diameter d can
+ * reach: scanned inward from the pair cut-off, down to the largest overlap
+ * the overlap guard allows, and stopping where the pair energy rises more
+ * than e_reach above the lowest energy met further out (a barrier the pair
+ * cannot cross, or the Hertz wall).  U'' is the sum of curvatures the force
+ * kernel hands the min_contact_steps guard (kernels/colloid_forces.c). */
+static double stiffest(const pl_colloid_pair_params_t *p, double d, double max_overlap, double e_reach,
+                       double *h_at, double *h_reach)
+{
+    double hlo = -max_overlap * d, hhi = fmax(p->gap_cut, 0.0), best = 0.0, umin = INFINITY;
+    *h_at = *h_reach = hlo;
+    const int ng = 200000;
+    for (int k = ng; k >= 0; --k) {
+        double h = hlo + (hhi - hlo) * (double)k / ng, r = d + h, k2 = 0.0, u = 0.0;
+        if ((p->terms & PL_CT_DLVO) && h < p->dlvo_hcut) {
+            pl_pair_val_t v = pl_pair_dlvo(r, d, p->coul_C, p->kappa, p->hamaker, p->prim_hm, p->prim_h0,
+                                           p->dlvo_shift);
+            k2 += v.k2;
+            u += v.u;
+        }
+        if ((p->terms & PL_CT_HERTZ) && h < 0.0) {
+            pl_pair_val_t v = pl_pair_hertz(-h, p->hertz_K);
+            k2 += v.k2;
+            u += v.u;
+        }
+        if (p->terms & PL_CT_WCA) {
+            double sg = p->wca_sigma > 0.0 ? p->wca_sigma : d;
+            if (r < sg * p->wca_rfac) {
+                pl_pair_val_t v = pl_pair_wca(r, sg, p->wca_eps, p->wca_n);
+                k2 += v.k2;
+                u += v.u;
+            }
+        }
+        if (u < umin) umin = u;
+        if (u - umin > e_reach) {
+            *h_reach = h;
+            break;
+        }
+        if (k2 > best) {
+            best = k2;
+            *h_at = h;
+        }
+    }
+    return best;
+}
+
+static int substeps(pl_scene_t *s, pl_err_t *err)
+{
+    pl_scene_mapping_t *mp = &s->mapping;
+    pl_mapping_colloid_t *c = &mp->colloid;
+    pl_scene_colloids_t *cs = &s->colloids;
+    pl_colloid_pair_params_t p;
+    pl_colloid_dlvo_info_t info;
+    pl_err_t e = {0, ""};
+    if (pl_colloid_pair_params(s, &p, &info, &e))
+        return pl_scene_fail(s, err, OFF(mapping.physical.surface_potential), "physical.surface_potential",
+                             "the derived DLVO potential: %s", e.msg);
+    if (p.terms & PL_CT_DLVO) {
+        char bar[64] = "none", sec[64] = "none"; /* the potential need not have them */
+        if (isfinite(info.barrier_u)) snprintf(bar, sizeof bar, "%.4g kT at gap %.4g a0", info.barrier_u, info.barrier_h);
+        if (isfinite(info.secmin_u)) snprintf(sec, sizeof sec, "%.4g kT at gap %.4g a0", info.secmin_u, info.secmin_h);
+        prov(c, "DLVO potential (Hecht Eqs. 1-2, parabolic primary minimum of Sec. II): primary minimum -%g kT "
+                "at gap %.4g a0 (matched at %.4g a0, curvature %.4g kT/a0^2); barrier %s; secondary minimum %s; "
+                "cut-off gap %.4g a0",
+             cs->dlvo.primary_depth, info.h0, info.hm, info.curvature, bar, sec, info.hcut);
+    }
+    double d = 2.0 * cs->radius, dt = s->srd.dt;
+    double shrink = 1.0 - sqrt(3.0) * cs->polydispersity; /* smallest colloid of the distribution */
+    double mass = cs->mass_density * 4.0 / 3.0 * M_PI * pow(cs->radius * shrink, 3.0);
+    double m_red = 0.5 * mass;
+    double e_reach = mp->cg.reach_energy, h_at = 0.0, h_reach = 0.0;
+    double k2 = stiffest(&p, d, cs->max_overlap, e_reach, &h_at, &h_reach);
+    long long n_map = mp->map.md_substeps, n_contact = 0, n_damp = 0;
+    c->contact_time = k2 > 0.0 ? M_PI * sqrt(m_red / k2) : INFINITY;
+    if (cs->min_contact_steps > 0.0 && k2 > 0.0)
+        n_contact = (long long)ceil(1.05 * cs->min_contact_steps * dt / c->contact_time);
+    /* dissipative rate zeta / m_red <= 0.5 / dt_MD (the damping guard) */
+    double zeta = 0.0;
+    if (p.terms & PL_CT_HERTZ) zeta += p.hertz_beta * sqrt(cs->max_overlap * d) + p.hertz_gamma_t;
+    if (p.terms & PL_CT_LUB)
+        zeta += pl_pair_lub_zeta(0.0, cs->radius, cs->radius, p.lub_eta, p.lub_hmin, p.lub_hcut);
+    if (zeta > 0.0) n_damp = (long long)ceil(1.05 * dt * zeta / (0.5 * m_red));
+    long long n = n_map;
+    const char *why = mp->cg.md_dt > 0 ? "coarse_graining.md_dt" : "min(tau_V, tau_P) / md_resolution (Hecht Sec. VII)";
+    if (n_contact > n) {
+        n = n_contact;
+        why = "contact guard";
+    }
+    if (n_damp > n) {
+        n = n_damp;
+        why = "damping guard";
+    }
+    if (n > 1000000)
+        return pl_scene_fail(s, err, OFF(mapping.physical.radius), "physical.radius",
+                             "the stiffest contact (U'' = %.4g kT/a0^2, collision time %.4g t0) needs %lld MD "
+                             "steps per SRD step (more than 1e6); soften it: coarse_graining.hertz_K, "
+                             "dlvo.primary_depth", k2, c->contact_time, n);
+    snprintf(c->substeps_reason, sizeof c->substeps_reason,
+             "%lld MD steps per SRD step from the %s; mapping %lld, contact %lld (U''max = %.4g kT/a0^2 at gap "
+             "%.3g a0, collision %.4g t0, >= %g steps: colloids.min_contact_steps; gaps down to %.4g a0 "
+             "reachable with %g kT: coarse_graining.reach_energy), damping %lld",
+             n, why, n_map, n_contact, k2, h_at, c->contact_time, cs->min_contact_steps, h_reach, e_reach,
+             n_damp);
+    c->reach_gap = h_reach;
+    if (h_reach > 0.0 && (p.terms & PL_CT_DLVO))
+        pl_mapping_warn(&mp->map, PL_SEV_NOTE, "CONTACT_SHIELDED", h_reach,
+                        "the DLVO barrier keeps pairs out of gaps below %.4g a0 (more than "
+                        "coarse_graining.reach_energy = %g kT above the outer minimum): the primary minimum "
+                        "and the Hertz contact are not resolved by the MD step; a pair started or pushed "
+                        "there trips the contact guard (raise reach_energy to resolve them)",
+                        h_reach, e_reach);
+    if (refuse(s, err, OFF(colloids.substeps), "colloids.substeps",
+               "physical{} and coarse_graining{} (MD step, stiffest contact)", (double)cs->substeps, (double)n,
+               NULL))
+        return PL_ERR_INPUT;
+    cs->substeps = n;
+    mp->map.md_substeps = n;
+    mp->map.md_dt = mp->map.dt / (double)n;
+    c->md_substeps = n;
+    c->md_dt = dt / (double)n;
+    prov(c, "colloids.substeps = %lld (derived: %s)", n, c->substeps_reason);
+    return 0;
+}
+
+int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
+{
+    pl_scene_mapping_t *mp = &s->mapping;
+    const pl_scene_physical_t *ph = &mp->physical;
+    const pl_mapping_t *m = &mp->map;
+    pl_mapping_colloid_t *c = &mp->colloid;
+    pl_scene_colloids_t *cs = &s->colloids;
+    c->nprov = 0;
+    int have = c->n_colloids > 0;
+    if (ph->volume_fraction > 0 && !have)
+        return pl_scene_fail(s, err, OFF(mapping.physical.volume_fraction), "physical.volume_fraction",
+                             "%g gives no colloid in the box (%d x %d x %d cells of %.4g m); allowed: a larger "
+                             "physical.box or volume fraction", ph->volume_fraction, s->box.cells[0],
+                             s->box.cells[1], s->box.cells[2], m->a0);
+
+    if (have && mp->cg.fluid_gravity && ph->gravity > 0)
+        return pl_scene_fail(s, err, OFF(mapping.cg.fluid_gravity), "coarse_graining.fluid_gravity",
+                             "with colloids is not supported: the fluid would need the body force and the "
+                             "colloids the full weight, with buoyancy from the fluid's pressure, which "
+                             "coupling II point colloids do not feel; allowed: false (Hecht Eq. 31: "
+                             "weight minus buoyancy on the colloids alone)");
+    /* what the model derives, in model units */
+    const char *pairs_src = "given";
+    if (have && !given(s, OFF(colloids.pairs))) {
+        int dlvo = given(s, OFF(mapping.physical.surface_potential)) || given(s, OFF(mapping.physical.hamaker));
+        snprintf(cs->pairs, sizeof cs->pairs, "%s", dlvo ? "dlvo, hertz" : "hertz");
+        pairs_src = dlvo ? "derived: physical.surface_potential / hamaker given" : "derived: contact repulsion only";
+    }
+    unsigned mask = 0;
+    char bad[128];
+    if (pl_colloid_parse_pairs(cs->pairs, &mask, bad, sizeof bad)) mask = 0; /* reported by the colloid checks */
+    if (!have) mask = 0;
+    double rho_ratio = ph->particle_density / ph->solvent_density;
+    double eta = mp->cg.particles_per_cell * m->nu_sim; /* rho_f nu, m_f / (a0 t0) */
+    double kT = PL_KB * ph->temperature;
+    double K = 0.0;
+    const char *K_src = "";
+    size_t pairs_off = given(s, OFF(colloids.pairs)) ? OFF(colloids.pairs) : OFF(mapping.physical.volume_fraction);
+    const char *pairs_key = given(s, OFF(colloids.pairs)) ? "colloids.pairs" : "physical.volume_fraction";
+    if (mask & PL_CT_DLVO) {
+        char miss[256] = "";
+        if (!given(s, OFF(mapping.physical.hamaker))) strcat(miss, "physical.hamaker, ");
+        if (!given(s, OFF(mapping.physical.surface_potential))) strcat(miss, "physical.surface_potential, ");
+        if (!(mp->kappa > 0)) strcat(miss, "physical.kappa or physical.ionic_strength, ");
+        if (miss[0]) miss[strlen(miss) - 2] = '\0';
+        if (check_missing(s, err, pairs_off, pairs_key, "dlvo",
+                          "physical.hamaker, physical.surface_potential and physical.kappa (or "
+                          "physical.ionic_strength)", miss))
+            return PL_ERR_INPUT;
+    }
+    if (mask & PL_CT_HERTZ) {
+        if (mp->cg.hertz_K > 0) {
+            K = mp->cg.hertz_K;
+            K_src = "given: coarse_graining.hertz_K (softer than the material, Hecht Sec. II)";
+        } else if (ph->hertz_constant > 0) {
+            K = ph->hertz_constant * pow(m->a0, 2.5) / kT;
+            K_src = "derived: physical.hertz_constant a0^2.5 / kT (Hecht Eq. 3)";
+        } else if (ph->young_modulus > 0 && given(s, OFF(mapping.physical.poisson_ratio))) {
+            K = pl_mapping_hertz_K(ph->young_modulus, ph->poisson_ratio, ph->radius) * pow(m->a0, 2.5) / kT;
+            K_src = "derived: Hertz theory from physical.young_modulus, poisson_ratio (Hecht Eq. 3)";
+        } else {
+            char miss[200];
+            snprintf(miss, sizeof miss, "%s",
+                     ph->young_modulus > 0 ? "physical.poisson_ratio"
+                     : given(s, OFF(mapping.physical.poisson_ratio))
+                         ? "physical.young_modulus"
+                         : "physical.young_modulus + physical.poisson_ratio, or physical.hertz_constant, or "
+                           "coarse_graining.hertz_K");
+            if (check_missing(s, err, pairs_off, pairs_key, "hertz",
+                              "physical.young_modulus + physical.poisson_ratio (or physical.hertz_constant, "
+                              "or the model choice coarse_graining.hertz_K)", miss))
+                return PL_ERR_INPUT;
+        }
+    }
+    int method = !have ? s->coupling.method
+                 : mp->cg.coupling == PL_COUPLING_I ? PL_COUPLE_HECHT1 : PL_COUPLE_HECHT2;
+    double g = have && m->g_sim > 0.0 ? -m->g_sim : 0.0;
+    double temp = have ? 1.0 : cs->temperature;
+    /* the derived keys: refused when given with another value */
+    const char *phi_from = "physical.volume_fraction, physical.box and physical.radius";
+    derived_t dk[] = {
+        {OFF(colloids.count), "colloids.count", phi_from, (double)c->n_colloids, (double)cs->count, NULL},
+        {OFF(colloids.radius), "colloids.radius", "physical.radius and coarse_graining.cell_size", m->sigma,
+         cs->radius, NULL},
+        {OFF(colloids.mass_density), "colloids.mass_density",
+         "physical.particle_density, solvent_density and coarse_graining.particles_per_cell",
+         mp->cg.particles_per_cell * rho_ratio, cs->mass_density, NULL},
+        {OFF(colloids.temperature), "colloids.temperature", "physical.temperature (kT_model = 1)", temp,
+         cs->temperature, NULL},
+        {OFF(colloids.gravity), "colloids.gravity", "physical.gravity and the densities (Hecht Eq. 31)", g,
+         cs->gravity[2], NULL},
+        {OFF(colloids.bd_viscosity), "colloids.bd_viscosity", "physical.viscosity (model eta)", eta,
+         cs->bd_viscosity, NULL},
+        {OFF(colloids.dlvo.eps_r), "dlvo.eps_r", "physical.permittivity", ph->permittivity, cs->dlvo.eps_r, NULL},
+        {OFF(colloids.dlvo.psi0_mV), "dlvo.psi0", "physical.surface_potential", 1e3 * ph->surface_potential,
+         cs->dlvo.psi0_mV, NULL},
+        {OFF(colloids.dlvo.z), "dlvo.z", "physical.valence", (double)ph->valence, cs->dlvo.z, NULL},
+        {OFF(colloids.dlvo.temperature_K), "dlvo.temperature", "physical.temperature", ph->temperature,
+         cs->dlvo.temperature_K, NULL},
+        {OFF(colloids.dlvo.kappa_per_m), "dlvo.kappa", "physical.kappa or physical.ionic_strength", mp->kappa,
+         cs->dlvo.kappa_per_m, NULL},
+        {OFF(colloids.dlvo.hamaker_J), "dlvo.hamaker", "physical.hamaker", ph->hamaker, cs->dlvo.hamaker_J, NULL},
+        {OFF(colloids.dlvo.length_unit_m), "dlvo.length_unit", "physical.radius and coarse_graining.cell_size (a0)",
+         m->a0, cs->dlvo.length_unit_m, NULL},
+        {OFF(colloids.hertz.K), "hertz.K",
+         "physical.young_modulus + poisson_ratio, physical.hertz_constant or coarse_graining.hertz_K", K,
+         cs->hertz.K, NULL},
+        {OFF(colloids.lub.viscosity), "lubrication.viscosity", "physical.viscosity (model eta = gamma nu)", eta,
+         cs->lub.viscosity, NULL},
+        {OFF(coupling.method), "coupling.method", "coarse_graining.coupling", (double)method,
+         (double)s->coupling.method, method == PL_COUPLE_HECHT1 ? "hecht1" : method == PL_COUPLE_HECHT2 ? "hecht2" : "none"},
+    };
+    /* without colloids (no volume fraction) only a hand-given count matters:
+     * the other colloid keys act on nothing (an echoed scene prints them) */
+    for (size_t i = 0; i < (have ? sizeof dk / sizeof dk[0] : 1); ++i)
+        if (refuse(s, err, dk[i].off, dk[i].key, dk[i].from, dk[i].given, dk[i].derived, dk[i].shown))
+            return PL_ERR_INPUT;
+    if (have && given(s, OFF(colloids.gravity)) && (cs->gravity[0] != 0.0 || cs->gravity[1] != 0.0))
+        return pl_scene_fail(s, err, OFF(colloids.gravity), "colloids.gravity",
+                             "is derived from physical.gravity (along -z); remove it");
+    if (!have) return 0;
+
+    cs->count = c->n_colloids;
+    cs->radius = m->sigma;
+    cs->mass_density = mp->cg.particles_per_cell * rho_ratio;
+    cs->temperature = 1.0;
+    cs->gravity[0] = cs->gravity[1] = 0.0;
+    cs->gravity[2] = g;
+    cs->bd_viscosity = eta;
+    cs->lub.viscosity = eta;
+    cs->dlvo.eps_r = ph->permittivity;
+    cs->dlvo.psi0_mV = 1e3 * ph->surface_potential;
+    cs->dlvo.z = (double)ph->valence;
+    cs->dlvo.temperature_K = ph->temperature;
+    cs->dlvo.kappa_per_m = mp->kappa;
+    cs->dlvo.hamaker_J = ph->hamaker;
+    cs->dlvo.length_unit_m = m->a0;
+    if (mask & PL_CT_HERTZ) cs->hertz.K = K;
+    s->coupling.method = method;
+    double M = cs->mass_density * 4.0 / 3.0 * M_PI * pow(cs->radius, 3.0);
+    c->mass_density = cs->mass_density;
+    c->inertia = 0.4 * M * cs->radius * cs->radius;
+    c->hertz_K = cs->hertz.K;
+    c->lub_viscosity = eta;
+
+    prov(c, "colloids.count = %lld (derived: phi V / (4/3 pi R^3) in the box used, %d x %d x %d a0; phi "
+            "given %g, realised %.5g)",
+         c->n_colloids, s->box.cells[0], s->box.cells[1], s->box.cells[2], c->phi_given, c->phi_realised);
+    prov(c, "colloids.radius = %.6g a0 (derived: R / a0, a0 = %s R)", cs->radius,
+         given(s, OFF(mapping.cg.cell_size)) ? "coarse_graining.cell_size" : "the coupling's default");
+    prov(c, "colloids.mass_density = %.6g m_f/a0^3 (derived: gamma rho_p / rho_f, Hecht Sec. VII.B): M = %.6g "
+            "m_f, I = 2/5 M R^2 = %.6g m_f a0^2",
+         cs->mass_density, M, c->inertia);
+    prov(c, "colloids.gravity = [0, 0, %.6g] a0/t0^2 (derived: Hecht Eq. 31, weight minus buoyancy)", g);
+    prov(c, "colloids.temperature = 1 kT_model (derived: the model energy unit)");
+    prov(c, "colloids.pairs = \"%s\" (%s)", cs->pairs, pairs_src);
+    if (mask & PL_CT_DLVO)
+        prov(c, "dlvo: psi0 = %.6g mV, kappa = %.6g /m (%s), hamaker = %.6g J, eps_r = %.6g (%s), z = %g, "
+                "T = %g K, length_unit = a0 = %.6g m (derived: Hecht Eqs. 1-2)",
+             cs->dlvo.psi0_mV, mp->kappa, given(s, OFF(mapping.physical.kappa)) ? "given" : "Debye-Hueckel",
+             ph->hamaker, ph->permittivity,
+             given(s, OFF(mapping.physical.permittivity)) ? "given" : "water at T, Malmberg & Maryott",
+             cs->dlvo.z, ph->temperature, m->a0);
+    if (mask & PL_CT_HERTZ) prov(c, "hertz.K = %.6g kT/a0^2.5 (%s)", K, K_src);
+    prov(c, "lubrication.viscosity = %.6g m_f/(a0 t0) (derived: eta = gamma nu_model, Hecht Eq. 4%s)", eta,
+         (mask & PL_CT_LUB) ? "" : "; lubrication not in colloids.pairs");
+    prov(c, "coupling.method = \"%s\" (derived: coarse_graining.coupling = \"%s\")",
+         method == PL_COUPLE_HECHT1 ? "hecht1" : "hecht2", mp->cg.coupling == PL_COUPLING_I ? "I" : "II");
+    return substeps(s, err);
+}
