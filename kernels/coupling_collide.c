@@ -25,7 +25,6 @@
 
 #include "peloid/coupling_kernels.h"
 #include "peloid/rng.h"
-#include "peloid/scene.h"
 #include "peloid/srd_kernels.h"
 #include "peloid/srd_rules.h"
 

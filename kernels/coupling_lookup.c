@@ -8,7 +8,6 @@
 #include <string.h>
 
 #include "peloid/coupling_kernels.h"
-#include "peloid/scene.h"
 
 uint32_t pl_coupling_cell_of(const pl_grid_t *g, double x, double y, double z)
 {

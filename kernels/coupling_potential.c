@@ -13,7 +13,6 @@
 #include <string.h>
 
 #include "peloid/coupling_kernels.h"
-#include "peloid/scene.h"
 #include "peloid/srd_kernels.h"
 
 /* The box for the minimum image: sides, and half sides on periodic axes

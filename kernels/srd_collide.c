@@ -33,7 +33,6 @@
 #include <math.h>
 
 #include "peloid/rng.h"
-#include "peloid/scene.h"
 #include "peloid/srd_kernels.h"
 #include "peloid/srd_rules.h"
 

@@ -9,6 +9,7 @@
 
 #include "peloid/fluid.h"
 #include "peloid/grid.h"
+#include "peloid/kernel_enums.h" /* PL_WALLS_*, PL_RULE_*, PL_BOUND_*, PL_PLACE_* */
 
 /* Colloid arrays the coupling kernels read (length n). */
 typedef struct {

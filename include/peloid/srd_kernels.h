@@ -10,6 +10,7 @@
 
 #include "peloid/fluid.h"
 #include "peloid/grid.h"
+#include "peloid/kernel_enums.h" /* PL_RULE_*, PL_WALLS_* */
 
 /* ---- streaming fused with cell binning (kernels/srd_stream.c) ---------- */
 /* Wall impulse accumulators: PL_WALL_ACC_STRIDE int64 per thread (two cache
