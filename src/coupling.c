@@ -8,7 +8,6 @@
 
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
-#include "peloid/rng.h"
 #include "peloid/sim.h"
 
 
@@ -115,24 +114,10 @@ int pl_coupling_lookup_update(pl_coupling_t *cp, const pl_sim_t *sim, pl_err_t *
  * (draws keyed by particle index: thread independent). */
 static void clear_interiors(pl_coupling_t *cp, pl_sim_t *sim, const double *rad)
 {
-    pl_fluid_t *f = &sim->fluid;
     pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
     if (rad) v.rad = rad;
-    const int *L = sim->grid.L;
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < f->n; ++i) {
-        double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, p[3];
-        for (uint64_t draw = 0; draw < 1000; ++draw) {
-            if (pl_coupling_inside(&v, L, sim->grid.walls, cp->lk_start, cp->lk_list, r, p) < 0)
-                break;
-            pl_rand4_t u = pl_rng_uniform4(cp->seed, PL_RNG_FLUID_REPLACE, 0, i, draw);
-            for (int d = 0; d < 3; ++d) {
-                r[d] = u.u[d] * L[d];
-                if (r[d] >= L[d]) r[d] = 0.0;
-            }
-        }
-        for (int d = 0; d < 3; ++d) f->r[d][i] = (pl_real)r[d];
-    }
+    pl_coupling_clear_interiors(&sim->fluid, &v, sim->grid.L, sim->grid.walls, cp->lk_start, cp->lk_list,
+                                cp->seed, cp->nthreads);
 }
 
 int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)

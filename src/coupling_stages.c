@@ -149,10 +149,10 @@ int pl_coupling_stage_drift(pl_sim_t *sim, void *ctx, pl_err_t *err)
     double P[3], M;
     pl_coupling_total_momentum(sim, P, &M);
     const double u[3] = {P[0] / M, P[1] / M, P[2] / M};
-    pl_fluid_t *f = &sim->fluid;
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < f->n; ++i)
-        for (int d = 0; d < 3; ++d) f->v[d][i] = (pl_real)(f->v[d][i] - u[d]);
+    /* v + (-u) rounds as v - u does (IEEE 754 subtraction is the addition
+     * of the negated operand): the same bits */
+    const double du[3] = {-u[0], -u[1], -u[2]};
+    pl_srd_velocity_add(&sim->fluid, du, sim->nthreads);
     pl_colloid_t *c = sim->colloids;
     for (size_t k = 0; c && k < c->n; ++k) {
         c->vx[k] -= u[0];
@@ -172,8 +172,6 @@ int pl_coupling_stage_flow(pl_sim_t *sim, void *ctx, pl_err_t *err)
     double u[3];
     for (int d = 0; d < 3; ++d)
         u[d] = sim->scene.coupling.flow_velocity[d] - o.momentum[d] / (double)f->n;
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < f->n; ++i)
-        for (int d = 0; d < 3; ++d) f->v[d][i] = (pl_real)(f->v[d][i] + u[d]);
+    pl_srd_velocity_add(f, u, sim->nthreads);
     return 0;
 }

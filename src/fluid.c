@@ -1,6 +1,7 @@
 /* Fluid state allocation: SoA arrays + sort twins, 64-byte aligned. */
 #include "peloid/fluid.h"
 
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
@@ -22,13 +23,7 @@ void *pl_alloc(size_t bytes)
     if (bytes >= 2 * huge) (void)madvise(p, rounded / huge * huge, MADV_HUGEPAGE); /* advice: errors ignored */
 #endif
     /* First touch with the kernels' static partition (pages near threads). */
-    const size_t page = 4096;
-    size_t npages = (rounded + page - 1) / page;
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < npages; ++i) {
-        size_t lo = i * page, hi = lo + page < rounded ? lo + page : rounded;
-        memset(p + lo, 0, hi - lo);
-    }
+    pl_first_touch(p, rounded, omp_get_max_threads());
     return p;
 }
 

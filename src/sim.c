@@ -309,6 +309,8 @@ static void bind_threads(int nthreads)
         hwloc_bitmap_t sets[1024];
         hwloc_obj_t root = hwloc_get_root_obj(topo);
         if (hwloc_distrib(topo, &root, 1, sets, (unsigned)nthreads, INT_MAX, 0) == 0) {
+            /* the one parallel region outside kernels/: topology set-up (each
+             * thread of the team binds itself), not a loop over data */
 #pragma omp parallel num_threads(nthreads)
             {
                 hwloc_bitmap_t set = sets[omp_get_thread_num()];
@@ -361,7 +363,7 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
         pl_sim_free(sim);
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cell arrays (%zu cells)", nc);
     }
-    pl_fluid_init(&sim->fluid, scene);
+    pl_fluid_init(&sim->fluid, scene, sim->nthreads);
     if (scene->colloids.count > 0 && (rc = pl_colloid_create(scene, &sim->colloids, err))) {
         pl_sim_free(sim);
         return rc;

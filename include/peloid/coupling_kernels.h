@@ -10,6 +10,7 @@
 #include "peloid/fluid.h"
 #include "peloid/grid.h"
 #include "peloid/kernel_enums.h" /* PL_WALLS_*, PL_RULE_*, PL_BOUND_*, PL_PLACE_* */
+#include "peloid/srd_kernels.h"  /* pl_stream_params_t, PL_WALL_ACC_N */
 
 /* Colloid arrays the coupling kernels read (length n). */
 typedef struct {
@@ -35,6 +36,14 @@ size_t pl_coupling_lookup_build(const pl_coupling_colloids_t *c, const int L[3],
 int32_t pl_coupling_inside(const pl_coupling_colloids_t *c, const int L[3], const int walls[3],
                            const int32_t *start, const int32_t *list, const double r[3],
                            double p[3]);
+
+/* Every fluid particle inside a colloid of c (lookup start/list built for
+ * c) gets a new uniform position in the box of sides L, redrawn (up to 1000
+ * draws of PL_RNG_FLUID_REPLACE keyed by (seed, particle index, draw)) until
+ * it lies outside every colloid: the same for any thread count. */
+void pl_coupling_clear_interiors(pl_fluid_t *f, const pl_coupling_colloids_t *c, const int L[3],
+                                 const int walls[3], const int32_t *lk_start, const int32_t *lk_list,
+                                 uint64_t seed, int nthreads);
 
 /* ---- coupling I: reflection off colloid surfaces (coupling_reflect.c) -- */
 typedef struct {
@@ -137,5 +146,42 @@ double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const doubl
                               const pl_coupling_colloids_t *c, const int32_t *lk_start,
                               const int32_t *lk_list, double *cfx, double *cfy, double *cfz,
                               int nthreads, double *partial);
+
+/* The particles selected for the MD step (n of them), in particle order:
+ * fluid index, the thread whose streaming chunk (pl_chunk) and histogram
+ * row hold it (ascending), and double copies of position, velocity, force
+ * and displacement that the MD step integrates. */
+typedef struct {
+    size_t n;
+    uint32_t *idx;
+    int32_t *owner;
+    double *r[3], *v[3], *f[3], *disp[3];
+} pl_coupling_near_t;
+
+/* Fills nb (nb->n = the sum of counts[t * 8 + 2]) from the lists of
+ * pl_coupling_find(_sorted): idx, owner, r, v and disp (0 when the fluid is
+ * not tracked); f is not touched. */
+void pl_coupling_potential_gather(const pl_fluid_t *f, const uint32_t *found, const uint64_t *counts,
+                                  int nthreads, const pl_coupling_near_t *nb);
+/* Takes back the free streaming of the selected particles (nb holding
+ * their state before it): the saved displacements into f (tracked fluids),
+ * and, when sp is not NULL, adds to acc the wall impulses the streaming
+ * with sp counted for them (pl_srd_stream_wall_impulse, fixed point). */
+void pl_coupling_potential_unstream(const pl_coupling_near_t *nb, pl_fluid_t *f, const pl_grid_t *g,
+                                    const pl_stream_params_t *sp, int nthreads, int64_t acc[PL_WALL_ACC_N]);
+/* Velocity Verlet half kick v += h (f + g) (PL Eq. 19, m_f = 1). */
+void pl_coupling_potential_kick(const pl_coupling_near_t *nb, double h, const double g[3], int nthreads);
+/* Drift r += v dt (PL Eq. 18), the displacement accumulated, with
+ * reflection at the walls of every closed axis of g as the streaming does
+ * (bounce-back in the frame of the wall for no-slip, the z walls moving
+ * with wall_u (bottom, top) and the x/y walls at rest; specular for slip);
+ * the walls' impulses added to acc (fixed point, PL_WALL_ACC_N slots). */
+void pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t *g, const double wall_u[2][3],
+                                 double dt, int nthreads, int64_t acc[PL_WALL_ACC_N]);
+/* Writes the selected particles back into f, wrapped on periodic axes,
+ * with their new collision cell (under g->shift), moving each from its old
+ * to its new cell in its owner's row of hist (nthreads x g->ncells). */
+void pl_coupling_potential_scatter(const pl_coupling_near_t *nb, pl_fluid_t *f, const pl_grid_t *g,
+                                   uint32_t *hist, int nthreads);
 
 #endif

@@ -111,6 +111,23 @@ void pl_srd_collide_heyes(pl_fluid_t *fluid, const pl_grid_t *grid, const uint32
 /* PL Appendix A: scale v - u in every cell with >= 2 particles by `factor`. */
 void pl_srd_rescale(pl_fluid_t *fluid, const uint32_t *cell_start, size_t ncells, double factor);
 
+/* ---- initial state, uniform velocity shift (kernels/srd_init.c) ------- */
+typedef struct {
+    uint64_t seed;  /* scene seed (PL_RNG_INIT_POS, PL_RNG_INIT_VEL) */
+    double kT;      /* initial temperature */
+    int uniform;    /* uniform velocities (Hecht Fig. 2), else Gaussian */
+    double L[3];    /* box sides: positions uniform in [0, L) */
+} pl_srd_init_params_t;
+
+/* Positions and velocities from counter-based draws keyed by the particle
+ * index, then the mean velocity removed and v scaled to exactly
+ * kT = sum v^2 / (3 (N - 1)); tracked fluids get id = index and zero
+ * displacements.  Independent of nthreads. */
+void pl_srd_init(pl_fluid_t *fluid, const pl_srd_init_params_t *p, int nthreads);
+
+/* v += du for every particle (a Galilean shift: drift removal, flow hold). */
+void pl_srd_velocity_add(pl_fluid_t *fluid, const double du[3], int nthreads);
+
 /* ---- observables (kernels/srd_observe.c) ------------------------------ */
 typedef struct {
     double momentum[3]; /* sum m v */
