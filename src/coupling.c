@@ -97,7 +97,7 @@ int pl_coupling_lookup_fill(pl_coupling_t *cp, const pl_sim_t *sim, const pl_cou
         if (need <= cp->lk_cap) return 0;
         pl_free(cp->lk_list);
         cp->lk_cap = need + need / 2 + 64;
-        if (!(cp->lk_list = pl_alloc(cp->lk_cap * sizeof(int32_t))))
+        if (!(cp->lk_list = pl_alloc(cp->lk_cap * sizeof(int32_t), cp->nthreads)))
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloid lookup");
     }
 }
@@ -155,9 +155,9 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         p->seed = cp->seed;
         memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
         size_t L3 = (size_t)sim->grid.L[0] * (size_t)sim->grid.L[1] * (size_t)sim->grid.L[2];
-        cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t));
-        cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t));
-        cp->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t));
+        cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t), cp->nthreads);
+        cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t), cp->nthreads);
+        cp->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t), cp->nthreads);
         if (!cp->lk_start || !cp->found || !cp->counts) rc = PL_ERR_NOMEM;
         if (!rc && !(rc = pl_coupling_lookup_update(cp, sim, err))) clear_interiors(cp, sim, NULL);
     } else if (cp->method == PL_COUPLE_HECHT2) {
@@ -179,7 +179,7 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         cp->occ_col = malloc((nc + 1) * sizeof *cp->occ_col);
         cp->col_idx = malloc((nc + 1) * sizeof *cp->col_idx);
         cp->save_cap = 3 * (nc * (size_t)(4.0 * sc->fluid.density + 16.0) + 64);
-        cp->vsave = pl_alloc(cp->save_cap * sizeof(double));
+        cp->vsave = pl_alloc(cp->save_cap * sizeof(double), cp->nthreads);
         if (!cp->keys || !cp->occ_cell || !cp->occ_save || !cp->occ_col || !cp->col_idx || !cp->vsave)
             rc = PL_ERR_NOMEM;
     }
@@ -192,7 +192,7 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
                                                 cp->lk_list, cp->lk_cap)) > cp->lk_cap) {
             pl_free(cp->lk_list);
             cp->lk_cap = need;
-            if (!(cp->lk_list = pl_alloc(need * sizeof(int32_t)))) {
+            if (!(cp->lk_list = pl_alloc(need * sizeof(int32_t), cp->nthreads))) {
                 rc = PL_ERR_NOMEM;
                 break;
             }

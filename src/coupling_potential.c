@@ -34,11 +34,11 @@ int pl_coupling_potential_setup(pl_coupling_t *cp, pl_sim_t *sim, pl_err_t *err)
     cp->margin = 8.0 * sqrt(kT) * sc->srd.dt + 0.1;
     cp->rad_big = malloc((c->n + 1) * sizeof(double));
     cp->cf = malloc(3 * (c->n + 1) * sizeof(double));
-    cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t));
-    cp->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t));
+    cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t), cp->nthreads);
+    cp->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t), cp->nthreads);
     size_t L3 = (size_t)sim->grid.L[0] * (size_t)sim->grid.L[1] * (size_t)sim->grid.L[2];
-    cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t));
-    cp->marks = pl_alloc(sim->grid.ncells);
+    cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t), cp->nthreads);
+    cp->marks = pl_alloc(sim->grid.ncells, cp->nthreads);
     cp->axis_buf = malloc((size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(int));
     if (!cp->rad_big || !cp->cf || !cp->found || !cp->counts || !cp->lk_start || !cp->marks || !cp->axis_buf)
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the potential coupling");
@@ -162,9 +162,9 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
     for (int s = 0; s < c->substeps; ++s) { /* PL Eqs. 18-19 */
         if (!cp->pinned) {
             pl_colloid_kick(c->n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
-                            c->vx, c->vy, c->vz, c->wx, c->wy, c->wz);
+                            c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->nthreads);
             pl_colloid_drift(c->n, dtm, c->box, c->periodic, c->x, c->y, c->z, c->ix, c->iy, c->iz,
-                             c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3);
+                             c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3, c->nthreads);
         }
         pl_coupling_potential_kick(&nb, h, g, cp->nthreads);
         pl_coupling_potential_drift(&nb, &sim->grid, sim->wall_u, dtm, cp->nthreads, wacc);
@@ -178,7 +178,7 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
         pl_coupling_potential_kick(&nb, h, g, cp->nthreads);
         if (!cp->pinned) {
             pl_colloid_kick(c->n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
-                            c->vx, c->vy, c->vz, c->wx, c->wy, c->wz);
+                            c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->nthreads);
             c->md_step++;
             int rc = pl_colloid_guard(c, 0, err);
             if (rc) return rc;

@@ -136,7 +136,7 @@ static int stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
     (void)ctx;
     (void)err;
     sim->collide.step = (uint64_t)sim->step;
-    pl_srd_collide(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum);
+    pl_srd_collide(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum, sim->nthreads);
     collide_sums(sim, &sim->collide);
     return 0;
 }
@@ -148,7 +148,7 @@ static int stage_collide_heyes(pl_sim_t *sim, void *ctx, pl_err_t *err)
     (void)ctx;
     (void)err;
     sim->collide.step = (uint64_t)sim->step;
-    pl_srd_collide_heyes(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum);
+    pl_srd_collide_heyes(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum, sim->nthreads);
     collide_sums(sim, &sim->collide);
     return 0;
 }
@@ -159,7 +159,7 @@ static int stage_rescale(pl_sim_t *sim, void *ctx, pl_err_t *err)
     (void)err;
     if (sim->last_kT_meas <= 0.0) return 0;
     double factor = sqrt(sim->scene.thermostat.temperature / sim->last_kT_meas); /* PL App. A */
-    pl_srd_rescale(&sim->fluid, sim->cell_start, sim->grid.ncells, factor);
+    pl_srd_rescale(&sim->fluid, sim->cell_start, sim->grid.ncells, factor, sim->nthreads);
     sim->last_kT_meas = sim->scene.thermostat.temperature;
     return 0;
 }
@@ -169,7 +169,7 @@ static int stage_fields(pl_sim_t *sim, void *ctx, pl_err_t *err)
     (void)ctx;
     (void)err;
     if (sim->step < sim->scene.output.fields_start) return 0;
-    pl_srd_fields_accumulate(&sim->fluid, sim->grid.L, sim->field_acc);
+    pl_srd_fields_accumulate(&sim->fluid, sim->grid.L, sim->field_acc, sim->nthreads);
     sim->field_samples++;
     return 0;
 }
@@ -329,16 +329,16 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
     if (!sim) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
     sim->scene = *scene;
     sim->nthreads = nthreads > 0 ? nthreads : omp_get_max_threads();
-    /* before any allocation: first touch (pl_alloc) runs with the kernels'
-     * thread count and binding */
-    omp_set_num_threads(sim->nthreads);
+    /* before any allocation: first touch (pl_alloc) runs on the bound
+     * threads.  No process-wide thread count is set: every kernel and
+     * pl_alloc are given sim->nthreads (num_threads clauses). */
     bind_threads(sim->nthreads);
     int walls[3];
     pl_scene_box_walls(&scene->box, walls);
     pl_grid_init(&sim->grid, scene->box.cells, walls);
     double volume = (double)scene->box.cells[0] * scene->box.cells[1] * scene->box.cells[2];
     size_t n = (size_t)llround(scene->fluid.density * volume);
-    int rc = pl_fluid_create(n, scene->output.track_fluid, &sim->fluid, err);
+    int rc = pl_fluid_create(n, scene->output.track_fluid, sim->nthreads, &sim->fluid, err);
     if (rc) {
         free(sim);
         return rc;
@@ -346,16 +346,16 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
     size_t nc = sim->grid.ncells, L3 = (size_t)scene->box.cells[0] * (size_t)scene->box.cells[1] *
                                           (size_t)scene->box.cells[2];
     size_t nb = (nc + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
-    sim->hist = pl_alloc((size_t)sim->nthreads * nc * sizeof(uint32_t));
-    sim->cell_start = pl_alloc((nc + 1) * sizeof(uint32_t));
-    sim->block_sum = pl_alloc(2 * nb * sizeof(double));
-    sim->obs_scratch = pl_alloc(pl_srd_observe_scratch(n) * sizeof(double));
-    if (scene->output.fields_interval > 0) sim->field_acc = pl_alloc(4 * L3 * sizeof(int64_t));
+    sim->hist = pl_alloc((size_t)sim->nthreads * nc * sizeof(uint32_t), sim->nthreads);
+    sim->cell_start = pl_alloc((nc + 1) * sizeof(uint32_t), sim->nthreads);
+    sim->block_sum = pl_alloc(2 * nb * sizeof(double), sim->nthreads);
+    sim->obs_scratch = pl_alloc(pl_srd_observe_scratch(n) * sizeof(double), sim->nthreads);
+    if (scene->output.fields_interval > 0) sim->field_acc = pl_alloc(4 * L3 * sizeof(int64_t), sim->nthreads);
     /* the momentum each wall exchanges (wall stress) */
     const int any_walls = sim->grid.any_walls;
     if (any_walls) {
-        sim->wall_acc = pl_alloc((size_t)sim->nthreads * PL_WALL_ACC_STRIDE * sizeof(int64_t));
-        sim->wall_dp = pl_alloc(PL_WALL_ACC_N * nb * sizeof(double));
+        sim->wall_acc = pl_alloc((size_t)sim->nthreads * PL_WALL_ACC_STRIDE * sizeof(int64_t), sim->nthreads);
+        sim->wall_dp = pl_alloc(PL_WALL_ACC_N * nb * sizeof(double), sim->nthreads);
     }
     memcpy(sim->wall_u, scene->box.wall_velocity, sizeof sim->wall_u); /* shear, Hecht Sec. VIII.C */
     if (!sim->hist || !sim->cell_start || !sim->block_sum || !sim->obs_scratch ||
@@ -364,7 +364,7 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cell arrays (%zu cells)", nc);
     }
     pl_fluid_init(&sim->fluid, scene, sim->nthreads);
-    if (scene->colloids.count > 0 && (rc = pl_colloid_create(scene, &sim->colloids, err))) {
+    if (scene->colloids.count > 0 && (rc = pl_colloid_create(scene, sim->nthreads, &sim->colloids, err))) {
         pl_sim_free(sim);
         return rc;
     }
@@ -444,7 +444,7 @@ int pl_sim_step(pl_sim_t *sim, pl_err_t *err)
 
 void pl_sim_observe(const pl_sim_t *sim, pl_fluid_obs_t *obs, double *kT)
 {
-    pl_srd_observe(&sim->fluid, sim->obs_scratch, obs);
+    pl_srd_observe(&sim->fluid, sim->obs_scratch, obs, sim->nthreads);
     /* kT = sum m (v - V)^2 / (3 (N - 1)), V the centre-of-mass velocity */
     size_t n = sim->fluid.n;
     if (n < 2) {

@@ -1,6 +1,8 @@
 /* Colloid-solvent coupling kernels (kernels/coupling_*.c): pure functions of
  * raw arrays, counts and small parameter structs; no scene, no I/O, no
- * allocation.  Fluid mass m_f = 1 (the mass unit). */
+ * allocation.  Fluid mass m_f = 1 (the mass unit).  nthreads is the size of
+ * each parallel region (num_threads): no kernel relies on a process-wide
+ * thread count. */
 #ifndef PELOID_COUPLING_KERNELS_H
 #define PELOID_COUPLING_KERNELS_H
 
@@ -97,7 +99,7 @@ typedef struct {
 
 /* Copies the pre-collision velocities of the fluid in the occupied cells. */
 void pl_coupling2_save(const pl_fluid_t *f, const uint32_t *cell_start,
-                       const pl_coupling2_cells_t *oc, double *vsave);
+                       const pl_coupling2_cells_t *oc, double *vsave, int nthreads);
 
 /* Redoes the collision of every occupied cell from the saved fluid
  * velocities and the colloid velocities with the mass-weighted mean velocity
@@ -105,12 +107,12 @@ void pl_coupling2_save(const pl_fluid_t *f, const uint32_t *cell_start,
  * is overwritten).  One rotation per cell from its own random stream. */
 void pl_coupling2_collide(const pl_coupling2_params_t *p, const pl_coupling2_cells_t *oc, const pl_grid_t *g,
                           const uint32_t *cell_start, const double *vsave, pl_fluid_t *f,
-                          const double *cmass, double *cvx, double *cvy, double *cvz);
+                          const double *cmass, double *cvx, double *cvy, double *cvz, int nthreads);
 /* The same with the mass-weighted Heyes thermostat in cells without
  * virtual wall particles. */
 void pl_coupling2_collide_heyes(const pl_coupling2_params_t *p, const pl_coupling2_cells_t *oc, const pl_grid_t *g,
                           const uint32_t *cell_start, const double *vsave, pl_fluid_t *f,
-                          const double *cmass, double *cvx, double *cvy, double *cvz);
+                          const double *cmass, double *cvx, double *cvy, double *cvz, int nthreads);
 
 /* ---- potential coupling (kernels/coupling_potential.c) ---------------- */
 /* Lists in found[lo .. lo + counts[t * 8 + 2]) the particles of thread t's
