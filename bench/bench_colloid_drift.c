@@ -22,7 +22,7 @@ int main(void)
         pl_scene_t s;
         pl_err_t err;
         pl_colloid_t *c;
-        if (pl_scene_load_string(sc, "bench", &s, &err) || pl_colloid_create(&s, &c, &err)) {
+        if (pl_scene_load_string(sc, "bench", &s, &err) || pl_colloid_create(&s, 1, &c, &err) /* 27 colloids: serial */) {
             fprintf(stderr, "%s\n", err.msg);
             return 1;
         }

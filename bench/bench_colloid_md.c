@@ -58,7 +58,7 @@ static int write_lammps(const char *dir, const pl_scene_t *s)
 {
     pl_colloid_t *c;
     pl_err_t err;
-    if (pl_colloid_create(s, &c, &err)) {
+    if (pl_colloid_create(s, omp_get_max_threads(), &c, &err)) {
         fprintf(stderr, "%s\n", err.msg);
         return 1;
     }
@@ -123,14 +123,13 @@ int main(int argc, char **argv)
     if (maxt > omp_get_num_procs()) maxt = omp_get_num_procs();
     int mint = getenv("PL_BENCH_ONLY_THREADS") ? maxt : 1;
     for (int t = mint; t <= maxt; t = t < 2 ? t + 1 : 2 * t) {
-        omp_set_num_threads(t);
         double tm[64], cpu[64], slo, shi;
         long long builds = 0, inc = 0, listed = 0;
         size_t n = 0;
         if (reps > 64) reps = 64;
         for (int r = 0; r < reps; ++r) {
             pl_colloid_t *c;
-            if (pl_colloid_create(&s, &c, &err)) {
+            if (pl_colloid_create(&s, t, &c, &err)) {
                 fprintf(stderr, "%s\n", err.msg);
                 return 1;
             }

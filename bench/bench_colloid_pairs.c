@@ -27,9 +27,8 @@ int main(void)
     }
     int maxt = omp_get_num_procs() < 2 ? 1 : 2;
     for (int t = 1; t <= maxt; ++t) {
-        omp_set_num_threads(t);
         pl_colloid_t *c;
-        if (pl_colloid_create(&s, &c, &err)) {
+        if (pl_colloid_create(&s, t, &c, &err)) {
             fprintf(stderr, "%s\n", err.msg);
             return 1;
         }

@@ -32,10 +32,10 @@ void pl_colloid_bd_step(const pl_colloid_bd_params_t *p, size_t n, const double 
                         const double *restrict tz, double *restrict vx, double *restrict vy,
                         double *restrict vz, double *restrict wx, double *restrict wy,
                         double *restrict wz, double *restrict q0, double *restrict q1,
-                        double *restrict q2, double *restrict q3)
+                        double *restrict q2, double *restrict q3, int nthreads)
 {
     const double dt = p->dt;
-#pragma omp parallel for schedule(static) if (n >= PL_COLLOID_OMP_MIN)
+#pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i) {
         double R = rad[i];
         double zt = 6.0 * M_PI * p->eta * R, zr = 8.0 * M_PI * p->eta * R * R * R;

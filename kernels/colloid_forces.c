@@ -321,13 +321,13 @@ static inline void reverse_add(const pl_colloid_nlist_t *nl, const pl_colloid_vi
 }
 
 void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
-                            const pl_colloid_view_t *v)
+                            const pl_colloid_view_t *v, int nthreads)
 {
     enum { E = 0 };
     const unsigned mask = p->terms & PL_CT_ALL;
     const int torques = (p->terms & PL_CT_HERTZ) && p->hertz_gamma_t > 0.0;
     /* one parallel region: pass 1, the barrier of its loop, pass 2 */
-#pragma omp parallel if (v->n >= PL_COLLOID_OMP_MIN)
+#pragma omp parallel num_threads(nthreads) if (v->n >= PL_COLLOID_OMP_MIN)
     {
         switch (mask) { ALL_CASES }
         reverse_add(nl, v, torques);
@@ -335,10 +335,10 @@ void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_
 }
 
 void pl_colloid_pair_energies(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
-                              const pl_colloid_view_t *v)
+                              const pl_colloid_view_t *v, int nthreads)
 {
     enum { E = 1 };
     const unsigned mask = p->terms & PL_CT_ALL;
-#pragma omp parallel if (v->n >= PL_COLLOID_OMP_MIN)
+#pragma omp parallel num_threads(nthreads) if (v->n >= PL_COLLOID_OMP_MIN)
     switch (mask) { ALL_CASES }
 }

@@ -16,9 +16,9 @@ void pl_colloid_kick(size_t n, double h, const double *restrict mass,
                      const double *restrict tx, const double *restrict ty,
                      const double *restrict tz, double *restrict vx, double *restrict vy,
                      double *restrict vz, double *restrict wx, double *restrict wy,
-                     double *restrict wz)
+                     double *restrict wz, int nthreads)
 {
-#pragma omp parallel for schedule(static) if (n >= PL_COLLOID_OMP_MIN)
+#pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i) {
         double a = h / mass[i], b = h / inertia[i];
         vx[i] += a * fx[i]; /* PL Eq. 19 / Hecht Eq. 8, half of it */
@@ -79,9 +79,9 @@ void pl_colloid_drift(size_t n, double dt, const double box[3], const int period
                       const double *restrict vx, const double *restrict vy,
                       const double *restrict vz, const double *restrict wx,
                       const double *restrict wy, const double *restrict wz, double *restrict q0,
-                      double *restrict q1, double *restrict q2, double *restrict q3)
+                      double *restrict q1, double *restrict q2, double *restrict q3, int nthreads)
 {
-#pragma omp parallel for schedule(static) if (n >= PL_COLLOID_OMP_MIN)
+#pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i) {
         x[i] += dt * vx[i]; /* PL Eq. 18 / Hecht Eq. 7 (v already half-kicked) */
         y[i] += dt * vy[i];
@@ -102,10 +102,10 @@ void pl_colloid_ext_forces(const pl_colloid_ext_params_t *p, size_t n, const dou
                            const double *restrict y, const double *restrict z,
                            const double *restrict zu, const double *restrict rad,
                            const double *restrict mass, double *restrict fx,
-                           double *restrict fy, double *restrict fz, double *restrict epot)
+                           double *restrict fy, double *restrict fz, double *restrict epot, int nthreads)
 {
     const double rf = pow(2.0, 1.0 / p->wall_n), nn = p->wall_n, eps = p->wall_eps;
-#pragma omp parallel for schedule(static) if (n >= PL_COLLOID_OMP_MIN)
+#pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i) {
         double m = mass[i];
         fx[i] += m * p->g[0];

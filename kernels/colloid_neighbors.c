@@ -86,12 +86,12 @@ static size_t scan_cells(const pl_colloid_cells_t *c, const double box[3], const
 
 double pl_colloid_nlist_max_disp2(const pl_colloid_nlist_t *nl, const double box[3],
                                   const int periodic[3], const double *x, const double *y,
-                                  const double *z)
+                                  const double *z, int nthreads)
 {
     double m = 0.0;
     size_t n = nl->n;
     /* max is exact, so the reduction order does not matter */
-#pragma omp parallel for schedule(static) reduction(max : m) if (n >= PL_COLLOID_OMP_MIN)
+#pragma omp parallel for schedule(static) num_threads(nthreads) reduction(max : m) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i) {
         double dx = min_image(x[i] - nl->x0[i], box[0], periodic[0]);
         double dy = min_image(y[i] - nl->y0[i], box[1], periodic[1]);
@@ -105,23 +105,23 @@ double pl_colloid_nlist_max_disp2(const pl_colloid_nlist_t *nl, const double box
 
 void pl_colloid_nlist_count(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
                             const double box[3], const int periodic[3], const double *x,
-                            const double *y, const double *z)
+                            const double *y, const double *z, int nthreads)
 {
     size_t n = nl->n;
     double rl2 = nl->rlist * nl->rlist;
     nl->start[0] = 0;
-#pragma omp parallel for schedule(static) if (n >= PL_COLLOID_OMP_MIN)
+#pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i)
         nl->start[i + 1] = (int32_t)scan_cells(cells, box, periodic, rl2, x, y, z, i, NULL);
 }
 
 void pl_colloid_nlist_fill(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
                            const double box[3], const int periodic[3], const double *x,
-                           const double *y, const double *z)
+                           const double *y, const double *z, int nthreads)
 {
     size_t n = nl->n;
     double rl2 = nl->rlist * nl->rlist;
-#pragma omp parallel for schedule(static) if (n >= PL_COLLOID_OMP_MIN)
+#pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i) {
         scan_cells(cells, box, periodic, rl2, x, y, z, i, nl->nbr + nl->start[i]);
         nl->x0[i] = x[i];

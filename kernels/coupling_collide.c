@@ -25,7 +25,6 @@
 
 #include "peloid/coupling_kernels.h"
 #include "peloid/rng.h"
-#include "peloid/scene.h"
 #include "peloid/srd_kernels.h"
 #include "peloid/srd_rules.h"
 
@@ -43,12 +42,12 @@ static double heyes_zeta(const pl_coupling2_params_t *p, uint64_t cell, size_t n
 }
 
 void pl_coupling2_save(const pl_fluid_t *f, const uint32_t *cell_start,
-                       const pl_coupling2_cells_t *oc, double *vsave)
+                       const pl_coupling2_cells_t *oc, double *vsave, int nthreads)
 {
     const pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
     /* Occupied cells are independent: static split over cells (serial when
      * they are few: a parallel region would cost more than the work). */
-#pragma omp parallel for schedule(static) if (oc->nocc >= 256)
+#pragma omp parallel for schedule(static) num_threads(nthreads) if (oc->nocc >= 256)
     for (size_t j = 0; j < oc->nocc; ++j) {
         const uint32_t c = oc->occ_cell[j];
         double *w = vsave + 3 * oc->occ_save[j];
@@ -156,18 +155,18 @@ static inline __attribute__((always_inline)) void collide_cell(const pl_coupling
 
 void pl_coupling2_collide(const pl_coupling2_params_t *p, const pl_coupling2_cells_t *oc, const pl_grid_t *g,
                           const uint32_t *cell_start, const double *vsave, pl_fluid_t *f,
-                          const double *cmass, double *cvx, double *cvy, double *cvz)
+                          const double *cmass, double *cvx, double *cvy, double *cvz, int nthreads)
 {
-#pragma omp parallel for schedule(static) if (oc->nocc >= 256)
+#pragma omp parallel for schedule(static) num_threads(nthreads) if (oc->nocc >= 256)
     for (size_t j = 0; j < oc->nocc; ++j)
         collide_cell(p, oc, g, cell_start, vsave, f, cmass, cvx, cvy, cvz, j, 0);
 }
 
 void pl_coupling2_collide_heyes(const pl_coupling2_params_t *p, const pl_coupling2_cells_t *oc, const pl_grid_t *g,
                                 const uint32_t *cell_start, const double *vsave, pl_fluid_t *f,
-                                const double *cmass, double *cvx, double *cvy, double *cvz)
+                                const double *cmass, double *cvx, double *cvy, double *cvz, int nthreads)
 {
-#pragma omp parallel for schedule(static) if (oc->nocc >= 256)
+#pragma omp parallel for schedule(static) num_threads(nthreads) if (oc->nocc >= 256)
     for (size_t j = 0; j < oc->nocc; ++j)
         collide_cell(p, oc, g, cell_start, vsave, f, cmass, cvx, cvy, cvz, j, 1);
 }

@@ -3,12 +3,14 @@
  * unshifted unit cells so that "is this fluid particle inside a colloid?"
  * costs one cell visit for the many particles far from any colloid.  The
  * lookup is built serially (colloids are few) in colloid index order, so a
- * cell lists its colloids in index order whatever the thread count. */
+ * cell lists its colloids in index order whatever the thread count.
+ * Also the initial replacement of the fluid found inside colloids (parallel
+ * per particle, its draws keyed by the particle index). */
 #include <math.h>
 #include <string.h>
 
 #include "peloid/coupling_kernels.h"
-#include "peloid/scene.h"
+#include "peloid/rng.h"
 
 uint32_t pl_coupling_cell_of(const pl_grid_t *g, double x, double y, double z)
 {
@@ -106,4 +108,24 @@ int32_t pl_coupling_inside(const pl_coupling_colloids_t *c, const int L[3], cons
         }
     }
     return -1;
+}
+
+void pl_coupling_clear_interiors(pl_fluid_t *f, const pl_coupling_colloids_t *c, const int L[3],
+                                 const int walls[3], const int32_t *lk_start, const int32_t *lk_list,
+                                 uint64_t seed, int nthreads)
+{
+    /* per particle, draws keyed by its index: any static split gives the same */
+#pragma omp parallel for schedule(static) num_threads(nthreads)
+    for (size_t i = 0; i < f->n; ++i) {
+        double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, p[3];
+        for (uint64_t draw = 0; draw < 1000; ++draw) {
+            if (pl_coupling_inside(c, L, walls, lk_start, lk_list, r, p) < 0) break;
+            pl_rand4_t u = pl_rng_uniform4(seed, PL_RNG_FLUID_REPLACE, 0, i, draw);
+            for (int d = 0; d < 3; ++d) {
+                r[d] = u.u[d] * L[d];
+                if (r[d] >= L[d]) r[d] = 0.0;
+            }
+        }
+        for (int d = 0; d < 3; ++d) f->r[d][i] = (pl_real)r[d];
+    }
 }

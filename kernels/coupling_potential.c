@@ -2,18 +2,20 @@
  * WCA repulsion of PL Eq. 17,
  *   phi_cf(r) = 4 eps [(sigma/r)^12 - (sigma/r)^6 + 1/4],  r <= 2^{1/6} sigma,
  * a radial force: slip surfaces (PL Sec. III.B).  Only the particles near a
- * colloid are integrated at the MD step (src/coupling_potential.c); this
- * file finds them (parallel over the streaming's static chunks) and
- * evaluates the forces, in parallel over fixed blocks of particles: each
- * block sums its reactions on the colloids in particle order into its own
- * row, and the rows are added in block order, so the result depends on the
- * number of selected particles and colloids but not on the thread count. */
+ * colloid are integrated at the MD step (the order of the step:
+ * src/coupling_potential.c).  This file finds them (parallel over the
+ * streaming's static chunks), gathers them, takes back their free
+ * streaming, kicks and drifts them (PL Eqs. 18-19, per particle) and writes
+ * them back, and evaluates the forces in parallel over fixed blocks of
+ * particles: each block sums its reactions on the colloids in particle order
+ * into its own row, and the rows are added in block order, so the result
+ * depends on the number of selected particles and colloids but not on the
+ * thread count. */
 #include <math.h>
 #include <omp.h>
 #include <string.h>
 
 #include "peloid/coupling_kernels.h"
-#include "peloid/scene.h"
 #include "peloid/srd_kernels.h"
 
 /* The box for the minimum image: sides, and half sides on periodic axes
@@ -229,4 +231,136 @@ double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const doubl
     double epot = 0.0;
     for (size_t b = 0; b < nblk; ++b) epot += partial[b * row + 3 * nc];
     return epot;
+}
+
+/* ---- the selected particles at the MD step ----------------------------- */
+/* Each particle is handled by one iteration and writes only its own slots
+ * (and, in the scatter, the histogram row of its owner thread); the wall
+ * impulses are integers: the results are the same for any thread count. */
+
+void pl_coupling_potential_gather(const pl_fluid_t *f, const uint32_t *found, const uint64_t *counts,
+                                  int nthreads, const pl_coupling_near_t *nb)
+{
+    /* thread t's chunk goes after those of 0..t-1: particle order */
+#pragma omp parallel for schedule(static) num_threads(nthreads)
+    for (int t = 0; t < nthreads; ++t) {
+        size_t lo, hi, j = 0;
+        pl_chunk(f->n, t, nthreads, &lo, &hi);
+        for (int u = 0; u < t; ++u) j += counts[(size_t)u * 8 + 2];
+        for (size_t q = 0; q < counts[(size_t)t * 8 + 2]; ++q, ++j) {
+            size_t i = found[lo + q];
+            nb->idx[j] = (uint32_t)i;
+            nb->owner[j] = t;
+            for (int d = 0; d < 3; ++d) {
+                nb->r[d][j] = f->r[d][i];
+                nb->v[d][j] = f->v[d][i];
+                nb->disp[d][j] = f->tracked ? f->disp[d][i] : 0.0;
+            }
+        }
+    }
+}
+
+void pl_coupling_potential_unstream(const pl_coupling_near_t *nb, pl_fluid_t *f, const pl_grid_t *g,
+                                    const pl_stream_params_t *sp, int nthreads, int64_t acc[PL_WALL_ACC_N])
+{
+    const size_t nn = nb->n;
+    /* integer impulses: the sum is exact in any order */
+#pragma omp parallel for schedule(static) num_threads(nthreads) reduction(+ : acc[:PL_WALL_ACC_N])
+    for (size_t j = 0; j < nn; ++j) {
+        size_t i = nb->idx[j];
+        if (f->tracked)
+            for (int d = 0; d < 3; ++d) f->disp[d][i] = nb->disp[d][j];
+        if (sp) {
+            const double r0[3] = {nb->r[0][j], nb->r[1][j], nb->r[2][j]};
+            const double v0[3] = {nb->v[0][j], nb->v[1][j], nb->v[2][j]};
+            pl_srd_stream_wall_impulse(g, sp, r0, v0, acc);
+        }
+    }
+}
+
+void pl_coupling_potential_kick(const pl_coupling_near_t *nb, double h, const double g[3], int nthreads)
+{
+    const size_t nn = nb->n;
+    double *const *v = nb->v;
+    double *const *F = nb->f;
+#pragma omp parallel for schedule(static) num_threads(nthreads)
+    for (size_t j = 0; j < nn; ++j)
+        for (int d = 0; d < 3; ++d) v[d][j] += h * (F[d][j] + g[d]);
+}
+
+void pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t *g, const double wall_u[2][3],
+                                 double dt, int nthreads, int64_t acc[PL_WALL_ACC_N])
+{
+    static const double at_rest[3] = {0.0, 0.0, 0.0};
+    const size_t nn = nb->n;
+    double *const *r = nb->r, *const *v = nb->v, *const *disp = nb->disp;
+    /* integer impulses: the sum is exact in any order */
+#pragma omp parallel for schedule(static) num_threads(nthreads) reduction(+ : acc[:PL_WALL_ACC_N])
+    for (size_t j = 0; j < nn; ++j) {
+        const double r0[3] = {r[0][j], r[1][j], r[2][j]};
+        for (int d = 0; d < 3; ++d) {
+            r[d][j] += v[d][j] * dt;
+            disp[d][j] += v[d][j] * dt;
+        }
+        for (int a = 0; a < 3; ++a) {
+            double *x = &r[a][j];
+            const double La = g->L[a];
+            if (g->walls[a] == PL_WALLS_NONE || !(*x < 0.0 || *x > La)) continue;
+            int top = *x > La;
+            double xw = top ? La : 0.0;
+            disp[a][j] -= *x - r0[a];
+            *x = 2.0 * xw - *x;
+            disp[a][j] += *x - r0[a];
+            double dp[3] = {0.0, 0.0, 0.0};
+            dp[a] = -2.0 * v[a][j];
+            if (g->walls[a] == PL_WALLS_NOSLIP) {
+                const double *U = a == 2 ? wall_u[top] : at_rest;
+                for (int d = 0; d < 3; ++d) dp[d] = 2.0 * (U[d] - v[d][j]);
+            }
+            for (int d = 0; d < 3; ++d) v[d][j] += dp[d];
+            pl_wall_acc_add(acc, pl_wall_slot(a, top), dp);
+        }
+    }
+}
+
+/* First index of the selected list whose owner is >= t (owners ascend). */
+static size_t owner_start(const pl_coupling_near_t *nb, int t)
+{
+    size_t lo = 0, hi = nb->n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (nb->owner[mid] < t) lo = mid + 1;
+        else hi = mid;
+    }
+    return lo;
+}
+
+void pl_coupling_potential_scatter(const pl_coupling_near_t *nb, pl_fluid_t *f, const pl_grid_t *g,
+                                   uint32_t *hist, int nthreads)
+{
+    const double L[3] = {g->L[0], g->L[1], g->L[2]};
+    /* the particles of one owner (a contiguous run of the list) and its
+     * histogram row are handled by one thread */
+#pragma omp parallel for schedule(static) num_threads(nthreads)
+    for (int t = 0; t < nthreads; ++t) {
+        size_t j = owner_start(nb, t), end = owner_start(nb, t + 1);
+        uint32_t *hrow = hist + (size_t)t * g->ncells;
+        for (; j < end; ++j) {
+            size_t i = nb->idx[j];
+            for (int d = 0; d < 3; ++d) {
+                double x = nb->r[d][j];
+                if (g->walls[d] == PL_WALLS_NONE) {
+                    x -= L[d] * floor(x / L[d]);
+                    if (x >= L[d]) x = 0.0;
+                }
+                f->r[d][i] = (pl_real)x;
+                f->v[d][i] = (pl_real)nb->v[d][j];
+                if (f->tracked) f->disp[d][i] = nb->disp[d][j];
+            }
+            uint32_t cell = pl_coupling_cell_of(g, f->r[0][i], f->r[1][i], f->r[2][i]);
+            hrow[f->cell[i]]--;
+            hrow[cell]++;
+            f->cell[i] = cell;
+        }
+    }
 }

@@ -42,7 +42,6 @@
 
 #include "peloid/coupling_kernels.h"
 #include "peloid/rng.h"
-#include "peloid/scene.h"
 #include "peloid/srd_kernels.h"
 
 static inline double wrap(double x, double L)

@@ -33,7 +33,6 @@
 #include <math.h>
 
 #include "peloid/rng.h"
-#include "peloid/scene.h"
 #include "peloid/srd_kernels.h"
 #include "peloid/srd_rules.h"
 
@@ -138,26 +137,26 @@ static inline __attribute__((always_inline)) void collide_block(pl_real *restric
 
 /* Cells are independent; blocks of cells give fixed-order partial sums. */
 void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_start,
-                    const pl_collide_params_t *p, double *block_sum)
+                    const pl_collide_params_t *p, double *block_sum, int nthreads)
 {
     const size_t nblocks = (g->ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(nthreads)
     for (size_t b = 0; b < nblocks; ++b) collide_block(f->v[0], f->v[1], f->v[2], g, cell_start, p, block_sum, b, 0);
 }
 
 void pl_srd_collide_heyes(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_start,
-                          const pl_collide_params_t *p, double *block_sum)
+                          const pl_collide_params_t *p, double *block_sum, int nthreads)
 {
     const size_t nblocks = (g->ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(nthreads)
     for (size_t b = 0; b < nblocks; ++b) collide_block(f->v[0], f->v[1], f->v[2], g, cell_start, p, block_sum, b, 1);
 }
 
-void pl_srd_rescale(pl_fluid_t *f, const uint32_t *cell_start, size_t ncells, double factor)
+void pl_srd_rescale(pl_fluid_t *f, const uint32_t *cell_start, size_t ncells, double factor, int nthreads)
 {
     pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
     /* PL Appendix A: v - v_cm scaled by sqrt(T / T_meas) in cells with N > 1. */
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(nthreads)
     for (size_t c = 0; c < ncells; ++c) {
         const size_t s = cell_start[c], e = cell_start[c + 1];
         if (e - s < 2) continue;

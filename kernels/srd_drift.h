@@ -15,7 +15,6 @@
 #include <math.h>
 #include <string.h>
 
-#include "peloid/scene.h"
 #include "peloid/srd_kernels.h"
 
 typedef struct {

@@ -30,11 +30,11 @@ static void block_partial(const pl_fluid_t *f, size_t lo, size_t hi, double out[
 
 size_t pl_srd_observe_scratch(size_t n) { return 5 * ((n + OBS_BLOCK - 1) / OBS_BLOCK + 1); }
 
-void pl_srd_observe(const pl_fluid_t *f, double *scratch, pl_fluid_obs_t *obs)
+void pl_srd_observe(const pl_fluid_t *f, double *scratch, pl_fluid_obs_t *obs, int nthreads)
 {
     size_t nb = (f->n + OBS_BLOCK - 1) / OBS_BLOCK;
     double acc[5] = {0, 0, 0, 0, 0};
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(nthreads)
     for (size_t b = 0; b < nb; ++b) {
         size_t lo = b * OBS_BLOCK, hi = lo + OBS_BLOCK < f->n ? lo + OBS_BLOCK : f->n;
         block_partial(f, lo, hi, scratch + 5 * b);
@@ -46,11 +46,11 @@ void pl_srd_observe(const pl_fluid_t *f, double *scratch, pl_fluid_obs_t *obs)
     obs->msd = f->tracked && f->n ? acc[4] / (double)f->n : 0.0;
 }
 
-void pl_srd_fields_accumulate(const pl_fluid_t *f, const int L[3], int64_t *acc)
+void pl_srd_fields_accumulate(const pl_fluid_t *f, const int L[3], int64_t *acc, int nthreads)
 {
     const size_t ncell = (size_t)L[0] * (size_t)L[1] * (size_t)L[2];
     const double scale = (double)(1LL << PL_FIELD_FIXED_SHIFT);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(nthreads)
     for (size_t i = 0; i < f->n; ++i) {
         int ix = (int)f->r[0][i], iy = (int)f->r[1][i], iz = (int)f->r[2][i];
         /* x = L exactly: on a wall (z walls, or x/y walls of a capillary) */

@@ -11,7 +11,7 @@
 
 static int colloid_create(pl_sim_t *sim, pl_err_t *err)
 {
-    return sim->scene.colloids.count > 0 ? pl_colloid_create(&sim->scene, &sim->colloids, err) : 0;
+    return sim->scene.colloids.count > 0 ? pl_colloid_create(&sim->scene, sim->nthreads, &sim->colloids, err) : 0;
 }
 
 static void colloid_destroy(pl_sim_t *sim)

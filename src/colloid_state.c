@@ -44,11 +44,12 @@ static void nlist_free(pl_colloid_nlist_t *nl)
     memset(nl, 0, sizeof *nl);
 }
 
-int pl_colloid_alloc(size_t n, pl_colloid_t **out, pl_err_t *err)
+int pl_colloid_alloc(size_t n, int nthreads, pl_colloid_t **out, pl_err_t *err)
 {
     pl_colloid_t *c = calloc(1, sizeof *c);
     if (!c) return pl_err_set(err, PL_ERR_NOMEM, "colloids: out of memory");
     c->n = n;
+    c->nthreads = nthreads > 0 ? nthreads : 1;
     double **d[NDBL] = {&c->x, &c->y, &c->z, &c->vx, &c->vy, &c->vz, &c->wx, &c->wy, &c->wz,
                         &c->q0, &c->q1, &c->q2, &c->q3, &c->rad, &c->mass, &c->inertia,
                         &c->fx, &c->fy, &c->fz, &c->tx, &c->ty, &c->tz, &c->zu,
@@ -130,10 +131,10 @@ static int nlist_build(pl_colloid_t *c, pl_err_t *err)
 {
     pl_colloid_nlist_t *nl = &c->nlist;
     pl_colloid_cells_build(&c->cells, c->n, c->x, c->y, c->z);
-    pl_colloid_nlist_count(nl, &c->cells, c->box, c->periodic, c->x, c->y, c->z);
+    pl_colloid_nlist_count(nl, &c->cells, c->box, c->periodic, c->x, c->y, c->z, c->nthreads);
     for (size_t i = 0; i < c->n; ++i) nl->start[i + 1] += nl->start[i];
     if (nlist_reserve(nl, (size_t)nl->start[c->n], err)) return err->code;
-    pl_colloid_nlist_fill(nl, &c->cells, c->box, c->periodic, c->x, c->y, c->z);
+    pl_colloid_nlist_fill(nl, &c->cells, c->box, c->periodic, c->x, c->y, c->z, c->nthreads);
     return 0;
 }
 
@@ -161,12 +162,12 @@ int pl_colloid_forces(pl_colloid_t *c, pl_err_t *err)
     /* rebuild when a colloid may have moved a pair from beyond the list
      * radius to inside the cut-off (a function of the state alone) */
     if (nl->builds == 0 ||
-        !(pl_colloid_nlist_max_disp2(nl, c->box, c->periodic, c->x, c->y, c->z) <= half * half))
+        !(pl_colloid_nlist_max_disp2(nl, c->box, c->periodic, c->x, c->y, c->z, c->nthreads) <= half * half))
         if (nlist_build(c, err)) return err->code;
     pl_colloid_view_t v = colloid_view(c);
-    pl_colloid_pair_forces(&c->pair, nl, &v);
+    pl_colloid_pair_forces(&c->pair, nl, &v, c->nthreads);
     for (size_t i = 0; i < c->n; ++i) c->zu[i] = c->z[i] + (double)c->iz[i] * c->box[2];
-    pl_colloid_ext_forces(&c->ext, c->n, c->x, c->y, c->z, c->zu, c->rad, c->mass, c->fx, c->fy, c->fz, c->epot);
+    pl_colloid_ext_forces(&c->ext, c->n, c->x, c->y, c->z, c->zu, c->rad, c->mass, c->fx, c->fy, c->fz, c->epot, c->nthreads);
     return 0;
 }
 
@@ -347,11 +348,11 @@ static int place_file(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
     return rc;
 }
 
-int pl_colloid_create(const pl_scene_t *scene, pl_colloid_t **out, pl_err_t *err)
+int pl_colloid_create(const pl_scene_t *scene, int nthreads, pl_colloid_t **out, pl_err_t *err)
 {
     const pl_scene_colloids_t *cs = &scene->colloids;
     pl_colloid_t *c;
-    if (pl_colloid_alloc((size_t)cs->count, &c, err)) return err->code;
+    if (pl_colloid_alloc((size_t)cs->count, nthreads, &c, err)) return err->code;
     c->seed = (uint64_t)scene->run.seed;
     for (int k = 0; k < 3; ++k) c->box[k] = scene->box.cells[k];
     int walls[3];
@@ -449,7 +450,7 @@ void pl_colloid_energy(pl_colloid_t *c, pl_colloid_energy_t *e)
     /* the pair energies of the positions the last force evaluation saw (its
      * list is valid for them) */
     pl_colloid_view_t v = colloid_view(c);
-    pl_colloid_pair_energies(&c->pair, &c->nlist, &v);
+    pl_colloid_pair_energies(&c->pair, &c->nlist, &v, c->nthreads);
     for (size_t i = 0; i < c->n; ++i) {
         e->kin_trans += 0.5 * c->mass[i] * (c->vx[i] * c->vx[i] + c->vy[i] * c->vy[i] + c->vz[i] * c->vz[i]);
         e->kin_rot += 0.5 * c->inertia[i] * (c->wx[i] * c->wx[i] + c->wy[i] * c->wy[i] + c->wz[i] * c->wz[i]);

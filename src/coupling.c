@@ -8,7 +8,6 @@
 
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
-#include "peloid/rng.h"
 #include "peloid/sim.h"
 
 
@@ -98,7 +97,7 @@ int pl_coupling_lookup_fill(pl_coupling_t *cp, const pl_sim_t *sim, const pl_cou
         if (need <= cp->lk_cap) return 0;
         pl_free(cp->lk_list);
         cp->lk_cap = need + need / 2 + 64;
-        if (!(cp->lk_list = pl_alloc(cp->lk_cap * sizeof(int32_t))))
+        if (!(cp->lk_list = pl_alloc(cp->lk_cap * sizeof(int32_t), cp->nthreads)))
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloid lookup");
     }
 }
@@ -115,24 +114,10 @@ int pl_coupling_lookup_update(pl_coupling_t *cp, const pl_sim_t *sim, pl_err_t *
  * (draws keyed by particle index: thread independent). */
 static void clear_interiors(pl_coupling_t *cp, pl_sim_t *sim, const double *rad)
 {
-    pl_fluid_t *f = &sim->fluid;
     pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
     if (rad) v.rad = rad;
-    const int *L = sim->grid.L;
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < f->n; ++i) {
-        double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, p[3];
-        for (uint64_t draw = 0; draw < 1000; ++draw) {
-            if (pl_coupling_inside(&v, L, sim->grid.walls, cp->lk_start, cp->lk_list, r, p) < 0)
-                break;
-            pl_rand4_t u = pl_rng_uniform4(cp->seed, PL_RNG_FLUID_REPLACE, 0, i, draw);
-            for (int d = 0; d < 3; ++d) {
-                r[d] = u.u[d] * L[d];
-                if (r[d] >= L[d]) r[d] = 0.0;
-            }
-        }
-        for (int d = 0; d < 3; ++d) f->r[d][i] = (pl_real)r[d];
-    }
+    pl_coupling_clear_interiors(&sim->fluid, &v, sim->grid.L, sim->grid.walls, cp->lk_start, cp->lk_list,
+                                cp->seed, cp->nthreads);
 }
 
 int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
@@ -170,9 +155,9 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         p->seed = cp->seed;
         memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
         size_t L3 = (size_t)sim->grid.L[0] * (size_t)sim->grid.L[1] * (size_t)sim->grid.L[2];
-        cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t));
-        cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t));
-        cp->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t));
+        cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t), cp->nthreads);
+        cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t), cp->nthreads);
+        cp->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t), cp->nthreads);
         if (!cp->lk_start || !cp->found || !cp->counts) rc = PL_ERR_NOMEM;
         if (!rc && !(rc = pl_coupling_lookup_update(cp, sim, err))) clear_interiors(cp, sim, NULL);
     } else if (cp->method == PL_COUPLE_HECHT2) {
@@ -194,7 +179,7 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         cp->occ_col = malloc((nc + 1) * sizeof *cp->occ_col);
         cp->col_idx = malloc((nc + 1) * sizeof *cp->col_idx);
         cp->save_cap = 3 * (nc * (size_t)(4.0 * sc->fluid.density + 16.0) + 64);
-        cp->vsave = pl_alloc(cp->save_cap * sizeof(double));
+        cp->vsave = pl_alloc(cp->save_cap * sizeof(double), cp->nthreads);
         if (!cp->keys || !cp->occ_cell || !cp->occ_save || !cp->occ_col || !cp->col_idx || !cp->vsave)
             rc = PL_ERR_NOMEM;
     }
@@ -207,7 +192,7 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
                                                 cp->lk_list, cp->lk_cap)) > cp->lk_cap) {
             pl_free(cp->lk_list);
             cp->lk_cap = need;
-            if (!(cp->lk_list = pl_alloc(need * sizeof(int32_t)))) {
+            if (!(cp->lk_list = pl_alloc(need * sizeof(int32_t), cp->nthreads))) {
                 rc = PL_ERR_NOMEM;
                 break;
             }

@@ -7,10 +7,12 @@
  * margin (8 thermal speeds x dt + 0.1) makes it very unlikely that an
  * unselected particle reaches the cut-off within the step.
  *
+ * This file keeps the bookkeeping (buffers, the order of the steps); the
+ * loops over the particles are the kernels of kernels/coupling_potential.c.
  * Determinism: selection is parallel over the streaming's static chunks and
- * gathered in particle order; the forces are summed over fixed blocks
- * (kernels/coupling_potential.c), the kicks and drifts are per particle and
- * the wall impulses are integers: no result depends on the thread count.
+ * gathered in particle order; the forces are summed over fixed blocks, the
+ * kicks and drifts are per particle and the wall impulses are integers: no
+ * result depends on the thread count.
  * Momentum: equal and opposite forces in the same Verlet kicks. */
 #include <math.h>
 #include <stdlib.h>
@@ -32,11 +34,11 @@ int pl_coupling_potential_setup(pl_coupling_t *cp, pl_sim_t *sim, pl_err_t *err)
     cp->margin = 8.0 * sqrt(kT) * sc->srd.dt + 0.1;
     cp->rad_big = malloc((c->n + 1) * sizeof(double));
     cp->cf = malloc(3 * (c->n + 1) * sizeof(double));
-    cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t));
-    cp->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t));
+    cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t), cp->nthreads);
+    cp->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t), cp->nthreads);
     size_t L3 = (size_t)sim->grid.L[0] * (size_t)sim->grid.L[1] * (size_t)sim->grid.L[2];
-    cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t));
-    cp->marks = pl_alloc(sim->grid.ncells);
+    cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t), cp->nthreads);
+    cp->marks = pl_alloc(sim->grid.ncells, cp->nthreads);
     cp->axis_buf = malloc((size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(int));
     if (!cp->rad_big || !cp->cf || !cp->found || !cp->counts || !cp->lk_start || !cp->marks || !cp->axis_buf)
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the potential coupling");
@@ -61,6 +63,20 @@ static int lookup_big(pl_coupling_t *cp, const pl_sim_t *sim, pl_err_t *err)
 }
 
 #define NB(cp, a) ((cp)->near_buf + (size_t)(a) * (cp)->near_cap)
+
+/* The selected particles as the kernels see them (rows of near_buf). */
+static pl_coupling_near_t near_view(const pl_coupling_t *cp)
+{
+    return (pl_coupling_near_t){
+        .n = cp->nnear,
+        .idx = cp->near_idx,
+        .owner = cp->near_owner,
+        .r = {NB(cp, 0), NB(cp, 1), NB(cp, 2)},
+        .v = {NB(cp, 3), NB(cp, 4), NB(cp, 5)},
+        .f = {NB(cp, 6), NB(cp, 7), NB(cp, 8)},
+        .disp = {NB(cp, 9), NB(cp, 10), NB(cp, 11)},
+    };
+}
 
 int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
@@ -88,23 +104,9 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
         if (!cp->near_idx || !cp->near_owner || !cp->near_buf)
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for %zu near-colloid particles", nn);
     }
-    /* gathered in particle order: thread t's chunk goes after those of 0..t-1 */
-#pragma omp parallel for schedule(static) num_threads(cp->nthreads)
-    for (int t = 0; t < cp->nthreads; ++t) {
-        size_t lo, hi, j = 0;
-        pl_chunk(f->n, t, cp->nthreads, &lo, &hi);
-        for (int u = 0; u < t; ++u) j += cp->counts[(size_t)u * 8 + 2];
-        for (size_t q = 0; q < cp->counts[(size_t)t * 8 + 2]; ++q, ++j) {
-            size_t i = cp->found[lo + q];
-            cp->near_idx[j] = (uint32_t)i;
-            cp->near_owner[j] = t;
-            for (int d = 0; d < 3; ++d) {
-                NB(cp, d)[j] = f->r[d][i];
-                NB(cp, 3 + d)[j] = f->v[d][i];
-                NB(cp, 9 + d)[j] = f->tracked ? f->disp[d][i] : 0.0;
-            }
-        }
-    }
+    pl_coupling_near_t nb = near_view(cp);
+    nb.n = nn;
+    pl_coupling_potential_gather(f, cp->found, cp->counts, cp->nthreads, &nb);
     const size_t nc = sim->colloids->n, partial = pl_coupling_wca_blocks(nn, nc) * (3 * nc + 1);
     if (partial > cp->wca_partial_cap) {
         free(cp->wca_partial);
@@ -139,67 +141,6 @@ static int forces(pl_coupling_t *cp, pl_colloid_t *c, pl_err_t *err)
     return 0;
 }
 
-/* v += h (F + g) for the selected particles (m_f = 1). */
-static void kick_fluid(pl_coupling_t *cp, double h, const double g[3])
-{
-    const size_t nn = cp->nnear;
-    double *v[3] = {NB(cp, 3), NB(cp, 4), NB(cp, 5)};
-    const double *F[3] = {NB(cp, 6), NB(cp, 7), NB(cp, 8)};
-#pragma omp parallel for schedule(static) num_threads(cp->nthreads)
-    for (size_t j = 0; j < nn; ++j)
-        for (int d = 0; d < 3; ++d) v[d][j] += h * (F[d][j] + g[d]);
-}
-
-/* r += v dt, with reflection at the walls of every closed axis (bounce-back
- * for no-slip in the frame of the wall, the z walls moving and the x/y walls
- * at rest; specular for slip; as the streaming does); the displacement is
- * accumulated, the walls' impulses added to acc (PL_WALL_ACC_N slots). */
-static void drift_fluid(pl_coupling_t *cp, const pl_sim_t *sim, double dt, int64_t acc[PL_WALL_ACC_N])
-{
-    static const double at_rest[3] = {0.0, 0.0, 0.0};
-    const pl_grid_t *g = &sim->grid;
-    const size_t nn = cp->nnear;
-    /* integer impulses: the sum is exact in any order */
-#pragma omp parallel for schedule(static) num_threads(cp->nthreads) reduction(+ : acc[:PL_WALL_ACC_N])
-    for (size_t j = 0; j < nn; ++j) {
-        const double r0[3] = {NB(cp, 0)[j], NB(cp, 1)[j], NB(cp, 2)[j]};
-        for (int d = 0; d < 3; ++d) {
-            NB(cp, d)[j] += NB(cp, 3 + d)[j] * dt;
-            NB(cp, 9 + d)[j] += NB(cp, 3 + d)[j] * dt;
-        }
-        for (int a = 0; a < 3; ++a) {
-            double *x = &NB(cp, a)[j];
-            const double La = g->L[a];
-            if (g->walls[a] == PL_WALLS_NONE || !(*x < 0.0 || *x > La)) continue;
-            int top = *x > La;
-            double xw = top ? La : 0.0;
-            NB(cp, 9 + a)[j] -= *x - r0[a];
-            *x = 2.0 * xw - *x;
-            NB(cp, 9 + a)[j] += *x - r0[a];
-            double dp[3] = {0.0, 0.0, 0.0};
-            dp[a] = -2.0 * NB(cp, 3 + a)[j];
-            if (g->walls[a] == PL_WALLS_NOSLIP) {
-                const double *U = a == 2 ? sim->wall_u[top] : at_rest;
-                for (int d = 0; d < 3; ++d) dp[d] = 2.0 * (U[d] - NB(cp, 3 + d)[j]);
-            }
-            for (int d = 0; d < 3; ++d) NB(cp, 3 + d)[j] += dp[d];
-            pl_wall_acc_add(acc, pl_wall_slot(a, top), dp);
-        }
-    }
-}
-
-/* First index of the selected list whose owner is >= t (owners ascend). */
-static size_t owner_start(const pl_coupling_t *cp, int t)
-{
-    size_t lo = 0, hi = cp->nnear;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (cp->near_owner[mid] < t) lo = mid + 1;
-        else hi = mid;
-    }
-    return lo;
-}
-
 int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)ctx;
@@ -214,29 +155,19 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
     int64_t wacc[PL_WALL_ACC_N] = {0}, sacc[PL_WALL_ACC_N] = {0};
     pl_stream_params_t sp;
     pl_sim_stream_params(sim, &sp);
-    const size_t nnear = cp->nnear;
-#pragma omp parallel for schedule(static) num_threads(cp->nthreads) reduction(+ : sacc[:PL_WALL_ACC_N])
-    for (size_t j = 0; j < nnear; ++j) {
-        size_t i = cp->near_idx[j];
-        if (f->tracked)
-            for (int d = 0; d < 3; ++d) f->disp[d][i] = NB(cp, 9 + d)[j];
-        if (sim->wall_acc) {
-            const double r0[3] = {NB(cp, 0)[j], NB(cp, 1)[j], NB(cp, 2)[j]};
-            const double v0[3] = {NB(cp, 3)[j], NB(cp, 4)[j], NB(cp, 5)[j]};
-            pl_srd_stream_wall_impulse(&sim->grid, &sp, r0, v0, sacc);
-        }
-    }
+    const pl_coupling_near_t nb = near_view(cp);
+    pl_coupling_potential_unstream(&nb, f, &sim->grid, sim->wall_acc ? &sp : NULL, cp->nthreads, sacc);
     const double dtm = c->dt, h = 0.5 * dtm;
     if (forces(cp, c, err)) return err->code;
     for (int s = 0; s < c->substeps; ++s) { /* PL Eqs. 18-19 */
         if (!cp->pinned) {
             pl_colloid_kick(c->n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
-                            c->vx, c->vy, c->vz, c->wx, c->wy, c->wz);
+                            c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->nthreads);
             pl_colloid_drift(c->n, dtm, c->box, c->periodic, c->x, c->y, c->z, c->ix, c->iy, c->iz,
-                             c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3);
+                             c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3, c->nthreads);
         }
-        kick_fluid(cp, h, g);
-        drift_fluid(cp, sim, dtm, wacc);
+        pl_coupling_potential_kick(&nb, h, g, cp->nthreads);
+        pl_coupling_potential_drift(&nb, &sim->grid, sim->wall_u, dtm, cp->nthreads, wacc);
         if (cp->pinned) /* impulse of the fluid force over this MD step (trapezoid) */
             for (size_t k = 0; k < c->n; ++k)
                 for (int d = 0; d < 3; ++d) cp->impulse[d] += h * cp->cf[(size_t)d * c->n + k];
@@ -244,10 +175,10 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
         if (cp->pinned)
             for (size_t k = 0; k < c->n; ++k)
                 for (int d = 0; d < 3; ++d) cp->impulse[d] += h * cp->cf[(size_t)d * c->n + k];
-        kick_fluid(cp, h, g);
+        pl_coupling_potential_kick(&nb, h, g, cp->nthreads);
         if (!cp->pinned) {
             pl_colloid_kick(c->n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
-                            c->vx, c->vy, c->vz, c->wx, c->wy, c->wz);
+                            c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->nthreads);
             c->md_step++;
             int rc = pl_colloid_guard(c, 0, err);
             if (rc) return rc;
@@ -258,31 +189,7 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
         for (int k = 0; k < PL_WALL_ACC_N; ++k) wacc[k] -= sacc[k];
         pl_sim_wall_add(sim, wacc);
     }
-    /* write the selected particles back, wrapped, into their new cells; the
-     * particles of one owner (a contiguous run of the list) and its
-     * histogram row are handled by one thread */
-    const double L[3] = {sim->grid.L[0], sim->grid.L[1], sim->grid.L[2]};
-#pragma omp parallel for schedule(static) num_threads(cp->nthreads)
-    for (int t = 0; t < cp->nthreads; ++t) {
-        size_t j = owner_start(cp, t), end = owner_start(cp, t + 1);
-        uint32_t *hrow = sim->hist + (size_t)t * sim->grid.ncells;
-        for (; j < end; ++j) {
-            size_t i = cp->near_idx[j];
-            for (int d = 0; d < 3; ++d) {
-                double x = NB(cp, d)[j];
-                if (sim->grid.walls[d] == PL_WALLS_NONE) {
-                    x -= L[d] * floor(x / L[d]);
-                    if (x >= L[d]) x = 0.0;
-                }
-                f->r[d][i] = (pl_real)x;
-                f->v[d][i] = (pl_real)NB(cp, 3 + d)[j];
-                if (f->tracked) f->disp[d][i] = NB(cp, 9 + d)[j];
-            }
-            uint32_t cell = pl_coupling_cell_of(&sim->grid, f->r[0][i], f->r[1][i], f->r[2][i]);
-            hrow[f->cell[i]]--;
-            hrow[cell]++;
-            f->cell[i] = cell;
-        }
-    }
+    /* the selected particles back, wrapped, into their new cells */
+    pl_coupling_potential_scatter(&nb, f, &sim->grid, sim->hist, cp->nthreads);
     return 0;
 }

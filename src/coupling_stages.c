@@ -80,11 +80,11 @@ int pl_coupling_stage_save(pl_sim_t *sim, void *ctx, pl_err_t *err)
     if (3 * nsave > cp->save_cap) {
         pl_free(cp->vsave);
         cp->save_cap = 3 * (nsave + nsave / 2 + 64);
-        if (!(cp->vsave = pl_alloc(cp->save_cap * sizeof(double))))
+        if (!(cp->vsave = pl_alloc(cp->save_cap * sizeof(double), cp->nthreads)))
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling II buffer");
     }
     pl_coupling2_cells_t oc = {cp->nocc, cp->occ_cell, cp->occ_save, cp->occ_col, cp->col_idx};
-    pl_coupling2_save(&sim->fluid, sim->cell_start, &oc, cp->vsave);
+    pl_coupling2_save(&sim->fluid, sim->cell_start, &oc, cp->vsave, cp->nthreads);
     return 0;
 }
 
@@ -98,10 +98,10 @@ static int collide(pl_sim_t *sim, int heyes)
     pl_coupling2_cells_t oc = {cp->nocc, cp->occ_cell, cp->occ_save, cp->occ_col, cp->col_idx};
     if (heyes)
         pl_coupling2_collide_heyes(&cp->p2, &oc, &sim->grid, sim->cell_start, cp->vsave, &sim->fluid, c->mass,
-                                   c->vx, c->vy, c->vz);
+                                   c->vx, c->vy, c->vz, cp->nthreads);
     else
         pl_coupling2_collide(&cp->p2, &oc, &sim->grid, sim->cell_start, cp->vsave, &sim->fluid, c->mass, c->vx,
-                             c->vy, c->vz);
+                             c->vy, c->vz, cp->nthreads);
     /* the walls' push in the occupied cells, replacing the fluid kernel's
      * count there; summed in cell order (deterministic) */
     for (size_t j = 0; cp->p2.wall_fix && j < cp->nocc; ++j)
@@ -127,7 +127,7 @@ int pl_coupling_stage_collide_heyes(pl_sim_t *sim, void *ctx, pl_err_t *err)
 void pl_coupling_total_momentum(const pl_sim_t *sim, double p[3], double *mass)
 {
     pl_fluid_obs_t o;
-    pl_srd_observe(&sim->fluid, sim->obs_scratch, &o);
+    pl_srd_observe(&sim->fluid, sim->obs_scratch, &o, sim->nthreads);
     double M = (double)sim->fluid.n;
     for (int d = 0; d < 3; ++d) p[d] = o.momentum[d];
     const pl_colloid_t *c = sim->colloids;
@@ -149,10 +149,10 @@ int pl_coupling_stage_drift(pl_sim_t *sim, void *ctx, pl_err_t *err)
     double P[3], M;
     pl_coupling_total_momentum(sim, P, &M);
     const double u[3] = {P[0] / M, P[1] / M, P[2] / M};
-    pl_fluid_t *f = &sim->fluid;
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < f->n; ++i)
-        for (int d = 0; d < 3; ++d) f->v[d][i] = (pl_real)(f->v[d][i] - u[d]);
+    /* v + (-u) rounds as v - u does (IEEE 754 subtraction is the addition
+     * of the negated operand): the same bits */
+    const double du[3] = {-u[0], -u[1], -u[2]};
+    pl_srd_velocity_add(&sim->fluid, du, sim->nthreads);
     pl_colloid_t *c = sim->colloids;
     for (size_t k = 0; c && k < c->n; ++k) {
         c->vx[k] -= u[0];
@@ -168,12 +168,10 @@ int pl_coupling_stage_flow(pl_sim_t *sim, void *ctx, pl_err_t *err)
     (void)err;
     pl_fluid_obs_t o;
     pl_fluid_t *f = &sim->fluid;
-    pl_srd_observe(f, sim->obs_scratch, &o);
+    pl_srd_observe(f, sim->obs_scratch, &o, sim->nthreads);
     double u[3];
     for (int d = 0; d < 3; ++d)
         u[d] = sim->scene.coupling.flow_velocity[d] - o.momentum[d] / (double)f->n;
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < f->n; ++i)
-        for (int d = 0; d < 3; ++d) f->v[d][i] = (pl_real)(f->v[d][i] + u[d]);
+    pl_srd_velocity_add(f, u, sim->nthreads);
     return 0;
 }

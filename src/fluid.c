@@ -5,7 +5,7 @@
 #include <string.h>
 #include <sys/mman.h>
 
-void *pl_alloc(size_t bytes)
+void *pl_alloc(size_t bytes, int nthreads)
 {
     size_t rounded = (bytes + PL_ALIGN - 1) / PL_ALIGN * PL_ALIGN;
     if (rounded == 0) rounded = PL_ALIGN;
@@ -22,13 +22,7 @@ void *pl_alloc(size_t bytes)
     if (bytes >= 2 * huge) (void)madvise(p, rounded / huge * huge, MADV_HUGEPAGE); /* advice: errors ignored */
 #endif
     /* First touch with the kernels' static partition (pages near threads). */
-    const size_t page = 4096;
-    size_t npages = (rounded + page - 1) / page;
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < npages; ++i) {
-        size_t lo = i * page, hi = lo + page < rounded ? lo + page : rounded;
-        memset(p + lo, 0, hi - lo);
-    }
+    pl_first_touch(p, rounded, nthreads);
     return p;
 }
 
@@ -44,27 +38,27 @@ void pl_fluid_free(pl_fluid_t *f)
     memset(f, 0, sizeof *f);
 }
 
-int pl_fluid_create(size_t n, int tracked, pl_fluid_t *f, pl_err_t *err)
+int pl_fluid_create(size_t n, int tracked, int nthreads, pl_fluid_t *f, pl_err_t *err)
 {
     memset(f, 0, sizeof *f);
     f->n = n;
     f->tracked = tracked;
     int ok = 1;
     for (int d = 0; d < 3; ++d) {
-        ok &= (f->r[d] = pl_alloc(n * sizeof(pl_real))) != NULL;
-        ok &= (f->v[d] = pl_alloc(n * sizeof(pl_real))) != NULL;
-        ok &= (f->r_alt[d] = pl_alloc(n * sizeof(pl_real))) != NULL;
-        ok &= (f->v_alt[d] = pl_alloc(n * sizeof(pl_real))) != NULL;
+        ok &= (f->r[d] = pl_alloc(n * sizeof(pl_real), nthreads)) != NULL;
+        ok &= (f->v[d] = pl_alloc(n * sizeof(pl_real), nthreads)) != NULL;
+        ok &= (f->r_alt[d] = pl_alloc(n * sizeof(pl_real), nthreads)) != NULL;
+        ok &= (f->v_alt[d] = pl_alloc(n * sizeof(pl_real), nthreads)) != NULL;
         if (tracked) {
-            ok &= (f->disp[d] = pl_alloc(n * sizeof(double))) != NULL;
-            ok &= (f->disp_alt[d] = pl_alloc(n * sizeof(double))) != NULL;
+            ok &= (f->disp[d] = pl_alloc(n * sizeof(double), nthreads)) != NULL;
+            ok &= (f->disp_alt[d] = pl_alloc(n * sizeof(double), nthreads)) != NULL;
         }
     }
     if (tracked) {
-        ok &= (f->id = pl_alloc(n * sizeof(uint32_t))) != NULL;
-        ok &= (f->id_alt = pl_alloc(n * sizeof(uint32_t))) != NULL;
+        ok &= (f->id = pl_alloc(n * sizeof(uint32_t), nthreads)) != NULL;
+        ok &= (f->id_alt = pl_alloc(n * sizeof(uint32_t), nthreads)) != NULL;
     }
-    ok &= (f->cell = pl_alloc(n * sizeof(uint32_t))) != NULL;
+    ok &= (f->cell = pl_alloc(n * sizeof(uint32_t), nthreads)) != NULL;
     if (!ok) {
         pl_fluid_free(f);
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory allocating %zu fluid particles", n);

@@ -1,53 +1,16 @@
-/* Initial fluid state (issue: uniform positions; uniform or Gaussian
- * velocities with zero total momentum and exactly the set temperature).
- * Every particle's draws are keyed by its index: independent of threads. */
-#include <math.h>
-
-#include "peloid/rng.h"
+/* Initial fluid state from the scene (uniform positions; uniform or
+ * Gaussian velocities with zero total momentum and exactly the set
+ * temperature): unpacks the scene for the kernel pl_srd_init
+ * (kernels/srd_init.c). */
 #include "peloid/sim.h"
 
-void pl_fluid_init(pl_fluid_t *f, const pl_scene_t *sc)
+void pl_fluid_init(pl_fluid_t *f, const pl_scene_t *sc, int nthreads)
 {
-    const uint64_t seed = (uint64_t)sc->run.seed;
-    const double kT = sc->fluid.temperature;
-    const int uniform = sc->fluid.init_velocity == PL_VEL_UNIFORM;
-    const double L[3] = {sc->box.cells[0], sc->box.cells[1], sc->box.cells[2]};
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < f->n; ++i) {
-        pl_rand4_t p = pl_rng_uniform4(seed, PL_RNG_INIT_POS, 0, i, 0);
-        pl_rand4_t q = pl_rng_uniform4(seed, PL_RNG_INIT_VEL, 0, i, 0);
-        double v[4];
-        if (uniform) {
-            for (int d = 0; d < 3; ++d) v[d] = (q.u[d] - 0.5) * sqrt(12.0 * kT); /* Hecht Fig. 2 */
-        } else {
-            pl_rng_gauss2(q.u[0], q.u[1], &v[0], &v[1]);
-            pl_rng_gauss2(q.u[2], q.u[3], &v[2], &v[3]);
-            for (int d = 0; d < 3; ++d) v[d] *= sqrt(kT);
-        }
-        for (int d = 0; d < 3; ++d) {
-            double x = p.u[d] * L[d];
-            f->r[d][i] = (pl_real)(x >= L[d] ? 0.0 : x);
-            f->v[d][i] = (pl_real)v[d];
-        }
-        if (f->tracked) {
-            f->id[i] = (uint32_t)i;
-            for (int d = 0; d < 3; ++d) f->disp[d][i] = 0.0;
-        }
-    }
-    if (f->n < 2) return;
-    /* zero total momentum, then exact temperature kT = sum v^2 / (3 (N-1)) */
-    double P[3] = {0, 0, 0};
-    for (size_t i = 0; i < f->n; ++i)
-        for (int d = 0; d < 3; ++d) P[d] += f->v[d][i];
-    double S = 0.0;
-    for (size_t i = 0; i < f->n; ++i)
-        for (int d = 0; d < 3; ++d) {
-            double w = f->v[d][i] - P[d] / (double)f->n;
-            S += w * w;
-        }
-    double scale = sqrt(kT * 3.0 * (double)(f->n - 1) / S);
-#pragma omp parallel for schedule(static)
-    for (size_t i = 0; i < f->n; ++i)
-        for (int d = 0; d < 3; ++d)
-            f->v[d][i] = (pl_real)((f->v[d][i] - P[d] / (double)f->n) * scale);
+    const pl_srd_init_params_t p = {
+        .seed = (uint64_t)sc->run.seed,
+        .kT = sc->fluid.temperature,
+        .uniform = sc->fluid.init_velocity == PL_VEL_UNIFORM,
+        .L = {sc->box.cells[0], sc->box.cells[1], sc->box.cells[2]},
+    };
+    pl_srd_init(f, &p, nthreads);
 }

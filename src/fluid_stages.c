@@ -100,7 +100,7 @@ static int stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
     (void)ctx;
     (void)err;
     sim->collide.step = (uint64_t)sim->step;
-    pl_srd_collide(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum);
+    pl_srd_collide(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum, sim->nthreads);
     collide_sums(sim, &sim->collide);
     return 0;
 }
@@ -112,7 +112,7 @@ static int stage_collide_heyes(pl_sim_t *sim, void *ctx, pl_err_t *err)
     (void)ctx;
     (void)err;
     sim->collide.step = (uint64_t)sim->step;
-    pl_srd_collide_heyes(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum);
+    pl_srd_collide_heyes(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum, sim->nthreads);
     collide_sums(sim, &sim->collide);
     return 0;
 }
@@ -123,7 +123,7 @@ static int stage_rescale(pl_sim_t *sim, void *ctx, pl_err_t *err)
     (void)err;
     if (sim->last_kT_meas <= 0.0) return 0;
     double factor = sqrt(sim->scene.thermostat.temperature / sim->last_kT_meas); /* PL App. A */
-    pl_srd_rescale(&sim->fluid, sim->cell_start, sim->grid.ncells, factor);
+    pl_srd_rescale(&sim->fluid, sim->cell_start, sim->grid.ncells, factor, sim->nthreads);
     sim->last_kT_meas = sim->scene.thermostat.temperature;
     return 0;
 }
@@ -133,7 +133,7 @@ static int stage_fields(pl_sim_t *sim, void *ctx, pl_err_t *err)
     (void)ctx;
     (void)err;
     if (sim->step < sim->scene.output.fields_start) return 0;
-    pl_srd_fields_accumulate(&sim->fluid, sim->grid.L, sim->field_acc);
+    pl_srd_fields_accumulate(&sim->fluid, sim->grid.L, sim->field_acc, sim->nthreads);
     sim->field_samples++;
     return 0;
 }

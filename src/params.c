@@ -1,6 +1,7 @@
 /* `peloid params`: the SRD fluid's derived parameters from PL Sec. II.B,
  * as text or as JSON (jansson; also the "derived" object of summary.json). */
 #include <math.h>
+#include <omp.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
@@ -63,7 +64,7 @@ int pl_run_check(const pl_scene_t *sc, pl_err_t *err)
     json_decref(mapping);
     if (!rc && sc->colloids.count > 0) { /* placement: init file, overlaps */
         pl_colloid_t *c = NULL;
-        rc = pl_colloid_create(sc, &c, err);
+        rc = pl_colloid_create(sc, omp_get_max_threads(), &c, err); /* as a run without --threads */
         pl_colloid_free(c);
     }
     return rc;

@@ -52,6 +52,8 @@ static void bind_threads(int nthreads)
         hwloc_bitmap_t sets[1024];
         hwloc_obj_t root = hwloc_get_root_obj(topo);
         if (hwloc_distrib(topo, &root, 1, sets, (unsigned)nthreads, INT_MAX, 0) == 0) {
+            /* the one parallel region outside kernels/: topology set-up (each
+             * thread of the team binds itself), not a loop over data */
 #pragma omp parallel num_threads(nthreads)
             {
                 hwloc_bitmap_t set = sets[omp_get_thread_num()];
@@ -70,16 +72,16 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
     if (!sim) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
     sim->scene = *scene;
     sim->nthreads = nthreads > 0 ? nthreads : omp_get_max_threads();
-    /* before any allocation: first touch (pl_alloc) runs with the kernels'
-     * thread count and binding */
-    omp_set_num_threads(sim->nthreads);
+    /* before any allocation: first touch (pl_alloc) runs on the bound
+     * threads.  No process-wide thread count is set: every kernel and
+     * pl_alloc are given sim->nthreads (num_threads clauses). */
     bind_threads(sim->nthreads);
     int walls[3];
     pl_scene_box_walls(&scene->box, walls);
     pl_grid_init(&sim->grid, scene->box.cells, walls);
     double volume = (double)scene->box.cells[0] * scene->box.cells[1] * scene->box.cells[2];
     size_t n = (size_t)llround(scene->fluid.density * volume);
-    int rc = pl_fluid_create(n, scene->output.track_fluid, &sim->fluid, err);
+    int rc = pl_fluid_create(n, scene->output.track_fluid, sim->nthreads, &sim->fluid, err);
     if (rc) {
         free(sim);
         return rc;
@@ -87,16 +89,16 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
     size_t nc = sim->grid.ncells, L3 = (size_t)scene->box.cells[0] * (size_t)scene->box.cells[1] *
                                           (size_t)scene->box.cells[2];
     size_t nb = (nc + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
-    sim->hist = pl_alloc((size_t)sim->nthreads * nc * sizeof(uint32_t));
-    sim->cell_start = pl_alloc((nc + 1) * sizeof(uint32_t));
-    sim->block_sum = pl_alloc(2 * nb * sizeof(double));
-    sim->obs_scratch = pl_alloc(pl_srd_observe_scratch(n) * sizeof(double));
-    if (scene->output.fields_interval > 0) sim->field_acc = pl_alloc(4 * L3 * sizeof(int64_t));
+    sim->hist = pl_alloc((size_t)sim->nthreads * nc * sizeof(uint32_t), sim->nthreads);
+    sim->cell_start = pl_alloc((nc + 1) * sizeof(uint32_t), sim->nthreads);
+    sim->block_sum = pl_alloc(2 * nb * sizeof(double), sim->nthreads);
+    sim->obs_scratch = pl_alloc(pl_srd_observe_scratch(n) * sizeof(double), sim->nthreads);
+    if (scene->output.fields_interval > 0) sim->field_acc = pl_alloc(4 * L3 * sizeof(int64_t), sim->nthreads);
     /* the momentum each wall exchanges (wall stress) */
     const int any_walls = sim->grid.any_walls;
     if (any_walls) {
-        sim->wall_acc = pl_alloc((size_t)sim->nthreads * PL_WALL_ACC_STRIDE * sizeof(int64_t));
-        sim->wall_dp = pl_alloc(PL_WALL_ACC_N * nb * sizeof(double));
+        sim->wall_acc = pl_alloc((size_t)sim->nthreads * PL_WALL_ACC_STRIDE * sizeof(int64_t), sim->nthreads);
+        sim->wall_dp = pl_alloc(PL_WALL_ACC_N * nb * sizeof(double), sim->nthreads);
     }
     memcpy(sim->wall_u, scene->box.wall_velocity, sizeof sim->wall_u); /* shear, Hecht Sec. VIII.C */
     if (!sim->hist || !sim->cell_start || !sim->block_sum || !sim->obs_scratch ||
@@ -104,7 +106,7 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
         pl_sim_free(sim);
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cell arrays (%zu cells)", nc);
     }
-    pl_fluid_init(&sim->fluid, scene);
+    pl_fluid_init(&sim->fluid, scene, sim->nthreads);
     for (int m = 0; pl_modules[m]; ++m) /* colloids, then the coupling between them and the fluid */
         if (pl_modules[m]->create && (rc = pl_modules[m]->create(sim, err))) {
             pl_sim_free(sim);
@@ -186,7 +188,7 @@ int pl_sim_step(pl_sim_t *sim, pl_err_t *err)
 
 void pl_sim_observe(const pl_sim_t *sim, pl_fluid_obs_t *obs, double *kT)
 {
-    pl_srd_observe(&sim->fluid, sim->obs_scratch, obs);
+    pl_srd_observe(&sim->fluid, sim->obs_scratch, obs, sim->nthreads);
     /* kT = sum m (v - V)^2 / (3 (N - 1)), V the centre-of-mass velocity */
     size_t n = sim->fluid.n;
     if (n < 2) {

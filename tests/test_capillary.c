@@ -45,7 +45,7 @@ static void drift_one(int walls_xy, double r[3], double v[3], uint32_t *cell)
     pl_grid_t g;
     const int L[3] = {4, 4, 4}, walls[3] = {walls_xy, walls_xy, PL_WALLS_NONE};
     pl_grid_init(&g, L, walls);
-    cr_assert_eq(pl_fluid_create(1, 0, &f, &err), 0);
+    cr_assert_eq(pl_fluid_create(1, 0, 1, &f, &err), 0);
     const double r0[3] = {0.1, 0.1, 1.0}, v0[3] = {-1.0, -2.0, 0.3};
     for (int d = 0; d < 3; ++d) {
         f.r[d][0] = (pl_real)r0[d];
@@ -54,7 +54,7 @@ static void drift_one(int walls_xy, double r[3], double v[3], uint32_t *cell)
     pl_stream_params_t p;
     memset(&p, 0, sizeof p);
     p.dt = 0.2;
-    uint32_t *hist = pl_alloc(g.ncells * sizeof(uint32_t));
+    uint32_t *hist = pl_alloc(g.ncells * sizeof(uint32_t), 1);
     pl_srd_stream_bin(&f, &g, &p, hist, 1);
     for (int d = 0; d < 3; ++d) {
         r[d] = f.r[d][0];
@@ -91,7 +91,7 @@ Test(capillary, drift_reflects_at_the_earliest_wall_of_an_edge)
 static void fill(pl_fluid_t *f, const pl_grid_t *g, size_t n)
 {
     pl_err_t err = {0, ""};
-    cr_assert_eq(pl_fluid_create(n, 0, f, &err), 0);
+    cr_assert_eq(pl_fluid_create(n, 0, 2, f, &err), 0);
     for (size_t i = 0; i < n; ++i) {
         pl_rand4_t r = pl_rng_uniform4(9, 1, 0, i, 0), u = pl_rng_uniform4(9, 2, 0, i, 0);
         for (int d = 0; d < 3; ++d) {
@@ -120,8 +120,9 @@ Test(capillary, stream_in_scatter_matches_stream_then_sort)
         pl_fluid_t a, b;
         fill(&a, &g, n);
         fill(&b, &g, n);
-        uint32_t *ha = pl_alloc((size_t)nt * g.ncells * sizeof(uint32_t)), *hb = pl_alloc((size_t)nt * g.ncells * sizeof(uint32_t));
-        uint32_t *sa = pl_alloc((g.ncells + 1) * sizeof(uint32_t)), *sb = pl_alloc((g.ncells + 1) * sizeof(uint32_t));
+        uint32_t *ha = pl_alloc((size_t)nt * g.ncells * sizeof(uint32_t), nt),
+                 *hb = pl_alloc((size_t)nt * g.ncells * sizeof(uint32_t), nt);
+        uint32_t *sa = pl_alloc((g.ncells + 1) * sizeof(uint32_t), nt), *sb = pl_alloc((g.ncells + 1) * sizeof(uint32_t), nt);
         pl_srd_stream_bin(&a, &g, &p, ha, nt);
         pl_srd_sort(&a, ha, sa, g.ncells, nt);
         pl_srd_stream_count(&b, &g, &p, hb, nt);

@@ -14,6 +14,7 @@ typedef struct {
     pl_grid_t g;
     uint32_t *hist, *start;
     double *block;
+    int nthreads;
 } box_t;
 
 static void make_box(box_t *b, int L, double gamma, int nthreads)
@@ -22,7 +23,8 @@ static void make_box(box_t *b, int L, double gamma, int nthreads)
     int Ls[3] = {L, L, L};
     pl_grid_init(&b->g, Ls, (const int[3]){PL_WALLS_NONE, PL_WALLS_NONE, PL_WALLS_NONE});
     size_t n = (size_t)(gamma * L * L * L);
-    cr_assert_eq(pl_fluid_create(n, 0, &b->f, &err), 0);
+    b->nthreads = nthreads;
+    cr_assert_eq(pl_fluid_create(n, 0, nthreads, &b->f, &err), 0);
     for (size_t i = 0; i < n; ++i) {
         pl_rand4_t r = pl_rng_uniform4(99, 1, 0, i, 0), q = pl_rng_uniform4(99, 2, 0, i, 0);
         for (int d = 0; d < 3; ++d) {
@@ -30,9 +32,9 @@ static void make_box(box_t *b, int L, double gamma, int nthreads)
             b->f.v[d][i] = (pl_real)(2.0 * q.u[d] - 1.0 + 0.3 * d); /* a mean flow too */
         }
     }
-    b->hist = pl_alloc((size_t)nthreads * b->g.ncells * sizeof(uint32_t));
-    b->start = pl_alloc((b->g.ncells + 1) * sizeof(uint32_t));
-    b->block = pl_alloc(2 * (b->g.ncells / PL_CELL_BLOCK + 1) * sizeof(double));
+    b->hist = pl_alloc((size_t)nthreads * b->g.ncells * sizeof(uint32_t), nthreads);
+    b->start = pl_alloc((b->g.ncells + 1) * sizeof(uint32_t), nthreads);
+    b->block = pl_alloc(2 * (b->g.ncells / PL_CELL_BLOCK + 1) * sizeof(double), nthreads);
     pl_grid_draw_shift(&b->g, 5, 0, 1);
     pl_srd_bin(&b->f, &b->g, b->hist, nthreads);
     pl_srd_sort(&b->f, b->hist, b->start, b->g.ncells, nthreads);
@@ -76,8 +78,8 @@ static void check_conservation(int rule, int heyes)
     p.step = 3;
     p.kT_target = 0.5;
     p.heyes_eps = 0.3;
-    if (heyes) pl_srd_collide_heyes(&b.f, &b.g, b.start, &p, b.block);
-    else pl_srd_collide(&b.f, &b.g, b.start, &p, b.block);
+    if (heyes) pl_srd_collide_heyes(&b.f, &b.g, b.start, &p, b.block, b.nthreads);
+    else pl_srd_collide(&b.f, &b.g, b.start, &p, b.block, b.nthreads);
     int changed_K = 0;
     for (size_t c = 0; c < nc; ++c) {
         double P[3], K, s;
@@ -130,7 +132,7 @@ static void check_angle(int rule, double alpha_deg)
         p.sin_a = sin(alpha_deg * M_PI / 180.0);
         p.seed = 3;
         p.step = (uint64_t)rep;
-        pl_srd_collide(&b.f, &b.g, b.start, &p, b.block);
+        pl_srd_collide(&b.f, &b.g, b.start, &p, b.block, b.nthreads);
         for (size_t c = 0; c < nc; ++c) {
             if (b.start[c + 1] - b.start[c] < 2) continue;
             size_t i = b.start[c]; /* one particle per cell: independent samples */

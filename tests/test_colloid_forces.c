@@ -5,6 +5,7 @@
  * direct O(N^2) pair sum (fresh, while colloids move, with another skin). */
 #include <criterion/criterion.h>
 #include <math.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -171,7 +172,7 @@ static pl_colloid_t *random_colloids(size_t n, double skin_fraction)
 {
     pl_colloid_t *c;
     pl_err_t err;
-    cr_assert_eq(pl_colloid_alloc(n, &c, &err), 0);
+    cr_assert_eq(pl_colloid_alloc(n, omp_get_max_threads(), &c, &err), 0);
     pl_colloid_pair_params_t *p = &c->pair;
     pl_scene_dlvo_t s = {81, 20, 1, 300, 1.4e8, 4.76e-20, 1.25e-7, 6.0, 0.0, 1e-3};
     pl_colloid_dlvo_info_t info;

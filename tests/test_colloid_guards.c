@@ -3,6 +3,7 @@
  * quantity, bound and the parameter to change -- never a silent NaN.  Also
  * bad input refused with the scene loader's FILE:LINE: key message (code 2). */
 #include <math.h>
+#include <omp.h>
 #include <string.h>
 
 #include "colloid_test_util.h"
@@ -30,7 +31,7 @@ static pl_colloid_t *head_on(const char *body, double v, double gap)
     scene_from(body, &s);
     pl_colloid_t *c;
     pl_err_t err;
-    cr_assert_eq(pl_colloid_create(&s, &c, &err), 0, "%s", err.msg);
+    cr_assert_eq(pl_colloid_create(&s, omp_get_max_threads(), &c, &err), 0, "%s", err.msg);
     double d = c->rad[0] + c->rad[1];
     for (int i = 0; i < 2; ++i) {
         c->x[i] = 20.0 + (i ? 0.5 : -0.5) * (d + gap), c->y[i] = c->z[i] = 20.0;
@@ -118,7 +119,7 @@ Test(colloid_guards, dt_ten_times_too_large)
                "hertz: { K = 1000.0; };\n", &s);
     pl_colloid_t *c;
     pl_err_t err = {0, ""};
-    cr_assert_eq(pl_colloid_create(&s, &c, &err), 0, "%s", err.msg);
+    cr_assert_eq(pl_colloid_create(&s, omp_get_max_threads(), &c, &err), 0, "%s", err.msg);
     int rc = run_steps(c, 20000, &err);
     cr_expect_eq(rc, PL_ERR_GUARD, "rc %d: %s", rc, err.msg);
     cr_expect(strstr(err.msg, "guard contact_steps") || strstr(err.msg, "guard energy_drift") ||
@@ -154,7 +155,7 @@ static void refused(const char *body, const char *want1, const char *want2)
     int rc = pl_scene_load_string(body, "bad.cfg", &s, &err);
     if (rc == 0) { /* some checks need the state (initial overlap) */
         pl_colloid_t *c = NULL;
-        rc = pl_colloid_create(&s, &c, &err);
+        rc = pl_colloid_create(&s, omp_get_max_threads(), &c, &err);
         pl_colloid_free(c);
     }
     cr_expect_eq(rc, PL_ERR_INPUT, "rc %d for %s", rc, body);

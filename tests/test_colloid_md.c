@@ -34,7 +34,7 @@ Test(colloid_md, nve_energy_and_momentum, .timeout = 120)
     scene_from(NVE_SCENE, &s);
     pl_colloid_t *c;
     pl_err_t err;
-    cr_assert_eq(pl_colloid_create(&s, &c, &err), 0, "%s", err.msg);
+    cr_assert_eq(pl_colloid_create(&s, omp_get_max_threads(), &c, &err), 0, "%s", err.msg);
     pl_colloid_energy_t e0, e;
     pl_colloid_energy(c, &e0);
     double p0[3], l0[3], p[3], l[3];
@@ -69,7 +69,7 @@ Test(colloid_md, angular_momentum_frictional_collision)
                "hertz: { K = 1000.0; beta = 5.0; gamma_t = 20.0; };\n", &s);
     pl_colloid_t *c;
     pl_err_t err;
-    cr_assert_eq(pl_colloid_create(&s, &c, &err), 0, "%s", err.msg);
+    cr_assert_eq(pl_colloid_create(&s, omp_get_max_threads(), &c, &err), 0, "%s", err.msg);
     double x0[2] = {15, 25}, y0[2] = {20, 21.5}, v0[2] = {0.3, -0.3};
     for (int i = 0; i < 2; ++i) {
         c->x[i] = x0[i], c->y[i] = y0[i], c->z[i] = 20, c->vx[i] = v0[i];
@@ -101,7 +101,7 @@ Test(colloid_md, damped_energy_decreases)
                "lubrication: { viscosity = 2.5; min_gap = 0.1; cutoff_gap = 1.0; };\n", &s);
     pl_colloid_t *c;
     pl_err_t err;
-    cr_assert_eq(pl_colloid_create(&s, &c, &err), 0, "%s", err.msg);
+    cr_assert_eq(pl_colloid_create(&s, omp_get_max_threads(), &c, &err), 0, "%s", err.msg);
     pl_colloid_energy_t e;
     pl_colloid_energy(c, &e);
     double first = e.total, prev = e.total;
@@ -134,7 +134,7 @@ Test(colloid_md, eight_spheres_friction_impulse, .timeout = 60)
                "hertz: { K = 3000.0; gamma_t = 30.0; };\n", &s);
     pl_colloid_t *c;
     pl_err_t err;
-    cr_assert_eq(pl_colloid_create(&s, &c, &err), 0, "%s", err.msg);
+    cr_assert_eq(pl_colloid_create(&s, omp_get_max_threads(), &c, &err), 0, "%s", err.msg);
     int in = 0, a = -1, b = -1, checked = 0, spoiled = 0;
     double v0[2][3], w0[2][3], e[3] = {0, 0, 0}, maxov = 0;
     for (int step = 0; step < 40000 && checked < 6; ++step) {
@@ -209,10 +209,9 @@ Test(colloid_md, bitwise_threads)
     double *snap[2];
     size_t n = 400; /* >= PL_COLLOID_OMP_MIN: the kernels really run threaded */
     for (int t = 0; t < 2; ++t) {
-        omp_set_num_threads(t + 1);
         pl_colloid_t *c;
         pl_err_t err;
-        cr_assert_eq(pl_colloid_create(&s, &c, &err), 0, "%s", err.msg);
+        cr_assert_eq(pl_colloid_create(&s, t + 1, &c, &err), 0, "%s", err.msg);
         for (int k = 0; k < 200; ++k) cr_assert_eq(pl_colloid_md_step(c, &err), 0, "%s", err.msg);
         snap[t] = malloc(9 * n * sizeof(double));
         const double *src[9] = {c->x, c->y, c->z, c->vx, c->vy, c->vz, c->wx, c->fx, c->q1};

@@ -5,6 +5,7 @@
  * overflowing accumulator wrapped silently; an image counter overflowed its
  * int32, undefined behaviour, before the NaN guard looked). */
 #include <math.h>
+#include <omp.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -143,7 +144,7 @@ Test(fluid_guard, colloid_image_counter)
                "colloids: { count = 1; pairs = \"\"; };\n", &s);
     pl_colloid_t *c;
     pl_err_t err = {0, ""};
-    cr_assert_eq(pl_colloid_create(&s, &c, &err), 0, "%s", err.msg);
+    cr_assert_eq(pl_colloid_create(&s, omp_get_max_threads(), &c, &err), 0, "%s", err.msg);
     c->vx[0] = 1e15 / c->dt;
     int rc = 0;
     for (int k = 0; k < 3 && !rc; ++k) rc = pl_colloid_md_step(c, &err);

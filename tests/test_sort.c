@@ -12,7 +12,7 @@ static void fill(pl_fluid_t *f, pl_grid_t *g, size_t n, int L)
     pl_err_t err;
     int Ls[3] = {L, L + 1, L + 2};
     pl_grid_init(g, Ls, (const int[3]){PL_WALLS_NONE, PL_WALLS_NONE, PL_WALLS_NONE});
-    cr_assert_eq(pl_fluid_create(n, 1, f, &err), 0);
+    cr_assert_eq(pl_fluid_create(n, 1, 1, f, &err), 0);
     for (size_t i = 0; i < n; ++i) {
         pl_rand4_t r = pl_rng_uniform4(7, 1, 0, i, 0);
         for (int d = 0; d < 3; ++d) {
@@ -26,8 +26,8 @@ static void fill(pl_fluid_t *f, pl_grid_t *g, size_t n, int L)
 
 static void sort_with(int nthreads, pl_fluid_t *f, pl_grid_t *g, uint32_t **start)
 {
-    uint32_t *hist = pl_alloc((size_t)nthreads * g->ncells * sizeof(uint32_t));
-    *start = pl_alloc((g->ncells + 1) * sizeof(uint32_t));
+    uint32_t *hist = pl_alloc((size_t)nthreads * g->ncells * sizeof(uint32_t), nthreads);
+    *start = pl_alloc((g->ncells + 1) * sizeof(uint32_t), nthreads);
     pl_srd_bin(f, g, hist, nthreads);
     pl_srd_sort(f, hist, *start, g->ncells, nthreads);
     pl_free(hist);
@@ -43,7 +43,7 @@ Test(sort, grouped_stable_and_thread_independent)
     sort_with(1, &ref, &g, &ref_start);
     cr_assert_eq(ref_start[g.ncells], n);
     /* every particle lies in its cell, and within a cell ids increase */
-    uint32_t *hist = pl_alloc(g.ncells * sizeof(uint32_t));
+    uint32_t *hist = pl_alloc(g.ncells * sizeof(uint32_t), 1);
     pl_srd_bin(&ref, &g, hist, 1); /* recompute cells of the sorted order */
     for (size_t c = 0; c < g.ncells; ++c)
         for (size_t i = ref_start[c]; i < ref_start[c + 1]; ++i) {

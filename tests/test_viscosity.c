@@ -40,14 +40,14 @@ static void check_viscosity(double lambda, double gamma, double alpha_deg, int L
     double block[NBLOCKS] = {0};
     for (long long s = 0; s < n_eq + NBLOCKS * per_block; ++s) {
         pl_real *vx = sim->fluid.v[0], *z = sim->fluid.r[2];
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(sim->nthreads)
         for (size_t i = 0; i < sim->fluid.n; ++i) vx[i] += (pl_real)(F * lambda * sin(k * z[i]));
         pl_test_steps(sim, 1);
         if (s < n_eq || s % 4) continue;
         vx = sim->fluid.v[0]; /* the sort swapped the arrays */
         z = sim->fluid.r[2];
         double a = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : a)
+#pragma omp parallel for schedule(static) num_threads(sim->nthreads) reduction(+ : a)
         for (size_t i = 0; i < sim->fluid.n; ++i) a += vx[i] * sin(k * z[i]);
         block[(s - n_eq) / per_block] += 2.0 * a / (double)sim->fluid.n / (double)((per_block + 3) / 4);
     }

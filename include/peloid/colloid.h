@@ -49,6 +49,7 @@ typedef struct {
 
 typedef struct pl_colloid {
     size_t n;
+    int nthreads; /* threads of the colloid kernels (results do not depend on it) */
     /* checkpointable state */
     double *x, *y, *z, *vx, *vy, *vz, *wx, *wy, *wz, *q0, *q1, *q2, *q3;
     int32_t *ix, *iy, *iz; /* periodic images crossed */
@@ -104,12 +105,13 @@ int pl_colloid_pair_params(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
 /* State from a validated scene: radii, masses, positions (lattice / random /
  * file), velocities, forces at t = 0.  An initial overlap beyond
  * colloids.max_overlap is PL_ERR_INPUT.  `scene_dir` locates init_file. */
-int pl_colloid_create(const pl_scene_t *scene, pl_colloid_t **out, pl_err_t *err);
+int pl_colloid_create(const pl_scene_t *scene, int nthreads, pl_colloid_t **out, pl_err_t *err);
 void pl_colloid_free(pl_colloid_t *c);
 
 /* Allocation only (n colloids, zeroed; unit quaternions); for tests that set
- * positions by hand, followed by pl_colloid_setup(). */
-int pl_colloid_alloc(size_t n, pl_colloid_t **out, pl_err_t *err);
+ * positions by hand, followed by pl_colloid_setup().  nthreads: the thread
+ * count of the colloid kernels from then on (pl_colloid_create too). */
+int pl_colloid_alloc(size_t n, int nthreads, pl_colloid_t **out, pl_err_t *err);
 /* Derives parameters from the scene, builds cells, computes the forces. */
 int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
 /* Linked cells and neighbour list for pair cut-off rc (a0) with a skin of

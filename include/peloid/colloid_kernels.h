@@ -1,6 +1,8 @@
 /* Colloid kernels (kernels/colloid_*.c): linked cells, pair forces, external
  * forces, integrators.  Pure functions of raw arrays, counts and small
- * parameter structs: no scene, no I/O, no allocation. */
+ * parameter structs: no scene, no I/O, no allocation.  nthreads is the size
+ * of each parallel region (num_threads; serial below PL_COLLOID_OMP_MIN
+ * colloids): no kernel relies on a process-wide thread count. */
 #ifndef PELOID_COLLOID_KERNELS_H
 #define PELOID_COLLOID_KERNELS_H
 
@@ -113,31 +115,31 @@ static inline int pl_colloid_pair_owner(size_t i, size_t j)
  * on periodic axes (a max: exact and the same for any thread count). */
 double pl_colloid_nlist_max_disp2(const pl_colloid_nlist_t *nl, const double box[3],
                                   const int periodic[3], const double *x, const double *y,
-                                  const double *z);
+                                  const double *z, int nthreads);
 /* Counts the own partners of each colloid within rlist into start[1..n] (the
  * counts, not yet summed); the cells must be built for these positions. */
 void pl_colloid_nlist_count(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
                             const double box[3], const int periodic[3], const double *x,
-                            const double *y, const double *z);
+                            const double *y, const double *z, int nthreads);
 /* Fills the list after pl_colloid_nlist_count (start summed in place, the
  * slot arrays holding at least start[n] entries): partners, reverse slots,
  * reference positions. */
 void pl_colloid_nlist_fill(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
                            const double box[3], const int periodic[3], const double *x,
-                           const double *y, const double *z);
+                           const double *y, const double *z, int nthreads);
 
 /* Pair forces, torques and guard quantities over the neighbour list;
  * overwrites f, t.  `terms` of p must be a subset of PL_CT_ALL.  The guard
  * slots of i hold the maxima over the pairs i owns, so the maximum over all
  * colloids is the maximum over all pairs.  v->epot is not touched. */
 void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
-                            const pl_colloid_view_t *v);
+                            const pl_colloid_view_t *v, int nthreads);
 
 /* Pair energies of the present positions: rows PL_CE_DLVO, _HERTZ, _WCA,
  * _DEPL of v->epot get, for each colloid, the energies of the pairs it owns
  * (other rows and the forces are not touched). */
 void pl_colloid_pair_energies(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
-                              const pl_colloid_view_t *v);
+                              const pl_colloid_view_t *v, int nthreads);
 
 typedef struct {
     double g[3];      /* acceleration (gravity minus buoyancy) */
@@ -150,14 +152,14 @@ typedef struct {
  * PL_CE_GRAVITY when non-NULL (gravity energy needs unwrapped z: zu). */
 void pl_colloid_ext_forces(const pl_colloid_ext_params_t *p, size_t n, const double *x,
                            const double *y, const double *z, const double *zu, const double *rad,
-                           const double *mass, double *fx, double *fy, double *fz, double *epot);
+                           const double *mass, double *fx, double *fy, double *fz, double *epot, int nthreads);
 
 /* Velocity Verlet half kick (PL Eq. 19 / Hecht Eq. 8 and the rotational
  * analogue of Hecht Eq. 9): v += h F/m, w += h T/I. */
 void pl_colloid_kick(size_t n, double h, const double *mass, const double *inertia,
                      const double *fx, const double *fy, const double *fz, const double *tx,
                      const double *ty, const double *tz, double *vx, double *vy, double *vz,
-                     double *wx, double *wy, double *wz);
+                     double *wx, double *wy, double *wz, int nthreads);
 
 /* Drift (PL Eq. 18 / Hecht Eq. 7 after the half kick) and quaternion update
  * (Hecht Eq. 10), positions wrapped into the box with image counts. */
@@ -165,7 +167,7 @@ void pl_colloid_drift(size_t n, double dt, const double box[3], const int period
                       double *x, double *y, double *z, int32_t *ix, int32_t *iy, int32_t *iz,
                       const double *vx, const double *vy, const double *vz, const double *wx,
                       const double *wy, const double *wz, double *q0, double *q1, double *q2,
-                      double *q3);
+                      double *q3, int nthreads);
 
 /* Rotates the unit quaternion q by the rotation vector phi (space frame) and
  * normalises it. */
@@ -184,6 +186,6 @@ void pl_colloid_bd_step(const pl_colloid_bd_params_t *p, size_t n, const double 
                         int32_t *ix, int32_t *iy, int32_t *iz, const double *fx, const double *fy,
                         const double *fz, const double *tx, const double *ty, const double *tz,
                         double *vx, double *vy, double *vz, double *wx, double *wy, double *wz,
-                        double *q0, double *q1, double *q2, double *q3);
+                        double *q0, double *q1, double *q2, double *q3, int nthreads);
 
 #endif

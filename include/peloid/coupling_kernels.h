@@ -1,6 +1,8 @@
 /* Colloid-solvent coupling kernels (kernels/coupling_*.c): pure functions of
  * raw arrays, counts and small parameter structs; no scene, no I/O, no
- * allocation.  Fluid mass m_f = 1 (the mass unit). */
+ * allocation.  Fluid mass m_f = 1 (the mass unit).  nthreads is the size of
+ * each parallel region (num_threads): no kernel relies on a process-wide
+ * thread count. */
 #ifndef PELOID_COUPLING_KERNELS_H
 #define PELOID_COUPLING_KERNELS_H
 
@@ -9,6 +11,8 @@
 
 #include "peloid/fluid.h"
 #include "peloid/grid.h"
+#include "peloid/kernel_enums.h" /* PL_WALLS_*, PL_RULE_*, PL_BOUND_*, PL_PLACE_* */
+#include "peloid/srd_kernels.h"  /* pl_stream_params_t, PL_WALL_ACC_N */
 
 /* Colloid arrays the coupling kernels read (length n). */
 typedef struct {
@@ -34,6 +38,14 @@ size_t pl_coupling_lookup_build(const pl_coupling_colloids_t *c, const int L[3],
 int32_t pl_coupling_inside(const pl_coupling_colloids_t *c, const int L[3], const int walls[3],
                            const int32_t *start, const int32_t *list, const double r[3],
                            double p[3]);
+
+/* Every fluid particle inside a colloid of c (lookup start/list built for
+ * c) gets a new uniform position in the box of sides L, redrawn (up to 1000
+ * draws of PL_RNG_FLUID_REPLACE keyed by (seed, particle index, draw)) until
+ * it lies outside every colloid: the same for any thread count. */
+void pl_coupling_clear_interiors(pl_fluid_t *f, const pl_coupling_colloids_t *c, const int L[3],
+                                 const int walls[3], const int32_t *lk_start, const int32_t *lk_list,
+                                 uint64_t seed, int nthreads);
 
 /* ---- coupling I: reflection off colloid surfaces (coupling_reflect.c) -- */
 typedef struct {
@@ -87,7 +99,7 @@ typedef struct {
 
 /* Copies the pre-collision velocities of the fluid in the occupied cells. */
 void pl_coupling2_save(const pl_fluid_t *f, const uint32_t *cell_start,
-                       const pl_coupling2_cells_t *oc, double *vsave);
+                       const pl_coupling2_cells_t *oc, double *vsave, int nthreads);
 
 /* Redoes the collision of every occupied cell from the saved fluid
  * velocities and the colloid velocities with the mass-weighted mean velocity
@@ -95,12 +107,12 @@ void pl_coupling2_save(const pl_fluid_t *f, const uint32_t *cell_start,
  * is overwritten).  One rotation per cell from its own random stream. */
 void pl_coupling2_collide(const pl_coupling2_params_t *p, const pl_coupling2_cells_t *oc, const pl_grid_t *g,
                           const uint32_t *cell_start, const double *vsave, pl_fluid_t *f,
-                          const double *cmass, double *cvx, double *cvy, double *cvz);
+                          const double *cmass, double *cvx, double *cvy, double *cvz, int nthreads);
 /* The same with the mass-weighted Heyes thermostat in cells without
  * virtual wall particles. */
 void pl_coupling2_collide_heyes(const pl_coupling2_params_t *p, const pl_coupling2_cells_t *oc, const pl_grid_t *g,
                           const uint32_t *cell_start, const double *vsave, pl_fluid_t *f,
-                          const double *cmass, double *cvx, double *cvy, double *cvz);
+                          const double *cmass, double *cvx, double *cvy, double *cvz, int nthreads);
 
 /* ---- potential coupling (kernels/coupling_potential.c) ---------------- */
 /* Lists in found[lo .. lo + counts[t * 8 + 2]) the particles of thread t's
@@ -136,5 +148,42 @@ double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const doubl
                               const pl_coupling_colloids_t *c, const int32_t *lk_start,
                               const int32_t *lk_list, double *cfx, double *cfy, double *cfz,
                               int nthreads, double *partial);
+
+/* The particles selected for the MD step (n of them), in particle order:
+ * fluid index, the thread whose streaming chunk (pl_chunk) and histogram
+ * row hold it (ascending), and double copies of position, velocity, force
+ * and displacement that the MD step integrates. */
+typedef struct {
+    size_t n;
+    uint32_t *idx;
+    int32_t *owner;
+    double *r[3], *v[3], *f[3], *disp[3];
+} pl_coupling_near_t;
+
+/* Fills nb (nb->n = the sum of counts[t * 8 + 2]) from the lists of
+ * pl_coupling_find(_sorted): idx, owner, r, v and disp (0 when the fluid is
+ * not tracked); f is not touched. */
+void pl_coupling_potential_gather(const pl_fluid_t *f, const uint32_t *found, const uint64_t *counts,
+                                  int nthreads, const pl_coupling_near_t *nb);
+/* Takes back the free streaming of the selected particles (nb holding
+ * their state before it): the saved displacements into f (tracked fluids),
+ * and, when sp is not NULL, adds to acc the wall impulses the streaming
+ * with sp counted for them (pl_srd_stream_wall_impulse, fixed point). */
+void pl_coupling_potential_unstream(const pl_coupling_near_t *nb, pl_fluid_t *f, const pl_grid_t *g,
+                                    const pl_stream_params_t *sp, int nthreads, int64_t acc[PL_WALL_ACC_N]);
+/* Velocity Verlet half kick v += h (f + g) (PL Eq. 19, m_f = 1). */
+void pl_coupling_potential_kick(const pl_coupling_near_t *nb, double h, const double g[3], int nthreads);
+/* Drift r += v dt (PL Eq. 18), the displacement accumulated, with
+ * reflection at the walls of every closed axis of g as the streaming does
+ * (bounce-back in the frame of the wall for no-slip, the z walls moving
+ * with wall_u (bottom, top) and the x/y walls at rest; specular for slip);
+ * the walls' impulses added to acc (fixed point, PL_WALL_ACC_N slots). */
+void pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t *g, const double wall_u[2][3],
+                                 double dt, int nthreads, int64_t acc[PL_WALL_ACC_N]);
+/* Writes the selected particles back into f, wrapped on periodic axes,
+ * with their new collision cell (under g->shift), moving each from its old
+ * to its new cell in its owner's row of hist (nthreads x g->ncells). */
+void pl_coupling_potential_scatter(const pl_coupling_near_t *nb, pl_fluid_t *f, const pl_grid_t *g,
+                                   uint32_t *hist, int nthreads);
 
 #endif

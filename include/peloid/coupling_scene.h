@@ -3,15 +3,15 @@
 #ifndef PELOID_COUPLING_SCENE_H
 #define PELOID_COUPLING_SCENE_H
 
+#include "peloid/kernel_enums.h"
+
 /* PL_COUPLE_HECHT1: fluid particles reflected off colloid surfaces (Hecht
  * Sec. IV); PL_COUPLE_HECHT2: colloids join the SRD collision of their cell
  * (Hecht Sec. V); PL_COUPLE_POTENTIAL: WCA colloid-fluid forces integrated at
  * the MD step for the fluid near colloids (PL Sec. III.A, Eq. 17). */
 enum { PL_COUPLE_NONE = 0, PL_COUPLE_HECHT1 = 1, PL_COUPLE_HECHT2 = 2, PL_COUPLE_POTENTIAL = 3 };
-/* Surface rule of coupling I (frame of the colloid surface). */
-enum { PL_BOUND_SLIP = 0, PL_BOUND_STICK_STOCHASTIC = 1, PL_BOUND_STICK_BOUNCE = 2 };
-/* Where a reflected particle restarts: Hecht Sec. IV methods (i) and (ii). */
-enum { PL_PLACE_NEAREST = 0, PL_PLACE_ENTRY = 1 };
+/* PL_BOUND_* (surface rule) and PL_PLACE_* (placement) of coupling I: in
+ * kernel_enums.h, shared with kernels/coupling_reflect.c. */
 
 typedef struct {
     int method;            /* PL_COUPLE_* */

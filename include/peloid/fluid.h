@@ -24,16 +24,21 @@ typedef struct pl_fluid {
     uint32_t *cell; /* per particle: collision cell of the current step */
 } pl_fluid_t;
 
-int pl_fluid_create(size_t n, int tracked, pl_fluid_t *fluid, pl_err_t *err);
+/* The arrays first touched on nthreads threads (pl_alloc). */
+int pl_fluid_create(size_t n, int tracked, int nthreads, pl_fluid_t *fluid, pl_err_t *err);
 void pl_fluid_free(pl_fluid_t *fluid);
 /* Swaps every array with its twin (after the scatter of the counting sort). */
 void pl_fluid_swap(pl_fluid_t *fluid);
 /* Bytes held per particle (state + twins + cell index): for the benchmarks. */
 size_t pl_fluid_bytes(const pl_fluid_t *fluid);
 
-/* 64-byte aligned, zeroed allocation; first touch is done in parallel with the
- * same static schedule the kernels use, so pages land near their threads. */
-void *pl_alloc(size_t bytes);
+/* 64-byte aligned, zeroed allocation; first touch is done in parallel on
+ * nthreads threads (those of the kernels that will use it) with the same
+ * static schedule the kernels use, so pages land near their threads. */
+void *pl_alloc(size_t bytes, int nthreads);
+/* Zeroes bytes at mem page by page on nthreads threads, with the kernels'
+ * static schedule (kernels/first_touch.c). */
+void pl_first_touch(void *mem, size_t bytes, int nthreads);
 void pl_free(void *p);
 
 #endif

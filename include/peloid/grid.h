@@ -11,6 +11,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "peloid/kernel_enums.h" /* PL_WALLS_* */
+
 typedef struct pl_grid {
     int L[3];        /* box edge in cells (a0 = 1): positions in [0, L) */
     int n[3];        /* cells per axis of the collision grid */

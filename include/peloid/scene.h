@@ -15,11 +15,10 @@
 #include "peloid/coupling_scene.h"
 #include "peloid/observe_scene.h"
 #include "peloid/error.h"
+#include "peloid/kernel_enums.h" /* PL_WALLS_*, PL_RULE_* */
 #include "peloid/mapping.h"
 
-enum { PL_WALLS_NONE = 0, PL_WALLS_NOSLIP = 1, PL_WALLS_SLIP = 2 };
 enum { PL_VEL_GAUSSIAN = 0, PL_VEL_UNIFORM = 1 };
-enum { PL_RULE_RANDOM_AXIS = 0, PL_RULE_HECHT_AXES = 1 };
 enum { PL_THERMO_NONE = 0, PL_THERMO_HEYES = 1, PL_THERMO_RESCALE = 2 };
 
 /* Largest number of steps of a run (run.steps and --steps). */

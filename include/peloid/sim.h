@@ -183,7 +183,8 @@ int pl_fluid_guard_stage(pl_sim_t *sim, void *ctx, pl_err_t *err);
 int pl_fluid_guard_check(const pl_sim_t *sim, long long step, int scan, pl_err_t *err);
 
 /* Initial fluid: uniform positions, uniform or Gaussian velocities with zero
- * total momentum and exactly the scene temperature (src/fluid_init.c). */
-void pl_fluid_init(pl_fluid_t *fluid, const pl_scene_t *scene);
+ * total momentum and exactly the scene temperature (src/fluid_init.c), on
+ * nthreads threads (the result does not depend on them). */
+void pl_fluid_init(pl_fluid_t *fluid, const pl_scene_t *scene, int nthreads);
 
 #endif

@@ -1,6 +1,7 @@
 /* The SRD hot kernels (kernels/srd_*.c): OpenMP loops over the fluid arrays.
  * They see raw arrays and small parameter structs only: no scene, no I/O, no
- * allocation (DESIGN.md "Layers"). */
+ * allocation (DESIGN.md "Layers").  nthreads is the size of each parallel
+ * region (num_threads): no kernel relies on a process-wide thread count. */
 #ifndef PELOID_SRD_KERNELS_H
 #define PELOID_SRD_KERNELS_H
 
@@ -10,6 +11,7 @@
 
 #include "peloid/fluid.h"
 #include "peloid/grid.h"
+#include "peloid/kernel_enums.h" /* PL_RULE_*, PL_WALLS_* */
 
 /* ---- streaming fused with cell binning (kernels/srd_stream.c) ---------- */
 /* Wall impulse accumulators: PL_WALL_ACC_STRIDE int64 per thread (two cache
@@ -101,14 +103,31 @@ enum { PL_CELL_BLOCK = 2048 };
  * block_sum[2b] receives sum m (v-u)^2 after the collision and
  * block_sum[2b+1] the degrees of freedom 3(M-1) (PL Eqs. A1-A2). */
 void pl_srd_collide(pl_fluid_t *fluid, const pl_grid_t *grid, const uint32_t *cell_start,
-                    const pl_collide_params_t *p, double *block_sum);
+                    const pl_collide_params_t *p, double *block_sum, int nthreads);
 /* The same with the Heyes Monte Carlo cell thermostat (Hecht Sec. VIII.B,
  * Eq. 33) in every cell without virtual wall particles. */
 void pl_srd_collide_heyes(pl_fluid_t *fluid, const pl_grid_t *grid, const uint32_t *cell_start,
-                          const pl_collide_params_t *p, double *block_sum);
+                          const pl_collide_params_t *p, double *block_sum, int nthreads);
 
 /* PL Appendix A: scale v - u in every cell with >= 2 particles by `factor`. */
-void pl_srd_rescale(pl_fluid_t *fluid, const uint32_t *cell_start, size_t ncells, double factor);
+void pl_srd_rescale(pl_fluid_t *fluid, const uint32_t *cell_start, size_t ncells, double factor, int nthreads);
+
+/* ---- initial state, uniform velocity shift (kernels/srd_init.c) ------- */
+typedef struct {
+    uint64_t seed;  /* scene seed (PL_RNG_INIT_POS, PL_RNG_INIT_VEL) */
+    double kT;      /* initial temperature */
+    int uniform;    /* uniform velocities (Hecht Fig. 2), else Gaussian */
+    double L[3];    /* box sides: positions uniform in [0, L) */
+} pl_srd_init_params_t;
+
+/* Positions and velocities from counter-based draws keyed by the particle
+ * index, then the mean velocity removed and v scaled to exactly
+ * kT = sum v^2 / (3 (N - 1)); tracked fluids get id = index and zero
+ * displacements.  Independent of nthreads. */
+void pl_srd_init(pl_fluid_t *fluid, const pl_srd_init_params_t *p, int nthreads);
+
+/* v += du for every particle (a Galilean shift: drift removal, flow hold). */
+void pl_srd_velocity_add(pl_fluid_t *fluid, const double du[3], int nthreads);
 
 /* ---- observables (kernels/srd_observe.c) ------------------------------ */
 typedef struct {
@@ -120,13 +139,13 @@ typedef struct {
 /* Fixed-order (blocked) reductions: bitwise independent of nthreads.
  * scratch: pl_srd_observe_scratch(n) doubles. */
 size_t pl_srd_observe_scratch(size_t n);
-void pl_srd_observe(const pl_fluid_t *fluid, double *scratch, pl_fluid_obs_t *obs);
+void pl_srd_observe(const pl_fluid_t *fluid, double *scratch, pl_fluid_obs_t *obs, int nthreads);
 
 /* Accumulates density and momentum on the unshifted cell grid in 64-bit
  * fixed point (integer sums are order independent: deterministic for any
  * thread count).  acc: 4 x ncells_unshifted int64 (count, px, py, pz). */
 enum { PL_FIELD_FIXED_SHIFT = 32 };
-void pl_srd_fields_accumulate(const pl_fluid_t *fluid, const int L[3], int64_t *acc);
+void pl_srd_fields_accumulate(const pl_fluid_t *fluid, const int L[3], int64_t *acc, int nthreads);
 
 /* ---- fluid guard scan (kernels/srd_guard.c) --------------------------- */
 /* Lowest index i with a position outside [0, L_d] on some axis d (NaN and

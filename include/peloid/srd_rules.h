@@ -8,8 +8,8 @@
 #include <math.h>
 
 #include "peloid/grid.h"
+#include "peloid/kernel_enums.h" /* PL_RULE_*, PL_WALLS_* */
 #include "peloid/rng.h"
-#include "peloid/scene.h"
 
 /* Rotation matrix of one cell's collision, from the caller's counter-based
  * stream (seed, purpose, step, cell) (draw 0, and draw 1, 2, ... only when
