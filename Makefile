@@ -29,10 +29,11 @@ TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 BENCH_SRC:= $(wildcard bench/*.c)
 BENCH_BIN:= $(patsubst bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
 
-# Debian packages the build, the tests and the tools need.
+# Debian packages the build, the tests and the tools need (python3-mdanalysis,
+# python3-ase and paraview: tests/readers.sh opens the outputs with them).
 DEB_PKGS := libgsl-dev libhwloc-dev librandom123-dev libhdf5-dev libconfig-dev libjansson-dev \
             libcriterion-dev pkg-config hwloc python3-numpy python3-h5py \
-            python3-matplotlib python3-scipy
+            python3-matplotlib python3-scipy python3-mdanalysis python3-ase paraview
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: all deps run check check-unit check-cli check-asan validate bench clean keys readme
@@ -111,6 +112,7 @@ check-cli: $(BIN)
 	@bash tests/cli.sh ./$(BIN)
 	@bash tests/restart_guard.sh ./$(BIN)
 	@bash tests/full_disk.sh ./$(BIN)
+	@bash tests/readers.sh ./$(BIN)
 
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
 # shrinks the physics runs; the sanitizers slow code ~3-10x), and the

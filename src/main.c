@@ -75,7 +75,7 @@ static int parse_ll(const char *s, long long lo, long long hi, long long *out)
 static int cmd_run(int argc, char **argv)
 {
     pl_run_opts_t o = {.out_dir = NULL, .steps = -1, .threads = 0, .restart = NULL, .force = 0,
-                       .progress = isatty(2), .restart_changed = NULL};
+                       .progress = isatty(2), .log = stderr, .restart_changed = NULL};
     unsigned flags = 0;
     const char *scene_path = NULL;
     char msg[256];

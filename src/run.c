@@ -15,6 +15,7 @@
 #include "peloid/coupling.h"
 #include "peloid/io.h"
 #include "peloid/mapping.h"
+#include "peloid/progress.h"
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"
 
@@ -114,16 +115,6 @@ static int thermo_row(writer_t *w, const pl_sim_t *sim, pl_err_t *err)
         return pl_err_set(err, PL_ERR_IO, "%s: writing the row of step %lld failed: %s", w->thermo_path, sim->step,
                           errno ? strerror(errno) : "stream error");
     return 0;
-}
-
-static void progress(const pl_sim_t *sim, long long first, long long last, double t0)
-{
-    double el = omp_get_wtime() - t0, done = (double)(sim->step - first), todo = (double)(last - first);
-    double eta = done > 0 ? el * (todo - done) / done : 0.0;
-    double rate = el > 0 ? done * (double)sim->fluid.n / el / 1e6 : 0.0;
-    fprintf(stderr, "\r  step %lld/%lld  %5.1f%%  ETA %6.1f s  %8.2f Mupdates/s ", sim->step, last,
-            todo > 0 ? 100.0 * done / todo : 100.0, eta, rate);
-    fflush(stderr);
 }
 
 /* The part of summary.json known before the run (build info, scene, derived
@@ -240,35 +231,33 @@ static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *e
     return pl_file_commit(f, tmp, path, err);
 }
 
-static int loop(pl_sim_t *sim, writer_t *w, const pl_run_opts_t *o, long long last, pl_err_t *err)
+static int loop(pl_sim_t *sim, writer_t *w, pl_progress_t *pg, long long last, pl_err_t *err)
 {
     const pl_scene_t *sc = &sim->scene;
     long long first = sim->step;
     w->t_start = w->t_last_row = omp_get_wtime();
     w->step_last_row = first;
-    double t_progress = w->t_start;
     int rc = 0;
     if ((first == 0 || first % sc->output.thermo_interval == 0) && (rc = thermo_row(w, sim, err))) return rc;
     while (sim->step < last) {
+        /* the last good colloid frame, for a guard stop inside this step */
+        if (sim->colloid_traj)
+            pl_colloid_traj_hold(sim->colloid_traj, sim->colloids, sim->step, (double)sim->step * sc->srd.dt);
         rc = pl_sim_step(sim, err);
+        if (rc == PL_ERR_GUARD && sim->colloid_traj) pl_colloid_traj_write_held(sim->colloid_traj, sim->colloids, NULL);
         if (rc) return rc;
         const int row = sim->step % sc->output.thermo_interval == 0 || sim->step == last;
         const int ckpt = sc->output.checkpoint_interval > 0 && sim->step % sc->output.checkpoint_interval == 0;
         /* the guard's particle scan before anything is written (the stage
          * scanned this state already on multiples of its interval) */
         if ((row || ckpt) && sim->fluid.n > 0 && sim->step % PL_FLUID_GUARD_SCAN_INTERVAL != 0 &&
-            (rc = pl_fluid_guard_check(sim, sim->step, 1, err)))
+            (rc = pl_fluid_guard_check(sim, sim->step, 1, err))) {
+            if (sim->colloid_traj) pl_colloid_traj_write_held(sim->colloid_traj, sim->colloids, NULL);
             return rc;
+        }
         if (row && (rc = thermo_row(w, sim, err))) return rc;
         if (ckpt && (rc = write_checkpoint(w, sim, err))) return rc;
-        if (o->progress && omp_get_wtime() - t_progress > 0.25) {
-            progress(sim, first, last, w->t_start);
-            t_progress = omp_get_wtime();
-        }
-    }
-    if (o->progress) {
-        progress(sim, first, last, w->t_start);
-        fputc('\n', stderr);
+        pl_progress_update(pg, sim->step);
     }
     return 0;
 }
@@ -277,6 +266,8 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
 {
     pl_sim_t *sim = NULL;
     json_t *summary = NULL;
+    pl_progress_t *pg = NULL;
+    int traj_written = 0;
     writer_t w;
     memset(&w, 0, sizeof w);
     int rc = pl_sim_create(scene, o->threads, &sim, err);
@@ -333,8 +324,15 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     thermo_header(w.thermo, scene->mapping.enabled, sim->fluid.tracked, noslip_walls(sim), noslip_side_walls(sim),
                   sim->colloids != NULL, reflecting(sim), sim->coupling && sim->coupling->pinned);
     if (sim->colloids && scene->colloids.trajectory_interval > 0) {
+        const pl_mapping_t *m = &scene->mapping.map;
+        char xyz[PATH_MAX];
         pl_path_join(path, sizeof path, w.dir, "colloids.h5");
-        if ((rc = pl_colloid_traj_open(path, sim->colloids, 1, &sim->colloid_traj, err))) goto done;
+        pl_path_join(xyz, sizeof xyz, w.dir, "colloids.xyz");
+        pl_colloid_traj_params_t tp = {.a0_m = scene->mapping.enabled ? m->a0 : 0.0,
+                                       .t0_s = scene->mapping.enabled ? m->t0 : 0.0,
+                                       .m_f_kg = scene->mapping.enabled ? m->m_f : 0.0,
+                                       .xyz_path = scene->output.colloids_xyz ? xyz : NULL, .overwrite = 1};
+        if ((rc = pl_colloid_traj_open(path, sim->colloids, &tp, &sim->colloid_traj, err))) goto done;
     }
     fprintf(stderr, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/\n",
             scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
@@ -355,8 +353,14 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                 d->phi_match, d->d_match, d->phi_sigma,
                 d->table_n ? "; compensated by depletion_comp" : "");
     }
+    pl_progress_params_t pp = {.out = o->log, .terminal = o->progress, .interval_s = scene->output.progress_s,
+                               .first = first, .last = last, .dt = scene->srd.dt,
+                               .t0_s = scene->mapping.enabled ? scene->mapping.map.t0 : 0.0,
+                               .fluid_n = (double)sim->fluid.n,
+                               .md_per_step = sim->colloids ? (double)scene->colloids.substeps : 0.0};
+    pg = pl_progress_create(&pp);
     double t0 = omp_get_wtime();
-    rc = loop(sim, &w, o, last, err);
+    rc = loop(sim, &w, pg, last, err);
     double wall = omp_get_wtime() - t0;
     errno = 0;
     int thermo_bad = fflush(w.thermo) != 0 || fsync(fileno(w.thermo)) != 0;
@@ -369,21 +373,35 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                         strerror(thermo_errno ? thermo_errno : errno));
         goto done;
     }
-    if (sim->colloid_traj) {
-        rc = pl_colloid_traj_close(sim->colloid_traj, err);
+    if (sim->colloid_traj) { /* the final state is always the last frame */
+        rc = pl_colloid_traj_write(sim->colloid_traj, sim->colloids, sim->step, (double)sim->step * scene->srd.dt,
+                                   err);
+        if (!rc) rc = pl_colloid_traj_close(sim->colloid_traj, err);
+        else pl_colloid_traj_close(sim->colloid_traj, NULL);
+        traj_written = 1;
         sim->colloid_traj = NULL;
         if (rc) goto done;
     }
     if ((rc = write_checkpoint(&w, sim, err))) goto done;
-    if (sim->field_acc) {
+    if (sim->field_acc && sim->field_samples == 0) {
+        pl_progress_note(pg, "no field sample was taken (output.fields_start = %lld, last step %lld): "
+                             "fields.h5 not written", scene->output.fields_start, sim->step);
+    } else if (sim->field_acc) {
         pl_path_join(path, sizeof path, w.dir, "fields.h5");
         if ((rc = pl_fields_write(sim, path, err))) goto done;
     }
     rc = write_summary(&w, summary, sim, first, wall, err);
-    if (!rc)
-        fprintf(stderr, "peloid: done in %.3g s, %.4g Mupdates/s\n", wall,
-                wall > 0 ? (double)(last - first) * (double)sim->fluid.n / wall / 1e6 : 0.0);
+    if (!rc) {
+        static const char *const names[] = {"scene.cfg", "thermo.tsv", "colloids.h5", "colloids.xyz",
+                                            "fields.h5", "fields.xdmf", "checkpoint.h5", "summary.json"};
+        const int wrote[] = {1, 1, traj_written, traj_written && scene->output.colloids_xyz,
+                             sim->field_acc && sim->field_samples > 0, sim->field_acc && sim->field_samples > 0, 1, 1};
+        for (size_t k = 0; k < sizeof names / sizeof *names; ++k)
+            if (wrote[k]) pl_progress_file(pg, w.dir, names[k]);
+        pl_progress_finish(pg, sim->step);
+    }
 done:
+    pl_progress_free(pg);
     if (w.thermo) fclose(w.thermo);
     json_decref(summary);
     pl_sim_free(sim);

@@ -14,7 +14,8 @@ typedef struct {
     int threads;             /* <= 0: OpenMP default */
     const char *restart;     /* checkpoint to continue from, or NULL */
     int force;               /* write into an existing output directory */
-    int progress;            /* progress line on stderr */
+    int progress;            /* log is a terminal: one updating progress line */
+    FILE *log;               /* progress and notes (the driver's stderr), or NULL */
     const char *restart_changed; /* --restart-changed: comma-separated scene keys
                                   * allowed to differ from the checkpoint's, or NULL */
 } pl_run_opts_t;
