@@ -63,7 +63,7 @@ static void line(pl_progress_t *g, long long step, double now)
         snprintf(rates + k, sizeof rates - (size_t)k, "  %.3g MD steps/s", rate * p->md_per_step);
     fprintf(p->out, "%s%sstep %lld/%lld %5.1f%%  t = %.6g t0%s  ETA %s%s%s", p->terminal ? "\r" : "",
             p->terminal ? "  " : "peloid: ", step, p->last, todo > 0 ? 100.0 * done / todo : 100.0, t, tsim, eta,
-            rates, p->terminal ? "   " : "\n");
+            rates, p->terminal ? "\033[K" : "\n");
     fflush(p->out);
     g->line_open = p->terminal;
     g->t_last_line = now;

@@ -334,19 +334,21 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                                        .xyz_path = scene->output.colloids_xyz ? xyz : NULL, .overwrite = 1};
         if ((rc = pl_colloid_traj_open(path, sim->colloids, &tp, &sim->colloid_traj, err))) goto done;
     }
-    fprintf(stderr, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/\n",
-            scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
-    if (sim->colloids && (sim->colloids->pair.terms & PL_CT_DLVO)) {
+    FILE *log = o->log; /* the driver's stream; NULL: quiet */
+    if (log)
+        fprintf(log, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/\n",
+                scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
+    if (log && sim->colloids && (sim->colloids->pair.terms & PL_CT_DLVO)) {
         const pl_colloid_dlvo_info_t *d = &sim->colloids->dlvo;
-        fprintf(stderr, "peloid: DLVO: primary minimum matched at gap %.4g a0 (curvature %.4g kT/a0^2); "
+        fprintf(log, "peloid: DLVO: primary minimum matched at gap %.4g a0 (curvature %.4g kT/a0^2); "
                         "barrier %.4g kT at %.4g a0; secondary minimum %.4g kT at %.4g a0; cut-off gap "
                         "%.4g a0, truncation error |V| = %.3g kT, |F| = %.3g kT/a0\n",
                 d->hm, d->curvature, d->barrier_u, d->barrier_h, d->secmin_u, d->secmin_h, d->hcut,
                 d->trunc_u, d->trunc_f);
     }
-    if (sim->colloids && (sim->colloids->pair.terms & (PL_CT_WCA | PL_CT_DEPL))) {
+    if (log && sim->colloids && (sim->colloids->pair.terms & (PL_CT_WCA | PL_CT_DEPL))) {
         const pl_colloid_depl_info_t *d = &sim->colloids->depl;
-        fprintf(stderr, "peloid: colloid-colloid sigma_cc = %.6g a0 (%s); phi_cc = %.4g kT at twice the "
+        fprintf(log, "peloid: colloid-colloid sigma_cc = %.6g a0 (%s); phi_cc = %.4g kT at twice the "
                         "colloid-fluid cut-off %.6g a0; depletion potential at sigma_cc %.4g kT "
                         "(PL Eqs. 22-23)%s\n",
                 d->sigma_cc, d->rule == PL_SIGMA_PL ? "wca.sigma_rule = pl, PL Sec. III.C.1" : "wca.sigma",
