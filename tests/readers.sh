@@ -76,7 +76,7 @@ for k, ts in enumerate(tr):
     assert abs(ts.time - t[k]) <= 1e-12 * t[-1]
 r = InterRDF(u.atoms, u.atoms, nbins=20, range=(1000.0, 30000.0), exclusion_block=(1, 1)).run()
 assert np.isfinite(r.results.rdf).all() and r.results.rdf.max() > 0
-print("    quickstart g(r), 1..30 um in 20 bins:", np.round(r.results.rdf, 2))
+print("    quickstart g(r), 0.1..3 um in 20 bins:", np.round(r.results.rdf, 2))
 PYEOF
 
 # ideal gas of colloids (no pair terms, no fluid), model units
