@@ -57,6 +57,14 @@ static int reflecting(const pl_sim_t *sim)
     return sim->coupling && sim->coupling->method == PL_COUPLE_HECHT1;
 }
 
+/* The plan moves colloids by MD (not pinned): MD steps/s is worth showing. */
+static int colloid_md_moves(const pl_sim_t *sim)
+{
+    for (int k = 0; k < sim->nstages; ++k)
+        if (!strcmp(sim->stages[k].name, "colloid-md") || !strcmp(sim->stages[k].name, "potential-md")) return 1;
+    return 0;
+}
+
 /* Appends one row and flushes it: PL_ERR_IO naming the file and the system
  * error when the row did not reach the file (a full disk must not lose rows
  * silently). */
@@ -191,6 +199,8 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
     pl_json_int(&b, doc, "last_step", sim->step);
     pl_json_real(&b, doc, "wall_seconds", wall);
     pl_json_real(&b, doc, "particle_updates_per_second", wall > 0 ? updates / wall : 0.0);
+    if (sim->field_acc) /* 0: no sample was taken, no fields.h5 */
+        pl_json_int(&b, doc, "field_samples", sim->field_samples);
     json_t *st = json_object();
     b.prefix = "stage_seconds";
     for (int k = 0; k < sim->nstages; ++k) pl_json_real(&b, st, sim->stages[k].name, sim->stages[k].seconds);
@@ -359,7 +369,7 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                                .first = first, .last = last, .dt = scene->srd.dt,
                                .t0_s = scene->mapping.enabled ? scene->mapping.map.t0 : 0.0,
                                .fluid_n = (double)sim->fluid.n,
-                               .md_per_step = sim->colloids ? (double)scene->colloids.substeps : 0.0};
+                               .md_per_step = colloid_md_moves(sim) ? (double)scene->colloids.substeps : 0.0};
     pg = pl_progress_create(&pp);
     double t0 = omp_get_wtime();
     rc = loop(sim, &w, pg, last, err);

@@ -177,7 +177,8 @@ fi
 
 "$PELOID" run q.cfg --out nofields --steps 0 2> nofields.log; rc=$?
 [ $rc -eq 0 ] && [ ! -e nofields/fields.h5 ] && [ ! -e nofields/fields.xdmf ] && grep -q "no field sample was taken" nofields.log \
-  && ok "a run without a field sample writes no fields file and says so: $(grep 'no field' nofields.log | cut -c1-100)" \
+  && grep -q '"field_samples": 0' nofields/summary.json \
+  && ok "a run without a field sample writes no fields file, says so and reports field_samples = 0: $(grep 'no field' nofields.log | cut -c1-100)" \
   || bad "no-sample run (rc=$rc): $(cat nofields.log)"
 
 $PY - <<'PYEOF' && ok "ASE reads colloids.xyz: 5 frames, positions, radius, velocities, cell, pbc, time = colloids.h5" || bad "ASE on colloids.xyz"
