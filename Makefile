@@ -119,7 +119,7 @@ check-cli: $(BIN)
 # sanitizer CLI on the adversarial scene set (tests/bad_scenes).
 ASAN_TESTS := test_scene test_collide test_sort test_determinism test_colloid_forces \
               test_colloid_guards test_colloid_md test_colloid_restart test_capillary \
-              test_coupling_restart test_coupling_system test_fluid_guard
+              test_coupling_restart test_coupling_system test_fluid_guard test_progress
 check-asan: | deps
 	@$(MAKE) --no-print-directory BUILD=build-asan \
 	  OPTFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
