@@ -158,7 +158,7 @@ static int write_header(pl_colloid_traj_t *t, const pl_colloid_t *c)
     snprintf(vunit, sizeof vunit, "%s %s-1", t->len_unit, t->time_unit);
     snprintf(wunit, sizeof wunit, "%s-1", t->time_unit);
     const int phys = strcmp(t->len_unit, "a0") != 0;
-    int bad = pl_h5_h5md_header(t->file, phys ? "SI" : NULL);
+    int bad = pl_h5_h5md_header(t->file) || (phys && pl_h5_h5md_units(t->file, "SI"));
     hid_t parts = pl_h5_group(t->file, "particles");
     hid_t col = parts >= 0 ? pl_h5_group(parts, "colloids") : -1;
     hid_t box = col >= 0 ? pl_h5_group(col, "box") : -1;

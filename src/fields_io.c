@@ -125,7 +125,7 @@ int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
         free(vel);
         return pl_err_set(err, PL_ERR_IO, "%s: cannot create HDF5 file: %s", tmp, why);
     }
-    int bad = pl_h5_h5md_header(f, NULL);
+    int bad = pl_h5_h5md_header(f);
     hid_t obs = pl_h5_group(f, "observables");
     double time = (double)sim->step * sc->srd.dt;
     if (obs >= 0) {

@@ -64,7 +64,7 @@ int pl_h5_write(hid_t parent, const char *name, hid_t type, int rank, const hsiz
     return st < 0 ? -1 : 0;
 }
 
-int pl_h5_h5md_header(hid_t file, const char *unit_system)
+int pl_h5_h5md_header(hid_t file)
 {
     hid_t h5md = pl_h5_group(file, "h5md");
     if (h5md < 0) return -1;
@@ -81,20 +81,26 @@ int pl_h5_h5md_header(hid_t file, const char *unit_system)
     g = pl_h5_group(h5md, "creator");
     bad |= g < 0 || pl_h5_attr_str(g, "name", "peloid") || pl_h5_attr_str(g, "version", PL_GIT_REV);
     if (g >= 0) H5Gclose(g);
-    if (unit_system) { /* units module 1.0: dimensionful elements carry `unit` */
-        hid_t mods = pl_h5_group(h5md, "modules");
-        g = mods >= 0 ? pl_h5_group(mods, "units") : -1;
-        int uv[2] = {1, 0};
-        sp = H5Screate_simple(1, &two, NULL);
-        a = g >= 0 ? H5Acreate2(g, "version", H5T_NATIVE_INT, sp, H5P_DEFAULT, H5P_DEFAULT) : -1;
-        bad |= a < 0 || H5Awrite(a, H5T_NATIVE_INT, uv) < 0;
-        if (a >= 0 && H5Aclose(a) < 0) bad = 1;
-        H5Sclose(sp);
-        bad |= g < 0 || pl_h5_attr_str(g, "system", unit_system);
-        if (g >= 0) H5Gclose(g);
-        if (mods >= 0) H5Gclose(mods);
-    }
     if (H5Gclose(h5md) < 0) bad = 1;
+    return bad ? -1 : 0;
+}
+
+int pl_h5_h5md_units(hid_t file, const char *system)
+{
+    /* H5MD units module 1.0: /h5md/modules/units {version, system} */
+    hid_t mods = H5Lexists(file, "h5md/modules", H5P_DEFAULT) > 0 ? H5Gopen2(file, "h5md/modules", H5P_DEFAULT)
+                                                                    : pl_h5_group(file, "h5md/modules");
+    hid_t g = mods >= 0 ? pl_h5_group(mods, "units") : -1;
+    int uv[2] = {1, 0}, bad = g < 0;
+    hsize_t two = 2;
+    hid_t sp = H5Screate_simple(1, &two, NULL);
+    hid_t a = g >= 0 ? H5Acreate2(g, "version", H5T_NATIVE_INT, sp, H5P_DEFAULT, H5P_DEFAULT) : -1;
+    bad |= a < 0 || H5Awrite(a, H5T_NATIVE_INT, uv) < 0;
+    if (a >= 0 && H5Aclose(a) < 0) bad = 1;
+    H5Sclose(sp);
+    bad |= g < 0 || pl_h5_attr_str(g, "system", system);
+    if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+    if (mods >= 0 && H5Gclose(mods) < 0) bad = 1;
     return bad ? -1 : 0;
 }
 

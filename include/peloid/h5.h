@@ -31,9 +31,10 @@ void pl_h5_init_process(void);
  * device") when there is one, else the innermost HDF5 description, else
  * strerror(errno).  Call right after the failing HDF5 call. */
 void pl_h5_error_text(char *buf, size_t n);
-/* The H5MD 1.1 header group /h5md (version, author, creator) and, unless
- * unit_system is NULL, the units module /h5md/modules/units (version 1.0,
- * system = unit_system); 0 or -1. */
-int pl_h5_h5md_header(hid_t file, const char *unit_system);
+/* The H5MD 1.1 header group /h5md (version, author, creator); 0 or -1. */
+int pl_h5_h5md_header(hid_t file);
+/* The H5MD units module /h5md/modules/units (version 1.0, system: "SI"),
+ * after pl_h5_h5md_header; 0 or -1. */
+int pl_h5_h5md_units(hid_t file, const char *system);
 
 #endif
