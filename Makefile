@@ -27,10 +27,11 @@ TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 BENCH_SRC:= $(wildcard bench/*.c)
 BENCH_BIN:= $(patsubst bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
 
-# Debian packages the build, the tests and the tools need.
+# Debian packages the build, the tests and the tools need (python3-mdanalysis,
+# python3-ase and paraview: tests/readers.sh opens the outputs with them).
 DEB_PKGS := libgsl-dev libhwloc-dev librandom123-dev libhdf5-dev libconfig-dev libjansson-dev \
             libcriterion-dev pkg-config hwloc python3-numpy python3-h5py \
-            python3-matplotlib python3-scipy
+            python3-matplotlib python3-scipy python3-mdanalysis python3-ase paraview
 # ... and the build variants CI also checks (clang with its OpenMP runtime).
 DEB_PKGS_VARIANTS := clang libomp-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
@@ -134,13 +135,14 @@ check-cli: $(BIN)
 	@bash tests/full_disk.sh ./$(BIN)
 	@bash tests/regression.sh ./$(BIN)
 	@bash tests/observers.sh ./$(BIN)
+	@bash tests/readers.sh ./$(BIN)
 
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
 # shrinks the physics runs; the sanitizers slow code ~3-10x), and the
 # sanitizer CLI on the adversarial scene set (tests/bad_scenes).
 ASAN_TESTS := test_scene test_collide test_sort test_determinism test_colloid_forces \
               test_colloid_guards test_colloid_md test_colloid_restart test_capillary \
-              test_coupling_restart test_coupling_system test_fluid_guard \
+              test_coupling_restart test_coupling_system test_fluid_guard test_progress \
               test_blocking test_mtau test_rdf test_cluster test_vdist
 check-asan: | deps
 	@$(MAKE) --no-print-directory BUILD=build-asan \

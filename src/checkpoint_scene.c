@@ -25,6 +25,8 @@ static const char *const not_physics[] = {
     "output.checkpoint_interval",
     "output.fields_interval",
     "output.fields_start",
+    "output.colloids_xyz",
+    "output.progress_s",
     "colloids.trajectory_interval",
     "colloids.max_overlap",
     "colloids.min_contact_steps",

@@ -1,12 +1,24 @@
-/* Time-averaged fluid fields on the (unshifted) cell grid, written in H5MD
- * layout where it applies: /h5md metadata (version, author, creator), and
- * /observables/fluid_density/value [Lz][Ly][Lx] (particles per cell) and
- * /observables/fluid_velocity/value [Lz][Ly][Lx][3] (mass-weighted mean
- * velocity; 0 where a cell was always empty), each with step and time.
- * Attributes boundary_x/y/z name each axis' boundary (periodic, or noslip /
- * slip walls at 0 and L: Hecht Sec. VIII.A, a capillary with walls_xy). */
+/* Time-averaged fluid fields on the (unshifted) cell grid, as H5MD 1.1
+ * time-dependent elements, and an XDMF sidecar so that ParaView / VisIt open
+ * them:
+ *   /h5md                 version, author, creator, modules/units
+ *   /observables/fluid_density   value[T][Lz][Ly][Lx]    (particles / a0^3)
+ *   /observables/fluid_velocity  value[T][Lz][Ly][Lx][3] (a0 / t0; mass-weighted
+ *        mean velocity, 0 where a cell was always empty)
+ *   each with step[T], time[T] (t0) and the grid as attributes: origin and
+ *   spacing [x, y, z] in a0 of the cell corners, the values at cell centres;
+ *   /observables attributes boundary_x/y/z (periodic, or noslip / slip walls
+ *   at 0 and L: Hecht Sec. VIII.A), samples, average_start.
+ * One frame (T = 1): the average over the run, stamped with its last step.
+ * Model units throughout, stated in `model_unit` attributes (as in a model
+ * colloids.h5; a physical scene adds a0_m and t0_s to /observables).
+ * The XDMF file (fields.xdmf, next to fields.h5) describes a 3DCoRectMesh of
+ * (Lz+1) x (Ly+1) x (Lx+1) nodes with cell-centred attributes read from
+ * fields.h5 by hyperslab, one grid per frame in a temporal collection.
+ * Both are written to PATH.tmp and renamed. */
 #include <errno.h>
 #include <hdf5.h>
+#include <libgen.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -18,15 +30,68 @@
 #include "peloid/io.h"
 
 static int observable(hid_t obs, const char *name, int rank, const hsize_t *dims, const double *d,
-                      long long step, double time)
+                      long long step, double time, const char *unit)
 {
     hid_t g = pl_h5_group(obs, name);
     if (g < 0) return -1;
+    hsize_t one = 1;
     int bad = pl_h5_write(g, "value", H5T_NATIVE_DOUBLE, rank, dims, d);
-    bad |= pl_h5_write(g, "step", H5T_NATIVE_LLONG, 0, NULL, &step);
-    bad |= pl_h5_write(g, "time", H5T_NATIVE_DOUBLE, 0, NULL, &time);
+    bad |= pl_h5_write(g, "step", H5T_NATIVE_LLONG, 1, &one, &step);
+    bad |= pl_h5_write(g, "time", H5T_NATIVE_DOUBLE, 1, &one, &time);
+    const double origin[3] = {0.0, 0.0, 0.0}, spacing[3] = {1.0, 1.0, 1.0};
+    bad |= pl_h5_attr_doubles(g, "origin", origin, 3) || pl_h5_attr_doubles(g, "spacing", spacing, 3);
+    bad |= pl_h5_attr_vlstr(g, "grid_unit", "a0");
+    hid_t v = H5Dopen2(g, "value", H5P_DEFAULT), t = H5Dopen2(g, "time", H5P_DEFAULT);
+    bad |= v < 0 || t < 0 || pl_h5_attr_vlstr(v, "model_unit", unit) || pl_h5_attr_vlstr(t, "model_unit", "t0");
+    if (v >= 0 && H5Dclose(v) < 0) bad = 1;
+    if (t >= 0 && H5Dclose(t) < 0) bad = 1;
     if (H5Gclose(g) < 0) bad = 1;
     return bad ? -1 : 0;
+}
+
+/* fields.xdmf beside fields.h5 (its name relative, so the pair can move) */
+static int write_xdmf(const char *h5path, const int *L, long long step, double time, pl_err_t *err)
+{
+    char xpath[PATH_MAX], tmp[PATH_MAX + 8], base[PATH_MAX];
+    snprintf(xpath, sizeof xpath, "%s", h5path);
+    char *dot = strrchr(xpath, '.');
+    if (dot) *dot = '\0';
+    strncat(xpath, ".xdmf", sizeof xpath - strlen(xpath) - 1);
+    snprintf(base, sizeof base, "%s", h5path);
+    const char *h5name = basename(base);
+    FILE *f = pl_file_begin(xpath, tmp, sizeof tmp, err);
+    if (!f) return PL_ERR_IO;
+    static const char *const names[2] = {"fluid_density", "fluid_velocity"};
+    fprintf(f, "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n"
+               " <Domain>\n  <Grid Name=\"fields\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
+    fprintf(f, "   <Grid Name=\"step %lld\" GridType=\"Uniform\">\n    <Time Value=\"%.17g\"/>\n", step, time);
+    fprintf(f, "    <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"%d %d %d\"/>\n", L[2] + 1, L[1] + 1,
+            L[0] + 1);
+    fprintf(f, "    <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
+               "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">0 0 0</DataItem>\n"
+               "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">1 1 1</DataItem>\n"
+               "    </Geometry>\n");
+    for (int k = 0; k < 2; ++k) {
+        const char *w = k ? " 3" : "", *s = k ? " 0" : "", *one = k ? " 1" : "";
+        fprintf(f, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Cell\">\n", names[k],
+                k ? "Vector" : "Scalar");
+        fprintf(f, "     <DataItem ItemType=\"HyperSlab\" Dimensions=\"%d %d %d%s\" Type=\"HyperSlab\">\n", L[2],
+                L[1], L[0], w);
+        fprintf(f, "      <DataItem Dimensions=\"3 %d\" Format=\"XML\">0 0 0 0%s 1 1 1 1%s 1 %d %d %d%s</DataItem>\n",
+                k ? 5 : 4, s, one, L[2], L[1], L[0], w);
+        fprintf(f, "      <DataItem Dimensions=\"1 %d %d %d%s\" NumberType=\"Float\" Precision=\"8\" "
+                   "Format=\"HDF\">%s:/observables/%s/value</DataItem>\n", L[2], L[1], L[0], w, h5name, names[k]);
+        fprintf(f, "     </DataItem>\n    </Attribute>\n");
+    }
+    fprintf(f, "   </Grid>\n  </Grid>\n </Domain>\n</Xdmf>\n");
+    errno = 0;
+    if (fflush(f) || ferror(f)) {
+        int e = errno;
+        fclose(f);
+        unlink(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: write failed: %s", tmp, e ? strerror(e) : "stream error");
+    }
+    return pl_file_commit(f, tmp, xpath, err);
 }
 
 int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
@@ -62,18 +127,22 @@ int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
     }
     int bad = pl_h5_h5md_header(f);
     hid_t obs = pl_h5_group(f, "observables");
+    double time = (double)sim->step * sc->srd.dt;
     if (obs >= 0) {
-        bad |= pl_h5_attr_str(obs, "layout", "value[z][y][x] on the unshifted cell grid, cell size a0 = 1");
+        bad |= pl_h5_attr_str(obs, "layout", "value[time][z][y][x] on the unshifted cell grid, cell size a0 = 1");
         int walls[3];
         pl_scene_box_walls(&sc->box, walls);
         static const char *const bname[3] = {"boundary_x", "boundary_y", "boundary_z"};
         for (int d = 0; d < 3; ++d) bad |= pl_h5_attr_str(obs, bname[d], pl_scene_boundary_name(walls[d]));
-        hsize_t dims[4] = {(hsize_t)L[2], (hsize_t)L[1], (hsize_t)L[0], 3};
-        double time = (double)sim->step * sc->srd.dt;
-        bad |= observable(obs, "fluid_density", 3, dims, rho, sim->step, time);
-        bad |= observable(obs, "fluid_velocity", 4, dims, vel, sim->step, time);
-        long long samples = sim->field_samples;
+        hsize_t dims[5] = {1, (hsize_t)L[2], (hsize_t)L[1], (hsize_t)L[0], 3};
+        bad |= observable(obs, "fluid_density", 4, dims, rho, sim->step, time, "a0-3");
+        bad |= observable(obs, "fluid_velocity", 5, dims, vel, sim->step, time, "a0 t0-1");
+        if (sc->mapping.enabled)
+            bad |= pl_h5_attr_doubles(obs, "a0_m", &sc->mapping.map.a0, 1) ||
+                   pl_h5_attr_doubles(obs, "t0_s", &sc->mapping.map.t0, 1);
+        long long samples = sim->field_samples, start = sc->output.fields_start;
         bad |= pl_h5_write(obs, "samples", H5T_NATIVE_LLONG, 0, NULL, &samples);
+        bad |= pl_h5_write(obs, "average_start", H5T_NATIVE_LLONG, 0, NULL, &start);
         if (H5Gclose(obs) < 0) bad = 1;
     } else {
         bad = 1;
@@ -94,5 +163,5 @@ int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
         unlink(tmp);
         return pl_err_set(err, PL_ERR_IO, "%s: cannot commit to %s: %s", tmp, path, strerror(e));
     }
-    return 0;
+    return write_xdmf(path, L, sim->step, time, err);
 }

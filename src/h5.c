@@ -28,6 +28,30 @@ int pl_h5_attr_str(hid_t obj, const char *name, const char *value)
     return st < 0 ? -1 : 0;
 }
 
+int pl_h5_attr_vlstr(hid_t obj, const char *name, const char *value)
+{
+    hid_t t = H5Tcopy(H5T_C_S1);
+    H5Tset_size(t, H5T_VARIABLE);
+    H5Tset_cset(t, H5T_CSET_UTF8);
+    hid_t sp = H5Screate(H5S_SCALAR);
+    hid_t a = H5Acreate2(obj, name, t, sp, H5P_DEFAULT, H5P_DEFAULT);
+    herr_t st = a >= 0 ? H5Awrite(a, t, &value) : -1;
+    if (a >= 0 && H5Aclose(a) < 0) st = -1;
+    H5Sclose(sp);
+    H5Tclose(t);
+    return st < 0 ? -1 : 0;
+}
+
+int pl_h5_attr_doubles(hid_t obj, const char *name, const double *v, hsize_t n)
+{
+    hid_t sp = n > 1 ? H5Screate_simple(1, &n, NULL) : H5Screate(H5S_SCALAR);
+    hid_t a = H5Acreate2(obj, name, H5T_NATIVE_DOUBLE, sp, H5P_DEFAULT, H5P_DEFAULT);
+    herr_t st = a >= 0 ? H5Awrite(a, H5T_NATIVE_DOUBLE, v) : -1;
+    if (a >= 0 && H5Aclose(a) < 0) st = -1;
+    H5Sclose(sp);
+    return st < 0 ? -1 : 0;
+}
+
 int pl_h5_write(hid_t parent, const char *name, hid_t type, int rank, const hsize_t *dims, const void *data)
 {
     hid_t sp = rank > 0 ? H5Screate_simple(rank, dims, NULL) : H5Screate(H5S_SCALAR);
@@ -59,6 +83,25 @@ int pl_h5_h5md_header(hid_t file)
     bad |= g < 0 || pl_h5_attr_str(g, "name", "peloid") || pl_h5_attr_str(g, "version", PL_GIT_REV);
     if (g >= 0) H5Gclose(g);
     if (H5Gclose(h5md) < 0) bad = 1;
+    return bad ? -1 : 0;
+}
+
+int pl_h5_h5md_units(hid_t file, const char *system)
+{
+    /* H5MD units module 1.0: /h5md/modules/units {version, system} */
+    hid_t mods = H5Lexists(file, "h5md/modules", H5P_DEFAULT) > 0 ? H5Gopen2(file, "h5md/modules", H5P_DEFAULT)
+                                                                    : pl_h5_group(file, "h5md/modules");
+    hid_t g = mods >= 0 ? pl_h5_group(mods, "units") : -1;
+    int uv[2] = {1, 0}, bad = g < 0;
+    hsize_t two = 2;
+    hid_t sp = H5Screate_simple(1, &two, NULL);
+    hid_t a = g >= 0 ? H5Acreate2(g, "version", H5T_NATIVE_INT, sp, H5P_DEFAULT, H5P_DEFAULT) : -1;
+    bad |= a < 0 || H5Awrite(a, H5T_NATIVE_INT, uv) < 0;
+    if (a >= 0 && H5Aclose(a) < 0) bad = 1;
+    H5Sclose(sp);
+    bad |= g < 0 || pl_h5_attr_str(g, "system", system);
+    if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+    if (mods >= 0 && H5Gclose(mods) < 0) bad = 1;
     return bad ? -1 : 0;
 }
 

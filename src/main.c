@@ -20,7 +20,8 @@ static const char *const usage =
     "  run SCENE [--out DIR] [--steps N] [--threads N] [--restart CHECKPOINT]\n"
     "            [--restart-changed KEY[,KEY...]] [--force] [--allow-include-anywhere]\n"
     "        run a scene; writes DIR/{thermo.tsv, summary.json, checkpoint.h5, scene.cfg\n"
-    "        [, fields.h5]}.  DIR defaults to out/<scene name>; an existing DIR is\n"
+    "        [, fields.h5 + fields.xdmf] [, colloids.h5 [+ colloids.xyz]]}.  DIR\n"
+    "        defaults to out/<scene name>; an existing DIR is\n"
     "        refused unless --force.  --steps N runs N steps (default: the scene's\n"
     "        steps); --restart continues from a checkpoint of the same scene: every\n"
     "        physics key (all but name, steps, output.*, colloids.trajectory_interval,\n"
@@ -77,31 +78,10 @@ static int parse_ll(const char *s, long long lo, long long hi, long long *out)
     return 0;
 }
 
-/* The run's information lines, on stderr. */
-static void log_line(const char *line, void *user)
-{
-    (void)user;
-    fprintf(stderr, "%s\n", line);
-}
-
-/* One updating progress line on a terminal. */
-static void progress_line(const pl_run_progress_t *p, void *user)
-{
-    (void)user;
-    double done = (double)(p->step - p->first), todo = (double)(p->last - p->first);
-    double eta = done > 0 ? p->elapsed_s * (todo - done) / done : 0.0;
-    double rate = p->elapsed_s > 0 ? p->fluid_updates / p->elapsed_s / 1e6 : 0.0;
-    fprintf(stderr, "\r  step %lld/%lld  %5.1f%%  ETA %6.1f s  %8.2f Mupdates/s ", p->step, p->last,
-            todo > 0 ? 100.0 * done / todo : 100.0, eta, rate);
-    if (p->done) fputc('\n', stderr);
-    fflush(stderr);
-}
-
 static int cmd_run(int argc, char **argv)
 {
     pl_run_opts_t o = {.out_dir = NULL, .steps = -1, .threads = 0, .restart = NULL, .force = 0,
-                       .progress = isatty(2) ? progress_line : NULL, .progress_interval_s = 0.25,
-                       .log = log_line, .user = NULL, .restart_changed = NULL};
+                       .progress = isatty(2), .log = stderr, .restart_changed = NULL};
     unsigned flags = 0;
     const char *scene_path = NULL;
     char msg[256];

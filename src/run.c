@@ -3,7 +3,6 @@
  * validated, the sim built and any restart checkpoint read before the output
  * directory is created. */
 #include <errno.h>
-#include <stdarg.h>
 #include <limits.h>
 #include <math.h>
 #include <omp.h>
@@ -17,6 +16,7 @@
 #include "peloid/io.h"
 #include "peloid/mapping.h"
 #include "peloid/module.h"
+#include "peloid/progress.h"
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"
 #include "peloid/thermo.h"
@@ -30,19 +30,6 @@ typedef struct {
     double t_last_row;
     long long step_last_row;
 } writer_t;
-
-/* One line to the driver's log callback (nothing without one). */
-static void say(const pl_run_opts_t *o, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void say(const pl_run_opts_t *o, const char *fmt, ...)
-{
-    if (!o->log) return;
-    char line[1024];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(line, sizeof line, fmt, ap);
-    va_end(ap);
-    o->log(line, o->user);
-}
 
 /* Writer stage: one thermo.tsv row, flushed.  PL_ERR_IO naming the file and
  * the system error when the row did not reach the file (a full disk must not
@@ -80,16 +67,12 @@ static int stage_checkpoint(pl_sim_t *sim, void *ctx, pl_err_t *err)
     return write_checkpoint(ctx, sim, err);
 }
 
-static void report_progress(const pl_run_opts_t *o, const pl_sim_t *sim, double t0, long long md0, int done)
+/* The plan moves colloids by MD (not pinned): MD steps/s is worth showing. */
+static int colloid_md_moves(const pl_sim_t *sim)
 {
-    const long long first = sim->first_step;
-    pl_run_progress_t p = {.step = sim->step, .first = first, .last = sim->last_step, .done = done};
-    p.elapsed_s = omp_get_wtime() - t0;
-    p.time = (double)sim->step * sim->scene.srd.dt;
-    p.time_s = sim->scene.mapping.enabled ? p.time * sim->scene.mapping.map.t0 : 0.0;
-    p.fluid_updates = (double)(sim->step - first) * (double)sim->fluid.n;
-    p.md_steps = sim->colloids ? (double)(sim->colloids->md_step - md0) : 0.0;
-    o->progress(&p, o->user);
+    for (int k = 0; k < sim->nstages; ++k)
+        if (!strcmp(sim->stages[k].name, "colloid-md") || !strcmp(sim->stages[k].name, "potential-md")) return 1;
+    return 0;
 }
 
 /* The part of summary.json known before the run (build info, scene, derived
@@ -156,6 +139,8 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
     pl_json_int(&b, doc, "last_step", sim->step);
     pl_json_real(&b, doc, "wall_seconds", wall);
     pl_json_real(&b, doc, "particle_updates_per_second", wall > 0 ? updates / wall : 0.0);
+    if (sim->field_acc) /* 0: no sample was taken, no fields.h5 */
+        pl_json_int(&b, doc, "field_samples", sim->field_samples);
     json_t *st = json_object();
     b.prefix = "stage_seconds";
     for (int k = 0; k < sim->nstages; ++k) pl_json_real(&b, st, sim->stages[k].name, sim->stages[k].seconds);
@@ -211,23 +196,23 @@ static int add_writers(pl_sim_t *sim, writer_t *w, pl_err_t *err)
     return rc;
 }
 
-/* Walks the plan from the present step to `last`. */
-static int loop(pl_sim_t *sim, writer_t *w, const pl_run_opts_t *o, long long last, pl_err_t *err)
+/* Walks the plan from the present step to `last` (or to the step the
+ * stopping rule ends it at).  Before each step the colloid trajectory holds
+ * the state, so that a guard stop inside the step writes the last good
+ * frame. */
+static int loop(pl_sim_t *sim, writer_t *w, pl_progress_t *pg, long long last, pl_err_t *err)
 {
-    const double t0 = omp_get_wtime();
-    const long long md0 = sim->colloids ? sim->colloids->md_step : 0;
-    w->t_last_row = t0;
+    const pl_scene_t *sc = &sim->scene;
+    w->t_last_row = omp_get_wtime();
     w->step_last_row = sim->step;
-    double t_progress = t0;
     int rc = pl_sim_begin(sim, last, err);
     while (!rc && sim->step < last && !sim->stop_requested) {
+        if (sim->colloid_traj)
+            pl_colloid_traj_hold(sim->colloid_traj, sim->colloids, sim->step, (double)sim->step * sc->srd.dt);
         rc = pl_sim_step(sim, err);
-        if (o->progress && omp_get_wtime() - t_progress > o->progress_interval_s) {
-            report_progress(o, sim, t0, md0, 0);
-            t_progress = omp_get_wtime();
-        }
+        if (rc == PL_ERR_GUARD && sim->colloid_traj) pl_colloid_traj_write_held(sim->colloid_traj, sim->colloids, NULL);
+        pl_progress_update(pg, sim->step);
     }
-    if (!rc && o->progress) report_progress(o, sim, t0, md0, 1);
     return rc;
 }
 
@@ -235,6 +220,8 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
 {
     pl_sim_t *sim = NULL;
     json_t *summary = NULL;
+    pl_progress_t *pg = NULL;
+    int traj_written = 0;
     writer_t w;
     memset(&w, 0, sizeof w);
     int rc = pl_sim_create(scene, o->threads, &sim, err);
@@ -292,32 +279,47 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     pl_thermo_header(&w.columns, w.thermo);
     if ((rc = add_writers(sim, &w, err))) goto done;
     if (sim->colloids && scene->colloids.trajectory_interval > 0) {
+        const pl_mapping_t *m = &scene->mapping.map;
+        char xyz[PATH_MAX];
         pl_path_join(path, sizeof path, w.dir, "colloids.h5");
-        if ((rc = pl_colloid_traj_open(path, sim->colloids, 1, &sim->colloid_traj, err))) goto done;
+        pl_path_join(xyz, sizeof xyz, w.dir, "colloids.xyz");
+        pl_colloid_traj_params_t tp = {.a0_m = scene->mapping.enabled ? m->a0 : 0.0,
+                                       .t0_s = scene->mapping.enabled ? m->t0 : 0.0,
+                                       .m_f_kg = scene->mapping.enabled ? m->m_f : 0.0,
+                                       .xyz_path = scene->output.colloids_xyz ? xyz : NULL, .overwrite = 1};
+        if ((rc = pl_colloid_traj_open(path, sim->colloids, &tp, &sim->colloid_traj, err))) goto done;
     }
-    say(o, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/",
-            scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
-    if (sim->colloids && (sim->colloids->pair.terms & PL_CT_DLVO)) {
+    FILE *log = o->log; /* the driver's stream; NULL: quiet */
+    if (log)
+        fprintf(log, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/\n",
+                scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
+    if (log && sim->colloids && (sim->colloids->pair.terms & PL_CT_DLVO)) {
         const pl_colloid_dlvo_info_t *d = &sim->colloids->dlvo;
         char bar[64] = "none", sec[64] = "none"; /* NaN: the potential has no barrier / secondary minimum */
         if (isfinite(d->barrier_u)) snprintf(bar, sizeof bar, "%.4g kT at %.4g a0", d->barrier_u, d->barrier_h);
         if (isfinite(d->secmin_u)) snprintf(sec, sizeof sec, "%.4g kT at %.4g a0", d->secmin_u, d->secmin_h);
-        say(o, "peloid: DLVO: primary minimum matched at gap %.4g a0 (curvature %.4g kT/a0^2); "
-               "barrier %s; secondary minimum %s; cut-off gap %.4g a0, truncation error |V| = %.3g kT, "
-               "|F| = %.3g kT/a0",
+        fprintf(log, "peloid: DLVO: primary minimum matched at gap %.4g a0 (curvature %.4g kT/a0^2); "
+                     "barrier %s; secondary minimum %s; cut-off gap %.4g a0, truncation error |V| = %.3g kT, "
+                     "|F| = %.3g kT/a0\n",
                 d->hm, d->curvature, bar, sec, d->hcut, d->trunc_u, d->trunc_f);
     }
-    if (sim->colloids && (sim->colloids->pair.terms & (PL_CT_WCA | PL_CT_DEPL))) {
+    if (log && sim->colloids && (sim->colloids->pair.terms & (PL_CT_WCA | PL_CT_DEPL))) {
         const pl_colloid_depl_info_t *d = &sim->colloids->depl;
-        say(o, "peloid: colloid-colloid sigma_cc = %.6g a0 (%s); phi_cc = %.4g kT at twice the "
+        fprintf(log, "peloid: colloid-colloid sigma_cc = %.6g a0 (%s); phi_cc = %.4g kT at twice the "
                         "colloid-fluid cut-off %.6g a0; depletion potential at sigma_cc %.4g kT "
-                        "(PL Eqs. 22-23)%s",
+                        "(PL Eqs. 22-23)%s\n",
                 d->sigma_cc, d->rule == PL_SIGMA_PL ? "wca.sigma_rule = pl, PL Sec. III.C.1" : "wca.sigma",
                 d->phi_match, d->d_match, d->phi_sigma,
                 d->table_n ? "; compensated by depletion_comp" : "");
     }
+    pl_progress_params_t pp = {.out = o->log, .terminal = o->progress, .interval_s = scene->output.progress_s,
+                               .first = first, .last = last, .dt = scene->srd.dt,
+                               .t0_s = scene->mapping.enabled ? scene->mapping.map.t0 : 0.0,
+                               .fluid_n = (double)sim->fluid.n,
+                               .md_per_step = colloid_md_moves(sim) ? (double)scene->colloids.substeps : 0.0};
+    pg = pl_progress_create(&pp);
     double t0 = omp_get_wtime();
-    rc = loop(sim, &w, o, last, err);
+    rc = loop(sim, &w, pg, last, err);
     double wall = omp_get_wtime() - t0;
     errno = 0;
     int thermo_bad = fflush(w.thermo) != 0 || fsync(fileno(w.thermo)) != 0;
@@ -330,23 +332,37 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                         strerror(thermo_errno ? thermo_errno : errno));
         goto done;
     }
-    if (sim->colloid_traj) {
+    if (sim->colloid_traj) { /* the final state is the last frame (the stage's at_end) */
         rc = pl_colloid_traj_close(sim->colloid_traj, err);
+        traj_written = 1;
         sim->colloid_traj = NULL;
         if (rc) goto done;
     }
     if ((rc = write_checkpoint(&w, sim, err))) goto done;
-    if (sim->field_acc) {
+    if (sim->field_acc && sim->field_samples == 0) {
+        pl_progress_note(pg, "no field sample was taken (output.fields_start = %lld, last step %lld): "
+                             "fields.h5 not written", scene->output.fields_start, sim->step);
+    } else if (sim->field_acc) {
         pl_path_join(path, sizeof path, w.dir, "fields.h5");
         if ((rc = pl_fields_write(sim, path, err))) goto done;
     }
     for (int m = 0; pl_modules[m]; ++m) /* each module's outputs and measured values */
         if (pl_modules[m]->finish && (rc = pl_modules[m]->finish(sim, w.dir, summary, err))) goto done;
     rc = write_summary(&w, summary, sim, first, wall, err);
-    if (!rc)
-        say(o, "peloid: done in %.3g s, %.4g Mupdates/s", wall,
-                wall > 0 ? (double)(last - first) * (double)sim->fluid.n / wall / 1e6 : 0.0);
+    if (!rc) {
+        static const char *const names[] = {"scene.cfg", "thermo.tsv", "colloids.h5", "colloids.xyz",
+                                            "fields.h5", "fields.xdmf", "observables.h5", "checkpoint.h5",
+                                            "summary.json"};
+        const int wrote[] = {1, 1, traj_written, traj_written && scene->output.colloids_xyz,
+                             sim->field_acc && sim->field_samples > 0, sim->field_acc && sim->field_samples > 0,
+                             sim->observe != NULL, 1, 1};
+        for (size_t k = 0; k < sizeof names / sizeof *names; ++k)
+            if (wrote[k]) pl_progress_file(pg, w.dir, names[k]);
+        if (sim->stop_requested) pl_progress_note(pg, "stopped at step %lld: %s", sim->step, sim->stop_reason);
+        pl_progress_finish(pg, sim->step);
+    }
 done:
+    pl_progress_free(pg);
     if (w.thermo) fclose(w.thermo);
     json_decref(summary);
     pl_sim_free(sim);

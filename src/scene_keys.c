@@ -88,6 +88,11 @@ static const pl_key_t output_keys[] = {
      "steps", "first step of the field time average (skip the transient)"},
     {"track_fluid", PL_KEY_BOOL, OFF(output.track_fluid), 0, 1, 0, NULL, 0, NULL,
      "-", "carry particle ids and unwrapped displacements (fluid MSD in thermo.tsv); costs bandwidth"},
+    {"colloids_xyz", PL_KEY_BOOL, OFF(output.colloids_xyz), 0, 1, 0, NULL, 0, NULL,
+     "-", "also write the colloid frames of colloids.h5 as extended XYZ (colloids.xyz: OVITO, VMD, ASE); "
+          "needs colloids.trajectory_interval"},
+    {"progress_s", PL_KEY_REAL, OFF(output.progress_s), 0, 1e9, PL_KEY_MIN_OPEN, NULL, 30, NULL,
+     "s (wall)", "when stderr is not a terminal: one progress line every progress_s seconds"},
 };
 
 const pl_section_t pl_scene_section_run = {"", "top level", run_keys, N(run_keys)};

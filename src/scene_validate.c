@@ -61,6 +61,10 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
         return pl_scene_fail(scene, err, OFF(output.fields_start), "output.fields_start",
                              "%lld is not before the last step %lld; no field sample would be taken",
                              scene->output.fields_start, scene->run.steps);
+    if (scene->output.colloids_xyz && (scene->colloids.count <= 0 || scene->colloids.trajectory_interval <= 0))
+        return pl_scene_fail(scene, err, OFF(output.colloids_xyz), "output.colloids_xyz",
+                             "true without colloid frames; allowed: with colloids.count > 0 and "
+                             "colloids.trajectory_interval > 0");
     if (pl_colloid_validate_scene(scene, err)) return PL_ERR_INPUT;
     if (pl_coupling_validate_scene(scene, err)) return PL_ERR_INPUT;
     return pl_observe_validate_scene(scene, err);

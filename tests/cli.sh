@@ -62,8 +62,8 @@ assert rows.shape[0] == 5 and rows[-1, 0] == 40
 with h5py.File("run1/fields.h5") as f:
     assert tuple(f["h5md"].attrs["version"]) == (1, 1)
     rho = f["observables/fluid_density/value"][()]
-    assert rho.shape == (6, 6, 6) and abs(rho.mean() - 5.0) < 1e-9
-    assert f["observables/fluid_velocity/value"].shape == (6, 6, 6, 3)
+    assert rho.shape == (1, 6, 6, 6) and abs(rho.mean() - 5.0) < 1e-9
+    assert f["observables/fluid_velocity/value"].shape == (1, 6, 6, 6, 3)
 with h5py.File("run1/checkpoint.h5") as f:
     assert f["fluid/x"].shape == (1080,)
 PYEOF

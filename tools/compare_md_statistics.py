@@ -22,8 +22,10 @@ import subprocess
 import sys
 import tempfile
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import h5md_colloids  # noqa: E402
 
 SCENE = """name = "md_compare";
 seed = {seed};
@@ -58,12 +60,8 @@ def observables(out):
     res = {"drift": np.max(np.abs(e - e[0])) / n,
            "kT": np.mean(th["c_kin_trans"][half:]) / (1.5 * n),
            "u_dlvo": np.mean(th["c_dlvo"][half:]) / n}
-    with h5py.File(os.path.join(out, "colloids.h5"), "r") as f:
-        g = f["particles/colloids"]
-        pos = g["position/value"][()]
-        img = g["image/value"][()]
-        t = g["position/time"][()]
-        L = g["box/edges"][()]
+    c = h5md_colloids.load(os.path.join(out, "colloids.h5"))
+    pos, img, t, L = c["pos"], c["img"], c["t"], c["edges"]
     # g(r) over the second half, minimum image
     edges = np.linspace(3.5, 12.0, 69)
     hist = np.zeros(len(edges) - 1)

@@ -23,21 +23,17 @@ import math
 import os
 import sys
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import h5md_colloids  # noqa: E402
 
 
 def load(outdir):
     with open(os.path.join(outdir, "summary.json")) as f:
         summ = json.load(f)
-    with h5py.File(os.path.join(outdir, "colloids.h5"), "r") as f:
-        grp = f["particles/colloids"]
-        pos = grp["position/value"][()]
-        img = grp["image/value"][()]
-        t = grp["position/time"][()]
-        edges = grp["box/edges"][()]
-        mass = grp["mass"][()]
-        rad = grp["radius"][()]
+    c = h5md_colloids.load(os.path.join(outdir, "colloids.h5"))
+    pos, img, t, edges, mass, rad = c["pos"], c["img"], c["t"], c["edges"], c["mass"], c["rad"]
     z = pos[:, :, 2] + img[:, :, 2] * edges[2]
     return summ, t, z, edges, mass, rad
 

@@ -140,12 +140,24 @@ void pl_colloid_energy(pl_colloid_t *c, pl_colloid_energy_t *e);
 /* Total linear momentum and angular momentum about the origin (unwrapped). */
 void pl_colloid_momentum(const pl_colloid_t *c, double p[3], double l[3]);
 
-/* H5MD trajectory (src/colloid_h5md.c): written to path.tmp, renamed on close. */
+/* H5MD trajectory (src/colloid_h5md.c): written to path.tmp, renamed on
+ * close; with xyz_path, an extended-XYZ twin (src/colloid_xyz.c). */
 typedef struct pl_colloid_traj pl_colloid_traj_t;
-int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, int overwrite,
+typedef struct {
+    double a0_m, t0_s, m_f_kg; /* all > 0: physical scene, written in nm, ps, kg */
+    const char *xyz_path;      /* colloids.xyz beside, or NULL */
+    int overwrite;             /* replace an existing file */
+} pl_colloid_traj_params_t;
+int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, const pl_colloid_traj_params_t *p,
                          pl_colloid_traj_t **out, pl_err_t *err);
+/* Appends the frame of `step` (time in t0), unless the last frame is of that
+ * step already. */
 int pl_colloid_traj_write(pl_colloid_traj_t *t, const pl_colloid_t *c, long long step, double time,
                           pl_err_t *err);
+/* Keeps a copy of the state (the start of a step that may trip a guard);
+ * pl_colloid_traj_write_held appends it (c: the radii), unless written. */
+void pl_colloid_traj_hold(pl_colloid_traj_t *t, const pl_colloid_t *c, long long step, double time);
+int pl_colloid_traj_write_held(pl_colloid_traj_t *t, const pl_colloid_t *c, pl_err_t *err);
 int pl_colloid_traj_close(pl_colloid_traj_t *t, pl_err_t *err);
 
 #endif

@@ -10,6 +10,12 @@
 hid_t pl_h5_group(hid_t parent, const char *name);
 /* 0 or -1. */
 int pl_h5_attr_str(hid_t obj, const char *name, const char *value);
+/* Scalar variable-length UTF-8 string attribute: what h5py reads back as
+ * str (MDAnalysis' H5MD reader looks `unit` strings up as str; a
+ * fixed-length string reads back as bytes and is not recognised). */
+int pl_h5_attr_vlstr(hid_t obj, const char *name, const char *value);
+/* Double attribute: scalar (n = 1) or n values; 0 or -1. */
+int pl_h5_attr_doubles(hid_t obj, const char *name, const double *v, hsize_t n);
 /* Dataset of `rank` dims (rank 0: scalar) written in one go; 0 or -1. */
 int pl_h5_write(hid_t parent, const char *name, hid_t type, int rank, const hsize_t *dims,
                 const void *data);
@@ -27,5 +33,8 @@ void pl_h5_init_process(void);
 void pl_h5_error_text(char *buf, size_t n);
 /* The H5MD 1.1 header group /h5md (version, author, creator); 0 or -1. */
 int pl_h5_h5md_header(hid_t file);
+/* The H5MD units module /h5md/modules/units (version 1.0, system: "SI"),
+ * after pl_h5_h5md_header; 0 or -1. */
+int pl_h5_h5md_units(hid_t file, const char *system);
 
 #endif

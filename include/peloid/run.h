@@ -10,30 +10,14 @@
 #include "peloid/error.h"
 #include "peloid/scene.h"
 
-/* Where a run stands, for the driver's progress display. */
-typedef struct {
-    long long step, first, last; /* collision steps */
-    double elapsed_s;            /* wall time since the first step */
-    double time;                 /* simulated time, t0 */
-    double time_s;               /* simulated time in s (physical scenes; else 0) */
-    double fluid_updates;        /* fluid particle updates since the first step */
-    double md_steps;             /* colloid MD steps since the first step */
-    int done;                    /* the last call of this run */
-} pl_run_progress_t;
-
 typedef struct {
     const char *out_dir;     /* NULL: out/<scene name> */
     long long steps;         /* < 0: the scene's run.steps */
     int threads;             /* <= 0: OpenMP default */
     const char *restart;     /* checkpoint to continue from, or NULL */
     int force;               /* write into an existing output directory */
-    /* progress: called about every progress_interval_s seconds of wall time
-     * and once at the end (done = 1); NULL: none */
-    void (*progress)(const pl_run_progress_t *p, void *user);
-    double progress_interval_s;
-    /* one line of information (the run's start, its set-up, its end); NULL: none */
-    void (*log)(const char *line, void *user);
-    void *user;
+    int progress;            /* log is a terminal: one updating progress line */
+    FILE *log;               /* progress and notes (the driver's stderr), or NULL */
     const char *restart_changed; /* --restart-changed: comma-separated scene keys
                                   * allowed to differ from the checkpoint's, or NULL */
 } pl_run_opts_t;

@@ -79,6 +79,8 @@ typedef struct {
     long long fields_interval;     /* 0: no fields */
     long long fields_start;
     int track_fluid;               /* carry ids + unwrapped displacements */
+    int colloids_xyz;              /* colloids.xyz beside colloids.h5 */
+    double progress_s;             /* progress log interval without a terminal */
 } pl_scene_output_t;
 
 /* Where each key given in the file stood, so that cross-key checks can name

@@ -1,0 +1,82 @@
+/* Colloid trajectory as extended XYZ (colloids.xyz), the text format OVITO,
+ * VMD, ASE and ParaView read: per frame a count line and a comment line of
+ * key=value pairs,
+ *   Lattice="Lx 0 0 0 Ly 0 0 0 Lz" Origin="0 0 0"
+ *   Properties=species:S:1:pos:R:3:radius:R:1:vel:R:3 pbc="T T F"
+ *   Time=<t> step=<n> units="..."
+ * then one line per colloid.  Species is "X" (ASE's dummy element: every
+ * reader accepts it; colloids have no chemical identity).  Positions are
+ * wrapped into the box, in the same units as colloids.h5.  Written to
+ * PATH.tmp, renamed to PATH on close. */
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "colloid_traj.h"
+#include "peloid/io.h"
+
+struct pl_xyz {
+    FILE *f;
+    char path[PATH_MAX], tmp[PATH_MAX + 8];
+};
+
+int pl_xyz_open(const char *path, pl_xyz_t **out, pl_err_t *err)
+{
+    pl_xyz_t *x = calloc(1, sizeof *x);
+    if (!x) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
+    snprintf(x->path, sizeof x->path, "%s", path);
+    snprintf(x->tmp, sizeof x->tmp, "%s.tmp", path);
+    errno = 0;
+    if (!(x->f = fopen(x->tmp, "w"))) {
+        int e = errno;
+        free(x);
+        return pl_err_set(err, PL_ERR_IO, "%s.tmp: cannot write: %s", path, strerror(e));
+    }
+    *out = x;
+    return 0;
+}
+
+int pl_xyz_frame(pl_xyz_t *x, const pl_traj_frame_t *f, pl_err_t *err)
+{
+    FILE *o = x->f;
+    const double L = f->len, V = f->len / f->tim;
+    errno = 0;
+    int bad = fprintf(o, "%zu\n", f->n) < 0;
+    bad |= fprintf(o, "Lattice=\"%.10g 0 0 0 %.10g 0 0 0 %.10g\" Origin=\"0 0 0\" "
+                      "Properties=species:S:1:pos:R:3:radius:R:1:vel:R:3 pbc=\"%c %c %c\" "
+                      "Time=%.17g step=%lld units=\"length %s, time %s, velocity %s/%s\"\n",
+                   f->box[0] * L, f->box[1] * L, f->box[2] * L, f->periodic[0] ? 'T' : 'F',
+                   f->periodic[1] ? 'T' : 'F', f->periodic[2] ? 'T' : 'F', f->time * f->tim, f->step,
+                   f->len_unit, f->time_unit, f->len_unit, f->time_unit) < 0;
+    for (size_t i = 0; i < f->n && !bad; ++i)
+        bad |= fprintf(o, "X %.10g %.10g %.10g %.10g %.10g %.10g %.10g\n", f->x[i] * L, f->y[i] * L,
+                       f->z[i] * L, f->rad[i] * L, f->vx[i] * V, f->vy[i] * V, f->vz[i] * V) < 0;
+    bad |= fflush(o) != 0;
+    bad |= ferror(o) != 0;
+    if (bad)
+        return pl_err_set(err, PL_ERR_IO, "%s: writing the frame of step %lld failed: %s", x->tmp, f->step,
+                          errno ? strerror(errno) : "stream error");
+    return 0;
+}
+
+int pl_xyz_close(pl_xyz_t *x, pl_err_t *err)
+{
+    if (!x) return 0;
+    errno = 0;
+    int bad = fflush(x->f) != 0 || ferror(x->f) != 0 || fsync(fileno(x->f)) != 0;
+    int e = errno;
+    bad |= fclose(x->f) != 0;
+    if (!e) e = errno;
+    if (!bad && (rename(x->tmp, x->path) || pl_fsync_path(x->path, 1))) {
+        bad = 1;
+        e = errno;
+    }
+    int rc = 0;
+    if (bad) rc = pl_err_set(err, PL_ERR_IO, "%s: cannot finish the trajectory: %s", x->path,
+                             e ? strerror(e) : "stream error");
+    free(x);
+    return rc;
+}

@@ -1,0 +1,212 @@
+#!/usr/bin/env bash
+# Issue 15: the files a run writes open in the tools users already have.
+#  - colloids.h5 (H5MD 1.1) of a physical scene loads in MDAnalysis (Debian
+#    python3-mdanalysis) with its units converted: positions, box and time
+#    equal h5py's values times the unit factors; InterRDF runs on it.  A
+#    model-unit scene loads with convert_units=False, and InterRDF of an
+#    ideal gas of colloids (no pair terms) is 1 at every r beyond contact.
+#  - The trajectory's last frame is the final step; at a guard stop the
+#    last good state (the start of the failing step) is the last frame.
+#  - fields.h5 is an H5MD time series; ParaView's XDMF reader (pvpython,
+#    Debian paraview) opens fields.xdmf and gives h5py's values exactly.  A
+#    run whose average took no sample writes no fields file and says so.
+#  - colloids.xyz (extended XYZ) reads back in ASE (Debian python3-ase) with
+#    the H5MD positions, box, pbc and time.
+#  - Progress without a terminal: plain log lines, then the end with the
+#    files written and their sizes.
+set -u
+PELOID=$(realpath "${1:-bin/peloid}")
+ROOT=$(realpath "$(dirname "$0")/..")
+PY="/usr/bin/python3 -W ignore"
+T=$(mktemp -d /tmp/peloid-readers.XXXXXX)
+trap 'rm -rf "$T"' EXIT
+cd "$T"
+pass=0; fail=0
+ok()  { pass=$((pass+1)); echo "  ok   $1"; }
+bad() { fail=$((fail+1)); echo "  FAIL $1"; }
+
+echo "== file readers (MDAnalysis, ParaView, ASE)"
+# quickstart, shortened: 100 steps, a frame every 30 steps (0, 30, 60, 90 and
+# the final 100), extended XYZ, fields every 5 steps, a log line every 0.2 s
+sed -e 's/^steps = 2400;/steps = 100;/' -e 's/trajectory_interval = 20;/trajectory_interval = 30;/' \
+    -e 's/^output: { thermo_interval = 20; };/output: { thermo_interval = 20; colloids_xyz = true; fields_interval = 5; progress_s = 0.2; };/' \
+    "$ROOT/scenes/quickstart.cfg" > q.cfg
+"$PELOID" run q.cfg --out q --threads 2 2> q.log; rc=$?
+[ $rc -eq 0 ] && ok "quickstart (100 steps) runs" || bad "quickstart run rc=$rc: $(tail -3 q.log)"
+
+$PY - <<'PYEOF' && ok "colloids.h5: H5MD 1.1 layout (h5md, box, edges, units, species, id) and last frame = step 100" || bad "colloids.h5 layout"
+import h5py, numpy as np
+with h5py.File("q/colloids.h5") as f:
+    h = f["h5md"]
+    assert tuple(h.attrs["version"]) == (1, 1)
+    assert h["author"].attrs["name"] and h["creator"].attrs["name"] and h["creator"].attrs["version"]
+    assert h["modules/units"].attrs["system"] == b"SI"
+    g = f["particles/colloids"]
+    b = g["box"]
+    assert b.attrs["dimension"] == 3 and [x.decode() for x in b.attrs["boundary"]] == ["periodic", "periodic", "none"]
+    assert b["edges/value"].shape[1:] == (3, 3) and b["edges/value"].attrs["unit"] == "nm"
+    assert list(g["position/step"][()]) == [0, 30, 60, 90, 100], g["position/step"][()]
+    assert list(b["edges/step"][()]) == [0, 30, 60, 90, 100]
+    for el, u in (("position", "nm"), ("velocity", "nm ps-1"), ("angular_velocity", "ps-1")):
+        assert g[el + "/value"].attrs["unit"] == u and g[el + "/time"].attrs["unit"] == "ps", el
+    assert g["radius"].attrs["unit"] == "nm" and g["mass"].attrs["unit"] == "kg"
+    n = g["position/value"].shape[1]
+    assert n == 173 and list(g["id"][()]) == list(range(n)) and (g["species"][()] == 0).all()
+    a0 = f["parameters"].attrs["a0"]
+    assert abs(a0 - 644.8) < 1.0, a0  # nm, the quickstart mapping (a0 = 0.645 um)
+    assert abs(np.diag(b["edges/value"][0]) / a0 - [12, 12, 24]).max() < 1e-9
+PYEOF
+
+$PY - <<'PYEOF' && ok "MDAnalysis loads colloids.h5 with units: positions, box, time = h5py x (10 A/nm, ps); InterRDF runs" || bad "MDAnalysis on colloids.h5"
+import h5py, numpy as np, MDAnalysis as mda
+from MDAnalysis.analysis.rdf import InterRDF
+with h5py.File("q/colloids.h5") as f:
+    g = f["particles/colloids"]
+    pos, t = g["position/value"][()], g["position/time"][()]
+    vel, box = g["velocity/value"][()], g["box/edges/value"][()]
+u = mda.Universe.empty(pos.shape[1], trajectory=True)
+u.load_new("q/colloids.h5", format="H5MD")  # convert_units=True: the units must be readable
+tr = u.trajectory
+assert len(tr) == len(t) == 5
+for k, ts in enumerate(tr):
+    # MDAnalysis holds float32: 6e-8 relative
+    assert np.abs(ts.positions - 10.0 * pos[k]).max() <= 1e-6 * np.abs(10.0 * pos[k]).max()
+    assert np.abs(ts.velocities - 10.0 * vel[k]).max() <= 1e-6 * np.abs(10.0 * vel[k]).max() + 1e-30
+    assert np.allclose(ts.dimensions[:3], 10.0 * np.diag(box[k]), rtol=1e-6) and np.allclose(ts.dimensions[3:], 90)
+    assert abs(ts.time - t[k]) <= 1e-12 * t[-1]
+r = InterRDF(u.atoms, u.atoms, nbins=20, range=(1000.0, 30000.0), exclusion_block=(1, 1)).run()
+assert np.isfinite(r.results.rdf).all() and r.results.rdf.max() > 0
+print("    quickstart g(r), 0.1..3 um in 20 bins:", np.round(r.results.rdf, 2))
+PYEOF
+
+# ideal gas of colloids (no pair terms, no fluid), model units
+cat > gas.cfg <<'CFG'
+name = "gas";
+seed = 5;
+steps = 40;
+box: { cells = [20, 20, 20]; };
+fluid: { density = 0.0; };
+srd: { dt = 0.1; };
+colloids: { count = 400; radius = 0.5; init = "random"; pairs = ""; substeps = 1; max_overlap = 1.0; trajectory_interval = 10; };
+output: { thermo_interval = 10; };
+CFG
+"$PELOID" run gas.cfg --out gas 2> gas.log || bad "ideal gas run: $(tail -2 gas.log)"
+$PY - <<'PYEOF' && ok "model units: MDAnalysis refuses convert_units=True, loads with convert_units=False; ideal-gas InterRDF = 1 +- 0.1 at r = 2..8 a0" || bad "MDAnalysis model units / ideal-gas g(r)"
+import h5py, numpy as np, MDAnalysis as mda
+from MDAnalysis.analysis.rdf import InterRDF
+with h5py.File("gas/colloids.h5") as f:
+    g = f["particles/colloids"]
+    assert "unit" not in g["position/value"].attrs and g["position/value"].attrs["model_unit"] == "a0"
+    assert "units" not in f["h5md"].get("modules", {})
+    pos = g["position/value"][()]
+u = mda.Universe.empty(400, trajectory=True)
+try:
+    u.load_new("gas/colloids.h5", format="H5MD")
+    raise SystemExit("convert_units=True accepted a file without units")
+except ValueError:
+    pass
+u.load_new("gas/colloids.h5", format="H5MD", convert_units=False)
+assert len(u.trajectory) == 5 and u.trajectory[-1].time == 4.0
+assert np.abs(u.trajectory[-1].positions - pos[-1]).max() < 1e-5
+# 5 frames x ~4e4 pairs within 8 a0: the shell counts have ~2% noise each
+# (Poisson, frames correlated), so 0.1 is > 4 sigma
+r = InterRDF(u.atoms, u.atoms, nbins=6, range=(2.0, 8.0), exclusion_block=(1, 1)).run()
+print("    ideal gas g(r), 2..8 a0:", np.round(r.results.rdf, 3))
+assert np.abs(r.results.rdf - 1.0).max() < 0.1
+PYEOF
+
+# guard stop: colloids of an ideal gas at low temperature overlap by more
+# than colloids.max_overlap = 0.1 during collision step 17
+sed -e 's/max_overlap = 1.0;/temperature = 0.001;/' -e 's/trajectory_interval = 10/trajectory_interval = 5/' \
+    -e 's/steps = 40;/steps = 400;/' gas.cfg > guard.cfg
+"$PELOID" run guard.cfg --out guard 2> guard.log; rc=$?
+$PY - <<'PYEOF' && [ $rc -eq 3 ] && ok "guard stop: exit 3; the last frame is the last good state (step 17, before the failing step)" || bad "guard stop (rc=$rc): $(grep error guard.log)"
+import h5py, numpy as np
+with h5py.File("guard/colloids.h5") as f:
+    g = f["particles/colloids"]
+    st, pos = g["position/step"][()], g["position/value"][()]
+assert list(st) == [0, 5, 10, 15, 17], st
+d = pos[-1][:, None, :] - pos[-1][None, :, :]
+d -= 20.0 * np.rint(d / 20.0)
+r = np.sqrt((d * d).sum(-1))[np.triu_indices(400, 1)]
+assert (1.0 - r.min()) / 1.0 <= 0.1, r.min()  # within colloids.max_overlap
+PYEOF
+
+$PY - <<'PYEOF' && ok "fields.h5: H5MD time series value[t][z][y][x], step/time arrays, grid origin and spacing" || bad "fields.h5 layout"
+import h5py, numpy as np
+with h5py.File("q/fields.h5") as f:
+    assert tuple(f["h5md"].attrs["version"]) == (1, 1)
+    for name, shape in (("fluid_density", (1, 24, 12, 12)), ("fluid_velocity", (1, 24, 12, 12, 3))):
+        g = f["observables/" + name]
+        assert g["value"].shape == shape and g["step"].shape == (1,) and g["time"].shape == (1,)
+        assert g["step"][0] == 100 and abs(g["time"][0] - 25.0) < 1e-12
+        assert list(g.attrs["origin"]) == [0, 0, 0] and list(g.attrs["spacing"]) == [1, 1, 1]
+    assert abs(f["observables/fluid_density/value"][()].mean() - 10.0) < 1e-9
+    assert f["observables/samples"][()] == 20
+PYEOF
+
+if command -v pvpython > /dev/null; then
+  cat > pv.py <<'PYEOF'
+import sys, numpy as np
+from paraview.simple import XDMFReader, servermanager
+from vtkmodules.util.numpy_support import vtk_to_numpy
+r = XDMFReader(FileNames=[sys.argv[1]])
+r.UpdatePipeline()
+d = servermanager.Fetch(r)
+b = d.GetBlock(0) if d.IsA("vtkMultiBlockDataSet") else d
+assert b.GetClassName() == "vtkImageData", b.GetClassName()
+assert b.GetDimensions() == (13, 13, 25) and b.GetSpacing() == (1.0, 1.0, 1.0), (b.GetDimensions(), b.GetSpacing())
+cd = b.GetCellData()
+np.save("pv_rho.npy", vtk_to_numpy(cd.GetArray("fluid_density")))
+np.save("pv_vel.npy", vtk_to_numpy(cd.GetArray("fluid_velocity")))
+print("    ParaView:", b.GetClassName(), b.GetDimensions(), "times", list(r.TimestepValues))
+PYEOF
+  timeout 300 pvpython --force-offscreen-rendering pv.py q/fields.xdmf > pv.log 2>&1
+  $PY - <<'PYEOF' && ok "ParaView (pvpython XDMFReader) opens fields.xdmf: image data, cell values = h5py's exactly" || bad "ParaView on fields.xdmf: $(tail -3 pv.log)"
+import h5py, numpy as np
+with h5py.File("q/fields.h5") as f:
+    R = f["observables/fluid_density/value"][0]
+    V = f["observables/fluid_velocity/value"][0]
+assert np.array_equal(np.load("pv_rho.npy"), R.ravel())
+assert np.array_equal(np.load("pv_vel.npy"), V.reshape(-1, 3))
+PYEOF
+  grep "ParaView:" pv.log
+else
+  echo "  skipped: ParaView XDMF check (no pvpython; Debian package paraview)"
+fi
+
+"$PELOID" run q.cfg --out nofields --steps 0 2> nofields.log; rc=$?
+[ $rc -eq 0 ] && [ ! -e nofields/fields.h5 ] && [ ! -e nofields/fields.xdmf ] && grep -q "no field sample was taken" nofields.log \
+  && grep -q '"field_samples": 0' nofields/summary.json \
+  && ok "a run without a field sample writes no fields file, says so and reports field_samples = 0: $(grep 'no field' nofields.log | cut -c1-100)" \
+  || bad "no-sample run (rc=$rc): $(cat nofields.log)"
+
+$PY - <<'PYEOF' && ok "ASE reads colloids.xyz: 5 frames, positions, radius, velocities, cell, pbc, time = colloids.h5" || bad "ASE on colloids.xyz"
+import ase.io, h5py, numpy as np
+fr = ase.io.read("q/colloids.xyz", index=":", format="extxyz")
+with h5py.File("q/colloids.h5") as f:
+    g = f["particles/colloids"]
+    pos, vel, t = g["position/value"][()], g["velocity/value"][()], g["position/time"][()]
+    box, rad, st = g["box/edges/value"][()], g["radius"][()], g["position/step"][()]
+assert len(fr) == len(st) == 5
+for k, a in enumerate(fr):
+    assert len(a) == 173 and list(a.pbc) == [True, True, False]
+    assert np.abs(a.positions - pos[k]).max() <= 1e-9 * np.abs(pos[k]).max()  # 10 digits
+    assert np.abs(a.arrays["vel"] - vel[k]).max() <= 1e-9 * np.abs(vel[k]).max() + 1e-300
+    assert np.allclose(a.arrays["radius"], rad, rtol=1e-9)
+    assert np.allclose(a.cell.array, box[k], rtol=1e-9)
+    assert a.info["step"] == st[k] and abs(a.info["Time"] - t[k]) <= 1e-12 * t[-1]
+PYEOF
+
+# progress without a terminal (stderr is a file here)
+n=$(grep -c "^peloid: step [0-9]*/100 .*t = .* t0 (.* s)  ETA .*Mupdates/s .*MD steps/s" q.log)
+grep -q "^peloid: done: steps 0..100 in .*Mupdates/s, .*MD steps/s; simulated time 25 t0 = " q.log && \
+  grep -qE "^peloid:   .*/q/colloids.xyz  [0-9.]+ kB" q.log && grep -qE "^peloid:   .*/q/fields.xdmf  [0-9.]+ (B|kB)" q.log && [ "$n" -ge 1 ] \
+  && ok "progress in a log: $n plain lines, then the end with wall time, rates and the files written with sizes" \
+  || bad "progress log: $(cat q.log)"
+grep -q $'\r' q.log && bad "carriage returns in a non-terminal log" || ok "no carriage returns in the log"
+n=$(grep -c "MD steps/s" gas.log)
+grep -q "Mupdates" gas.log && bad "colloid-only run reports fluid updates: $(cat gas.log)" || ok "colloid-only run: MD steps/s, no Mupdates/s ($n lines)"
+
+echo "readers.sh: $pass passed, $fail failed"
+[ $fail -eq 0 ]
