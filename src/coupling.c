@@ -79,29 +79,6 @@ int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err)
     return check_settling(scene, err);
 }
 
-pl_coupling_colloids_t pl_coupling_view(const pl_colloid_t *c)
-{
-    pl_coupling_colloids_t v = {c->n, c->x, c->y, c->z, c->vx, c->vy, c->vz,
-                                c->wx, c->wy, c->wz, c->rad, c->mass, c->inertia};
-    return v;
-}
-
-/* Builds the colloid lookup for the colloids seen through `v`, growing the
- * list until it holds every entry; 0 or PL_ERR_NOMEM. */
-int pl_coupling_lookup_fill(pl_coupling_t *cp, const pl_sim_t *sim, const pl_coupling_colloids_t *v,
-                            pl_err_t *err)
-{
-    for (;;) {
-        size_t need = pl_coupling_lookup_build(v, sim->grid.L, sim->grid.walls, cp->lk_start,
-                                               cp->lk_list, cp->lk_cap);
-        if (need <= cp->lk_cap) return 0;
-        pl_free(cp->lk_list);
-        cp->lk_cap = need + need / 2 + 64;
-        if (!(cp->lk_list = pl_alloc(cp->lk_cap * sizeof(int32_t), cp->nthreads)))
-            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloid lookup");
-    }
-}
-
 /* Lookup of the colloids with their own radii. */
 int pl_coupling_lookup_update(pl_coupling_t *cp, const pl_sim_t *sim, pl_err_t *err)
 {
