@@ -1,6 +1,6 @@
 # peloid — one top-level Makefile (STYLE.md 12).
 #
-#   make run     install dependencies, build, run scenes/quickstart.cfg and plot it
+#   make run     install dependencies, build, run scenes/quickstart.cfg, plot it and write its report
 #   make check   install dependencies, build, run the test suite
 #   make validate  the long physics validations (drag, diffusion, VACF)
 #   make bench   kernel and whole-step benchmarks (bench/out/*.tsv)
@@ -110,6 +110,7 @@ $(BUILD)/bench/%: bench/%.c $(LIB) $(BUILD)/flags.stamp | deps $(BUILD)/gen/pelo
 run: $(BIN)
 	./$(BIN) run scenes/quickstart.cfg --force
 	$(PYTHON) tools/plot_sediment.py out/quickstart
+	./$(BIN) report out/quickstart
 
 # The suite: Criterion unit + physics tests, then CLI behaviour, then a
 # sanitizer build of the fast unit tests.
