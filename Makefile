@@ -16,9 +16,12 @@ WARN     := -Wall -Wextra -Wconversion -Wshadow -Wmissing-prototypes -Wstrict-pr
 DEFS     ?=
 BUILD    ?= build
 CFLAGS_ALL = -std=c11 $(OPTFLAGS) $(WARN) -fno-common -fopenmp -D_GNU_SOURCE \
-             -Iinclude -I$(BUILD)/gen $(shell pkg-config --cflags $(PKGS) 2>/dev/null) $(DEFS)
+             -Iinclude -I$(BUILD)/gen -Isrc/io -Isrc/scene $(shell pkg-config --cflags $(PKGS) 2>/dev/null) $(DEFS)
 LDLIBS_ALL = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lm -fopenmp
-LIB_SRC  := $(filter-out src/main.c,$(wildcard src/*.c)) $(wildcard kernels/*.c)
+# src/ by module: scene (input), mapping (units), fluid (SRD), colloid,
+# coupling, observe (observers and their statistics), io (files), plan (the
+# simulation, its modules table, the run); src/main.c the driver.
+LIB_SRC  := $(wildcard src/*/*.c) $(wildcard kernels/*.c)
 LIB_OBJ  := $(patsubst %.c,$(BUILD)/%.o,$(LIB_SRC))
 LIB      := $(BUILD)/libpeloid.a
 BIN      := bin/peloid

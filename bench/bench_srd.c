@@ -8,7 +8,7 @@
  * Byte model (bytes of particle state each kernel must read + write per
  * particle; D = sizeof(pl_real), 8 for double, 4 for float; write-allocate
  * not counted, the STREAM convention):
- *   plan (src/sim.c)
+ *   plan (src/plan/sim.c)
  *     stream+bin   read r, v (6D), write r, v (6D), write cell index (4)   12D + 4
  *     sort         read cell (4), r, v (6D); write twins r', v' (6D)       12D + 4
  *     collide      read v (3D), write v (3D) (a cell stays in cache)        6D

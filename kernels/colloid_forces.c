@@ -8,7 +8,7 @@
  *   lubrication: Hecht Eqs. 4-5, limited at a minimum gap
  *   WCA: PL Eq. 16 with exponent n
  *   depletion_comp: Phi_comp = -Phi_depl (PL Sec. III.C.1, Eqs. 22-23),
- *          cubic Hermite interpolation of the table built by src/depletion.c
+ *          cubic Hermite interpolation of the table built by src/colloid/depletion.c
  *
  * Race-free accumulation with Newton's third law: a half list, each pair
  * evaluated once by its owner.  Pass 1 (parallel over owners, static blocks)

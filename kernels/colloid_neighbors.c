@@ -3,7 +3,7 @@
  * closer than rlist = (largest pair cut-off) + skin, and the list stays valid
  * until some colloid has moved by more than skin / 2 since the build (then no
  * pair can have come from beyond rlist to inside the cut-off).  The caller
- * (src/colloid_state.c) checks the displacement before every force
+ * (src/colloid/colloid_state.c) checks the displacement before every force
  * evaluation and rebuilds when it is exceeded.
  *
  * Why the trajectory does not depend on when the list was built: the force

@@ -3,7 +3,7 @@
  *   phi_cf(r) = 4 eps [(sigma/r)^12 - (sigma/r)^6 + 1/4],  r <= 2^{1/6} sigma,
  * a radial force: slip surfaces (PL Sec. III.B).  Only the particles near a
  * colloid are integrated at the MD step (the order of the step:
- * src/coupling_potential.c).  This file finds them (parallel over the
+ * src/coupling/coupling_potential.c).  This file finds them (parallel over the
  * streaming's static chunks), gathers them, takes back their free
  * streaming, kicks and drifts them (PL Eqs. 18-19, per particle) and writes
  * them back, and evaluates the forces in parallel over fixed blocks of

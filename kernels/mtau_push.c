@@ -1,6 +1,6 @@
 /* Multiple-tau correlator: the per-particle update of one sample
  * (Ramirez et al. 2010, Sec. II; the object and its rules are in
- * include/peloid/mtau.h and src/mtau.c).
+ * include/peloid/mtau.h and src/observe/mtau.c).
  *
  * Per-particle state, stride = levels (6 p + 3) doubles: per level, p slots
  * of (value[3], accumulated correlation[3]) and the running sum[3] of the

@@ -1,4 +1,4 @@
-/* Fluid guard scan (src/fluid_guard.c reports what it finds): the lowest
+/* Fluid guard scan (src/fluid/fluid_guard.c reports what it finds): the lowest
  * index of a particle whose position is outside [0, L] on some axis (which
  * catches NaN and Inf too) or whose speed^2 exceeds a bound (or is not
  * finite); positions = 0: the speeds only.  One read-only pass over r and v

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Observers through bin/peloid (src/observe_module.c), checked against
+# Observers through bin/peloid (src/observe/observe_module.c), checked against
 # analytic results:
 #  - free Brownian colloids (no pair terms): D from the MSD observer equals
 #    the Stokes-Einstein kT / (6 pi eta R) within 3 SE (SE over the 64

@@ -1,4 +1,4 @@
-/* On-the-fly blocking (src/blocking.c) against series whose SE of the mean is
+/* On-the-fly blocking (src/observe/blocking.c) against series whose SE of the mean is
  * known exactly.
  *
  * AR(1): x_t = phi x_{t-1} + sqrt(1 - phi^2) g_t, x_0 ~ N(0, 1), has unit

@@ -1,4 +1,4 @@
-/* Clusters by union-find (src/cluster.c) on constructed configurations whose
+/* Clusters by union-find (src/observe/cluster.c) on constructed configurations whose
  * partition is known exactly, and on random ones against a brute-force O(n^2)
  * search; the result must not depend on the OpenMP thread count. */
 #include <gsl/gsl_rng.h>

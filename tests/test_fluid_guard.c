@@ -1,4 +1,4 @@
-/* Issue 18: the fluid guard stage (src/fluid_guard.c, kernels/srd_guard.c),
+/* Issue 18: the fluid guard stage (src/fluid/fluid_guard.c, kernels/srd_guard.c),
  * the wall impulse accumulator's overflow detection (pl_wall_acc_add) and
  * the colloid image counter guard.  Each case failed on the code before
  * (a NaN velocity crashed the next stream in kernels/srd_stream.c; an

@@ -1,4 +1,4 @@
-/* Multiple-tau correlator (src/mtau.c, kernels/mtau_push.c).
+/* Multiple-tau correlator (src/observe/mtau.c, kernels/mtau_push.c).
  *
  * 1. Against a brute-force O(T^2) correlator of the series each level sees
  *    (the samples themselves at level 0, block means or every m-th sample

@@ -1,4 +1,4 @@
-/* g(r) (src/rdf.c, kernels/rdf_count.c).
+/* g(r) (src/observe/rdf.c, kernels/rdf_count.c).
  *
  * Ideal gas: uniform independent points give g = 1 at every r, in a periodic
  * box and in a slab with walls in z (where the accessible-volume

@@ -1,4 +1,4 @@
-/* Velocity distribution tests (src/vdist.c) on exact Gaussian samples.
+/* Velocity distribution tests (src/observe/vdist.c) on exact Gaussian samples.
  *
  * A correct p-value is uniform on (0, 1) under the null: over 300 samples the
  * fraction with p < 0.05 is 0.05 +- 0.0126 (binomial), checked within 4

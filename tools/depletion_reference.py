@@ -4,7 +4,7 @@ that an ideal fluid with the colloid-fluid WCA potential of PL Eq. 17 induces
 between two colloids (PL Eqs. 22-23),
     Phi(d) = -n_f kT  Int f(|r|) f(|r - d z|) d^3r,   f = exp(-phi_cf/kT) - 1,
 integrated here in cylindrical coordinates (rho, z) with scipy's dblquad,
-independently of the bipolar-coordinate quadrature of src/depletion.c; and
+independently of the bipolar-coordinate quadrature of src/colloid/depletion.c; and
 PL Eq. 24 for hard spheres.  Prints the values the test checks."""
 import numpy as np
 from scipy.integrate import dblquad

@@ -10,7 +10,7 @@ and prints the measured initial settling speed next to
 
   Stokes (Hecht Eq. 16):  v_S  = M g / (6 pi eta R), eta = gamma nu (PL Eqs. 9-15)
   coupling II (one cell):  v_II = M g / xi_II, xi_II = 2/3 (1 - cos alpha) mu / dt,
-                           mu = M gamma / (M + gamma) (src/coupling.c)
+                           mu = M gamma / (M + gamma) (src/coupling/coupling.c)
 
 M g is the colloid weight minus buoyancy (colloids.gravity).  The measured
 speed is the slope of the centre-of-mass height over the first stretch of

@@ -57,7 +57,7 @@ typedef struct pl_colloid {
     long long md_step;
     double e0;             /* energy at the start (drift guard) */
     /* forces and torques carry over between steps (velocity Verlet's second
-     * half kick, Brownian step): checkpointed too (src/checkpoint_colloid.c) */
+     * half kick, Brownian step): checkpointed too (src/io/checkpoint_colloid.c) */
     double *fx, *fy, *fz, *tx, *ty, *tz;
     /* per-step scratch, rebuilt by the next force evaluation */
     double *zu, *epot;
@@ -87,7 +87,7 @@ int pl_colloid_parse_pairs(const char *list, unsigned *mask, char *bad, size_t n
 
 /* Converts the dlvo section (physical units) to simulation units, fits the
  * parabolic primary minimum for contact distance d_ref and chooses the cut-off
- * from the potential's decay (src/colloid_params.c). */
+ * from the potential's decay (src/colloid/colloid_params.c). */
 int pl_colloid_dlvo_setup(const pl_scene_dlvo_t *s, double d_ref, pl_colloid_pair_params_t *p,
                           pl_colloid_dlvo_info_t *info, pl_err_t *err);
 
@@ -130,7 +130,7 @@ int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err);
 int pl_colloid_advance(pl_colloid_t *c, long long collision_step, pl_err_t *err);
 
 /* Guards on the state after the force evaluation of MD step c->md_step
- * (src/colloid_guard.c).  PL_ERR_GUARD with the message on failure. */
+ * (src/colloid/colloid_guard.c).  PL_ERR_GUARD with the message on failure. */
 int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err);
 
 /* Kinetic + potential energy terms of the current state (fixed-order sums);
@@ -140,8 +140,8 @@ void pl_colloid_energy(pl_colloid_t *c, pl_colloid_energy_t *e);
 /* Total linear momentum and angular momentum about the origin (unwrapped). */
 void pl_colloid_momentum(const pl_colloid_t *c, double p[3], double l[3]);
 
-/* H5MD trajectory (src/colloid_h5md.c): written to path.tmp, renamed on
- * close; with xyz_path, an extended-XYZ twin (src/colloid_xyz.c). */
+/* H5MD trajectory (src/io/colloid_h5md.c): written to path.tmp, renamed on
+ * close; with xyz_path, an extended-XYZ twin (src/io/colloid_xyz.c). */
 typedef struct pl_colloid_traj pl_colloid_traj_t;
 typedef struct {
     double a0_m, t0_s, m_f_kg; /* all > 0: physical scene, written in nm, ps, kg */

@@ -2,7 +2,7 @@
  * (and of the radii), each returning the energy U, the radial force
  * F = -dU/dr (positive = repulsive) and the curvature K2 = d^2U/dr^2, which the
  * stability guard turns into a collision time.  Used by the force kernel
- * (kernels/colloid_forces.c), by the parameter set-up (src/colloid_params.c)
+ * (kernels/colloid_forces.c), by the parameter set-up (src/colloid/colloid_params.c)
  * and directly by the tests.  Energies in kT_ref, lengths in a0.
  *
  *   Hecht Eq. 1  screened Coulomb     U = C d^2/r exp(-kappa (r - d))
@@ -23,7 +23,7 @@ typedef struct {
 } pl_pair_val_t;
 
 /* Hecht Eq. 1: C is the prefactor pi eps_r eps_0 [4kT/(ze) tanh(ze Psi0/4kT)]^2
- * in kT / a0 (src/colloid_params.c converts it). */
+ * in kT / a0 (src/colloid/colloid_params.c converts it). */
 static inline pl_pair_val_t pl_pair_coulomb(double r, double d, double C, double kappa)
 {
     double ir = 1.0 / r;
@@ -59,7 +59,7 @@ static inline pl_pair_val_t pl_pair_dlvo_raw(double r, double d, double C, doubl
  *   U = V(hm) + V'(hm) (h - hm) + c (h - hm)^2,  c = V'(hm) / (2 (hm - h0)),
  * which joins Eqs. 1-2 with continuous value and slope and has its minimum at
  * the gap h0; for the reference diameter hm is chosen so that the minimum is
- * exactly `depth` deep (src/colloid_params.c).  `shift` is subtracted so that
+ * exactly `depth` deep (src/colloid/colloid_params.c).  `shift` is subtracted so that
  * U is continuous at the cut-off. */
 static inline pl_pair_val_t pl_pair_dlvo(double r, double d, double C, double kappa, double A,
                                          double hm, double h0, double shift)

@@ -1,5 +1,5 @@
 /* Scene structs of the colloid module (sections colloids, dlvo, hertz,
- * lubrication, wca; schema in src/scene_keys_colloid.c).  Included by
+ * lubrication, wca; schema in src/scene/scene_keys_colloid.c).  Included by
  * scene.h; plain data only. */
 #ifndef PELOID_COLLOID_SCENE_H
 #define PELOID_COLLOID_SCENE_H

@@ -1,7 +1,7 @@
 /* Colloid-solvent coupling (src/coupling*.c): the state the plan stages of
  * the coupling need, built from the scene.  Kernels: coupling_kernels.h.
  *
- * Plan (src/sim.c): colloid-md, stream+bin, [coupling1-reflect], sort,
+ * Plan (src/plan/sim.c): colloid-md, stream+bin, [coupling1-reflect], sort,
  * [coupling2-save], collide, [coupling2-collide], thermostat, [drift-removal].
  * Gravity compensation (Hecht Sec. VIII.A iii) enters the streaming as the
  * extra fluid acceleration fluid_accel. */
@@ -42,7 +42,7 @@ typedef struct pl_coupling {
     size_t nocc;
     double *vsave;
     size_t save_cap;     /* doubles */
-    /* potential coupling (src/coupling_potential.c) */
+    /* potential coupling (src/coupling/coupling_potential.c) */
     pl_coupling_wca_t wca;
     double margin;       /* selection shell beyond the cut-off */
     double *rad_big;     /* ncolloids: cut-off + margin (lookup radii) */
@@ -72,7 +72,7 @@ int pl_coupling_lookup_update(pl_coupling_t *cp, const struct pl_sim *sim, pl_er
 int pl_coupling_lookup_fill(pl_coupling_t *cp, const struct pl_sim *sim,
                             const pl_coupling_colloids_t *v, pl_err_t *err);
 
-/* Plan stages (src/coupling_stages.c). */
+/* Plan stages (src/coupling/coupling_stages.c). */
 int pl_coupling_stage_reflect(struct pl_sim *sim, void *ctx, pl_err_t *err);
 int pl_coupling_stage_save(struct pl_sim *sim, void *ctx, pl_err_t *err);
 int pl_coupling_stage_collide(struct pl_sim *sim, void *ctx, pl_err_t *err);

@@ -1,5 +1,5 @@
 /* Scene struct of the colloid-solvent coupling (section `coupling`; schema in
- * src/scene_keys_coupling.c).  Included by scene.h; plain data only. */
+ * src/scene/scene_keys_coupling.c).  Included by scene.h; plain data only. */
 #ifndef PELOID_COUPLING_SCENE_H
 #define PELOID_COUPLING_SCENE_H
 

@@ -21,7 +21,7 @@ int pl_outdir_prepare(const char *dir, int force, const char *scene_path, char *
 /* "<dir>/<name>" into buf. */
 void pl_path_join(char *buf, size_t n, const char *dir, const char *name);
 
-/* The one atomic-write helper (src/atomic_file.c).  pl_atomic_tmp: the
+/* The one atomic-write helper (src/io/atomic_file.c).  pl_atomic_tmp: the
  * temporary name "<path>.tmp" to write first.  pl_atomic_commit: fsync it,
  * rename it to path, fsync the directory; on failure the temporary file is
  * removed and PL_ERR_IO names the file and the system error. */
@@ -32,8 +32,8 @@ int pl_atomic_commit(const char *tmp, const char *path, pl_err_t *err);
 FILE *pl_file_begin(const char *path, char *tmp, size_t ntmp, pl_err_t *err);
 int pl_file_commit(FILE *f, const char *tmp, const char *path, pl_err_t *err);
 
-/* HDF5 checkpoint of the complete dynamic state: fluid (src/checkpoint.c)
- * and colloids (src/checkpoint_colloid.c). */
+/* HDF5 checkpoint of the complete dynamic state: fluid (src/io/checkpoint.c)
+ * and colloids (src/io/checkpoint_colloid.c). */
 int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err);
 /* Loads a checkpoint into a sim created from the same scene: the format
  * version, every dataset's checksum, the scene's seed, box, particle and
@@ -51,7 +51,7 @@ int pl_checkpoint_changed_keys_valid(const char *list, pl_err_t *err);
  * 0, or -1 with errno. */
 int pl_fsync_path(const char *path, int dir);
 
-/* Time-averaged fields in H5MD layout (src/fields_io.c). */
+/* Time-averaged fields in H5MD layout (src/io/fields_io.c). */
 int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err);
 
 /* hwloc topology summary, e.g. "1 package, 2 cores, 2 PUs, 1 NUMA node". */

@@ -238,7 +238,7 @@ typedef struct {
     long long md_substeps;
     long long n_colloids;          /* from volume_fraction and the box */
     /* physical{} -> colloids{}, dlvo{}, hertz{}, lubrication{}, coupling{}
-     * (src/mapping_colloids.c) */
+     * (src/mapping/mapping_colloids.c) */
     double phi_given, phi_realised;  /* volume fraction asked for / of the box used */
     double mass_density;           /* m_f / a0^3 */
     double inertia;                /* 2/5 M R^2, m_f a0^2 */
@@ -267,7 +267,7 @@ typedef struct {
  * pl_scene_validate. */
 int pl_mapping_scene_apply(struct pl_scene *scene, pl_err_t *err);
 
-/* Second half of the scene front end (src/mapping_colloids.c): derives
+/* Second half of the scene front end (src/mapping/mapping_colloids.c): derives
  * colloids{} (count from phi and the box used, radius, mass density, gravity,
  * substeps), dlvo{}, hertz.K, lubrication.viscosity and coupling.method from
  * physical{} + coarse_graining{}; refuses a derived key given in the file

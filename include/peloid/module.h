@@ -3,7 +3,7 @@
  * here, in one table row, what it adds to a run; its own file holds its
  * stages, its thermo columns and its summary entries.  Adding a module (an
  * observable, a coupling) is its file plus one row of pl_modules
- * (src/modules.c).  Where a module's stages run in a step is their slot
+ * (src/plan/modules.c).  Where a module's stages run in a step is their slot
  * (pl_stage_slot_t, peloid/sim.h). */
 #ifndef PELOID_MODULE_H
 #define PELOID_MODULE_H
@@ -37,14 +37,14 @@ typedef struct pl_module {
  * registered (within a slot), their columns and entries written. */
 extern const pl_module_t *const pl_modules[];
 
-extern const pl_module_t pl_fluid_module;    /* src/fluid_stages.c */
-extern const pl_module_t pl_colloid_module;  /* src/colloid_module.c */
-extern const pl_module_t pl_coupling_module; /* src/coupling_module.c */
-extern const pl_module_t pl_observe_module;  /* src/observe_module.c */
-extern const pl_module_t pl_stop_module;     /* src/stop_module.c */
+extern const pl_module_t pl_fluid_module;    /* src/fluid/fluid_stages.c */
+extern const pl_module_t pl_colloid_module;  /* src/colloid/colloid_module.c */
+extern const pl_module_t pl_coupling_module; /* src/coupling/coupling_module.c */
+extern const pl_module_t pl_observe_module;  /* src/observe/observe_module.c */
+extern const pl_module_t pl_stop_module;     /* src/observe/stop_module.c */
 
 /* The present estimate and SE of observable ob (stop.observable - 1);
- * 0 when it has none yet (src/observe_module.c). */
+ * 0 when it has none yet (src/observe/observe_module.c). */
 int pl_observe_estimate(const pl_sim_t *sim, int ob, double *value, double *se);
 const char *pl_observe_name(int ob);
 

@@ -1,5 +1,5 @@
 /* Scene struct of the observers (section `observe`; schema in
- * src/scene_keys_observe.c).  Included by scene.h; plain data only.  An
+ * src/scene/scene_keys_observe.c).  Included by scene.h; plain data only.  An
  * interval of 0 leaves the observer out of the plan. */
 #ifndef PELOID_OBSERVE_SCENE_H
 #define PELOID_OBSERVE_SCENE_H
@@ -20,7 +20,7 @@ typedef struct {
 /* Section `stop`: end the run when an observable's relative SE reaches
  * rel_error (checked every check_interval steps, from the state only: the
  * same step for any thread count), or after max_wall_s of wall time. */
-enum { PL_STOP_NONE = 0 }; /* else 1 + the observable's index (src/observe_module.c) */
+enum { PL_STOP_NONE = 0 }; /* else 1 + the observable's index (src/observe/observe_module.c) */
 typedef struct {
     int observable;
     double rel_error;

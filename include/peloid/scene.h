@@ -171,16 +171,16 @@ extern const pl_section_t pl_scene_section_colloids, pl_scene_section_dlvo, pl_s
 extern const pl_section_t pl_scene_section_coupling;
 extern const pl_section_t pl_scene_section_observe, pl_scene_section_stop;
 
-/* Cross-key checks of the observe section (src/observe_module.c). */
+/* Cross-key checks of the observe section (src/observe/observe_module.c). */
 int pl_observe_validate_scene(const pl_scene_t *scene, pl_err_t *err);
 
 /* Cross-key checks of the coupling section (src/coupling_scene.c). */
 int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err);
 /* Coupling II friction of a colloid of mass M (m_f): 2/3 (1 - cos alpha) mu / dt,
- * mu = M gamma / (M + gamma); an upper bound (src/coupling.c). */
+ * mu = M gamma / (M + gamma); an upper bound (src/coupling/coupling.c). */
 double pl_coupling2_friction(const pl_scene_t *scene, double mass);
 
-/* Cross-key checks of the colloid sections (src/colloid_scene.c). */
+/* Cross-key checks of the colloid sections (src/colloid/colloid_scene.c). */
 int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err);
 
 /* ---- API --------------------------------------------------------------- */

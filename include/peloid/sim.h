@@ -25,7 +25,7 @@ typedef enum {
 
 /* Where a stage runs within its phase: the plan is ordered by (phase,
  * slot), stages of one slot in the order they were added (module order,
- * src/modules.c).  The step's data flow: colloid MD, then the fluid's
+ * src/plan/modules.c).  The step's data flow: colloid MD, then the fluid's
  * stream, sort and collision with the couplings' stages around them. */
 typedef enum {
     /* PL_PHASE_STEP */
@@ -87,7 +87,7 @@ struct pl_sim {
     int64_t *wall_acc;    /* nthreads x PL_WALL_ACC_STRIDE (streaming bounces) */
     double *wall_dp;      /* PL_WALL_ACC_N x blocks (virtual particles of the collision) */
     int wall_acc_overflow; /* a fixed-point wall impulse sum overflowed (guard) */
-    /* fluid guard bounds (pl_fluid_guard_setup, src/fluid_guard.c) */
+    /* fluid guard bounds (pl_fluid_guard_setup, src/fluid/fluid_guard.c) */
     double guard_vmax;             /* largest speed allowed */
     double guard_kT_lo, guard_kT_hi; /* kT_cell band with a thermostat (else 0, inf) */
     /* time-averaged fields */
@@ -98,7 +98,7 @@ struct pl_sim {
     struct pl_colloid_traj *colloid_traj; /* opened by the run loop when wanted */
     /* colloid-solvent coupling (NULL without; src/coupling*.c) */
     struct pl_coupling *coupling;
-    /* observers (NULL without; src/observe_module.c) */
+    /* observers (NULL without; src/observe/observe_module.c) */
     struct pl_observe *observe;
     /* plan */
     pl_stage_t stages[PL_MAX_STAGES];
@@ -157,10 +157,10 @@ double pl_sim_wall_stress(const pl_sim_t *sim, int wall, int d);
 /* Observables of the current state (fixed-order reductions). */
 void pl_sim_observe(const pl_sim_t *sim, pl_fluid_obs_t *obs, double *kT);
 
-/* ---- fluid guard (src/fluid_guard.c) ---------------------------------- */
+/* ---- fluid guard (src/fluid/fluid_guard.c) ---------------------------------- */
 /* The guard stage runs every step, after the collision and thermostat: the
  * speeds and the O(1) checks every step, the positions too every
- * PL_FLUID_GUARD_SCAN_INTERVAL steps and before every output (src/run.c). */
+ * PL_FLUID_GUARD_SCAN_INTERVAL steps and before every output (src/plan/run.c). */
 enum { PL_FLUID_GUARD_INTERVAL = 1, PL_FLUID_GUARD_SCAN_INTERVAL = 10 };
 /* Speed bound: PL_FLUID_GUARD_SIGMAS thermal speeds sqrt(kT_max / m_f) plus
  * twice the fastest wall or imposed flow (a bounce-back off a wall moving
@@ -183,7 +183,7 @@ int pl_fluid_guard_stage(pl_sim_t *sim, void *ctx, pl_err_t *err);
 int pl_fluid_guard_check(const pl_sim_t *sim, long long step, int scan, pl_err_t *err);
 
 /* Initial fluid: uniform positions, uniform or Gaussian velocities with zero
- * total momentum and exactly the scene temperature (src/fluid_init.c), on
+ * total momentum and exactly the scene temperature (src/fluid/fluid_init.c), on
  * nthreads threads (the result does not depend on them). */
 void pl_fluid_init(pl_fluid_t *fluid, const pl_scene_t *scene, int nthreads);
 

@@ -154,7 +154,7 @@ void pl_srd_fields_accumulate(const pl_fluid_t *fluid, const int L[3], int64_t *
 size_t pl_srd_guard_scan(const pl_fluid_t *f, const int L[3], double vmax2, int positions, int nthreads);
 
 /* A wall impulse accumulator slot that overflowed (sticky): the fluid guard
- * reports it (src/fluid_guard.c). */
+ * reports it (src/fluid/fluid_guard.c). */
 #define PL_WALL_ACC_OVERFLOW INT64_MIN
 
 /* Impulse dp (m_f = 1) a wall gave a particle, added in fixed point

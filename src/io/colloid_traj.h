@@ -1,5 +1,5 @@
-/* Internal to the colloid trajectory writers (src/colloid_h5md.c, the H5MD
- * file, and src/colloid_xyz.c, its extended-XYZ twin): one frame as the
+/* Internal to the colloid trajectory writers (src/io/colloid_h5md.c, the H5MD
+ * file, and src/io/colloid_xyz.c, its extended-XYZ twin): one frame as the
  * writers see it. */
 #ifndef PELOID_COLLOID_TRAJ_H
 #define PELOID_COLLOID_TRAJ_H

@@ -2,15 +2,15 @@
  * N steps equals 2N steps bitwise.  Random numbers are counter based (keyed
  * by step), so the state is positions, velocities (in their sorted order:
  * the stable sort depends on it), tracking arrays, step, field accumulators,
- * with colloids the group /colloids (src/checkpoint_colloid.c), and the wall
- * and coupling run counters (src/checkpoint_coupling.c).
+ * with colloids the group /colloids (src/io/checkpoint_colloid.c), and the wall
+ * and coupling run counters (src/io/checkpoint_coupling.c).
  * Written atomically (pl_atomic_commit); the HDF5 helpers (checksummed 1-d
- * datasets, attributes) are in src/checkpoint_h5.c.
+ * datasets, attributes) are in src/io/checkpoint_h5.c.
  * No object carries a time stamp, so the same state gives the same bytes.
  *
  * Nothing read is trusted (format 2): the root attribute format_version must
  * be PL_CKPT_FORMAT, every dataset carries its FNV-1a checksum
- * ("fnv1a64"), the scene fingerprint must match (src/checkpoint_scene.c),
+ * ("fnv1a64"), the scene fingerprint must match (src/io/checkpoint_scene.c),
  * and every array is range-checked before the first kernel sees it
  * (finite; positions inside the box; velocities within the fluid guard's
  * one-cell-per-step bound; ids a permutation; counts >= 0). */

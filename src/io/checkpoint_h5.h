@@ -1,5 +1,5 @@
 /* Private to src/checkpoint*.c: HDF5 helpers of the checkpoint writer and
- * reader, and the colloid part of the checkpoint (src/checkpoint_colloid.c).
+ * reader, and the colloid part of the checkpoint (src/io/checkpoint_colloid.c).
  * Every object is created without time stamps, so the same state gives the
  * same bytes. */
 #ifndef PELOID_CHECKPOINT_H5_H
@@ -32,7 +32,7 @@ int pl_ckpt_read_1d(hid_t g, const char *name, hid_t type, void *data, size_t n,
 /* String attribute (write: 0 or -1; read: malloc'ed text or NULL). */
 char *pl_ckpt_attr_str_read(hid_t obj, const char *name);
 
-/* Scene fingerprint (src/checkpoint_scene.c): writes the root attributes
+/* Scene fingerprint (src/io/checkpoint_scene.c): writes the root attributes
  * scene_keys and scene_fingerprint; 0 or -1. */
 int pl_ckpt_scene_write(hid_t f, const pl_scene_t *scene);
 /* PL_ERR_INPUT listing every physics key whose value differs between the
@@ -57,7 +57,7 @@ int pl_ckpt_colloid_read(hid_t f, pl_colloid_t *c, const pl_scene_t *scene, cons
 
 struct pl_sim;
 /* Writes /wall_impulse (walls) and group /coupling (with a coupling): the run
- * counters (src/checkpoint_coupling.c). */
+ * counters (src/io/checkpoint_coupling.c). */
 int pl_ckpt_coupling_write(hid_t f, const struct pl_sim *sim);
 /* Reads them back; PL_ERR_INPUT naming what is missing. */
 int pl_ckpt_coupling_read(hid_t f, struct pl_sim *sim, const char *path, pl_err_t *err);

@@ -34,7 +34,7 @@ int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err)
     if (cs->count == 0) return 0;
     if ((mask & PL_CT_DLVO) && !scene->mapping.enabled) {
         /* no material defaults: Hecht Eqs. 1-2 need the suspension's own
-         * constants (a physical{} scene derives them, src/mapping_colloids.c) */
+         * constants (a physical{} scene derives them, src/mapping/mapping_colloids.c) */
         static const struct {
             size_t off;
             const char *key;

@@ -16,7 +16,7 @@
  * `unit` it does not know even with convert_units=False (open model files
  * with convert_units=False).  The unit attributes are variable-length
  * strings: MDAnalysis 2.4 looks them up as str, which h5py gives only for
- * those.  With PATH.xyz beside (colloids.xyz, src/colloid_xyz.c) every frame
+ * those.  With PATH.xyz beside (colloids.xyz, src/io/colloid_xyz.c) every frame
  * goes to both.  Written to PATH.tmp and renamed to PATH on close (DESIGN.md:
  * outputs are written atomically); an existing PATH is refused unless
  * overwrite. */

@@ -2,9 +2,9 @@
  * suspension in SI units, coarse_graining{} the choices that map it onto
  * SRD + MD (Hecht Sec. VII, PL Sec. VII).  A scene with physical{} gets
  * srd.dt, fluid.density, fluid.temperature (and box.cells when physical.box
- * is given) from the mapping (src/mapping_scene.c), and with
+ * is given) from the mapping (src/mapping/mapping_scene.c), and with
  * physical.volume_fraction its colloids, pair terms, coupling method and MD
- * substeps (src/mapping_colloids.c). */
+ * substeps (src/mapping/mapping_colloids.c). */
 #include <stddef.h>
 
 #include "peloid/scene.h"

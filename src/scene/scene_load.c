@@ -1,6 +1,6 @@
 /* Scene loading: libconfig file -> validated pl_scene_t.
  *
- * The file and its @include files are first expanded by src/scene_text.c
+ * The file and its @include files are first expanded by src/scene/scene_text.c
  * (includes relative to the including file, inside the scene's directory
  * tree), then parsed by libconfig.  Every setting is matched against the
  * schema (scene_keys.c); unknown keys, wrong types and out-of-range values

@@ -1,4 +1,4 @@
-/* Scene text (src/scene_text.c): a scene file with its @include files
+/* Scene text (src/scene/scene_text.c): a scene file with its @include files
  * expanded into one buffer for libconfig, a map from each line of that buffer
  * back to (file, line), and the literal text of a value as written.
  * Internal to the scene loader. */

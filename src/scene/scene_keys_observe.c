@@ -1,7 +1,7 @@
 /* Scene schema of the observers: section `observe` (colloid g(r), colloid
  * MSD and diffusion coefficient, clusters; Hecht Sec. IX, PL Sec. VI).  No
  * key here changes the trajectory: the checkpoint's scene fingerprint leaves
- * the section out (src/checkpoint_scene.c). */
+ * the section out (src/io/checkpoint_scene.c). */
 #include <stddef.h>
 
 #include "peloid/scene.h"
@@ -62,7 +62,7 @@ const pl_section_t pl_scene_section_observe = {"observe", "observers: measured q
 #undef OFF
 #define OFF(member) offsetof(pl_scene_t, stop.member)
 
-/* In the order of the observables of src/observe_module.c (after "none"). */
+/* In the order of the observables of src/observe/observe_module.c (after "none"). */
 static const char *const stop_choices[] = {"none", "colloid_D", "rdf_peak", "cluster_number", "largest_cluster",
                                            "mean_cluster_size", "settling_velocity", NULL};
 

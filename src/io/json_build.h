@@ -1,4 +1,4 @@
-/* Building JSON documents with jansson (src/json_build.c): summary.json and
+/* Building JSON documents with jansson (src/io/json_build.c): summary.json and
  * `params --json`.  Escaping is jansson's; a non-finite number never reaches
  * a document: it is an error naming the key.  Internal to src/. */
 #ifndef PELOID_JSON_BUILD_H

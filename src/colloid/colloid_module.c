@@ -55,7 +55,7 @@ static void colloid_stages(pl_sim_t *sim)
     }
 }
 
-/* ---- thermo columns (energies: src/colloid_state.c) ------------------- */
+/* ---- thermo columns (energies: src/colloid/colloid_state.c) ------------------- */
 static double v_ekin(const pl_thermo_sample_t *s, int rot) { return rot ? s->ce.kin_rot : s->ce.kin_trans; }
 static double v_epot(const pl_thermo_sample_t *s, int k) { return s->ce.pot[k]; }
 static double v_etotal(const pl_thermo_sample_t *s, int a)
