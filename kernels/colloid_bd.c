@@ -10,6 +10,7 @@
  * (the noise displacement / dt diverges as dt -> 0). */
 #include <math.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid_kernels.h"
 #include "peloid/rng.h"
 
@@ -38,7 +39,7 @@ void pl_colloid_bd_step(const pl_colloid_bd_params_t *p, size_t n, const double 
 #pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i) {
         double R = rad[i];
-        double zt = 6.0 * M_PI * p->eta * R, zr = 8.0 * M_PI * p->eta * R * R * R;
+        double zt = 6.0 * PL_PI * p->eta * R, zr = 8.0 * PL_PI * p->eta * R * R * R;
         double st = sqrt(2.0 * p->kT * dt / zt), sr = sqrt(2.0 * p->kT * dt / zr);
         pl_rand4_t a = pl_rng_uniform4(p->seed, PL_RNG_BD_NOISE, p->step, i, 0);
         pl_rand4_t b = pl_rng_uniform4(p->seed, PL_RNG_BD_NOISE, p->step, i, 1);

@@ -18,6 +18,8 @@
 
 #include <math.h>
 
+#include "peloid/real.h" /* PL_PI */
+
 typedef struct {
     double u, f, k2;
 } pl_pair_val_t;
@@ -104,7 +106,7 @@ static inline double pl_pair_lub_zeta(double h, double ri, double rj, double eta
 {
     double rred = ri * rj / (ri + rj);
     double he = (h > 0.0 ? h : 0.0) + hmin;
-    return 6.0 * M_PI * eta * rred * rred * (1.0 / he - 1.0 / (hcut + hmin));
+    return 6.0 * PL_PI * eta * rred * rred * (1.0 / he - 1.0 / (hcut + hmin));
 }
 
 #endif

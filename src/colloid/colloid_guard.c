@@ -16,6 +16,7 @@
  * are serial in index order, so the reported pair is thread-count independent. */
 #include <math.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
 #include "peloid/colloid_kernels.h"
 
@@ -63,7 +64,7 @@ int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err)
         w = argmax(c->g_omega2, n);
         double om2 = c->g_omega2[w];
         if (om2 > 0.0) {
-            double steps = M_PI / sqrt(om2) / c->dt;
+            double steps = PL_PI / sqrt(om2) / c->dt;
             if (steps < c->min_contact_steps)
                 return pl_err_set(err, PL_ERR_GUARD,
                                   "guard contact_steps: MD step %lld: colloids %zu and %d: the "
@@ -71,7 +72,7 @@ int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err)
                                   "%.3g MD steps of dt = %.4g; bound colloids.min_contact_steps = "
                                   "%g; raise colloids.substeps (or lower hertz.K / the stiffest "
                                   "term, e.g. dlvo.primary_depth)",
-                                  st, w, c->g_partner[n + w], M_PI / sqrt(om2), steps, c->dt,
+                                  st, w, c->g_partner[n + w], PL_PI / sqrt(om2), steps, c->dt,
                                   c->min_contact_steps);
         }
     }

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
 #include "peloid/colloid_pair.h"
 #include "peloid/depletion.h"
@@ -55,7 +56,7 @@ int pl_colloid_dlvo_setup(const pl_scene_dlvo_t *s, double d, pl_colloid_pair_pa
     double kT = K_B * s->temperature_K, a0 = s->length_unit_m;
     double ze = s->z * E_CHARGE;
     double psi = 4.0 * kT / ze * tanh(ze * s->psi0_mV * 1e-3 / (4.0 * kT));
-    p->coul_C = M_PI * s->eps_r * EPS0 * psi * psi * a0 / kT; /* Hecht Eq. 1, kT per a0 */
+    p->coul_C = PL_PI * s->eps_r * EPS0 * psi * psi * a0 / kT; /* Hecht Eq. 1, kT per a0 */
     p->kappa = s->kappa_per_m * a0;
     p->hamaker = s->hamaker_J / kT; /* Hecht Eq. 2, kT */
     double D = s->primary_depth, h0 = s->primary_gap;

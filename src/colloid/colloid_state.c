@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
 #include "peloid/colloid_pair.h"
 #include "peloid/rng.h"
@@ -373,7 +374,7 @@ int pl_colloid_create(const pl_scene_t *scene, int nthreads, pl_colloid_t **out,
     double ptot[3] = {0, 0, 0}, mtot = 0.0;
     for (size_t i = 0; i < c->n; ++i) {
         double R = c->rad[i];
-        c->mass[i] = cs->mass_density * 4.0 / 3.0 * M_PI * R * R * R;
+        c->mass[i] = cs->mass_density * 4.0 / 3.0 * PL_PI * R * R * R;
         c->inertia[i] = 0.4 * c->mass[i] * R * R;
         pl_rand4_t a = pl_rng_uniform4(c->seed, PL_RNG_COLLOID_VEL, 0, i, 0);
         pl_rand4_t b = pl_rng_uniform4(c->seed, PL_RNG_COLLOID_VEL, 0, i, 1);
@@ -429,8 +430,8 @@ int pl_colloid_create(const pl_scene_t *scene, int nthreads, pl_colloid_t **out,
     for (size_t i = 1; i < c->n; ++i)
         if (c->g_omega2[i] > c->g_omega2[stiff]) stiff = i;
     if (c->n && c->min_contact_steps > 0.0 && c->g_omega2[stiff] > 0.0 &&
-        M_PI / sqrt(c->g_omega2[stiff]) / c->dt < c->min_contact_steps) {
-        double tc = M_PI / sqrt(c->g_omega2[stiff]);
+        PL_PI / sqrt(c->g_omega2[stiff]) / c->dt < c->min_contact_steps) {
+        double tc = PL_PI / sqrt(c->g_omega2[stiff]);
         rc = pl_scene_fail(scene, err, OFF(colloids.init), "colloids.init",
                            "initial colloids %zu and %d: the collision time pi sqrt(m_red/U'') = %.4g t0 "
                            "is resolved by %.3g MD steps < colloids.min_contact_steps = %g (the contact "

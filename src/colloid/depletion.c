@@ -18,6 +18,7 @@
 #include <gsl/gsl_integration.h>
 #include <math.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/depletion.h"
 
 enum { WS = 1000 };
@@ -119,15 +120,15 @@ int pl_depletion_potential(const pl_depletion_params_t *p, double d, double *phi
         double v, e;
         s = gsl_integration_qag(&g, 0.0, c.rc, 1e-14 * c.rc * c.rc * c.rc, 1e-12, WS,
                                 GSL_INTEG_GAUSS61, w, &v, &e);
-        *phi = pre * 4.0 * M_PI * v;
+        *phi = pre * 4.0 * PL_PI * v;
     } else {
         double lo = fmax(0.0, d - c.rc), J = 0.0, dJ = 0.0; /* read only when both integrals succeeded */
         gsl_function gj = {j_integrand, &c}, gd = {dj_integrand, &c};
         s = integrate(&c, &gj, lo, c.rc, d, w, &J);
         if (!s) s = integrate(&c, &gd, lo, c.rc, d, w, &dJ);
         if (!s) s = c.status;
-        *phi = pre * 2.0 * M_PI / d * J;
-        *dphi = pre * 2.0 * M_PI / d * (dJ - J / d);
+        *phi = pre * 2.0 * PL_PI / d * J;
+        *dphi = pre * 2.0 * PL_PI / d * (dJ - J / d);
     }
     gsl_integration_workspace_free(w);
     gsl_integration_workspace_free(c.w_in);
@@ -143,7 +144,7 @@ double pl_depletion_hs(double sigma_cf, double density, double kT, double d)
 {
     if (d >= 2.0 * sigma_cf) return 0.0;
     double x = d / sigma_cf; /* PL Eq. 24 */
-    return -density * kT * 4.0 / 3.0 * M_PI * sigma_cf * sigma_cf * sigma_cf *
+    return -density * kT * 4.0 / 3.0 * PL_PI * sigma_cf * sigma_cf * sigma_cf *
            (1.0 - 0.75 * x + x * x * x / 16.0);
 }
 

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
 #include "peloid/sim.h"

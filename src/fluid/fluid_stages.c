@@ -7,6 +7,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/coupling.h"
 #include "peloid/mapping.h"
 #include "peloid/module.h"

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/mapping.h"
 
 void pl_mapping_warn(pl_mapping_t *m, int severity, const char *name, double value, const char *fmt, ...)
@@ -106,9 +107,9 @@ static void audit_hecht(pl_mapping_t *m)
                         "tau_P/tau_G = %.3g >= 1 (Hecht Sec. VII.B: tau_P < tau_G so that particles relax "
                         "between Brownian encounters): lower coarse_graining.mean_free_path or cell_size",
                         h->tau_P / h->tau_G);
-    if (isfinite(h->tau_V) && h->tau_P > h->tau_V / (4.0 * M_PI)) {
+    if (isfinite(h->tau_V) && h->tau_P > h->tau_V / (4.0 * PL_PI)) {
         double r = h->tau_V / h->tau_P;
-        int real_creeping = m->hecht_real.tau_P <= m->hecht_real.tau_V / (4.0 * M_PI);
+        int real_creeping = m->hecht_real.tau_P <= m->hecht_real.tau_V / (4.0 * PL_PI);
         pl_mapping_warn(m, PL_SEV_NOTE, "HECHT_CREEPING", r,
                         "tau_V/tau_P = %.3g < 4 pi (Hecht Eq. 27): contacts are not creeping in the model%s; "
                         "Hecht restores creeping with the lubrication force (Eq. 4) - keep it on",

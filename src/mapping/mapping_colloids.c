@@ -25,6 +25,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
 #include "peloid/colloid_pair.h"
 #include "peloid/scene.h"
@@ -157,12 +158,12 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
     }
     double d = 2.0 * cs->radius, dt = s->srd.dt;
     double shrink = 1.0 - sqrt(3.0) * cs->polydispersity; /* smallest colloid of the distribution */
-    double mass = cs->mass_density * 4.0 / 3.0 * M_PI * pow(cs->radius * shrink, 3.0);
+    double mass = cs->mass_density * 4.0 / 3.0 * PL_PI * pow(cs->radius * shrink, 3.0);
     double m_red = 0.5 * mass;
     double e_reach = mp->cg.reach_energy, h_at = 0.0, h_reach = 0.0;
     double k2 = stiffest(&p, d, cs->max_overlap, e_reach, &h_at, &h_reach);
     long long n_map = mp->map.md_substeps, n_contact = 0, n_damp = 0;
-    c->contact_time = k2 > 0.0 ? M_PI * sqrt(m_red / k2) : INFINITY;
+    c->contact_time = k2 > 0.0 ? PL_PI * sqrt(m_red / k2) : INFINITY;
     if (cs->min_contact_steps > 0.0 && k2 > 0.0)
         n_contact = (long long)ceil(1.05 * cs->min_contact_steps * dt / c->contact_time);
     /* dissipative rate zeta / m_red <= 0.5 / dt_MD (the damping guard) */
@@ -352,7 +353,7 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     cs->dlvo.length_unit_m = m->a0;
     if (mask & PL_CT_HERTZ) cs->hertz.K = K;
     s->coupling.method = method;
-    double M = cs->mass_density * 4.0 / 3.0 * M_PI * pow(cs->radius, 3.0);
+    double M = cs->mass_density * 4.0 / 3.0 * PL_PI * pow(cs->radius, 3.0);
     c->mass_density = cs->mass_density;
     c->inertia = 0.4 * M * cs->radius * cs->radius;
     c->hertz_K = cs->hertz.K;

@@ -7,25 +7,26 @@
  * Lambda = rho/kT argument (Sec. VII.B); PL Sec. VII examples 1-3. */
 #include <math.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/mapping.h"
 
 void pl_mapping_hecht_times(const pl_mapping_system_t *s, pl_mapping_hecht_times_t *t)
 {
     double R = s->radius;
     double eta = s->nu * s->rho_f;
-    t->mass = 4.0 / 3.0 * M_PI * R * R * R * s->rho_p;
+    t->mass = 4.0 / 3.0 * PL_PI * R * R * R * s->rho_p;
     /* Stokes velocity, Hecht Eq. 16; without buoyancy (model, Eq. 31) the
      * force is m g instead of (m - m_w) g. */
     double drho = s->buoyancy ? s->rho_p - s->rho_f : s->rho_p;
     t->v_s = s->g > 0 ? 2.0 / 9.0 * R * R * s->g * drho / eta : NAN;
-    t->D = s->kT / (6.0 * M_PI * eta * R);                 /* Hecht Eq. 18 */
+    t->D = s->kT / (6.0 * PL_PI * eta * R);                 /* Hecht Eq. 18 */
     t->tau_S = s->g > 0 && drho != 0 ? 2.0 * R / t->v_s : NAN; /* Hecht Eq. 17 */
     t->tau_D = 2.0 * R * R / t->D;                         /* Hecht Eq. 20 */
     t->tau_G = t->tau_D / 16.0;                            /* Hecht Sec. VI, gap R/2 */
     t->tau_P = 2.0 * R * R * s->rho_p / (9.0 * s->nu * s->rho_f); /* Hecht Eq. 23 */
     t->tau_F = 2.0 * R * R / s->nu;                        /* Hecht Eq. 24 */
     t->tau_V = s->hamaker > 0 && s->l_min > 0
-                   ? 2.0 * M_PI * sqrt(t->mass * s->l_min * s->l_min / s->hamaker) /* Hecht Eq. 26 */
+                   ? 2.0 * PL_PI * sqrt(t->mass * s->l_min * s->l_min / s->hamaker) /* Hecht Eq. 26 */
                    : NAN;
     t->Pe = t->tau_D / t->tau_S; /* Hecht Eq. 21 */
     t->Re = t->tau_F / t->tau_S; /* Hecht Eq. 25 */
@@ -66,7 +67,7 @@ static double time_unit(const pl_mapping_system_t *r, const pl_mapping_cg_t *cg,
     }
     /* Hecht Eq. 30 / PL example 1: the colloid diffusion coefficient (hence
      * tau_D and, with the same R, Pe) equals the real one (Hecht Eq. 18). */
-    double D_real = r->kT / (6.0 * M_PI * r->nu * r->rho_f * r->radius);
+    double D_real = r->kT / (6.0 * PL_PI * r->nu * r->rho_f * r->radius);
     return m->d_col_sim * m->a0 * m->a0 / D_real;
 }
 

@@ -9,6 +9,7 @@
  * (PL Table VI caption: a ~ sigma_cf). */
 #include <math.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/mapping.h"
 
 void pl_mapping_pl_colloid(double sigma, double rho_ratio, double v_sim, const pl_mapping_cg_t *cg,
@@ -18,12 +19,12 @@ void pl_mapping_pl_colloid(double sigma, double rho_ratio, double v_sim, const p
     m->sigma = sigma;
     m->nu_sim = pl_mapping_nu(cg->viscosity, lambda, gamma, cg->alpha);
     /* Hecht's rule rotates by 90 deg; PL Eq. 6 is evaluated at its angle. */
-    double alpha = cg->viscosity == PL_VISC_HECHT28 ? 0.5 * M_PI : cg->alpha;
+    double alpha = cg->viscosity == PL_VISC_HECHT28 ? 0.5 * PL_PI : cg->alpha;
     m->d_fluid_sim = pl_mapping_d_fluid(lambda, gamma, alpha);
-    m->mass_sim = rho_ratio * gamma * 4.0 / 3.0 * M_PI * sigma * sigma * sigma; /* PL Table VI */
+    m->mass_sim = rho_ratio * gamma * 4.0 / 3.0 * PL_PI * sigma * sigma * sigma; /* PL Table VI */
     double eta = gamma * m->nu_sim;                                   /* PL Eq. 13: eta = rho_f nu */
     double k = cg->boundary == PL_BOUNDARY_STICK ? 6.0 : 4.0;         /* PL Eq. 39 and below */
-    m->xi_stokes_sim = k * M_PI * eta * sigma;
+    m->xi_stokes_sim = k * PL_PI * eta * sigma;
     m->xi_enskog_sim = pl_mapping_xi_enskog(sigma, m->mass_sim, gamma, cg->boundary);
     m->xi_sim = cg->enskog ? 1.0 / (1.0 / m->xi_stokes_sim + 1.0 / m->xi_enskog_sim) /* PL Eq. 41 */
                            : m->xi_stokes_sim;
@@ -51,8 +52,8 @@ void pl_mapping_pl_real(const pl_mapping_system_t *r, const pl_mapping_solvent_t
 {
     const double a = r->radius;
     double eta = r->rho_f * r->nu;
-    double mass = 4.0 / 3.0 * M_PI * a * a * a * r->rho_p;
-    double xi_s = (boundary == PL_BOUNDARY_STICK ? 6.0 : 4.0) * M_PI * eta * a;
+    double mass = 4.0 / 3.0 * PL_PI * a * a * a * r->rho_p;
+    double xi_s = (boundary == PL_BOUNDARY_STICK ? 6.0 : 4.0) * PL_PI * eta * a;
     double D = r->kT / xi_s; /* PL Table V neglects the Enskog term */
     t->t_cs = sv->sound_speed > 0 ? a / sv->sound_speed : NAN;
     t->tau_nu = a * a / r->nu;

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "json_build.h"
 #include "peloid/scene.h"
 
@@ -63,12 +64,12 @@ static void fill_inputs(const pl_scene_t *s, pl_mapping_system_t *r, pl_mapping_
     cg->fluid_gravity = c->fluid_gravity;
     cg->cell_over_R = c->cell_size > 0 ? c->cell_size
                       : c->coupling == PL_COUPLING_I ? 0.5
-                                                     : cbrt(4.0 * M_PI / 3.0);
+                                                     : cbrt(4.0 * PL_PI / 3.0);
     cg->gamma = c->particles_per_cell;
     cg->lambda = c->mean_free_path;
     /* The rotation rule of srd{} picks the viscosity formula. */
     cg->viscosity = s->srd.rule == PL_RULE_HECHT_AXES ? PL_VISC_HECHT28 : PL_VISC_PL;
-    cg->alpha = s->srd.rule == PL_RULE_HECHT_AXES ? 0.5 * M_PI : s->srd.alpha_deg * M_PI / 180.0;
+    cg->alpha = s->srd.rule == PL_RULE_HECHT_AXES ? 0.5 * PL_PI : s->srd.alpha_deg * PL_PI / 180.0;
     cg->srd_dt = c->srd_dt;
     cg->md_dt = c->md_dt;
     cg->md_resolution = c->md_resolution;
@@ -106,7 +107,7 @@ static int electrostatics(pl_scene_t *s, pl_err_t *err)
     /* Hecht Eq. 1 prefactor pi eps_r eps0 [4kT/(ze) tanh(z e Psi0/(4kT))]^2 in J/m. */
     double ze = (double)p->valence * PL_E_CHARGE;
     double b = 4.0 * kT / ze * tanh(ze * p->surface_potential / (4.0 * kT));
-    double pref = M_PI * p->permittivity * PL_EPS0 * b * b;
+    double pref = PL_PI * p->permittivity * PL_EPS0 * b * b;
     mp->colloid.coulomb = pref * mp->map.a0 / kT;
     mp->colloid.kappa = mp->kappa * mp->map.a0;
     return 0;
@@ -133,7 +134,7 @@ static int apply_box(pl_scene_t *s, pl_err_t *err)
     }
     double V = 1.0;
     for (int d = 0; d < 3; ++d) V *= s->box.cells[d] * a0;
-    double vc = 4.0 / 3.0 * M_PI * pow(p->radius, 3);
+    double vc = 4.0 / 3.0 * PL_PI * pow(p->radius, 3);
     pl_mapping_colloid_t *c = &s->mapping.colloid;
     c->n_colloids = (long long)floor(p->volume_fraction * V / vc + 0.5);
     c->phi_given = p->volume_fraction;

@@ -8,6 +8,7 @@
  */
 #include <math.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/mapping.h"
 #include "peloid/srd_theory.h"
 
@@ -47,7 +48,7 @@ double pl_mapping_xi_enskog(double sigma, double mc, double gamma, int boundary)
      * reduced mass mu = M m_f/(M + m_f) (the paper prints M + m_f in the
      * numerator's place; the reduced mass is meant). */
     double mu = mc / (mc + 1.0);
-    double xi = 8.0 / 3.0 * sqrt(2.0 * M_PI * mu) * gamma * sigma * sigma;
+    double xi = 8.0 / 3.0 * sqrt(2.0 * PL_PI * mu) * gamma * sigma * sigma;
     if (boundary == PL_BOUNDARY_STICK) {
         /* Stick (stochastic, rough-sphere) boundaries: PL Table VI uses the
          * stick form of ref. [58], not printed in PL.  The kinetic-theory

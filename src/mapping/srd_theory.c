@@ -1,5 +1,6 @@
 /* SRD transport coefficients: PL Eqs. 4, 6, 9-15 (random-axis rule); friction
  * of a slip sphere: PL Eqs. 40-43 and the Hasimoto finite-size correction. */
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/srd_theory.h"
 
 #include <math.h>
@@ -33,7 +34,6 @@ void pl_srd_theory(double g, double a, double dt, double kT, pl_srd_theory_t *o)
     o->c_s = sqrt(5.0 * kT / 3.0);
 }
 
-static const double PL_PI = 3.14159265358979323846;
 static const double HASIMOTO = 2.837297; /* periodic simple-cubic lattice sum */
 
 double pl_srd_xi_enskog(double gamma, double kT, double sigma, double M)

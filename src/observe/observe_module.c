@@ -42,6 +42,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "json_build.h"
 #include "peloid/blocking.h"
 #include "peloid/cluster.h"

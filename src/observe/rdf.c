@@ -1,6 +1,7 @@
 /* g(r) accumulator: geometry checks, the ideal-gas normalisation of each
  * sample and the per-bin blocking (equations in include/peloid/rdf.h; the
  * pair count is kernels/rdf_count.c). */
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/rdf.h"
 
 #include <math.h>
@@ -8,7 +9,6 @@
 
 #include "peloid/blocking.h"
 
-static const double PI = 3.14159265358979323846;
 
 struct pl_rdf {
     pl_rdf_params_t par;
@@ -23,14 +23,14 @@ struct pl_rdf {
 /* G(r) = int_0^r 4 pi s^2 F(s) ds for the slab of thickness h. */
 static double slab_G(double r, double h)
 {
-    if (r <= h) return 4.0 * PI * (r * r * r / 3.0 - r * r * r * r / (8.0 * h));
-    return 5.0 * PI * h * h * h / 6.0 + PI * h * (r * r - h * h);
+    if (r <= h) return 4.0 * PL_PI * (r * r * r / 3.0 - r * r * r * r / (8.0 * h));
+    return 5.0 * PL_PI * h * h * h / 6.0 + PL_PI * h * (r * r - h * h);
 }
 
 double pl_rdf_ideal_fraction(const pl_rdf_params_t *par, double r1, double r2)
 {
     const double Lx = par->box[0], Ly = par->box[1];
-    if (!par->z_walls) return 4.0 * PI / 3.0 * (r2 * r2 * r2 - r1 * r1 * r1) / (Lx * Ly * par->box[2]);
+    if (!par->z_walls) return 4.0 * PL_PI / 3.0 * (r2 * r2 * r2 - r1 * r1 * r1) / (Lx * Ly * par->box[2]);
     double h = par->zhi - par->zlo;
     return (slab_G(r2, h) - slab_G(r1, h)) / (Lx * Ly * h);
 }
