@@ -8,6 +8,8 @@
 #ifndef PELOID_MODULE_H
 #define PELOID_MODULE_H
 
+#include <stdint.h>
+
 #include "peloid/error.h"
 #include "peloid/sim.h"
 #include "peloid/thermo.h"
@@ -31,6 +33,11 @@ typedef struct pl_module {
     /* At the end of a run: writes its output files into dir and adds what it
      * measured to summary.json (NULL: nothing). */
     int (*finish)(pl_sim_t *sim, const char *dir, struct json_t *doc, pl_err_t *err);
+    /* Its checkpoint items, written into and read from the open HDF5 file
+     * `file` (an hid_t) after the fluid's, in module order (NULL: none);
+     * write: 0 or -1; read: 0 or PL_ERR_INPUT naming path and item. */
+    int (*checkpoint_write)(int64_t file, const pl_sim_t *sim);
+    int (*checkpoint_read)(int64_t file, pl_sim_t *sim, const char *path, pl_err_t *err);
 } pl_module_t;
 
 /* The modules, NULL-terminated, in the order they are created, their stages

@@ -4,6 +4,7 @@
  * settings in summary.json. */
 #include <jansson.h>
 
+#include "checkpoint_h5.h"
 #include "json_build.h"
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
@@ -113,6 +114,17 @@ static int colloid_summary(const pl_sim_t *sim, json_t *doc, pl_err_t *err)
     return b.failed ? err->code : 0;
 }
 
+/* Group /colloids of the checkpoint (src/io/checkpoint_colloid.c). */
+static int colloid_ckpt_write(int64_t f, const pl_sim_t *sim)
+{
+    return sim->colloids ? pl_ckpt_colloid_write((hid_t)f, sim->colloids) : 0;
+}
+
+static int colloid_ckpt_read(int64_t f, pl_sim_t *sim, const char *path, pl_err_t *err)
+{
+    return sim->colloids ? pl_ckpt_colloid_read((hid_t)f, sim->colloids, &sim->scene, path, err) : 0;
+}
+
 const pl_module_t pl_colloid_module = {
     .name = "colloids",
     .create = colloid_create,
@@ -120,4 +132,6 @@ const pl_module_t pl_colloid_module = {
     .add_stages = colloid_stages,
     .thermo_columns = colloid_columns,
     .summary = colloid_summary,
+    .checkpoint_write = colloid_ckpt_write,
+    .checkpoint_read = colloid_ckpt_read,
 };

@@ -3,6 +3,7 @@
  * pinned colloids, drift removal), adds its stages at their slots around
  * the fluid's, and its thermo columns (coupling I event counters, the drag
  * on pinned colloids).  Hecht Secs. IV-V, VIII.A; PL Secs. III, V. */
+#include "checkpoint_h5.h"
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
 #include "peloid/module.h"
@@ -86,10 +87,25 @@ static void coupling_columns(const pl_sim_t *sim, pl_thermo_table_t *t)
     if (sim->coupling->pinned) pl_thermo_add(t, pinned_cols, 3);
 }
 
+/* /wall_impulse (walls) and group /coupling: the run counters
+ * (src/io/checkpoint_coupling.c); written for any scene with walls. */
+static int coupling_ckpt_write(int64_t f, const pl_sim_t *sim) { return pl_ckpt_coupling_write((hid_t)f, sim); }
+
+static int coupling_ckpt_read(int64_t f, pl_sim_t *sim, const char *path, pl_err_t *err)
+{
+    /* the colloid set-up the reader redoes knows nothing of the coupling:
+     * coupled colloids exchange energy with the fluid, no NVE drift guard
+     * (as pl_coupling_create decided) */
+    if (sim->colloids && sim->coupling && sim->coupling->method != PL_COUPLE_NONE) sim->colloids->nve = 0;
+    return pl_ckpt_coupling_read((hid_t)f, sim, path, err);
+}
+
 const pl_module_t pl_coupling_module = {
     .name = "coupling",
     .create = coupling_create,
     .destroy = coupling_destroy,
     .add_stages = coupling_stages,
     .thermo_columns = coupling_columns,
+    .checkpoint_write = coupling_ckpt_write,
+    .checkpoint_read = coupling_ckpt_read,
 };

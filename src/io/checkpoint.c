@@ -28,6 +28,7 @@
 #include "peloid/coupling.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
+#include "peloid/module.h"
 
 #define H5_REAL (sizeof(pl_real) == sizeof(double) ? H5T_NATIVE_DOUBLE : H5T_NATIVE_FLOAT)
 
@@ -79,8 +80,8 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
     }
     if (g >= 0) H5Gclose(g);
     else bad = 1;
-    if (sim->colloids) bad |= pl_ckpt_colloid_write(f, sim->colloids);
-    bad |= pl_ckpt_coupling_write(f, sim);
+    for (int m = 0; pl_modules[m]; ++m) /* each module's items (colloids, coupling) */
+        if (pl_modules[m]->checkpoint_write) bad |= pl_modules[m]->checkpoint_write(f, sim) != 0;
     /* kT_cell of the last collision: the thermo row at the restart step */
     bad |= pl_ckpt_write_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, &sim->last_kT_meas, 1);
     if (bad) {
@@ -254,13 +255,8 @@ int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, 
     if (!rc && H5Lexists(f, "kT_cell", H5P_DEFAULT) > 0)
         rc = pl_ckpt_read_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, &sim->last_kT_meas, 1, path, err);
     if (!rc) rc = check_fluid(sim, path, err);
-    if (!rc && sim->colloids) rc = pl_ckpt_colloid_read(f, sim->colloids, sc, path, err);
-    /* the colloid set-up the reader redoes knows nothing of the coupling:
-     * coupled colloids exchange energy with the fluid, no NVE drift guard
-     * (as pl_coupling_create decided) */
-    if (!rc && sim->colloids && sim->coupling && sim->coupling->method != PL_COUPLE_NONE)
-        sim->colloids->nve = 0;
-    if (!rc) rc = pl_ckpt_coupling_read(f, sim, path, err);
+    for (int m = 0; !rc && pl_modules[m]; ++m)
+        if (pl_modules[m]->checkpoint_read) rc = pl_modules[m]->checkpoint_read(f, sim, path, err);
 close:
     H5Fclose(f);
 out:
