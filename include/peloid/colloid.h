@@ -101,6 +101,10 @@ void pl_colloid_depletion_params(const pl_scene_t *scene, pl_depletion_params_t 
  * depletion_comp table itself is built by pl_colloid_setup). */
 int pl_colloid_pair_params(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
                            pl_colloid_dlvo_info_t *info, pl_err_t *err);
+/* The one pair cut-off (centre distance) of the terms in p for colloids of
+ * radius up to rmax: contact plus the gap cut-off, the WCA and depletion
+ * ranges; the neighbour list and the minimum-image check use it. */
+double pl_colloid_pair_cutoff(const pl_colloid_pair_params_t *p, double rmax);
 
 /* State from a validated scene: radii, masses, positions (lattice / random /
  * file), velocities, forces at t = 0.  An initial overlap beyond

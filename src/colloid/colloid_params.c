@@ -214,3 +214,11 @@ void pl_colloid_depletion_params(const pl_scene_t *scene, pl_depletion_params_t 
     dp->density = scene->fluid.density;
     dp->kT = pl_scene_kT(scene);
 }
+
+double pl_colloid_pair_cutoff(const pl_colloid_pair_params_t *p, double rmax)
+{
+    double rc = 2.0 * rmax + p->gap_cut;
+    if (p->terms & PL_CT_WCA) rc = fmax(rc, (p->wca_sigma > 0.0 ? p->wca_sigma : 2.0 * rmax) * p->wca_rfac);
+    if (p->terms & PL_CT_DEPL) rc = fmax(rc, p->dep_rc);
+    return rc;
+}

@@ -72,12 +72,7 @@ int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err)
         return pl_scene_fail(scene, err, OFF(colloids.dlvo.primary_depth), "dlvo.primary_depth",
                              "%s", sub.msg);
     double rmax = cs->radius * (1.0 + sqrt(3.0) * cs->polydispersity);
-    double rc = 2.0 * rmax + p.gap_cut;
-    if (mask & PL_CT_WCA) {
-        double sg = p.wca_sigma > 0.0 ? p.wca_sigma : 2.0 * rmax;
-        rc = fmax(rc, sg * p.wca_rfac);
-    }
-    if (mask & PL_CT_DEPL) rc = fmax(rc, p.dep_rc);
+    const double rc = pl_colloid_pair_cutoff(&p, rmax);
     for (int k = 0; k < 3; ++k) {
         if (!p.periodic[k]) continue;
         if (rc > 0.5 * scene->box.cells[k])

@@ -238,9 +238,7 @@ int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
      * skin capped so the list keeps to the minimum image); cells sized by it */
     double rmax = 0.0;
     for (size_t i = 0; i < c->n; ++i) rmax = fmax(rmax, c->rad[i]);
-    double rc = 2.0 * rmax + c->pair.gap_cut;
-    if (t & PL_CT_WCA) rc = fmax(rc, (c->pair.wca_sigma > 0 ? c->pair.wca_sigma : 2.0 * rmax) * c->pair.wca_rfac);
-    if (t & PL_CT_DEPL) rc = fmax(rc, c->pair.dep_rc);
+    const double rc = pl_colloid_pair_cutoff(&c->pair, rmax);
     if (pl_colloid_neighbors_init(c, rc, cs->neighbor_skin, err)) return err->code;
     if (pl_colloid_forces(c, err)) return err->code;
     pl_colloid_energy_t e;
