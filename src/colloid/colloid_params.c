@@ -14,7 +14,11 @@ static const double E_CHARGE = 1.602176634e-19, K_B = 1.380649e-23, EPS0 = 8.854
 
 int pl_colloid_parse_pairs(const char *list, unsigned *mask, char *bad, size_t nbad)
 {
-    static const char *const names[] = {"dlvo", "hertz", "lubrication", "wca", "depletion_comp"};
+    /* the name of each term bit (PL_CT_*, colloid_kernels.h) */
+    static const struct { const char *name; unsigned bit; } names[] = {
+        {"dlvo", PL_CT_DLVO}, {"hertz", PL_CT_HERTZ}, {"lubrication", PL_CT_LUB}, {"wca", PL_CT_WCA},
+        {"depletion_comp", PL_CT_DEPL},
+    };
     *mask = 0;
     const char *s = list;
     while (*s) {
@@ -22,9 +26,9 @@ int pl_colloid_parse_pairs(const char *list, unsigned *mask, char *bad, size_t n
         if (!*s) break;
         size_t len = strcspn(s, ", \t");
         int found = 0;
-        for (unsigned k = 0; k < 5; ++k)
-            if (strlen(names[k]) == len && !strncmp(s, names[k], len)) {
-                *mask |= 1u << k;
+        for (size_t k = 0; k < sizeof names / sizeof names[0]; ++k)
+            if (strlen(names[k].name) == len && !strncmp(s, names[k].name, len)) {
+                *mask |= names[k].bit;
                 found = 1;
             }
         if (!found) {
