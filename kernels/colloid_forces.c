@@ -285,11 +285,14 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
         _Pragma("omp for schedule(static)") for (size_t i = 0; i < v->n; ++i)              \
             owner_pairs(p, nl, v, i, m, E);                                                \
         break;
-#define ALL_CASES \
-    CASE(0) CASE(1) CASE(2) CASE(3) CASE(4) CASE(5) CASE(6) CASE(7) \
-    CASE(8) CASE(9) CASE(10) CASE(11) CASE(12) CASE(13) CASE(14) CASE(15) \
-    CASE(16) CASE(17) CASE(18) CASE(19) CASE(20) CASE(21) CASE(22) CASE(23) \
-    CASE(24) CASE(25) CASE(26) CASE(27) CASE(28) CASE(29) CASE(30) CASE(31)
+/* Every mask 0..PL_CT_ALL, by doubling (a new term bit adds one level). */
+#define CASES2(b) CASE((b)) CASE((b) + 1)
+#define CASES4(b) CASES2(b) CASES2((b) + 2)
+#define CASES8(b) CASES4(b) CASES4((b) + 4)
+#define CASES16(b) CASES8(b) CASES8((b) + 8)
+#define CASES32(b) CASES16(b) CASES16((b) + 16)
+_Static_assert(PL_CT_ALL == 31u, "one CASES level per pair-term bit: extend ALL_CASES");
+#define ALL_CASES CASES32(0)
 
 /* Pass 2: the pairs others own with i, in ascending owner index (Newton's
  * third law: the force on i is minus the force on the owner). */
