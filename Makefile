@@ -122,12 +122,13 @@ check: check-unit check-cli check-asan
 
 # The long physics validations (each several minutes on 2 cores) run in
 # `make validate`; `make check` runs everything else.  CI runs both.
-VALIDATE_TESTS := test_coupling_drag test_coupling_vacf
+VALIDATE_TESTS := test_coupling_drag test_coupling_vacf test_coupling_depletion test_coupling_thermal
 VALIDATE_BIN := $(patsubst %,$(BUILD)/tests/%,$(VALIDATE_TESTS))
 CHECK_BIN := $(filter-out $(VALIDATE_BIN),$(TEST_BIN))
 
 check-unit: $(CHECK_BIN)
-	@set -e; for t in $(CHECK_BIN); do echo "== $$t"; $$t --jobs 1; done
+	@set -e; for t in $(CHECK_BIN); do echo "== $$t"; s=$$(date +%s); $$t --jobs 1; \
+	  echo "   ($$t: $$(( $$(date +%s) - s )) s)"; done
 
 validate: $(VALIDATE_BIN)
 	@set -e; for t in $(VALIDATE_BIN); do echo "== $$t"; $$t --jobs 1; done
