@@ -110,8 +110,8 @@ typedef struct pl_observe {
 
 static int any_observer(const pl_scene_observe_t *o)
 {
-    return o->rdf_interval > 0 || o->msd_interval > 0 || o->vacf_interval > 0 || o->clusters_interval > 0 || o->vdist_interval > 0 ||
-           o->sediment_interval > 0;
+    return o->rdf_interval > 0 || o->msd_interval > 0 || o->vacf_interval > 0 || o->clusters_interval > 0 ||
+           o->vdist_interval > 0 || o->sediment_interval > 0;
 }
 
 /* ---- scene checks ------------------------------------------------------ */

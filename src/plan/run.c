@@ -1,7 +1,8 @@
 /* The run: build the simulation, open the outputs, add the writers to the
- * plan, walk it, then the final checkpoint, fields and summary.  Order matters for "nothing written on bad input": the scene is
- * validated, the sim built and any restart checkpoint read before the output
- * directory is created. */
+ * plan, walk it, then the final checkpoint, fields, each module's outputs
+ * and the summary.  Order matters for "nothing written on bad input": the
+ * scene is validated, the sim built and any restart checkpoint read before
+ * the output directory is created. */
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
