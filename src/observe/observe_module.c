@@ -635,6 +635,44 @@ static int series(hid_t obs, const char *name, size_t n, const long long *step, 
     return bad ? -1 : 0;
 }
 
+/* /observables/<name>/{lag, origins, value, value_se} of a multiple-tau
+ * correlator, the lags with at least one origin; 0 or -1. */
+static int write_mtau(hid_t obs, const char *name, const pl_mtau_t *c, const char *unit)
+{
+    const size_t nl = pl_mtau_nlags(c);
+    double *lag = malloc(nl * (1 + 2 * PL_MTAU_COLS) * sizeof(double));
+    uint64_t *org = malloc(nl * sizeof(uint64_t));
+    hid_t g = pl_h5_group(obs, name);
+    int bad = !lag || !org || g < 0;
+    if (!bad) {
+        double *val = lag + nl, *se = val + nl * PL_MTAU_COLS;
+        pl_mtau_result(c, lag, org, val, se);
+        size_t n = 0; /* the lags with an origin */
+        while (n < nl && org[n] > 0) ++n;
+        for (size_t k = 0; k < n * PL_MTAU_COLS; ++k)
+            if (!isfinite(se[k])) se[k] = 0.0; /* one colloid: no spread */
+        hsize_t d1[1] = {n}, d2[2] = {n, PL_MTAU_COLS};
+        bad |= put(g, "lag", H5T_NATIVE_DOUBLE, 1, d1, lag, "t0") != 0;
+        bad |= put(g, "origins", H5T_NATIVE_UINT64, 1, d1, org, NULL) != 0;
+        bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, val, unit) != 0;
+        bad |= put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, se, unit) != 0;
+        bad |= pl_h5_attr_str(g, "columns", "x y z sum") != 0;
+    }
+    if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+    free(lag);
+    free(org);
+    return bad ? -1 : 0;
+}
+
+/* Components sampled into velocity histogram k (0: none, e.g. Brownian
+ * colloids have no velocity). */
+static uint64_t vdist_total(const pl_observe_t *o, int k)
+{
+    uint64_t tot = 0;
+    for (size_t b = 0; o->vd[k] && b < VD_BINS + 2; ++b) tot += pl_vdist_counts(o->vd[k], 3)[b];
+    return tot;
+}
+
 static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path, pl_err_t *err)
 {
     char tmp[4200];
@@ -669,54 +707,9 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
         if (g >= 0 && H5Gclose(g) < 0) bad = 1;
         free(buf);
     }
-    if (!bad && o->msd && pl_mtau_samples(o->msd) > 1) {
-        const size_t nl = pl_mtau_nlags(o->msd);
-        double *lag = malloc(nl * (1 + 2 * PL_MTAU_COLS) * sizeof(double));
-        uint64_t *org = malloc(nl * sizeof(uint64_t));
-        hid_t g = pl_h5_group(obs, "colloid_msd");
-        bad |= !lag || !org || g < 0;
-        if (!bad) {
-            double *val = lag + nl, *se = val + nl * PL_MTAU_COLS;
-            pl_mtau_result(o->msd, lag, org, val, se);
-            size_t n = 0; /* the lags with an origin */
-            while (n < nl && org[n] > 0) ++n;
-            for (size_t k = 0; k < n * PL_MTAU_COLS; ++k)
-                if (!isfinite(se[k])) se[k] = 0.0; /* one colloid: no spread */
-            hsize_t d1[1] = {n}, d2[2] = {n, PL_MTAU_COLS};
-            bad |= put(g, "lag", H5T_NATIVE_DOUBLE, 1, d1, lag, "t0") != 0;
-            bad |= put(g, "origins", H5T_NATIVE_UINT64, 1, d1, org, NULL) != 0;
-            bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, val, "a0^2") != 0;
-            bad |= put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, se, "a0^2") != 0;
-            bad |= pl_h5_attr_str(g, "columns", "x y z sum") != 0;
-        }
-        if (g >= 0 && H5Gclose(g) < 0) bad = 1;
-        free(lag);
-        free(org);
-    }
-    if (!bad && o->vacf && pl_mtau_samples(o->vacf) > 1) {
-        const size_t nl = pl_mtau_nlags(o->vacf);
-        double *lag = malloc(nl * (1 + 2 * PL_MTAU_COLS) * sizeof(double));
-        uint64_t *org = malloc(nl * sizeof(uint64_t));
-        hid_t g = pl_h5_group(obs, "colloid_vacf");
-        bad |= !lag || !org || g < 0;
-        if (!bad) {
-            double *val = lag + nl, *se = val + nl * PL_MTAU_COLS;
-            pl_mtau_result(o->vacf, lag, org, val, se);
-            size_t n = 0;
-            while (n < nl && org[n] > 0) ++n;
-            for (size_t k = 0; k < n * PL_MTAU_COLS; ++k)
-                if (!isfinite(se[k])) se[k] = 0.0;
-            hsize_t d1[1] = {n}, d2[2] = {n, PL_MTAU_COLS};
-            bad |= put(g, "lag", H5T_NATIVE_DOUBLE, 1, d1, lag, "t0") != 0;
-            bad |= put(g, "origins", H5T_NATIVE_UINT64, 1, d1, org, NULL) != 0;
-            bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, val, "a0^2/t0^2") != 0;
-            bad |= put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, se, "a0^2/t0^2") != 0;
-            bad |= pl_h5_attr_str(g, "columns", "x y z sum") != 0;
-        }
-        if (g >= 0 && H5Gclose(g) < 0) bad = 1;
-        free(lag);
-        free(org);
-    }
+    if (!bad && o->msd && pl_mtau_samples(o->msd) > 1) bad |= write_mtau(obs, "colloid_msd", o->msd, "a0^2") != 0;
+    if (!bad && o->vacf && pl_mtau_samples(o->vacf) > 1)
+        bad |= write_mtau(obs, "colloid_vacf", o->vacf, "a0^2/t0^2") != 0;
     if (!bad && o->cl && o->c_n > 0) {
         static const char *const nm[3] = {"cluster_number", "largest_cluster", "mean_cluster_size"};
         for (int k = 0; k < 3 && !bad; ++k) bad |= series(obs, nm[k], o->c_n, o->c_step, dt, o->c_val[k], "1") != 0;
@@ -755,9 +748,7 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
     }
     static const char *const vname[2] = {"fluid_velocity_distribution", "colloid_velocity_distribution"};
     for (int k = 0; !bad && k < 2; ++k) {
-        uint64_t tot = 0; /* no sample (e.g. Brownian colloids have no velocity): no group */
-        for (size_t b = 0; o->vd[k] && b < VD_BINS + 2; ++b) tot += pl_vdist_counts(o->vd[k], 3)[b];
-        if (!tot) continue;
+        if (!vdist_total(o, k)) continue; /* no sample: no group */
         hid_t g = pl_h5_group(obs, vname[k]);
         bad |= g < 0;
         uint64_t buf[4 * (VD_BINS + 2)];
@@ -890,9 +881,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
         double chi2, p;
         int dof;
         pl_err_t ignore = {0, ""};
-        uint64_t tot = 0;
-        for (size_t bb = 0; o->vd[k] && bb < VD_BINS + 2; ++bb) tot += pl_vdist_counts(o->vd[k], 3)[bb];
-        if (!tot || pl_vdist_chi2(o->vd[k], 3, 1.0, &chi2, &dof, &p, &ignore)) continue;
+        if (!vdist_total(o, k) || pl_vdist_chi2(o->vd[k], 3, 1.0, &chi2, &dof, &p, &ignore)) continue;
         json_t *e = json_object();
         pl_json_real(&b, e, "chi2", chi2);
         pl_json_int(&b, e, "dof", dof);
