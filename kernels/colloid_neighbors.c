@@ -21,10 +21,6 @@
 
 #include "peloid/colloid_kernels.h"
 
-static inline double min_image(double d, double L, int per)
-{
-    return per ? d - L * rint(d / L) : d;
-}
 
 /* The own partners of i within rlist, from the 27 (or fewer) cells around
  * i's cell; written to out (when non-NULL) in ascending index. */
@@ -63,9 +59,9 @@ static size_t scan_cells(const pl_colloid_cells_t *c, const double box[3], const
                 for (int32_t k = c->start[cc]; k < c->start[cc + 1]; ++k) {
                     size_t j = (size_t)c->list[k];
                     if (j == i || !pl_colloid_pair_owner(i, j)) continue;
-                    double dx = min_image(x[i] - x[j], box[0], periodic[0]);
-                    double dy = min_image(y[i] - y[j], box[1], periodic[1]);
-                    double dz = min_image(z[i] - z[j], box[2], periodic[2]);
+                    double dx = pl_min_image(x[i] - x[j], box[0], periodic[0]);
+                    double dy = pl_min_image(y[i] - y[j], box[1], periodic[1]);
+                    double dz = pl_min_image(z[i] - z[j], box[2], periodic[2]);
                     if (dx * dx + dy * dy + dz * dz >= rl2) continue;
                     if (out) {
                         /* insertion into the ascending run out[0..m) */
@@ -93,9 +89,9 @@ double pl_colloid_nlist_max_disp2(const pl_colloid_nlist_t *nl, const double box
     /* max is exact, so the reduction order does not matter */
 #pragma omp parallel for schedule(static) num_threads(nthreads) reduction(max : m) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i) {
-        double dx = min_image(x[i] - nl->x0[i], box[0], periodic[0]);
-        double dy = min_image(y[i] - nl->y0[i], box[1], periodic[1]);
-        double dz = min_image(z[i] - nl->z0[i], box[2], periodic[2]);
+        double dx = pl_min_image(x[i] - nl->x0[i], box[0], periodic[0]);
+        double dy = pl_min_image(y[i] - nl->y0[i], box[1], periodic[1]);
+        double dz = pl_min_image(z[i] - nl->z0[i], box[2], periodic[2]);
         double d2 = dx * dx + dy * dy + dz * dz;
         /* a non-finite position forces a rebuild; the NaN guard reports it */
         if (!(d2 <= m)) m = isnan(d2) ? INFINITY : d2;

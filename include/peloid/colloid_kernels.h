@@ -6,6 +6,7 @@
 #ifndef PELOID_COLLOID_KERNELS_H
 #define PELOID_COLLOID_KERNELS_H
 
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -15,6 +16,13 @@
 /* Largest |image counter| (ix, iy, iz: int32): the drift saturates a counter
  * that would pass it (no int32 overflow) and the colloid guard stops the run. */
 #define PL_COLLOID_IMAGE_MAX (1 << 30)
+
+/* The one minimum-image separation of the colloid code: d on an axis of
+ * length L, wrapped to [-L/2, L/2] when the axis is periodic. */
+static inline double pl_min_image(double d, double L, int periodic)
+{
+    return periodic ? d - L * rint(d / L) : d;
+}
 
 /* Pair terms a scene switches on (bit mask). */
 enum {

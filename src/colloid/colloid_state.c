@@ -267,7 +267,6 @@ static void place_lattice(pl_colloid_t *c, const double L[3], int walls)
     }
 }
 
-static double min_image(double d, double L, int per) { return per ? d - L * rint(d / L) : d; }
 
 static int place_random(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
 {
@@ -284,9 +283,9 @@ static int place_random(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
             }
             ok = 1;
             for (size_t j = 0; j < i && ok; ++j) {
-                double dx = min_image(c->x[i] - c->x[j], L[0], c->periodic[0]);
-                double dy = min_image(c->y[i] - c->y[j], L[1], c->periodic[1]);
-                double dz = min_image(c->z[i] - c->z[j], L[2], c->periodic[2]);
+                double dx = pl_min_image(c->x[i] - c->x[j], L[0], c->periodic[0]);
+                double dy = pl_min_image(c->y[i] - c->y[j], L[1], c->periodic[1]);
+                double dz = pl_min_image(c->z[i] - c->z[j], L[2], c->periodic[2]);
                 double d = c->rad[i] + c->rad[j];
                 if (dx * dx + dy * dy + dz * dz < d * d) ok = 0;
             }

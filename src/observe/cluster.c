@@ -95,10 +95,6 @@ static void unite(int32_t *parent, int32_t i, int32_t j)
     else parent[a] = b;
 }
 
-static double min_image(double d, double L, int periodic)
-{
-    return periodic ? d - L * nearbyint(d / L) : d;
-}
 
 int pl_cluster_find(pl_cluster_t *c, size_t n, const double *x, const double *y, const double *z,
                     const double *rad, pl_err_t *err)
@@ -156,9 +152,9 @@ int pl_cluster_find(pl_cluster_t *c, size_t n, const double *x, const double *y,
                                 for (int32_t b = cl->start[other]; b < cl->start[other + 1]; ++b) {
                                     int32_t j = cl->list[b];
                                     if (j <= i) continue;
-                                    double dx = min_image(x[j] - x[i], par->box[0], par->periodic[0]);
-                                    double dy = min_image(y[j] - y[i], par->box[1], par->periodic[1]);
-                                    double dz = min_image(z[j] - z[i], par->box[2], par->periodic[2]);
+                                    double dx = pl_min_image(x[j] - x[i], par->box[0], par->periodic[0]);
+                                    double dy = pl_min_image(y[j] - y[i], par->box[1], par->periodic[1]);
+                                    double dz = pl_min_image(z[j] - z[i], par->box[2], par->periodic[2]);
                                     double reach = rad[i] + rad[j] + par->gap;
                                     if (reach > 0.0 && dx * dx + dy * dy + dz * dz < reach * reach)
                                         unite(c->parent, i, j);
