@@ -345,3 +345,17 @@ void pl_colloid_pair_energies(const pl_colloid_pair_params_t *p, const pl_colloi
 #pragma omp parallel num_threads(nthreads) if (v->n >= PL_COLLOID_OMP_MIN)
     switch (mask) { ALL_CASES }
 }
+
+/* One pair's conservative energy by the kernel's own pair evaluation (the
+ * energy pass's formula): a two-colloid view at rest, colloid 1 at distance r
+ * along x from colloid 0. */
+double pl_colloid_pair_energy(const pl_colloid_pair_params_t *p, double r, double ri, double rj)
+{
+    const double rad[2] = {ri, rj}, one[2] = {1.0, 1.0}, zero[2] = {0.0, 0.0};
+    const pl_colloid_view_t v = {.n = 2, .x = zero, .y = zero, .z = zero, .vx = zero, .vy = zero,
+                                 .vz = zero, .wx = zero, .wy = zero, .wz = zero, .rad = rad, .mass = one};
+    acc_t a = {{0}, {0}, {0}, 0.0, 0.0, 0.0, -1, -1, -1};
+    double fo[3], tj[3];
+    pair_eval(p, &v, 0, 1, r, 0.0, 0.0, r * r, p->terms & PL_CT_ALL, 1, &a, fo, tj);
+    return a.e[PL_CE_DLVO] + a.e[PL_CE_HERTZ] + a.e[PL_CE_WCA] + a.e[PL_CE_DEPL];
+}

@@ -23,6 +23,7 @@
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 PY=/usr/bin/python3
+TOOLS=$(realpath "$(dirname "$0")/../tools")
 T=$(mktemp -d /tmp/peloid-observe.XXXXXX)
 trap 'rm -rf "$T"' EXIT
 cd "$T"
@@ -104,6 +105,89 @@ with h5py.File("lat1.0/observables.h5") as f:
 print("gap 2.5: 1 cluster of 64; gap 1: 64 single colloids")
 PY
 ); then ok "clusters on a lattice: $out"; else bad "clusters on a lattice: $out"; fi
+# Energy bonds (observe.clusters_bond = "energy") on a constructed
+# configuration of 13 colloids (R = 2 a0, DLVO of Hecht Fig. 1 + Hertz) at
+# step 0: pairs at surface gaps 0 (the parabolic primary minimum, U = -6 kT
+# by construction), 0.2414 a0 (the secondary minimum, three pairs: a chain of
+# three and a pair across the periodic x face), 0.0475 a0 (the barrier,
+# +11.9 kT), 0.5 a0 (-1.36 kT) and 1 a0 (-0.36 kT).  The expected bonds and
+# their kinds come from an independent evaluation of Hecht Eqs. 1-2
+# (tools/dlvo_reference.py, SI units) and the barrier gap found there: every
+# pair energy is at least 0.35 kT from -E_c, far beyond the 0.001 kT cut-off
+# shift, so the counts must be exact (E_c = 2: 1 primary + 3 secondary bonds,
+# 9 clusters; E_c = 1: the 0.5 a0 pair joins, 4 secondary, 8 clusters).
+cat > eb_pos.txt <<'POS'
+5 5 5
+9 5 5
+5 25 5
+9.2414 25 5
+5 29.2414 5
+0.5 15 35
+36.2586 15 35
+25 5 25
+30 5 25
+25 25 25
+29.0475 25 25
+25 15 5
+29.5 15 5
+POS
+for ec in 2.0 1.0; do
+cat > eb$ec.cfg <<CFG
+name = "eb";
+seed = 3;
+steps = 0;
+box: { cells = [40, 40, 40]; };
+fluid: { density = 0.0; };
+srd: { dt = 0.001; };
+colloids: { count = 13; radius = 2.0; temperature = 0.0; init = "file"; init_file = "eb_pos.txt";
+  pairs = "dlvo, hertz"; substeps = 4; trajectory_interval = 1; };
+dlvo: { psi0 = 20.0; kappa = 1.4e8; hamaker = 4.76e-20; length_unit = 1.25e-7; primary_depth = 6.0; };
+hertz: { K = 1000.0; };
+output: { colloids_xyz = true; };
+observe: { clusters_interval = 1; clusters_bond = "energy"; clusters_energy = $ec; };
+CFG
+"$PELOID" run eb$ec.cfg --out eb$ec 2> /dev/null || bad "energy-bond run E_c = $ec"
+done
+if out=$(PYTHONPATH="$TOOLS" $PY - <<'PY'
+import h5py, itertools, numpy as np
+from dlvo_reference import v_kt, dv_kt
+from scipy.optimize import brentq
+a0, R, L = 1.25e-7, 2.0, 40.0
+d = 2 * R * a0
+x = np.loadtxt("eb_pos.txt")
+hb = brentq(lambda h: dv_kt(d + h * a0, d, 0.020, 1.4e8), 0.01, 0.2)  # the barrier gap, a0
+def energy(h):  # kT; gaps inside the parabolic primary minimum (h < 0.0312 a0): its depth 6 at h0 = 0
+    return -6.0 if h < 0.01 else v_kt(d + h * a0, d, 0.020, 1.4e8)
+for ec in (2.0, 1.0):
+    prim = sec = 0
+    parent = list(range(len(x)))
+    def root(i):
+        while parent[i] != i: i = parent[i]
+        return i
+    for i, j in itertools.combinations(range(len(x)), 2):
+        dx = x[j] - x[i]; dx -= L * np.rint(dx / L)
+        h = np.linalg.norm(dx) - 2 * R
+        if h > 7.0: continue
+        u = energy(h)
+        assert abs(u + ec) > 0.3, (i, j, u)
+        if u < -ec:
+            prim, sec = prim + (h < hb), sec + (h >= hb)
+            a, b = root(i), root(j); parent[max(a, b)] = min(a, b)
+    ids = [root(i) for i in range(len(x))]
+    with h5py.File(f"eb{ec}/observables.h5") as f:
+        got = tuple(int(f[f"observables/{k}/value"][0]) for k in
+                    ("cluster_bonds_primary", "cluster_bonds_secondary", "cluster_number"))
+    assert got == (prim, sec, len(set(ids))), (ec, got, (prim, sec, len(set(ids))))
+    with h5py.File(f"eb{ec}/colloids.h5") as f:
+        cid = f["particles/colloids/cluster_id/value"][0]
+    assert list(cid) == ids, (list(cid), ids)
+    xyz = open(f"eb{ec}/colloids.xyz").read().split("\n")
+    assert "cluster_id:I:1" in xyz[1] and [int(l.split()[-1]) for l in xyz[2:2 + len(x)]] == ids
+    print(f"E_c = {ec}: {prim} primary + {sec} secondary bonds, {len(set(ids))} clusters;", end=" ")
+print(f"barrier at gap {hb:.4f} a0; cluster ids in colloids.h5 and colloids.xyz")
+PY
+); then ok "energy bonds on a constructed configuration: $out"; else bad "energy bonds: $out"; fi
+
 # Velocity distributions (Hecht Fig. 2): a fluid started from the uniform
 # (square-well) distribution is rejected at step 0 (p < 1e-6 with 25600
 # components), and sampled from step 100 on (relaxed within a few collision

@@ -12,7 +12,8 @@
 #    Debian paraview) opens fields.xdmf and gives h5py's values exactly.  A
 #    run whose average took no sample writes no fields file and says so.
 #  - colloids.xyz (extended XYZ) reads back in ASE (Debian python3-ase) with
-#    the H5MD positions, box, pbc and time.
+#    the H5MD positions, box, pbc, time and the cluster observer's ids (both
+#    files carry them; MDAnalysis loads colloids.h5 with the extra group).
 #  - Progress without a terminal: plain log lines, then the end with the
 #    files written and their sizes.
 set -u
@@ -195,7 +196,7 @@ fi
   && ok "a run without a field sample writes no fields file, says so and reports field_samples = 0: $(grep 'no field' nofields.log | cut -c1-100)" \
   || bad "no-sample run (rc=$rc): $(cat nofields.log)"
 
-$PY - <<'PYEOF' && ok "ASE reads colloids.xyz: 5 frames, positions, radius, velocities, cell, pbc, time = colloids.h5" || bad "ASE on colloids.xyz"
+$PY - <<'PYEOF' && ok "ASE reads colloids.xyz: 5 frames, positions, radius, velocities, cell, pbc, time, cluster ids = colloids.h5" || bad "ASE on colloids.xyz"
 import ase.io, h5py, numpy as np
 fr = ase.io.read("q/colloids.xyz", index=":", format="extxyz")
 with h5py.File("q/colloids.h5") as f:
@@ -210,6 +211,14 @@ for k, a in enumerate(fr):
     assert np.allclose(a.arrays["radius"], rad, rtol=1e-9)
     assert np.allclose(a.cell.array, box[k], rtol=1e-9)
     assert a.info["step"] == st[k] and abs(a.info["Time"] - t[k]) <= 1e-12 * t[-1]
+# the cluster observer's ids (quickstart: clusters_interval = 20) with every frame, in both files
+with h5py.File("q/colloids.h5") as f:
+    c = f["particles/colloids/cluster_id"]
+    assert list(c["step"][()]) == list(st) and c["value"].shape == (5, 173)
+    cid = c["value"][()]
+for k, a in enumerate(fr):
+    assert list(a.arrays["cluster_id"]) == list(cid[k])
+    assert all(0 <= i <= j and cid[k][i] == i for j, i in enumerate(cid[k]))  # canonical: the smallest member
 PYEOF
 
 # progress without a terminal (stderr is a file here)

@@ -182,3 +182,49 @@ Test(cluster, bad_input)
     cr_assert(strstr(err.msg, "exceeds rad_max"), "%s", err.msg);
     pl_cluster_free(c);
 }
+
+/* A bond rule (pl_cluster_params_t.bond): a chain of 8 spheres 2.5 apart
+ * (gaps 0.5, all within the candidate gap 0.6) where the rule bonds the pairs
+ * (i, i+1) with i even as kind 1, i = 3 as kind 2 and refuses the others:
+ * clusters {0,1}, {2,3,4,5}, {6,7}; 4 bonds of kind 1, 1 of kind 2.  Pairs
+ * beyond the candidate gap never reach the rule (next-nearest: gap 3). */
+static int alternate(const void *ctx, int32_t i, int32_t j, double r)
+{
+    int *calls = (int *)(uintptr_t)ctx;
+    ++*calls;
+    cr_expect(j == i + 1 && fabs(r - 2.5) < 1e-12, "pair (%d, %d) at %g", i, j, r);
+    return i % 2 == 0 ? 1 : i == 3 ? 2 : 0;
+}
+
+Test(cluster, bond_rule_and_kinds)
+{
+    enum { N = 8 };
+    double x[N], y[N], z[N], r[N];
+    for (int i = 0; i < N; ++i) {
+        x[i] = 3.0 + 2.5 * i;
+        y[i] = z[i] = 5.0;
+        r[i] = 1.0;
+    }
+    int calls = 0;
+    pl_cluster_params_t par = {.box = {30, 30, 30}, .periodic = {1, 1, 1}, .gap = 0.6, .rad_max = 1.0,
+                               .nmax = N, .bond = alternate, .bond_ctx = &calls};
+    pl_cluster_t *c = NULL;
+    pl_err_t err = {0, ""};
+    cr_assert_eq(pl_cluster_create(&par, &c, &err), 0, "%s", err.msg);
+    find(c, N, x, y, z, r);
+    cr_expect_eq(calls, N - 1);
+    cr_expect_eq(pl_cluster_count(c), 3);
+    cr_expect_eq(pl_cluster_largest(c), 4);
+    cr_expect_eq(pl_cluster_bonds(c, 1), 4);
+    cr_expect_eq(pl_cluster_bonds(c, 2), 1);
+    cr_expect_eq(pl_cluster_bonds(c, 0), 0);
+    const int32_t want[N] = {0, 0, 2, 2, 2, 2, 6, 6};
+    for (int i = 0; i < N; ++i) cr_expect_eq(pl_cluster_ids(c)[i], want[i], "id[%d] = %d", i, pl_cluster_ids(c)[i]);
+    /* without the rule every candidate is a bond of kind 1 */
+    pl_cluster_free(c);
+    par.bond = NULL;
+    cr_assert_eq(pl_cluster_create(&par, &c, &err), 0, "%s", err.msg);
+    find(c, N, x, y, z, r);
+    cr_expect(pl_cluster_count(c) == 1 && pl_cluster_bonds(c, 1) == N - 1 && pl_cluster_bonds(c, 2) == 0);
+    pl_cluster_free(c);
+}

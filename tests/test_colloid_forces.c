@@ -274,3 +274,34 @@ Test(colloid_forces, coulomb_skip_below_round_off)
         }
     }
 }
+
+/* pl_colloid_pair_energy (the observer's energy bond) is the sum of the
+ * closed forms of colloid_pair.h for the terms switched on: DLVO with the
+ * primary parabola and its cut-off shift, Hertz inside contact; zero beyond
+ * the DLVO cut-off.  1e-12 relative: the same formulas, only the order of
+ * two additions may differ. */
+Test(colloid_forces, pair_energy_is_the_sum_of_the_terms)
+{
+    pl_scene_dlvo_t s = {81, 20, 1, 300, 1.4e8, 4.76e-20, 1.25e-7, 6.0, 0.0, 1e-3};
+    pl_colloid_pair_params_t p;
+    memset(&p, 0, sizeof p);
+    pl_colloid_dlvo_info_t info;
+    pl_err_t err;
+    cr_assert_eq(pl_colloid_dlvo_setup(&s, 4.0, &p, &info, &err), 0, "%s", err.msg);
+    p.terms = PL_CT_DLVO | PL_CT_HERTZ;
+    p.hertz_K = 1000.0;
+    p.gap_cut = p.dlvo_hcut;
+    for (double h = -0.02; h < info.hcut + 1.0; h += 0.0173) {
+        double r = 4.0 + h, want = 0.0;
+        if (h < p.dlvo_hcut)
+            want += pl_pair_dlvo(r, 4.0, p.coul_C, p.kappa, p.hamaker, p.prim_hm, p.prim_h0, p.dlvo_shift).u;
+        if (h < 0.0) want += pl_pair_hertz(-h, p.hertz_K).u;
+        double got = pl_colloid_pair_energy(&p, r, 2.0, 2.0);
+        cr_expect(fabs(got - want) <= 1e-12 * (fabs(want) + 1e-300) || (got == 0.0 && want == 0.0),
+                  "gap %g: %.15g want %.15g", h, got, want);
+    }
+    /* the primary minimum -6 kT (less the shift) and the secondary of Hecht Fig. 1 */
+    cr_expect(fabs(pl_colloid_pair_energy(&p, 4.0, 2.0, 2.0) + p.dlvo_shift + 6.0) < 1e-9);
+    cr_expect(fabs(pl_colloid_pair_energy(&p, 4.0 + info.secmin_h, 2.0, 2.0) + p.dlvo_shift - info.secmin_u) <
+              1e-12);
+}

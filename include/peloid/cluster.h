@@ -11,6 +11,12 @@
  * always the smaller index, so each particle's cluster id is the smallest
  * particle index in its cluster (canonical: independent of visiting order).
  *
+ * A bond rule may refine the bond (pl_cluster_params_t.bond): a pair within
+ * the gap above is then bonded only when bond(ctx, i, j, r) returns a kind
+ * 1..PL_CLUSTER_KINDS (0: no bond); the bonds of each kind are counted (with
+ * no rule every bond is of kind 1).  The observer bonds by pair energy this
+ * way, kind 1 in the primary minimum and 2 in the secondary.
+ *
  * The search is serial: for the colloid numbers of a scene (<= 10^5) it costs
  * milliseconds per call, and it makes the result trivially independent of the
  * thread count.
@@ -23,12 +29,19 @@
 
 #include "peloid/error.h"
 
+enum { PL_CLUSTER_KINDS = 2 };
+
+/* i < j, r their minimum-image centre distance; returns the bond kind. */
+typedef int (*pl_cluster_bond_fn)(const void *ctx, int32_t i, int32_t j, double r);
+
 typedef struct {
     double box[3];
     int periodic[3];
     double gap;     /* bond: surface gap below this (may be negative: overlap) */
     double rad_max; /* largest radius that pl_cluster_find will be given */
     size_t nmax;    /* most particles */
+    pl_cluster_bond_fn bond; /* NULL: every pair within gap is a bond of kind 1 */
+    const void *bond_ctx;
 } pl_cluster_params_t;
 
 typedef struct pl_cluster pl_cluster_t;
@@ -48,6 +61,8 @@ size_t pl_cluster_largest(const pl_cluster_t *c);
  * (the size of the cluster a randomly picked particle belongs to). */
 double pl_cluster_mean_size(const pl_cluster_t *c);
 double pl_cluster_weight_mean_size(const pl_cluster_t *c);
+/* Bonds of kind k (1..PL_CLUSTER_KINDS; 0 for any other k). */
+size_t pl_cluster_bonds(const pl_cluster_t *c, int kind);
 /* hist[s] = number of clusters of s particles, s = 0..n (hist[0] = 0). */
 const uint64_t *pl_cluster_size_hist(const pl_cluster_t *c, size_t *len);
 

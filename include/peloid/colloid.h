@@ -163,5 +163,12 @@ int pl_colloid_traj_write(pl_colloid_traj_t *t, const pl_colloid_t *c, long long
 void pl_colloid_traj_hold(pl_colloid_traj_t *t, const pl_colloid_t *c, long long step, double time);
 int pl_colloid_traj_write_held(pl_colloid_traj_t *t, const pl_colloid_t *c, pl_err_t *err);
 int pl_colloid_traj_close(pl_colloid_traj_t *t, pl_err_t *err);
+/* The cluster id of each colloid with every frame from now on (H5MD
+ * /particles/colloids/cluster_id/{step, time, value (T x N)}, a cluster_id
+ * column of colloids.xyz): ids(ctx, step, compute) gives the ids of the
+ * positions of `step` (computing them when `compute`; a held frame asks
+ * without), NULL where there are none (written as -1).  0, or PL_ERR_IO. */
+typedef const int32_t *(*pl_traj_ids_fn)(void *ctx, long long step, int compute);
+int pl_colloid_traj_cluster_ids(pl_colloid_traj_t *t, pl_traj_ids_fn ids, void *ctx, pl_err_t *err);
 
 #endif

@@ -149,6 +149,12 @@ void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_
 void pl_colloid_pair_energies(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
                               const pl_colloid_view_t *v, int nthreads);
 
+/* The conservative energy (kT_ref) of one pair of radii ri, rj at centre
+ * distance r: DLVO + Hertz + WCA + depletion_comp of the terms in p, by the
+ * same pair evaluation as pl_colloid_pair_energies (lubrication and the Hertz
+ * damping carry no energy).  Zero beyond the pair cut-off. */
+double pl_colloid_pair_energy(const pl_colloid_pair_params_t *p, double r, double ri, double rj);
+
 typedef struct {
     double g[3];      /* acceleration (gravity minus buoyancy) */
     int walls[3];     /* repulsive walls at 0 and L[d] on axis d (closed axes) */

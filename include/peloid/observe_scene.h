@@ -4,6 +4,8 @@
 #ifndef PELOID_OBSERVE_SCENE_H
 #define PELOID_OBSERVE_SCENE_H
 
+enum { PL_BOND_GAP = 0, PL_BOND_ENERGY = 1 }; /* observe.clusters_bond */
+
 typedef struct {
     long long rdf_interval, rdf_start; /* colloid g(r) */
     long long rdf_bins;
@@ -12,6 +14,8 @@ typedef struct {
     long long vacf_interval, vacf_start; /* colloid VACF and Green-Kubo D */
     long long clusters_interval, clusters_start;
     double clusters_gap;               /* bond: surface gap below this */
+    int clusters_bond;                 /* PL_BOND_GAP | PL_BOND_ENERGY */
+    double clusters_energy;            /* energy bond: pair energy below -this (kT_ref) */
     long long vdist_interval, vdist_start; /* velocity distributions against Maxwell-Boltzmann */
     long long sediment_interval, sediment_start, sediment_bins; /* phi(z, t), settling velocity */
     double target_rel_error;           /* the error-against-time report's target */

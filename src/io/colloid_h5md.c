@@ -7,6 +7,9 @@
  *   /particles/colloids/{position, velocity, orientation, angular_velocity, image}
  *        /step (T), /time (T), /value (T x N x 3; orientation T x N x 4)
  *   /particles/colloids/{radius, mass, species, id}  (time independent, N)
+ *   /particles/colloids/cluster_id/{step, time, value (T x N, int32)}  with the
+ *        cluster observer (pl_colloid_traj_cluster_ids): the smallest member
+ *        index of each colloid's cluster, -1 where the frame has none
  *   /parameters           attributes a0, t0, m_f in the file's units (model: 1, 1, 1)
  * Units: a scene with physical{} is written in nm, ps, nm ps-1, ps-1 and kg,
  * stated in `unit` on every dimensionful value and time dataset (H5MD units
@@ -55,6 +58,12 @@ struct pl_colloid_traj {
     double *buf;
     int *ibuf;
     pl_xyz_t *xyz;
+    /* cluster ids (pl_colloid_traj_cluster_ids); val 0: none */
+    hid_t cid_val, cid_step, cid_time;
+    hsize_t cid_frames;
+    pl_traj_ids_fn ids;
+    void *ids_ctx;
+    int32_t *cid_buf;
     /* the state at the start of the current step (pl_colloid_traj_hold) */
     double *hold;
     int32_t *ihold;
@@ -102,6 +111,10 @@ static int traj_release(pl_colloid_traj_t *t)
         if (t->step[k] > 0 && H5Dclose(t->step[k]) < 0) bad = 1;
         if (t->time[k] > 0 && H5Dclose(t->time[k]) < 0) bad = 1;
     }
+    if (t->cid_val > 0 && H5Dclose(t->cid_val) < 0) bad = 1;
+    if (t->cid_step > 0 && H5Dclose(t->cid_step) < 0) bad = 1;
+    if (t->cid_time > 0 && H5Dclose(t->cid_time) < 0) bad = 1;
+    free(t->cid_buf);
     if (t->file > 0 && H5Fclose(t->file) < 0) bad = 1;
     free(t->buf);
     free(t->ibuf);
@@ -284,6 +297,13 @@ static int write_frame(pl_colloid_traj_t *t, const pl_traj_frame_t *f, pl_err_t 
         bad |= append(t->step[k], H5T_NATIVE_LLONG, 1, t->nframes, 1, 1, &f->step);
         bad |= append(t->time[k], H5T_NATIVE_DOUBLE, 1, t->nframes, 1, 1, &time);
     }
+    if (t->cid_val > 0) {
+        for (size_t i = 0; i < t->n; ++i) t->cid_buf[i] = f->cluster_id ? f->cluster_id[i] : -1;
+        bad |= append(t->cid_val, H5T_NATIVE_INT32, 2, t->cid_frames, t->n, 1, t->cid_buf);
+        bad |= append(t->cid_step, H5T_NATIVE_LLONG, 1, t->cid_frames, 1, 1, &f->step);
+        bad |= append(t->cid_time, H5T_NATIVE_DOUBLE, 1, t->cid_frames, 1, 1, &time);
+        t->cid_frames++;
+    }
     t->nframes++;
     if (!bad) {
         errno = 0;
@@ -305,7 +325,7 @@ static void frame_of(const pl_colloid_traj_t *t, const pl_colloid_t *c, long lon
                            .q0 = c->q0, .q1 = c->q1, .q2 = c->q2, .q3 = c->q3, .wx = c->wx, .wy = c->wy,
                            .wz = c->wz, .rad = c->rad, .ix = c->ix, .iy = c->iy, .iz = c->iz, .box = t->box,
                            .periodic = t->periodic, .step = step, .time = time, .len = t->len, .tim = t->tim,
-                           .len_unit = t->len_unit, .time_unit = t->time_unit};
+                           .len_unit = t->len_unit, .time_unit = t->time_unit, .has_cluster_id = t->ids != NULL};
 }
 
 int pl_colloid_traj_write(pl_colloid_traj_t *t, const pl_colloid_t *c, long long step, double time,
@@ -313,7 +333,39 @@ int pl_colloid_traj_write(pl_colloid_traj_t *t, const pl_colloid_t *c, long long
 {
     pl_traj_frame_t f;
     frame_of(t, c, step, time, &f);
+    if (t->ids && step != t->last_step) f.cluster_id = t->ids(t->ids_ctx, step, 1);
     return write_frame(t, &f, err);
+}
+
+int pl_colloid_traj_cluster_ids(pl_colloid_traj_t *t, pl_traj_ids_fn ids, void *ctx, pl_err_t *err)
+{
+    if (t->cid_val > 0) { /* already there: a new source */
+        t->ids = ids;
+        t->ids_ctx = ctx;
+        return 0;
+    }
+    hid_t g = H5Gopen2(t->file, "particles/colloids", H5P_DEFAULT);
+    hid_t tg = g >= 0 ? H5Gcreate2(g, "cluster_id", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : -1;
+    int bad = tg < 0 || !(t->cid_buf = malloc((t->n ? t->n : 1) * sizeof(int32_t)));
+    if (!bad) {
+        t->cid_val = ext_dataset(tg, "value", H5T_NATIVE_INT32, 2, t->n, 1);
+        t->cid_step = ext_dataset(tg, "step", H5T_NATIVE_LLONG, 1, 0, 0);
+        t->cid_time = ext_dataset(tg, "time", H5T_NATIVE_DOUBLE, 1, 0, 0);
+        bad = t->cid_val < 0 || t->cid_step < 0 || t->cid_time < 0 ||
+              pl_h5_attr_vlstr(t->cid_time, t->unit_attr, t->time_unit) ||
+              pl_h5_attr_vlstr(tg, "meaning", "the smallest colloid index of each colloid's cluster "
+                                              "(observe.clusters_*), -1 where the frame has no partition");
+    }
+    if (tg >= 0 && H5Gclose(tg) < 0) bad = 1;
+    if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+    if (bad) {
+        char why[256];
+        pl_h5_error_text(why, sizeof why);
+        return pl_err_set(err, PL_ERR_IO, "%s: cannot add the cluster ids: %s", t->tmp, why);
+    }
+    t->ids = ids;
+    t->ids_ctx = ctx;
+    return 0;
 }
 
 void pl_colloid_traj_hold(pl_colloid_traj_t *t, const pl_colloid_t *c, long long step, double time)
@@ -338,6 +390,7 @@ int pl_colloid_traj_write_held(pl_colloid_traj_t *t, const pl_colloid_t *c, pl_e
     f.q0 = h + 6 * n, f.q1 = h + 7 * n, f.q2 = h + 8 * n, f.q3 = h + 9 * n;
     f.wx = h + 10 * n, f.wy = h + 11 * n, f.wz = h + 12 * n;
     f.ix = t->ihold, f.iy = t->ihold + n, f.iz = t->ihold + 2 * n;
+    if (t->ids && t->hold_step != t->last_step) f.cluster_id = t->ids(t->ids_ctx, t->hold_step, 0);
     return write_frame(t, &f, err);
 }
 

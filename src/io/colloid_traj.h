@@ -13,6 +13,8 @@ typedef struct {
     size_t n;
     const double *x, *y, *z, *vx, *vy, *vz, *q0, *q1, *q2, *q3, *wx, *wy, *wz, *rad;
     const int32_t *ix, *iy, *iz;
+    int has_cluster_id;         /* the cluster observer's ids are written */
+    const int32_t *cluster_id;  /* n ids of this frame, NULL: none (written -1) */
     const double *box;  /* 3 edges, a0 */
     const int *periodic;
     long long step;

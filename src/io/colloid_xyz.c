@@ -4,6 +4,8 @@
  *   Lattice="Lx 0 0 0 Ly 0 0 0 Lz" Origin="0 0 0"
  *   Properties=species:S:1:pos:R:3:radius:R:1:vel:R:3 pbc="T T F"
  *   Time=<t> step=<n> units="..."
+ * (with the cluster observer: ...:vel:R:3:cluster_id:I:1, the smallest member
+ * index of the colloid's cluster, -1 where the frame has none)
  * then one line per colloid.  Species is "X" (ASE's dummy element: every
  * reader accepts it; colloids have no chemical identity).  Positions are
  * wrapped into the box, in the same units as colloids.h5.  Written to
@@ -46,14 +48,18 @@ int pl_xyz_frame(pl_xyz_t *x, const pl_traj_frame_t *f, pl_err_t *err)
     errno = 0;
     int bad = fprintf(o, "%zu\n", f->n) < 0;
     bad |= fprintf(o, "Lattice=\"%.10g 0 0 0 %.10g 0 0 0 %.10g\" Origin=\"0 0 0\" "
-                      "Properties=species:S:1:pos:R:3:radius:R:1:vel:R:3 pbc=\"%c %c %c\" "
+                      "Properties=species:S:1:pos:R:3:radius:R:1:vel:R:3%s pbc=\"%c %c %c\" "
                       "Time=%.17g step=%lld units=\"length %s, time %s, velocity %s/%s\"\n",
-                   f->box[0] * L, f->box[1] * L, f->box[2] * L, f->periodic[0] ? 'T' : 'F',
+                   f->box[0] * L, f->box[1] * L, f->box[2] * L, f->has_cluster_id ? ":cluster_id:I:1" : "",
+                   f->periodic[0] ? 'T' : 'F',
                    f->periodic[1] ? 'T' : 'F', f->periodic[2] ? 'T' : 'F', f->time * f->tim, f->step,
                    f->len_unit, f->time_unit, f->len_unit, f->time_unit) < 0;
-    for (size_t i = 0; i < f->n && !bad; ++i)
-        bad |= fprintf(o, "X %.10g %.10g %.10g %.10g %.10g %.10g %.10g\n", f->x[i] * L, f->y[i] * L,
-                       f->z[i] * L, f->rad[i] * L, f->vx[i] * V, f->vy[i] * V, f->vz[i] * V) < 0;
+    for (size_t i = 0; i < f->n && !bad; ++i) {
+        bad |= fprintf(o, "X %.10g %.10g %.10g %.10g %.10g %.10g %.10g", f->x[i] * L, f->y[i] * L, f->z[i] * L,
+                       f->rad[i] * L, f->vx[i] * V, f->vy[i] * V, f->vz[i] * V) < 0;
+        if (f->has_cluster_id) bad |= fprintf(o, " %d", f->cluster_id ? (int)f->cluster_id[i] : -1) < 0;
+        bad |= fputc('\n', o) == EOF;
+    }
     bad |= fflush(o) != 0;
     bad |= ferror(o) != 0;
     if (bad)

@@ -20,6 +20,7 @@ struct pl_cluster {
     int32_t *id;     /* nmax */
     uint64_t *hist;  /* nmax + 1 */
     size_t n, count, largest;
+    size_t bonds[PL_CLUSTER_KINDS + 1];
 };
 
 int pl_cluster_create(const pl_cluster_params_t *par, pl_cluster_t **out, pl_err_t *err)
@@ -124,6 +125,7 @@ int pl_cluster_find(pl_cluster_t *c, size_t n, const double *x, const double *y,
     pl_colloid_cells_t *cl = &c->cells;
     pl_colloid_cells_build(cl, n, x, y, z);
     for (size_t i = 0; i < n; ++i) c->parent[i] = (int32_t)i;
+    for (int k = 0; k <= PL_CLUSTER_KINDS; ++k) c->bonds[k] = 0;
     const int *nc = cl->nc;
     for (int cz = 0; cz < nc[2]; ++cz)
         for (int cy = 0; cy < nc[1]; ++cy)
@@ -156,8 +158,12 @@ int pl_cluster_find(pl_cluster_t *c, size_t n, const double *x, const double *y,
                                     double dy = pl_min_image(y[j] - y[i], par->box[1], par->periodic[1]);
                                     double dz = pl_min_image(z[j] - z[i], par->box[2], par->periodic[2]);
                                     double reach = rad[i] + rad[j] + par->gap;
-                                    if (reach > 0.0 && dx * dx + dy * dy + dz * dz < reach * reach)
-                                        unite(c->parent, i, j);
+                                    double r2 = dx * dx + dy * dy + dz * dz;
+                                    if (!(reach > 0.0 && r2 < reach * reach)) continue;
+                                    int kind = par->bond ? par->bond(par->bond_ctx, i, j, sqrt(r2)) : 1;
+                                    if (kind < 1 || kind > PL_CLUSTER_KINDS) continue;
+                                    c->bonds[kind]++;
+                                    unite(c->parent, i, j);
                                 }
                             }
                         }
@@ -206,6 +212,11 @@ double pl_cluster_weight_mean_size(const pl_cluster_t *c)
     double s2 = 0.0;
     for (size_t s = 1; s <= c->n; ++s) s2 += (double)s * (double)s * (double)c->hist[s];
     return s2 / (double)c->n;
+}
+
+size_t pl_cluster_bonds(const pl_cluster_t *c, int kind)
+{
+    return kind >= 1 && kind <= PL_CLUSTER_KINDS ? c->bonds[kind] : 0;
 }
 
 const uint64_t *pl_cluster_size_hist(const pl_cluster_t *c, size_t *len)

@@ -59,9 +59,25 @@ enum { NFRAC = 4, MSD_P = 16, MSD_M = 2, VD_BINS = 60 };
 static const double fractions[NFRAC] = {0.125, 0.25, 0.5, 1.0};
 
 /* Observables of the error-against-time report. */
-enum { OB_D, OB_RDF_PEAK, OB_NCLUSTERS, OB_LARGEST, OB_MEANSIZE, OB_SETTLING, OB_N };
+enum { OB_D, OB_RDF_PEAK, OB_NCLUSTERS, OB_LARGEST, OB_MEANSIZE, OB_SETTLING, OB_BONDS, OB_BONDS_PRIMARY,
+       OB_BONDS_SECONDARY, OB_PRIMARY_FRACTION, OB_N };
 static const char *const ob_names[OB_N] = {"colloid_D", "rdf_peak", "cluster_number", "largest_cluster",
-                                           "mean_cluster_size", "settling_velocity"};
+                                           "mean_cluster_size", "settling_velocity", "cluster_bonds",
+                                           "cluster_bonds_primary", "cluster_bonds_secondary",
+                                           "cluster_primary_fraction"};
+/* Per-sample cluster quantities: number, largest, mean size, bonds, primary-
+ * and secondary-minimum bonds (energy bonds), primary fraction of the bonds
+ * (samples with a bond); the observables OB_NCLUSTERS.. and OB_BONDS.. */
+enum { NCV = 7 };
+static const char *const cv_names[NCV] = {"cluster_number", "largest_cluster", "mean_cluster_size", "cluster_bonds",
+                                          "cluster_bonds_primary", "cluster_bonds_secondary",
+                                          "cluster_primary_fraction"};
+
+/* The energy-bond rule's context (energy_bond). */
+typedef struct {
+    const pl_colloid_t *c;
+    double ec, barrier;
+} ebond_t;
 
 typedef struct {
     long long step;
@@ -85,9 +101,13 @@ typedef struct pl_observe {
     double vacf_dt, vacf_wall;
     /* clusters */
     pl_cluster_t *cl;
-    pl_blocking_t cb[3]; /* number, largest, mean size */
+    pl_blocking_t cb[NCV]; /* cv_names */
     long long *c_step;
-    double *c_val[3];
+    double *c_val[NCV];
+    double c_barrier; /* energy bonds: the DLVO barrier gap (NAN: none, all primary) */
+    ebond_t eb;
+    pl_sim_t *sim; /* for the trajectory's cluster ids (traj_ids) */
+    long long ids_step; /* the step of the last partition (pl_cluster_ids), -1: none */
     size_t c_n, c_cap;
     uint64_t *c_hist; /* size distribution summed over samples */
     size_t c_hist_len;
@@ -118,6 +138,35 @@ static int any_observer(const pl_scene_observe_t *o)
 
 #define OFFO(m) offsetof(pl_scene_t, observe.m)
 
+/* Energy bonds need a pair minimum deeper than -clusters_energy: the
+ * primary (gap primary_gap) or the secondary minimum of the DLVO potential
+ * of the reference pair (radius colloids.radius), by the pair energy the run
+ * uses (pl_colloid_pair_energy; the depletion_comp table, built later, left
+ * out: it only makes the minima shallower). */
+static int energy_bond_check(const pl_scene_t *sc, pl_err_t *err)
+{
+    const double Ec = sc->observe.clusters_energy, R = sc->colloids.radius;
+    unsigned mask = 0;
+    char bad[128];
+    if (pl_colloid_parse_pairs(sc->colloids.pairs, &mask, bad, sizeof bad)) return 0; /* the colloid checks say */
+    if (!(mask & PL_CT_DLVO))
+        return pl_scene_fail(sc, err, OFFO(clusters_bond), "observe.clusters_bond",
+                             "\"energy\" needs an attractive pair minimum: colloids.pairs = \"%s\" has no dlvo "
+                             "term; allowed: \"gap\"", sc->colloids.pairs);
+    pl_colloid_pair_params_t p;
+    pl_colloid_dlvo_info_t info;
+    pl_err_t ignore = {0, ""};
+    if (pl_colloid_pair_params(sc, &p, &info, &ignore)) return 0; /* reported by the colloid checks */
+    p.terms &= ~(unsigned)PL_CT_DEPL;
+    double u1 = pl_colloid_pair_energy(&p, 2.0 * R + info.h0, R, R), u2 = INFINITY;
+    if (isfinite(info.secmin_h)) u2 = pl_colloid_pair_energy(&p, 2.0 * R + info.secmin_h, R, R);
+    if (!(fmin(u1, u2) < -Ec))
+        return pl_scene_fail(sc, err, OFFO(clusters_energy), "observe.clusters_energy",
+                             "%g kT_ref: no pair is that deeply bound (primary minimum %.4g kT_ref, secondary %.4g "
+                             "kT_ref); allowed: < %.4g", Ec, u1, u2, -fmin(u1, u2));
+    return 0;
+}
+
 int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
 {
     const pl_scene_observe_t *o = &sc->observe;
@@ -135,18 +184,29 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
                                  "%lld: the observer needs colloids (colloids.count = 0); allowed: 0 without colloids",
                                  need[k].v);
     /* the stopping rule's observable needs its observer */
-    static const size_t stop_needs[] = {OFFO(msd_interval), OFFO(rdf_interval), OFFO(clusters_interval),
-                                        OFFO(clusters_interval), OFFO(clusters_interval), OFFO(sediment_interval)};
-    static const char *const stop_keys[] = {"observe.msd_interval", "observe.rdf_interval",
-                                            "observe.clusters_interval", "observe.clusters_interval",
-                                            "observe.clusters_interval", "observe.sediment_interval"};
+    static const size_t stop_needs[OB_N] = {
+        OFFO(msd_interval),      OFFO(rdf_interval),      OFFO(clusters_interval), OFFO(clusters_interval),
+        OFFO(clusters_interval), OFFO(sediment_interval), OFFO(clusters_interval), OFFO(clusters_interval),
+        OFFO(clusters_interval), OFFO(clusters_interval)};
+    static const char *const stop_keys[OB_N] = {
+        "observe.msd_interval",      "observe.rdf_interval",      "observe.clusters_interval",
+        "observe.clusters_interval", "observe.clusters_interval", "observe.sediment_interval",
+        "observe.clusters_interval", "observe.clusters_interval", "observe.clusters_interval",
+        "observe.clusters_interval"};
     const int ob = sc->stop.observable - 1;
+    if (ob >= OB_BONDS_PRIMARY && ob < OB_N && o->clusters_bond != PL_BOND_ENERGY)
+        return pl_scene_fail(sc, err, offsetof(pl_scene_t, stop.observable), "stop.observable",
+                             "\"%s\" counts energy bonds: needs observe.clusters_bond = \"energy\"", ob_names[ob]);
     if (ob >= 0 && ob < OB_N && *(const long long *)((const char *)sc + stop_needs[ob]) <= 0)
         return pl_scene_fail(sc, err, offsetof(pl_scene_t, stop.observable), "stop.observable",
                              "\"%s\" needs its observer: %s > 0", ob_names[ob], stop_keys[ob]);
     if (ob >= 0 && !(sc->stop.rel_error > 0))
         return pl_scene_fail(sc, err, offsetof(pl_scene_t, stop.rel_error), "stop.rel_error",
                              "%g with stop.observable; allowed: > 0", sc->stop.rel_error);
+    if (o->clusters_interval > 0 && o->clusters_bond == PL_BOND_ENERGY) {
+        int rc = energy_bond_check(sc, err);
+        if (rc) return rc;
+    }
     if (o->rdf_interval > 0) {
         if (sc->box.walls_xy != PL_WALLS_NONE)
             return pl_scene_fail(sc, err, OFFO(rdf_interval), "observe.rdf_interval",
@@ -170,7 +230,8 @@ static int observe_create(pl_sim_t *sim, pl_err_t *err)
     if (!sim->colloids || !any_observer(&sim->scene.observe)) return 0;
     pl_observe_t *o = calloc(1, sizeof *o);
     if (!o) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the observers");
-    for (int k = 0; k < 3; ++k) pl_blocking_init(&o->cb[k]);
+    for (int k = 0; k < NCV; ++k) pl_blocking_init(&o->cb[k]);
+    o->ids_step = -1;
     pl_blocking_init(&o->s_vb);
     sim->observe = o;
     return 0;
@@ -189,8 +250,8 @@ static void observe_destroy(pl_sim_t *sim)
     for (int d = 0; d < 3; ++d) {
         free(o->vs[d]);
         free(o->u[d]);
-        free(o->c_val[d]);
     }
+    for (int k = 0; k < NCV; ++k) free(o->c_val[k]);
     free(o->c_step);
     free(o->c_hist);
     free(o->s_step);
@@ -302,6 +363,52 @@ static int green_kubo(const pl_observe_t *o, double *D, double *se, double *tmax
     return isfinite(*D) && isfinite(*se);
 }
 
+/* Energy bond (observe.clusters_bond = "energy"): kind 1 (primary minimum)
+ * when the pair energy is below -E_c at a surface gap inside the DLVO
+ * barrier of the reference pair, kind 2 (secondary minimum) beyond it. */
+static int energy_bond(const void *ctx, int32_t i, int32_t j, double r)
+{
+    const ebond_t *e = ctx;
+    const double ri = e->c->rad[i], rj = e->c->rad[j];
+    if (!(pl_colloid_pair_energy(&e->c->pair, r, ri, rj) < -e->ec)) return 0;
+    return isnan(e->barrier) || r - ri - rj < e->barrier ? 1 : 2;
+}
+
+/* The cluster search of the observer, created at its first use. */
+static int clusters_ready(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
+{
+    if (o->cl) return 0;
+    const pl_scene_t *sc = &sim->scene;
+    const pl_colloid_t *c = sim->colloids;
+    pl_cluster_params_t p = {.gap = sc->observe.clusters_gap, .nmax = c->n};
+    for (int d = 0; d < 3; ++d) {
+        p.box[d] = c->box[d];
+        p.periodic[d] = c->periodic[d];
+    }
+    for (size_t i = 0; i < c->n; ++i) p.rad_max = fmax(p.rad_max, c->rad[i]);
+    o->c_barrier = NAN;
+    if (sc->observe.clusters_bond == PL_BOND_ENERGY) {
+        /* candidates: every pair within the pair cut-off */
+        p.gap = pl_colloid_pair_cutoff(&c->pair, p.rad_max) - 2.0 * p.rad_max;
+        o->c_barrier = c->dlvo.barrier_h;
+        o->eb = (ebond_t){c, sc->observe.clusters_energy, o->c_barrier};
+        p.bond = energy_bond;
+        p.bond_ctx = &o->eb;
+    }
+    return pl_cluster_create(&p, &o->cl, err);
+}
+
+/* The partition of the present positions (computed once per step). */
+static int clusters_now(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
+{
+    if (o->ids_step == sim->step) return 0;
+    int rc = clusters_ready(sim, o, err);
+    const pl_colloid_t *c = sim->colloids;
+    if (!rc) rc = pl_cluster_find(o->cl, c->n, c->x, c->y, c->z, c->rad, err);
+    o->ids_step = rc ? -1 : sim->step;
+    return rc;
+}
+
 static int stage_clusters(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     pl_observe_t *o = ctx;
@@ -309,31 +416,25 @@ static int stage_clusters(pl_sim_t *sim, void *ctx, pl_err_t *err)
     if (sim->step < sc->observe.clusters_start) return 0;
     const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
-    if (!o->cl) {
-        pl_cluster_params_t p = {.gap = sc->observe.clusters_gap, .nmax = c->n};
-        for (int d = 0; d < 3; ++d) {
-            p.box[d] = c->box[d];
-            p.periodic[d] = c->periodic[d];
-        }
-        for (size_t i = 0; i < c->n; ++i) p.rad_max = fmax(p.rad_max, c->rad[i]);
-        int rc = pl_cluster_create(&p, &o->cl, err);
-        if (rc) return rc;
+    if (!o->c_step) {
         o->c_cap = expected_samples(o, sc->observe.clusters_start, sc->observe.clusters_interval);
         o->c_step = malloc(o->c_cap * sizeof *o->c_step);
-        for (int k = 0; k < 3; ++k) o->c_val[k] = malloc(o->c_cap * sizeof(double));
+        int oom = !o->c_step;
+        for (int k = 0; k < NCV; ++k) oom |= !(o->c_val[k] = malloc(o->c_cap * sizeof(double)));
         o->c_hist_len = c->n + 1;
         o->c_hist = calloc(o->c_hist_len, sizeof *o->c_hist);
-        if (!o->c_step || !o->c_val[0] || !o->c_val[1] || !o->c_val[2] || !o->c_hist)
-            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cluster observer");
+        if (oom || !o->c_hist) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cluster observer");
     }
-    int rc = pl_cluster_find(o->cl, c->n, c->x, c->y, c->z, c->rad, err);
+    int rc = clusters_now(sim, o, err);
     if (rc) return rc;
-    const double v[3] = {(double)pl_cluster_count(o->cl), (double)pl_cluster_largest(o->cl),
-                         pl_cluster_mean_size(o->cl)};
-    for (int k = 0; k < 3; ++k) pl_blocking_add(&o->cb[k], v[k]);
+    const double b1 = (double)pl_cluster_bonds(o->cl, 1), b2 = (double)pl_cluster_bonds(o->cl, 2);
+    const double v[NCV] = {(double)pl_cluster_count(o->cl), (double)pl_cluster_largest(o->cl),
+                           pl_cluster_mean_size(o->cl), b1 + b2, b1, b2, b1 + b2 > 0 ? b1 / (b1 + b2) : NAN};
+    for (int k = 0; k < NCV; ++k)
+        if (isfinite(v[k])) pl_blocking_add(&o->cb[k], v[k]);
     if (o->c_n < o->c_cap) {
         o->c_step[o->c_n] = sim->step;
-        for (int k = 0; k < 3; ++k) o->c_val[k][o->c_n] = v[k];
+        for (int k = 0; k < NCV; ++k) o->c_val[k][o->c_n] = v[k];
         o->c_n++;
     }
     size_t len;
@@ -490,6 +591,16 @@ static int rdf_peak(const pl_observe_t *o, double *r, double *g, double *se)
     return isfinite(*g) && isfinite(*se);
 }
 
+/* The blocking accumulator of a time-averaged observable (NULL: none). */
+static const pl_blocking_t *ob_blocking(const pl_observe_t *o, int ob)
+{
+    if (ob == OB_SETTLING) return &o->s_vb;
+    if (!o->cl) return NULL;
+    if (ob >= OB_NCLUSTERS && ob <= OB_MEANSIZE) return &o->cb[ob - OB_NCLUSTERS];
+    if (ob >= OB_BONDS && ob < OB_N) return &o->cb[3 + ob - OB_BONDS];
+    return NULL;
+}
+
 int pl_observe_estimate(const pl_sim_t *sim, int ob, double *value, double *se)
 {
     const pl_observe_t *o = sim->observe;
@@ -497,7 +608,7 @@ int pl_observe_estimate(const pl_sim_t *sim, int ob, double *value, double *se)
     if (!o || ob < 0 || ob >= OB_N) return 0;
     if (ob == OB_D) return diffusion(o, value, se, &a, &b);
     if (ob == OB_RDF_PEAK) return rdf_peak(o, &a, value, se);
-    const pl_blocking_t *bl = ob == OB_SETTLING ? &o->s_vb : o->cl ? &o->cb[ob - OB_NCLUSTERS] : NULL;
+    const pl_blocking_t *bl = ob_blocking(o, ob);
     if (!bl || bl->n < 2) return 0;
     pl_blocking_result_t r = pl_blocking_result(bl);
     *value = r.mean;
@@ -529,11 +640,11 @@ static int stage_error_time(pl_sim_t *sim, void *ctx, pl_err_t *err)
         e[OB_RDF_PEAK]->valid = rdf_peak(o, &a, &e[OB_RDF_PEAK]->value, &e[OB_RDF_PEAK]->se);
         e[OB_RDF_PEAK]->plateau = 1;
         (void)c;
-        for (int k = 0; k < 4; ++k) {
-            const pl_blocking_t *bl = k == 3 ? &o->s_vb : o->cl ? &o->cb[k] : NULL;
+        for (int k = OB_NCLUSTERS; k < OB_N; ++k) {
+            const pl_blocking_t *bl = ob_blocking(o, k);
             if (!bl) continue;
             pl_blocking_result_t r = pl_blocking_result(bl);
-            ept_t *q = e[OB_NCLUSTERS + k];
+            ept_t *q = e[k];
             q->valid = bl->n >= 2 && isfinite(r.mean) && isfinite(r.se);
             q->value = r.mean;
             q->se = r.se;
@@ -544,15 +655,36 @@ static int stage_error_time(pl_sim_t *sim, void *ctx, pl_err_t *err)
     return 0;
 }
 
-/* The run's first state is known when the after-step stages first run. */
+/* The cluster ids of a trajectory frame (pl_colloid_traj_cluster_ids): the
+ * partition of that step's positions, from clusters_start on; the observer's
+ * own samples are not touched (a trajectory step between them costs one
+ * more search). */
+static const int32_t *traj_ids(void *ctx, long long step, int compute)
+{
+    pl_observe_t *o = ctx;
+    if (step < o->sim->scene.observe.clusters_start) return NULL;
+    if (o->ids_step != step) {
+        pl_err_t ignore = {0, ""};
+        if (!compute || step != o->sim->step || clusters_now(o->sim, o, &ignore)) return NULL;
+    }
+    return pl_cluster_ids(o->cl);
+}
+
+/* The run's first state is known when the after-step stages first run; the
+ * trajectory (opened after the plan) gets the cluster ids then, before its
+ * first frame (the writers' slot follows the observers'). */
 static int stage_begin(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)err;
     pl_observe_t *o = ctx;
     if (o->t_start == 0.0) {
         o->first = sim->first_step;
         o->last = sim->last_step;
         o->t_start = omp_get_wtime();
+        o->sim = sim;
+        if (sim->colloid_traj && sim->scene.observe.clusters_interval > 0) {
+            int rc = pl_colloid_traj_cluster_ids(sim->colloid_traj, traj_ids, o, err);
+            if (rc) return rc;
+        }
     }
     return 0;
 }
@@ -711,8 +843,11 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
     if (!bad && o->vacf && pl_mtau_samples(o->vacf) > 1)
         bad |= write_mtau(obs, "colloid_vacf", o->vacf, "a0^2/t0^2") != 0;
     if (!bad && o->cl && o->c_n > 0) {
-        static const char *const nm[3] = {"cluster_number", "largest_cluster", "mean_cluster_size"};
-        for (int k = 0; k < 3 && !bad; ++k) bad |= series(obs, nm[k], o->c_n, o->c_step, dt, o->c_val[k], "1") != 0;
+        /* the bond kinds with energy bonds; the primary fraction (undefined
+         * in samples without a bond) only in the summary */
+        const int ncv = sim->scene.observe.clusters_bond == PL_BOND_ENERGY ? NCV - 1 : 4;
+        for (int k = 0; k < ncv && !bad; ++k)
+            bad |= series(obs, cv_names[k], o->c_n, o->c_step, dt, o->c_val[k], "1") != 0;
         size_t len = o->c_hist_len; /* trailing empty sizes left out */
         while (len > 1 && o->c_hist[len - 1] == 0) --len;
         hsize_t d1[1] = {len};
@@ -853,14 +988,21 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
         pl_json_int(&b, e, "samples", (long long)pl_rdf_samples(o->rdf));
         pl_json_set(&b, all, "rdf_peak", e);
     }
-    for (int k = 0; o->cl && k < 3; ++k) {
-        if (o->cb[k].n < 2) continue;
-        pl_blocking_result_t res = pl_blocking_result(&o->cb[k]);
+    const int energy_bonds = sim->scene.observe.clusters_bond == PL_BOND_ENERGY;
+    for (int ob = OB_NCLUSTERS; o->cl && ob < OB_N; ++ob) {
+        const pl_blocking_t *bl = ob_blocking(o, ob);
+        if (ob == OB_SETTLING || !bl || bl->n < 2 || (ob > OB_BONDS && !energy_bonds)) continue;
+        pl_blocking_result_t res = pl_blocking_result(bl);
         if (!isfinite(res.mean) || !isfinite(res.se)) continue;
-        json_t *e = entry(&b, o, OB_NCLUSTERS + k, res.mean, res.se, res.n_indep, res.inefficiency, res.plateau,
-                          o->cl_wall, target, "1");
-        pl_json_int(&b, e, "samples", (long long)o->cb[k].n);
-        pl_json_set(&b, all, ob_names[OB_NCLUSTERS + k], e);
+        json_t *e = entry(&b, o, ob, res.mean, res.se, res.n_indep, res.inefficiency, res.plateau, o->cl_wall,
+                          target, "1");
+        pl_json_int(&b, e, "samples", (long long)bl->n);
+        if (ob == OB_PRIMARY_FRACTION) pl_json_str(&b, e, "over", "samples with at least one bond");
+        if (ob >= OB_BONDS && energy_bonds) {
+            pl_json_real(&b, e, "bond_energy_kT", -sim->scene.observe.clusters_energy);
+            if (isfinite(o->c_barrier)) pl_json_real(&b, e, "barrier_gap_a0", o->c_barrier);
+        }
+        pl_json_set(&b, all, ob_names[ob], e);
     }
     if (o->s_vb.n >= 2) {
         pl_blocking_result_t res = pl_blocking_result(&o->s_vb);

@@ -9,6 +9,8 @@
 #define OFF(member) offsetof(pl_scene_t, observe.member)
 #define N(a) (sizeof(a) / sizeof((a)[0]))
 
+static const char *const bond_choices[] = {"gap", "energy", NULL}; /* PL_BOND_* */
+
 static const pl_key_t observe_keys[] = {
     {"rdf_interval", PL_KEY_INT, OFF(rdf_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "colloid radial distribution function g(r) every this many steps (0: off); mean and SE per bin by "
@@ -36,7 +38,14 @@ static const pl_key_t observe_keys[] = {
     {"clusters_start", PL_KEY_INT, OFF(clusters_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "first step the clusters are counted"},
     {"clusters_gap", PL_KEY_REAL, OFF(clusters_gap), -1e6, 1e6, 0, NULL, 0.1, NULL, "a0",
-     "two colloids are bonded when their surface gap r - R_i - R_j is below this"},
+     "two colloids are bonded when their surface gap r - R_i - R_j is below this (clusters_bond = \"gap\")"},
+    {"clusters_bond", PL_KEY_CHOICE, OFF(clusters_bond), 0, 0, 0, bond_choices, PL_BOND_GAP, NULL, "-",
+     "the bond rule of the cluster observer: \"gap\" (surface gap below clusters_gap) or \"energy\" (the "
+     "conservative pair energy of colloids.pairs below -clusters_energy; a bond closer than the DLVO barrier "
+     "is a primary-minimum bond, one beyond it a secondary-minimum bond; needs a pair minimum deeper than "
+     "-clusters_energy)"},
+    {"clusters_energy", PL_KEY_REAL, OFF(clusters_energy), 0, 1e6, PL_KEY_MIN_OPEN, NULL, 1.0, NULL, "kT_ref",
+     "E_c of the energy bond: two colloids are bonded when their pair energy is below -E_c"},
     {"vdist_interval", PL_KEY_INT, OFF(vdist_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "velocity components of the fluid and of the colloids every this many steps (0: off), each scaled by "
      "sqrt(M / kT) (kT of the thermostat, else of the fluid) minus the mean: histograms and chi^2 against "
@@ -64,7 +73,9 @@ const pl_section_t pl_scene_section_observe = {"observe", "observers: measured q
 
 /* In the order of the observables of src/observe/observe_module.c (after "none"). */
 static const char *const stop_choices[] = {"none", "colloid_D", "rdf_peak", "cluster_number", "largest_cluster",
-                                           "mean_cluster_size", "settling_velocity", NULL};
+                                           "mean_cluster_size", "settling_velocity", "cluster_bonds",
+                                           "cluster_bonds_primary", "cluster_bonds_secondary",
+                                           "cluster_primary_fraction", NULL};
 
 static const pl_key_t stop_keys[] = {
     {"observable", PL_KEY_CHOICE, OFF(observable), 0, 0, 0, stop_choices, 0, NULL, "-",
