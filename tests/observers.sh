@@ -188,6 +188,73 @@ print(f"barrier at gap {hb:.4f} a0; cluster ids in colloids.h5 and colloids.xyz"
 PY
 ); then ok "energy bonds on a constructed configuration: $out"; else bad "energy bonds: $out"; fi
 
+# g(r) per size class (observe.rdf_size_classes).  (a) A rock-salt lattice
+# read from a file: 64 sites 4 a0 apart in a box of 16, radius 1.0 and 1.2 on
+# the two sublattices, so the two radius classes are the sublattices exactly:
+# the pair counts g_ab n_a n_b P_b (P_b the ideal-gas fraction of the bin)
+# give 192 unlike pairs at r = 4 and none closer, 192 like pairs of each
+# class at 4 sqrt 2 and none closer (to 1e-9: the counts are integers).
+# (b) Free Brownian colloids with polydispersity 0.25 in 3 classes: each of
+# the 6 partials is 1 within 3 SE in >= 85 % of the bins beyond contact
+# (expected 99.7 %; fewer samples and pairs per partial than the total g(r)
+# above, so a looser bound) with chi^2 per bin < 2.
+$PY - <<'PY'
+with open("rs_pos.txt", "w") as f:
+    for i in range(4):
+        for j in range(4):
+            for k in range(4):
+                f.write(f"{4 * i + 2} {4 * j + 2} {4 * k + 2} {1.0 if (i + j + k) % 2 == 0 else 1.2}\n")
+PY
+cat > rs.cfg <<'CFG'
+name = "rs";
+seed = 3;
+steps = 0;
+box: { cells = [16, 16, 16]; };
+fluid: { density = 0.0; };
+srd: { dt = 0.01; };
+colloids: { count = 64; radius = 1.0; init = "file"; init_file = "rs_pos.txt"; pairs = ""; integrator = "brownian";
+  substeps = 1; max_overlap = 1.0; };
+observe: { rdf_interval = 1; rdf_bins = 64; rdf_rmax = 8.0; rdf_size_classes = 2; };
+CFG
+sed -e 's/^name = "free";/name = "poly";/' -e 's/^steps = 6000;/steps = 4000;/' \
+    -e 's/max_overlap = 1.0; };/max_overlap = 1.0; polydispersity = 0.25; };/' \
+    -e 's/rdf_interval = 10; rdf_start = 100; rdf_bins = 40; msd_interval = 1;/rdf_interval = 10; rdf_start = 100; rdf_bins = 40; rdf_size_classes = 3;/' free.cfg > poly.cfg
+"$PELOID" run rs.cfg --out rs 2> /dev/null || bad "rock-salt run"
+"$PELOID" run poly.cfg --out poly 2> /dev/null || bad "polydisperse run"
+if out=$($PY - <<'PY'
+import json, math, h5py, numpy as np
+with h5py.File("rs/observables.h5") as f:
+    g = f["observables/colloid_rdf_classes"]
+    r, val, pairs = g["r"][:], g["value"][0], g["pairs"][:]
+    cnt, crad = g["class_count"][:], g["class_radius"][:]
+    assert list(cnt) == [32, 32] and np.allclose(crad, [[1.0, 1.0], [1.2, 1.2]]), (cnt, crad)
+    assert np.allclose(g["r_over_R"][:], r / 1.0) and "r_um" not in g
+dr = 8.0 / 64
+pb = 4 * math.pi / 3 * ((r + dr / 2) ** 3 - (r - dr / 2) ** 3) / 16 ** 3
+for p, (a, b) in enumerate(pairs):
+    npairs = 32 * 32 if a != b else 32 * 31 / 2
+    n = val[p] * npairs * pb
+    assert np.abs(n - np.rint(n)).max() < 1e-9, (a, b)
+    first = np.nonzero(np.rint(n))[0][0]
+    want = 4.0 if a != b else 4 * math.sqrt(2)
+    assert r[first] - dr / 2 <= want < r[first] + dr / 2 and np.rint(n[first]) == 192, (a, b, r[first], n[first])
+s = json.load(open("poly/summary.json"))["observables"]
+assert len(s["rdf_peak_classes"]) == 6
+with h5py.File("poly/observables.h5") as f:
+    g = f["observables/colloid_rdf_classes"]
+    r, val, se, crad = g["r"][:], g["value"][0], g["value_se"][0], g["class_radius"][:]
+worst = (1.0, 0.0)
+for p in range(6):
+    m = (se[p] > 0) & (r > 2 * crad[-1][1])
+    z = (val[p][m] - 1) / se[p][m]
+    inside, chi2 = np.mean(np.abs(z) < 3), np.mean(z ** 2)
+    assert inside >= 0.85 and chi2 < 2.0, (p, inside, chi2)
+    worst = (min(worst[0], inside), max(worst[1], chi2))
+print(f"rock salt: 192 unlike pairs at 4 a0, 192 like pairs per class at 4 sqrt 2 a0; polydisperse gas: "
+      f"6 partials, worst {worst[0]:.2f} of bins within 3 SE, chi2/bin <= {worst[1]:.2f}")
+PY
+); then ok "g(r) per size class: $out"; else bad "g(r) per size class: $out"; fi
+
 # Velocity distributions (Hecht Fig. 2): a fluid started from the uniform
 # (square-well) distribution is rejected at step 0 (p < 1e-6 with 25600
 # components), and sampled from step 100 on (relaxed within a few collision

@@ -81,6 +81,20 @@ assert np.isfinite(r.results.rdf).all() and r.results.rdf.max() > 0
 print("    quickstart g(r), 0.1..3 um in 20 bins:", np.round(r.results.rdf, 2))
 PYEOF
 
+# g(r) of a physical scene also in units of R and in micrometres (the mapping's a0)
+$PY - <<'PYEOF' && ok "quickstart g(r): r in a0, R and um consistent with colloids.h5 (a0, radius)" || bad "g(r) units"
+import json, h5py, numpy as np
+with h5py.File("q/colloids.h5") as f:
+    a0_nm, R_nm = f["parameters"].attrs["a0"], f["particles/colloids/radius"][0]
+with h5py.File("q/observables.h5") as f:
+    g = f["observables/colloid_rdf"]
+    r, rR, rum = g["r"][:], g["r_over_R"][:], g["r_um"][:]
+    assert g["r_um"].attrs["unit"] in (b"um", "um")
+assert np.allclose(rum, r * a0_nm / 1000, rtol=1e-12) and np.allclose(rR, r * a0_nm / R_nm, rtol=1e-9)
+e = json.load(open("q/summary.json"))["observables"]["rdf_peak"]
+assert abs(e["r_um"] - e["r"] * a0_nm / 1000) < 1e-12 * e["r_um"]
+PYEOF
+
 # ideal gas of colloids (no pair terms, no fluid), model units
 cat > gas.cfg <<'CFG'
 name = "gas";

@@ -10,6 +10,7 @@ typedef struct {
     long long rdf_interval, rdf_start; /* colloid g(r) */
     long long rdf_bins;
     double rdf_rmax;                   /* 0: the largest the box allows */
+    long long rdf_size_classes;        /* 0: off; k >= 2: partial g_ab of k radius classes */
     long long msd_interval, msd_start; /* colloid MSD, multiple-tau */
     long long vacf_interval, vacf_start; /* colloid VACF and Green-Kubo D */
     long long clusters_interval, clusters_start;

@@ -92,6 +92,12 @@ typedef struct pl_observe {
     pl_rdf_t *rdf;
     pl_rdf_params_t rdf_par;
     double rdf_wall;
+    /* g(r) per size class: ncls classes, npair = ncls (ncls + 1) / 2 partials */
+    size_t ncls, npair;
+    pl_rdf_t **rdfc;   /* npair, pair (a, b), a <= b, in row order */
+    int32_t *cls;      /* n: class of each colloid */
+    double *cls_rad;   /* ncls x 2: smallest and largest radius of each class */
+    size_t *cls_n;     /* ncls: colloids per class */
     /* MSD */
     pl_mtau_t *msd;
     double *u[3]; /* unwrapped positions */
@@ -207,6 +213,18 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
         int rc = energy_bond_check(sc, err);
         if (rc) return rc;
     }
+    if (o->rdf_size_classes > 0) {
+        const char *why = o->rdf_interval <= 0 ? "needs observe.rdf_interval > 0"
+                          : o->rdf_size_classes < 2 ? "one class is the total g(r)"
+                          : o->rdf_size_classes > sc->colloids.count ? "more classes than colloids"
+                          : !(sc->colloids.polydispersity > 0) && sc->colloids.init != PL_CINIT_FILE
+                              ? "all radii are equal (colloids.polydispersity = 0, no init_file)"
+                              : NULL;
+        if (why)
+            return pl_scene_fail(sc, err, OFFO(rdf_size_classes), "observe.rdf_size_classes",
+                                 "%lld: %s; allowed: 0, or 2..min(16, colloids.count) with polydisperse radii",
+                                 o->rdf_size_classes, why);
+    }
     if (o->rdf_interval > 0) {
         if (sc->box.walls_xy != PL_WALLS_NONE)
             return pl_scene_fail(sc, err, OFFO(rdf_interval), "observe.rdf_interval",
@@ -242,6 +260,11 @@ static void observe_destroy(pl_sim_t *sim)
     pl_observe_t *o = sim->observe;
     if (!o) return;
     pl_rdf_free(o->rdf);
+    for (size_t k = 0; o->rdfc && k < o->npair; ++k) pl_rdf_free(o->rdfc[k]);
+    free(o->rdfc);
+    free(o->cls);
+    free(o->cls_rad);
+    free(o->cls_n);
     pl_mtau_free(o->msd);
     pl_mtau_free(o->vacf);
     pl_cluster_free(o->cl);
@@ -273,6 +296,61 @@ static uint64_t expected_samples(const pl_observe_t *o, long long start, long lo
 
 /* ---- stages ------------------------------------------------------------ */
 
+/* Radius order, ties by index (a total order: the classes do not depend on
+ * the sort's stability). */
+typedef struct {
+    double rad;
+    size_t idx;
+} rank_t;
+
+static int by_radius(const void *a, const void *b)
+{
+    const rank_t *p = a, *q = b;
+    if (p->rad != q->rad) return p->rad < q->rad ? -1 : 1;
+    return (p->idx > q->idx) - (p->idx < q->idx);
+}
+
+/* The size classes of g(r) (observe.rdf_size_classes): rank by radius, k
+ * classes of equal count, class floor(rank k / n); one partial g_ab per class
+ * pair a <= b with the parameters of the total g(r). */
+static int size_classes(pl_observe_t *o, const pl_colloid_t *c, size_t k, int nthreads, pl_err_t *err)
+{
+    const size_t n = c->n;
+    rank_t *ord = malloc(n * sizeof *ord);
+    o->cls = malloc(n * sizeof *o->cls);
+    o->cls_rad = malloc(2 * k * sizeof *o->cls_rad);
+    o->cls_n = calloc(k, sizeof *o->cls_n);
+    o->npair = k * (k + 1) / 2;
+    o->rdfc = calloc(o->npair, sizeof *o->rdfc);
+    if (!ord || !o->cls || !o->cls_rad || !o->cls_n || !o->rdfc) {
+        free(ord);
+        o->npair = 0;
+        return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the g(r) size classes");
+    }
+    o->ncls = k;
+    for (size_t i = 0; i < n; ++i) ord[i] = (rank_t){c->rad[i], i};
+    qsort(ord, n, sizeof *ord, by_radius);
+    for (size_t a = 0; a < k; ++a) o->cls_rad[2 * a] = INFINITY, o->cls_rad[2 * a + 1] = -INFINITY;
+    for (size_t q = 0; q < n; ++q) {
+        const size_t a = q * k / n, i = ord[q].idx;
+        o->cls[i] = (int32_t)a;
+        o->cls_n[a]++;
+        o->cls_rad[2 * a] = fmin(o->cls_rad[2 * a], c->rad[i]);
+        o->cls_rad[2 * a + 1] = fmax(o->cls_rad[2 * a + 1], c->rad[i]);
+    }
+    free(ord);
+    size_t q = 0;
+    for (size_t a = 0; a < k; ++a)
+        for (size_t b = a; b < k; ++b, ++q) {
+            pl_rdf_params_t p = o->rdf_par;
+            p.class_a = (int)a;
+            p.class_b = (int)b;
+            int rc = pl_rdf_create(&p, nthreads, &o->rdfc[q], err);
+            if (rc) return rc;
+        }
+    return 0;
+}
+
 static int stage_rdf(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     pl_observe_t *o = ctx;
@@ -298,6 +376,11 @@ static int stage_rdf(pl_sim_t *sim, void *ctx, pl_err_t *err)
         if (rc) return rc;
     }
     pl_rdf_sample(o->rdf, c->n, c->x, c->y, c->z, NULL);
+    if (sc->observe.rdf_size_classes >= 2 && !o->rdfc) {
+        int rc = size_classes(o, c, (size_t)sc->observe.rdf_size_classes, sim->nthreads, err);
+        if (rc) return rc;
+    }
+    for (size_t k = 0; k < o->npair; ++k) pl_rdf_sample(o->rdfc[k], c->n, c->x, c->y, c->z, o->cls);
     o->rdf_wall += omp_get_wtime() - t0;
     return 0;
 }
@@ -573,14 +656,13 @@ static int diffusion(const pl_observe_t *o, double *D, double *se, double *tmin,
 }
 
 /* The bin of the highest g(r) (the first coordination shell) and its SE. */
-static int rdf_peak(const pl_observe_t *o, double *r, double *g, double *se)
+static int rdf_peak_of(const pl_rdf_t *rdf, size_t nb, double *r, double *g, double *se)
 {
-    if (!o->rdf || pl_rdf_samples(o->rdf) < 2) return 0;
-    const size_t nb = o->rdf_par.nbins;
+    if (!rdf || pl_rdf_samples(rdf) < 2) return 0;
     double *rm = malloc(3 * nb * sizeof(double));
     if (!rm) return 0;
     double *gg = rm + nb, *ss = gg + nb;
-    pl_rdf_result(o->rdf, rm, gg, ss, NULL);
+    pl_rdf_result(rdf, rm, gg, ss, NULL);
     size_t best = 0;
     for (size_t b = 1; b < nb; ++b)
         if (gg[b] > gg[best]) best = b;
@@ -589,6 +671,18 @@ static int rdf_peak(const pl_observe_t *o, double *r, double *g, double *se)
     *se = ss[best];
     free(rm);
     return isfinite(*g) && isfinite(*se);
+}
+
+static int rdf_peak(const pl_observe_t *o, double *r, double *g, double *se)
+{
+    return rdf_peak_of(o->rdf, o->rdf_par.nbins, r, g, se);
+}
+
+/* r of g(r) in units of colloids.radius and, for a physical scene, in um. */
+static void rdf_r_units(pl_json_t *b, json_t *e, const pl_scene_t *sc, double r)
+{
+    pl_json_real(b, e, "r_over_R", r / sc->colloids.radius);
+    if (sc->mapping.enabled) pl_json_real(b, e, "r_um", r * sc->mapping.map.a0 * 1e6);
 }
 
 /* The blocking accumulator of a time-averaged observable (NULL: none). */
@@ -796,6 +890,45 @@ static int write_mtau(hid_t obs, const char *name, const pl_mtau_t *c, const cha
     return bad ? -1 : 0;
 }
 
+/* /observables/<name>/{r, r_over_R, [r_um], value (1 x np x nbins; 1 x nbins
+ * for one), value_se, step, time, samples}: the run's average of np g(r)
+ * sharing their bins; r also in units of colloids.radius and, for a physical
+ * scene, in micrometres (the mapping's a0). */
+static int write_rdf(hid_t obs, const char *name, const pl_sim_t *sim, const pl_observe_t *o, pl_rdf_t *const *r,
+                     size_t np)
+{
+    const size_t nb = o->rdf_par.nbins;
+    double *buf = malloc((3 + 2 * np) * nb * sizeof(double));
+    hid_t g = pl_h5_group(obs, name);
+    int bad = !buf || g < 0;
+    if (!bad) {
+        double *rr = buf, *rR = buf + nb, *rum = buf + 2 * nb, *val = buf + 3 * nb, *se = val + np * nb;
+        for (size_t k = 0; k < np; ++k) pl_rdf_result(r[k], rr, val + k * nb, se + k * nb, NULL);
+        for (size_t k = 0; k < 2 * np * nb; ++k) /* empty bins (no ideal pair) carry no estimate */
+            if (!isfinite(val[k])) val[k] = 0.0;
+        const pl_scene_t *sc = &sim->scene;
+        for (size_t b = 0; b < nb; ++b) {
+            rR[b] = rr[b] / sc->colloids.radius;
+            rum[b] = sc->mapping.enabled ? rr[b] * sc->mapping.map.a0 * 1e6 : 0.0;
+        }
+        hsize_t d1[1] = {nb}, d2[2] = {1, nb}, d3[3] = {1, np, nb}, one[1] = {1};
+        long long st = sim->step;
+        double t = (double)st * sc->srd.dt;
+        bad |= put(g, "r", H5T_NATIVE_DOUBLE, 1, d1, rr, "a0") != 0;
+        bad |= put(g, "r_over_R", H5T_NATIVE_DOUBLE, 1, d1, rR, "R") != 0;
+        if (sc->mapping.enabled) bad |= put(g, "r_um", H5T_NATIVE_DOUBLE, 1, d1, rum, "um") != 0;
+        bad |= put(g, "value", H5T_NATIVE_DOUBLE, np > 1 ? 3 : 2, np > 1 ? d3 : d2, val, "1") != 0;
+        bad |= put(g, "value_se", H5T_NATIVE_DOUBLE, np > 1 ? 3 : 2, np > 1 ? d3 : d2, se, "1") != 0;
+        bad |= put(g, "step", H5T_NATIVE_LLONG, 1, one, &st, NULL) != 0;
+        bad |= put(g, "time", H5T_NATIVE_DOUBLE, 1, one, &t, "t0") != 0;
+        unsigned long long ns = pl_rdf_samples(r[0]);
+        bad |= put(g, "samples", H5T_NATIVE_ULLONG, 0, NULL, &ns, NULL) != 0;
+    }
+    if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+    free(buf);
+    return bad ? -1 : 0;
+}
+
 /* Components sampled into velocity histogram k (0: none, e.g. Brownian
  * colloids have no velocity). */
 static uint64_t vdist_total(const pl_observe_t *o, int k)
@@ -816,28 +949,30 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
     hid_t obs = pl_h5_group(f, "observables");
     bad |= obs < 0;
     const double dt = sim->scene.srd.dt;
-    if (!bad && o->rdf && pl_rdf_samples(o->rdf) > 0) { /* one frame: the run's average */
-        const size_t nb = o->rdf_par.nbins;
-        double *buf = malloc(3 * nb * sizeof(double));
-        hid_t g = pl_h5_group(obs, "colloid_rdf");
-        bad |= !buf || g < 0;
+    if (!bad && o->rdf && pl_rdf_samples(o->rdf) > 0) bad |= write_rdf(obs, "colloid_rdf", sim, o, &o->rdf, 1) != 0;
+    if (!bad && o->npair && pl_rdf_samples(o->rdfc[0]) > 0) {
+        hid_t g = -1;
+        bad |= write_rdf(obs, "colloid_rdf_classes", sim, o, o->rdfc, o->npair) != 0;
+        if (!bad) g = H5Gopen2(obs, "colloid_rdf_classes", H5P_DEFAULT);
+        int32_t *pairs = malloc(2 * o->npair * sizeof *pairs);
+        unsigned long long *cnt = malloc(o->ncls * sizeof *cnt);
+        bad |= g < 0 || !pairs || !cnt;
         if (!bad) {
-            pl_rdf_result(o->rdf, buf, buf + nb, buf + 2 * nb, NULL);
-            for (size_t k = 0; k < 2 * nb; ++k) /* empty bins (no ideal pair) carry no estimate */
-                if (!isfinite(buf[nb + k])) buf[nb + k] = 0.0;
-            hsize_t d1[1] = {nb}, d2[2] = {1, nb}, one[1] = {1};
-            long long st = sim->step;
-            double t = (double)st * dt;
-            bad |= put(g, "r", H5T_NATIVE_DOUBLE, 1, d1, buf, "a0") != 0;
-            bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, buf + nb, "1") != 0;
-            bad |= put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, buf + 2 * nb, "1") != 0;
-            bad |= put(g, "step", H5T_NATIVE_LLONG, 1, one, &st, NULL) != 0;
-            bad |= put(g, "time", H5T_NATIVE_DOUBLE, 1, one, &t, "t0") != 0;
-            unsigned long long ns = pl_rdf_samples(o->rdf);
-            bad |= put(g, "samples", H5T_NATIVE_ULLONG, 0, NULL, &ns, NULL) != 0;
+            size_t q = 0;
+            for (size_t a = 0; a < o->ncls; ++a)
+                for (size_t b2 = a; b2 < o->ncls; ++b2, ++q) pairs[2 * q] = (int32_t)a, pairs[2 * q + 1] = (int32_t)b2;
+            for (size_t a = 0; a < o->ncls; ++a) cnt[a] = o->cls_n[a];
+            hsize_t dp[2] = {o->npair, 2}, dc[2] = {o->ncls, 2}, dn[1] = {o->ncls};
+            bad |= put(g, "pairs", H5T_NATIVE_INT32, 2, dp, pairs, NULL) != 0;
+            bad |= put(g, "class_radius", H5T_NATIVE_DOUBLE, 2, dc, o->cls_rad, "a0") != 0;
+            bad |= put(g, "class_count", H5T_NATIVE_ULLONG, 1, dn, cnt, NULL) != 0;
+            bad |= pl_h5_attr_str(g, "meaning", "value[0][p]: g_ab(r) of class pair p = pairs[p] (a <= b); classes: "
+                                                "colloids ranked by radius (ties by index), equal counts; "
+                                                "class_radius: smallest and largest radius of each") != 0;
         }
+        free(pairs);
+        free(cnt);
         if (g >= 0 && H5Gclose(g) < 0) bad = 1;
-        free(buf);
     }
     if (!bad && o->msd && pl_mtau_samples(o->msd) > 1) bad |= write_mtau(obs, "colloid_msd", o->msd, "a0^2") != 0;
     if (!bad && o->vacf && pl_mtau_samples(o->vacf) > 1)
@@ -985,8 +1120,35 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
         json_t *e = entry(&b, o, OB_RDF_PEAK, g, gse, (double)pl_rdf_samples(o->rdf), 0.0, 1, o->rdf_wall, target,
                           "1");
         pl_json_real(&b, e, "r", r);
+        rdf_r_units(&b, e, &sim->scene, r);
         pl_json_int(&b, e, "samples", (long long)pl_rdf_samples(o->rdf));
         pl_json_set(&b, all, "rdf_peak", e);
+    }
+    if (o->npair) { /* the peak of each partial g_ab */
+        json_t *arr = json_array();
+        size_t q = 0;
+        for (size_t a = 0; a < o->ncls; ++a)
+            for (size_t c2 = a; c2 < o->ncls; ++c2, ++q) {
+                if (!rdf_peak_of(o->rdfc[q], o->rdf_par.nbins, &r, &g, &gse)) continue;
+                json_t *e = json_object();
+                const long long ab[2] = {(long long)a, (long long)c2};
+                json_t *cl = json_array();
+                for (int k = 0; k < 2; ++k) json_array_append_new(cl, json_integer(ab[k]));
+                pl_json_set(&b, e, "classes", cl);
+                const double ra[2] = {o->cls_rad[2 * a], o->cls_rad[2 * a + 1]};
+                const double rb[2] = {o->cls_rad[2 * c2], o->cls_rad[2 * c2 + 1]};
+                pl_json_reals(&b, e, "radius_range_a", ra, 2);
+                pl_json_reals(&b, e, "radius_range_b", rb, 2);
+                pl_json_real(&b, e, "value", g);
+                pl_json_real(&b, e, "stderr", gse);
+                pl_json_real(&b, e, "n_independent", (double)pl_rdf_samples(o->rdfc[q]));
+                pl_json_real(&b, e, "wall_s", o->rdf_wall);
+                pl_json_str(&b, e, "unit", "1");
+                pl_json_real(&b, e, "r", r);
+                rdf_r_units(&b, e, &sim->scene, r);
+                json_array_append_new(arr, e);
+            }
+        pl_json_set(&b, all, "rdf_peak_classes", arr);
     }
     const int energy_bonds = sim->scene.observe.clusters_bond == PL_BOND_ENERGY;
     for (int ob = OB_NCLUSTERS; o->cl && ob < OB_N; ++ob) {

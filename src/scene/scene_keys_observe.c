@@ -21,6 +21,10 @@ static const pl_key_t observe_keys[] = {
     {"rdf_rmax", PL_KEY_REAL, OFF(rdf_rmax), 0, 1e6, 0, NULL, 0, NULL, "a0",
      "largest distance of g(r) (0: half the shortest periodic box edge, or the box edge with walls on all "
      "axes but z)"},
+    {"rdf_size_classes", PL_KEY_INT, OFF(rdf_size_classes), 0, 16, 0, NULL, 0, NULL, "-",
+     "partial g_ab(r) of size classes (0: off; k in 2..16): the colloids ranked by radius (ties by index) and "
+     "cut into k classes of equal count, class floor(rank k / N); every class pair a <= b, normalised by its "
+     "own pair count; needs colloids.polydispersity > 0 or radii from colloids.init_file"},
     {"msd_interval", PL_KEY_INT, OFF(msd_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "colloid mean-squared displacement of the unwrapped positions every this many steps (0: off), by a "
      "multiple-tau correlator (16 points per level, factor 2) up to the run length; D from its slope"},
