@@ -255,6 +255,46 @@ print(f"rock salt: 192 unlike pairs at 4 a0, 192 like pairs per class at 4 sqrt 
 PY
 ); then ok "g(r) per size class: $out"; else bad "g(r) per size class: $out"; fi
 
+# C_FF (observe.cff_interval; potential coupling only): 8 pinned colloids
+# (sigma_cf = 2 a0, epsilon_cf = 2.5 kT) 12 a0 apart in SRD fluid (n_f = 5).
+# The Green-Kubo friction integrated to the first zero of C_FF is the
+# short-time (random-force) part of the friction, which PL App. B and Eq. 40
+# give as the Enskog friction xi_E = (8/3) sqrt(2 pi kT m_f) n_f sigma_cf^2
+# = 133.7 m_f/t0 for a fixed colloid; Eq. 40 is for hard spheres and the WCA
+# wall is soft (an effective sigma a few % off moves xi_E twice as much), and
+# the integral's end at the first zero is a choice, so the bound is generous:
+# 0.8 < xi / xi_E < 1.4 (measured 1.125 +- 0.026), SE below 5 %.  Bitwise the
+# same at 1 and 2 threads.
+cat > cff.cfg <<'CFG'
+name = "cff";
+seed = 7;
+steps = 1000;
+box: { cells = [24, 24, 24]; };
+fluid: { density = 5.0; temperature = 1.0; };
+srd: { dt = 0.1; rule = "random_axis"; alpha = 90.0; };
+thermostat: { type = "rescale"; temperature = 1.0; };
+colloids: { count = 8; radius = 2.0; mass_density = 5.0; temperature = 1.0; init = "lattice"; pairs = "";
+  substeps = 4; };
+coupling: { method = "potential"; sigma_cf = 2.0; epsilon_cf = 2.5; pinned = true; };
+observe: { cff_interval = 1; };
+CFG
+for th in 1 2; do "$PELOID" run cff.cfg --threads $th --out cff$th 2> /dev/null || bad "C_FF run ($th threads)"; done
+if out=$($PY - <<'PY'
+import json, math, h5py, numpy as np
+a, b = (json.load(open(f"cff{t}/summary.json"))["observables"]["colloid_friction_green_kubo"] for t in (1, 2))
+assert (a["value"], a["stderr"]) == (b["value"], b["stderr"])
+with h5py.File("cff1/observables.h5") as f, h5py.File("cff2/observables.h5") as g:
+    c, lag = f["observables/colloid_cff/value"][:, 3], f["observables/colloid_cff/lag"][:]
+    assert np.array_equal(c, g["observables/colloid_cff/value"][:, 3])
+xiE = 8 / 3 * math.sqrt(2 * math.pi) * 5 * 2.0 ** 2
+q = a["value"] / xiE
+assert 0.8 < q < 1.4 and a["stderr"] < 0.05 * a["value"], (a, xiE)
+assert c[0] == a["force_variance"] and 0 < a["integrated_to_t0"] < 1.0
+print(f"xi = {a['value']:.1f} +- {a['stderr']:.1f} m_f/t0 (to t = {a['integrated_to_t0']:.2f} t0) = {q:.3f} xi_E; "
+      f"C_FF(0.1 t0)/C_FF(0) = {c[1] / c[0]:.3f}; 1 and 2 threads bitwise")
+PY
+); then ok "C_FF of pinned colloids: $out"; else bad "C_FF: $out"; fi
+
 # Velocity distributions (Hecht Fig. 2): a fluid started from the uniform
 # (square-well) distribution is rejected at step 0 (p < 1e-6 with 25600
 # components), and sampled from step 100 on (relaxed within a few collision

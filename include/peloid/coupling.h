@@ -53,6 +53,8 @@ typedef struct pl_coupling {
     int32_t *near_owner; /* thread whose chunk (and histogram row) holds it */
     double *near_buf;    /* 12 x near_cap: r, v, f, saved displacement */
     double *cf;          /* 3 x ncolloids: fluid force on the colloids */
+    double *cf_mean;     /* 3 x ncolloids: its mean over the last collision step (trapezoid over
+                          * the MD steps), NULL unless asked for (pl_coupling_mean_force_on) */
     double *wca_partial; /* per-block partial reactions (pl_coupling_wca_forces) */
     size_t wca_partial_cap; /* doubles */
     double epot_cf;      /* PL Eq. 17 energy after the last MD step */
@@ -88,6 +90,11 @@ int pl_coupling_stage_flow(struct pl_sim *sim, void *ctx, pl_err_t *err);
 int pl_coupling_potential_setup(pl_coupling_t *cp, struct pl_sim *sim, pl_err_t *err);
 int pl_coupling_stage_select(struct pl_sim *sim, void *ctx, pl_err_t *err);
 int pl_coupling_stage_potential_md(struct pl_sim *sim, void *ctx, pl_err_t *err);
+
+/* Potential coupling: keep the mean fluid force on each colloid over every
+ * collision step in cp->cf_mean from now on (the C_FF observer); changes no
+ * trajectory.  0 or PL_ERR_NOMEM. */
+int pl_coupling_mean_force_on(pl_coupling_t *cp, size_t ncolloids, pl_err_t *err);
 
 /* Pinned colloids: their velocities (changed by a coupling stage) are taken
  * back to zero and the momentum they had gained is added to cp->impulse. */

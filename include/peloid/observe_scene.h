@@ -13,6 +13,7 @@ typedef struct {
     long long rdf_size_classes;        /* 0: off; k >= 2: partial g_ab of k radius classes */
     long long msd_interval, msd_start; /* colloid MSD, multiple-tau */
     long long vacf_interval, vacf_start; /* colloid VACF and Green-Kubo D */
+    long long cff_interval, cff_start; /* fluid force autocorrelation C_FF and Green-Kubo friction */
     long long clusters_interval, clusters_start;
     double clusters_gap;               /* bond: surface gap below this */
     int clusters_bond;                 /* PL_BOND_GAP | PL_BOND_ENERGY */

@@ -204,6 +204,7 @@ void pl_coupling_free(pl_coupling_t *cp)
     pl_free(cp->marks);
     free(cp->axis_buf);
     free(cp->cf);
+    free(cp->cf_mean);
     free(cp->wca_partial);
     free(cp->near_idx);
     free(cp->near_owner);

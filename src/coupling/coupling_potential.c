@@ -141,6 +141,21 @@ static int forces(pl_coupling_t *cp, pl_colloid_t *c, pl_err_t *err)
     return 0;
 }
 
+int pl_coupling_mean_force_on(pl_coupling_t *cp, size_t ncolloids, pl_err_t *err)
+{
+    if (!cp->cf_mean && !(cp->cf_mean = calloc(3 * (ncolloids + 1), sizeof(double))))
+        return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the mean fluid force");
+    return 0;
+}
+
+/* The mean fluid force over the step: trapezoid over the MD steps, h the
+ * half MD step (as the pinned impulse). */
+static void mean_force_add(pl_coupling_t *cp, size_t n, double h)
+{
+    if (!cp->cf_mean) return;
+    for (size_t k = 0; k < 3 * n; ++k) cp->cf_mean[k] += h * cp->cf[k];
+}
+
 int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)ctx;
@@ -159,6 +174,7 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_coupling_potential_unstream(&nb, f, &sim->grid, sim->wall_acc ? &sp : NULL, cp->nthreads, sacc);
     const double dtm = c->dt, h = 0.5 * dtm;
     if (forces(cp, c, err)) return err->code;
+    if (cp->cf_mean) memset(cp->cf_mean, 0, 3 * c->n * sizeof(double));
     for (int s = 0; s < c->substeps; ++s) { /* PL Eqs. 18-19 */
         if (!cp->pinned) {
             pl_colloid_kick(c->n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
@@ -171,7 +187,9 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
         if (cp->pinned) /* impulse of the fluid force over this MD step (trapezoid) */
             for (size_t k = 0; k < c->n; ++k)
                 for (int d = 0; d < 3; ++d) cp->impulse[d] += h * cp->cf[(size_t)d * c->n + k];
+        mean_force_add(cp, c->n, h);
         if (forces(cp, c, err)) return err->code;
+        mean_force_add(cp, c->n, h);
         if (cp->pinned)
             for (size_t k = 0; k < c->n; ++k)
                 for (int d = 0; d < 3; ++d) cp->impulse[d] += h * cp->cf[(size_t)d * c->n + k];
@@ -185,6 +203,8 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
         }
     }
     if (cp->pinned) cp->pinned_time += sc->srd.dt;
+    if (cp->cf_mean)
+        for (size_t k = 0; k < 3 * c->n; ++k) cp->cf_mean[k] /= (double)c->substeps * dtm;
     if (sim->wall_acc) {
         for (int k = 0; k < PL_WALL_ACC_N; ++k) wacc[k] -= sacc[k];
         pl_sim_wall_add(sim, wacc);

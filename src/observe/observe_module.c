@@ -47,6 +47,7 @@
 #include "peloid/blocking.h"
 #include "peloid/cluster.h"
 #include "peloid/colloid.h"
+#include "peloid/coupling.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
 #include "peloid/mapping.h"
@@ -105,6 +106,9 @@ typedef struct pl_observe {
     /* VACF */
     pl_mtau_t *vacf;
     double vacf_dt, vacf_wall;
+    /* C_FF: the mean fluid force over each step (potential coupling) */
+    pl_mtau_t *cff;
+    double cff_dt, cff_wall;
     /* clusters */
     pl_cluster_t *cl;
     pl_blocking_t cb[NCV]; /* cv_names */
@@ -136,7 +140,8 @@ typedef struct pl_observe {
 
 static int any_observer(const pl_scene_observe_t *o)
 {
-    return o->rdf_interval > 0 || o->msd_interval > 0 || o->vacf_interval > 0 || o->clusters_interval > 0 ||
+    return o->rdf_interval > 0 || o->msd_interval > 0 || o->vacf_interval > 0 || o->cff_interval > 0 ||
+           o->clusters_interval > 0 ||
            o->vdist_interval > 0 || o->sediment_interval > 0;
 }
 
@@ -180,6 +185,7 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
         {o->rdf_interval, OFFO(rdf_interval), "observe.rdf_interval"},
         {o->msd_interval, OFFO(msd_interval), "observe.msd_interval"},
         {o->vacf_interval, OFFO(vacf_interval), "observe.vacf_interval"},
+        {o->cff_interval, OFFO(cff_interval), "observe.cff_interval"},
         {o->clusters_interval, OFFO(clusters_interval), "observe.clusters_interval"},
         {o->vdist_interval, OFFO(vdist_interval), "observe.vdist_interval"},
         {o->sediment_interval, OFFO(sediment_interval), "observe.sediment_interval"},
@@ -213,6 +219,11 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
         int rc = energy_bond_check(sc, err);
         if (rc) return rc;
     }
+    if (o->cff_interval > 0 && sc->coupling.method != PL_COUPLE_POTENTIAL)
+        return pl_scene_fail(sc, err, OFFO(cff_interval), "observe.cff_interval",
+                             "%lld: the fluid force on the colloids is a force only with coupling.method = "
+                             "\"potential\" (the collision couplings exchange impulses); allowed: 0",
+                             o->cff_interval);
     if (o->rdf_size_classes > 0) {
         const char *why = o->rdf_interval <= 0 ? "needs observe.rdf_interval > 0"
                           : o->rdf_size_classes < 2 ? "one class is the total g(r)"
@@ -252,6 +263,8 @@ static int observe_create(pl_sim_t *sim, pl_err_t *err)
     o->ids_step = -1;
     pl_blocking_init(&o->s_vb);
     sim->observe = o;
+    if (sim->scene.observe.cff_interval > 0 && sim->coupling)
+        return pl_coupling_mean_force_on(sim->coupling, sim->colloids->n, err);
     return 0;
 }
 
@@ -267,6 +280,7 @@ static void observe_destroy(pl_sim_t *sim)
     free(o->cls_n);
     pl_mtau_free(o->msd);
     pl_mtau_free(o->vacf);
+    pl_mtau_free(o->cff);
     pl_cluster_free(o->cl);
     pl_vdist_free(o->vd[0]);
     pl_vdist_free(o->vd[1]);
@@ -430,6 +444,59 @@ static int stage_vacf(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_mtau_add(o->vacf, c->vx, c->vy, c->vz, sim->nthreads);
     o->vacf_wall += omp_get_wtime() - t0;
     return 0;
+}
+
+/* C_FF of the step-mean fluid force (cp->cf_mean, the potential coupling):
+ * from the end of the run's first step on (the start state has no step). */
+static int stage_cff(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    pl_observe_t *o = ctx;
+    const pl_scene_t *sc = &sim->scene;
+    if (sim->step < sc->observe.cff_start || sim->step <= o->first || !sim->coupling || !sim->coupling->cf_mean)
+        return 0;
+    const double t0 = omp_get_wtime();
+    const pl_colloid_t *c = sim->colloids;
+    if (!o->cff) {
+        const uint64_t ns = expected_samples(o, sc->observe.cff_start, sc->observe.cff_interval);
+        o->cff_dt = (double)sc->observe.cff_interval * sc->srd.dt;
+        pl_mtau_params_t p = {.n = c->n, .p = MSD_P, .m = MSD_M, .levels = pl_mtau_levels_for(ns, MSD_P, MSD_M),
+                              .kind = PL_MTAU_AUTO, .average = 0, .dt = o->cff_dt};
+        int rc = pl_mtau_create(&p, &o->cff, err);
+        if (rc) return rc;
+    }
+    const double *f = sim->coupling->cf_mean;
+    pl_mtau_add(o->cff, f, f + c->n, f + 2 * c->n, sim->nthreads);
+    o->cff_wall += omp_get_wtime() - t0;
+    return 0;
+}
+
+/* Green-Kubo friction xi = (1/3kT) int_0^{t1} <F(0).F(t)> dt (PL Eq. B2; the
+ * Kirkwood formula of a fixed colloid), t1 the first lag where the summed
+ * C_FF is <= 0 (its decay: PL Fig. 10; beyond it the integral of a finite
+ * run only adds noise, and for a free colloid it tends to 0), else a quarter
+ * of the sampled span.  Also <F.F>(0). */
+static int friction(const pl_observe_t *o, double kT, double *xi, double *se, double *t1, double *f2)
+{
+    if (!o->cff || pl_mtau_samples(o->cff) < 8) return 0;
+    const size_t nl = pl_mtau_nlags(o->cff);
+    double *lag = malloc(nl * (1 + PL_MTAU_COLS) * sizeof(double));
+    if (!lag) return 0;
+    double *val = lag + nl;
+    pl_mtau_result(o->cff, lag, NULL, val, NULL);
+    *f2 = val[3];
+    *t1 = 0.25 * (double)(pl_mtau_samples(o->cff) - 1) * o->cff_dt;
+    for (size_t k = 1; k < nl && lag[k] <= *t1; ++k)
+        if (isfinite(val[PL_MTAU_COLS * k + 3]) && val[PL_MTAU_COLS * k + 3] <= 0.0) {
+            *t1 = lag[k];
+            break;
+        }
+    free(lag);
+    double s[PL_MTAU_COLS], e[PL_MTAU_COLS];
+    pl_err_t ignore = {0, ""};
+    if (pl_mtau_integral(o->cff, *t1, s, e, &ignore)) return 0;
+    *xi = s[3] / (3.0 * kT);
+    *se = e[3] / (3.0 * kT);
+    return isfinite(*xi) && isfinite(*se);
 }
 
 /* Green-Kubo D = (1/3) int_0^{T/4} <v(0).v(t)> dt (Hecht Eq. 35); 0 when
@@ -806,6 +873,11 @@ static void observe_stages(pl_sim_t *sim)
                         .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
         pl_sim_add_stage(sim, &s, NULL);
     }
+    if (so->cff_interval > 0) {
+        pl_stage_t s = {.name = "observe-cff", .fn = stage_cff, .ctx = o, .interval = so->cff_interval,
+                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE};
+        pl_sim_add_stage(sim, &s, NULL);
+    }
     if (so->clusters_interval > 0) {
         pl_stage_t s = {.name = "observe-clusters", .fn = stage_clusters, .ctx = o,
                         .interval = so->clusters_interval, .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE,
@@ -977,6 +1049,8 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
     if (!bad && o->msd && pl_mtau_samples(o->msd) > 1) bad |= write_mtau(obs, "colloid_msd", o->msd, "a0^2") != 0;
     if (!bad && o->vacf && pl_mtau_samples(o->vacf) > 1)
         bad |= write_mtau(obs, "colloid_vacf", o->vacf, "a0^2/t0^2") != 0;
+    if (!bad && o->cff && pl_mtau_samples(o->cff) > 1)
+        bad |= write_mtau(obs, "colloid_cff", o->cff, "(kT/a0)^2") != 0;
     if (!bad && o->cl && o->c_n > 0) {
         /* the bond kinds with energy bonds; the primary fraction (undefined
          * in samples without a bond) only in the summary */
@@ -1114,6 +1188,21 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
         pl_json_real(&b, e, "wall_s", o->vacf_wall);
         pl_json_str(&b, e, "unit", "a0^2/t0");
         pl_json_set(&b, all, "colloid_D_green_kubo", e);
+    }
+    double xi, f2, t1;
+    if (o->cff && friction(o, pl_scene_kT(&sim->scene), &xi, &se, &t1, &f2)) {
+        json_t *e = json_object();
+        pl_json_real(&b, e, "value", xi);
+        pl_json_real(&b, e, "stderr", se);
+        pl_json_real(&b, e, "n_independent", (double)sim->colloids->n);
+        pl_json_real(&b, e, "integrated_to_t0", t1);
+        pl_json_real(&b, e, "force_variance", f2);
+        pl_json_str(&b, e, "force_variance_unit", "(kT/a0)^2");
+        pl_json_real(&b, e, "wall_s", o->cff_wall);
+        pl_json_str(&b, e, "unit", "m_f/t0");
+        pl_json_str(&b, e, "definition", "(1/3kT) int_0^t1 <F(0).F(t)> dt, F the fluid force averaged over each "
+                                         "collision step, t1 the first zero of C_FF");
+        pl_json_set(&b, all, "colloid_friction_green_kubo", e);
     }
     double r, g, gse;
     if (o->rdf && rdf_peak(o, &r, &g, &gse)) {

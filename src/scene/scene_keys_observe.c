@@ -36,6 +36,14 @@ static const pl_key_t observe_keys[] = {
      "sampled span (Hecht Eq. 35, Fig. 3; PL Eq. 58)"},
     {"vacf_start", PL_KEY_INT, OFF(vacf_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "first step the VACF samples"},
+    {"cff_interval", PL_KEY_INT, OFF(cff_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "autocorrelation C_FF(t) = <F(0).F(t)> of the fluid force on each colloid (PL Eq. 50, Fig. 10) every "
+     "this many steps (0: off; coupling.method = \"potential\" only: the collision couplings exchange "
+     "impulses, no force), F the force's mean over each collision step (trapezoid over the MD steps; its "
+     "correlation integrates to the same friction as the instantaneous force's), multiple-tau up to the run "
+     "length; Green-Kubo friction xi = (1/3kT) of its integral up to its first zero (PL Eq. B2)"},
+    {"cff_start", PL_KEY_INT, OFF(cff_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "first step C_FF samples"},
     {"clusters_interval", PL_KEY_INT, OFF(clusters_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "colloid clusters (bond: surface gap below clusters_gap; union-find) every this many steps (0: off): "
      "number of clusters, largest, mean size over time, their averages with SE, the final size distribution"},
