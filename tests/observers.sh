@@ -9,7 +9,8 @@
 #    the pair counts in a shell of radius r < 8 decorrelate within r^2 / D
 #    < 25 t0 and the 590 samples (every 1 t0) give the blocking a plateau:
 #    at least 90 % of the bins within
-#    3 SE of 1 (expected 99.7 %) and chi^2 per bin below 1.5;
+#    3 SE of 1 (expected 99.7 %) and chi^2 per bin below 1.5; S(q) likewise
+#    (wave vectors of the box up to 4 / a0, 40 bins);
 #  - clusters on a lattice of spacing 4 a0 (R = 1, gap 2): bond gap 2.5 puts
 #    all 64 in one cluster at the start, bond gap 1 none (64 clusters of 1);
 #  - the observables (observables.h5 and summary.json values) are bitwise the
@@ -41,7 +42,8 @@ fluid: { density = 0.0; };
 srd: { dt = 0.1; };
 colloids: { count = 64; radius = 1.0; mass_density = 1.0; temperature = 1.0; init = "random";
   pairs = ""; integrator = "brownian"; bd_viscosity = 0.02; substeps = 1; max_overlap = 1.0; };
-observe: { rdf_interval = 10; rdf_start = 100; rdf_bins = 40; msd_interval = 1; };
+observe: { rdf_interval = 10; rdf_start = 100; rdf_bins = 40; msd_interval = 1; sq_interval = 10; sq_start = 100;
+  sq_qmax = 4.0; sq_bins = 40; };
 CFG
 for th in 1 2; do
   "$PELOID" run free.cfg --threads $th --out free$th 2> /dev/null || bad "free BD run ($th threads)"
@@ -62,8 +64,14 @@ m = (e > 0) & (r > 1.0)
 z = (g[m] - 1) / e[m]
 inside, chi2 = np.mean(np.abs(z) < 3), np.mean(z**2)
 assert inside >= 0.9 and chi2 < 1.5, f"g(r) of an ideal gas: {inside:.2f} within 3 SE, chi2/bin {chi2:.2f}"
+with h5py.File("free1/observables.h5") as f:
+    S, Se, nv = (f["observables/colloid_sq/" + k][()] for k in ("value", "value_se", "vectors"))
+mq = nv > 0
+zq = (S[0][mq] - 1) / Se[0][mq]
+inq, chq = np.mean(np.abs(zq) < 3), np.mean(zq**2)
+assert inq >= 0.9 and chq < 1.5, f"S(q) of an ideal gas: {inq:.2f} within 3 SE, chi2/bin {chq:.2f}"
 print(f"D = {D:.5f} +- {se:.5f} vs kT/(6 pi eta R) = {D0:.5f}; g(r) = 1: {inside:.2f} of {m.sum()} bins "
-      f"within 3 SE, chi2/bin {chi2:.2f}")
+      f"within 3 SE, chi2/bin {chi2:.2f}; S(q) = 1: {inq:.2f} of {mq.sum()} bins, chi2/bin {chq:.2f}")
 PY
 ); then ok "free Brownian colloids: $out"; else bad "free Brownian colloids: $out"; fi
 if $PY - <<'PY'
@@ -74,7 +82,7 @@ for k in ("colloid_D", "rdf_peak"): # everything but the wall times
     assert [(p["value"], p["stderr"]) for p in a[k]["se_vs_time"]] == \
         [(p["value"], p["stderr"]) for p in b[k]["se_vs_time"]], k
 with h5py.File("free1/observables.h5") as f, h5py.File("free2/observables.h5") as g:
-    for name in ("observables/colloid_rdf/value", "observables/colloid_msd/value"):
+    for name in ("observables/colloid_rdf/value", "observables/colloid_msd/value", "observables/colloid_sq/value"):
         assert np.array_equal(f[name][:], g[name][:]), name
 PY
 then ok "observables bitwise the same at 1 and 2 threads"; else bad "observables differ between 1 and 2 threads"; fi

@@ -11,6 +11,8 @@ typedef struct {
     long long rdf_bins;
     double rdf_rmax;                   /* 0: the largest the box allows */
     long long rdf_size_classes;        /* 0: off; k >= 2: partial g_ab of k radius classes */
+    long long sq_interval, sq_start, sq_bins; /* colloid S(q), periodic boxes */
+    double sq_qmax;                    /* 1/a0; 0: 4 pi / colloids.radius */
     long long msd_interval, msd_start; /* colloid MSD, multiple-tau */
     long long vacf_interval, vacf_start; /* colloid VACF and Green-Kubo D */
     long long cff_interval, cff_start; /* fluid force autocorrelation C_FF and Green-Kubo friction */

@@ -54,6 +54,7 @@
 #include "peloid/module.h"
 #include "peloid/mtau.h"
 #include "peloid/rdf.h"
+#include "peloid/sq.h"
 #include "peloid/vdist.h"
 
 enum { NFRAC = 4, MSD_P = 16, MSD_M = 2, VD_BINS = 60 };
@@ -99,6 +100,9 @@ typedef struct pl_observe {
     int32_t *cls;      /* n: class of each colloid */
     double *cls_rad;   /* ncls x 2: smallest and largest radius of each class */
     size_t *cls_n;     /* ncls: colloids per class */
+    /* S(q) */
+    pl_sq_t *sq;
+    double sq_wall;
     /* MSD */
     pl_mtau_t *msd;
     double *u[3]; /* unwrapped positions */
@@ -140,7 +144,7 @@ typedef struct pl_observe {
 
 static int any_observer(const pl_scene_observe_t *o)
 {
-    return o->rdf_interval > 0 || o->msd_interval > 0 || o->vacf_interval > 0 || o->cff_interval > 0 ||
+    return o->rdf_interval > 0 || o->sq_interval > 0 || o->msd_interval > 0 || o->vacf_interval > 0 || o->cff_interval > 0 ||
            o->clusters_interval > 0 ||
            o->vdist_interval > 0 || o->sediment_interval > 0;
 }
@@ -183,6 +187,7 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
     const pl_scene_observe_t *o = &sc->observe;
     const struct { long long v; size_t off; const char *key; } need[] = {
         {o->rdf_interval, OFFO(rdf_interval), "observe.rdf_interval"},
+        {o->sq_interval, OFFO(sq_interval), "observe.sq_interval"},
         {o->msd_interval, OFFO(msd_interval), "observe.msd_interval"},
         {o->vacf_interval, OFFO(vacf_interval), "observe.vacf_interval"},
         {o->cff_interval, OFFO(cff_interval), "observe.cff_interval"},
@@ -219,6 +224,10 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
         int rc = energy_bond_check(sc, err);
         if (rc) return rc;
     }
+    if (o->sq_interval > 0 && (sc->box.walls_xy != PL_WALLS_NONE || sc->box.walls_z != PL_WALLS_NONE))
+        return pl_scene_fail(sc, err, OFFO(sq_interval), "observe.sq_interval",
+                             "%lld with walls: S(q) sums over the wave vectors of a periodic box; allowed: 0 "
+                             "with walls", o->sq_interval);
     if (o->cff_interval > 0 && sc->coupling.method != PL_COUPLE_POTENTIAL)
         return pl_scene_fail(sc, err, OFFO(cff_interval), "observe.cff_interval",
                              "%lld: the fluid force on the colloids is a force only with coupling.method = "
@@ -279,6 +288,7 @@ static void observe_destroy(pl_sim_t *sim)
     free(o->cls_rad);
     free(o->cls_n);
     pl_mtau_free(o->msd);
+    pl_sq_free(o->sq);
     pl_mtau_free(o->vacf);
     pl_mtau_free(o->cff);
     pl_cluster_free(o->cl);
@@ -396,6 +406,25 @@ static int stage_rdf(pl_sim_t *sim, void *ctx, pl_err_t *err)
     }
     for (size_t k = 0; k < o->npair; ++k) pl_rdf_sample(o->rdfc[k], c->n, c->x, c->y, c->z, o->cls);
     o->rdf_wall += omp_get_wtime() - t0;
+    return 0;
+}
+
+static int stage_sq(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    pl_observe_t *o = ctx;
+    const pl_scene_t *sc = &sim->scene;
+    if (sim->step < sc->observe.sq_start) return 0;
+    const double t0 = omp_get_wtime();
+    const pl_colloid_t *c = sim->colloids;
+    if (!o->sq) {
+        pl_sq_params_t p = {.qmax = sc->observe.sq_qmax > 0 ? sc->observe.sq_qmax : 4.0 * PL_PI / sc->colloids.radius,
+                            .nbins = (size_t)sc->observe.sq_bins, .nmax = c->n};
+        for (int d = 0; d < 3; ++d) p.box[d] = c->box[d];
+        int rc = pl_sq_create(&p, sim->nthreads, &o->sq, err);
+        if (rc) return rc;
+    }
+    pl_sq_sample(o->sq, c->n, c->x, c->y, c->z);
+    o->sq_wall += omp_get_wtime() - t0;
     return 0;
 }
 
@@ -863,6 +892,11 @@ static void observe_stages(pl_sim_t *sim)
                         .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
         pl_sim_add_stage(sim, &s, NULL);
     }
+    if (so->sq_interval > 0) {
+        pl_stage_t s = {.name = "observe-sq", .fn = stage_sq, .ctx = o, .interval = so->sq_interval,
+                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
+        pl_sim_add_stage(sim, &s, NULL);
+    }
     if (so->msd_interval > 0) {
         pl_stage_t s = {.name = "observe-msd", .fn = stage_msd, .ctx = o, .interval = so->msd_interval,
                         .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
@@ -1001,6 +1035,44 @@ static int write_rdf(hid_t obs, const char *name, const pl_sim_t *sim, const pl_
     return bad ? -1 : 0;
 }
 
+/* /observables/colloid_sq/{q, q_mean, q_R, value (1 x nbins), value_se,
+ * vectors, step, time, samples}: bins without a wave vector hold 0. */
+static int write_sq(hid_t obs, const pl_sim_t *sim, const pl_observe_t *o)
+{
+    size_t nb = (size_t)sim->scene.observe.sq_bins;
+    double *buf = malloc(5 * nb * sizeof(double));
+    uint64_t *nv = malloc(nb * sizeof *nv);
+    hid_t g = pl_h5_group(obs, "colloid_sq");
+    int bad = !buf || !nv || g < 0;
+    if (!bad) {
+        double *q = buf, *qm = q + nb, *qR = qm + nb, *S = qR + nb, *se = S + nb;
+        pl_sq_result(o->sq, q, qm, S, se, nv);
+        for (size_t b = 0; b < nb; ++b) {
+            qR[b] = q[b] * sim->scene.colloids.radius;
+            if (!isfinite(qm[b])) qm[b] = 0.0;
+            if (!isfinite(S[b])) S[b] = 0.0;
+            if (!isfinite(se[b])) se[b] = 0.0;
+        }
+        hsize_t d1[1] = {nb}, d2[2] = {1, nb}, one[1] = {1};
+        long long st = sim->step;
+        double t = (double)st * sim->scene.srd.dt;
+        unsigned long long ns = pl_sq_samples(o->sq);
+        bad |= put(g, "q", H5T_NATIVE_DOUBLE, 1, d1, q, "1/a0") != 0;
+        bad |= put(g, "q_mean", H5T_NATIVE_DOUBLE, 1, d1, qm, "1/a0") != 0;
+        bad |= put(g, "q_R", H5T_NATIVE_DOUBLE, 1, d1, qR, "1/R") != 0;
+        bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, S, "1") != 0;
+        bad |= put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, se, "1") != 0;
+        bad |= put(g, "vectors", H5T_NATIVE_UINT64, 1, d1, nv, NULL) != 0;
+        bad |= put(g, "step", H5T_NATIVE_LLONG, 1, one, &st, NULL) != 0;
+        bad |= put(g, "time", H5T_NATIVE_DOUBLE, 1, one, &t, "t0") != 0;
+        bad |= put(g, "samples", H5T_NATIVE_ULLONG, 0, NULL, &ns, NULL) != 0;
+    }
+    if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+    free(buf);
+    free(nv);
+    return bad ? -1 : 0;
+}
+
 /* Components sampled into velocity histogram k (0: none, e.g. Brownian
  * colloids have no velocity). */
 static uint64_t vdist_total(const pl_observe_t *o, int k)
@@ -1046,6 +1118,7 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
         free(cnt);
         if (g >= 0 && H5Gclose(g) < 0) bad = 1;
     }
+    if (!bad && o->sq && pl_sq_samples(o->sq) > 0) bad |= write_sq(obs, sim, o) != 0;
     if (!bad && o->msd && pl_mtau_samples(o->msd) > 1) bad |= write_mtau(obs, "colloid_msd", o->msd, "a0^2") != 0;
     if (!bad && o->vacf && pl_mtau_samples(o->vacf) > 1)
         bad |= write_mtau(obs, "colloid_vacf", o->vacf, "a0^2/t0^2") != 0;
@@ -1188,6 +1261,29 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
         pl_json_real(&b, e, "wall_s", o->vacf_wall);
         pl_json_str(&b, e, "unit", "a0^2/t0");
         pl_json_set(&b, all, "colloid_D_green_kubo", e);
+    }
+    if (o->sq && pl_sq_samples(o->sq) >= 2) { /* the highest bin of S(q) */
+        size_t nb = (size_t)sim->scene.observe.sq_bins, best = nb;
+        double *buf = malloc(3 * nb * sizeof(double));
+        if (buf) {
+            double *qm = buf, *S = qm + nb, *sse = S + nb;
+            pl_sq_result(o->sq, NULL, qm, S, sse, NULL);
+            for (size_t k = 0; k < nb; ++k)
+                if (isfinite(S[k]) && isfinite(sse[k]) && (best == nb || S[k] > S[best])) best = k;
+            if (best < nb) {
+                json_t *e = json_object();
+                pl_json_real(&b, e, "value", S[best]);
+                pl_json_real(&b, e, "stderr", sse[best]);
+                pl_json_real(&b, e, "n_independent", (double)pl_sq_samples(o->sq));
+                pl_json_real(&b, e, "q", qm[best]);
+                pl_json_real(&b, e, "q_R", qm[best] * sim->scene.colloids.radius);
+                pl_json_int(&b, e, "wave_vectors", (long long)pl_sq_vectors(o->sq));
+                pl_json_real(&b, e, "wall_s", o->sq_wall);
+                pl_json_str(&b, e, "unit", "1");
+                pl_json_set(&b, all, "sq_peak", e);
+            }
+            free(buf);
+        }
     }
     double xi, f2, t1;
     if (o->cff && friction(o, pl_scene_kT(&sim->scene), &xi, &se, &t1, &f2)) {

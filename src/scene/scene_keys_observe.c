@@ -25,6 +25,16 @@ static const pl_key_t observe_keys[] = {
      "partial g_ab(r) of size classes (0: off; k in 2..16): the colloids ranked by radius (ties by index) and "
      "cut into k classes of equal count, class floor(rank k / N); every class pair a <= b, normalised by its "
      "own pair count; needs colloids.polydispersity > 0 or radii from colloids.init_file"},
+    {"sq_interval", PL_KEY_INT, OFF(sq_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "colloid static structure factor S(q) = |sum_j exp(i q.r_j)|^2 / N every this many steps (0: off; all "
+     "axes periodic), direct sum over the box's wave vectors q = 2 pi (n_x/L_x, n_y/L_y, n_z/L_z), 0 < |q| < "
+     "sq_qmax, binned by |q|; mean and SE per bin by blocking over samples; costs N x (2 pi / 3) "
+     "(sq_qmax L / 2 pi)^3 per sample"},
+    {"sq_start", PL_KEY_INT, OFF(sq_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "first step S(q) samples"},
+    {"sq_bins", PL_KEY_INT, OFF(sq_bins), 1, 1e6, 0, NULL, 100, NULL, "-", "S(q) bins over [0, sq_qmax)"},
+    {"sq_qmax", PL_KEY_REAL, OFF(sq_qmax), 0, 1e3, 0, NULL, 0, NULL, "1/a0",
+     "largest |q| of S(q) (0: 4 pi / colloids.radius, past the first peak near 2 pi / (2R))"},
     {"msd_interval", PL_KEY_INT, OFF(msd_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "colloid mean-squared displacement of the unwrapped positions every this many steps (0: off), by a "
      "multiple-tau correlator (16 points per level, factor 2) up to the run length; D from its slope"},
