@@ -388,8 +388,10 @@ then ok "stop rule: stopped at step $S (1 and 2 threads), $out"
 else bad "stop rule: stop step $S / $S2 ${out:-}"; fi
 
 if "$PELOID" report free1 > /dev/null && [ -s free1/report.md ] && [ -s free1/rdf.png ] && [ -s free1/msd.png ] &&
-   grep -q "Error against run time" free1/report.md && "$PELOID" report lat2.5 > /dev/null && [ -s lat2.5/clusters.png ]
-then ok "peloid report: report.md with g(r), MSD, cluster plots and the error table"
+   grep -q "Error against run time" free1/report.md && "$PELOID" report lat2.5 > /dev/null && [ -s lat2.5/clusters.png ] &&
+   [ -s free1/sq.png ] && "$PELOID" report poly > /dev/null && [ -s poly/rdf_classes.png ] &&
+   "$PELOID" report cff1 > /dev/null && [ -s cff1/cff.png ] && "$PELOID" report eb2.0 > /dev/null && [ -s eb2.0/bonds.png ]
+then ok "peloid report: report.md with g(r), g_ab(r), S(q), MSD, C_FF, cluster and bond plots and the error table"
 else bad "peloid report"; fi
 echo "observers.sh: $pass passed, $fail failed"
 [ $fail -eq 0 ]

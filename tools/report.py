@@ -12,7 +12,13 @@ by the observers of the scene's observe{} section) and OUTDIR/thermo.tsv.
              (Hecht Sec. IX.C) marked.
   MSD        colloid_msd: summed over axes, +- SE, with 6 D t of the fitted D
              over its fit window.
-  clusters   cluster_number, largest_cluster, mean_cluster_size over time.
+  g_ab(r)    colloid_rdf_classes: each size-class partial +- SE.
+  S(q)       colloid_sq: mean +- SE per |q| bin (bins with wave vectors).
+  C_FF       colloid_cff: the fluid-force autocorrelation normalised by its
+             t = 0 value (PL Eq. 50, Fig. 10), +- SE, with the Green-Kubo
+             friction and the lag it is integrated to.
+  clusters   cluster_number, largest_cluster, mean_cluster_size over time;
+             with energy bonds, the primary- and secondary-minimum bonds.
   sediment   phi(z, t) and the mean height with the settling velocity.
   velocities fluid and colloid velocity distributions against Maxwell-
              Boltzmann, with the chi^2 p-value.
@@ -60,6 +66,89 @@ def plot_rdf(f, summary, outdir, lines):
     fig.savefig(os.path.join(outdir, "rdf.png"), dpi=120)
     plt.close(fig)
     lines += ["## Colloid g(r)", "", "![g(r)](rdf.png)", ""]
+
+
+def plot_rdf_classes(f, outdir, lines):
+    g = f["observables/colloid_rdf_classes"]
+    r, v, se, pairs, crad = g["r"][:], g["value"][0], g["value_se"][0], g["pairs"][:], g["class_radius"][:]
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for p, (a, b) in enumerate(pairs):
+        ax.errorbar(r, v[p], yerr=se[p], fmt=".-", ms=2, lw=0.7, elinewidth=0.5, capsize=0,
+                    label=f"g_{a}{b}: R {crad[a][0]:.3g}-{crad[a][1]:.3g} with {crad[b][0]:.3g}-{crad[b][1]:.3g}")
+    ax.axhline(1.0, color="k", lw=0.5)
+    ax.set_xlabel("r [a0]")
+    ax.set_ylabel("g_ab(r)")
+    ax.set_title(f"g(r) per size class (radius rank), {int(g['samples'][()])} samples")
+    ax.legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "rdf_classes.png"), dpi=120)
+    plt.close(fig)
+    lines += ["## Colloid g(r) per size class", "", "![g_ab(r)](rdf_classes.png)", ""]
+
+
+def plot_sq(f, obs, outdir, lines):
+    g = f["observables/colloid_sq"]
+    q, v, se, nv = g["q_mean"][:], g["value"][0], g["value_se"][0], g["vectors"][:]
+    m = nv > 0
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.errorbar(q[m], v[m], yerr=se[m], fmt=".-", ms=3, lw=0.8, elinewidth=0.6, capsize=0, label="S(q) +- SE")
+    ax.axhline(1.0, color="k", lw=0.5)
+    ax.set_xlabel("|q| [1/a0]")
+    ax.set_ylabel("S(q)")
+    e = obs.get("sq_peak")
+    ax.set_title(f"colloid S(q), {int(g['samples'][()])} samples"
+                 + (f"; peak {e['value']:.3g} ± {e['stderr']:.2g} at q = {e['q']:.3g}/a0" if e else ""), fontsize=9)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "sq.png"), dpi=120)
+    plt.close(fig)
+    lines += ["## Colloid S(q)", "", "![S(q)](sq.png)", ""]
+
+
+def plot_cff(f, obs, outdir, lines):
+    g = f["observables/colloid_cff"]
+    lag, v, se = g["lag"][:], g["value"][:, 3], g["value_se"][:, 3]
+    e = obs.get("colloid_friction_green_kubo")
+    tmax = 20 * e["integrated_to_t0"] if e else lag[-1]
+    m = lag <= tmax
+    fig, ax = plt.subplots(figsize=(6, 4))
+    ax.errorbar(lag[m], v[m] / v[0], yerr=se[m] / v[0], fmt=".-", ms=3, lw=0.8, elinewidth=0.6, capsize=0,
+                label="C_FF(t) / C_FF(0) +- SE")
+    ax.axhline(0.0, color="k", lw=0.5)
+    if e:
+        ax.axvline(e["integrated_to_t0"], color="r", ls=":", lw=0.8,
+                   label=f"ξ = {e['value']:.4g} ± {e['stderr']:.2g} m_f/t0 (integral to here)")
+    ax.set_xlabel("lag [t0]")
+    ax.set_ylabel("C_FF(t) / C_FF(0)")
+    ax.set_title("fluid-force autocorrelation (step-mean force)", fontsize=9)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "cff.png"), dpi=120)
+    plt.close(fig)
+    lines += ["## Fluid-force autocorrelation C_FF", "", "![C_FF](cff.png)", ""]
+
+
+def plot_bonds(f, obs, outdir, lines):
+    fig, ax = plt.subplots(figsize=(6, 3.5))
+    for name, col in (("cluster_bonds_primary", "C0"), ("cluster_bonds_secondary", "C1")):
+        g = f["observables/" + name]
+        e = obs.get(name)
+        lab = name.replace("cluster_bonds_", "") + " minimum"
+        if e:
+            lab += f": mean {e['value']:.4g} ± {e['stderr']:.2g}"
+        ax.plot(g["time"][:], g["value"][:], lw=0.8, color=col, label=lab)
+        if e:
+            ax.axhspan(e["value"] - e["stderr"], e["value"] + e["stderr"], color=col, alpha=0.15)
+    fr = obs.get("cluster_primary_fraction")
+    ax.set_title("energy bonds" + (f"; primary fraction {fr['value']:.3g} ± {fr['stderr']:.2g}" if fr else ""),
+                 fontsize=9)
+    ax.set_xlabel("time [t0]")
+    ax.set_ylabel("bonds")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "bonds.png"), dpi=120)
+    plt.close(fig)
+    lines += ["## Bonds by pair energy", "", "![bonds](bonds.png)", ""]
 
 
 def plot_msd(f, obs, outdir, lines):
@@ -211,10 +300,18 @@ def main(argv):
             have = f["observables"] if "observables" in f else {}
             if "colloid_rdf" in have:
                 plot_rdf(f, summary, outdir, lines)
+            if "colloid_rdf_classes" in have:
+                plot_rdf_classes(f, outdir, lines)
+            if "colloid_sq" in have:
+                plot_sq(f, obs, outdir, lines)
             if "colloid_msd" in have:
                 plot_msd(f, obs, outdir, lines)
+            if "colloid_cff" in have:
+                plot_cff(f, obs, outdir, lines)
             if "cluster_number" in have:
                 plot_clusters(f, obs, outdir, lines)
+            if "cluster_bonds_primary" in have:
+                plot_bonds(f, obs, outdir, lines)
             if "colloid_phi_z" in have:
                 plot_sediment(f, obs, outdir, lines)
             if "fluid_velocity_distribution" in have or "colloid_velocity_distribution" in have:
