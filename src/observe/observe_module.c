@@ -5,7 +5,10 @@
  *
  *   g(r)      colloid centres (Hecht Sec. IX.C, Figs. 5-7, 10-13; PL Fig. 4),
  *             peloid/rdf.h: ideal-gas normalisation of the accessible region,
- *             mean and SE per bin by blocking over samples.
+ *             mean and SE per bin by blocking over samples; optionally per
+ *             size class (radius rank, equal counts: partial g_ab).
+ *   S(q)      colloid centres, direct sum over the box's wave vectors
+ *             (peloid/sq.h), mean and SE per |q| bin.
  *   MSD, D    unwrapped colloid positions, multiple-tau correlator
  *             (peloid/mtau.h, every-m-th coarse-graining: unbiased at every
  *             lag); D = slope / 6 of the summed-axis MSD, least squares over
@@ -23,11 +26,17 @@
  *             homogeneous suspension.
  *   VACF      <v(0).v(t)> of the colloid velocities (multiple-tau, AUTO) and
  *             the Green-Kubo D = (1/3) of its integral to T/4 (Hecht Eq. 35).
- *   clusters  bond = surface gap below observe.clusters_gap, union-find over
- *             linked cells (peloid/cluster.h; Hecht Figs. 9, 14): number of
- *             clusters, largest, mean size per sample; their time averages
- *             with the blocking SE (peloid/blocking.h); the size distribution
- *             summed over samples.
+ *   C_FF      <F(0).F(t)> of the fluid force on the colloids, averaged over
+ *             each collision step (potential coupling: cp->cf_mean), and the
+ *             Green-Kubo friction (1/3kT) of its integral to its first zero.
+ *   clusters  bond = surface gap below observe.clusters_gap, or pair energy
+ *             below -observe.clusters_energy (primary / secondary minimum by
+ *             the DLVO barrier gap), union-find over linked cells
+ *             (peloid/cluster.h; Hecht Figs. 9, 14): number of clusters,
+ *             largest, mean size, bonds per sample; their time averages with
+ *             the blocking SE (peloid/blocking.h); the size distribution
+ *             summed over samples; the cluster id of each colloid with every
+ *             trajectory frame (pl_colloid_traj_cluster_ids).
  *
  * Error against run time: at 1/8, 1/4, 1/2 and all of the run the current
  * estimate and SE of each observable are recorded with the wall time spent;
@@ -144,8 +153,8 @@ typedef struct pl_observe {
 
 static int any_observer(const pl_scene_observe_t *o)
 {
-    return o->rdf_interval > 0 || o->sq_interval > 0 || o->msd_interval > 0 || o->vacf_interval > 0 || o->cff_interval > 0 ||
-           o->clusters_interval > 0 ||
+    return o->rdf_interval > 0 || o->sq_interval > 0 || o->msd_interval > 0 || o->vacf_interval > 0 ||
+           o->cff_interval > 0 || o->clusters_interval > 0 ||
            o->vdist_interval > 0 || o->sediment_interval > 0;
 }
 
