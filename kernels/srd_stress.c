@@ -48,3 +48,34 @@ void pl_srd_stress_sums(const pl_fluid_t *f, const double shift[3], double *scra
     for (size_t b = 0; b < nb; ++b)
         for (int k = 0; k < PL_STRESS_NSUMS; ++k) out[k] += scratch[PL_STRESS_NSUMS * b + (size_t)k];
 }
+
+enum { LAYER_BLOCK = 65536 };
+
+size_t pl_srd_layer_scratch(size_t n, int nlayers)
+{
+    return 2 * (size_t)nlayers * ((n + LAYER_BLOCK - 1) / LAYER_BLOCK + 1);
+}
+
+void pl_srd_layer_velocity(const pl_fluid_t *f, int nlayers, const double e[3], double *scratch, double *sum_v,
+                           double *count, int nthreads)
+{
+    const size_t nb = (f->n + LAYER_BLOCK - 1) / LAYER_BLOCK, w = 2 * (size_t)nlayers;
+#pragma omp parallel for schedule(static) num_threads(nthreads)
+    for (size_t b = 0; b < nb; ++b) {
+        double *acc = scratch + w * b;
+        for (size_t k = 0; k < w; ++k) acc[k] = 0.0;
+        const size_t lo = b * LAYER_BLOCK, hi = lo + LAYER_BLOCK < f->n ? lo + LAYER_BLOCK : f->n;
+        for (size_t i = lo; i < hi; ++i) {
+            int k = (int)floor((double)f->r[2][i]);
+            k = k < 0 ? 0 : k >= nlayers ? nlayers - 1 : k;
+            acc[2 * k] += e[0] * f->v[0][i] + e[1] * f->v[1][i] + e[2] * f->v[2][i];
+            acc[2 * k + 1] += 1.0;
+        }
+    }
+    for (int k = 0; k < nlayers; ++k) sum_v[k] = count[k] = 0.0;
+    for (size_t b = 0; b < nb; ++b)
+        for (int k = 0; k < nlayers; ++k) {
+            sum_v[k] += scratch[w * b + 2 * (size_t)k];
+            count[k] += scratch[w * b + 2 * (size_t)k + 1];
+        }
+}

@@ -18,6 +18,7 @@
 #  - the pressure equals the ideal gas (N - 1) kT / V (SRD's equation of state;
 #    N - 1: the box's momentum is fixed) within 4 SE, and its SE is below 1e-3
 #    of it;
+#  - the Couette cell's viscosity from the wall stress (below);
 #  - the observables are bitwise the same at 1 and 2 threads.
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
@@ -63,6 +64,46 @@ sys.exit(0 if good else 1)
 PY
   ); then ok "lambda $lam: $out"; else bad "lambda $lam: $out"; fi
 done
+
+# Couette cell (tests/test_shear.c's): 8 x 8 x 16, gamma 5, lambda 0.1,
+# alpha 90, walls at -/+ 0.5, rescale thermostat; after 4000 steps (> 5
+# momentum-diffusion times Lz^2 / (pi^2 nu)) eta = wall stress / measured
+# shear rate within 3 SE of PL Eqs. 14-15, and 3 SE below REL.  Measured
+# (24000 steps): 2.592 +- 0.063 vs PL 2.496 (+1.5 SE); tests/test_shear.c,
+# with blocks of its own, gets 2.531 +- 0.033.
+CSTEPS=$(( STEPS == 12000 ? 24000 : 120000 ))
+cat > couette.cfg <<CFG
+seed = 21;
+steps = $CSTEPS;
+box: { cells = [8, 8, 16]; walls_z = "noslip"; wall_velocity_bottom = [-0.5, 0.0, 0.0];
+  wall_velocity_top = [0.5, 0.0, 0.0]; };
+fluid: { density = 5; };
+srd: { dt = 0.1; alpha = 90.0; };
+thermostat: { type = "rescale"; };
+observe: { stress_interval = 20; stress_start = 4000; };
+CFG
+if ! "$PELOID" run couette.cfg --threads 2 --out oc 2> errc; then
+  bad "Couette run: $(tail -1 errc)"
+elif out=$($PY - oc $REL <<'PY'
+import json, sys
+e = json.load(open(sys.argv[1] + "/summary.json"))["observables"]["couette_viscosity"]
+rel = float(sys.argv[2])
+v, se, th = e["value"], e["stderr"], e["theory_PL_Eq15"]
+print(f"eta {v:.4f} +- {se:.4f} vs PL {th:.4f} ({(v - th) / th * 100:+.1f} %, {(v - th) / se:+.2f} SE); "
+      f"stress {e['wall_shear_stress']['value']:.4f} +- {e['wall_shear_stress']['stderr']:.4f}, "
+      f"rate {e['shear_rate']['value']:.5f} +- {e['shear_rate']['stderr']:.5f} (nominal {e['shear_rate']['nominal']:.5f})")
+sys.exit(0 if abs(v - th) <= 3 * se and 3 * se <= rel * th else 1)
+PY
+); then ok "Couette: $out"; else bad "Couette: $out"; fi
+
+sed -i "s/^steps = .*/steps = 5000;/" couette.cfg
+"$PELOID" run couette.cfg --threads 1 --out c1 2> /dev/null && "$PELOID" run couette.cfg --threads 2 --out c2 2> /dev/null
+if $PY - <<'PY'
+import json, sys
+sa, sb = (json.load(open(f"{d}/summary.json"))["observables"]["couette_viscosity"] for d in ("c1", "c2"))
+sys.exit(0 if sa["value"] == sb["value"] and sa["stderr"] == sb["stderr"] else 1)
+PY
+then ok "Couette viscosity bitwise equal at 1 and 2 threads"; else bad "Couette viscosity differs between 1 and 2 threads"; fi
 
 sed -i "s/^steps = .*/steps = 2000;/" gk0.1.cfg
 "$PELOID" run gk0.1.cfg --threads 1 --out t1 2> /dev/null && "$PELOID" run gk0.1.cfg --threads 2 --out t2 2> /dev/null

@@ -163,6 +163,13 @@ enum { PL_STRESS_NSUMS = 18 };
 size_t pl_srd_stress_scratch(size_t n);
 void pl_srd_stress_sums(const pl_fluid_t *fluid, const double shift[3], double *scratch,
                         double out[PL_STRESS_NSUMS], int nthreads);
+/* Velocity profile across z: per layer k (floor(z), clipped to 0..nlayers-1)
+ * sum_v[k] = sum of v . e over its particles and count[k] their number.
+ * Fixed-order: bitwise independent of nthreads.  scratch:
+ * pl_srd_layer_scratch(n, nlayers) doubles. */
+size_t pl_srd_layer_scratch(size_t n, int nlayers);
+void pl_srd_layer_velocity(const pl_fluid_t *fluid, int nlayers, const double e[3], double *scratch,
+                           double *sum_v, double *count, int nthreads);
 
 /* ---- fluid guard scan (kernels/srd_guard.c) --------------------------- */
 /* Lowest index i with a position outside [0, L_d] on some axis d (NaN and

@@ -34,13 +34,26 @@
  * its plateau can be checked.  Ideal-gas SRD has P = n kT exactly; the mean
  * pressure is reported with its SE as a check.
  *
- * Scope: the pure fluid in a periodic box.  Walls exchange momentum the
- * Helfand moment does not see (their stress is the thermo columns sxz_*,
- * PL Eq. 13), and a suspension's stress needs the colloid virial and the
- * coupling's momentum exchange, which this observer does not build: both are
- * refused at scene check (stress_validate_scene).  Off (interval 0) it adds
- * no stage and costs nothing; on, it adds two passes over the fluid per step
- * (before and after the collision). */
+ * Scope of Green-Kubo: the pure fluid in a periodic box.  A suspension's
+ * stress needs the colloid virial and the coupling's momentum exchange,
+ * which this observer does not build: refused at scene check.
+ *
+ * Couette (walls_z = noslip with different wall velocities, walls_xy none):
+ * the viscosity from the wall stress instead (PL Eq. 13; the walls' impulse
+ * on fluid and colloids, sim->wall_impulse), sigma = (dp_top - dp_bottom) /
+ * (2 A dt) per step along the walls' relative velocity e, over the shear
+ * rate measured from the fluid's velocity profile: the least-squares slope
+ * of the layer means of v . e over the layers not touching a wall, sampled
+ * every stress_interval steps.  eta = <sigma> / <slope>, SE propagated from
+ * the two blocking SEs (their covariance neglected; the stress and the
+ * profile's slope fluctuate nearly independently); the apparent viscosity
+ * over the nominal rate |du| / Lz is reported too (what a rheometer
+ * reports: it includes the walls' slip).  With colloids this is the
+ * suspension's viscosity.  Other walls are refused.
+ *
+ * Off (interval 0) it adds no stage and costs nothing; on, Green-Kubo adds
+ * two passes over the fluid per step (before and after the collision),
+ * Couette one pass per sample. */
 #include <hdf5.h>
 #include <jansson.h>
 #include <math.h>
@@ -92,6 +105,13 @@ typedef struct pl_stress {
     double t_start, wall;
     stress_ept_t ept[NFRAC];
     int next_frac;
+    /* Couette */
+    int couette;
+    double e[3], A, du, imp_prev[2];
+    int nlayers;
+    double *lay_sum, *lay_cnt;
+    pl_blocking_t sigma, rate;
+    double *ts_sigma, *ts_rate; /* per sample: mean stress since the last, slope */
 } pl_stress_t;
 
 static pl_stress_t *stress_of(const pl_sim_t *sim);
@@ -100,19 +120,35 @@ static pl_stress_t *stress_of(const pl_sim_t *sim);
 
 #define OFFO(m) offsetof(pl_scene_t, observe.m)
 
+/* No-slip z walls moving relative to each other, periodic in x and y. */
+static int is_couette(const pl_scene_t *sc)
+{
+    const double *b = sc->box.wall_velocity[0], *t = sc->box.wall_velocity[1];
+    return sc->box.walls_z == PL_WALLS_NOSLIP && sc->box.walls_xy == PL_WALLS_NONE &&
+           (t[0] != b[0] || t[1] != b[1]);
+}
+
 int pl_stress_validate_scene(const pl_scene_t *sc, pl_err_t *err)
 {
     const long long s = sc->observe.stress_interval;
     if (s <= 0) return 0;
-    if (sc->colloids.count > 0)
+    if (is_couette(sc)) {
+        if (sc->box.cells[2] < 4)
+            return pl_scene_fail(sc, err, OFFO(stress_interval), "observe.stress_interval",
+                                 "%lld with %d layers between the walls: the shear rate's fit needs >= 2 "
+                                 "layers not touching a wall; allowed: box.cells[2] >= 4", s, sc->box.cells[2]);
+    } else if (sc->box.walls_z != PL_WALLS_NONE || sc->box.walls_xy != PL_WALLS_NONE) {
         return pl_scene_fail(sc, err, OFFO(stress_interval), "observe.stress_interval",
-                             "%lld with colloids: the stress observer measures the SRD fluid's own stress; a "
-                             "suspension's needs the colloid virial and the coupling's momentum exchange, which "
-                             "it does not include; allowed: 0 with colloids", s);
-    if (sc->box.walls_z != PL_WALLS_NONE || sc->box.walls_xy != PL_WALLS_NONE)
+                             "%lld with walls that shear nothing: Green-Kubo needs a periodic box, the wall "
+                             "stress a Couette cell; allowed: 0, or walls_z = \"noslip\" with different "
+                             "wall velocities and no x/y walls", s);
+    } else if (sc->colloids.count > 0) {
         return pl_scene_fail(sc, err, OFFO(stress_interval), "observe.stress_interval",
-                             "%lld with walls: Green-Kubo needs a periodic box (with walls the wall stress is "
-                             "the thermo columns sxz_*, syz_*); allowed: 0 with walls", s);
+                             "%lld with colloids in a periodic box: Green-Kubo here sums the SRD fluid's "
+                             "stress only; a suspension's needs the colloid virial and the coupling's "
+                             "momentum exchange, which it does not include; allowed: 0 with colloids, or a "
+                             "Couette cell (walls_z = \"noslip\", different wall velocities)", s);
+    }
     if (sc->fluid.density <= 0)
         return pl_scene_fail(sc, err, OFFO(stress_interval), "observe.stress_interval",
                              "%lld without fluid; allowed: 0 without fluid", s);
@@ -158,7 +194,22 @@ static int stress_create(pl_sim_t *sim, pl_err_t *err)
     }
     pl_blocking_init(&o->eta);
     pl_blocking_init(&o->pressure);
+    pl_blocking_init(&o->sigma);
+    pl_blocking_init(&o->rate);
     sim->stress = o;
+    if (!is_couette(sc)) return 0;
+    o->couette = 1;
+    const double *ub = sc->box.wall_velocity[0], *ut = sc->box.wall_velocity[1];
+    o->du = hypot(ut[0] - ub[0], ut[1] - ub[1]);
+    o->e[0] = (ut[0] - ub[0]) / o->du;
+    o->e[1] = (ut[1] - ub[1]) / o->du;
+    o->A = (double)sim->grid.L[0] * sim->grid.L[1];
+    o->nlayers = sim->grid.L[2];
+    free(o->scratch);
+    o->scratch = malloc(pl_srd_layer_scratch(sim->fluid.n, o->nlayers) * sizeof(double));
+    o->lay_sum = malloc(2 * (size_t)o->nlayers * sizeof(double));
+    o->lay_cnt = o->lay_sum ? o->lay_sum + o->nlayers : NULL;
+    if (!o->scratch || !o->lay_sum) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress observer");
     return 0;
 }
 
@@ -171,6 +222,9 @@ static void stress_destroy(pl_sim_t *sim)
     free(o->cacc);
     free(o->ts_step);
     free(o->ts_val);
+    free(o->lay_sum);
+    free(o->ts_sigma);
+    free(o->ts_rate);
     free(o);
     sim->stress = NULL;
 }
@@ -203,6 +257,19 @@ static int eta_estimate(const pl_stress_t *o, double *v, double *se, pl_blocking
     *v = r.mean;
     *se = r.se;
     return isfinite(r.mean) && isfinite(r.se);
+}
+
+/* Couette: eta = <sigma> / <rate> and its SE; 0 when there is none. */
+static int couette_estimate(const pl_stress_t *o, double *v, double *se, pl_blocking_result_t *rs,
+                            pl_blocking_result_t *rr)
+{
+    if (o->sigma.n < 2 || o->rate.n < 2) return 0;
+    pl_blocking_result_t a = pl_blocking_result(&o->sigma), b = pl_blocking_result(&o->rate);
+    if (rs) *rs = a;
+    if (rr) *rr = b;
+    *v = a.mean / b.mean;
+    *se = fabs(*v) * hypot(a.se / a.mean, b.se / b.mean);
+    return isfinite(*v) && isfinite(*se);
 }
 
 /* After the step (collision, thermostat, constraints done): g of the step. */
@@ -284,10 +351,96 @@ static int stage_post(pl_sim_t *sim, void *ctx, pl_err_t *err)
     return 0;
 }
 
+/* The impulse the walls gave along e since step 0: bottom, top. */
+static void wall_impulse_along(const pl_sim_t *sim, const double e[3], double out[2])
+{
+    for (int w = 0; w < 2; ++w) out[w] = e[0] * sim->wall_impulse[w][0] + e[1] * sim->wall_impulse[w][1];
+}
+
+/* Least-squares slope of the layer means over layers 1 .. n-2 (centres k + 1/2). */
+static double profile_slope(const double *sum_v, const double *count, int n)
+{
+    double m = 0, sz = 0, sv = 0, szz = 0, szv = 0;
+    for (int k = 1; k < n - 1; ++k) {
+        if (count[k] <= 0) continue;
+        const double z = k + 0.5, v = sum_v[k] / count[k];
+        m += 1; sz += z; sv += v; szz += z * z; szv += z * v;
+    }
+    return m >= 2 ? (m * szv - sz * sv) / (m * szz - sz * sz) : NAN;
+}
+
+/* Couette: the wall stress of each step, the shear rate at samples. */
+static int stage_couette(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    pl_stress_t *o = ctx;
+    const double t0 = omp_get_wtime();
+    double imp[2];
+    wall_impulse_along(sim, o->e, imp);
+    if (sim->step < sim->scene.observe.stress_start || o->t_start == 0.0) { /* the reference of the first step */
+        if (sim->step >= sim->scene.observe.stress_start) {
+            o->first = sim->first_step;
+            o->last = sim->last_step;
+            o->t_start = t0;
+        }
+        o->imp_prev[0] = imp[0];
+        o->imp_prev[1] = imp[1];
+        return 0;
+    }
+    const double sig = ((imp[1] - o->imp_prev[1]) - (imp[0] - o->imp_prev[0])) / (2.0 * o->A * o->dt);
+    o->imp_prev[0] = imp[0];
+    o->imp_prev[1] = imp[1];
+    if (!isfinite(sig))
+        return pl_err_set(err, PL_ERR_GUARD, "step %lld: the wall shear stress is not finite", sim->step);
+    pl_blocking_add(&o->sigma, sig);
+    o->win[0] += sig;
+    o->win_n++;
+    if (sim->step % sim->scene.observe.stress_interval == 0) {
+        pl_srd_layer_velocity(&sim->fluid, o->nlayers, o->e, o->scratch, o->lay_sum, o->lay_cnt, sim->nthreads);
+        const double slope = profile_slope(o->lay_sum, o->lay_cnt, o->nlayers);
+        if (!isfinite(slope))
+            return pl_err_set(err, PL_ERR_GUARD, "step %lld: the shear rate of the velocity profile is not finite "
+                              "(empty layers)", sim->step);
+        pl_blocking_add(&o->rate, slope);
+        if (o->ts_n == o->ts_cap) {
+            size_t cap = o->ts_cap ? 2 * o->ts_cap : 64;
+            long long *st = realloc(o->ts_step, cap * sizeof *st);
+            if (st) o->ts_step = st;
+            double *a = realloc(o->ts_sigma, cap * sizeof *a);
+            if (a) o->ts_sigma = a;
+            double *b = realloc(o->ts_rate, cap * sizeof *b);
+            if (b) o->ts_rate = b;
+            if (!st || !a || !b) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress time series");
+            o->ts_cap = cap;
+        }
+        o->ts_step[o->ts_n] = sim->step;
+        o->ts_sigma[o->ts_n] = o->win[0] / (double)o->win_n;
+        o->ts_rate[o->ts_n] = slope;
+        o->ts_n++;
+        o->win[0] = 0.0;
+        o->win_n = 0;
+    }
+    while (o->next_frac < NFRAC) {
+        const long long at = o->first + (long long)ceil(fractions[o->next_frac] * (double)(o->last - o->first));
+        if (sim->step < at) break;
+        stress_ept_t *q = &o->ept[o->next_frac++];
+        q->step = sim->step;
+        q->wall_s = omp_get_wtime() - o->t_start;
+        q->valid = couette_estimate(o, &q->value, &q->se, NULL, NULL);
+    }
+    o->wall += omp_get_wtime() - t0;
+    return 0;
+}
+
 static void stress_stages(pl_sim_t *sim)
 {
     pl_stress_t *o = stress_of(sim);
     if (!o) return;
+    if (o->couette) {
+        pl_stage_t c = {.name = "stress-couette", .fn = stage_couette, .ctx = o, .interval = 1,
+                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
+        pl_sim_add_stage(sim, &c, NULL);
+        return;
+    }
     pl_stage_t pre = {.name = "stress-before-collision", .fn = stage_pre, .ctx = o, .interval = 1,
                       .phase = PL_PHASE_STEP, .slot = PL_SLOT_PRE_COLLIDE};
     pl_sim_add_stage(sim, &pre, NULL);
@@ -308,6 +461,24 @@ static int put(hid_t g, const char *name, hid_t type, int rank, const hsize_t *d
     int bad = pl_h5_attr_str(ds, "unit", unit);
     if (H5Dclose(ds) < 0) bad = -1;
     return bad;
+}
+
+/* An H5MD time series group /observables/<name> with step, time, value. */
+static int series(hid_t obs, const char *name, size_t n, const long long *step, double dt, const double *value,
+                  const char *unit)
+{
+    hid_t g = pl_h5_group(obs, name);
+    if (g < 0) return -1;
+    double *t = malloc((n ? n : 1) * sizeof(double));
+    int bad = !t;
+    for (size_t k = 0; t && k < n; ++k) t[k] = (double)step[k] * dt;
+    hsize_t dims[1] = {n};
+    bad |= put(g, "step", H5T_NATIVE_LLONG, 1, dims, step, NULL) != 0;
+    bad |= t && put(g, "time", H5T_NATIVE_DOUBLE, 1, dims, t, "t0") != 0;
+    bad |= put(g, "value", H5T_NATIVE_DOUBLE, 1, dims, value, unit) != 0;
+    free(t);
+    if (H5Gclose(g) < 0) bad = 1;
+    return bad ? -1 : 0;
 }
 
 /* Copies src to dst byte for byte; 0 or -1. */
@@ -354,7 +525,11 @@ static int write_h5(const pl_sim_t *sim, const pl_stress_t *o, const char *path,
                                                              : pl_h5_group(f, "observables");
     int bad = obs < 0;
     const double dt = sim->scene.srd.dt;
-    if (!bad) { /* the tensor, mean over each output window */
+    if (!bad && o->couette) {
+        bad |= series(obs, "wall_shear_stress", o->ts_n, o->ts_step, dt, o->ts_sigma, "kT/a0^3") != 0;
+        bad |= series(obs, "shear_rate", o->ts_n, o->ts_step, dt, o->ts_rate, "1/t0") != 0;
+    }
+    if (!bad && !o->couette) { /* the tensor, mean over each output window */
         hid_t g = pl_h5_group(obs, "fluid_stress");
         bad |= g < 0;
         double *t = malloc((o->ts_n ? o->ts_n : 1) * sizeof(double));
@@ -409,6 +584,51 @@ static int write_h5(const pl_sim_t *sim, const pl_stress_t *o, const char *path,
     return pl_atomic_commit(tmp, path, err);
 }
 
+/* {value, stderr, ..., se_vs_time, wall_s_for_target} of a viscosity. */
+static json_t *viscosity_entry(pl_json_t *b, const pl_stress_t *o, const pl_sim_t *sim, double v, double se,
+                               const pl_blocking_result_t *r, double theory)
+{
+    const pl_scene_t *sc = &sim->scene;
+    json_t *e = json_object();
+    pl_json_real(b, e, "value", v);
+    pl_json_real(b, e, "stderr", se);
+    pl_json_real(b, e, "n_independent", r->n_indep);
+    pl_json_real(b, e, "statistical_inefficiency", r->inefficiency);
+    pl_json_set(b, e, "plateau", json_boolean(r->plateau));
+    pl_json_real(b, e, "wall_s", o->wall);
+    pl_json_str(b, e, "unit", "m_f/(a0 t0)");
+    pl_json_int(b, e, "samples", (long long)(o->couette ? o->sigma.n : o->eta.n));
+    pl_json_real(b, e, "theory_PL_Eq15", theory);
+    pl_json_real(b, e, "kinematic_value", v / sc->fluid.density);
+    pl_json_real(b, e, "kinematic_stderr", se / sc->fluid.density);
+    if (sc->mapping.enabled) { /* m_f / (a0 t0) -> Pa s */
+        const pl_mapping_t *m = &sc->mapping.map;
+        pl_json_real(b, e, "value_Pa_s", v * m->m_f / (m->a0 * m->t0));
+        pl_json_real(b, e, "stderr_Pa_s", se * m->m_f / (m->a0 * m->t0));
+    }
+    json_t *arr = json_array();
+    for (int k = 0; k < NFRAC; ++k) {
+        const stress_ept_t *p = &o->ept[k];
+        if (!p->valid) continue;
+        json_t *q = json_object();
+        pl_json_real(b, q, "run_fraction", fractions[k]);
+        pl_json_int(b, q, "step", p->step);
+        pl_json_real(b, q, "wall_s", p->wall_s);
+        pl_json_real(b, q, "value", p->value);
+        pl_json_real(b, q, "stderr", p->se);
+        json_array_append_new(arr, q);
+    }
+    pl_json_set(b, e, "se_vs_time", arr);
+    const stress_ept_t *last = &o->ept[NFRAC - 1];
+    const double target = sc->observe.target_rel_error;
+    if (last->valid && fabs(v) > 0 && se > 0) {
+        pl_json_real(b, e, "target_rel_error", target);
+        pl_json_real(b, e, "wall_s_for_target", pl_blocking_time_for_se(se, last->wall_s, target * fabs(v)));
+        pl_json_set(b, e, "extrapolation_reliable", json_boolean(r->plateau));
+    }
+    return e;
+}
+
 static int stress_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
 {
     pl_stress_t *o = stress_of(sim);
@@ -429,46 +649,30 @@ static int stress_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *
     pl_srd_theory_t th;
     pl_srd_theory(sc->fluid.density, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, o->kT, &th);
     double v, se;
-    pl_blocking_result_t r;
-    if (eta_estimate(o, &v, &se, &r)) {
-        json_t *e = json_object();
-        pl_json_real(&b, e, "value", v);
-        pl_json_real(&b, e, "stderr", se);
-        pl_json_real(&b, e, "n_independent", r.n_indep);
-        pl_json_real(&b, e, "statistical_inefficiency", r.inefficiency);
-        pl_json_set(&b, e, "plateau", json_boolean(r.plateau));
-        pl_json_real(&b, e, "wall_s", o->wall);
-        pl_json_str(&b, e, "unit", "m_f/(a0 t0)");
-        pl_json_int(&b, e, "samples", (long long)o->eta.n);
+    pl_blocking_result_t r, rr;
+    if (o->couette && couette_estimate(o, &v, &se, &r, &rr)) {
+        json_t *e = viscosity_entry(&b, o, sim, v, se, &r, th.eta);
+        json_t *q = json_object();
+        pl_json_real(&b, q, "value", r.mean);
+        pl_json_real(&b, q, "stderr", r.se);
+        pl_json_real(&b, q, "n_independent", r.n_indep);
+        pl_json_set(&b, q, "plateau", json_boolean(r.plateau));
+        pl_json_str(&b, q, "unit", "kT/a0^3");
+        pl_json_set(&b, e, "wall_shear_stress", q);
+        q = json_object();
+        pl_json_real(&b, q, "value", rr.mean);
+        pl_json_real(&b, q, "stderr", rr.se);
+        pl_json_real(&b, q, "n_independent", rr.n_indep);
+        pl_json_set(&b, q, "plateau", json_boolean(rr.plateau));
+        pl_json_real(&b, q, "nominal", o->du / (double)o->nlayers);
+        pl_json_str(&b, q, "unit", "1/t0");
+        pl_json_set(&b, e, "shear_rate", q);
+        pl_json_real(&b, e, "apparent_value", r.mean * (double)o->nlayers / o->du);
+        pl_json_set(&b, all, "couette_viscosity", e);
+    }
+    if (!o->couette && eta_estimate(o, &v, &se, &r)) {
+        json_t *e = viscosity_entry(&b, o, sim, v, se, &r, th.eta);
         pl_json_int(&b, e, "green_kubo_lags", o->K);
-        pl_json_real(&b, e, "theory_PL_Eq15", th.eta);
-        pl_json_real(&b, e, "kinematic_value", v / sc->fluid.density);
-        pl_json_real(&b, e, "kinematic_stderr", se / sc->fluid.density);
-        if (sc->mapping.enabled) { /* m_f / (a0 t0) -> Pa s */
-            const pl_mapping_t *m = &sc->mapping.map;
-            pl_json_real(&b, e, "value_Pa_s", v * m->m_f / (m->a0 * m->t0));
-            pl_json_real(&b, e, "stderr_Pa_s", se * m->m_f / (m->a0 * m->t0));
-        }
-        json_t *arr = json_array();
-        for (int k = 0; k < NFRAC; ++k) {
-            const stress_ept_t *p = &o->ept[k];
-            if (!p->valid) continue;
-            json_t *q = json_object();
-            pl_json_real(&b, q, "run_fraction", fractions[k]);
-            pl_json_int(&b, q, "step", p->step);
-            pl_json_real(&b, q, "wall_s", p->wall_s);
-            pl_json_real(&b, q, "value", p->value);
-            pl_json_real(&b, q, "stderr", p->se);
-            json_array_append_new(arr, q);
-        }
-        pl_json_set(&b, e, "se_vs_time", arr);
-        const stress_ept_t *last = &o->ept[NFRAC - 1];
-        const double target = sc->observe.target_rel_error;
-        if (last->valid && fabs(v) > 0 && se > 0) {
-            pl_json_real(&b, e, "target_rel_error", target);
-            pl_json_real(&b, e, "wall_s_for_target", pl_blocking_time_for_se(se, last->wall_s, target * fabs(v)));
-            pl_json_set(&b, e, "extrapolation_reliable", json_boolean(r.plateau));
-        }
         pl_json_set(&b, all, "fluid_viscosity", e);
     }
     if (o->pressure.n >= 2) {
