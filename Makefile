@@ -130,8 +130,9 @@ check-unit: $(CHECK_BIN)
 	@set -e; for t in $(CHECK_BIN); do echo "== $$t"; s=$$(date +%s); $$t --jobs 1; \
 	  echo "   ($$t: $$(( $$(date +%s) - s )) s)"; done
 
-validate: $(VALIDATE_BIN)
+validate: $(VALIDATE_BIN) $(BIN)
 	@set -e; for t in $(VALIDATE_BIN); do echo "== $$t"; $$t --jobs 1; done
+	@bash tests/stress.sh ./$(BIN) 80000
 	@echo "make validate: all suites passed"
 
 check-cli: $(BIN)
@@ -140,6 +141,7 @@ check-cli: $(BIN)
 	@bash tests/full_disk.sh ./$(BIN)
 	@bash tests/regression.sh ./$(BIN)
 	@bash tests/observers.sh ./$(BIN)
+	@bash tests/stress.sh ./$(BIN)
 	@bash tests/readers.sh ./$(BIN)
 
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1

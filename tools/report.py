@@ -245,6 +245,31 @@ def plot_sediment(f, obs, outdir, lines):
     lines += ["## Sedimentation", "", "![phi(z, t)](sediment_phi.png)", ""]
 
 
+def plot_viscosity(f, obs, outdir, lines):
+    g = f["observables/fluid_viscosity_gk"]
+    lag, eta = g["lag"][:], g["value"][:]
+    e = obs.get("fluid_viscosity", {})
+    fig, ax = plt.subplots(figsize=(5, 3.5))
+    ax.plot(lag, eta, "o-", ms=3, label="running Green-Kubo sum")
+    if e:
+        ax.axhspan(e["value"] - e["stderr"], e["value"] + e["stderr"], color="C0", alpha=0.2,
+                   label=f"eta = {e['value']:.4g} +- {e['stderr']:.2g}")
+        ax.axhline(e["theory_PL_Eq15"], color="k", ls="--", label=f"PL Eqs. 9-15: {e['theory_PL_Eq15']:.4g}")
+    ax.set_xlabel("truncation lag [t0]")
+    ax.set_ylabel("eta [m_f/(a0 t0)]")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "viscosity.png"), dpi=120)
+    plt.close(fig)
+    lines += ["## Fluid shear viscosity (Green-Kubo)", "", "![viscosity](viscosity.png)", ""]
+    if e:
+        lines += [f"eta = {e['value']:.5g} +- {e['stderr']:.2g} m_f/(a0 t0) (PL Eqs. 9-15: "
+                  f"{e['theory_PL_Eq15']:.5g}), over {e['samples']} steps", ""]
+    p = obs.get("fluid_pressure")
+    if p:
+        lines += [f"pressure {p['value']:.6g} +- {p['stderr']:.2g} kT/a0^3 (ideal gas {p['ideal_gas']:.6g})", ""]
+
+
 def plot_thermo(outdir, lines):
     path = os.path.join(outdir, "thermo.tsv")
     if not os.path.exists(path):
@@ -316,6 +341,8 @@ def main(argv):
                 plot_sediment(f, obs, outdir, lines)
             if "fluid_velocity_distribution" in have or "colloid_velocity_distribution" in have:
                 plot_vdist(f, obs, outdir, lines)
+            if "fluid_viscosity_gk" in have:
+                plot_viscosity(f, obs, outdir, lines)
     plot_thermo(outdir, lines)
     error_table(obs, lines)
     with open(os.path.join(outdir, "report.md"), "w") as out:

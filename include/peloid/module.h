@@ -49,6 +49,7 @@ extern const pl_module_t pl_colloid_module;  /* src/colloid/colloid_module.c */
 extern const pl_module_t pl_coupling_module; /* src/coupling/coupling_module.c */
 extern const pl_module_t pl_observe_module;  /* src/observe/observe_module.c */
 extern const pl_module_t pl_stop_module;     /* src/observe/stop_module.c */
+extern const pl_module_t pl_stress_module;  /* src/observe/stress_module.c */
 
 /* The present estimate and SE of observable ob (stop.observable - 1);
  * 0 when it has none yet (src/observe/observe_module.c). */

@@ -22,6 +22,7 @@ typedef struct {
     double clusters_energy;            /* energy bond: pair energy below -this (kT_ref) */
     long long vdist_interval, vdist_start; /* velocity distributions against Maxwell-Boltzmann */
     long long sediment_interval, sediment_start, sediment_bins; /* phi(z, t), settling velocity */
+    long long stress_interval, stress_start, stress_gk_steps; /* fluid stress, Green-Kubo viscosity */
     double target_rel_error;           /* the error-against-time report's target */
 } pl_scene_observe_t;
 

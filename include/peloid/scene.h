@@ -173,6 +173,8 @@ extern const pl_section_t pl_scene_section_observe, pl_scene_section_stop;
 
 /* Cross-key checks of the observe section (src/observe/observe_module.c). */
 int pl_observe_validate_scene(const pl_scene_t *scene, pl_err_t *err);
+/* ... and of observe.stress_* (src/observe/stress_module.c). */
+int pl_stress_validate_scene(const pl_scene_t *scene, pl_err_t *err);
 
 /* Cross-key checks of the coupling section (src/coupling_scene.c). */
 int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err);

@@ -100,6 +100,7 @@ struct pl_sim {
     struct pl_coupling *coupling;
     /* observers (NULL without; src/observe/observe_module.c) */
     struct pl_observe *observe;
+    struct pl_stress *stress; /* fluid stress observer (NULL without; src/observe/stress_module.c) */
     /* plan */
     pl_stage_t stages[PL_MAX_STAGES];
     int nstages;

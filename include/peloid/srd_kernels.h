@@ -147,6 +147,30 @@ void pl_srd_observe(const pl_fluid_t *fluid, double *scratch, pl_fluid_obs_t *ob
 enum { PL_FIELD_FIXED_SHIFT = 32 };
 void pl_srd_fields_accumulate(const pl_fluid_t *fluid, const int L[3], int64_t *acc, int nthreads);
 
+/* ---- momentum-flux sums (kernels/srd_stress.c) ------------------------ */
+/* The fluid's sums the stress observer needs (src/observe/stress.c), m = 1:
+ *   out[0..2]   sum v_a
+ *   out[3..8]   sum v_a v_b       (xx, yy, zz, xy, xz, yz)
+ *   out[9..17]  sum v_a rho_b     (index 9 + 3 a + b), rho the position
+ *               relative to the centre of its collision cell under the grid
+ *               shift s: rho = (x - s) - floor(x - s) - 1/2 on every axis
+ *               (the cell rule of peloid/grid.h; periodic axes).
+ * Collision: the change of the last block across a collision is the
+ * collisional momentum flux (cells conserve momentum, so the cell centre is
+ * the natural origin).  Fixed-order blocked reductions: bitwise independent
+ * of nthreads.  scratch: pl_srd_stress_scratch(n) doubles. */
+enum { PL_STRESS_NSUMS = 18 };
+size_t pl_srd_stress_scratch(size_t n);
+void pl_srd_stress_sums(const pl_fluid_t *fluid, const double shift[3], double *scratch,
+                        double out[PL_STRESS_NSUMS], int nthreads);
+/* Velocity profile across z: per layer k (floor(z), clipped to 0..nlayers-1)
+ * sum_v[k] = sum of v . e over its particles and count[k] their number.
+ * Fixed-order: bitwise independent of nthreads.  scratch:
+ * pl_srd_layer_scratch(n, nlayers) doubles. */
+size_t pl_srd_layer_scratch(size_t n, int nlayers);
+void pl_srd_layer_velocity(const pl_fluid_t *fluid, int nlayers, const double e[3], double *scratch,
+                           double *sum_v, double *count, int nthreads);
+
 /* ---- fluid guard scan (kernels/srd_guard.c) --------------------------- */
 /* Lowest index i with a position outside [0, L_d] on some axis d (NaN and
  * Inf included; only when `positions`) or |v_i|^2 > vmax2 (or not finite);

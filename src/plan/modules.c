@@ -6,6 +6,7 @@ const pl_module_t *const pl_modules[] = {
     &pl_colloid_module,
     &pl_coupling_module,
     &pl_observe_module,
+    &pl_stress_module,
     &pl_stop_module,
     NULL,
 };

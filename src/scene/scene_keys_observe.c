@@ -83,6 +83,17 @@ static const pl_key_t observe_keys[] = {
      "first step the sedimentation observer samples"},
     {"sediment_bins", PL_KEY_INT, OFF(sediment_bins), 0, 1e6, 0, NULL, 0, NULL, "-",
      "slabs of phi(z) over the box height (0: one per collision cell)"},
+    {"stress_interval", PL_KEY_INT, OFF(stress_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "fluid stress (momentum flux) tensor, kinetic + collisional parts, accumulated every step and written "
+     "as its mean over every this many steps (0: off); the shear viscosity from the Green-Kubo sum of the "
+     "off-diagonal parts (Helfand form, PL Eqs. 9-15 to compare) and the pressure, each with its blocking SE; "
+     "pure fluid in a periodic box"},
+    {"stress_start", PL_KEY_INT, OFF(stress_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
+     "first step the stress is accumulated"},
+    {"stress_gk_steps", PL_KEY_INT, OFF(stress_gk_steps), 0, 1e5, 0, NULL, 0, NULL, "collision steps",
+     "lags of the stress autocorrelation the Green-Kubo sum includes (0: ten kinetic stress relaxation "
+     "times 1 / (1 - f) from PL Eq. 9, at least 10); each lag adds noise, too few cut the integral: the "
+     "running sum against the lag is written so that its plateau can be checked"},
     {"target_rel_error", PL_KEY_REAL, OFF(target_rel_error), 0, 1, PL_KEY_MIN_OPEN, NULL, 0.01, NULL, "-",
      "relative standard error the end-of-run report extrapolates the needed wall time to (SE ~ 1/sqrt(t))"},
 };

@@ -67,5 +67,6 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
                              "colloids.trajectory_interval > 0");
     if (pl_colloid_validate_scene(scene, err)) return PL_ERR_INPUT;
     if (pl_coupling_validate_scene(scene, err)) return PL_ERR_INPUT;
+    if (pl_stress_validate_scene(scene, err)) return PL_ERR_INPUT;
     return pl_observe_validate_scene(scene, err);
 }

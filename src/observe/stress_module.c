@@ -1,0 +1,699 @@
+/* The stress observer (section observe{}, keys stress_*; DESIGN.md
+ * "Observables and their errors"): the SRD fluid's momentum-flux tensor and
+ * its shear viscosity by Green-Kubo, each with its standard error.
+ *
+ * Momentum flux, Helfand form.  With G_ab = sum_i m v_ia r_ib (r unwrapped),
+ * one SRD step changes G by
+ *
+ *   g_ab = dt sum_i m v_ia v_ib                 streaming (kinetic part)
+ *        + sum_i m dv_ia rho_ib                 collision (collisional part)
+ *
+ * where dv is the velocity change of the collision (and of a thermostat or a
+ * constraint acting at fixed positions) and rho the position relative to the
+ * centre of the particle's collision cell: cells conserve momentum, so any
+ * origin inside a cell gives the same sum and the cell centre keeps it
+ * independent of periodic images.  These are the kinetic and collisional
+ * stresses of PL Eqs. 13-15 (Kikuchi et al., J. Chem. Phys. 119, 6388
+ * (2003); Ihle, Tuezel & Kroll, Phys. Rev. E 72, 046707 (2005)).  The
+ * velocities are relative to the box's mean (a Galilean invariant).  The
+ * pressure tensor of a step is P_ab = g_ab / (V dt).
+ *
+ * Viscosity.  The Einstein-Helfand relation eta = lim <(G(t) - G(0))^2> /
+ * (2 V kT t) for the sequence of steps is the discrete Green-Kubo sum
+ *
+ *   eta = (V dt / kT) [ C(0) / 2 + sum_{k>=1} C(k) ],   C(k) = <P_ab(n) P_ab(n+k)>
+ *       = 1 / (2 V kT dt) < g(n) [ g(n) + 2 sum_{k=1..K} g(n-k) ] >
+ *
+ * (the trapezoidal end term is exact here, it is what makes the kinetic part
+ * come out as PL Eq. 9's "- 1/2").  The per-step estimator in brackets,
+ * averaged over the six off-diagonal (a, b), is a stationary time series
+ * whose mean is eta truncated at K = observe.stress_gk_steps lags (default:
+ * ten kinetic relaxation times, gk_lags); its SE
+ * comes from blocking (peloid/blocking.h).  The running sum against the
+ * truncation lag is written too (observables.h5 fluid_viscosity_gk), so that
+ * its plateau can be checked.  Ideal-gas SRD has P = n kT exactly; the mean
+ * pressure is reported with its SE as a check.
+ *
+ * Scope of Green-Kubo: the pure fluid in a periodic box.  A suspension's
+ * stress needs the colloid virial and the coupling's momentum exchange,
+ * which this observer does not build: refused at scene check.
+ *
+ * Couette (walls_z = noslip with different wall velocities, walls_xy none):
+ * the viscosity from the wall stress instead (PL Eq. 13; the walls' impulse
+ * on fluid and colloids, sim->wall_impulse), sigma = (dp_top - dp_bottom) /
+ * (2 A dt) per step along the walls' relative velocity e, over the shear
+ * rate measured from the fluid's velocity profile: the least-squares slope
+ * of the layer means of v . e over the layers not touching a wall, sampled
+ * every stress_interval steps.  eta = <sigma> / <slope>, SE propagated from
+ * the two blocking SEs (their covariance neglected; the stress and the
+ * profile's slope fluctuate nearly independently); the apparent viscosity
+ * over the nominal rate |du| / Lz is reported too (what a rheometer
+ * reports: it includes the walls' slip).  With colloids this is the
+ * suspension's viscosity.  Other walls are refused.
+ *
+ * Off (interval 0) it adds no stage and costs nothing; on, Green-Kubo adds
+ * two passes over the fluid per step (before and after the collision),
+ * Couette one pass per sample. */
+#include <hdf5.h>
+#include <jansson.h>
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "json_build.h"
+#include "peloid/blocking.h"
+#include "peloid/h5.h"
+#include "peloid/io.h"
+#include "peloid/module.h"
+#include "peloid/real.h"
+#include "peloid/srd_kernels.h"
+#include "peloid/srd_theory.h"
+
+enum { NOFF = 6, NFRAC = 4 };
+/* the off-diagonal (a, b): a-momentum carried along b */
+static const int off_a[NOFF] = {0, 0, 1, 1, 2, 2}, off_b[NOFF] = {1, 2, 0, 2, 0, 1};
+static const double fractions[NFRAC] = {0.125, 0.25, 0.5, 1.0};
+static const int kin_index[3][3] = {{3, 6, 7}, {6, 4, 8}, {7, 8, 5}}; /* into the kernel's sums */
+
+typedef struct {
+    long long step;
+    double wall_s, value, se;
+    int valid;
+} stress_ept_t;
+
+typedef struct pl_stress {
+    int K;              /* Green-Kubo lags */
+    double V, kT, dt, N;
+    double *scratch;
+    double pre[PL_STRESS_NSUMS]; /* sums before this step's collision */
+    int have_pre;
+    double *ring;       /* K x NOFF: g of the last K steps, newest at ring_head */
+    int ring_head;
+    long long ring_n;
+    double *cacc;       /* (K + 1): sum over steps and (a, b) of g(n) g(n - k) */
+    uint64_t ncorr;     /* steps in cacc */
+    pl_blocking_t eta;  /* per-step Green-Kubo estimator */
+    pl_blocking_t pressure;
+    double win[9];      /* P_ab summed over the present output window */
+    long long win_n;
+    long long *ts_step;
+    double *ts_val;     /* 9 per sample */
+    size_t ts_n, ts_cap;
+    long long first, last;
+    double t_start, wall;
+    stress_ept_t ept[NFRAC];
+    int next_frac;
+    /* Couette */
+    int couette;
+    double e[3], A, du, imp_prev[2];
+    int nlayers;
+    double *lay_sum, *lay_cnt;
+    pl_blocking_t sigma, rate;
+    double *ts_sigma, *ts_rate; /* per sample: mean stress since the last, slope */
+} pl_stress_t;
+
+static pl_stress_t *stress_of(const pl_sim_t *sim);
+
+/* ---- scene checks ------------------------------------------------------ */
+
+#define OFFO(m) offsetof(pl_scene_t, observe.m)
+
+/* No-slip z walls moving relative to each other, periodic in x and y. */
+static int is_couette(const pl_scene_t *sc)
+{
+    const double *b = sc->box.wall_velocity[0], *t = sc->box.wall_velocity[1];
+    return sc->box.walls_z == PL_WALLS_NOSLIP && sc->box.walls_xy == PL_WALLS_NONE &&
+           (t[0] != b[0] || t[1] != b[1]);
+}
+
+int pl_stress_validate_scene(const pl_scene_t *sc, pl_err_t *err)
+{
+    const long long s = sc->observe.stress_interval;
+    if (s <= 0) return 0;
+    if (is_couette(sc)) {
+        if (sc->box.cells[2] < 4)
+            return pl_scene_fail(sc, err, OFFO(stress_interval), "observe.stress_interval",
+                                 "%lld with %d layers between the walls: the shear rate's fit needs >= 2 "
+                                 "layers not touching a wall; allowed: box.cells[2] >= 4", s, sc->box.cells[2]);
+    } else if (sc->box.walls_z != PL_WALLS_NONE || sc->box.walls_xy != PL_WALLS_NONE) {
+        return pl_scene_fail(sc, err, OFFO(stress_interval), "observe.stress_interval",
+                             "%lld with walls that shear nothing: Green-Kubo needs a periodic box, the wall "
+                             "stress a Couette cell; allowed: 0, or walls_z = \"noslip\" with different "
+                             "wall velocities and no x/y walls", s);
+    } else if (sc->colloids.count > 0) {
+        return pl_scene_fail(sc, err, OFFO(stress_interval), "observe.stress_interval",
+                             "%lld with colloids in a periodic box: Green-Kubo here sums the SRD fluid's "
+                             "stress only; a suspension's needs the colloid virial and the coupling's "
+                             "momentum exchange, which it does not include; allowed: 0 with colloids, or a "
+                             "Couette cell (walls_z = \"noslip\", different wall velocities)", s);
+    }
+    if (sc->fluid.density <= 0)
+        return pl_scene_fail(sc, err, OFFO(stress_interval), "observe.stress_interval",
+                             "%lld without fluid; allowed: 0 without fluid", s);
+    return 0;
+}
+
+/* ---- lifetime ---------------------------------------------------------- */
+
+/* observe.stress_gk_steps, or ten kinetic relaxation times: the kinetic
+ * stress of SRD decays by a factor f per step, and PL Eq. 9 reads
+ * nu_kin = (kT dt / 2m) (2 / (1 - f) - 1). */
+static int gk_lags(const pl_scene_t *sc)
+{
+    if (sc->observe.stress_gk_steps > 0) return (int)sc->observe.stress_gk_steps;
+    pl_srd_theory_t th;
+    const double kT = pl_scene_kT(sc);
+    pl_srd_theory(sc->fluid.density, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, kT, &th);
+    const double tau = 0.5 * (2.0 * th.nu_kin / (kT * sc->srd.dt) + 1.0);
+    const double k = ceil(10.0 * tau);
+    return k < 10 ? 10 : k > 1e5 ? 100000 : (int)k;
+}
+
+static int stress_create(pl_sim_t *sim, pl_err_t *err)
+{
+    const pl_scene_t *sc = &sim->scene;
+    if (sc->observe.stress_interval <= 0) return 0;
+    pl_stress_t *o = calloc(1, sizeof *o);
+    if (!o) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress observer");
+    o->K = gk_lags(sc);
+    o->V = (double)sim->grid.L[0] * sim->grid.L[1] * sim->grid.L[2];
+    o->kT = pl_scene_kT(sc);
+    o->dt = sc->srd.dt;
+    o->N = (double)sim->fluid.n;
+    o->scratch = malloc(pl_srd_stress_scratch(sim->fluid.n) * sizeof(double));
+    o->ring = calloc((size_t)o->K * NOFF, sizeof(double));
+    o->cacc = calloc((size_t)o->K + 1, sizeof(double));
+    if (!o->scratch || !o->ring || !o->cacc) {
+        free(o->scratch);
+        free(o->ring);
+        free(o->cacc);
+        free(o);
+        return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress observer");
+    }
+    pl_blocking_init(&o->eta);
+    pl_blocking_init(&o->pressure);
+    pl_blocking_init(&o->sigma);
+    pl_blocking_init(&o->rate);
+    sim->stress = o;
+    if (!is_couette(sc)) return 0;
+    o->couette = 1;
+    const double *ub = sc->box.wall_velocity[0], *ut = sc->box.wall_velocity[1];
+    o->du = hypot(ut[0] - ub[0], ut[1] - ub[1]);
+    o->e[0] = (ut[0] - ub[0]) / o->du;
+    o->e[1] = (ut[1] - ub[1]) / o->du;
+    o->A = (double)sim->grid.L[0] * sim->grid.L[1];
+    o->nlayers = sim->grid.L[2];
+    free(o->scratch);
+    o->scratch = malloc(pl_srd_layer_scratch(sim->fluid.n, o->nlayers) * sizeof(double));
+    o->lay_sum = malloc(2 * (size_t)o->nlayers * sizeof(double));
+    o->lay_cnt = o->lay_sum ? o->lay_sum + o->nlayers : NULL;
+    if (!o->scratch || !o->lay_sum) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress observer");
+    return 0;
+}
+
+static void stress_destroy(pl_sim_t *sim)
+{
+    pl_stress_t *o = sim->stress;
+    if (!o) return;
+    free(o->scratch);
+    free(o->ring);
+    free(o->cacc);
+    free(o->ts_step);
+    free(o->ts_val);
+    free(o->lay_sum);
+    free(o->ts_sigma);
+    free(o->ts_rate);
+    free(o);
+    sim->stress = NULL;
+}
+
+static pl_stress_t *stress_of(const pl_sim_t *sim) { return sim->stress; }
+
+/* ---- stages ------------------------------------------------------------ */
+
+/* Before the collision: the velocities the fluid streamed with, and the
+ * collisional sums' "before". */
+static int stage_pre(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)err;
+    pl_stress_t *o = ctx;
+    const double t0 = omp_get_wtime();
+    if (sim->step + 1 >= sim->scene.observe.stress_start) { /* the step being done is sim->step + 1 */
+        pl_srd_stress_sums(&sim->fluid, sim->grid.shift, o->scratch, o->pre, sim->nthreads);
+        o->have_pre = 1;
+    }
+    o->wall += omp_get_wtime() - t0;
+    return 0;
+}
+
+/* The estimate and SE of eta after what was sampled; 0 when there is none. */
+static int eta_estimate(const pl_stress_t *o, double *v, double *se, pl_blocking_result_t *res)
+{
+    if (o->eta.n < 2) return 0;
+    pl_blocking_result_t r = pl_blocking_result(&o->eta);
+    if (res) *res = r;
+    *v = r.mean;
+    *se = r.se;
+    return isfinite(r.mean) && isfinite(r.se);
+}
+
+/* Couette: eta = <sigma> / <rate> and its SE; 0 when there is none. */
+static int couette_estimate(const pl_stress_t *o, double *v, double *se, pl_blocking_result_t *rs,
+                            pl_blocking_result_t *rr)
+{
+    if (o->sigma.n < 2 || o->rate.n < 2) return 0;
+    pl_blocking_result_t a = pl_blocking_result(&o->sigma), b = pl_blocking_result(&o->rate);
+    if (rs) *rs = a;
+    if (rr) *rr = b;
+    *v = a.mean / b.mean;
+    *se = fabs(*v) * hypot(a.se / a.mean, b.se / b.mean);
+    return isfinite(*v) && isfinite(*se);
+}
+
+/* After the step (collision, thermostat, constraints done): g of the step. */
+static int stage_post(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    pl_stress_t *o = ctx;
+    if (!o->have_pre) return 0;
+    const double t0 = omp_get_wtime();
+    if (o->t_start == 0.0) {
+        o->first = sim->first_step;
+        o->last = sim->last_step;
+        o->t_start = t0;
+    }
+    double post[PL_STRESS_NSUMS];
+    pl_srd_stress_sums(&sim->fluid, sim->grid.shift, o->scratch, post, sim->nthreads);
+    o->have_pre = 0;
+    double g[3][3];
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) {
+            const double kin = o->pre[kin_index[a][b]] - o->pre[a] * o->pre[b] / o->N;
+            g[a][b] = o->dt * kin + (post[9 + 3 * a + b] - o->pre[9 + 3 * a + b]);
+            if (!isfinite(g[a][b]))
+                return pl_err_set(err, PL_ERR_GUARD, "step %lld: the fluid stress is not finite", sim->step);
+        }
+    /* Green-Kubo: per-step estimator and the correlation per lag */
+    double gk = 0.0;
+    const int full = o->ring_n >= o->K;
+    for (int c = 0; c < NOFF; ++c) {
+        const double x = g[off_a[c]][off_b[c]];
+        double past = 0.0;
+        o->cacc[0] += full ? x * x : 0.0;
+        for (int k = 1; k <= o->K; ++k) {
+            const int slot = (o->ring_head - (k - 1) + o->K) % o->K;
+            const double y = o->ring[(size_t)slot * NOFF + (size_t)c];
+            past += y;
+            if (full) o->cacc[k] += x * y;
+        }
+        gk += x * (x + 2.0 * past);
+    }
+    if (full) {
+        o->ncorr++;
+        pl_blocking_add(&o->eta, gk / (NOFF * 2.0 * o->V * o->kT * o->dt));
+    }
+    o->ring_head = (o->ring_head + 1) % o->K;
+    for (int c = 0; c < NOFF; ++c) o->ring[(size_t)o->ring_head * NOFF + (size_t)c] = g[off_a[c]][off_b[c]];
+    o->ring_n++;
+    /* pressure and the tensor's time series */
+    const double scale = 1.0 / (o->V * o->dt);
+    pl_blocking_add(&o->pressure, (g[0][0] + g[1][1] + g[2][2]) * scale / 3.0);
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) o->win[3 * a + b] += g[a][b] * scale;
+    o->win_n++;
+    if (sim->step % sim->scene.observe.stress_interval == 0) {
+        if (o->ts_n == o->ts_cap) {
+            size_t cap = o->ts_cap ? 2 * o->ts_cap : 64;
+            long long *s = realloc(o->ts_step, cap * sizeof *s);
+            if (s) o->ts_step = s;
+            double *v = realloc(o->ts_val, cap * 9 * sizeof *v);
+            if (v) o->ts_val = v;
+            if (!s || !v) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress time series");
+            o->ts_cap = cap;
+        }
+        o->ts_step[o->ts_n] = sim->step;
+        for (int k = 0; k < 9; ++k) o->ts_val[9 * o->ts_n + (size_t)k] = o->win[k] / (double)o->win_n;
+        o->ts_n++;
+        memset(o->win, 0, sizeof o->win);
+        o->win_n = 0;
+    }
+    /* error against run time */
+    while (o->next_frac < NFRAC) {
+        const long long at = o->first + (long long)ceil(fractions[o->next_frac] * (double)(o->last - o->first));
+        if (sim->step < at) break;
+        stress_ept_t *e = &o->ept[o->next_frac++];
+        e->step = sim->step;
+        e->wall_s = omp_get_wtime() - o->t_start;
+        e->valid = eta_estimate(o, &e->value, &e->se, NULL);
+    }
+    o->wall += omp_get_wtime() - t0;
+    return 0;
+}
+
+/* The impulse the walls gave along e since step 0: bottom, top. */
+static void wall_impulse_along(const pl_sim_t *sim, const double e[3], double out[2])
+{
+    for (int w = 0; w < 2; ++w) out[w] = e[0] * sim->wall_impulse[w][0] + e[1] * sim->wall_impulse[w][1];
+}
+
+/* Least-squares slope of the layer means over layers 1 .. n-2 (centres k + 1/2). */
+static double profile_slope(const double *sum_v, const double *count, int n)
+{
+    double m = 0, sz = 0, sv = 0, szz = 0, szv = 0;
+    for (int k = 1; k < n - 1; ++k) {
+        if (count[k] <= 0) continue;
+        const double z = k + 0.5, v = sum_v[k] / count[k];
+        m += 1; sz += z; sv += v; szz += z * z; szv += z * v;
+    }
+    return m >= 2 ? (m * szv - sz * sv) / (m * szz - sz * sz) : NAN;
+}
+
+/* Couette: the wall stress of each step, the shear rate at samples. */
+static int stage_couette(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    pl_stress_t *o = ctx;
+    const double t0 = omp_get_wtime();
+    double imp[2];
+    wall_impulse_along(sim, o->e, imp);
+    if (sim->step < sim->scene.observe.stress_start || o->t_start == 0.0) { /* the reference of the first step */
+        if (sim->step >= sim->scene.observe.stress_start) {
+            o->first = sim->first_step;
+            o->last = sim->last_step;
+            o->t_start = t0;
+        }
+        o->imp_prev[0] = imp[0];
+        o->imp_prev[1] = imp[1];
+        return 0;
+    }
+    const double sig = ((imp[1] - o->imp_prev[1]) - (imp[0] - o->imp_prev[0])) / (2.0 * o->A * o->dt);
+    o->imp_prev[0] = imp[0];
+    o->imp_prev[1] = imp[1];
+    if (!isfinite(sig))
+        return pl_err_set(err, PL_ERR_GUARD, "step %lld: the wall shear stress is not finite", sim->step);
+    pl_blocking_add(&o->sigma, sig);
+    o->win[0] += sig;
+    o->win_n++;
+    if (sim->step % sim->scene.observe.stress_interval == 0) {
+        pl_srd_layer_velocity(&sim->fluid, o->nlayers, o->e, o->scratch, o->lay_sum, o->lay_cnt, sim->nthreads);
+        const double slope = profile_slope(o->lay_sum, o->lay_cnt, o->nlayers);
+        if (!isfinite(slope))
+            return pl_err_set(err, PL_ERR_GUARD, "step %lld: the shear rate of the velocity profile is not finite "
+                              "(empty layers)", sim->step);
+        pl_blocking_add(&o->rate, slope);
+        if (o->ts_n == o->ts_cap) {
+            size_t cap = o->ts_cap ? 2 * o->ts_cap : 64;
+            long long *st = realloc(o->ts_step, cap * sizeof *st);
+            if (st) o->ts_step = st;
+            double *a = realloc(o->ts_sigma, cap * sizeof *a);
+            if (a) o->ts_sigma = a;
+            double *b = realloc(o->ts_rate, cap * sizeof *b);
+            if (b) o->ts_rate = b;
+            if (!st || !a || !b) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress time series");
+            o->ts_cap = cap;
+        }
+        o->ts_step[o->ts_n] = sim->step;
+        o->ts_sigma[o->ts_n] = o->win[0] / (double)o->win_n;
+        o->ts_rate[o->ts_n] = slope;
+        o->ts_n++;
+        o->win[0] = 0.0;
+        o->win_n = 0;
+    }
+    while (o->next_frac < NFRAC) {
+        const long long at = o->first + (long long)ceil(fractions[o->next_frac] * (double)(o->last - o->first));
+        if (sim->step < at) break;
+        stress_ept_t *q = &o->ept[o->next_frac++];
+        q->step = sim->step;
+        q->wall_s = omp_get_wtime() - o->t_start;
+        q->valid = couette_estimate(o, &q->value, &q->se, NULL, NULL);
+    }
+    o->wall += omp_get_wtime() - t0;
+    return 0;
+}
+
+static void stress_stages(pl_sim_t *sim)
+{
+    pl_stress_t *o = stress_of(sim);
+    if (!o) return;
+    if (o->couette) {
+        pl_stage_t c = {.name = "stress-couette", .fn = stage_couette, .ctx = o, .interval = 1,
+                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
+        pl_sim_add_stage(sim, &c, NULL);
+        return;
+    }
+    pl_stage_t pre = {.name = "stress-before-collision", .fn = stage_pre, .ctx = o, .interval = 1,
+                      .phase = PL_PHASE_STEP, .slot = PL_SLOT_PRE_COLLIDE};
+    pl_sim_add_stage(sim, &pre, NULL);
+    pl_stage_t post = {.name = "stress", .fn = stage_post, .ctx = o, .interval = 1, .phase = PL_PHASE_AFTER,
+                       .slot = PL_SLOT_OBSERVE};
+    pl_sim_add_stage(sim, &post, NULL);
+}
+
+/* ---- outputs ----------------------------------------------------------- */
+
+static int put(hid_t g, const char *name, hid_t type, int rank, const hsize_t *dims, const void *data,
+               const char *unit)
+{
+    if (pl_h5_write(g, name, type, rank, dims, data)) return -1;
+    if (!unit) return 0;
+    hid_t ds = H5Dopen2(g, name, H5P_DEFAULT);
+    if (ds < 0) return -1;
+    int bad = pl_h5_attr_str(ds, "unit", unit);
+    if (H5Dclose(ds) < 0) bad = -1;
+    return bad;
+}
+
+/* An H5MD time series group /observables/<name> with step, time, value. */
+static int series(hid_t obs, const char *name, size_t n, const long long *step, double dt, const double *value,
+                  const char *unit)
+{
+    hid_t g = pl_h5_group(obs, name);
+    if (g < 0) return -1;
+    double *t = malloc((n ? n : 1) * sizeof(double));
+    int bad = !t;
+    for (size_t k = 0; t && k < n; ++k) t[k] = (double)step[k] * dt;
+    hsize_t dims[1] = {n};
+    bad |= put(g, "step", H5T_NATIVE_LLONG, 1, dims, step, NULL) != 0;
+    bad |= t && put(g, "time", H5T_NATIVE_DOUBLE, 1, dims, t, "t0") != 0;
+    bad |= put(g, "value", H5T_NATIVE_DOUBLE, 1, dims, value, unit) != 0;
+    free(t);
+    if (H5Gclose(g) < 0) bad = 1;
+    return bad ? -1 : 0;
+}
+
+/* Copies src to dst byte for byte; 0 or -1. */
+static int copy_file(const char *src, const char *dst)
+{
+    FILE *in = fopen(src, "rb"), *out = in ? fopen(dst, "wb") : NULL;
+    int bad = !in || !out;
+    char buf[1 << 16];
+    size_t n;
+    while (!bad && (n = fread(buf, 1, sizeof buf, in)) > 0) bad |= fwrite(buf, 1, n, out) != n;
+    if (in) bad |= ferror(in) != 0, fclose(in);
+    if (out && fclose(out)) bad = 1;
+    return bad ? -1 : 0;
+}
+
+/* Adds /observables/fluid_stress and fluid_viscosity_gk to observables.h5
+ * (the observe module's, when it wrote one, else a new file), atomically. */
+static int write_h5(const pl_sim_t *sim, const pl_stress_t *o, const char *path, pl_err_t *err)
+{
+    char tmp[4200];
+    pl_atomic_tmp(path, tmp, sizeof tmp);
+    pl_h5_quiet();
+    FILE *probe = fopen(path, "rb");
+    hid_t f;
+    if (probe) {
+        fclose(probe);
+        if (copy_file(path, tmp)) {
+            remove(tmp);
+            return pl_err_set(err, PL_ERR_IO, "%s: cannot copy the observables file", tmp);
+        }
+        f = H5Fopen(tmp, H5F_ACC_RDWR, H5P_DEFAULT);
+    } else {
+        f = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+        if (f >= 0 && pl_h5_h5md_header(f)) {
+            H5Fclose(f);
+            f = -1;
+        }
+    }
+    if (f < 0) {
+        remove(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: cannot create the observables file", tmp);
+    }
+    hid_t obs = H5Lexists(f, "observables", H5P_DEFAULT) > 0 ? H5Gopen2(f, "observables", H5P_DEFAULT)
+                                                             : pl_h5_group(f, "observables");
+    int bad = obs < 0;
+    const double dt = sim->scene.srd.dt;
+    if (!bad && o->couette) {
+        bad |= series(obs, "wall_shear_stress", o->ts_n, o->ts_step, dt, o->ts_sigma, "kT/a0^3") != 0;
+        bad |= series(obs, "shear_rate", o->ts_n, o->ts_step, dt, o->ts_rate, "1/t0") != 0;
+    }
+    if (!bad && !o->couette) { /* the tensor, mean over each output window */
+        hid_t g = pl_h5_group(obs, "fluid_stress");
+        bad |= g < 0;
+        double *t = malloc((o->ts_n ? o->ts_n : 1) * sizeof(double));
+        bad |= !t;
+        for (size_t k = 0; t && k < o->ts_n; ++k) t[k] = (double)o->ts_step[k] * dt;
+        hsize_t d1[1] = {o->ts_n}, d3[3] = {o->ts_n, 3, 3};
+        if (!bad) {
+            bad |= put(g, "step", H5T_NATIVE_LLONG, 1, d1, o->ts_step, NULL) != 0;
+            bad |= put(g, "time", H5T_NATIVE_DOUBLE, 1, d1, t, "t0") != 0;
+            bad |= put(g, "value", H5T_NATIVE_DOUBLE, 3, d3, o->ts_val, "kT/a0^3") != 0;
+            bad |= pl_h5_attr_str(g, "meaning", "pressure tensor P_ab (flux of a-momentum along b): kinetic + "
+                                                "collisional, mean over the steps since the previous sample") != 0;
+        }
+        free(t);
+        if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+    }
+    if (!bad && o->ncorr > 0) { /* running Green-Kubo sum against the truncation lag */
+        hid_t g = pl_h5_group(obs, "fluid_viscosity_gk");
+        bad |= g < 0;
+        const size_t n = (size_t)o->K + 1;
+        double *lag = malloc(2 * n * sizeof(double));
+        bad |= !lag;
+        if (!bad) {
+            double *eta = lag + n, run = 0.0;
+            const double norm = 1.0 / (2.0 * o->V * o->kT * o->dt * NOFF * (double)o->ncorr);
+            for (size_t k = 0; k < n; ++k) {
+                run += (k ? 2.0 : 1.0) * o->cacc[k];
+                lag[k] = (double)k * dt;
+                eta[k] = run * norm;
+            }
+            hsize_t d1[1] = {n};
+            bad |= put(g, "lag", H5T_NATIVE_DOUBLE, 1, d1, lag, "t0") != 0;
+            bad |= put(g, "value", H5T_NATIVE_DOUBLE, 1, d1, eta, "m_f/(a0 t0)") != 0;
+            bad |= pl_h5_attr_str(g, "meaning", "shear viscosity: Green-Kubo sum truncated at lag (steps of dt); "
+                                                "the plateau is eta") != 0;
+        }
+        free(lag);
+        if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+    }
+    if (obs >= 0 && H5Gclose(obs) < 0) bad = 1;
+    if (bad) {
+        char why[256];
+        pl_h5_error_text(why, sizeof why);
+        H5Fclose(f);
+        remove(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: writing the stress observables failed: %s", tmp, why);
+    }
+    if (H5Fclose(f) < 0) {
+        remove(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: closing the observables file failed", tmp);
+    }
+    return pl_atomic_commit(tmp, path, err);
+}
+
+/* {value, stderr, ..., se_vs_time, wall_s_for_target} of a viscosity. */
+static json_t *viscosity_entry(pl_json_t *b, const pl_stress_t *o, const pl_sim_t *sim, double v, double se,
+                               const pl_blocking_result_t *r, double theory)
+{
+    const pl_scene_t *sc = &sim->scene;
+    json_t *e = json_object();
+    pl_json_real(b, e, "value", v);
+    pl_json_real(b, e, "stderr", se);
+    pl_json_real(b, e, "n_independent", r->n_indep);
+    pl_json_real(b, e, "statistical_inefficiency", r->inefficiency);
+    pl_json_set(b, e, "plateau", json_boolean(r->plateau));
+    pl_json_real(b, e, "wall_s", o->wall);
+    pl_json_str(b, e, "unit", "m_f/(a0 t0)");
+    pl_json_int(b, e, "samples", (long long)(o->couette ? o->sigma.n : o->eta.n));
+    pl_json_real(b, e, "theory_PL_Eq15", theory);
+    pl_json_real(b, e, "kinematic_value", v / sc->fluid.density);
+    pl_json_real(b, e, "kinematic_stderr", se / sc->fluid.density);
+    if (sc->mapping.enabled) { /* m_f / (a0 t0) -> Pa s */
+        const pl_mapping_t *m = &sc->mapping.map;
+        pl_json_real(b, e, "value_Pa_s", v * m->m_f / (m->a0 * m->t0));
+        pl_json_real(b, e, "stderr_Pa_s", se * m->m_f / (m->a0 * m->t0));
+    }
+    json_t *arr = json_array();
+    for (int k = 0; k < NFRAC; ++k) {
+        const stress_ept_t *p = &o->ept[k];
+        if (!p->valid) continue;
+        json_t *q = json_object();
+        pl_json_real(b, q, "run_fraction", fractions[k]);
+        pl_json_int(b, q, "step", p->step);
+        pl_json_real(b, q, "wall_s", p->wall_s);
+        pl_json_real(b, q, "value", p->value);
+        pl_json_real(b, q, "stderr", p->se);
+        json_array_append_new(arr, q);
+    }
+    pl_json_set(b, e, "se_vs_time", arr);
+    const stress_ept_t *last = &o->ept[NFRAC - 1];
+    const double target = sc->observe.target_rel_error;
+    if (last->valid && fabs(v) > 0 && se > 0) {
+        pl_json_real(b, e, "target_rel_error", target);
+        pl_json_real(b, e, "wall_s_for_target", pl_blocking_time_for_se(se, last->wall_s, target * fabs(v)));
+        pl_json_set(b, e, "extrapolation_reliable", json_boolean(r->plateau));
+    }
+    return e;
+}
+
+static int stress_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
+{
+    pl_stress_t *o = stress_of(sim);
+    if (!o) return 0;
+    char path[4096];
+    pl_path_join(path, sizeof path, dir, "observables.h5");
+    int rc = write_h5(sim, o, path, err);
+    if (rc) return rc;
+    pl_json_t b = {err, path, "observables", 0};
+    json_t *all = json_object_get(doc, "observables");
+    if (!all) {
+        all = json_object();
+        pl_json_int(&b, all, "first_step", o->first);
+        pl_json_int(&b, all, "last_step", sim->step);
+        pl_json_set(&b, doc, "observables", all);
+    }
+    const pl_scene_t *sc = &sim->scene;
+    pl_srd_theory_t th;
+    pl_srd_theory(sc->fluid.density, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, o->kT, &th);
+    double v, se;
+    pl_blocking_result_t r, rr;
+    if (o->couette && couette_estimate(o, &v, &se, &r, &rr)) {
+        json_t *e = viscosity_entry(&b, o, sim, v, se, &r, th.eta);
+        json_t *q = json_object();
+        pl_json_real(&b, q, "value", r.mean);
+        pl_json_real(&b, q, "stderr", r.se);
+        pl_json_real(&b, q, "n_independent", r.n_indep);
+        pl_json_set(&b, q, "plateau", json_boolean(r.plateau));
+        pl_json_str(&b, q, "unit", "kT/a0^3");
+        pl_json_set(&b, e, "wall_shear_stress", q);
+        q = json_object();
+        pl_json_real(&b, q, "value", rr.mean);
+        pl_json_real(&b, q, "stderr", rr.se);
+        pl_json_real(&b, q, "n_independent", rr.n_indep);
+        pl_json_set(&b, q, "plateau", json_boolean(rr.plateau));
+        pl_json_real(&b, q, "nominal", o->du / (double)o->nlayers);
+        pl_json_str(&b, q, "unit", "1/t0");
+        pl_json_set(&b, e, "shear_rate", q);
+        pl_json_real(&b, e, "apparent_value", r.mean * (double)o->nlayers / o->du);
+        pl_json_set(&b, all, "couette_viscosity", e);
+    }
+    if (!o->couette && eta_estimate(o, &v, &se, &r)) {
+        json_t *e = viscosity_entry(&b, o, sim, v, se, &r, th.eta);
+        pl_json_int(&b, e, "green_kubo_lags", o->K);
+        pl_json_set(&b, all, "fluid_viscosity", e);
+    }
+    if (o->pressure.n >= 2) {
+        pl_blocking_result_t p = pl_blocking_result(&o->pressure);
+        json_t *e = json_object();
+        pl_json_real(&b, e, "value", p.mean);
+        pl_json_real(&b, e, "stderr", p.se);
+        pl_json_real(&b, e, "n_independent", p.n_indep);
+        pl_json_real(&b, e, "statistical_inefficiency", p.inefficiency);
+        pl_json_set(&b, e, "plateau", json_boolean(p.plateau));
+        pl_json_str(&b, e, "unit", "kT/a0^3");
+        pl_json_real(&b, e, "ideal_gas", (o->N - 1.0) * o->kT / o->V);
+        pl_json_set(&b, all, "fluid_pressure", e);
+    }
+    return b.failed ? err->code : 0;
+}
+
+const pl_module_t pl_stress_module = {
+    .name = "stress",
+    .create = stress_create,
+    .destroy = stress_destroy,
+    .add_stages = stress_stages,
+    .finish = stress_finish,
+};
