@@ -48,7 +48,8 @@
  * the two blocking SEs (their covariance neglected; the stress and the
  * profile's slope fluctuate nearly independently); the apparent viscosity
  * over the nominal rate |du| / Lz is reported too (what a rheometer
- * reports: it includes the walls' slip).  With colloids this is the
+ * reports: it includes the walls' slip).  The layer profiles of velocity
+ * and density are written at every sample.  With colloids this is the
  * suspension's viscosity.  Other walls are refused.
  *
  * Off (interval 0) it adds no stage and costs nothing; on, Green-Kubo adds
@@ -112,6 +113,7 @@ typedef struct pl_stress {
     double *lay_sum, *lay_cnt;
     pl_blocking_t sigma, rate;
     double *ts_sigma, *ts_rate; /* per sample: mean stress since the last, slope */
+    double *ts_prof;            /* per sample: nlayers layer means of v . e, then nlayers densities */
 } pl_stress_t;
 
 static pl_stress_t *stress_of(const pl_sim_t *sim);
@@ -225,6 +227,7 @@ static void stress_destroy(pl_sim_t *sim)
     free(o->lay_sum);
     free(o->ts_sigma);
     free(o->ts_rate);
+    free(o->ts_prof);
     free(o);
     sim->stress = NULL;
 }
@@ -409,12 +412,19 @@ static int stage_couette(pl_sim_t *sim, void *ctx, pl_err_t *err)
             if (a) o->ts_sigma = a;
             double *b = realloc(o->ts_rate, cap * sizeof *b);
             if (b) o->ts_rate = b;
-            if (!st || !a || !b) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress time series");
+            double *c = realloc(o->ts_prof, cap * 2 * (size_t)o->nlayers * sizeof *c);
+            if (c) o->ts_prof = c;
+            if (!st || !a || !b || !c) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress time series");
             o->ts_cap = cap;
         }
         o->ts_step[o->ts_n] = sim->step;
         o->ts_sigma[o->ts_n] = o->win[0] / (double)o->win_n;
         o->ts_rate[o->ts_n] = slope;
+        double *pr = o->ts_prof + 2 * (size_t)o->nlayers * o->ts_n;
+        for (int k = 0; k < o->nlayers; ++k) {
+            pr[k] = o->lay_cnt[k] > 0 ? o->lay_sum[k] / o->lay_cnt[k] : 0.0;
+            pr[o->nlayers + k] = o->lay_cnt[k] / o->A; /* particles per a0^3: layers are 1 a0 thick */
+        }
         o->ts_n++;
         o->win[0] = 0.0;
         o->win_n = 0;
@@ -528,6 +538,34 @@ static int write_h5(const pl_sim_t *sim, const pl_stress_t *o, const char *path,
     if (!bad && o->couette) {
         bad |= series(obs, "wall_shear_stress", o->ts_n, o->ts_step, dt, o->ts_sigma, "kT/a0^3") != 0;
         bad |= series(obs, "shear_rate", o->ts_n, o->ts_step, dt, o->ts_rate, "1/t0") != 0;
+        static const char *const pname[2] = {"fluid_velocity_profile", "fluid_density_profile"};
+        static const char *const punit[2] = {"a0/t0", "1/a0^3"};
+        const size_t nl = (size_t)o->nlayers;
+        double *buf = malloc((o->ts_n ? o->ts_n : 1) * nl * sizeof(double) + nl * sizeof(double));
+        bad |= !buf;
+        for (int p = 0; !bad && p < 2; ++p) {
+            double *z = buf + o->ts_n * nl;
+            for (size_t k = 0; k < o->ts_n; ++k) memcpy(buf + k * nl, o->ts_prof + (2 * k + (size_t)p) * nl, nl * sizeof(double));
+            for (size_t k = 0; k < nl; ++k) z[k] = (double)k + 0.5;
+            hid_t g = pl_h5_group(obs, pname[p]);
+            bad |= g < 0;
+            double *t = malloc((o->ts_n ? o->ts_n : 1) * sizeof(double));
+            bad |= !t;
+            for (size_t k = 0; t && k < o->ts_n; ++k) t[k] = (double)o->ts_step[k] * dt;
+            hsize_t d1[1] = {o->ts_n}, d2[2] = {o->ts_n, nl}, dz[1] = {nl};
+            if (!bad) {
+                bad |= put(g, "step", H5T_NATIVE_LLONG, 1, d1, o->ts_step, NULL) != 0;
+                bad |= put(g, "time", H5T_NATIVE_DOUBLE, 1, d1, t, "t0") != 0;
+                bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, buf, punit[p]) != 0;
+                bad |= put(g, "z", H5T_NATIVE_DOUBLE, 1, dz, z, "a0") != 0;
+                bad |= pl_h5_attr_str(g, "meaning", p ? "fluid particles per a0^3 in each 1 a0 layer of z, at the "
+                                                        "sample" : "mean fluid velocity along the walls' relative "
+                                                                   "velocity in each 1 a0 layer of z, at the sample") != 0;
+            }
+            free(t);
+            if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+        }
+        free(buf);
     }
     if (!bad && !o->couette) { /* the tensor, mean over each output window */
         hid_t g = pl_h5_group(obs, "fluid_stress");
