@@ -40,7 +40,7 @@ DEB_PKGS_VARIANTS := clang libomp-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 PREFIX ?= /usr/local
 
-.PHONY: all deps deps-variants install-debs run check check-unit check-cli check-asan check-variants validate bench clean keys \
+.PHONY: all deps deps-variants install-debs run check check-build check-unit check-cli check-asan check-variants validate bench clean keys \
         readme install
 all: $(BIN)
 
@@ -117,8 +117,15 @@ run: $(BIN)
 
 # The suite: Criterion unit + physics tests, then CLI behaviour, then a
 # sanitizer build of the fast unit tests.
-check: check-unit check-cli check-asan
+# Builds run on every core first (the optimised and the sanitizer build),
+# then the suites one after the other.
+NPROC := $(shell nproc 2>/dev/null || echo 1)
+check: | deps
+	@$(MAKE) --no-print-directory -j$(NPROC) check-build
+	@$(MAKE) --no-print-directory check-unit check-cli check-asan
 	@echo "make check: all suites passed"
+check-build: $(CHECK_BIN) $(BIN)
+	@$(MAKE) --no-print-directory $(ASAN_MAKE) $(patsubst %,build-asan/tests/%,$(ASAN_TESTS)) build-asan/bin/peloid
 
 # The long physics validations (each several minutes on 2 cores) run in
 # `make validate`; `make check` runs everything else.  CI runs both.
@@ -151,10 +158,10 @@ ASAN_TESTS := test_scene test_collide test_sort test_determinism test_colloid_fo
               test_colloid_guards test_colloid_md test_colloid_restart test_capillary \
               test_coupling_restart test_coupling_system test_fluid_guard test_progress \
               test_blocking test_mtau test_rdf test_sq test_cluster test_vdist
+ASAN_MAKE = BUILD=build-asan \
+  OPTFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
 check-asan: | deps
-	@$(MAKE) --no-print-directory BUILD=build-asan \
-	  OPTFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all" \
-	  $(patsubst %,build-asan/tests/%,$(ASAN_TESTS)) build-asan/bin/peloid
+	@$(MAKE) --no-print-directory $(ASAN_MAKE) $(patsubst %,build-asan/tests/%,$(ASAN_TESTS)) build-asan/bin/peloid
 	@set -e; for t in $(ASAN_TESTS); do \
 	  echo "== asan $$t"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$$t --jobs 1; done
 	@echo "== asan bin/peloid on tests/bad_scenes"
