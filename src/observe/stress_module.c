@@ -64,6 +64,7 @@
 #include <string.h>
 
 #include "json_build.h"
+#include "observables_out.h"
 #include "peloid/blocking.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
@@ -72,17 +73,10 @@
 #include "peloid/srd_kernels.h"
 #include "peloid/srd_theory.h"
 
-enum { NOFF = 6, NFRAC = 4 };
+enum { NOFF = 6, NFRAC = PL_OBS_NFRAC };
 /* the off-diagonal (a, b): a-momentum carried along b */
 static const int off_a[NOFF] = {0, 0, 1, 1, 2, 2}, off_b[NOFF] = {1, 2, 0, 2, 0, 1};
-static const double fractions[NFRAC] = {0.125, 0.25, 0.5, 1.0};
 static const int kin_index[3][3] = {{3, 6, 7}, {6, 4, 8}, {7, 8, 5}}; /* into the kernel's sums */
-
-typedef struct {
-    long long step;
-    double wall_s, value, se;
-    int valid;
-} stress_ept_t;
 
 typedef struct pl_stress {
     int K;              /* Green-Kubo lags */
@@ -104,7 +98,7 @@ typedef struct pl_stress {
     size_t ts_n, ts_cap;
     long long first, last;
     double t_start, wall;
-    stress_ept_t ept[NFRAC];
+    pl_obs_point_t ept[NFRAC];
     int next_frac;
     /* Couette */
     int couette;
@@ -343,9 +337,9 @@ static int stage_post(pl_sim_t *sim, void *ctx, pl_err_t *err)
     }
     /* error against run time */
     while (o->next_frac < NFRAC) {
-        const long long at = o->first + (long long)ceil(fractions[o->next_frac] * (double)(o->last - o->first));
+        const long long at = o->first + (long long)ceil(pl_obs_fractions[o->next_frac] * (double)(o->last - o->first));
         if (sim->step < at) break;
-        stress_ept_t *e = &o->ept[o->next_frac++];
+        pl_obs_point_t *e = &o->ept[o->next_frac++];
         e->step = sim->step;
         e->wall_s = omp_get_wtime() - o->t_start;
         e->valid = eta_estimate(o, &e->value, &e->se, NULL);
@@ -430,9 +424,9 @@ static int stage_couette(pl_sim_t *sim, void *ctx, pl_err_t *err)
         o->win_n = 0;
     }
     while (o->next_frac < NFRAC) {
-        const long long at = o->first + (long long)ceil(fractions[o->next_frac] * (double)(o->last - o->first));
+        const long long at = o->first + (long long)ceil(pl_obs_fractions[o->next_frac] * (double)(o->last - o->first));
         if (sim->step < at) break;
-        stress_ept_t *q = &o->ept[o->next_frac++];
+        pl_obs_point_t *q = &o->ept[o->next_frac++];
         q->step = sim->step;
         q->wall_s = omp_get_wtime() - o->t_start;
         q->valid = couette_estimate(o, &q->value, &q->se, NULL, NULL);
@@ -460,36 +454,6 @@ static void stress_stages(pl_sim_t *sim)
 }
 
 /* ---- outputs ----------------------------------------------------------- */
-
-static int put(hid_t g, const char *name, hid_t type, int rank, const hsize_t *dims, const void *data,
-               const char *unit)
-{
-    if (pl_h5_write(g, name, type, rank, dims, data)) return -1;
-    if (!unit) return 0;
-    hid_t ds = H5Dopen2(g, name, H5P_DEFAULT);
-    if (ds < 0) return -1;
-    int bad = pl_h5_attr_str(ds, "unit", unit);
-    if (H5Dclose(ds) < 0) bad = -1;
-    return bad;
-}
-
-/* An H5MD time series group /observables/<name> with step, time, value. */
-static int series(hid_t obs, const char *name, size_t n, const long long *step, double dt, const double *value,
-                  const char *unit)
-{
-    hid_t g = pl_h5_group(obs, name);
-    if (g < 0) return -1;
-    double *t = malloc((n ? n : 1) * sizeof(double));
-    int bad = !t;
-    for (size_t k = 0; t && k < n; ++k) t[k] = (double)step[k] * dt;
-    hsize_t dims[1] = {n};
-    bad |= put(g, "step", H5T_NATIVE_LLONG, 1, dims, step, NULL) != 0;
-    bad |= t && put(g, "time", H5T_NATIVE_DOUBLE, 1, dims, t, "t0") != 0;
-    bad |= put(g, "value", H5T_NATIVE_DOUBLE, 1, dims, value, unit) != 0;
-    free(t);
-    if (H5Gclose(g) < 0) bad = 1;
-    return bad ? -1 : 0;
-}
 
 /* Copies src to dst byte for byte; 0 or -1. */
 static int copy_file(const char *src, const char *dst)
@@ -536,8 +500,8 @@ static int write_h5(const pl_sim_t *sim, const pl_stress_t *o, const char *path,
     int bad = obs < 0;
     const double dt = sim->scene.srd.dt;
     if (!bad && o->couette) {
-        bad |= series(obs, "wall_shear_stress", o->ts_n, o->ts_step, dt, o->ts_sigma, "kT/a0^3") != 0;
-        bad |= series(obs, "shear_rate", o->ts_n, o->ts_step, dt, o->ts_rate, "1/t0") != 0;
+        bad |= pl_obs_series(obs, "wall_shear_stress", o->ts_n, o->ts_step, dt, o->ts_sigma, "kT/a0^3") != 0;
+        bad |= pl_obs_series(obs, "shear_rate", o->ts_n, o->ts_step, dt, o->ts_rate, "1/t0") != 0;
         static const char *const pname[2] = {"fluid_velocity_profile", "fluid_density_profile"};
         static const char *const punit[2] = {"a0/t0", "1/a0^3"};
         const size_t nl = (size_t)o->nlayers;
@@ -554,10 +518,10 @@ static int write_h5(const pl_sim_t *sim, const pl_stress_t *o, const char *path,
             for (size_t k = 0; t && k < o->ts_n; ++k) t[k] = (double)o->ts_step[k] * dt;
             hsize_t d1[1] = {o->ts_n}, d2[2] = {o->ts_n, nl}, dz[1] = {nl};
             if (!bad) {
-                bad |= put(g, "step", H5T_NATIVE_LLONG, 1, d1, o->ts_step, NULL) != 0;
-                bad |= put(g, "time", H5T_NATIVE_DOUBLE, 1, d1, t, "t0") != 0;
-                bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, buf, punit[p]) != 0;
-                bad |= put(g, "z", H5T_NATIVE_DOUBLE, 1, dz, z, "a0") != 0;
+                bad |= pl_obs_put(g, "step", H5T_NATIVE_LLONG, 1, d1, o->ts_step, NULL) != 0;
+                bad |= pl_obs_put(g, "time", H5T_NATIVE_DOUBLE, 1, d1, t, "t0") != 0;
+                bad |= pl_obs_put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, buf, punit[p]) != 0;
+                bad |= pl_obs_put(g, "z", H5T_NATIVE_DOUBLE, 1, dz, z, "a0") != 0;
                 bad |= pl_h5_attr_str(g, "meaning", p ? "fluid particles per a0^3 in each 1 a0 layer of z, at the "
                                                         "sample" : "mean fluid velocity along the walls' relative "
                                                                    "velocity in each 1 a0 layer of z, at the sample") != 0;
@@ -575,9 +539,9 @@ static int write_h5(const pl_sim_t *sim, const pl_stress_t *o, const char *path,
         for (size_t k = 0; t && k < o->ts_n; ++k) t[k] = (double)o->ts_step[k] * dt;
         hsize_t d1[1] = {o->ts_n}, d3[3] = {o->ts_n, 3, 3};
         if (!bad) {
-            bad |= put(g, "step", H5T_NATIVE_LLONG, 1, d1, o->ts_step, NULL) != 0;
-            bad |= put(g, "time", H5T_NATIVE_DOUBLE, 1, d1, t, "t0") != 0;
-            bad |= put(g, "value", H5T_NATIVE_DOUBLE, 3, d3, o->ts_val, "kT/a0^3") != 0;
+            bad |= pl_obs_put(g, "step", H5T_NATIVE_LLONG, 1, d1, o->ts_step, NULL) != 0;
+            bad |= pl_obs_put(g, "time", H5T_NATIVE_DOUBLE, 1, d1, t, "t0") != 0;
+            bad |= pl_obs_put(g, "value", H5T_NATIVE_DOUBLE, 3, d3, o->ts_val, "kT/a0^3") != 0;
             bad |= pl_h5_attr_str(g, "meaning", "pressure tensor P_ab (flux of a-momentum along b): kinetic + "
                                                 "collisional, mean over the steps since the previous sample") != 0;
         }
@@ -599,8 +563,8 @@ static int write_h5(const pl_sim_t *sim, const pl_stress_t *o, const char *path,
                 eta[k] = run * norm;
             }
             hsize_t d1[1] = {n};
-            bad |= put(g, "lag", H5T_NATIVE_DOUBLE, 1, d1, lag, "t0") != 0;
-            bad |= put(g, "value", H5T_NATIVE_DOUBLE, 1, d1, eta, "m_f/(a0 t0)") != 0;
+            bad |= pl_obs_put(g, "lag", H5T_NATIVE_DOUBLE, 1, d1, lag, "t0") != 0;
+            bad |= pl_obs_put(g, "value", H5T_NATIVE_DOUBLE, 1, d1, eta, "m_f/(a0 t0)") != 0;
             bad |= pl_h5_attr_str(g, "meaning", "shear viscosity: Green-Kubo sum truncated at lag (steps of dt); "
                                                 "the plateau is eta") != 0;
         }
@@ -644,26 +608,7 @@ static json_t *viscosity_entry(pl_json_t *b, const pl_stress_t *o, const pl_sim_
         pl_json_real(b, e, "value_Pa_s", v * m->m_f / (m->a0 * m->t0));
         pl_json_real(b, e, "stderr_Pa_s", se * m->m_f / (m->a0 * m->t0));
     }
-    json_t *arr = json_array();
-    for (int k = 0; k < NFRAC; ++k) {
-        const stress_ept_t *p = &o->ept[k];
-        if (!p->valid) continue;
-        json_t *q = json_object();
-        pl_json_real(b, q, "run_fraction", fractions[k]);
-        pl_json_int(b, q, "step", p->step);
-        pl_json_real(b, q, "wall_s", p->wall_s);
-        pl_json_real(b, q, "value", p->value);
-        pl_json_real(b, q, "stderr", p->se);
-        json_array_append_new(arr, q);
-    }
-    pl_json_set(b, e, "se_vs_time", arr);
-    const stress_ept_t *last = &o->ept[NFRAC - 1];
-    const double target = sc->observe.target_rel_error;
-    if (last->valid && fabs(v) > 0 && se > 0) {
-        pl_json_real(b, e, "target_rel_error", target);
-        pl_json_real(b, e, "wall_s_for_target", pl_blocking_time_for_se(se, last->wall_s, target * fabs(v)));
-        pl_json_set(b, e, "extrapolation_reliable", json_boolean(r->plateau));
-    }
+    pl_obs_error_time(b, e, o->ept, v, se, r->plateau, sc->observe.target_rel_error);
     return e;
 }
 

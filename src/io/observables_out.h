@@ -1,0 +1,36 @@
+/* Shared writers of the observers' outputs (the observer modules in src/observe):
+ * H5MD datasets with unit attributes and time-series groups in
+ * observables.h5, and the error-against-run-time part of a summary.json
+ * entry.  Private to the library. */
+#ifndef PELOID_OBSERVABLES_OUT_H
+#define PELOID_OBSERVABLES_OUT_H
+
+#include <hdf5.h>
+#include <stddef.h>
+
+#include "json_build.h"
+
+enum { PL_OBS_NFRAC = 4 };
+/* The run fractions the error-against-time points are taken at. */
+extern const double pl_obs_fractions[PL_OBS_NFRAC];
+
+/* An estimate taken at a run fraction. */
+typedef struct {
+    long long step;
+    double wall_s, value, se;
+    int valid, plateau;
+} pl_obs_point_t;
+
+/* Dataset `name` in g with a unit attribute (NULL: none); 0 or -1. */
+int pl_obs_put(hid_t g, const char *name, hid_t type, int rank, const hsize_t *dims, const void *data,
+               const char *unit);
+/* H5MD time series group /observables/<name>/{step, time, value}; 0 or -1. */
+int pl_obs_series(hid_t obs, const char *name, size_t n, const long long *step, double dt, const double *value,
+                  const char *unit);
+/* Adds to entry e: se_vs_time (the valid points) and, when the last point is
+ * valid and value, se > 0, target_rel_error, wall_s_for_target (SE ~ 1/sqrt(t))
+ * and extrapolation_reliable (= plateau). */
+void pl_obs_error_time(pl_json_t *b, json_t *e, const pl_obs_point_t pts[PL_OBS_NFRAC], double value, double se,
+                       int plateau, double target);
+
+#endif
