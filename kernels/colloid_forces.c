@@ -255,10 +255,9 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
         }
     }
     if (E) {
-        v->epot[(size_t)PL_CE_DLVO * v->n + i] = a.e[PL_CE_DLVO];
-        v->epot[(size_t)PL_CE_HERTZ * v->n + i] = a.e[PL_CE_HERTZ];
-        v->epot[(size_t)PL_CE_WCA * v->n + i] = a.e[PL_CE_WCA];
-        v->epot[(size_t)PL_CE_DEPL * v->n + i] = a.e[PL_CE_DEPL];
+        /* every energy slot but the external ones (pl_colloid_ext_forces writes those) */
+        for (int k = 0; k < PL_CE_NTERMS; ++k)
+            if (k != PL_CE_WALL && k != PL_CE_GRAVITY) v->epot[(size_t)k * v->n + i] = a.e[k];
         return;
     }
     v->fx[i] = a.f[0];

@@ -288,6 +288,18 @@ void pl_coupling_potential_kick(const pl_coupling_near_t *nb, double h, const do
         for (int d = 0; d < 3; ++d) v[d][j] += h * (F[d][j] + g[d]);
 }
 
+/* Walls: a per-axis mirror, not the streaming's earliest-wall bounce
+ * (srd_drift.h pl_drift_reflect).  They differ: at a no-slip wall this one
+ * reflects the end point across the crossed plane only (the tangential
+ * displacement of the whole step is kept) while v -> 2U - v; the streaming
+ * moves to the wall at the crossing time, reverses and streams the rest of
+ * the step (the particle retraces its tangential path).  At a slip wall they
+ * are equal in exact arithmetic but round differently; two walls in one step
+ * are taken in axis order here, in time order there.  No shipped scene runs
+ * this branch (regression hashes unchanged either way); with the shared
+ * bounce a pinned colloid 0.4 a0 off a no-slip wall felt a wall-normal force
+ * 2.5 SE from this one's (branch issue12-rest-bounce), so it is kept until
+ * that is settled. */
 void pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t *g, const double wall_u[2][3],
                                  double dt, int nthreads, int64_t acc[PL_WALL_ACC_N])
 {

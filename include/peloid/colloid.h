@@ -84,6 +84,8 @@ typedef struct pl_colloid {
 /* Pair-term mask from the colloids.pairs list; on an unknown name returns
  * PL_ERR_INPUT and copies the name into bad. */
 int pl_colloid_parse_pairs(const char *list, unsigned *mask, char *bad, size_t nbad);
+/* The pair-term names of that table, ", " separated (for messages). */
+void pl_colloid_pair_names(char *buf, size_t n);
 
 /* Converts the dlvo section (physical units) to simulation units, fits the
  * parabolic primary minimum for contact distance d_ref and chooses the cut-off

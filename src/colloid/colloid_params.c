@@ -12,13 +12,22 @@
 
 static const double E_CHARGE = 1.602176634e-19, K_B = 1.380649e-23, EPS0 = 8.8541878128e-12;
 
+/* the name of each term bit (PL_CT_*, colloid_kernels.h) */
+static const struct { const char *name; unsigned bit; } names[] = {
+    {"dlvo", PL_CT_DLVO}, {"hertz", PL_CT_HERTZ}, {"lubrication", PL_CT_LUB}, {"wca", PL_CT_WCA},
+    {"depletion_comp", PL_CT_DEPL},
+};
+
+void pl_colloid_pair_names(char *buf, size_t n)
+{
+    size_t used = 0;
+    buf[0] = '\0';
+    for (size_t k = 0; k < sizeof names / sizeof names[0] && used < n; ++k)
+        used += (size_t)snprintf(buf + used, n - used, "%s%s", k ? ", " : "", names[k].name);
+}
+
 int pl_colloid_parse_pairs(const char *list, unsigned *mask, char *bad, size_t nbad)
 {
-    /* the name of each term bit (PL_CT_*, colloid_kernels.h) */
-    static const struct { const char *name; unsigned bit; } names[] = {
-        {"dlvo", PL_CT_DLVO}, {"hertz", PL_CT_HERTZ}, {"lubrication", PL_CT_LUB}, {"wca", PL_CT_WCA},
-        {"depletion_comp", PL_CT_DEPL},
-    };
     *mask = 0;
     const char *s = list;
     while (*s) {
@@ -169,11 +178,12 @@ int pl_colloid_pair_params(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
     const pl_scene_colloids_t *cs = &scene->colloids;
     memset(p, 0, sizeof *p);
     memset(info, 0, sizeof *info);
-    char bad[128];
-    if (pl_colloid_parse_pairs(cs->pairs, &p->terms, bad, sizeof bad))
+    char bad[128], all[256];
+    if (pl_colloid_parse_pairs(cs->pairs, &p->terms, bad, sizeof bad)) {
+        pl_colloid_pair_names(all, sizeof all);
         return pl_scene_fail(scene, err, offsetof(pl_scene_t, colloids.pairs), "colloids.pairs",
-                             "unknown pair term \"%s\"; allowed: dlvo, hertz, lubrication, wca, "
-                             "depletion_comp", bad);
+                             "unknown pair term \"%s\"; allowed: %s", bad, all);
+    }
     for (int k = 0; k < 3; ++k) p->box[k] = scene->box.cells[k];
     int walls[3];
     pl_scene_box_walls(&scene->box, walls);

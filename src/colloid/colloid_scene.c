@@ -12,11 +12,12 @@ int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err)
 {
     const pl_scene_colloids_t *cs = &scene->colloids;
     unsigned mask;
-    char bad[128];
-    if (pl_colloid_parse_pairs(cs->pairs, &mask, bad, sizeof bad))
+    char bad[128], all[256];
+    if (pl_colloid_parse_pairs(cs->pairs, &mask, bad, sizeof bad)) {
+        pl_colloid_pair_names(all, sizeof all);
         return pl_scene_fail(scene, err, OFF(colloids.pairs), "colloids.pairs",
-                             "unknown pair term \"%s\"; allowed: dlvo, hertz, lubrication, wca, "
-                             "depletion_comp (comma separated)", bad);
+                             "unknown pair term \"%s\"; allowed: %s (comma separated)", bad, all);
+    }
     if (cs->wca.sigma_rule == PL_SIGMA_PL && cs->wca.sigma > 0.0)
         return pl_scene_fail(scene, err, OFF(colloids.wca.sigma_rule), "wca.sigma_rule",
                              "\"pl\" derives sigma_cc from coupling.sigma_cf, but wca.sigma = %g is "

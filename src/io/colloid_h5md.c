@@ -207,10 +207,12 @@ int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, const pl_collo
 {
     if (!p->overwrite && access(path, F_OK) == 0)
         return pl_err_set(err, PL_ERR_IO, "%s exists; not overwritten without --force", path);
+    char tmp[PATH_MAX + 8];
+    pl_atomic_tmp(path, tmp, sizeof tmp);
     pl_colloid_traj_t *t = calloc(1, sizeof *t);
     if (!t) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
     snprintf(t->path, sizeof t->path, "%s", path);
-    snprintf(t->tmp, sizeof t->tmp, "%s.tmp", path);
+    snprintf(t->tmp, sizeof t->tmp, "%s", tmp);
     t->n = c->n;
     t->last_step = t->hold_step = -1;
     memcpy(t->box, c->box, sizeof t->box);
@@ -236,20 +238,16 @@ int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, const pl_collo
         pl_h5_error_text(why, sizeof why);
         traj_release(t);
         return oom ? pl_err_set(err, PL_ERR_NOMEM, "out of memory") :
-                     pl_err_set(err, PL_ERR_IO, "%s.tmp: cannot create HDF5 file: %s", path, why);
+                     pl_err_set(err, PL_ERR_IO, "%s: cannot create HDF5 file: %s", tmp, why);
     }
     if (write_header(t, c) || H5Fflush(t->file, H5F_SCOPE_GLOBAL) < 0) {
         char why[256];
         pl_h5_error_text(why, sizeof why);
         traj_release(t);
-        char tmp[PATH_MAX + 8];
-        snprintf(tmp, sizeof tmp, "%s.tmp", path);
         unlink(tmp);
         return pl_err_set(err, PL_ERR_IO, "%s: cannot write the trajectory header: %s", path, why);
     }
     if (p->xyz_path && pl_xyz_open(p->xyz_path, &t->xyz, err)) {
-        char tmp[PATH_MAX + 8];
-        snprintf(tmp, sizeof tmp, "%s.tmp", path);
         traj_release(t);
         unlink(tmp);
         return err ? err->code : PL_ERR_IO;
@@ -402,15 +400,13 @@ int pl_colloid_traj_close(pl_colloid_traj_t *t, pl_err_t *err)
     snprintf(path, sizeof path, "%s", t->path);
     pl_xyz_t *xyz = t->xyz;
     errno = 0;
-    int rc = traj_release(t);
-    if (rc) pl_h5_error_text(why, sizeof why);
-    else if (pl_fsync_path(tmp, 0) || rename(tmp, path) || pl_fsync_path(path, 1)) {
-        rc = -1;
-        snprintf(why, sizeof why, "%s", strerror(errno));
-    }
-    if (rc) {
+    if (traj_release(t)) { /* the frames written so far stay in PATH.tmp */
+        pl_h5_error_text(why, sizeof why);
         pl_xyz_close(xyz, NULL);
-        pl_err_set(err, PL_ERR_IO, "%s: cannot finish the trajectory: %s", path, why);
+        return pl_err_set(err, PL_ERR_IO, "%s: cannot finish the trajectory: %s", path, why);
+    }
+    if (pl_atomic_commit(tmp, path, err)) {
+        pl_xyz_close(xyz, NULL);
         return PL_ERR_IO;
     }
     return pl_xyz_close(xyz, err);

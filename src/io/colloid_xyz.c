@@ -30,12 +30,9 @@ int pl_xyz_open(const char *path, pl_xyz_t **out, pl_err_t *err)
     pl_xyz_t *x = calloc(1, sizeof *x);
     if (!x) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
     snprintf(x->path, sizeof x->path, "%s", path);
-    snprintf(x->tmp, sizeof x->tmp, "%s.tmp", path);
-    errno = 0;
-    if (!(x->f = fopen(x->tmp, "w"))) {
-        int e = errno;
+    if (!(x->f = pl_file_begin(path, x->tmp, sizeof x->tmp, err))) {
         free(x);
-        return pl_err_set(err, PL_ERR_IO, "%s.tmp: cannot write: %s", path, strerror(e));
+        return PL_ERR_IO;
     }
     *out = x;
     return 0;
@@ -71,18 +68,7 @@ int pl_xyz_frame(pl_xyz_t *x, const pl_traj_frame_t *f, pl_err_t *err)
 int pl_xyz_close(pl_xyz_t *x, pl_err_t *err)
 {
     if (!x) return 0;
-    errno = 0;
-    int bad = fflush(x->f) != 0 || ferror(x->f) != 0 || fsync(fileno(x->f)) != 0;
-    int e = errno;
-    bad |= fclose(x->f) != 0;
-    if (!e) e = errno;
-    if (!bad && (rename(x->tmp, x->path) || pl_fsync_path(x->path, 1))) {
-        bad = 1;
-        e = errno;
-    }
-    int rc = 0;
-    if (bad) rc = pl_err_set(err, PL_ERR_IO, "%s: cannot finish the trajectory: %s", x->path,
-                             e ? strerror(e) : "stream error");
+    int rc = pl_file_commit(x->f, x->tmp, x->path, err);
     free(x);
     return rc;
 }

@@ -84,13 +84,6 @@ static int write_xdmf(const char *h5path, const int *L, long long step, double t
         fprintf(f, "     </DataItem>\n    </Attribute>\n");
     }
     fprintf(f, "   </Grid>\n  </Grid>\n </Domain>\n</Xdmf>\n");
-    errno = 0;
-    if (fflush(f) || ferror(f)) {
-        int e = errno;
-        fclose(f);
-        unlink(tmp);
-        return pl_err_set(err, PL_ERR_IO, "%s: write failed: %s", tmp, e ? strerror(e) : "stream error");
-    }
     return pl_file_commit(f, tmp, xpath, err);
 }
 
@@ -115,7 +108,7 @@ int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
                 cnt > 0 ? (double)sim->field_acc[(size_t)(d + 1) * L3 + c] * inv_fixed / (double)cnt : 0.0;
     }
     char tmp[PATH_MAX + 8], why[256];
-    snprintf(tmp, sizeof tmp, "%s.tmp", path);
+    pl_atomic_tmp(path, tmp, sizeof tmp);
     pl_h5_quiet();
     errno = 0;
     hid_t f = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
@@ -158,10 +151,6 @@ int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
         unlink(tmp);
         return pl_err_set(err, PL_ERR_IO, "%s: writing fields failed: %s", tmp, why);
     }
-    if (pl_fsync_path(tmp, 0) || rename(tmp, path) || pl_fsync_path(path, 1)) {
-        int e = errno;
-        unlink(tmp);
-        return pl_err_set(err, PL_ERR_IO, "%s: cannot commit to %s: %s", tmp, path, strerror(e));
-    }
+    if (pl_atomic_commit(tmp, path, err)) return PL_ERR_IO;
     return write_xdmf(path, L, sim->step, time, err);
 }

@@ -8,7 +8,9 @@
 #define OFF(member) offsetof(pl_scene_t, coupling.member)
 #define N(a) (sizeof(a) / sizeof((a)[0]))
 
-static const char *const method_choices[] = {"none", "hecht1", "hecht2", "potential", NULL};
+static const char *const method_choices[] = { /* indexed by PL_COUPLE_* */
+    [PL_COUPLE_NONE] = "none", [PL_COUPLE_HECHT1] = "hecht1", [PL_COUPLE_HECHT2] = "hecht2",
+    [PL_COUPLE_POTENTIAL] = "potential", NULL};
 static const char *const boundary_choices[] = {"slip", "stick_stochastic", "stick_bounce", NULL};
 static const char *const placement_choices[] = {"nearest", "entry", NULL};
 
