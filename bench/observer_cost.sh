@@ -7,15 +7,16 @@
 #   bench/observer_cost.sh [STEPS] [REPS]     (defaults 1200 5)
 #
 # Runs: the quickstart as shipped (g(r), MSD, clusters, sedimentation) with
-# the VACF, velocity distributions and S(q) added at the same interval as its
-# g(r) (20 steps); and a pure-fluid periodic box (32^3 cells, 10 per cell)
-# with the stress observer, whose Green-Kubo sum needs every step.
+# the VACF and velocity distributions added at the same interval as its
+# g(r) (20 steps; S(q) needs a periodic box, the quickstart has walls);
+# and a pure-fluid periodic box (32^3 cells, 10 per cell) with the stress
+# observer, whose Green-Kubo sum needs every step.
 set -eu
 cd "$(dirname "$0")/.."
 STEPS=${1:-1200}; REPS=${2:-5}
 [ -x bin/peloid ] || make bin/peloid >/dev/null
 OUT=bench/out; mkdir -p "$OUT"; TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
-sed 's/^  rdf_interval = 20;/  rdf_interval = 20;\n  vacf_interval = 20;\n  vdist_interval = 20;\n  sq_interval = 20;/' \
+sed 's/^  rdf_interval = 20;/  rdf_interval = 20;\n  vacf_interval = 20;\n  vdist_interval = 20;/' \
   scenes/quickstart.cfg > "$TMP/quick_all.cfg"
 cat > "$TMP/fluid_stress.cfg" <<'CFG'
 seed = 3;
