@@ -31,10 +31,11 @@ BENCH_SRC:= $(wildcard bench/*.c)
 BENCH_BIN:= $(patsubst bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
 
 # Debian packages the build, the tests and the tools need (python3-mdanalysis,
-# python3-ase and paraview: tests/readers.sh opens the outputs with them).
+# python3-ase and paraview: tests/readers.sh opens the outputs with them;
+# slurm-wlm: tests/sweep_slurm.sh starts a one-node Slurm, as root).
 DEB_PKGS := libgsl-dev libhwloc-dev librandom123-dev libhdf5-dev libconfig-dev libjansson-dev \
             libcriterion-dev pkg-config hwloc python3-numpy python3-h5py \
-            python3-matplotlib python3-scipy python3-mdanalysis python3-ase paraview
+            python3-matplotlib python3-scipy python3-mdanalysis python3-ase paraview slurm-wlm
 # ... and the build variants CI also checks (clang with its OpenMP runtime).
 DEB_PKGS_VARIANTS := clang libomp-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
@@ -141,6 +142,8 @@ check-cli: $(BIN)
 	@bash tests/regression.sh ./$(BIN)
 	@bash tests/observers.sh ./$(BIN)
 	@bash tests/readers.sh ./$(BIN)
+	@bash tests/sweep.sh ./$(BIN)
+	@bash tests/sweep_slurm.sh ./$(BIN)
 
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
 # shrinks the physics runs; the sanitizers slow code ~3-10x), and the

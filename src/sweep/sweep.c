@@ -134,7 +134,8 @@ typedef struct {
     pl_study_t *st;
     const pl_sweep_opts_t *o;
     char out[3072];
-    int n;
+    int n;     /* the study's points */
+    int total; /* the points of this run (n, or 1 with --point) */
 } sweep_t;
 
 static void point_path(const sweep_t *s, int k, const char *fmt, char *buf, size_t n)
@@ -253,7 +254,7 @@ static void progress(const sweep_t *s, int done, int failed, int running, int sk
     if (finished > 0) fmt_time(t / finished * (todo - finished), eta, sizeof eta);
     if (todo == finished) snprintf(eta, sizeof eta, "0:00");
     fprintf(s->o->log, "%speloid sweep %s: %d/%d done (%d skipped), %d failed, %d running, %s elapsed, ETA %s%s",
-            s->o->progress_tty ? "\r" : "", pl_study_name(s->st), done, s->n, skipped, failed, running, el, eta,
+            s->o->progress_tty ? "\r" : "", pl_study_name(s->st), done, s->total, skipped, failed, running, el, eta,
             s->o->progress_tty && !last ? "   " : "\n");
     fflush(s->o->log);
 }
@@ -262,6 +263,7 @@ static void progress(const sweep_t *s, int done, int failed, int running, int sk
 static int run_points(sweep_t *s, int first, int last, int *failed_out, pl_err_t *err)
 {
     int n = last - first, todo = 0;
+    s->total = n;
     int *state = calloc((size_t)n, sizeof *state); /* 0 todo, 1 running, 2 done, 3 failed */
     pid_t *pids = calloc((size_t)n, sizeof *pids);
     if (!state || !pids) {
