@@ -42,7 +42,7 @@ SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 PREFIX ?= /usr/local
 
 .PHONY: all deps deps-variants install-debs run check check-unit check-cli check-asan check-variants validate bench clean keys \
-        readme install
+        readme install studies validation-report
 all: $(BIN)
 
 # Installs only what is missing; a no-op on a machine that has everything.
@@ -160,6 +160,15 @@ check-asan: | deps
 	  echo "== asan $$t"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$$t --jobs 1; done
 	@echo "== asan bin/peloid on tests/bad_scenes"
 	@ASAN_OPTIONS=detect_leaks=1 bash tests/bad_scenes.sh build-asan/bin/peloid
+
+# The studies of issue 16 (studies/*.cfg, each a `peloid sweep`; resumable:
+# a finished point is not run again) and validation/REPORT.md from their
+# outputs in out/studies/.
+STUDIES := studies/hecht_fig9_kappa.cfg
+studies: $(BIN)
+	@set -e; for s in $(STUDIES); do ./$(BIN) sweep $$s; done
+validation-report:
+	$(PYTHON) tools/validation_report.py out/studies validation/REPORT.md
 
 bench: $(BENCH_BIN)
 	@mkdir -p bench/out

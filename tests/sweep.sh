@@ -9,6 +9,7 @@
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 PY=/usr/bin/python3
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
 T=$(mktemp -d /tmp/peloid-sweep.XXXXXX)
 trap 'rm -rf "$T"' EXIT
 cd "$T"
@@ -126,5 +127,17 @@ for k in 0 1 2 3; do SLURM_ARRAY_TASK_ID=$k SLURM_CPUS_PER_TASK=1 bash out/sl/sw
 "$PELOID" sweep sl.cfg --out out/sl --collect 2> /dev/null
 [ "$(grep -c '	ok	0	' out/sl/sweep.tsv)" = 4 ] && ok "the 4 array tasks run locally (SLURM_ARRAY_TASK_ID=0..3), collected" \
   || bad "array tasks run locally"
+# 7. a point's scene loses nothing: with the base's own value it reproduces
+#    the base run bitwise (scenes/quickstart.cfg: physical units, @-free, many reals)
+QS="$ROOT/scenes/quickstart.cfg"
+printf 'scene = "%s"; out = "out/same";\npoints = { keys = ["name", "seed"]; values = ( ("quickstart", 20261123) ); };\n' \
+  "$QS" > same.cfg
+"$PELOID" sweep same.cfg --slurm 2> /dev/null  # writes the point's scene, runs nothing
+sed -i 's/^steps = .*/steps = 5;/' out/same/scenes/p000.cfg
+"$PELOID" run out/same/scenes/p000.cfg --out pt --threads 1 2> /dev/null
+"$PELOID" run "$QS" --steps 5 --out base --threads 1 2> /dev/null
+if [ -f pt/checkpoint.h5 ] && [ "$(sha256sum < pt/checkpoint.h5)" = "$(sha256sum < base/checkpoint.h5)" ]; then
+  ok "a point with the base's values reproduces the base run bitwise (quickstart, 5 steps, checkpoint.h5)"
+else bad "point scene differs from its base (checkpoint.h5 hashes)"; fi
 echo "  sweep tests: $pass passed, $fail failed ($(printf '%.1f' "$(echo "$(date +%s.%N) - $t0" | bc)") s)"
 [ $fail = 0 ]

@@ -14,11 +14,11 @@ echo "== sweep through Slurm"
 skip() { echo "  skipped sweep through Slurm: $1"; stop; rm -rf "$T"; exit 0; }
 stop() {
   for d in slurmd slurmctld; do
-    [ -s "$T/$d.pid" ] && kill "$(cat "$T/$d.pid")" 2> /dev/null
+    [ -s "$T/$d.pid" ] && kill "$(cat "$T/$d.pid" 2> /dev/null)" 2> /dev/null
   done
   for _ in $(seq 50); do
     alive=0
-    for d in slurmd slurmctld; do [ -s "$T/$d.pid" ] && kill -0 "$(cat "$T/$d.pid")" 2> /dev/null && alive=1; done
+    for d in slurmd slurmctld; do [ -s "$T/$d.pid" ] && kill -0 "$(cat "$T/$d.pid" 2> /dev/null)" 2> /dev/null && alive=1; done
     [ $alive = 0 ] && break; sleep 0.1
   done
 }

@@ -62,6 +62,18 @@ static int write_text(const char *path, const char *text, pl_err_t *err)
     return pl_file_commit(f, tmp, path, err);
 }
 
+static char *read_text(const char *path);
+
+/* Writes `text` unless the file already holds it (concurrent array tasks
+ * then do not race for the same temporary file). */
+static int write_changed(const char *path, const char *text, pl_err_t *err)
+{
+    char *old = read_text(path);
+    int same = old && !strcmp(old, text);
+    free(old);
+    return same ? 0 : write_text(path, text, err);
+}
+
 static char *read_text(const char *path)
 {
     FILE *f = fopen(path, "rb");
@@ -185,7 +197,7 @@ static int write_points(const sweep_t *s, pl_err_t *err)
         t2[len + 1] = '\0';
         text = t2;
     }
-    int rc = write_text(path, text, err);
+    int rc = write_changed(path, text, err);
     free(text);
     return rc;
 }
@@ -227,6 +239,9 @@ static pid_t start_point(const sweep_t *s, int k, int threads)
     point_path(s, k, "%s", dir, sizeof dir);
     point_path(s, k, "logs/%s.log", log, sizeof log);
     snprintf(th, sizeof th, "%d", threads);
+    char sum[4096]; /* a summary of an earlier run of this point (other values) must not survive a failure */
+    point_path(s, k, "%s/summary.json", sum, sizeof sum);
+    unlink(sum);
     fflush(NULL);
     pid_t pid = fork();
     if (pid != 0) return pid;
@@ -287,7 +302,7 @@ static int run_points(sweep_t *s, int first, int last, int *failed_out, pl_err_t
                 "thread(s) on %d CPU(s) -> %s/\n", pl_study_name(s->st), n, skipped, todo, jobs, threads,
                 cpu_count(), s->out);
     double t0 = now_s(), last_draw = 0;
-    int running = 0, done = skipped, failed = 0, next = 0;
+    int running = 0, done = skipped, failed = 0, next = 0, draw = 0;
     while (!rc) {
         while (running < jobs && next < n) {
             if (state[next] == 0) {
@@ -300,6 +315,11 @@ static int run_points(sweep_t *s, int first, int last, int *failed_out, pl_err_t
                 ++running;
             }
             ++next;
+        }
+        if (draw && !rc) { /* a point ended: the line after its successor started */
+            progress(s, done, failed, running, skipped, todo, t0, running == 0 && next >= n);
+            last_draw = now_s();
+            draw = 0;
         }
         if (rc || (running == 0 && next >= n)) break;
         int status;
@@ -332,8 +352,7 @@ static int run_points(sweep_t *s, int first, int last, int *failed_out, pl_err_t
         state[i] = code ? 3 : 2;
         if (code) ++failed;
         else ++done;
-        progress(s, done, failed, running, skipped, todo, t0, running == 0 && next >= n);
-        last_draw = now_s();
+        draw = 1;
     }
     if (!rc && todo == 0) progress(s, done, failed, running, skipped, todo, t0, 1);
     free(state);
