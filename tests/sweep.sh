@@ -139,5 +139,14 @@ sed -i 's/^steps = .*/steps = 5;/' out/same/scenes/p000.cfg
 if [ -f pt/checkpoint.h5 ] && [ "$(sha256sum < pt/checkpoint.h5)" = "$(sha256sum < base/checkpoint.h5)" ]; then
   ok "a point with the base's values reproduces the base run bitwise (quickstart, 5 steps, checkpoint.h5)"
 else bad "point scene differs from its base (checkpoint.h5 hashes)"; fi
+# 8. arrays, strings and 64-bit integers survive into a point's scene (the
+#    base's 5000000000 without L is read as written, not wrapped to 32 bits)
+sed 's/^steps = 300;/steps = 5000000000;/' bd.cfg > bdbig.cfg
+printf 'scene = "bdbig.cfg"; out = "out/arr";\ngrid = ( { key = "box.cells"; values = ([8,8,8], [10,10,10]); },\n  { key = "colloids.init"; values = ["lattice", "random"]; } );\n' > arr.cfg
+"$PELOID" sweep arr.cfg --slurm 2> /dev/null
+if grep -q "^  cells = \[10, 10, 10\];" out/arr/scenes/p003.cfg && grep -q '^  init = "random";' out/arr/scenes/p003.cfg \
+   && grep -q "^steps = 5000000000L;" out/arr/scenes/p003.cfg && "$PELOID" check out/arr/scenes/p003.cfg > /dev/null 2>&1; then
+  ok "array, string and 64-bit integer values written into the point's scene, which checks ok"
+else bad "array/string/int64 values in a point's scene"; fi
 echo "  sweep tests: $pass passed, $fail failed ($(printf '%.1f' "$(echo "$(date +%s.%N) - $t0" | bc)") s)"
 [ $fail = 0 ]
