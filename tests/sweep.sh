@@ -148,5 +148,5 @@ if grep -q "^  cells = \[10, 10, 10\];" out/arr/scenes/p003.cfg && grep -q '^  i
    && grep -q "^steps = 5000000000L;" out/arr/scenes/p003.cfg && "$PELOID" check out/arr/scenes/p003.cfg > /dev/null 2>&1; then
   ok "array, string and 64-bit integer values written into the point's scene, which checks ok"
 else bad "array/string/int64 values in a point's scene"; fi
-echo "  sweep tests: $pass passed, $fail failed ($(printf '%.1f' "$(echo "$(date +%s.%N) - $t0" | bc)") s)"
+echo "  sweep tests: $pass passed, $fail failed ($(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }') s)"
 [ $fail = 0 ]
