@@ -164,7 +164,7 @@ check-asan: | deps
 # The studies of issue 16 (studies/*.cfg, each a `peloid sweep`; resumable:
 # a finished point is not run again) and validation/REPORT.md from their
 # outputs in out/studies/.
-STUDIES := studies/hecht_fig9_kappa.cfg studies/hecht_fig9_kappa_replica.cfg
+STUDIES := studies/hecht_fig9_kappa.cfg studies/hecht_fig9_kappa_replica.cfg studies/hecht_fig9_kappa_1s.cfg
 studies: $(BIN)
 	@set -e; for s in $(STUDIES); do ./$(BIN) sweep $$s; done
 validation-report:
