@@ -42,7 +42,7 @@ SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 PREFIX ?= /usr/local
 
 .PHONY: all deps deps-variants install-debs run check check-unit check-cli check-asan check-variants validate bench clean keys \
-        readme install studies validation-report
+        readme install
 all: $(BIN)
 
 # Installs only what is missing; a no-op on a machine that has everything.
@@ -164,6 +164,7 @@ check-asan: | deps
 # The studies of issue 16 (studies/*.cfg, each a `peloid sweep`; resumable:
 # a finished point is not run again) and validation/REPORT.md from their
 # outputs in out/studies/.
+.PHONY: studies validation-report
 STUDIES := studies/hecht_fig9_kappa.cfg studies/hecht_fig9_kappa_replica.cfg studies/hecht_fig9_kappa_1s.cfg
 studies: $(BIN)
 	@set -e; for s in $(STUDIES); do ./$(BIN) sweep $$s; done
