@@ -31,10 +31,11 @@ BENCH_SRC:= $(wildcard bench/*.c)
 BENCH_BIN:= $(patsubst bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
 
 # Debian packages the build, the tests and the tools need (python3-mdanalysis,
-# python3-ase and paraview: tests/readers.sh opens the outputs with them).
+# python3-ase and paraview: tests/readers.sh opens the outputs with them;
+# slurm-wlm: tests/sweep_slurm.sh starts a one-node Slurm, as root).
 DEB_PKGS := libgsl-dev libhwloc-dev librandom123-dev libhdf5-dev libconfig-dev libjansson-dev \
             libcriterion-dev pkg-config hwloc python3-numpy python3-h5py \
-            python3-matplotlib python3-scipy python3-mdanalysis python3-ase paraview
+            python3-matplotlib python3-scipy python3-mdanalysis python3-ase paraview slurm-wlm
 # ... and the build variants CI also checks (clang with its OpenMP runtime).
 DEB_PKGS_VARIANTS := clang libomp-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
@@ -150,6 +151,8 @@ check-cli: $(BIN)
 	@bash tests/observers.sh ./$(BIN)
 	@bash tests/stress.sh ./$(BIN)
 	@bash tests/readers.sh ./$(BIN)
+	@bash tests/sweep.sh ./$(BIN)
+	@bash tests/sweep_slurm.sh ./$(BIN)
 
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
 # shrinks the physics runs; the sanitizers slow code ~3-10x), and the
@@ -166,6 +169,16 @@ check-asan: | deps
 	  echo "== asan $$t"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$$t --jobs 1; done
 	@echo "== asan bin/peloid on tests/bad_scenes"
 	@ASAN_OPTIONS=detect_leaks=1 bash tests/bad_scenes.sh build-asan/bin/peloid
+
+# The studies of issue 16 (studies/*.cfg, each a `peloid sweep`; resumable:
+# a finished point is not run again) and validation/REPORT.md from their
+# outputs in out/studies/.
+.PHONY: studies validation-report
+STUDIES := studies/hecht_fig9_kappa.cfg studies/hecht_fig9_kappa_replica.cfg studies/hecht_fig9_kappa_1s.cfg
+studies: $(BIN)
+	@set -e; for s in $(STUDIES); do ./$(BIN) sweep $$s; done
+validation-report:
+	$(PYTHON) tools/validation_report.py out/studies validation/REPORT.md
 
 bench: $(BENCH_BIN)
 	@mkdir -p bench/out

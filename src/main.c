@@ -12,6 +12,7 @@
 #include "peloid_build.h" /* PL_TOOLS_DIR (generated) */
 #include "peloid/run.h"
 #include "peloid/scene.h"
+#include "peloid/sweep.h"
 
 static const char *const usage =
     "usage: peloid COMMAND [ARGS]\n"
@@ -40,6 +41,14 @@ static const char *const usage =
     "                   measured (g(r), MSD and D, clusters, thermo) and the error-against-\n"
     "                   time table (tools/report.py with /usr/bin/python3; PELOID_TOOLS\n"
     "                   names another tools directory)\n"
+    "  sweep STUDY [--out DIR] [--jobs J] [--threads T] [--point K] [--slurm] [--collect]\n"
+    "        run a parameter study: every point (the study's base scene with its keys\n"
+    "        set) as its own `peloid run` in DIR/ID (default: the study's out), J\n"
+    "        processes of T threads (default: J = min(points, CPUs), T = CPUs / J);\n"
+    "        finished points are skipped; DIR/sweep.{tsv,json,png} collect them.\n"
+    "        --point K runs point K only; --slurm writes a Slurm job array\n"
+    "        (DIR/sweep.sbatch, collect.sbatch, submit.sh) and runs nothing;\n"
+    "        --collect only rebuilds the table and plot.  Exit 1: some points failed\n"
     "  keys             print the scene-file reference (every key) as Markdown\n"
     "  --help           this text\n"
     "\n"
@@ -171,6 +180,53 @@ static int cmd_report(int argc, char **argv)
     return PL_ERR_INPUT;
 }
 
+/* `peloid sweep STUDY`: the study's points as a process pool of `peloid run`
+ * (src/sweep/sweep.c), or a Slurm job array. */
+static int cmd_sweep(int argc, char **argv)
+{
+    pl_sweep_opts_t o = {.point = -1, .progress_tty = isatty(2), .log = stderr};
+    const char *path = NULL;
+    char msg[256], self[4096], tools[4096];
+    for (int i = 0; i < argc; ++i) {
+        const char *a = argv[i];
+        int has = i + 1 < argc;
+        long long v;
+        if (!strcmp(a, "--slurm")) o.slurm = 1;
+        else if (!strcmp(a, "--collect")) o.collect_only = 1;
+        else if (!strcmp(a, "--out") && has) o.out_dir = argv[++i];
+        else if ((!strcmp(a, "--jobs") || !strcmp(a, "--threads") || !strcmp(a, "--point")) && has) {
+            long long hi = !strcmp(a, "--point") ? PL_STUDY_MAX_POINTS - 1 : 4096;
+            if (parse_ll(argv[++i], !strcmp(a, "--point") ? 0 : 1, hi, &v)) {
+                snprintf(msg, sizeof msg, "sweep: %s %.100s: expected an integer in %d..%lld", a, argv[i],
+                         !strcmp(a, "--point") ? 0 : 1, hi);
+                return bad_usage(msg);
+            }
+            if (!strcmp(a, "--jobs")) o.jobs = (int)v;
+            else if (!strcmp(a, "--threads")) o.threads = (int)v;
+            else o.point = v;
+        } else if (a[0] == '-' || path) {
+            snprintf(msg, sizeof msg, "sweep: unexpected argument '%.100s'", a);
+            return bad_usage(msg);
+        } else path = a;
+    }
+    if (!path) return bad_usage("sweep: missing STUDY");
+    if (o.slurm + o.collect_only + (o.point >= 0) > 1)
+        return bad_usage("sweep: --slurm, --collect and --point exclude each other");
+    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (n <= 0) return bad_usage("sweep: cannot find the peloid executable (/proc/self/exe)");
+    self[n] = '\0';
+    o.self = self;
+    const char *t = getenv("PELOID_TOOLS");
+    snprintf(tools, sizeof tools, "%s", t && *t ? t : PL_TOOLS_DIR);
+    o.tools = tools;
+    pl_study_t *st = NULL;
+    pl_err_t err = {0, ""};
+    int rc = pl_study_load(path, &st, &err);
+    if (!rc) rc = pl_sweep(st, &o, &err);
+    pl_study_free(st);
+    return rc ? fail(&err) : 0;
+}
+
 int main(int argc, char **argv)
 {
     gsl_set_error_handler_off();
@@ -183,6 +239,7 @@ int main(int argc, char **argv)
     if (!strcmp(cmd, "run")) return cmd_run(argc - 2, argv + 2);
     if (!strcmp(cmd, "check")) return cmd_scene(argc - 2, argv + 2, 0);
     if (!strcmp(cmd, "params")) return cmd_scene(argc - 2, argv + 2, 1);
+    if (!strcmp(cmd, "sweep")) return cmd_sweep(argc - 2, argv + 2);
     if (!strcmp(cmd, "report")) return cmd_report(argc - 2, argv + 2);
     if (!strcmp(cmd, "keys")) {
         pl_scene_print_reference(stdout);

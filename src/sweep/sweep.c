@@ -1,0 +1,462 @@
+/* `peloid sweep`: the points of a study (src/sweep/study.c) as independent
+ * `peloid run` processes, a process pool of `jobs` processes with `threads`
+ * OpenMP threads each (pl_sweep_plan), resumable, or as a Slurm job array.
+ *
+ * OUT/points.json        the study: keys, plot, each point's id and values
+ * OUT/scenes/ID.cfg      point ID's scene (base + its values)
+ * OUT/ID/                its run (summary.json, thermo.tsv, ...)
+ * OUT/logs/ID.log        its stdout + stderr
+ * OUT/status/ID.tsv      "exit_code<TAB>last line of its stderr"
+ * OUT/sweep.{tsv,json,png}  the table and plot (tools/sweep_collect.py)
+ *
+ * A point is finished when OUT/ID/summary.json is complete JSON with its
+ * last_step (run.c writes it atomically at the end) and OUT/scenes/ID.cfg is
+ * the scene the study gives it now; a finished point is not run again.  A
+ * failed point keeps its exit code and message and the others go on.
+ * Processes, not threads: a point that trips a guard or runs out of memory
+ * takes only itself down. */
+#include <errno.h>
+#include <jansson.h>
+#include <sched.h>
+#include <signal.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "peloid/io.h"
+#include "peloid/sweep.h"
+
+static double now_s(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static int mkdir_p(const char *path, pl_err_t *err)
+{
+    char b[4096];
+    snprintf(b, sizeof b, "%s", path);
+    for (char *p = b + 1; ; ++p) {
+        if (*p == '/' || !*p) {
+            char c = *p;
+            *p = '\0';
+            if (mkdir(b, 0777) && errno != EEXIST)
+                return pl_err_set(err, PL_ERR_IO, "%s: cannot create directory: %s", b, strerror(errno));
+            if (!c) break;
+            *p = c;
+        }
+    }
+    return 0;
+}
+
+static int write_text(const char *path, const char *text, pl_err_t *err)
+{
+    char tmp[4200];
+    FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
+    if (!f) return PL_ERR_IO;
+    fputs(text, f);
+    return pl_file_commit(f, tmp, path, err);
+}
+
+static char *read_text(const char *path);
+
+/* Writes `text` unless the file already holds it (concurrent array tasks
+ * then do not race for the same temporary file). */
+static int write_changed(const char *path, const char *text, pl_err_t *err)
+{
+    char *old = read_text(path);
+    int same = old && !strcmp(old, text);
+    free(old);
+    return same ? 0 : write_text(path, text, err);
+}
+
+static char *read_text(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    char *s = NULL;
+    size_t cap = 0, n = 0, r;
+    char b[8192];
+    while ((r = fread(b, 1, sizeof b, f)) > 0) {
+        if (n + r + 1 > cap) {
+            cap = 2 * (n + r + 1);
+            char *q = realloc(s, cap);
+            if (!q) break;
+            s = q;
+        }
+        memcpy(s + n, b, r);
+        n += r;
+    }
+    fclose(f);
+    if (s) s[n] = '\0';
+    return s ? s : calloc(1, 1);
+}
+
+static int summary_complete(const char *path)
+{
+    json_t *j = json_load_file(path, 0, NULL);
+    int ok = j && json_is_integer(json_object_get(j, "last_step")) && json_object_get(j, "wall_seconds");
+    json_decref(j);
+    return ok;
+}
+
+/* Last non-empty line of a file, control characters dropped. */
+static void last_line(const char *path, char *buf, size_t n)
+{
+    char *s = read_text(path);
+    buf[0] = '\0';
+    if (!s) return;
+    size_t len = strlen(s);
+    while (len && (s[len - 1] == '\n' || s[len - 1] == '\r' || s[len - 1] == ' ')) s[--len] = '\0';
+    char *l = strrchr(s, '\n');
+    l = l ? l + 1 : s;
+    char *r = strrchr(l, '\r'); /* a progress line redrawn with \r: its last state */
+    if (r) l = r + 1;
+    size_t k = 0;
+    for (; *l && k + 1 < n; ++l)
+        if ((unsigned char)*l >= 0x20 && *l != 0x7f && *l != '\t') buf[k++] = *l;
+    buf[k] = '\0';
+    free(s);
+}
+
+void pl_sweep_plan(int todo, int cpus, int jobs_given, int threads_given, int *jobs, int *threads)
+{
+    if (cpus < 1) cpus = 1;
+    int j = jobs_given > 0 ? jobs_given : threads_given > 0 ? cpus / threads_given : cpus;
+    if (j > todo) j = todo;
+    if (j < 1) j = 1;
+    int t = threads_given > 0 ? threads_given : cpus / j;
+    *jobs = j;
+    *threads = t < 1 ? 1 : t;
+}
+
+static int cpu_count(void)
+{
+    cpu_set_t set;
+    if (!sched_getaffinity(0, sizeof set, &set)) return CPU_COUNT(&set);
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n > 0 ? (int)n : 1;
+}
+
+typedef struct {
+    pl_study_t *st;
+    const pl_sweep_opts_t *o;
+    char out[3072];
+    int n;     /* the study's points */
+    int total; /* the points of this run (n, or 1 with --point) */
+} sweep_t;
+
+static void point_path(const sweep_t *s, int k, const char *fmt, char *buf, size_t n)
+{
+    char id[32];
+    pl_study_point_id(s->st, k, id, sizeof id);
+    char rel[128];
+    snprintf(rel, sizeof rel, fmt, id);
+    snprintf(buf, n, "%s/%s", s->out, rel);
+}
+
+/* points.json: what the collect step needs to know of the study. */
+static int write_points(const sweep_t *s, pl_err_t *err)
+{
+    json_t *doc = json_object(), *keys = json_array(), *pts = json_array();
+    char plot[2048], path[4096];
+    json_object_set_new(doc, "study", json_string(pl_study_name(s->st)));
+    json_object_set_new(doc, "study_file", json_string(pl_study_path(s->st)));
+    for (int a = 0; a < pl_study_naxes(s->st); ++a) json_array_append_new(keys, json_string(pl_study_axis_key(s->st, a)));
+    json_object_set_new(doc, "keys", keys);
+    pl_study_plot_json(s->st, plot, sizeof plot);
+    json_t *pj = json_loads(plot, 0, NULL);
+    json_object_set_new(doc, "plot", pj ? pj : json_object());
+    for (int k = 0; k < s->n; ++k) {
+        json_t *p = json_object(), *params = json_object();
+        char id[32], v[256];
+        pl_study_point_id(s->st, k, id, sizeof id);
+        json_object_set_new(p, "index", json_integer(k));
+        json_object_set_new(p, "id", json_string(id));
+        for (int a = 0; a < pl_study_naxes(s->st); ++a) {
+            pl_study_point_value(s->st, k, a, v, sizeof v);
+            json_t *jv = json_loads(v, JSON_DECODE_ANY, NULL);
+            json_object_set_new(params, pl_study_axis_key(s->st, a), jv ? jv : json_string(v));
+        }
+        json_object_set_new(p, "params", params);
+        json_array_append_new(pts, p);
+    }
+    json_object_set_new(doc, "points", pts);
+    char *text = json_dumps(doc, JSON_INDENT(1));
+    json_decref(doc);
+    if (!text) return pl_err_set(err, PL_ERR_NOMEM, "out of memory writing points.json");
+    snprintf(path, sizeof path, "%s/points.json", s->out);
+    size_t len = strlen(text);
+    char *t2 = realloc(text, len + 2);
+    if (t2) {
+        t2[len] = '\n';
+        t2[len + 1] = '\0';
+        text = t2;
+    }
+    int rc = write_changed(path, text, err);
+    free(text);
+    return rc;
+}
+
+/* Writes point k's scene; *done: its run is finished (same scene). */
+static int prepare_point(const sweep_t *s, int k, int *done, pl_err_t *err)
+{
+    char id[32], name[192], path[4096], sum[4096];
+    pl_study_point_id(s->st, k, id, sizeof id);
+    snprintf(name, sizeof name, "%s-%s", pl_study_name(s->st), id);
+    char *text = NULL;
+    int rc = pl_study_point_scene(s->st, k, name, &text, err);
+    if (rc) return rc;
+    point_path(s, k, "scenes/%s.cfg", path, sizeof path);
+    point_path(s, k, "%s/summary.json", sum, sizeof sum);
+    char *old = read_text(path);
+    int same = old && !strcmp(old, text);
+    free(old);
+    *done = same && summary_complete(sum);
+    if (!same) rc = write_text(path, text, err);
+    free(text);
+    return rc;
+}
+
+static void record(const sweep_t *s, int k, int code, const char *msg)
+{
+    char path[4096];
+    pl_err_t e;
+    point_path(s, k, "status/%s.tsv", path, sizeof path);
+    char line[1200];
+    snprintf(line, sizeof line, "%d\t%s\n", code, msg);
+    write_text(path, line, &e);
+}
+
+static pid_t start_point(const sweep_t *s, int k, int threads)
+{
+    char scene[4096], dir[4096], log[4096], th[16];
+    point_path(s, k, "scenes/%s.cfg", scene, sizeof scene);
+    point_path(s, k, "%s", dir, sizeof dir);
+    point_path(s, k, "logs/%s.log", log, sizeof log);
+    snprintf(th, sizeof th, "%d", threads);
+    char sum[4096]; /* a summary of an earlier run of this point (other values) must not survive a failure */
+    point_path(s, k, "%s/summary.json", sum, sizeof sum);
+    unlink(sum);
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid != 0) return pid;
+    FILE *f = freopen(log, "w", stderr);
+    if (!f || dup2(fileno(stderr), 1) < 0) _exit(PL_ERR_IO);
+    execl(s->o->self, s->o->self, "run", scene, "--out", dir, "--force", "--threads", th, (char *)NULL);
+    fprintf(stderr, "peloid sweep: cannot run %s: %s\n", s->o->self, strerror(errno));
+    _exit(PL_ERR_IO);
+}
+
+static void fmt_time(double t, char *b, size_t n)
+{
+    long long s = (long long)(t + 0.5);
+    if (s >= 3600) snprintf(b, n, "%lld:%02lld:%02lld", s / 3600, s / 60 % 60, s % 60);
+    else snprintf(b, n, "%lld:%02lld", s / 60, s % 60);
+}
+
+static void progress(const sweep_t *s, int done, int failed, int running, int skipped, int todo, double t0,
+                     int last)
+{
+    char el[32], eta[32] = "?";
+    double t = now_s() - t0;
+    fmt_time(t, el, sizeof el);
+    int finished = done + failed - skipped; /* points this sweep ran to the end */
+    if (finished > 0) fmt_time(t / finished * (todo - finished), eta, sizeof eta);
+    if (todo == finished) snprintf(eta, sizeof eta, "0:00");
+    fprintf(s->o->log, "%speloid sweep %s: %d/%d done (%d skipped), %d failed, %d running, %s elapsed, ETA %s%s",
+            s->o->progress_tty ? "\r" : "", pl_study_name(s->st), done, s->total, skipped, failed, running, el, eta,
+            s->o->progress_tty && !last ? "   " : "\n");
+    fflush(s->o->log);
+}
+
+/* Runs points [first, last) that are not finished; returns the number failed. */
+static int run_points(sweep_t *s, int first, int last, int *failed_out, pl_err_t *err)
+{
+    int n = last - first, todo = 0;
+    s->total = n;
+    int *state = calloc((size_t)n, sizeof *state); /* 0 todo, 1 running, 2 done, 3 failed */
+    pid_t *pids = calloc((size_t)n, sizeof *pids);
+    if (!state || !pids) {
+        free(state);
+        free(pids);
+        return pl_err_set(err, PL_ERR_NOMEM, "out of memory starting the sweep");
+    }
+    int rc = 0, skipped = 0;
+    for (int i = 0; !rc && i < n; ++i) {
+        int done;
+        rc = prepare_point(s, first + i, &done, err);
+        if (!rc && done) {
+            state[i] = 2;
+            ++skipped;
+        } else ++todo;
+    }
+    int jobs, threads;
+    pl_sweep_plan(todo, cpu_count(), s->o->jobs, s->o->threads, &jobs, &threads);
+    if (!rc)
+        fprintf(s->o->log, "peloid sweep %s: %d point(s), %d finished before, %d to run: %d process(es) x %d "
+                "thread(s) on %d CPU(s) -> %s/\n", pl_study_name(s->st), n, skipped, todo, jobs, threads,
+                cpu_count(), s->out);
+    double t0 = now_s(), last_draw = 0;
+    int running = 0, done = skipped, failed = 0, next = 0, draw = 0;
+    while (!rc) {
+        while (running < jobs && next < n) {
+            if (state[next] == 0) {
+                pids[next] = start_point(s, first + next, threads);
+                if (pids[next] < 0) {
+                    rc = pl_err_set(err, PL_ERR_IO, "cannot start a point: fork: %s", strerror(errno));
+                    break;
+                }
+                state[next] = 1;
+                ++running;
+            }
+            ++next;
+        }
+        if (draw && !rc) { /* a point ended: the line after its successor started */
+            progress(s, done, failed, running, skipped, todo, t0, running == 0 && next >= n);
+            last_draw = now_s();
+            draw = 0;
+        }
+        if (rc || (running == 0 && next >= n)) break;
+        int status;
+        pid_t pid = waitpid(-1, &status, s->o->progress_tty ? WNOHANG : 0);
+        if (pid == 0) { /* a terminal: redraw every second */
+            if (now_s() - last_draw >= 1.0) {
+                progress(s, done, failed, running, skipped, todo, t0, 0);
+                last_draw = now_s();
+            }
+            usleep(100000);
+            continue;
+        }
+        if (pid < 0) {
+            if (errno == EINTR) continue;
+            rc = pl_err_set(err, PL_ERR_INTERNAL, "waitpid: %s", strerror(errno));
+            break;
+        }
+        int i = 0;
+        while (i < n && !(state[i] == 1 && pids[i] == pid)) ++i;
+        if (i == n) continue;
+        --running;
+        int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+        char log[4096], msg[1024], sum[4096];
+        point_path(s, first + i, "logs/%s.log", log, sizeof log);
+        point_path(s, first + i, "%s/summary.json", sum, sizeof sum);
+        if (code == 0 && !summary_complete(sum)) code = PL_ERR_IO; /* exit 0 without a summary: not finished */
+        last_line(log, msg, sizeof msg);
+        if (WIFSIGNALED(status)) snprintf(msg, sizeof msg, "killed by signal %d", WTERMSIG(status));
+        record(s, first + i, code, code ? msg : "ok");
+        state[i] = code ? 3 : 2;
+        if (code) ++failed;
+        else ++done;
+        draw = 1;
+    }
+    if (!rc && todo == 0) progress(s, done, failed, running, skipped, todo, t0, 1);
+    free(state);
+    free(pids);
+    *failed_out = failed;
+    return rc;
+}
+
+/* The Slurm job array: task K runs point K; collect.sbatch the table. */
+static int write_slurm(const sweep_t *s, pl_err_t *err)
+{
+    char path[4096], study[4096], out[4096], self[4096], b[16384];
+    if (!realpath(pl_study_path(s->st), study) || !realpath(s->out, out) || !realpath(s->o->self, self))
+        return pl_err_set(err, PL_ERR_IO, "%s: cannot resolve the study, OUT or peloid path: %s",
+                          pl_study_path(s->st), strerror(errno));
+    int threads = s->o->threads > 0 ? s->o->threads : 1;
+    int len = snprintf(b, sizeof b,
+             "#!/bin/bash\n"
+             "# peloid sweep %s: one Slurm array task per point (written by peloid sweep --slurm).\n"
+             "#   submit: bash %s/submit.sh   (or: sbatch %s/sweep.sbatch, then sbatch %s/collect.sbatch)\n"
+             "# Task K runs point K; a finished point is skipped, so resubmitting reruns only the rest.\n"
+             "#SBATCH --job-name=%s\n#SBATCH --array=0-%d\n#SBATCH --cpus-per-task=%d\n#SBATCH --ntasks=1\n"
+             "#SBATCH --output=%s/logs/slurm-%%A_%%a.out\n"
+             "exec %s sweep %s --out %s --point \"$SLURM_ARRAY_TASK_ID\" --threads \"${SLURM_CPUS_PER_TASK:-%d}\"\n",
+             pl_study_name(s->st), out, out, out, pl_study_name(s->st), s->n - 1, threads, out, self, study, out,
+             threads);
+    snprintf(path, sizeof path, "%s/sweep.sbatch", s->out);
+    int rc = len < 0 || (size_t)len >= sizeof b ? pl_err_set(err, PL_ERR_INPUT, "%s: paths too long", s->out)
+                                                 : write_text(path, b, err);
+    len = snprintf(b, sizeof b,
+             "#!/bin/bash\n# peloid sweep %s: the table and plot of every point (after the array).\n"
+             "#SBATCH --job-name=%s-collect\n#SBATCH --ntasks=1\n#SBATCH --cpus-per-task=1\n"
+             "#SBATCH --output=%s/logs/slurm-collect-%%j.out\n"
+             "exec %s sweep %s --out %s --collect\n", pl_study_name(s->st), pl_study_name(s->st), out, self, study, out);
+    snprintf(path, sizeof path, "%s/collect.sbatch", s->out);
+    if (!rc && (len < 0 || (size_t)len >= sizeof b)) rc = pl_err_set(err, PL_ERR_INPUT, "%s: paths too long", s->out);
+    if (!rc) rc = write_text(path, b, err);
+    len = snprintf(b, sizeof b,
+             "#!/bin/bash\n# Submits the array, then the collect step after it (whatever the tasks' exit codes).\n"
+             "set -euo pipefail\njid=$(sbatch --parsable %s/sweep.sbatch)\njid=${jid%%%%;*}\n"
+             "sbatch --parsable --dependency=afterany:$jid %s/collect.sbatch\n", out, out);
+    snprintf(path, sizeof path, "%s/submit.sh", s->out);
+    if (!rc && (len < 0 || (size_t)len >= sizeof b)) rc = pl_err_set(err, PL_ERR_INPUT, "%s: paths too long", s->out);
+    if (!rc) rc = write_text(path, b, err);
+    if (!rc)
+        fprintf(s->o->log, "peloid sweep %s: wrote %s/{sweep.sbatch,collect.sbatch,submit.sh}: %d array tasks x %d "
+                "thread(s); submit with: bash %s/submit.sh\n", pl_study_name(s->st), s->out, s->n, threads, s->out);
+    return rc;
+}
+
+static int collect(const sweep_t *s, pl_err_t *err)
+{
+    char script[4096];
+    snprintf(script, sizeof script, "%s/sweep_collect.py", s->o->tools);
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid == 0) {
+        execl("/usr/bin/python3", "python3", script, s->out, (char *)NULL);
+        fprintf(stderr, "peloid: error: sweep: cannot run /usr/bin/python3 %s: %s\n", script, strerror(errno));
+        _exit(PL_ERR_IO);
+    }
+    int status;
+    if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status))
+        return pl_err_set(err, PL_ERR_IO, "sweep: collecting %s with %s failed (its message is above)", s->out, script);
+    return 0;
+}
+
+int pl_sweep(pl_study_t *st, const pl_sweep_opts_t *o, pl_err_t *err)
+{
+    sweep_t s = {.st = st, .o = o, .n = pl_study_npoints(st)};
+    snprintf(s.out, sizeof s.out, "%s", o->out_dir ? o->out_dir : pl_study_out(st));
+    if (o->point >= s.n)
+        return pl_err_set(err, PL_ERR_INPUT, "sweep: --point %lld: study %s has %d point(s); allowed: 0..%d",
+                          o->point, pl_study_path(st), s.n, s.n - 1);
+    if (o->collect_only) return collect(&s, err);
+    struct stat sb;
+    char marker[4096];
+    snprintf(marker, sizeof marker, "%s/points.json", s.out);
+    if (!stat(s.out, &sb) && stat(marker, &sb))
+        return pl_err_set(err, PL_ERR_INPUT, "sweep: %s exists and is not a sweep's output (no points.json); "
+                          "allowed: a new directory or a previous output of a sweep (--out DIR)", s.out);
+    int rc = pl_study_check_points(st, s.out, err); /* every point, before anything is written */
+    if (rc) return rc;
+    static const char *const sub[] = {"", "/scenes", "/logs", "/status"};
+    for (int i = 0; !rc && i < 4; ++i) {
+        char d[4096];
+        snprintf(d, sizeof d, "%s%s", s.out, sub[i]);
+        rc = mkdir_p(d, err);
+    }
+    if (!rc) rc = write_points(&s, err);
+    if (!rc && o->slurm) {
+        for (int k = 0; !rc && k < s.n; ++k) {
+            int done;
+            rc = prepare_point(&s, k, &done, err);
+        }
+        return rc ? rc : write_slurm(&s, err);
+    }
+    int failed = 0;
+    if (!rc && o->point >= 0) rc = run_points(&s, (int)o->point, (int)o->point + 1, &failed, err);
+    else if (!rc) rc = run_points(&s, 0, s.n, &failed, err);
+    if (!rc && o->point < 0) rc = collect(&s, err);
+    if (rc) return rc;
+    if (failed)
+        return pl_err_set(err, 1, "sweep %s: %d point(s) failed, the others ran (exit code and last message of "
+                          "each: %s/status/, %s/sweep.tsv)", pl_study_name(st), failed, s.out, s.out);
+    return 0;
+}

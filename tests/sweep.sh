@@ -1,0 +1,152 @@
+#!/usr/bin/env bash
+# peloid sweep (src/sweep/): a 4-point grid over a tiny Brownian scene (16
+# colloids, 300 steps, ~0.05 s a point) runs and is collected into
+# sweep.{tsv,json,png}; a re-run skips the finished points; a point whose
+# value trips a guard at run time fails alone and is recorded with its exit
+# code and message; an invalid override, an unknown key and an empty grid are
+# refused before anything is written (exit 2, one line naming file:line and
+# key); --point K runs exactly point K; --slurm writes the job array.
+set -u
+PELOID=$(realpath "${1:-bin/peloid}")
+PY=/usr/bin/python3
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+T=$(mktemp -d /tmp/peloid-sweep.XXXXXX)
+trap 'rm -rf "$T"' EXIT
+cd "$T"
+pass=0; fail=0
+ok()  { pass=$((pass+1)); echo "  ok   $1"; }
+bad() { fail=$((fail+1)); echo "  FAIL $1"; }
+echo "== sweep tests"
+t0=$(date +%s.%N)
+
+cat > bd.cfg <<'CFG'
+name = "bd";
+seed = 11;
+steps = 300;
+box: { cells = [8, 8, 8]; };
+fluid: { density = 0.0; };
+srd: { dt = 0.1; };
+colloids: { count = 16; radius = 1.0; mass_density = 1.0; temperature = 1.0; init = "random";
+  pairs = ""; integrator = "brownian"; bd_viscosity = 0.02; substeps = 1; max_overlap = 1.0; };
+observe: { msd_interval = 1; };
+CFG
+cat > grid.cfg <<'CFG'
+name = "grid";
+scene = "bd.cfg";
+out = "out/grid";
+grid = ( { key = "colloids.bd_viscosity"; values = [0.02, 0.04]; },
+         { key = "seed"; values = [1, 2]; } );
+plot = { x = "colloids.bd_viscosity"; y = ["colloid_D"]; series = "seed"; };
+CFG
+
+# 1. the grid runs and is collected
+if "$PELOID" sweep grid.cfg 2> grid.err; then ok "4-point grid sweep ran (exit 0)"; else bad "grid sweep: $(tail -1 grid.err)"; fi
+if $PY - <<'PY'
+import json
+rows = [l.rstrip("\n").split("\t") for l in open("out/grid/sweep.tsv")]
+h = rows[0]; rows = rows[1:]
+assert len(rows) == 4, rows
+c = {k: h.index(k) for k in ("id", "status", "colloids.bd_viscosity", "seed", "last_step", "colloid_D", "colloid_D_se")}
+got = [(r[c["id"]], r[c["status"]], float(r[c["colloids.bd_viscosity"]]), int(r[c["seed"]]), int(r[c["last_step"]])) for r in rows]
+assert got == [("p000", "ok", 0.02, 1, 300), ("p001", "ok", 0.02, 2, 300), ("p002", "ok", 0.04, 1, 300),
+               ("p003", "ok", 0.04, 2, 300)], got
+for r in rows:
+    assert float(r[c["colloid_D"]]) > 0 and float(r[c["colloid_D_se"]]) > 0
+j = json.load(open("out/grid/sweep.json"))
+assert [p["params"]["seed"] for p in j["points"]] == [1, 2, 1, 2]
+import os; assert os.path.getsize("out/grid/sweep.png") > 5000
+for k, (v, s) in enumerate([(0.02, 1), (0.02, 2), (0.04, 1), (0.04, 2)]):
+    t = open(f"out/grid/scenes/p{k:03d}.cfg").read()
+    assert f"bd_viscosity = {v};" in t and f"seed = {s};" in t, t
+PY
+then ok "sweep.tsv: 4 rows, keys per point, colloid_D +- SE; sweep.json, sweep.png, each point's scene"; else bad "sweep table"; fi
+grep -q "peloid sweep grid: 4/4 done (0 skipped), 0 failed, 0 running, .* elapsed, ETA" grid.err \
+  && ok "one progress line per event (done/failed/running, elapsed, ETA)" || bad "progress line: $(cat grid.err)"
+
+# 2. a re-run skips the finished points
+m0=$(stat -c %Y.%N out/grid/p001/summary.json)
+"$PELOID" sweep grid.cfg 2> rerun.err
+if grep -q "4 finished before, 0 to run" rerun.err && [ "$(stat -c %Y.%N out/grid/p001/summary.json)" = "$m0" ]; then
+  ok "re-run skipped the 4 finished points (summary.json untouched)"; else bad "re-run: $(cat rerun.err)"; fi
+rm out/grid/p002/summary.json
+"$PELOID" sweep grid.cfg 2> resume.err
+grep -q "3 finished before, 1 to run" resume.err && [ -f out/grid/p002/summary.json ] \
+  && ok "a point without a complete summary.json is run again" || bad "resume: $(cat resume.err)"
+
+# 3. a point whose value trips a guard fails alone and is recorded
+cat > fails.cfg <<'CFG'
+scene = "bd.cfg";
+out = "out/fails";
+points = { keys = ["colloids.max_overlap", "seed"];
+           values = ( (1.0, 1), (0.01, 2), (1.0, 3), (1.0, 4) ); };
+CFG
+"$PELOID" sweep fails.cfg 2> fails.err; rc=$?
+if [ $rc = 1 ] && $PY - <<'PY'
+rows = [l.rstrip("\n").split("\t") for l in open("out/fails/sweep.tsv")][1:]
+st = [(r[0], r[1], r[2]) for r in rows]
+assert st == [("p000", "ok", "0"), ("p001", "failed", "3"), ("p002", "ok", "0"), ("p003", "ok", "0")], st
+assert "guard overlap" in rows[1][3] and "max_overlap" in rows[1][3], rows[1][3]
+PY
+then ok "point 1 (max_overlap = 0.01) failed alone: exit 3 and its guard message recorded, exit 1"
+else bad "failing point (rc $rc): $(tail -2 fails.err)"; fi
+
+# 4. bad input: refused before anything is written, exit 2, one line
+refuse() { # name, study text, expected message part
+  printf '%s\n' "$2" > "$1.cfg"
+  "$PELOID" sweep "$1.cfg" > /dev/null 2> "$1.err"; rc=$?
+  if [ $rc = 2 ] && [ "$(wc -l < "$1.err")" = 1 ] && grep -q -- "$3" "$1.err" && [ ! -e "out/$1" ]; then
+    ok "refused $1: $(cut -c1-150 "$1.err")"
+  else bad "$1: rc $rc, $(cat "$1.err")"; [ -e "out/$1" ] && echo "    out/$1 was written"; fi
+}
+refuse badvalue 'scene = "bd.cfg"; out = "out/badvalue"; grid = ( { key = "colloids.bd_viscosity"; values = [0.02, -1.0]; } );' \
+  "badvalue.cfg:1: point 1 (colloids.bd_viscosity = -1.0) is not a valid scene.*key 'colloids.bd_viscosity': value -1 is out of range; allowed: > 0"
+refuse badkey 'scene = "bd.cfg"; out = "out/badkey";
+grid = ( { key = "colloids.bd_viscosty"; values = [0.02]; } );' \
+  "badkey.cfg:2: key 'grid.\[0\]': \"colloids.bd_viscosty\" is not a scene key"
+refuse empty 'scene = "bd.cfg"; out = "out/empty"; grid = ( { key = "seed"; values = []; } );' \
+  "empty.cfg:1: key 'grid.\[0\]': values: expected a non-empty array"
+refuse badstudy 'scene = "bd.cfg"; out = "out/badstudy"; gird = ( );' "badstudy.cfg:1: key 'gird': unknown study key"
+
+# 5. --point K runs exactly point K (what a Slurm array task runs)
+sed 's#out/grid#out/one#' grid.cfg > one.cfg
+"$PELOID" sweep one.cfg --point 2 2> one.err
+n=$(ls out/one/*/summary.json 2>/dev/null | wc -l)
+if [ "$n" = 1 ] && [ -f out/one/p002/summary.json ] && grep -q "^seed = 1;" out/one/p002/scene.cfg \
+   && grep -Eq "bd_viscosity = 0\.0400000" out/one/p002/scene.cfg; then ok "--point 2 ran point 2 only"
+else bad "--point 2: $n summaries, $(tail -1 one.err)"; fi
+
+# 6. --slurm writes the array script and runs nothing
+sed 's#out/grid#out/sl#' grid.cfg > sl.cfg
+"$PELOID" sweep sl.cfg --slurm --threads 1 2> sl.err
+if grep -q -- "--array=0-3" out/sl/sweep.sbatch && grep -q -- "--point \"\$SLURM_ARRAY_TASK_ID\"" out/sl/sweep.sbatch \
+   && grep -q -- "--collect" out/sl/collect.sbatch && ! ls out/sl/p0* > /dev/null 2>&1; then
+  ok "--slurm: sweep.sbatch (--array=0-3, task K runs --point K), collect.sbatch, nothing run"
+else bad "--slurm: $(cat sl.err)"; fi
+# ... and each array index runs its point locally, as Slurm would
+for k in 0 1 2 3; do SLURM_ARRAY_TASK_ID=$k SLURM_CPUS_PER_TASK=1 bash out/sl/sweep.sbatch 2> /dev/null; done
+"$PELOID" sweep sl.cfg --out out/sl --collect 2> /dev/null
+[ "$(grep -c '	ok	0	' out/sl/sweep.tsv)" = 4 ] && ok "the 4 array tasks run locally (SLURM_ARRAY_TASK_ID=0..3), collected" \
+  || bad "array tasks run locally"
+# 7. a point's scene loses nothing: with the base's own value it reproduces
+#    the base run bitwise (scenes/quickstart.cfg: physical units, @-free, many reals)
+QS="$ROOT/scenes/quickstart.cfg"
+printf 'scene = "%s"; out = "out/same";\npoints = { keys = ["name", "seed"]; values = ( ("quickstart", 20261123) ); };\n' \
+  "$QS" > same.cfg
+"$PELOID" sweep same.cfg --slurm 2> /dev/null  # writes the point's scene, runs nothing
+sed -i 's/^steps = .*/steps = 5;/' out/same/scenes/p000.cfg
+"$PELOID" run out/same/scenes/p000.cfg --out pt --threads 1 2> /dev/null
+"$PELOID" run "$QS" --steps 5 --out base --threads 1 2> /dev/null
+if [ -f pt/checkpoint.h5 ] && [ "$(sha256sum < pt/checkpoint.h5)" = "$(sha256sum < base/checkpoint.h5)" ]; then
+  ok "a point with the base's values reproduces the base run bitwise (quickstart, 5 steps, checkpoint.h5)"
+else bad "point scene differs from its base (checkpoint.h5 hashes)"; fi
+# 8. arrays, strings and 64-bit integers survive into a point's scene (the
+#    base's 5000000000 without L is read as written, not wrapped to 32 bits)
+sed 's/^steps = 300;/steps = 5000000000;/' bd.cfg > bdbig.cfg
+printf 'scene = "bdbig.cfg"; out = "out/arr";\ngrid = ( { key = "box.cells"; values = ([8,8,8], [10,10,10]); },\n  { key = "colloids.init"; values = ["lattice", "random"]; } );\n' > arr.cfg
+"$PELOID" sweep arr.cfg --slurm 2> /dev/null
+if grep -q "^  cells = \[10, 10, 10\];" out/arr/scenes/p003.cfg && grep -q '^  init = "random";' out/arr/scenes/p003.cfg \
+   && grep -q "^steps = 5000000000L;" out/arr/scenes/p003.cfg && "$PELOID" check out/arr/scenes/p003.cfg > /dev/null 2>&1; then
+  ok "array, string and 64-bit integer values written into the point's scene, which checks ok"
+else bad "array/string/int64 values in a point's scene"; fi
+echo "  sweep tests: $pass passed, $fail failed ($(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }') s)"
+[ $fail = 0 ]
