@@ -105,8 +105,33 @@ sys.exit(0 if sa["value"] == sb["value"] and sa["stderr"] == sb["stderr"] else 1
 PY
 then ok "Couette viscosity bitwise equal at 1 and 2 threads"; else bad "Couette viscosity differs between 1 and 2 threads"; fi
 
+# One observables.h5 for both modules: a Couette cell with colloids and
+# g(r) has the colloid and the stress groups; rerunning into the same
+# directory (--force) writes a fresh file, not one appended to the old.
+cat > both.cfg <<'CFG'
+seed = 5;
+steps = 200;
+box: { cells = [8, 8, 12]; walls_z = "noslip"; wall_velocity_bottom = [-0.2, 0.0, 0.0];
+  wall_velocity_top = [0.2, 0.0, 0.0]; };
+fluid: { density = 5; };
+srd: { dt = 0.1; };
+colloids: { count = 4; radius = 1.0; init = "random"; };
+coupling: { method = "hecht2"; };
+observe: { rdf_interval = 10; stress_interval = 10; };
+CFG
+for k in 1 2; do "$PELOID" run both.cfg --threads 2 --out both --force 2> errb || bad "Couette + g(r) run $k: $(tail -1 errb)"; done
+if $PY - <<'PY'
+import sys, h5py
+o = h5py.File("both/observables.h5")["observables"]
+need = {"colloid_rdf", "wall_shear_stress", "shear_rate", "fluid_velocity_profile", "fluid_density_profile"}
+sys.exit(0 if need <= set(o) and len(o["shear_rate/value"]) == 20 else 1)
+PY
+then ok "one observables.h5 with the colloid and stress groups, fresh on a rerun"; else bad "observables.h5 of a Couette + g(r) run"; fi
+
 sed -i "s/^steps = .*/steps = 2000;/" gk0.1.cfg
 "$PELOID" run gk0.1.cfg --threads 1 --out t1 2> /dev/null && "$PELOID" run gk0.1.cfg --threads 2 --out t2 2> /dev/null
+# rerun into the same directory: observables.h5 written afresh (was: appended to the old file and failed)
+"$PELOID" run gk0.1.cfg --threads 2 --out t2 --force 2> errt || bad "stress rerun with --force: $(tail -1 errt)"
 if $PY - <<'PY'
 import json, sys, h5py, numpy as np
 a, b = (h5py.File(f"{d}/observables.h5")["observables"] for d in ("t1", "t2"))

@@ -468,17 +468,16 @@ static int copy_file(const char *src, const char *dst)
     return bad ? -1 : 0;
 }
 
-/* Adds /observables/fluid_stress and fluid_viscosity_gk to observables.h5
- * (the observe module's, when it wrote one, else a new file), atomically. */
+/* Adds the stress groups to observables.h5: to the file the observe module
+ * wrote in this run's finish (it runs first, pl_modules), else to a new one
+ * (never to a file left by an earlier run); atomically. */
 static int write_h5(const pl_sim_t *sim, const pl_stress_t *o, const char *path, pl_err_t *err)
 {
     char tmp[4200];
     pl_atomic_tmp(path, tmp, sizeof tmp);
     pl_h5_quiet();
-    FILE *probe = fopen(path, "rb");
     hid_t f;
-    if (probe) {
-        fclose(probe);
+    if (sim->observe) { /* the observe module wrote observables.h5 of this run just before */
         if (copy_file(path, tmp)) {
             remove(tmp);
             return pl_err_set(err, PL_ERR_IO, "%s: cannot copy the observables file", tmp);
