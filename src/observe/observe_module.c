@@ -42,8 +42,14 @@
  * estimate and SE of each observable are recorded with the wall time spent;
  * the summary extrapolates (SE ~ 1/sqrt(t)) the wall time that
  * observe.target_rel_error would need, flagged when the blocking found no
- * plateau.  A restarted run's observers start afresh: its observables cover
- * the steps of that run (summary "observables.first_step"). */
+ * plateau.
+ *
+ * Restart: the accumulated state is the checkpoint group /observe (section
+ * "checkpoint" below); with the same observe section the observers resume
+ * and cover the whole history since they started (first_step the original
+ * start, fractions of the combined run), with another one, or from a
+ * checkpoint without the group, they start afresh and say so (README
+ * "Observables", restart). */
 #include <hdf5.h>
 #include <jansson.h>
 #include <math.h>
