@@ -399,7 +399,8 @@ else bad "stop rule: stop step $S / $S2 ${out:-}"; fi
 #  - a restart with another observe section, and one from a checkpoint
 #    without observer state (written before peloid saved it), start the
 #    observers afresh and say so (one log line, summary observables.resumed
-#    false with the reason); a wrong-sized observer item is PL_ERR_INPUT
+#    false with the reason), as does one with --restart-changed (another
+#    srd.grid_shift); a wrong-sized observer item is PL_ERR_INPUT
 #    naming the file and the item.
 cat > rcmp.py <<'PY'
 import json, sys, h5py, numpy as np
@@ -472,6 +473,12 @@ PY
   then ok "restart afresh ($2): $out"
   else bad "restart afresh ($2): $(cat fresh.err | tail -2)"; fi
 done
+sed -e 's/grid_shift = true;/grid_shift = false;/' qsr.cfg > qsr3.cfg
+if "$PELOID" run qsr3.cfg --steps 80 --restart qsr.half/checkpoint.h5 --restart-changed srd.grid_shift --out qsr3.fresh \
+     2> fresh.err && grep -q "restart-changed srd.grid_shift: the physics changed, the observers start afresh" fresh.err &&
+   $PY -c 'import json, sys; o = json.load(open("qsr3.fresh/summary.json"))["observables"]; sys.exit(not (o["resumed"] is False and o["first_step"] == 80))'
+then ok "restart afresh after --restart-changed srd.grid_shift: $(grep -o 'the physics.*' fresh.err)"
+else bad "restart afresh after --restart-changed: $(tail -2 fresh.err)"; fi
 cp qsr.half/checkpoint.h5 bad.h5
 $PY -c '
 import h5py, numpy as np

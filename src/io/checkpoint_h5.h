@@ -73,7 +73,7 @@ hid_t pl_ckpt_observe_group_write(hid_t f, const char *name, const pl_scene_t *s
 /* Opens group `name` when its fingerprint matches the scene's observe
  * section (sim->observe_resumed = 1); otherwise returns -1 with
  * sim->observe_resumed = 0 and sim->observe_note saying why (absent group,
- * changed observe section). */
+ * changed observe section; or already 0: --restart-changed). */
 hid_t pl_ckpt_observe_group_open(hid_t f, const char *name, struct pl_sim *sim);
 
 #endif

@@ -5,7 +5,8 @@
  * (its FNV-1a hash).  The scene fingerprint leaves observe.* out, so a restart
  * may change the observers: with the same fingerprint they resume, with
  * another, or from a checkpoint without the group (written before peloid
- * saved observer state), they start afresh and sim->observe_note says why. */
+ * saved observer state), or after --restart-changed (the physics changed:
+ * src/io/checkpoint.c), they start afresh and sim->observe_note says why. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -48,6 +49,7 @@ static void first_difference(const char *a, const char *b, char *key, size_t n)
 
 hid_t pl_ckpt_observe_group_open(hid_t f, const char *name, pl_sim_t *sim)
 {
+    if (sim->observe_resumed == 0) return -1; /* afresh already (--restart-changed, another group) */
     if (H5Lexists(f, name, H5P_DEFAULT) <= 0) {
         sim->observe_resumed = 0;
         snprintf(sim->observe_note, sizeof sim->observe_note,
