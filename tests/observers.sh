@@ -387,6 +387,108 @@ PY
 then ok "stop rule: stopped at step $S (1 and 2 threads), $out"
 else bad "stop rule: stop step $S / $S2 ${out:-}"; fi
 
+# Observers continue across checkpoint/restart (README "Observables":
+# restart): 2N steps == N + restart + N, bitwise, for every observables.h5
+# dataset and every summary.json observable value and stderr (wall times
+# aside), with the correlators (MSD every 10 steps, VACF every 5) growing a
+# level at the restart (pl_mtau_grow):
+#  - quickstart (g(r), MSD, VACF, clusters, sedimentation, velocity
+#    distributions; walls, DLVO, coupling II), 160 vs 80 + 80 steps;
+#  - free Brownian colloids, polydisperse: g(r) per size class and S(q);
+#  - the stress observer: Green-Kubo (pure fluid, periodic) and Couette;
+#  - a restart with another observe section, and one from a checkpoint
+#    without observer state (written before peloid saved it), start the
+#    observers afresh and say so (one log line, summary observables.resumed
+#    false with the reason), as does one with --restart-changed (another
+#    srd.grid_shift); a wrong-sized observer item is PL_ERR_INPUT
+#    naming the file and the item.
+cat > rcmp.py <<'PY'
+import json, sys, h5py, numpy as np
+a, b = sys.argv[1], sys.argv[2]
+def walk(f):
+    out = {}
+    f.visititems(lambda n, o: out.__setitem__(n, o[()]) if isinstance(o, h5py.Dataset) else None)
+    return out
+with h5py.File(a + "/observables.h5") as f, h5py.File(b + "/observables.h5") as g:
+    A, B = walk(f), walk(g)
+assert A.keys() == B.keys(), sorted(set(A) ^ set(B))
+bad = [k for k in A if not np.array_equal(A[k], B[k])]
+assert not bad, bad
+CLOCK = {"wall_s", "wall_s_for_target", "resumed", "reason"}
+def strip(x):
+    if isinstance(x, dict): return {k: strip(v) for k, v in x.items() if k not in CLOCK}
+    if isinstance(x, list): return [strip(v) for v in x]
+    return x
+ja, jb = (json.load(open(d + "/summary.json"))["observables"] for d in (a, b))
+assert jb.get("resumed") is True, jb.get("resumed")
+sa, sb = strip(ja), strip(jb)
+diff = [k for k in sa if sa[k] != sb.get(k)]
+assert not diff and sa.keys() == sb.keys(), diff
+n = sum(len(e["se_vs_time"]) for e in sa.values() if isinstance(e, dict) and "se_vs_time" in e)
+print(f"{len(A)} datasets, {len(sa) - 2} summary observables ({n} se_vs_time points), first_step {sb['first_step']}")
+PY
+sed -e 's/sediment_interval = 20;/sediment_interval = 20; vacf_interval = 5; vdist_interval = 40;/' \
+  "$(dirname "$TOOLS")/scenes/quickstart.cfg" > qsr.cfg
+sed -e 's/^name = "free";/name = "freer";/' -e 's/mass_density = 1.0;/mass_density = 1.0; polydispersity = 0.2;/' \
+  -e 's/rdf_bins = 40;/rdf_bins = 40; rdf_size_classes = 2;/' free.cfg > freer.cfg
+cat > gkr.cfg <<'CFG'
+seed = 17;
+box: { cells = [8, 8, 8]; };
+fluid: { density = 10; };
+srd: { dt = 0.5; alpha = 130; };
+observe: { stress_interval = 20; };
+CFG
+cat > cour.cfg <<'CFG'
+seed = 18;
+box: { cells = [6, 6, 8]; walls_z = "noslip"; wall_velocity_bottom = [-0.2, 0.0, 0.0];
+  wall_velocity_top = [0.2, 0.0, 0.0]; };
+fluid: { density = 10; };
+srd: { dt = 0.5; alpha = 130; grid_shift = true; };
+thermostat: { type = "heyes"; temperature = 1.0; };
+observe: { stress_interval = 20; };
+CFG
+for c in "qsr 80" "freer 200" "gkr 200" "cour 200"; do
+  set -- $c
+  if "$PELOID" run $1.cfg --steps $(($2 * 2)) --threads 2 --out $1.full 2> /dev/null &&
+     "$PELOID" run $1.cfg --steps $2 --threads 2 --out $1.half 2> /dev/null &&
+     "$PELOID" run $1.cfg --steps $2 --threads 2 --restart $1.half/checkpoint.h5 --out $1.res 2> $1.err &&
+     out=$($PY rcmp.py $1.full $1.res 2>&1) && cmp -s $1.full/checkpoint.h5 $1.res/checkpoint.h5
+  then ok "restart $1: $(($2 * 2)) steps == $2 + restart + $2, bitwise (checkpoint too): $out"
+  else bad "restart $1: ${out:-run failed} $(tail -1 $1.err 2> /dev/null)"; fi
+done
+sed -e 's/rdf_interval = 20;/rdf_interval = 40;/' qsr.cfg > qsr2.cfg
+cp qsr.half/checkpoint.h5 old.h5
+$PY -c 'import h5py; f = h5py.File("old.h5", "r+"); del f["observe"]' 2> /dev/null
+for c in "qsr2 qsr.half/checkpoint.h5 observe.rdf_interval" "qsr old.h5 no.observer.state"; do
+  set -- $c
+  if "$PELOID" run $1.cfg --steps 80 --restart $2 --out $1.fresh.$(basename $2 .h5) 2> fresh.err &&
+     grep -q "observers start afresh" fresh.err && grep -q "${3/no.observer.state/no observer state}" fresh.err &&
+     out=$($PY - $1.fresh.$(basename $2 .h5) <<'PY'
+import json, sys
+o = json.load(open(sys.argv[1] + "/summary.json"))["observables"]
+assert o["resumed"] is False and o["first_step"] == 80 and "afresh" in o["reason"], o
+print(o["reason"])
+PY
+)
+  then ok "restart afresh ($2): $out"
+  else bad "restart afresh ($2): $(cat fresh.err | tail -2)"; fi
+done
+sed -e 's/grid_shift = true;/grid_shift = false;/' qsr.cfg > qsr3.cfg
+if "$PELOID" run qsr3.cfg --steps 80 --restart qsr.half/checkpoint.h5 --restart-changed srd.grid_shift --out qsr3.fresh \
+     2> fresh.err && grep -q "restart-changed srd.grid_shift: the physics changed, the observers start afresh" fresh.err &&
+   $PY -c 'import json, sys; o = json.load(open("qsr3.fresh/summary.json"))["observables"]; sys.exit(not (o["resumed"] is False and o["first_step"] == 80))'
+then ok "restart afresh after --restart-changed srd.grid_shift: $(grep -o 'the physics.*' fresh.err)"
+else bad "restart afresh after --restart-changed: $(tail -2 fresh.err)"; fi
+cp qsr.half/checkpoint.h5 bad.h5
+$PY -c '
+import h5py, numpy as np
+f = h5py.File("bad.h5", "r+"); c = f["observe/msd_counters"][:]; s = f["observe/msd_counters"].attrs["fnv1a64"]
+del f["observe/msd_counters"]; d = f["observe"].create_dataset("msd_counters", data=c[:-1]); d.attrs["fnv1a64"] = s' 2> /dev/null
+"$PELOID" run qsr.cfg --steps 80 --restart bad.h5 --out qsr.bad 2> bad.err; rc=$?
+if [ $rc -eq 2 ] && grep -q "bad.h5" bad.err && grep -q "/observe/msd_counters" bad.err && [ ! -e qsr.bad ]
+then ok "wrong-sized observer item refused: $(grep -o 'dataset.*' bad.err | head -1)"
+else bad "wrong-sized observer item: rc $rc $(cat bad.err)"; fi
+
 if "$PELOID" report free1 > /dev/null && [ -s free1/report.md ] && [ -s free1/rdf.png ] && [ -s free1/msd.png ] &&
    grep -q "Error against run time" free1/report.md && "$PELOID" report lat2.5 > /dev/null && [ -s lat2.5/clusters.png ] &&
    [ -s free1/sq.png ] && "$PELOID" report poly > /dev/null && [ -s poly/rdf_classes.png ] &&

@@ -13,6 +13,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "peloid/mtau.h"
 #include "support.h"
@@ -340,5 +341,50 @@ Test(mtau, restart_continues_bitwise)
         pl_mtau_free(b);
     }
     free(s);
+    gsl_rng_free(r);
+}
+
+/* A restart that runs longer than the first run planned for: the first run's
+ * correlator (levels for T1 samples) grown to the levels for T samples
+ * (pl_mtau_grow) and fed the rest equals, state and counters bitwise, the
+ * correlator created with those levels and fed all T samples; for both kinds
+ * (every-m-th rule). */
+Test(mtau, grow_equals_planned_bitwise)
+{
+    const size_t n = 4, T1 = 60, T = 400;
+    const int p = 8, m = 2, l1 = pl_mtau_levels_for(T1, p, m), l = pl_mtau_levels_for(T, p, m);
+    cr_assert_lt(l1, l);
+    gsl_rng *r = gsl_rng_alloc(gsl_rng_mt19937);
+    gsl_rng_set(r, 5);
+    double x[4], y[4], z[4];
+    for (int kind = 0; kind < 2; ++kind) {
+        pl_mtau_t *full = make(n, p, m, l, (pl_mtau_kind_t)kind, 0), *part = make(n, p, m, l1, (pl_mtau_kind_t)kind, 0);
+        pl_mtau_t *grown = NULL;
+        for (size_t t = 0; t < T; ++t) {
+            for (size_t i = 0; i < n; ++i) {
+                x[i] = gsl_ran_gaussian(r, 1.0);
+                y[i] = gsl_ran_gaussian(r, 1.0);
+                z[i] = gsl_ran_gaussian(r, 1.0);
+            }
+            pl_mtau_add(full, x, y, z, 1);
+            if (t < T1) {
+                pl_mtau_add(part, x, y, z, 1);
+            } else {
+                if (!grown) {
+                    pl_err_t err = {0, ""};
+                    cr_assert_eq(pl_mtau_grow(part, l, &grown, &err), 0, "%s", err.msg);
+                }
+                pl_mtau_add(grown, x, y, z, 2);
+            }
+        }
+        pl_mtau_state_t a = pl_mtau_state(full), b = pl_mtau_state(grown);
+        cr_assert_eq(a.nvalues, b.nvalues);
+        cr_assert_eq(a.ncounters, b.ncounters);
+        cr_assert(!memcmp(a.values, b.values, a.nvalues * sizeof(double)), "kind %d: values differ", kind);
+        cr_assert(!memcmp(a.counters, b.counters, a.ncounters * sizeof(uint64_t)), "kind %d: counters differ", kind);
+        pl_mtau_free(full);
+        pl_mtau_free(part);
+        pl_mtau_free(grown);
+    }
     gsl_rng_free(r);
 }

@@ -78,6 +78,15 @@ typedef struct {
     size_t ncounters;
 } pl_mtau_state_t;
 pl_mtau_state_t pl_mtau_state(pl_mtau_t *c);
+int pl_mtau_levels(const pl_mtau_t *c);
+/* A correlator with `levels` (>= c's) levels in the state it would have had,
+ * had it been created with them and fed c's samples (a restarted run that
+ * goes on longer than the first run planned for).  Exact for the every-m-th
+ * rule (average = 0): level l >= c's levels holds the samples at multiples of
+ * m^l, all of them still in c's top level while that level has not wrapped
+ * (it has not while c's samples fit its lags, pl_mtau_levels_for).  Fails
+ * (PL_ERR_INPUT) for average = 1 or a wrapped top level. */
+int pl_mtau_grow(const pl_mtau_t *c, int levels, pl_mtau_t **out, pl_err_t *err);
 /* Lag slots, in increasing lag: p + (levels - 1) (p - p/m). */
 size_t pl_mtau_nlags(const pl_mtau_t *c);
 /* lag[k] (time), origins[k], value[PL_MTAU_COLS k + col], se[...]; a lag with

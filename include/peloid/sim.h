@@ -101,6 +101,10 @@ struct pl_sim {
     /* observers (NULL without; src/observe/observe_module.c) */
     struct pl_observe *observe;
     struct pl_stress *stress; /* fluid stress observer (NULL without; src/observe/stress_module.c) */
+    /* restart: 1 when the observers resumed from the checkpoint, 0 when they
+     * started afresh (observe_note says why), -1 when no restart */
+    int observe_resumed;
+    char observe_note[384];
     /* plan */
     pl_stage_t stages[PL_MAX_STAGES];
     int nstages;

@@ -44,5 +44,14 @@ void pl_sq_sample(pl_sq_t *s, size_t n, const double *x, const double *y, const 
 void pl_sq_result(const pl_sq_t *s, double *qmid, double *qmean, double *S, double *se, uint64_t *nvec);
 uint64_t pl_sq_samples(const pl_sq_t *s);
 size_t pl_sq_vectors(const pl_sq_t *s);
+/* Everything a checkpoint must hold to continue bitwise (STYLE.md 15), owned
+ * by s: one plain blocking accumulator per bin and the sample count (the wave
+ * vectors and tables follow from the parameters). */
+typedef struct {
+    pl_blocking_t *blocking;
+    size_t nblocking;
+    uint64_t *samples;
+} pl_sq_state_t;
+pl_sq_state_t pl_sq_state(pl_sq_t *s);
 
 #endif

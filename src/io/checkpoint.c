@@ -2,8 +2,11 @@
  * N steps equals 2N steps bitwise.  Random numbers are counter based (keyed
  * by step), so the state is positions, velocities (in their sorted order:
  * the stable sort depends on it), tracking arrays, step, field accumulators,
- * with colloids the group /colloids (src/io/checkpoint_colloid.c), and the wall
- * and coupling run counters (src/io/checkpoint_coupling.c).
+ * with colloids the group /colloids (src/io/checkpoint_colloid.c), the wall
+ * and coupling run counters (src/io/checkpoint_coupling.c), and with
+ * observers their accumulated state, /observe and /stress (written by their
+ * modules; fingerprint of the observe section: src/io/checkpoint_observe.c;
+ * absent in older files, which still load: the observers start afresh).
  * Written atomically (pl_atomic_commit); the HDF5 helpers (checksummed 1-d
  * datasets, attributes) are in src/io/checkpoint_h5.c.
  * No object carries a time stamp, so the same state gives the same bytes.
@@ -228,6 +231,12 @@ int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, 
         goto close;
     }
     if ((rc = pl_ckpt_scene_check(f, sc, changed, path, err))) goto close;
+    if (changed && *changed) { /* observers do not average over two physics: they start afresh */
+        sim->observe_resumed = 0;
+        snprintf(sim->observe_note, sizeof sim->observe_note,
+                 "--restart-changed %.200s: the physics changed, the observers start afresh at the restart step",
+                 changed);
+    }
     sim->step = meta[0];
     if (pl_ckpt_attr_i64(f, "field_samples", &sim->field_samples, 1, 0)) {
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: unreadable attribute field_samples", path);

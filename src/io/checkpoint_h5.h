@@ -35,6 +35,10 @@ char *pl_ckpt_attr_str_read(hid_t obj, const char *name);
 /* Scene fingerprint (src/io/checkpoint_scene.c): writes the root attributes
  * scene_keys and scene_fingerprint; 0 or -1. */
 int pl_ckpt_scene_write(hid_t f, const pl_scene_t *scene);
+/* The observer fingerprint text (malloc'ed, NULL when out of memory): every
+ * observe.* key but observe.target_rel_error (which shapes no observer
+ * state), one "key = value" line each, as in scene_keys. */
+char *pl_ckpt_observe_text(const pl_scene_t *scene);
 /* PL_ERR_INPUT listing every physics key whose value differs between the
  * checkpoint and `scene` and is not named in `changed` (comma separated,
  * NULL: none). */
@@ -61,5 +65,15 @@ struct pl_sim;
 int pl_ckpt_coupling_write(hid_t f, const struct pl_sim *sim);
 /* Reads them back; PL_ERR_INPUT naming what is missing. */
 int pl_ckpt_coupling_read(hid_t f, struct pl_sim *sim, const char *path, pl_err_t *err);
+
+struct pl_sim;
+/* Observer groups (src/io/checkpoint_observe.c): creates group `name` with
+ * the observer fingerprint (< 0 on failure). */
+hid_t pl_ckpt_observe_group_write(hid_t f, const char *name, const pl_scene_t *sc);
+/* Opens group `name` when its fingerprint matches the scene's observe
+ * section (sim->observe_resumed = 1); otherwise returns -1 with
+ * sim->observe_resumed = 0 and sim->observe_note saying why (absent group,
+ * changed observe section; or already 0: --restart-changed). */
+hid_t pl_ckpt_observe_group_open(hid_t f, const char *name, struct pl_sim *sim);
 
 #endif

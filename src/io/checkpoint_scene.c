@@ -112,6 +112,33 @@ static char *scene_text(const pl_scene_t *scene)
     return s;
 }
 
+char *pl_ckpt_observe_text(const pl_scene_t *scene)
+{
+    size_t ns, cap = 4096, len = 0;
+    const pl_section_t *const *all = pl_scene_sections(&ns);
+    char *s = malloc(cap);
+    if (!s) return NULL;
+    s[0] = '\0';
+    for (size_t j = 0; j < ns; ++j)
+        for (size_t i = 0; i < all[j]->nkeys; ++i) {
+            char name[128], val[256];
+            full_name(all[j], &all[j]->keys[i], name, sizeof name);
+            if (strncmp(name, "observe.", 8) || !strcmp(name, "observe.target_rel_error")) continue;
+            value_text(&all[j]->keys[i], scene, val, sizeof val);
+            size_t need = strlen(name) + strlen(val) + 5;
+            if (len + need >= cap) {
+                char *t = realloc(s, cap = 2 * cap + need);
+                if (!t) {
+                    free(s);
+                    return NULL;
+                }
+                s = t;
+            }
+            len += (size_t)snprintf(s + len, cap - len, "%s = %s\n", name, val);
+        }
+    return s;
+}
+
 int pl_ckpt_scene_write(hid_t f, const pl_scene_t *scene)
 {
     char *text = scene_text(scene);

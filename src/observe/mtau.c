@@ -11,6 +11,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 struct pl_mtau {
     pl_mtau_params_t par;
@@ -115,6 +116,66 @@ pl_mtau_state_t pl_mtau_state(pl_mtau_t *c)
 {
     return (pl_mtau_state_t){.values = c->state, .nvalues = c->par.n * c->stride,
                              .counters = c->ctr, .ncounters = c->nctr};
+}
+
+int pl_mtau_levels(const pl_mtau_t *c) { return c->par.levels; }
+
+int pl_mtau_grow(const pl_mtau_t *c, int levels, pl_mtau_t **out, pl_err_t *err)
+{
+    *out = NULL;
+    const int L = c->par.levels, p = c->par.p, m = c->par.m;
+    if (levels < L) return pl_err_set(err, PL_ERR_INPUT, "mtau grow: %d levels < %d", levels, L);
+    if (c->par.average && levels > L)
+        return pl_err_set(err, PL_ERR_INPUT, "mtau grow: the averaging rule cannot add levels");
+    if (levels > L && c->nrecv[L - 1] > (uint64_t)p)
+        return pl_err_set(err, PL_ERR_INPUT,
+                          "mtau grow: the top level received %llu values, more than its %d slots",
+                          (unsigned long long)c->nrecv[L - 1], p);
+    pl_mtau_params_t par = c->par;
+    par.levels = levels;
+    pl_mtau_t *g;
+    int rc = pl_mtau_create(&par, &g, err);
+    if (rc) return rc;
+    const size_t lstride = 6 * (size_t)p + 3, n = c->par.n;
+    for (size_t i = 0; i < n; ++i)
+        memcpy(g->state + i * g->stride, c->state + i * c->stride, c->stride * sizeof(double));
+    memcpy(g->count, c->count, (size_t)L * (size_t)p * sizeof(uint64_t));
+    memcpy(g->nrecv, c->nrecv, (size_t)L * sizeof(uint64_t));
+    *g->nsamp = *c->nsamp;
+    /* level l >= L: the values of level L-1 at receive indices k m^(l-L+1),
+     * pushed in order exactly as pl_mtau_push does (every-m-th rule) */
+    const uint64_t top = c->nrecv[L - 1];
+    uint64_t w = 1;
+    for (int l = L; l < levels; ++l) {
+        w *= (uint64_t)m;
+        uint64_t nr = 0;
+        const int jmin = p / m;
+        for (uint64_t r = 0; r < top; r += w) {
+            const int h = (int)(nr % (uint64_t)p);
+            const int jmax = nr < (uint64_t)(p - 1) ? (int)nr : p - 1;
+            for (size_t i = 0; i < n; ++i) {
+                const double *src = c->state + i * c->stride + (size_t)(L - 1) * lstride + 6 * (size_t)r;
+                double *b = g->state + i * g->stride + (size_t)l * lstride;
+                double v[3] = {src[0], src[1], src[2]};
+                for (int d = 0; d < 3; ++d) b[6 * h + d] = v[d];
+                for (int j = jmin; j <= jmax; ++j) {
+                    int k = h - j < 0 ? h - j + p : h - j;
+                    for (int d = 0; d < 3; ++d) {
+                        if (c->par.kind == PL_MTAU_MSD) {
+                            double u = v[d] - b[6 * k + d];
+                            b[6 * j + 3 + d] += u * u;
+                        } else {
+                            b[6 * j + 3 + d] += v[d] * b[6 * k + d];
+                        }
+                    }
+                }
+            }
+            for (int j = jmin; j <= jmax; ++j) g->count[(size_t)l * (size_t)p + (size_t)j]++;
+            g->nrecv[l] = ++nr;
+        }
+    }
+    *out = g;
+    return PL_OK;
 }
 
 uint64_t pl_mtau_samples(const pl_mtau_t *c)

@@ -42,8 +42,14 @@
  * estimate and SE of each observable are recorded with the wall time spent;
  * the summary extrapolates (SE ~ 1/sqrt(t)) the wall time that
  * observe.target_rel_error would need, flagged when the blocking found no
- * plateau.  A restarted run's observers start afresh: its observables cover
- * the steps of that run (summary "observables.first_step"). */
+ * plateau.
+ *
+ * Restart: the accumulated state is the checkpoint group /observe (section
+ * "checkpoint" below); with the same observe section the observers resume
+ * and cover the whole history since they started (first_step the original
+ * start, fractions of the combined run), with another one, or from a
+ * checkpoint without the group, they start afresh and say so (README
+ * "Observables", restart). */
 #include <hdf5.h>
 #include <jansson.h>
 #include <math.h>
@@ -65,6 +71,7 @@
 #include "peloid/rdf.h"
 #include "peloid/sq.h"
 #include "peloid/vdist.h"
+#include "checkpoint_h5.h"
 
 enum { NFRAC = 4, MSD_P = 16, MSD_M = 2, VD_BINS = 60 };
 static const double fractions[NFRAC] = {0.125, 0.25, 0.5, 1.0};
@@ -149,6 +156,12 @@ typedef struct pl_observe {
     /* error against run time */
     ept_t ept[OB_N][NFRAC];
     int next_frac;
+    /* restart (observe_ckpt_read): the checkpoint's step (-1: none), its
+     * error-against-time points */
+    long long resume_step;
+    int begun;
+    ept_t ept_saved[OB_N][NFRAC];
+    int nept_saved;
 } pl_observe_t;
 
 static int any_observer(const pl_scene_observe_t *o)
@@ -279,6 +292,7 @@ static int observe_create(pl_sim_t *sim, pl_err_t *err)
     if (!o) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the observers");
     for (int k = 0; k < NCV; ++k) pl_blocking_init(&o->cb[k]);
     o->ids_step = -1;
+    o->resume_step = -1;
     pl_blocking_init(&o->s_vb);
     sim->observe = o;
     if (sim->scene.observe.cff_interval > 0 && sim->coupling)
@@ -384,28 +398,37 @@ static int size_classes(pl_observe_t *o, const pl_colloid_t *c, size_t k, int nt
     return 0;
 }
 
+/* The g(r) accumulator, created at its first use (or a restart). */
+static int rdf_ready(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
+{
+    const pl_scene_t *sc = &sim->scene;
+    const pl_colloid_t *c = sim->colloids;
+    pl_rdf_params_t *p = &o->rdf_par;
+    memset(p, 0, sizeof *p);
+    for (int d = 0; d < 3; ++d) p->box[d] = c->box[d];
+    p->z_walls = !c->periodic[2];
+    double rmax_r = 0.0; /* the centres' slab between z walls: [R, Lz - R] */
+    for (size_t i = 0; i < c->n; ++i) rmax_r = fmax(rmax_r, c->rad[i]);
+    p->zlo = rmax_r;
+    p->zhi = c->box[2] - rmax_r;
+    double half = 0.5 * fmin(c->box[0], c->box[1]);
+    if (!p->z_walls) half = fmin(half, 0.5 * c->box[2]);
+    p->rmax = sc->observe.rdf_rmax > 0 ? sc->observe.rdf_rmax : half;
+    p->nbins = (size_t)sc->observe.rdf_bins;
+    p->class_a = p->class_b = -1;
+    return pl_rdf_create(p, sim->nthreads, &o->rdf, err);
+}
+
 static int stage_rdf(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     pl_observe_t *o = ctx;
+    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
     const pl_scene_t *sc = &sim->scene;
     if (sim->step < sc->observe.rdf_start) return 0;
     const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
     if (!o->rdf) {
-        pl_rdf_params_t *p = &o->rdf_par;
-        memset(p, 0, sizeof *p);
-        for (int d = 0; d < 3; ++d) p->box[d] = c->box[d];
-        p->z_walls = !c->periodic[2];
-        double rmax_r = 0.0; /* the centres' slab between z walls: [R, Lz - R] */
-        for (size_t i = 0; i < c->n; ++i) rmax_r = fmax(rmax_r, c->rad[i]);
-        p->zlo = rmax_r;
-        p->zhi = c->box[2] - rmax_r;
-        double half = 0.5 * fmin(c->box[0], c->box[1]);
-        if (!p->z_walls) half = fmin(half, 0.5 * c->box[2]);
-        p->rmax = sc->observe.rdf_rmax > 0 ? sc->observe.rdf_rmax : half;
-        p->nbins = (size_t)sc->observe.rdf_bins;
-        p->class_a = p->class_b = -1;
-        int rc = pl_rdf_create(p, sim->nthreads, &o->rdf, err);
+        int rc = rdf_ready(sim, o, err);
         if (rc) return rc;
     }
     pl_rdf_sample(o->rdf, c->n, c->x, c->y, c->z, NULL);
@@ -418,18 +441,27 @@ static int stage_rdf(pl_sim_t *sim, void *ctx, pl_err_t *err)
     return 0;
 }
 
+static int sq_ready(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
+{
+    const pl_scene_t *sc = &sim->scene;
+    const pl_colloid_t *c = sim->colloids;
+    pl_sq_params_t p = {.qmax = sc->observe.sq_qmax > 0 ? sc->observe.sq_qmax : 4.0 * PL_PI / sc->colloids.radius,
+                        .nbins = (size_t)sc->observe.sq_bins, .nmax = c->n};
+    for (int d = 0; d < 3; ++d) p.box[d] = c->box[d];
+    int rc = pl_sq_create(&p, sim->nthreads, &o->sq, err);
+    return rc;
+}
+
 static int stage_sq(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     pl_observe_t *o = ctx;
+    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
     const pl_scene_t *sc = &sim->scene;
     if (sim->step < sc->observe.sq_start) return 0;
     const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
     if (!o->sq) {
-        pl_sq_params_t p = {.qmax = sc->observe.sq_qmax > 0 ? sc->observe.sq_qmax : 4.0 * PL_PI / sc->colloids.radius,
-                            .nbins = (size_t)sc->observe.sq_bins, .nmax = c->n};
-        for (int d = 0; d < 3; ++d) p.box[d] = c->box[d];
-        int rc = pl_sq_create(&p, sim->nthreads, &o->sq, err);
+        int rc = sq_ready(sim, o, err);
         if (rc) return rc;
     }
     pl_sq_sample(o->sq, c->n, c->x, c->y, c->z);
@@ -440,6 +472,7 @@ static int stage_sq(pl_sim_t *sim, void *ctx, pl_err_t *err)
 static int stage_msd(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     pl_observe_t *o = ctx;
+    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
     const pl_scene_t *sc = &sim->scene;
     if (sim->step < sc->observe.msd_start) return 0;
     const double t0 = omp_get_wtime();
@@ -467,6 +500,7 @@ static int stage_msd(pl_sim_t *sim, void *ctx, pl_err_t *err)
 static int stage_vacf(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     pl_observe_t *o = ctx;
+    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
     const pl_scene_t *sc = &sim->scene;
     if (sim->step < sc->observe.vacf_start) return 0;
     const double t0 = omp_get_wtime();
@@ -489,6 +523,7 @@ static int stage_vacf(pl_sim_t *sim, void *ctx, pl_err_t *err)
 static int stage_cff(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     pl_observe_t *o = ctx;
+    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
     const pl_scene_t *sc = &sim->scene;
     if (sim->step < sc->observe.cff_start || sim->step <= o->first || !sim->coupling || !sim->coupling->cf_mean)
         return 0;
@@ -600,6 +635,7 @@ static int clusters_now(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
 static int stage_clusters(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     pl_observe_t *o = ctx;
+    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
     const pl_scene_t *sc = &sim->scene;
     if (sim->step < sc->observe.clusters_start) return 0;
     const double t0 = omp_get_wtime();
@@ -647,6 +683,7 @@ static void scale_components(double *const out[3], size_t n, const double *const
 static int stage_vdist(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     pl_observe_t *o = ctx;
+    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
     if (sim->step < sim->scene.observe.vdist_start) return 0;
     const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
@@ -690,6 +727,7 @@ static double slice_volume(double zc, double R, double a, double b)
 static int stage_sediment(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     pl_observe_t *o = ctx;
+    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
     const pl_scene_t *sc = &sim->scene;
     if (sim->step < sc->observe.sediment_start) return 0;
     const double t0 = omp_get_wtime();
@@ -705,6 +743,7 @@ static int stage_sediment(pl_sim_t *sim, void *ctx, pl_err_t *err)
         o->s_vz = malloc(o->s_cap * sizeof(double));
         if (!o->s_step || !o->s_phi || !o->s_height || !o->s_vel || !o->s_vz)
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the sedimentation observer");
+        o->s_vel[0] = 0.0; /* no velocity at the first sample (a defined checkpoint byte) */
     }
     if (o->s_n >= o->s_cap) return 0;
     double *phi = o->s_phi + o->s_n * o->s_bins;
@@ -823,6 +862,7 @@ static int stage_error_time(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)err;
     pl_observe_t *o = ctx;
+    if (sim->step == o->resume_step) return 0; /* recorded before the checkpoint */
     while (o->next_frac < NFRAC) {
         const long long at = o->first + (long long)ceil(fractions[o->next_frac] * (double)(o->last - o->first));
         if (sim->step < at) break;
@@ -869,17 +909,26 @@ static const int32_t *traj_ids(void *ctx, long long step, int compute)
     return pl_cluster_ids(o->cl);
 }
 
+static int observe_resume(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err);
+
 /* The run's first state is known when the after-step stages first run; the
  * trajectory (opened after the plan) gets the cluster ids then, before its
  * first frame (the writers' slot follows the observers'). */
 static int stage_begin(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     pl_observe_t *o = ctx;
-    if (o->t_start == 0.0) {
-        o->first = sim->first_step;
+    if (!o->begun) {
+        o->begun = 1;
         o->last = sim->last_step;
-        o->t_start = omp_get_wtime();
         o->sim = sim;
+        if (o->resume_step < 0) {
+            o->first = sim->first_step;
+            o->t_start = omp_get_wtime();
+        } else {
+            o->t_start = omp_get_wtime(); /* no clock reading is checkpointed */
+            int rc = observe_resume(sim, o, err);
+            if (rc) return rc;
+        }
         if (sim->colloid_traj && sim->scene.observe.clusters_interval > 0) {
             int rc = pl_colloid_traj_cluster_ids(sim->colloid_traj, traj_ids, o, err);
             if (rc) return rc;
@@ -1249,6 +1298,10 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
     json_t *all = json_object();
     pl_json_int(&b, all, "first_step", o->first);
     pl_json_int(&b, all, "last_step", sim->step); /* < o->last when the stopping rule ended the run */
+    if (sim->observe_resumed >= 0) { /* a restarted run: resumed from the checkpoint or afresh, and why */
+        pl_json_set(&b, all, "resumed", json_boolean(sim->observe_resumed));
+        if (!sim->observe_resumed) pl_json_str(&b, all, "reason", sim->observe_note);
+    }
     double D, se, tmin, tmax;
     if (o->msd && diffusion(o, &D, &se, &tmin, &tmax)) {
         json_t *e = entry(&b, o, OB_D, D, se, (double)sim->colloids->n, 0.0, 1, o->msd_wall, target, "a0^2/t0");
@@ -1392,10 +1445,360 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
     return b.failed ? err->code : 0;
 }
 
+
+/* ---- checkpoint -------------------------------------------------------- */
+
+/* Group /observe of the checkpoint (src/io/checkpoint_observe.c gives it the
+ * observer fingerprint): everything the observers accumulated, so that a
+ * restarted run's observables equal those of the uninterrupted run bitwise.
+ * The objects are read back as they were (correlators with the levels the
+ * first run planned for); observe_resume, at the restart's first step, sizes
+ * them for the combined run.  Datasets: meta (int64, OCK_* below), the
+ * error-against-time points, then one set per observer present.  No clock
+ * reading is stored (the same state gives the same bytes): after a restart
+ * the wall times (wall_s) count the restarted run's, and the points of
+ * se_vs_time taken over from the first run carry wall_s = 0. */
+enum { OCK_FIRST, OCK_NEXT_FRAC, OCK_MSD, OCK_VACF, OCK_CFF, OCK_RDF, OCK_NCLS, OCK_SQ, OCK_CN, OCK_CHIST,
+       OCK_VD, OCK_SN, OCK_SBINS, OCK_STEP, OCK_N };
+enum { NEPT = OB_N * NFRAC };
+
+static int ck_mtau_write(hid_t g, const char *name, pl_mtau_t *c)
+{
+    char a[64], b[64];
+    snprintf(a, sizeof a, "%s_values", name);
+    snprintf(b, sizeof b, "%s_counters", name);
+    pl_mtau_state_t st = pl_mtau_state(c);
+    return pl_ckpt_write_1d(g, a, H5T_NATIVE_DOUBLE, st.values, st.nvalues) |
+           pl_ckpt_write_1d(g, b, H5T_NATIVE_UINT64, st.counters, st.ncounters);
+}
+
+static int observe_ckpt_write(int64_t file, const pl_sim_t *sim)
+{
+    pl_observe_t *o = sim->observe;
+    if (!o) return 0;
+    hid_t g = pl_ckpt_observe_group_write((hid_t)file, "observe", &sim->scene);
+    if (g < 0) return -1;
+    long long meta[OCK_N] = {o->begun ? o->first : sim->step, o->next_frac,
+                             o->msd ? pl_mtau_levels(o->msd) : 0, o->vacf ? pl_mtau_levels(o->vacf) : 0,
+                             o->cff ? pl_mtau_levels(o->cff) : 0, o->rdf != NULL, (long long)o->ncls, o->sq != NULL,
+                             o->c_step ? (long long)o->c_n : -1, (long long)o->c_hist_len, o->vd[1] != NULL,
+                             o->s_step ? (long long)o->s_n : -1, (long long)o->s_bins, sim->step};
+    long long est[NEPT], eflag[2 * NEPT];
+    double eval[2 * NEPT];
+    for (int k = 0; k < NEPT; ++k) {
+        const ept_t *e = &o->ept[k / NFRAC][k % NFRAC];
+        est[k] = e->step;
+        eflag[2 * k] = e->valid;
+        eflag[2 * k + 1] = e->plateau;
+        eval[2 * k] = e->value;
+        eval[2 * k + 1] = e->se;
+    }
+    int bad = pl_ckpt_write_1d(g, "meta", H5T_NATIVE_LLONG, meta, OCK_N);
+    bad |= pl_ckpt_write_1d(g, "ept_step", H5T_NATIVE_LLONG, est, NEPT);
+    bad |= pl_ckpt_write_1d(g, "ept_flags", H5T_NATIVE_LLONG, eflag, 2 * NEPT);
+    bad |= pl_ckpt_write_1d(g, "ept_values", H5T_NATIVE_DOUBLE, eval, 2 * NEPT);
+    bad |= pl_ckpt_write_1d(g, "cluster_blocking", H5T_NATIVE_UCHAR, o->cb, sizeof o->cb);
+    bad |= pl_ckpt_write_1d(g, "settling_blocking", H5T_NATIVE_UCHAR, &o->s_vb, sizeof o->s_vb);
+    pl_rdf_t *const one[1] = {o->rdf};
+    for (size_t q = 0; q < (o->rdf ? 1 + o->npair : 0); ++q) {
+        pl_rdf_t *r = q ? o->rdfc[q - 1] : one[0];
+        char a[64], b[64];
+        snprintf(a, sizeof a, q ? "rdf_class%zu_counts" : "rdf_counts", q - 1);
+        snprintf(b, sizeof b, q ? "rdf_class%zu_blocking" : "rdf_blocking", q - 1);
+        pl_rdf_state_t st = pl_rdf_state(r);
+        bad |= pl_ckpt_write_1d(g, a, H5T_NATIVE_UINT64, st.counts, st.ncounts);
+        bad |= pl_ckpt_write_1d(g, b, H5T_NATIVE_UCHAR, st.blocking, st.nblocking * sizeof(pl_blocking_t));
+    }
+    if (o->sq) {
+        pl_sq_state_t st = pl_sq_state(o->sq);
+        bad |= pl_ckpt_write_1d(g, "sq_blocking", H5T_NATIVE_UCHAR, st.blocking, st.nblocking * sizeof(pl_blocking_t));
+        bad |= pl_ckpt_write_1d(g, "sq_samples", H5T_NATIVE_UINT64, st.samples, 1);
+    }
+    if (o->msd) bad |= ck_mtau_write(g, "msd", o->msd);
+    if (o->vacf) bad |= ck_mtau_write(g, "vacf", o->vacf);
+    if (o->cff) bad |= ck_mtau_write(g, "cff", o->cff);
+    if (o->c_step) {
+        bad |= pl_ckpt_write_1d(g, "clusters_step", H5T_NATIVE_LLONG, o->c_step, o->c_n);
+        for (int k = 0; k < NCV; ++k) bad |= pl_ckpt_write_1d(g, cv_names[k], H5T_NATIVE_DOUBLE, o->c_val[k], o->c_n);
+        bad |= pl_ckpt_write_1d(g, "cluster_size_hist", H5T_NATIVE_UINT64, o->c_hist, o->c_hist_len);
+    }
+    if (o->vd[1]) {
+        static const char *const vn[2] = {"vdist_fluid", "vdist_colloid"};
+        for (int k = 0; k < 2; ++k) {
+            pl_vdist_state_t st = pl_vdist_state(o->vd[k]);
+            bad |= pl_ckpt_write_1d(g, vn[k], H5T_NATIVE_UINT64, st.counts, st.ncounts);
+        }
+    }
+    if (o->s_step) {
+        bad |= pl_ckpt_write_1d(g, "sediment_step", H5T_NATIVE_LLONG, o->s_step, o->s_n);
+        bad |= pl_ckpt_write_1d(g, "sediment_phi", H5T_NATIVE_DOUBLE, o->s_phi, o->s_n * o->s_bins);
+        bad |= pl_ckpt_write_1d(g, "sediment_height", H5T_NATIVE_DOUBLE, o->s_height, o->s_n);
+        bad |= pl_ckpt_write_1d(g, "sediment_vz", H5T_NATIVE_DOUBLE, o->s_vz, o->s_n);
+        bad |= pl_ckpt_write_1d(g, "sediment_velocity", H5T_NATIVE_DOUBLE, o->s_vel, o->s_n);
+    }
+    if (H5Gclose(g) < 0) bad = 1;
+    return bad ? -1 : 0;
+}
+
+/* A blocking accumulator read from a file: its level count in range (the
+ * result walks nlev levels). */
+static int ck_blocking_ok(const pl_blocking_t *b, size_t n)
+{
+    for (size_t k = 0; k < n; ++k)
+        if (b[k].nlev < 0 || b[k].nlev > PL_BLOCKING_LEVELS) return 0;
+    return 1;
+}
+
+static int ck_blocking_read(hid_t g, const char *name, pl_blocking_t *b, size_t n, const char *path, pl_err_t *err)
+{
+    int rc = pl_ckpt_read_1d(g, name, H5T_NATIVE_UCHAR, b, n * sizeof *b, path, err);
+    if (!rc && !ck_blocking_ok(b, n))
+        rc = pl_err_set(err, PL_ERR_INPUT, "%s: /observe/%s: a blocking level count is out of range (corrupt "
+                                           "checkpoint)", path, name);
+    return rc;
+}
+
+static int ck_mtau_read(hid_t g, const char *name, long long levels, const pl_mtau_params_t *base, pl_mtau_t **c,
+                        const char *path, pl_err_t *err)
+{
+    if (levels < 1 || levels > PL_MTAU_MAX_LEVELS)
+        return pl_err_set(err, PL_ERR_INPUT, "%s: /observe/meta: %s correlator with %lld levels; allowed 1..%d "
+                                             "(corrupt checkpoint)", path, name, levels, PL_MTAU_MAX_LEVELS);
+    pl_mtau_params_t p = *base;
+    p.levels = (int)levels;
+    int rc = pl_mtau_create(&p, c, err);
+    if (rc) return rc;
+    char a[64], b[64];
+    snprintf(a, sizeof a, "%s_values", name);
+    snprintf(b, sizeof b, "%s_counters", name);
+    pl_mtau_state_t st = pl_mtau_state(*c);
+    rc = pl_ckpt_read_1d(g, a, H5T_NATIVE_DOUBLE, st.values, st.nvalues, path, err);
+    if (!rc) rc = pl_ckpt_read_1d(g, b, H5T_NATIVE_UINT64, st.counters, st.ncounters, path, err);
+    return rc;
+}
+
+static int observe_ckpt_read_group(hid_t g, pl_sim_t *sim, pl_observe_t *o, const char *path, pl_err_t *err)
+{
+    const pl_scene_t *sc = &sim->scene;
+    const pl_scene_observe_t *so = &sc->observe;
+    const pl_colloid_t *c = sim->colloids;
+    long long m[OCK_N], est[NEPT], eflag[2 * NEPT];
+    double eval[2 * NEPT];
+    int rc = pl_ckpt_read_1d(g, "meta", H5T_NATIVE_LLONG, m, OCK_N, path, err);
+    if (!rc) rc = pl_ckpt_read_1d(g, "ept_step", H5T_NATIVE_LLONG, est, NEPT, path, err);
+    if (!rc) rc = pl_ckpt_read_1d(g, "ept_flags", H5T_NATIVE_LLONG, eflag, 2 * NEPT, path, err);
+    if (!rc) rc = pl_ckpt_read_1d(g, "ept_values", H5T_NATIVE_DOUBLE, eval, 2 * NEPT, path, err);
+    if (rc) return rc;
+    /* what the observe section allows (the fingerprint matched, so only a
+     * corrupt file has more) */
+    const char *why = m[OCK_STEP] != sim->step ? "step differs from the checkpoint's"
+                      : m[OCK_FIRST] < 0 || m[OCK_FIRST] > sim->step ? "first step out of range"
+                      : m[OCK_NEXT_FRAC] < 0 || m[OCK_NEXT_FRAC] > NFRAC ? "next_frac out of range"
+                      : (m[OCK_MSD] && so->msd_interval <= 0) || (m[OCK_VACF] && so->vacf_interval <= 0) ||
+                                (m[OCK_CFF] && so->cff_interval <= 0) || (m[OCK_RDF] && so->rdf_interval <= 0) ||
+                                (m[OCK_SQ] && so->sq_interval <= 0) || (m[OCK_VD] && so->vdist_interval <= 0) ||
+                                (m[OCK_CN] >= 0 && so->clusters_interval <= 0) ||
+                                (m[OCK_SN] >= 0 && so->sediment_interval <= 0)
+                          ? "an observer the scene does not switch on"
+                      : m[OCK_NCLS] != 0 && (!m[OCK_RDF] || m[OCK_NCLS] != so->rdf_size_classes)
+                          ? "size classes differ from observe.rdf_size_classes"
+                      : m[OCK_CN] >= 0 && (m[OCK_CN] > sim->step + 1 || m[OCK_CHIST] != (long long)c->n + 1)
+                          ? "cluster series or size distribution of the wrong length"
+                      : m[OCK_SN] >= 0 && (m[OCK_SN] > sim->step + 1 ||
+                                           m[OCK_SBINS] != (so->sediment_bins > 0 ? so->sediment_bins
+                                                                                  : (long long)c->box[2]))
+                          ? "sedimentation series or bins of the wrong length"
+                          : NULL;
+    if (why) return pl_err_set(err, PL_ERR_INPUT, "%s: /observe/meta: %s (corrupt checkpoint)", path, why);
+    for (int k = 0; k < NEPT; ++k) {
+        ept_t *e = &o->ept_saved[k / NFRAC][k % NFRAC];
+        e->step = est[k];
+        e->valid = (int)eflag[2 * k];
+        e->plateau = (int)eflag[2 * k + 1];
+        e->wall_s = 0.0; /* no clock reading is checkpointed */
+        e->value = eval[2 * k];
+        e->se = eval[2 * k + 1];
+    }
+    o->nept_saved = (int)m[OCK_NEXT_FRAC];
+    if ((rc = ck_blocking_read(g, "cluster_blocking", o->cb, NCV, path, err))) return rc;
+    if ((rc = ck_blocking_read(g, "settling_blocking", &o->s_vb, 1, path, err))) return rc;
+    if (m[OCK_RDF]) {
+        if ((rc = rdf_ready(sim, o, err))) return rc;
+        if (m[OCK_NCLS] && (rc = size_classes(o, c, (size_t)m[OCK_NCLS], sim->nthreads, err))) return rc;
+        for (size_t q = 0; q < 1 + o->npair; ++q) {
+            pl_rdf_state_t st = pl_rdf_state(q ? o->rdfc[q - 1] : o->rdf);
+            char a[64], b[64];
+            snprintf(a, sizeof a, q ? "rdf_class%zu_counts" : "rdf_counts", q - 1);
+            snprintf(b, sizeof b, q ? "rdf_class%zu_blocking" : "rdf_blocking", q - 1);
+            if ((rc = pl_ckpt_read_1d(g, a, H5T_NATIVE_UINT64, st.counts, st.ncounts, path, err))) return rc;
+            if ((rc = ck_blocking_read(g, b, st.blocking, st.nblocking, path, err))) return rc;
+        }
+    }
+    if (m[OCK_SQ]) {
+        if ((rc = sq_ready(sim, o, err))) return rc;
+        pl_sq_state_t st = pl_sq_state(o->sq);
+        if ((rc = ck_blocking_read(g, "sq_blocking", st.blocking, st.nblocking, path, err))) return rc;
+        if ((rc = pl_ckpt_read_1d(g, "sq_samples", H5T_NATIVE_UINT64, st.samples, 1, path, err))) return rc;
+    }
+    pl_mtau_params_t base = {.n = c->n, .p = MSD_P, .m = MSD_M, .kind = PL_MTAU_MSD, .average = 0};
+    if (m[OCK_MSD]) {
+        o->msd_dt = base.dt = (double)so->msd_interval * sc->srd.dt;
+        if ((rc = ck_mtau_read(g, "msd", m[OCK_MSD], &base, &o->msd, path, err))) return rc;
+        for (int d = 0; d < 3; ++d)
+            if (!(o->u[d] = malloc(c->n * sizeof(double))))
+                return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the MSD observer");
+    }
+    base.kind = PL_MTAU_AUTO;
+    if (m[OCK_VACF]) {
+        o->vacf_dt = base.dt = (double)so->vacf_interval * sc->srd.dt;
+        if ((rc = ck_mtau_read(g, "vacf", m[OCK_VACF], &base, &o->vacf, path, err))) return rc;
+    }
+    if (m[OCK_CFF]) {
+        o->cff_dt = base.dt = (double)so->cff_interval * sc->srd.dt;
+        if ((rc = ck_mtau_read(g, "cff", m[OCK_CFF], &base, &o->cff, path, err))) return rc;
+    }
+    if (m[OCK_CN] >= 0) {
+        o->c_n = (size_t)m[OCK_CN];
+        o->c_cap = o->c_n ? o->c_n : 1;
+        o->c_step = malloc(o->c_cap * sizeof *o->c_step);
+        int oom = !o->c_step;
+        for (int k = 0; k < NCV; ++k) oom |= !(o->c_val[k] = malloc(o->c_cap * sizeof(double)));
+        o->c_hist_len = c->n + 1;
+        o->c_hist = calloc(o->c_hist_len, sizeof *o->c_hist);
+        if (oom || !o->c_hist) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cluster observer");
+        if ((rc = pl_ckpt_read_1d(g, "clusters_step", H5T_NATIVE_LLONG, o->c_step, o->c_n, path, err))) return rc;
+        for (int k = 0; k < NCV; ++k)
+            if ((rc = pl_ckpt_read_1d(g, cv_names[k], H5T_NATIVE_DOUBLE, o->c_val[k], o->c_n, path, err))) return rc;
+        if ((rc = pl_ckpt_read_1d(g, "cluster_size_hist", H5T_NATIVE_UINT64, o->c_hist, o->c_hist_len, path, err)))
+            return rc;
+        if ((rc = clusters_ready(sim, o, err))) return rc;
+    }
+    if (m[OCK_VD]) {
+        pl_vdist_params_t p = {.nbins = VD_BINS, .vmax = 4.0};
+        static const char *const vn[2] = {"vdist_fluid", "vdist_colloid"};
+        for (int k = 0; k < 2; ++k) {
+            if ((rc = pl_vdist_create(&p, &o->vd[k], err))) return rc;
+            pl_vdist_state_t st = pl_vdist_state(o->vd[k]);
+            if ((rc = pl_ckpt_read_1d(g, vn[k], H5T_NATIVE_UINT64, st.counts, st.ncounts, path, err))) return rc;
+        }
+        o->vs_n = sim->fluid.n > c->n ? sim->fluid.n : c->n;
+        for (int d = 0; d < 3; ++d)
+            if (!(o->vs[d] = malloc(o->vs_n * sizeof(double))))
+                return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the velocity-distribution observer");
+    }
+    if (m[OCK_SN] >= 0) {
+        o->s_n = (size_t)m[OCK_SN];
+        o->s_bins = (size_t)m[OCK_SBINS];
+        o->s_cap = o->s_n ? o->s_n : 1;
+        o->s_step = malloc(o->s_cap * sizeof *o->s_step);
+        o->s_phi = calloc(o->s_cap * o->s_bins, sizeof(double));
+        o->s_height = malloc(o->s_cap * sizeof(double));
+        o->s_vel = calloc(o->s_cap, sizeof(double));
+        o->s_vz = malloc(o->s_cap * sizeof(double));
+        if (!o->s_step || !o->s_phi || !o->s_height || !o->s_vel || !o->s_vz)
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the sedimentation observer");
+        if ((rc = pl_ckpt_read_1d(g, "sediment_step", H5T_NATIVE_LLONG, o->s_step, o->s_n, path, err)) ||
+            (rc = pl_ckpt_read_1d(g, "sediment_phi", H5T_NATIVE_DOUBLE, o->s_phi, o->s_n * o->s_bins, path, err)) ||
+            (rc = pl_ckpt_read_1d(g, "sediment_height", H5T_NATIVE_DOUBLE, o->s_height, o->s_n, path, err)) ||
+            (rc = pl_ckpt_read_1d(g, "sediment_vz", H5T_NATIVE_DOUBLE, o->s_vz, o->s_n, path, err)) ||
+            (rc = pl_ckpt_read_1d(g, "sediment_velocity", H5T_NATIVE_DOUBLE, o->s_vel, o->s_n, path, err)))
+            return rc;
+    }
+    o->first = m[OCK_FIRST];
+    o->resume_step = sim->step;
+    return 0;
+}
+
+/* The observers' state from group /observe; without the group, or with
+ * another observe section, they start afresh (sim->observe_note). */
+static int observe_ckpt_read(int64_t file, pl_sim_t *sim, const char *path, pl_err_t *err)
+{
+    pl_observe_t *o = sim->observe;
+    if (!o) return 0;
+    hid_t g = pl_ckpt_observe_group_open((hid_t)file, "observe", sim);
+    if (g < 0) return 0;
+    int rc = observe_ckpt_read_group(g, sim, o, path, err);
+    H5Gclose(g);
+    return rc;
+}
+
+/* Grows a series buffer from n to cap elements of size sz (new part zero). */
+static int grow_buf(void **p, size_t n, size_t cap, size_t sz)
+{
+    void *q = realloc(*p, cap * sz);
+    if (!q) return -1;
+    memset((char *)q + n * sz, 0, (cap - n) * sz);
+    *p = q;
+    return 0;
+}
+
+/* At the restarted run's first step (its last step now known): the
+ * correlators get the levels and the series the room the combined run needs
+ * (what an uninterrupted run would have created: pl_mtau_grow), and the
+ * error-against-time points are those of the combined run from o->first to
+ * o->last: a point the first run recorded at that step is taken over, one it
+ * did not record (its step fell between the first run's fractions) is left
+ * out of se_vs_time. */
+static int observe_resume(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
+{
+    const pl_scene_observe_t *so = &sim->scene.observe;
+    pl_mtau_t **cs[3] = {&o->msd, &o->vacf, &o->cff};
+    const long long st[3] = {so->msd_start, so->vacf_start, so->cff_start};
+    const long long iv[3] = {so->msd_interval, so->vacf_interval, so->cff_interval};
+    for (int k = 0; k < 3; ++k) {
+        if (!*cs[k]) continue;
+        const int need = pl_mtau_levels_for(expected_samples(o, st[k], iv[k]), MSD_P, MSD_M);
+        if (need <= pl_mtau_levels(*cs[k])) continue;
+        pl_mtau_t *g;
+        int rc = pl_mtau_grow(*cs[k], need, &g, err);
+        if (rc) return rc;
+        pl_mtau_free(*cs[k]);
+        *cs[k] = g;
+    }
+    if (o->c_step) {
+        const size_t cap = expected_samples(o, so->clusters_start, so->clusters_interval);
+        if (cap > o->c_cap) {
+            int bad = grow_buf((void **)&o->c_step, o->c_n, cap, sizeof *o->c_step);
+            for (int k = 0; k < NCV; ++k) bad |= grow_buf((void **)&o->c_val[k], o->c_n, cap, sizeof(double));
+            if (bad) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cluster observer");
+            o->c_cap = cap;
+        }
+    }
+    if (o->s_step) {
+        const size_t cap = expected_samples(o, so->sediment_start, so->sediment_interval);
+        if (cap > o->s_cap) {
+            int bad = grow_buf((void **)&o->s_step, o->s_n, cap, sizeof *o->s_step);
+            bad |= grow_buf((void **)&o->s_phi, o->s_n * o->s_bins, cap * o->s_bins, sizeof(double));
+            bad |= grow_buf((void **)&o->s_height, o->s_n, cap, sizeof(double));
+            bad |= grow_buf((void **)&o->s_vel, o->s_n, cap, sizeof(double));
+            bad |= grow_buf((void **)&o->s_vz, o->s_n, cap, sizeof(double));
+            if (bad) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the sedimentation observer");
+            o->s_cap = cap;
+        }
+    }
+    memset(o->ept, 0, sizeof o->ept);
+    o->next_frac = NFRAC;
+    for (int k = NFRAC - 1; k >= 0; --k) {
+        const long long at = o->first + (long long)ceil(fractions[k] * (double)(o->last - o->first));
+        if (at > o->resume_step) {
+            o->next_frac = k;
+            continue;
+        }
+        for (int j = 0; j < o->nept_saved; ++j)
+            if (o->ept_saved[0][j].step == at) {
+                for (int ob = 0; ob < OB_N; ++ob) o->ept[ob][k] = o->ept_saved[ob][j];
+                break;
+            }
+    }
+    return 0;
+}
+
 const pl_module_t pl_observe_module = {
     .name = "observe",
     .create = observe_create,
     .destroy = observe_destroy,
     .add_stages = observe_stages,
     .finish = observe_finish,
+    .checkpoint_write = observe_ckpt_write,
+    .checkpoint_read = observe_ckpt_read,
 };

@@ -155,6 +155,11 @@ void pl_sq_result(const pl_sq_t *s, double *qmid, double *qmean, double *S, doub
     }
 }
 
+pl_sq_state_t pl_sq_state(pl_sq_t *s)
+{
+    return (pl_sq_state_t){.blocking = s->blk, .nblocking = s->par.nbins, .samples = &s->samples};
+}
+
 uint64_t pl_sq_samples(const pl_sq_t *s)
 {
     return s->samples;

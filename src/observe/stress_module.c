@@ -66,6 +66,7 @@
 #include "json_build.h"
 #include "observables_out.h"
 #include "peloid/blocking.h"
+#include "checkpoint_h5.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
 #include "peloid/module.h"
@@ -108,7 +109,13 @@ typedef struct pl_stress {
     pl_blocking_t sigma, rate;
     double *ts_sigma, *ts_rate; /* per sample: mean stress since the last, slope */
     double *ts_prof;            /* per sample: nlayers layer means of v . e, then nlayers densities */
+    /* restart (stress_ckpt_read): the checkpoint's step (-1: none) */
+    long long resume_step;
+    int begun, have_first, nept_saved;
+    pl_obs_point_t ept_saved[NFRAC];
 } pl_stress_t;
+
+static void stress_begin(pl_stress_t *o, const pl_sim_t *sim, double t0);
 
 static pl_stress_t *stress_of(const pl_sim_t *sim);
 
@@ -188,6 +195,7 @@ static int stress_create(pl_sim_t *sim, pl_err_t *err)
         free(o);
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress observer");
     }
+    o->resume_step = -1;
     pl_blocking_init(&o->eta);
     pl_blocking_init(&o->pressure);
     pl_blocking_init(&o->sigma);
@@ -275,11 +283,7 @@ static int stage_post(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_stress_t *o = ctx;
     if (!o->have_pre) return 0;
     const double t0 = omp_get_wtime();
-    if (o->t_start == 0.0) {
-        o->first = sim->first_step;
-        o->last = sim->last_step;
-        o->t_start = t0;
-    }
+    if (!o->begun) stress_begin(o, sim, t0);
     double post[PL_STRESS_NSUMS];
     pl_srd_stress_sums(&sim->fluid, sim->grid.shift, o->scratch, post, sim->nthreads);
     o->have_pre = 0;
@@ -373,12 +377,12 @@ static int stage_couette(pl_sim_t *sim, void *ctx, pl_err_t *err)
     const double t0 = omp_get_wtime();
     double imp[2];
     wall_impulse_along(sim, o->e, imp);
+    if (sim->step == o->resume_step && o->t_start != 0.0) { /* sampled before the checkpoint */
+        stress_begin(o, sim, t0);
+        return 0;
+    }
     if (sim->step < sim->scene.observe.stress_start || o->t_start == 0.0) { /* the reference of the first step */
-        if (sim->step >= sim->scene.observe.stress_start) {
-            o->first = sim->first_step;
-            o->last = sim->last_step;
-            o->t_start = t0;
-        }
+        if (sim->step >= sim->scene.observe.stress_start) stress_begin(o, sim, t0);
         o->imp_prev[0] = imp[0];
         o->imp_prev[1] = imp[1];
         return 0;
@@ -625,6 +629,10 @@ static int stress_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *
         all = json_object();
         pl_json_int(&b, all, "first_step", o->first);
         pl_json_int(&b, all, "last_step", sim->step);
+        if (sim->observe_resumed >= 0) {
+            pl_json_set(&b, all, "resumed", json_boolean(sim->observe_resumed));
+            if (!sim->observe_resumed) pl_json_str(&b, all, "reason", sim->observe_note);
+        }
         pl_json_set(&b, doc, "observables", all);
     }
     const pl_scene_t *sc = &sim->scene;
@@ -672,10 +680,178 @@ static int stress_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *
     return b.failed ? err->code : 0;
 }
 
+
+/* ---- checkpoint -------------------------------------------------------- */
+
+/* The first sample of a run: the run's bounds and, after a restart, the
+ * error-against-time points of the combined run o->first..o->last (the rule
+ * of the observer module: a point the first run recorded at that step is
+ * taken over, one it did not is left out). */
+static void stress_begin(pl_stress_t *o, const pl_sim_t *sim, double t0)
+{
+    o->begun = 1;
+    if (!o->have_first) {
+        o->first = sim->first_step;
+        o->have_first = 1;
+    }
+    o->last = sim->last_step;
+    if (o->t_start == 0.0) o->t_start = t0;
+    if (o->resume_step < 0) return;
+    memset(o->ept, 0, sizeof o->ept);
+    o->next_frac = NFRAC;
+    for (int k = NFRAC - 1; k >= 0; --k) {
+        const long long at = o->first + (long long)ceil(pl_obs_fractions[k] * (double)(o->last - o->first));
+        if (at > o->resume_step) {
+            o->next_frac = k;
+            continue;
+        }
+        for (int j = 0; j < o->nept_saved; ++j)
+            if (o->ept_saved[j].step == at) {
+                o->ept[k] = o->ept_saved[j];
+                break;
+            }
+    }
+}
+
+/* Group /stress (src/io/checkpoint_observe.c gives it the observer
+ * fingerprint): meta (int64, SCK_* below), reals (the output window, the
+ * last wall impulse; no clock reading, as in /observe), the Green-Kubo ring and correlation sums,
+ * the blocking accumulators, the error-against-time points, the time series. */
+enum { SCK_FIRST, SCK_STARTED, SCK_NEXT_FRAC, SCK_RING_HEAD, SCK_RING_N, SCK_NCORR, SCK_WIN_N, SCK_TS_N, SCK_K,
+       SCK_NLAYERS, SCK_COUETTE, SCK_STEP, SCK_N };
+
+static int stress_ckpt_write(int64_t file, const pl_sim_t *sim)
+{
+    const pl_stress_t *o = stress_of(sim);
+    if (!o) return 0;
+    hid_t g = pl_ckpt_observe_group_write((hid_t)file, "stress", &sim->scene);
+    if (g < 0) return -1;
+    const int started = o->t_start != 0.0;
+    long long meta[SCK_N] = {o->have_first ? o->first : sim->first_step, started, o->next_frac, o->ring_head,
+                             o->ring_n, (long long)o->ncorr, o->win_n, (long long)o->ts_n, o->K, o->nlayers,
+                             o->couette, sim->step};
+    double re[11];
+    memcpy(re, o->win, sizeof o->win);
+    re[9] = o->imp_prev[0];
+    re[10] = o->imp_prev[1];
+    pl_blocking_t bl[4] = {o->eta, o->pressure, o->sigma, o->rate};
+    long long est[2 * NFRAC];
+    double eval[2 * NFRAC];
+    for (int k = 0; k < NFRAC; ++k) {
+        est[2 * k] = o->ept[k].step;
+        est[2 * k + 1] = o->ept[k].valid;
+        eval[2 * k] = o->ept[k].value;
+        eval[2 * k + 1] = o->ept[k].se;
+    }
+    int bad = pl_ckpt_write_1d(g, "meta", H5T_NATIVE_LLONG, meta, SCK_N);
+    bad |= pl_ckpt_write_1d(g, "reals", H5T_NATIVE_DOUBLE, re, 11);
+    bad |= pl_ckpt_write_1d(g, "ring", H5T_NATIVE_DOUBLE, o->ring, (size_t)o->K * NOFF);
+    bad |= pl_ckpt_write_1d(g, "correlation", H5T_NATIVE_DOUBLE, o->cacc, (size_t)o->K + 1);
+    bad |= pl_ckpt_write_1d(g, "blocking", H5T_NATIVE_UCHAR, bl, sizeof bl);
+    bad |= pl_ckpt_write_1d(g, "ept_step", H5T_NATIVE_LLONG, est, 2 * NFRAC);
+    bad |= pl_ckpt_write_1d(g, "ept_values", H5T_NATIVE_DOUBLE, eval, 2 * NFRAC);
+    bad |= pl_ckpt_write_1d(g, "series_step", H5T_NATIVE_LLONG, o->ts_step, o->ts_n);
+    if (!o->couette) {
+        bad |= pl_ckpt_write_1d(g, "series_pressure", H5T_NATIVE_DOUBLE, o->ts_val, 9 * o->ts_n);
+    } else {
+        bad |= pl_ckpt_write_1d(g, "series_sigma", H5T_NATIVE_DOUBLE, o->ts_sigma, o->ts_n);
+        bad |= pl_ckpt_write_1d(g, "series_rate", H5T_NATIVE_DOUBLE, o->ts_rate, o->ts_n);
+        bad |= pl_ckpt_write_1d(g, "series_profiles", H5T_NATIVE_DOUBLE, o->ts_prof,
+                                2 * (size_t)o->nlayers * o->ts_n);
+    }
+    if (H5Gclose(g) < 0) bad = 1;
+    return bad ? -1 : 0;
+}
+
+static int stress_ckpt_read_group(hid_t g, pl_sim_t *sim, pl_stress_t *o, const char *path, pl_err_t *err)
+{
+    long long m[SCK_N], est[2 * NFRAC];
+    double re[11], eval[2 * NFRAC];
+    pl_blocking_t bl[4];
+    int rc = pl_ckpt_read_1d(g, "meta", H5T_NATIVE_LLONG, m, SCK_N, path, err);
+    if (rc) return rc;
+    const char *why = m[SCK_STEP] != sim->step ? "step differs from the checkpoint's"
+                      : m[SCK_K] != o->K ? "Green-Kubo lags differ"
+                      : m[SCK_COUETTE] != o->couette || m[SCK_NLAYERS] != o->nlayers ? "another geometry"
+                      : m[SCK_FIRST] < 0 || m[SCK_FIRST] > sim->step ? "first step out of range"
+                      : m[SCK_NEXT_FRAC] < 0 || m[SCK_NEXT_FRAC] > NFRAC ? "next_frac out of range"
+                      : m[SCK_RING_HEAD] < 0 || m[SCK_RING_HEAD] >= o->K ? "ring head out of range"
+                      : m[SCK_RING_N] < 0 || m[SCK_NCORR] < 0 || m[SCK_WIN_N] < 0 ? "negative count"
+                      : m[SCK_TS_N] < 0 || m[SCK_TS_N] > sim->step + 1 ? "series length out of range"
+                          : NULL;
+    if (why) return pl_err_set(err, PL_ERR_INPUT, "%s: /stress/meta: %s (corrupt checkpoint)", path, why);
+    const size_t n = (size_t)m[SCK_TS_N], cap = n > 64 ? n : 64;
+    if ((rc = pl_ckpt_read_1d(g, "reals", H5T_NATIVE_DOUBLE, re, 11, path, err)) ||
+        (rc = pl_ckpt_read_1d(g, "ring", H5T_NATIVE_DOUBLE, o->ring, (size_t)o->K * NOFF, path, err)) ||
+        (rc = pl_ckpt_read_1d(g, "correlation", H5T_NATIVE_DOUBLE, o->cacc, (size_t)o->K + 1, path, err)) ||
+        (rc = pl_ckpt_read_1d(g, "blocking", H5T_NATIVE_UCHAR, bl, sizeof bl, path, err)) ||
+        (rc = pl_ckpt_read_1d(g, "ept_step", H5T_NATIVE_LLONG, est, 2 * NFRAC, path, err)) ||
+        (rc = pl_ckpt_read_1d(g, "ept_values", H5T_NATIVE_DOUBLE, eval, 2 * NFRAC, path, err)))
+        return rc;
+    for (int k = 0; k < 4; ++k)
+        if (bl[k].nlev < 0 || bl[k].nlev > PL_BLOCKING_LEVELS)
+            return pl_err_set(err, PL_ERR_INPUT, "%s: /stress/blocking: a level count is out of range (corrupt "
+                                                 "checkpoint)", path);
+    o->ts_step = malloc(cap * sizeof *o->ts_step);
+    if (!o->ts_step) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress time series");
+    if ((rc = pl_ckpt_read_1d(g, "series_step", H5T_NATIVE_LLONG, o->ts_step, n, path, err))) return rc;
+    if (!o->couette) {
+        if (!(o->ts_val = malloc(cap * 9 * sizeof(double))))
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress time series");
+        if ((rc = pl_ckpt_read_1d(g, "series_pressure", H5T_NATIVE_DOUBLE, o->ts_val, 9 * n, path, err))) return rc;
+    } else {
+        o->ts_sigma = malloc(cap * sizeof(double));
+        o->ts_rate = malloc(cap * sizeof(double));
+        o->ts_prof = malloc(cap * 2 * (size_t)o->nlayers * sizeof(double));
+        if (!o->ts_sigma || !o->ts_rate || !o->ts_prof)
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress time series");
+        if ((rc = pl_ckpt_read_1d(g, "series_sigma", H5T_NATIVE_DOUBLE, o->ts_sigma, n, path, err)) ||
+            (rc = pl_ckpt_read_1d(g, "series_rate", H5T_NATIVE_DOUBLE, o->ts_rate, n, path, err)) ||
+            (rc = pl_ckpt_read_1d(g, "series_profiles", H5T_NATIVE_DOUBLE, o->ts_prof, 2 * (size_t)o->nlayers * n,
+                                  path, err)))
+            return rc;
+    }
+    o->ts_n = n;
+    o->ts_cap = cap;
+    o->eta = bl[0], o->pressure = bl[1], o->sigma = bl[2], o->rate = bl[3];
+    memcpy(o->win, re, sizeof o->win);
+    o->imp_prev[0] = re[9];
+    o->imp_prev[1] = re[10];
+    if (m[SCK_STARTED]) o->t_start = omp_get_wtime(); /* no clock reading is checkpointed: wall_s counts from here */
+    o->first = m[SCK_FIRST];
+    o->have_first = 1;
+    o->next_frac = (int)m[SCK_NEXT_FRAC];
+    o->nept_saved = (int)m[SCK_NEXT_FRAC];
+    for (int k = 0; k < NFRAC; ++k) {
+        o->ept_saved[k] = (pl_obs_point_t){.step = est[2 * k], .valid = (int)est[2 * k + 1], .wall_s = 0.0,
+                                         .value = eval[2 * k], .se = eval[2 * k + 1]};
+        o->ept[k] = o->ept_saved[k];
+    }
+    o->ring_head = (int)m[SCK_RING_HEAD];
+    o->ring_n = m[SCK_RING_N];
+    o->ncorr = (uint64_t)m[SCK_NCORR];
+    o->win_n = m[SCK_WIN_N];
+    o->resume_step = sim->step;
+    return 0;
+}
+
+static int stress_ckpt_read(int64_t file, pl_sim_t *sim, const char *path, pl_err_t *err)
+{
+    pl_stress_t *o = stress_of(sim);
+    if (!o) return 0;
+    hid_t g = pl_ckpt_observe_group_open((hid_t)file, "stress", sim);
+    if (g < 0) return 0;
+    int rc = stress_ckpt_read_group(g, sim, o, path, err);
+    H5Gclose(g);
+    return rc;
+}
+
 const pl_module_t pl_stress_module = {
     .name = "stress",
     .create = stress_create,
     .destroy = stress_destroy,
     .add_stages = stress_stages,
     .finish = stress_finish,
+    .checkpoint_write = stress_ckpt_write,
+    .checkpoint_read = stress_ckpt_read,
 };

@@ -294,6 +294,7 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     if (log)
         fprintf(log, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/\n",
                 scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
+    if (log && sim->observe_resumed == 0) fprintf(log, "peloid: %s\n", sim->observe_note);
     if (log && sim->colloids && (sim->colloids->pair.terms & PL_CT_DLVO)) {
         const pl_colloid_dlvo_info_t *d = &sim->colloids->dlvo;
         char bar[64] = "none", sec[64] = "none"; /* NaN: the potential has no barrier / secondary minimum */

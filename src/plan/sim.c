@@ -69,6 +69,7 @@ static void bind_threads(int nthreads)
 int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_t *err)
 {
     pl_sim_t *sim = calloc(1, sizeof *sim);
+    if (sim) sim->observe_resumed = -1;
     if (!sim) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
     sim->scene = *scene;
     sim->nthreads = nthreads > 0 ? nthreads : omp_get_max_threads();
