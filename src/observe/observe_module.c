@@ -59,6 +59,7 @@
 
 #include "peloid/real.h" /* PL_PI */
 #include "json_build.h"
+#include "observables_out.h"
 #include "peloid/blocking.h"
 #include "peloid/cluster.h"
 #include "peloid/colloid.h"
@@ -73,8 +74,8 @@
 #include "peloid/vdist.h"
 #include "checkpoint_h5.h"
 
-enum { NFRAC = 4, MSD_P = 16, MSD_M = 2, VD_BINS = 60 };
-static const double fractions[NFRAC] = {0.125, 0.25, 0.5, 1.0};
+enum { NFRAC = PL_OBS_NFRAC, MSD_P = 16, MSD_M = 2, VD_BINS = 60 };
+#define fractions pl_obs_fractions
 
 /* Observables of the error-against-time report. */
 enum { OB_D, OB_RDF_PEAK, OB_NCLUSTERS, OB_LARGEST, OB_MEANSIZE, OB_SETTLING, OB_BONDS, OB_BONDS_PRIMARY,
@@ -97,11 +98,7 @@ typedef struct {
     double ec, barrier;
 } ebond_t;
 
-typedef struct {
-    long long step;
-    double wall_s, value, se;
-    int valid, plateau;
-} ept_t;
+typedef pl_obs_point_t ept_t; /* an estimate at a run fraction (observables_out.h) */
 
 typedef struct pl_observe {
     long long first, last; /* the run's steps */
@@ -994,36 +991,7 @@ static void observe_stages(pl_sim_t *sim)
 
 /* ---- outputs ----------------------------------------------------------- */
 
-/* Dataset with a unit attribute (H5MD); 0 or -1. */
-static int put(hid_t g, const char *name, hid_t type, int rank, const hsize_t *dims, const void *data,
-               const char *unit)
-{
-    if (pl_h5_write(g, name, type, rank, dims, data)) return -1;
-    if (!unit) return 0;
-    hid_t ds = H5Dopen2(g, name, H5P_DEFAULT);
-    if (ds < 0) return -1;
-    int bad = pl_h5_attr_str(ds, "unit", unit);
-    if (H5Dclose(ds) < 0) bad = -1;
-    return bad;
-}
 
-/* An H5MD time series group /observables/<name> with step, time, value. */
-static int series(hid_t obs, const char *name, size_t n, const long long *step, double dt, const double *value,
-                  const char *unit)
-{
-    hid_t g = pl_h5_group(obs, name);
-    if (g < 0) return -1;
-    double *t = malloc((n ? n : 1) * sizeof(double));
-    int bad = !t;
-    for (size_t k = 0; t && k < n; ++k) t[k] = (double)step[k] * dt;
-    hsize_t dims[1] = {n};
-    bad |= put(g, "step", H5T_NATIVE_LLONG, 1, dims, step, NULL) != 0;
-    bad |= t && put(g, "time", H5T_NATIVE_DOUBLE, 1, dims, t, "t0") != 0;
-    bad |= put(g, "value", H5T_NATIVE_DOUBLE, 1, dims, value, unit) != 0;
-    free(t);
-    if (H5Gclose(g) < 0) bad = 1;
-    return bad ? -1 : 0;
-}
 
 /* /observables/<name>/{lag, origins, value, value_se} of a multiple-tau
  * correlator, the lags with at least one origin; 0 or -1. */
@@ -1042,10 +1010,10 @@ static int write_mtau(hid_t obs, const char *name, const pl_mtau_t *c, const cha
         for (size_t k = 0; k < n * PL_MTAU_COLS; ++k)
             if (!isfinite(se[k])) se[k] = 0.0; /* one colloid: no spread */
         hsize_t d1[1] = {n}, d2[2] = {n, PL_MTAU_COLS};
-        bad |= put(g, "lag", H5T_NATIVE_DOUBLE, 1, d1, lag, "t0") != 0;
-        bad |= put(g, "origins", H5T_NATIVE_UINT64, 1, d1, org, NULL) != 0;
-        bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, val, unit) != 0;
-        bad |= put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, se, unit) != 0;
+        bad |= pl_obs_put(g, "lag", H5T_NATIVE_DOUBLE, 1, d1, lag, "t0") != 0;
+        bad |= pl_obs_put(g, "origins", H5T_NATIVE_UINT64, 1, d1, org, NULL) != 0;
+        bad |= pl_obs_put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, val, unit) != 0;
+        bad |= pl_obs_put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, se, unit) != 0;
         bad |= pl_h5_attr_str(g, "columns", "x y z sum") != 0;
     }
     if (g >= 0 && H5Gclose(g) < 0) bad = 1;
@@ -1078,15 +1046,15 @@ static int write_rdf(hid_t obs, const char *name, const pl_sim_t *sim, const pl_
         hsize_t d1[1] = {nb}, d2[2] = {1, nb}, d3[3] = {1, np, nb}, one[1] = {1};
         long long st = sim->step;
         double t = (double)st * sc->srd.dt;
-        bad |= put(g, "r", H5T_NATIVE_DOUBLE, 1, d1, rr, "a0") != 0;
-        bad |= put(g, "r_over_R", H5T_NATIVE_DOUBLE, 1, d1, rR, "R") != 0;
-        if (sc->mapping.enabled) bad |= put(g, "r_um", H5T_NATIVE_DOUBLE, 1, d1, rum, "um") != 0;
-        bad |= put(g, "value", H5T_NATIVE_DOUBLE, np > 1 ? 3 : 2, np > 1 ? d3 : d2, val, "1") != 0;
-        bad |= put(g, "value_se", H5T_NATIVE_DOUBLE, np > 1 ? 3 : 2, np > 1 ? d3 : d2, se, "1") != 0;
-        bad |= put(g, "step", H5T_NATIVE_LLONG, 1, one, &st, NULL) != 0;
-        bad |= put(g, "time", H5T_NATIVE_DOUBLE, 1, one, &t, "t0") != 0;
+        bad |= pl_obs_put(g, "r", H5T_NATIVE_DOUBLE, 1, d1, rr, "a0") != 0;
+        bad |= pl_obs_put(g, "r_over_R", H5T_NATIVE_DOUBLE, 1, d1, rR, "R") != 0;
+        if (sc->mapping.enabled) bad |= pl_obs_put(g, "r_um", H5T_NATIVE_DOUBLE, 1, d1, rum, "um") != 0;
+        bad |= pl_obs_put(g, "value", H5T_NATIVE_DOUBLE, np > 1 ? 3 : 2, np > 1 ? d3 : d2, val, "1") != 0;
+        bad |= pl_obs_put(g, "value_se", H5T_NATIVE_DOUBLE, np > 1 ? 3 : 2, np > 1 ? d3 : d2, se, "1") != 0;
+        bad |= pl_obs_put(g, "step", H5T_NATIVE_LLONG, 1, one, &st, NULL) != 0;
+        bad |= pl_obs_put(g, "time", H5T_NATIVE_DOUBLE, 1, one, &t, "t0") != 0;
         unsigned long long ns = pl_rdf_samples(r[0]);
-        bad |= put(g, "samples", H5T_NATIVE_ULLONG, 0, NULL, &ns, NULL) != 0;
+        bad |= pl_obs_put(g, "samples", H5T_NATIVE_ULLONG, 0, NULL, &ns, NULL) != 0;
     }
     if (g >= 0 && H5Gclose(g) < 0) bad = 1;
     free(buf);
@@ -1115,15 +1083,15 @@ static int write_sq(hid_t obs, const pl_sim_t *sim, const pl_observe_t *o)
         long long st = sim->step;
         double t = (double)st * sim->scene.srd.dt;
         unsigned long long ns = pl_sq_samples(o->sq);
-        bad |= put(g, "q", H5T_NATIVE_DOUBLE, 1, d1, q, "1/a0") != 0;
-        bad |= put(g, "q_mean", H5T_NATIVE_DOUBLE, 1, d1, qm, "1/a0") != 0;
-        bad |= put(g, "q_R", H5T_NATIVE_DOUBLE, 1, d1, qR, "1/R") != 0;
-        bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, S, "1") != 0;
-        bad |= put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, se, "1") != 0;
-        bad |= put(g, "vectors", H5T_NATIVE_UINT64, 1, d1, nv, NULL) != 0;
-        bad |= put(g, "step", H5T_NATIVE_LLONG, 1, one, &st, NULL) != 0;
-        bad |= put(g, "time", H5T_NATIVE_DOUBLE, 1, one, &t, "t0") != 0;
-        bad |= put(g, "samples", H5T_NATIVE_ULLONG, 0, NULL, &ns, NULL) != 0;
+        bad |= pl_obs_put(g, "q", H5T_NATIVE_DOUBLE, 1, d1, q, "1/a0") != 0;
+        bad |= pl_obs_put(g, "q_mean", H5T_NATIVE_DOUBLE, 1, d1, qm, "1/a0") != 0;
+        bad |= pl_obs_put(g, "q_R", H5T_NATIVE_DOUBLE, 1, d1, qR, "1/R") != 0;
+        bad |= pl_obs_put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, S, "1") != 0;
+        bad |= pl_obs_put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, se, "1") != 0;
+        bad |= pl_obs_put(g, "vectors", H5T_NATIVE_UINT64, 1, d1, nv, NULL) != 0;
+        bad |= pl_obs_put(g, "step", H5T_NATIVE_LLONG, 1, one, &st, NULL) != 0;
+        bad |= pl_obs_put(g, "time", H5T_NATIVE_DOUBLE, 1, one, &t, "t0") != 0;
+        bad |= pl_obs_put(g, "samples", H5T_NATIVE_ULLONG, 0, NULL, &ns, NULL) != 0;
     }
     if (g >= 0 && H5Gclose(g) < 0) bad = 1;
     free(buf);
@@ -1165,9 +1133,9 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
                 for (size_t b2 = a; b2 < o->ncls; ++b2, ++q) pairs[2 * q] = (int32_t)a, pairs[2 * q + 1] = (int32_t)b2;
             for (size_t a = 0; a < o->ncls; ++a) cnt[a] = o->cls_n[a];
             hsize_t dp[2] = {o->npair, 2}, dc[2] = {o->ncls, 2}, dn[1] = {o->ncls};
-            bad |= put(g, "pairs", H5T_NATIVE_INT32, 2, dp, pairs, NULL) != 0;
-            bad |= put(g, "class_radius", H5T_NATIVE_DOUBLE, 2, dc, o->cls_rad, "a0") != 0;
-            bad |= put(g, "class_count", H5T_NATIVE_ULLONG, 1, dn, cnt, NULL) != 0;
+            bad |= pl_obs_put(g, "pairs", H5T_NATIVE_INT32, 2, dp, pairs, NULL) != 0;
+            bad |= pl_obs_put(g, "class_radius", H5T_NATIVE_DOUBLE, 2, dc, o->cls_rad, "a0") != 0;
+            bad |= pl_obs_put(g, "class_count", H5T_NATIVE_ULLONG, 1, dn, cnt, NULL) != 0;
             bad |= pl_h5_attr_str(g, "meaning", "value[0][p]: g_ab(r) of class pair p = pairs[p] (a <= b); classes: "
                                                 "colloids ranked by radius (ties by index), equal counts; "
                                                 "class_radius: smallest and largest radius of each") != 0;
@@ -1187,20 +1155,20 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
          * in samples without a bond) only in the summary */
         const int ncv = sim->scene.observe.clusters_bond == PL_BOND_ENERGY ? NCV - 1 : 4;
         for (int k = 0; k < ncv && !bad; ++k)
-            bad |= series(obs, cv_names[k], o->c_n, o->c_step, dt, o->c_val[k], "1") != 0;
+            bad |= pl_obs_series(obs, cv_names[k], o->c_n, o->c_step, dt, o->c_val[k], "1") != 0;
         size_t len = o->c_hist_len; /* trailing empty sizes left out */
         while (len > 1 && o->c_hist[len - 1] == 0) --len;
         hsize_t d1[1] = {len};
         hid_t g = pl_h5_group(obs, "cluster_size_distribution");
-        bad |= g < 0 || put(g, "value", H5T_NATIVE_UINT64, 1, d1, o->c_hist, "1") != 0;
+        bad |= g < 0 || pl_obs_put(g, "value", H5T_NATIVE_UINT64, 1, d1, o->c_hist, "1") != 0;
         if (g >= 0) bad |= pl_h5_attr_str(g, "meaning", "value[s]: clusters of s colloids, summed over samples") != 0;
         if (g >= 0 && H5Gclose(g) < 0) bad = 1;
     }
     if (!bad && o->s_n > 0) {
-        bad |= series(obs, "colloid_height", o->s_n, o->s_step, dt, o->s_height, "a0") != 0;
+        bad |= pl_obs_series(obs, "colloid_height", o->s_n, o->s_step, dt, o->s_height, "a0") != 0;
         if (o->s_n > 1)
-            bad |= series(obs, "settling_velocity", o->s_n - 1, o->s_step + 1, dt, o->s_vel + 1, "a0/t0") != 0;
-        bad |= series(obs, "colloid_vz", o->s_n, o->s_step, dt, o->s_vz, "a0/t0") != 0;
+            bad |= pl_obs_series(obs, "settling_velocity", o->s_n - 1, o->s_step + 1, dt, o->s_vel + 1, "a0/t0") != 0;
+        bad |= pl_obs_series(obs, "colloid_vz", o->s_n, o->s_step, dt, o->s_vz, "a0/t0") != 0;
         hid_t g = pl_h5_group(obs, "colloid_phi_z");
         bad |= g < 0;
         if (!bad) {
@@ -1211,10 +1179,10 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
             for (size_t k = 0; z && k < o->s_bins; ++k) z[k] = ((double)k + 0.5) * dzb;
             hsize_t d1[1] = {o->s_n}, d2[2] = {o->s_n, o->s_bins}, dz1[1] = {o->s_bins};
             if (!bad) {
-                bad |= put(g, "step", H5T_NATIVE_LLONG, 1, d1, o->s_step, NULL) != 0;
-                bad |= put(g, "time", H5T_NATIVE_DOUBLE, 1, d1, t, "t0") != 0;
-                bad |= put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, o->s_phi, "1") != 0;
-                bad |= put(g, "z", H5T_NATIVE_DOUBLE, 1, dz1, z, "a0") != 0;
+                bad |= pl_obs_put(g, "step", H5T_NATIVE_LLONG, 1, d1, o->s_step, NULL) != 0;
+                bad |= pl_obs_put(g, "time", H5T_NATIVE_DOUBLE, 1, d1, t, "t0") != 0;
+                bad |= pl_obs_put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, o->s_phi, "1") != 0;
+                bad |= pl_obs_put(g, "z", H5T_NATIVE_DOUBLE, 1, dz1, z, "a0") != 0;
             }
             free(t);
             free(z);
@@ -1230,7 +1198,7 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
         for (int a = 0; a < 4; ++a)
             memcpy(buf + (VD_BINS + 2) * a, pl_vdist_counts(o->vd[k], a), (VD_BINS + 2) * sizeof(uint64_t));
         hsize_t d2[2] = {4, VD_BINS + 2};
-        if (!bad) bad |= put(g, "value", H5T_NATIVE_UINT64, 2, d2, buf, "1") != 0;
+        if (!bad) bad |= pl_obs_put(g, "value", H5T_NATIVE_UINT64, 2, d2, buf, "1") != 0;
         if (!bad)
             bad |= pl_h5_attr_str(g, "meaning", "counts of (v - <v>) sqrt(M/kT) per axis x, y, z, all: bin 0 below "
                                                 "-4, bins 1..60 of width 2/15 over [-4, 4], bin 61 above 4") != 0;
@@ -1263,25 +1231,7 @@ static json_t *entry(pl_json_t *b, const pl_observe_t *o, int ob, double value, 
     pl_json_set(b, e, "plateau", json_boolean(plateau));
     pl_json_real(b, e, "wall_s", wall);
     pl_json_str(b, e, "unit", unit);
-    json_t *arr = json_array();
-    for (int k = 0; k < NFRAC; ++k) {
-        const ept_t *p = &o->ept[ob][k];
-        if (!p->valid) continue;
-        json_t *q = json_object();
-        pl_json_real(b, q, "run_fraction", fractions[k]);
-        pl_json_int(b, q, "step", p->step);
-        pl_json_real(b, q, "wall_s", p->wall_s);
-        pl_json_real(b, q, "value", p->value);
-        pl_json_real(b, q, "stderr", p->se);
-        json_array_append_new(arr, q);
-    }
-    pl_json_set(b, e, "se_vs_time", arr);
-    const ept_t *last = &o->ept[ob][NFRAC - 1];
-    if (last->valid && fabs(value) > 0 && se > 0) {
-        pl_json_real(b, e, "target_rel_error", target);
-        pl_json_real(b, e, "wall_s_for_target", pl_blocking_time_for_se(se, last->wall_s, target * fabs(value)));
-        pl_json_set(b, e, "extrapolation_reliable", json_boolean(plateau));
-    }
+    pl_obs_error_time(b, e, o->ept[ob], value, se, plateau, target);
     return e;
 }
 
