@@ -2,10 +2,12 @@
 #include "observables_out.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "peloid/blocking.h"
 #include "peloid/h5.h"
+#include "peloid/io.h"
 
 const double pl_obs_fractions[PL_OBS_NFRAC] = {0.125, 0.25, 0.5, 1.0};
 
@@ -60,4 +62,20 @@ void pl_obs_error_time(pl_json_t *b, json_t *e, const pl_obs_point_t pts[PL_OBS_
         pl_json_real(b, e, "wall_s_for_target", pl_blocking_time_for_se(se, last->wall_s, target * fabs(value)));
         pl_json_set(b, e, "extrapolation_reliable", json_boolean(plateau));
     }
+}
+
+int pl_obs_h5_commit(hid_t f, int bad, const char *tmp, const char *path, const char *what, pl_err_t *err)
+{
+    if (bad) {
+        char why[256];
+        pl_h5_error_text(why, sizeof why);
+        H5Fclose(f);
+        remove(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: writing the %s failed: %s", tmp, what, why);
+    }
+    if (H5Fclose(f) < 0) {
+        remove(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: closing the observables file failed", tmp);
+    }
+    return pl_atomic_commit(tmp, path, err);
 }

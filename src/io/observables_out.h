@@ -9,6 +9,7 @@
 #include <stddef.h>
 
 #include "json_build.h"
+#include "peloid/error.h"
 
 enum { PL_OBS_NFRAC = 4 };
 /* The run fractions the error-against-time points are taken at. */
@@ -32,5 +33,10 @@ int pl_obs_series(hid_t obs, const char *name, size_t n, const long long *step, 
  * and extrapolation_reliable (= plateau). */
 void pl_obs_error_time(pl_json_t *b, json_t *e, const pl_obs_point_t pts[PL_OBS_NFRAC], double value, double se,
                        int plateau, double target);
+
+/* Closes observables file f written at tmp and commits it to path
+ * (pl_atomic_commit); bad: a write failed before, then `what` names the
+ * writer in the error (PL_ERR_IO, with HDF5's reason) and tmp is removed. */
+int pl_obs_h5_commit(hid_t f, int bad, const char *tmp, const char *path, const char *what, pl_err_t *err);
 
 #endif

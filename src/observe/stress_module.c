@@ -575,18 +575,7 @@ static int write_h5(const pl_sim_t *sim, const pl_stress_t *o, const char *path,
         if (g >= 0 && H5Gclose(g) < 0) bad = 1;
     }
     if (obs >= 0 && H5Gclose(obs) < 0) bad = 1;
-    if (bad) {
-        char why[256];
-        pl_h5_error_text(why, sizeof why);
-        H5Fclose(f);
-        remove(tmp);
-        return pl_err_set(err, PL_ERR_IO, "%s: writing the stress observables failed: %s", tmp, why);
-    }
-    if (H5Fclose(f) < 0) {
-        remove(tmp);
-        return pl_err_set(err, PL_ERR_IO, "%s: closing the observables file failed", tmp);
-    }
-    return pl_atomic_commit(tmp, path, err);
+    return pl_obs_h5_commit(f, bad, tmp, path, "stress observables", err);
 }
 
 /* {value, stderr, ..., se_vs_time, wall_s_for_target} of a viscosity. */
