@@ -53,19 +53,23 @@ static int mkdir_p(const char *path, pl_err_t *err)
     return 0;
 }
 
+/* Atomic write through a temporary file of this process's own
+ * ("<path>.tmp.<pid>"): the array tasks of a Slurm sweep write the shared
+ * files (points.json, the point scenes) concurrently, and with one shared
+ * temporary name one task's rename took the file from under another's. */
 static int write_text(const char *path, const char *text, pl_err_t *err)
 {
     char tmp[4200];
-    FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
-    if (!f) return PL_ERR_IO;
+    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
+    FILE *f = fopen(tmp, "w");
+    if (!f) return pl_err_set(err, PL_ERR_IO, "%s: cannot create: %s", tmp, strerror(errno));
     fputs(text, f);
     return pl_file_commit(f, tmp, path, err);
 }
 
 static char *read_text(const char *path);
 
-/* Writes `text` unless the file already holds it (concurrent array tasks
- * then do not race for the same temporary file). */
+/* Writes `text` unless the file already holds it. */
 static int write_changed(const char *path, const char *text, pl_err_t *err)
 {
     char *old = read_text(path);
