@@ -247,7 +247,7 @@ static const pl_key_t *find_key(const pl_section_t *sec, const char *name)
 static int unknown_key(const ctx_t *c, const config_setting_t *s, const char *sec,
                        const pl_section_t *known)
 {
-    char what[768];
+    char what[2048];
     size_t len = (size_t)snprintf(what, sizeof what, "unknown key; allowed here:");
     if (known) {
         for (size_t i = 0; i < known->nkeys && len < sizeof what; ++i)

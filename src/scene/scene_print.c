@@ -43,12 +43,12 @@ void pl_scene_print_reference(void *file_ptr)
         fprintf(f, "| key | type | default | allowed | units | meaning |\n|---|---|---|---|---|---|\n");
         for (size_t i = 0; i < sec->nkeys; ++i) {
             const pl_key_t *k = &sec->keys[i];
-            char def[96], allowed[160];
+            char def[96], allowed[1024];
             default_text(k, def, sizeof def);
             if (k->type == PL_KEY_CHOICE) {
                 size_t len = 0;
                 allowed[0] = '\0';
-                for (int c = 0; k->choices[c]; ++c)
+                for (int c = 0; k->choices[c] && len < sizeof allowed; ++c) /* snprintf truncates, never overruns */
                     len += (size_t)snprintf(allowed + len, sizeof allowed - len, "%s`%s`", c ? ", " : "",
                                             k->choices[c]);
             } else if (k->type == PL_KEY_BOOL || k->type == PL_KEY_STRING) {
