@@ -84,8 +84,9 @@ static void value_text(const pl_key_t *k, const pl_scene_t *scene, char *buf, si
     }
 }
 
-/* The fingerprint text of `scene` (malloc'ed, NULL when out of memory). */
-static char *scene_text(const pl_scene_t *scene)
+/* "name = value" lines of the scene's keys that `keep` selects, in schema
+ * order (malloc'ed, NULL when out of memory). */
+static char *keys_text(const pl_scene_t *scene, int (*keep)(const char *name))
 {
     size_t ns, cap = 4096, len = 0;
     const pl_section_t *const *all = pl_scene_sections(&ns);
@@ -96,7 +97,7 @@ static char *scene_text(const pl_scene_t *scene)
         for (size_t i = 0; i < all[j]->nkeys; ++i) {
             char name[128], val[256];
             full_name(all[j], &all[j]->keys[i], name, sizeof name);
-            if (!is_physics(name)) continue;
+            if (!keep(name)) continue;
             value_text(&all[j]->keys[i], scene, val, sizeof val);
             size_t need = strlen(name) + strlen(val) + 5;
             if (len + need >= cap) {
@@ -112,32 +113,16 @@ static char *scene_text(const pl_scene_t *scene)
     return s;
 }
 
-char *pl_ckpt_observe_text(const pl_scene_t *scene)
+/* The fingerprint text of `scene` (malloc'ed, NULL when out of memory). */
+static char *scene_text(const pl_scene_t *scene) { return keys_text(scene, is_physics); }
+
+/* The observe keys that shape the observers' state (all but the report's target). */
+static int is_observer_shape(const char *name)
 {
-    size_t ns, cap = 4096, len = 0;
-    const pl_section_t *const *all = pl_scene_sections(&ns);
-    char *s = malloc(cap);
-    if (!s) return NULL;
-    s[0] = '\0';
-    for (size_t j = 0; j < ns; ++j)
-        for (size_t i = 0; i < all[j]->nkeys; ++i) {
-            char name[128], val[256];
-            full_name(all[j], &all[j]->keys[i], name, sizeof name);
-            if (strncmp(name, "observe.", 8) || !strcmp(name, "observe.target_rel_error")) continue;
-            value_text(&all[j]->keys[i], scene, val, sizeof val);
-            size_t need = strlen(name) + strlen(val) + 5;
-            if (len + need >= cap) {
-                char *t = realloc(s, cap = 2 * cap + need);
-                if (!t) {
-                    free(s);
-                    return NULL;
-                }
-                s = t;
-            }
-            len += (size_t)snprintf(s + len, cap - len, "%s = %s\n", name, val);
-        }
-    return s;
+    return !strncmp(name, "observe.", 8) && strcmp(name, "observe.target_rel_error");
 }
+
+char *pl_ckpt_observe_text(const pl_scene_t *scene) { return keys_text(scene, is_observer_shape); }
 
 int pl_ckpt_scene_write(hid_t f, const pl_scene_t *scene)
 {
