@@ -117,7 +117,6 @@ typedef struct pl_stress {
 
 static void stress_begin(pl_stress_t *o, const pl_sim_t *sim, double t0);
 
-static pl_stress_t *stress_of(const pl_sim_t *sim);
 
 /* ---- scene checks ------------------------------------------------------ */
 
@@ -185,7 +184,10 @@ static int stress_create(pl_sim_t *sim, pl_err_t *err)
     o->kT = pl_scene_kT(sc);
     o->dt = sc->srd.dt;
     o->N = (double)sim->fluid.n;
-    o->scratch = malloc(pl_srd_stress_scratch(sim->fluid.n) * sizeof(double));
+    o->couette = is_couette(sc);
+    o->nlayers = o->couette ? sim->grid.L[2] : 0; /* Couette layers (0: Green-Kubo; checkpointed) */
+    o->scratch = malloc((o->couette ? pl_srd_layer_scratch(sim->fluid.n, o->nlayers)
+                                    : pl_srd_stress_scratch(sim->fluid.n)) * sizeof(double));
     o->ring = calloc((size_t)o->K * NOFF, sizeof(double));
     o->cacc = calloc((size_t)o->K + 1, sizeof(double));
     if (!o->scratch || !o->ring || !o->cacc) {
@@ -201,19 +203,15 @@ static int stress_create(pl_sim_t *sim, pl_err_t *err)
     pl_blocking_init(&o->sigma);
     pl_blocking_init(&o->rate);
     sim->stress = o;
-    if (!is_couette(sc)) return 0;
-    o->couette = 1;
+    if (!o->couette) return 0;
     const double *ub = sc->box.wall_velocity[0], *ut = sc->box.wall_velocity[1];
     o->du = hypot(ut[0] - ub[0], ut[1] - ub[1]);
     o->e[0] = (ut[0] - ub[0]) / o->du;
     o->e[1] = (ut[1] - ub[1]) / o->du;
     o->A = (double)sim->grid.L[0] * sim->grid.L[1];
-    o->nlayers = sim->grid.L[2];
-    free(o->scratch);
-    o->scratch = malloc(pl_srd_layer_scratch(sim->fluid.n, o->nlayers) * sizeof(double));
     o->lay_sum = malloc(2 * (size_t)o->nlayers * sizeof(double));
     o->lay_cnt = o->lay_sum ? o->lay_sum + o->nlayers : NULL;
-    if (!o->scratch || !o->lay_sum) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress observer");
+    if (!o->lay_sum) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the stress observer");
     return 0;
 }
 
@@ -234,7 +232,6 @@ static void stress_destroy(pl_sim_t *sim)
     sim->stress = NULL;
 }
 
-static pl_stress_t *stress_of(const pl_sim_t *sim) { return sim->stress; }
 
 /* ---- stages ------------------------------------------------------------ */
 
@@ -441,7 +438,7 @@ static int stage_couette(pl_sim_t *sim, void *ctx, pl_err_t *err)
 
 static void stress_stages(pl_sim_t *sim)
 {
-    pl_stress_t *o = stress_of(sim);
+    pl_stress_t *o = sim->stress;
     if (!o) return;
     if (o->couette) {
         pl_stage_t c = {.name = "stress-couette", .fn = stage_couette, .ctx = o, .interval = 1,
@@ -606,7 +603,7 @@ static json_t *viscosity_entry(pl_json_t *b, const pl_stress_t *o, const pl_sim_
 
 static int stress_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
 {
-    pl_stress_t *o = stress_of(sim);
+    pl_stress_t *o = sim->stress;
     if (!o) return 0;
     char path[4096];
     pl_path_join(path, sizeof path, dir, "observables.h5");
@@ -711,7 +708,7 @@ enum { SCK_FIRST, SCK_STARTED, SCK_NEXT_FRAC, SCK_RING_HEAD, SCK_RING_N, SCK_NCO
 
 static int stress_ckpt_write(int64_t file, const pl_sim_t *sim)
 {
-    const pl_stress_t *o = stress_of(sim);
+    const pl_stress_t *o = sim->stress;
     if (!o) return 0;
     hid_t g = pl_ckpt_observe_group_write((hid_t)file, "stress", &sim->scene);
     if (g < 0) return -1;
@@ -826,7 +823,7 @@ static int stress_ckpt_read_group(hid_t g, pl_sim_t *sim, pl_stress_t *o, const 
 
 static int stress_ckpt_read(int64_t file, pl_sim_t *sim, const char *path, pl_err_t *err)
 {
-    pl_stress_t *o = stress_of(sim);
+    pl_stress_t *o = sim->stress;
     if (!o) return 0;
     hid_t g = pl_ckpt_observe_group_open((hid_t)file, "stress", sim);
     if (g < 0) return 0;
