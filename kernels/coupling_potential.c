@@ -303,7 +303,6 @@ void pl_coupling_potential_kick(const pl_coupling_near_t *nb, double h, const do
 void pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t *g, const double wall_u[2][3],
                                  double dt, int nthreads, int64_t acc[PL_WALL_ACC_N])
 {
-    static const double at_rest[3] = {0.0, 0.0, 0.0};
     const size_t nn = nb->n;
     double *const *r = nb->r, *const *v = nb->v, *const *disp = nb->disp;
     /* integer impulses: the sum is exact in any order */
@@ -314,23 +313,14 @@ void pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t *
             r[d][j] += v[d][j] * dt;
             disp[d][j] += v[d][j] * dt;
         }
-        for (int a = 0; a < 3; ++a) {
-            double *x = &r[a][j];
-            const double La = g->L[a];
-            if (g->walls[a] == PL_WALLS_NONE || !(*x < 0.0 || *x > La)) continue;
-            int top = *x > La;
-            double xw = top ? La : 0.0;
-            disp[a][j] -= *x - r0[a];
-            *x = 2.0 * xw - *x;
-            disp[a][j] += *x - r0[a];
-            double dp[3] = {0.0, 0.0, 0.0};
-            dp[a] = -2.0 * v[a][j];
-            if (g->walls[a] == PL_WALLS_NOSLIP) {
-                const double *U = a == 2 ? wall_u[top] : at_rest;
-                for (int d = 0; d < 3; ++d) dp[d] = 2.0 * (U[d] - v[d][j]);
-            }
-            for (int d = 0; d < 3; ++d) v[d][j] += dp[d];
-            pl_wall_acc_add(acc, pl_wall_slot(a, top), dp);
+        if (!g->any_walls) continue;
+        /* the streaming's wall bounce (earliest wall first) */
+        double rr[3] = {r[0][j], r[1][j], r[2][j]}, vv[3] = {v[0][j], v[1][j], v[2][j]};
+        if (!pl_srd_wall_bounce(g, wall_u, dt, r0, rr, vv, acc)) continue;
+        for (int d = 0; d < 3; ++d) {
+            disp[d][j] += rr[d] - r[d][j];
+            r[d][j] = rr[d];
+            v[d][j] = vv[d];
         }
     }
 }

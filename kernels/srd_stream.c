@@ -134,6 +134,23 @@ void pl_srd_stream_wall_impulse(const pl_grid_t *g, const pl_stream_params_t *p,
     (void)pl_drift_one(&c, r, v, dr, acc);
 }
 
+int pl_srd_wall_bounce(const pl_grid_t *g, const double wall_u[2][3], double dt, const double r0[3],
+                       double r[3], double v[3], int64_t acc[PL_WALL_ACC_N])
+{
+    pl_drift_t c;
+    memset(&c, 0, sizeof c);
+    c.dt = dt;
+    for (int d = 0; d < 3; ++d) {
+        c.L[d] = g->L[d];
+        c.wall[d] = g->walls[d];
+    }
+    c.walls = g->any_walls;
+    memcpy(c.wall_u, wall_u, sizeof c.wall_u);
+    if (!c.walls || !pl_drift_outside(&c, r)) return 0;
+    pl_drift_reflect(&c, r, v, r0, acc);
+    return 1;
+}
+
 void pl_srd_bin(pl_fluid_t *f, const pl_grid_t *g, uint32_t *hist, int nthreads)
 {
     pl_stream_params_t none;

@@ -38,6 +38,15 @@ typedef struct {
 void pl_srd_stream_bin(pl_fluid_t *fluid, const pl_grid_t *grid, const pl_stream_params_t *p,
                        uint32_t *hist, int nthreads);
 
+/* The one wall bounce (the streaming's, kernels/srd_drift.h pl_drift_reflect):
+ * a particle that moved in a straight line from r0 to r with velocity v in
+ * time dt and left the box through a closed axis of g is taken back to the
+ * earliest wall it hit, bounced (no-slip: v -> 2U - v; slip: the normal
+ * component reversed) and moved on for the rest of dt, repeatedly; the
+ * impulses go to acc.  Returns 0 (r, v untouched) when r is inside. */
+int pl_srd_wall_bounce(const pl_grid_t *g, const double wall_u[2][3], double dt, const double r0[3],
+                       double r[3], double v[3], int64_t acc[PL_WALL_ACC_N]);
+
 /* The impulse pl_srd_stream_bin's bounces give one particle that starts at
  * (r0, v0), added to acc (fixed point, PL_WALL_ACC_N slots) bitwise as the
  * streaming adds it: lets a caller take back the count of a particle whose
