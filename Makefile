@@ -130,7 +130,7 @@ check-build: $(CHECK_BIN) $(BIN)
 
 # The long physics validations (each several minutes on 2 cores) run in
 # `make validate`; `make check` runs everything else.  CI runs both.
-VALIDATE_TESTS := test_coupling_drag test_coupling_vacf test_coupling_depletion test_coupling_thermal
+VALIDATE_TESTS := test_coupling_drag test_coupling_wall test_coupling_vacf test_coupling_depletion test_coupling_thermal
 VALIDATE_BIN := $(patsubst %,$(BUILD)/tests/%,$(VALIDATE_TESTS))
 CHECK_BIN := $(filter-out $(VALIDATE_BIN),$(TEST_BIN))
 

@@ -288,18 +288,12 @@ void pl_coupling_potential_kick(const pl_coupling_near_t *nb, double h, const do
         for (int d = 0; d < 3; ++d) v[d][j] += h * (F[d][j] + g[d]);
 }
 
-/* Walls: a per-axis mirror, not the streaming's earliest-wall bounce
- * (srd_drift.h pl_drift_reflect).  They differ: at a no-slip wall this one
- * reflects the end point across the crossed plane only (the tangential
- * displacement of the whole step is kept) while v -> 2U - v; the streaming
- * moves to the wall at the crossing time, reverses and streams the rest of
- * the step (the particle retraces its tangential path).  At a slip wall they
- * are equal in exact arithmetic but round differently; two walls in one step
- * are taken in axis order here, in time order there.  No shipped scene runs
- * this branch (regression hashes unchanged either way); with the shared
- * bounce a pinned colloid 0.4 a0 off a no-slip wall felt a wall-normal force
- * 2.5 SE from this one's (branch issue12-rest-bounce), so it is kept until
- * that is settled. */
+/* Walls: the streaming's bounce (pl_srd_wall_bounce: to the wall at the
+ * crossing time, bounce-back or specular, the rest of the step; earliest wall
+ * first), so a particle near a colloid meets the same wall as any other.  A
+ * per-axis mirror of the end point with a bounce-back velocity made the
+ * equilibrium force of a pinned colloid near a no-slip wall 7 % too strong
+ * (tests/test_coupling_wall.c: the exact Boltzmann force). */
 void pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t *g, const double wall_u[2][3],
                                  double dt, int nthreads, int64_t acc[PL_WALL_ACC_N])
 {
