@@ -153,6 +153,7 @@ check-cli: $(BIN)
 	@bash tests/readers.sh ./$(BIN)
 	@bash tests/sweep.sh ./$(BIN)
 	@bash tests/sweep_slurm.sh ./$(BIN)
+	@bash tests/studies_reduced.sh ./$(BIN)
 
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
 # shrinks the physics runs; the sanitizers slow code ~3-10x), and the
@@ -174,7 +175,8 @@ check-asan: | deps
 # a finished point is not run again) and validation/REPORT.md from their
 # outputs in out/studies/.
 .PHONY: studies validation-report
-STUDIES := studies/hecht_fig9_kappa.cfg studies/hecht_fig9_kappa_replica.cfg studies/hecht_fig9_kappa_1s.cfg
+STUDIES := studies/hecht_fig9_kappa.cfg studies/hecht_fig9_kappa_replica.cfg studies/hecht_fig9_kappa_1s.cfg \
+           studies/hecht_fig9_bonds.cfg studies/accuracy_viscosity.cfg
 studies: $(BIN)
 	@set -e; for s in $(STUDIES); do ./$(BIN) sweep $$s; done
 validation-report:
