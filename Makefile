@@ -2,7 +2,8 @@
 #
 #   make run     install dependencies, build, run scenes/quickstart.cfg, plot it and write its report
 #   make check   install dependencies, build, run the test suite
-#   make validate  the long physics validations (drag, diffusion, VACF)
+#   make validate  the long physics validations (drag, diffusion, VACF), then the paper studies and
+#                  validation/REPORT.md (make validate-physics: the validations alone, what CI runs)
 #   make bench   kernel and whole-step benchmarks (bench/out/*.tsv)
 #
 # src/ + kernels/ build build/libpeloid.a, which bin/peloid, tests/ and bench/ link.
@@ -41,7 +42,7 @@ DEB_PKGS_VARIANTS := clang libomp-dev
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 PREFIX ?= /usr/local
 
-.PHONY: all deps deps-variants install-debs run check check-build check-unit check-cli check-asan check-variants validate bench clean keys \
+.PHONY: all deps deps-variants install-debs run check check-build check-unit check-cli check-asan check-variants validate validate-physics bench clean keys \
         readme install
 all: $(BIN)
 
@@ -129,7 +130,10 @@ check-build: $(CHECK_BIN) $(BIN)
 	@$(MAKE) --no-print-directory $(ASAN_MAKE) $(patsubst %,build-asan/tests/%,$(ASAN_TESTS)) build-asan/bin/peloid
 
 # The long physics validations (each several minutes on 2 cores) run in
-# `make validate`; `make check` runs everything else.  CI runs both.
+# `make validate-physics`; `make validate` runs them, then the paper studies
+# (make studies, ~30 min on 2 cores) and regenerates validation/REPORT.md;
+# `make check` runs everything else.  CI runs check and validate-physics (the
+# studies would take its total past 60 min).
 VALIDATE_TESTS := test_coupling_drag test_coupling_wall test_coupling_vacf test_coupling_depletion test_coupling_thermal
 VALIDATE_BIN := $(patsubst %,$(BUILD)/tests/%,$(VALIDATE_TESTS))
 CHECK_BIN := $(filter-out $(VALIDATE_BIN),$(TEST_BIN))
@@ -138,10 +142,13 @@ check-unit: $(CHECK_BIN)
 	@set -e; for t in $(CHECK_BIN); do echo "== $$t"; s=$$(date +%s); $$t --jobs 1; \
 	  echo "   ($$t: $$(( $$(date +%s) - s )) s)"; done
 
-validate: $(VALIDATE_BIN) $(BIN)
+validate-physics: $(VALIDATE_BIN) $(BIN)
 	@set -e; for t in $(VALIDATE_BIN); do echo "== $$t"; $$t --jobs 1; done
 	@bash tests/stress.sh ./$(BIN) 80000
-	@echo "make validate: all suites passed"
+	@echo "make validate-physics: all suites passed"
+validate: validate-physics
+	@$(MAKE) --no-print-directory studies validation-report
+	@echo "make validate: all suites passed, validation/REPORT.md regenerated"
 
 check-cli: $(BIN)
 	@bash tests/cli.sh ./$(BIN)
@@ -176,7 +183,8 @@ check-asan: | deps
 # outputs in out/studies/.
 .PHONY: studies validation-report
 STUDIES := studies/hecht_fig9_kappa.cfg studies/hecht_fig9_kappa_replica.cfg studies/hecht_fig9_kappa_1s.cfg \
-           studies/hecht_fig9_bonds.cfg studies/accuracy_viscosity.cfg
+           studies/hecht_fig9_bonds.cfg studies/hecht_fig5_rdf.cfg studies/hecht_fig4_rz.cfg \
+           studies/accuracy_viscosity.cfg
 studies: $(BIN)
 	@set -e; for s in $(STUDIES); do ./$(BIN) sweep $$s; done
 validation-report:

@@ -8,8 +8,9 @@
 # of the run loop's wall time from summary.json); the wall time of one real
 # second is that per step times the steps of one real second:
 #   - bench/scenes/fig9_model.cfg, fig14_model.cfg: model-unit copies of
-#     Hecht's Fig. 9 and Fig. 14 conditions, whose `steps` (1140) is one
-#     second at the Hecht mapping of their resolution;
+#     Hecht's Fig. 9 and Fig. 14 conditions, whose `steps` (3380) is one
+#     second at the mapping of their physical scenes (scenes/hecht_fig9.cfg,
+#     hecht_fig14.cfg: srd.dt = 0.296 ms);
 #   - scenes/quickstart.cfg (physical units): 1 / (srd.dt t0), t0 from the
 #     mapping in summary.json.
 # A short run extrapolated: in the clustering scenes the pair count, and so
