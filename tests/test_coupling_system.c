@@ -37,8 +37,8 @@ static void check_threads(const char *coupling)
     pl_sim_t *a = make("", coupling, "thermostat: { type = \"heyes\"; };\n", 1);
     pl_test_steps(a, steps);
     if (a->coupling->method == PL_COUPLE_POTENTIAL) /* the blocked force sum is exercised */
-        cr_expect_geq(pl_coupling_wca_blocks(a->coupling->nnear, a->colloids->n), 2, "%zu selected particles",
-                      a->coupling->nnear);
+        cr_expect_geq(pl_coupling_wca_blocks(a->coupling->pot->nnear, a->colloids->n), 2,
+                      "%zu selected particles", a->coupling->pot->nnear);
     for (int t = 2; t <= 3; ++t) {
         pl_sim_t *b = make("", coupling, "thermostat: { type = \"heyes\"; };\n", t);
         pl_test_steps(b, steps);
@@ -56,7 +56,7 @@ static void check_threads(const char *coupling)
         cr_expect(same(ca->wx, cb->wx, m) && same(ca->wy, cb->wy, m) && same(ca->wz, cb->wz, m),
                   "%s, %d threads: colloid angular velocities differ", coupling, t);
         if (a->coupling->method == PL_COUPLE_HECHT1)
-            cr_expect_eq(a->coupling->events, b->coupling->events, "event counts differ");
+            cr_expect_eq(a->coupling->c1->events, b->coupling->c1->events, "event counts differ");
         pl_sim_free(b);
     }
     pl_sim_free(a);

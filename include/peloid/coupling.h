@@ -1,8 +1,11 @@
-/* Colloid-solvent coupling (src/coupling*.c): the state the plan stages of
- * the coupling need, built from the scene.  Kernels: coupling_kernels.h.
+/* Colloid-solvent coupling (src/coupling/coupling*.c): the state the plan
+ * stages of the coupling need, built from the scene: a common part and the
+ * state of the one method in use.  Kernels: coupling_kernels.h.
  *
- * Plan (src/plan/sim.c): colloid-md, stream+bin, [coupling1-reflect], sort,
- * [coupling2-save], collide, [coupling2-collide], thermostat, [drift-removal].
+ * Plan (src/plan/sim.c): colloid-md (not with the potential coupling, whose
+ * MD stage moves the colloids), [potential-select], stream+bin,
+ * [potential-md | coupling1-reflect], sort, [coupling2-save], collide,
+ * [coupling2-collide], thermostat, [flow-hold], [drift-removal].
  * Gravity compensation (Hecht Sec. VIII.A iii) enters the streaming as the
  * extra fluid acceleration fluid_accel. */
 #ifndef PELOID_COUPLING_H
@@ -17,24 +20,38 @@
 
 struct pl_colloid;
 
-typedef struct pl_coupling {
-    int method;          /* PL_COUPLE_* */
-    int nthreads;
-    uint64_t seed;
-    double fluid_accel[3]; /* compensating fluid acceleration (0 without) */
-    /* coupling I */
-    pl_coupling1_params_t p1;
-    int32_t *lk_start, *lk_list;
-    size_t lk_cap;
+/* The coupling object is split by method, so that a run holds only the
+ * buffers its scene's coupling uses: pl_coupling_t keeps what every method
+ * (and drift removal alone, method "none") needs, and points to the state of
+ * the one method in use; the other method pointers are NULL.  Each method's
+ * state is allocated, used and freed by that method's file (coupling.c only
+ * clears the colloid interiors through it at the start); the structs are
+ * public because the checkpoint (src/io/checkpoint_coupling.c: the run
+ * counters only, the rest is rebuilt from the scene or before each use) and
+ * the tests read them.  Kernels see none of them, only their arrays and
+ * parameter structs. */
+
+/* ---- colloid lookup (src/coupling/coupling_view.c) ---------------------- */
+/* CSR lists of the colloids near each unit cell (pl_coupling_lookup_build):
+ * couplings I and potential each own one, with their own radii. */
+typedef struct {
+    int32_t *start; /* L0 L1 L2 + 1 */
+    int32_t *list;
+    size_t cap;     /* entries list holds */
+} pl_coupling_lookup_t;
+
+/* ---- coupling I, reflection (src/coupling/coupling_stages.c) ------------- */
+typedef struct pl_coupling1_state {
+    pl_coupling1_params_t p;
+    pl_coupling_lookup_t lk; /* the colloids with their own radii */
     uint32_t *found;     /* fluid n: particles found inside (scratch) */
     uint64_t *counts;    /* nthreads x 8 */
     unsigned long long events, truncations; /* since the start of this run */
-    /* pinned colloids: impulse received (momentum 0..2, angular 3..5) over
-     * pinned_time since the start of this run */
-    int pinned;
-    double impulse[6], pinned_time;
-    /* coupling II */
-    pl_coupling2_params_t p2;
+} pl_coupling1_state_t;
+
+/* ---- coupling II, colloids in the collision (src/coupling/coupling_stages.c) */
+typedef struct pl_coupling2_state {
+    pl_coupling2_params_t p;
     uint64_t *keys;      /* ncolloids: cell << 32 | index */
     uint32_t *occ_cell;
     size_t *occ_save;
@@ -42,10 +59,16 @@ typedef struct pl_coupling {
     size_t nocc;
     double *vsave;
     size_t save_cap;     /* doubles */
-    /* potential coupling (src/coupling/coupling_potential.c) */
+} pl_coupling2_state_t;
+
+/* ---- potential coupling (src/coupling/coupling_potential.c) -------------- */
+typedef struct pl_coupling_potential_state {
     pl_coupling_wca_t wca;
     double margin;       /* selection shell beyond the cut-off */
     double *rad_big;     /* ncolloids: cut-off + margin (lookup radii) */
+    pl_coupling_lookup_t lk; /* the colloids with the radii rad_big */
+    uint32_t *found;     /* fluid n: particles selected (scratch) */
+    uint64_t *counts;    /* nthreads x 8 */
     uint8_t *marks;      /* grid ncells: cells a selection sphere reaches */
     int *axis_buf;       /* grid n[0] + n[1] + n[2] (scratch) */
     size_t nnear, near_cap;
@@ -59,20 +82,56 @@ typedef struct pl_coupling {
     size_t wca_partial_cap; /* doubles */
     double epot_cf;      /* PL Eq. 17 energy after the last MD step */
     unsigned long long near_total; /* selected particle-steps (cost counter) */
+} pl_coupling_potential_state_t;
+
+/* ---- common part (src/coupling/coupling.c) ------------------------------- */
+typedef struct pl_coupling {
+    int method;          /* PL_COUPLE_* */
+    int nthreads;
+    uint64_t seed;
+    double fluid_accel[3]; /* compensating fluid acceleration (0 without) */
+    /* pinned colloids (coupling I, II or potential): impulse received
+     * (momentum 0..2, angular 3..5) over pinned_time since the start of
+     * this run */
+    int pinned;
+    double impulse[6], pinned_time;
+    /* the state of the method in use; NULL for the others */
+    pl_coupling1_state_t *c1;
+    pl_coupling2_state_t *c2;
+    pl_coupling_potential_state_t *pot;
 } pl_coupling_t;
 
 struct pl_sim;
 
-/* From a validated scene, after fluid and colloids exist.  With coupling I
- * the fluid particles initially inside colloids are placed elsewhere. */
+/* From a validated scene, after fluid and colloids exist: the common part
+ * and the state of the scene's method only.  With coupling I (potential
+ * coupling) the fluid particles initially inside colloids (within sigma_cf)
+ * are placed elsewhere. */
 int pl_coupling_create(struct pl_sim *sim, pl_coupling_t **out, pl_err_t *err);
 void pl_coupling_free(pl_coupling_t *cp);
 
-/* Rebuilds the colloid lookup of coupling I (grows it when needed). */
-int pl_coupling_lookup_update(pl_coupling_t *cp, const struct pl_sim *sim, pl_err_t *err);
+/* Colloid lookup: start allocated for the box of sides L (list grows on
+ * demand); 0 or PL_ERR_NOMEM. */
+int pl_coupling_lookup_init(pl_coupling_lookup_t *lk, const int L[3], int nthreads, pl_err_t *err);
+void pl_coupling_lookup_free(pl_coupling_lookup_t *lk);
+/* Rebuilds it for the colloids with their own radii (grows it when needed). */
+int pl_coupling_lookup_update(pl_coupling_lookup_t *lk, const struct pl_sim *sim, pl_err_t *err);
 /* Same for the colloids seen through `v` (e.g. with enlarged radii). */
-int pl_coupling_lookup_fill(pl_coupling_t *cp, const struct pl_sim *sim,
+int pl_coupling_lookup_fill(pl_coupling_lookup_t *lk, const struct pl_sim *sim,
                             const pl_coupling_colloids_t *v, pl_err_t *err);
+
+/* Method states (src/coupling/coupling_stages.c, coupling_potential.c), from
+ * the common part cp and the sim pl_coupling_create is given; *out is NULL
+ * on error.  The free functions take NULL. */
+int pl_coupling1_create(const pl_coupling_t *cp, const struct pl_sim *sim, pl_coupling1_state_t **out,
+                        pl_err_t *err);
+void pl_coupling1_free(pl_coupling1_state_t *s);
+int pl_coupling2_create(const pl_coupling_t *cp, const struct pl_sim *sim, pl_coupling2_state_t **out,
+                        pl_err_t *err);
+void pl_coupling2_free(pl_coupling2_state_t *s);
+int pl_coupling_potential_create(const pl_coupling_t *cp, const struct pl_sim *sim,
+                                 pl_coupling_potential_state_t **out, pl_err_t *err);
+void pl_coupling_potential_free(pl_coupling_potential_state_t *s);
 
 /* Plan stages (src/coupling/coupling_stages.c). */
 int pl_coupling_stage_reflect(struct pl_sim *sim, void *ctx, pl_err_t *err);
@@ -87,14 +146,16 @@ int pl_coupling_stage_drift(struct pl_sim *sim, void *ctx, pl_err_t *err);
 int pl_coupling_stage_flow(struct pl_sim *sim, void *ctx, pl_err_t *err);
 /* Potential coupling: select the fluid near colloids (before stream+bin),
  * then integrate them with the colloids at the MD step (after it). */
-int pl_coupling_potential_setup(pl_coupling_t *cp, struct pl_sim *sim, pl_err_t *err);
 int pl_coupling_stage_select(struct pl_sim *sim, void *ctx, pl_err_t *err);
 int pl_coupling_stage_potential_md(struct pl_sim *sim, void *ctx, pl_err_t *err);
 
 /* Potential coupling: keep the mean fluid force on each colloid over every
- * collision step in cp->cf_mean from now on (the C_FF observer); changes no
- * trajectory.  0 or PL_ERR_NOMEM. */
+ * collision step in cp->pot->cf_mean from now on (the C_FF observer);
+ * changes no trajectory; nothing to keep with another method.  0 or
+ * PL_ERR_NOMEM. */
 int pl_coupling_mean_force_on(pl_coupling_t *cp, size_t ncolloids, pl_err_t *err);
+/* That mean (3 x ncolloids, x block first), or NULL when not kept. */
+const double *pl_coupling_mean_force(const pl_coupling_t *cp);
 
 /* Pinned colloids: their velocities (changed by a coupling stage) are taken
  * back to zero and the momentum they had gained is added to cp->impulse. */

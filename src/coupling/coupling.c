@@ -1,10 +1,14 @@
-/* Coupling object: parameters from the scene, buffers of the coupling stages,
- * the compensating fluid acceleration (Hecht Sec. VIII.A iii), the initial
- * removal of fluid from colloid interiors (coupling I), and the cross-key
- * checks of the coupling section. */
+/* Coupling object: its common part (method, threads, seed, the compensating
+ * fluid acceleration of Hecht Sec. VIII.A iii, the pinned colloids' impulse),
+ * the state of the method in use (built and freed by that method's file:
+ * coupling_stages.c for I and II, coupling_potential.c), the initial removal
+ * of fluid from colloid interiors (couplings I and potential), and the
+ * cross-key checks of the coupling section.  The pinned impulse is common
+ * because every method's stages add to it and the thermo columns and the
+ * checkpoint read it whatever the method; the colloid lookup is not: each of
+ * the two methods that use one keeps its own, with its own radii. */
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
@@ -80,22 +84,16 @@ int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err)
     return check_settling(scene, err);
 }
 
-/* Lookup of the colloids with their own radii. */
-int pl_coupling_lookup_update(pl_coupling_t *cp, const pl_sim_t *sim, pl_err_t *err)
-{
-    pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
-    return pl_coupling_lookup_fill(cp, sim, &v, err);
-}
-
 /* Couplings I and potential start without fluid inside colloids (radius R,
  * or sigma_cf when rad is given): such particles get a new uniform position
  * (draws keyed by particle index: thread independent). */
-static void clear_interiors(pl_coupling_t *cp, pl_sim_t *sim, const double *rad)
+static void clear_interiors(const pl_coupling_t *cp, pl_sim_t *sim, const pl_coupling_lookup_t *lk,
+                            const double *rad)
 {
     pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
     if (rad) v.rad = rad;
-    pl_coupling_clear_interiors(&sim->fluid, &v, sim->grid.L, sim->grid.walls, cp->lk_start, cp->lk_list,
-                                cp->seed, cp->nthreads);
+    pl_coupling_clear_interiors(&sim->fluid, &v, sim->grid.L, sim->grid.walls, lk->start, lk->list, cp->seed,
+                                cp->nthreads);
 }
 
 int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
@@ -124,58 +122,18 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
             col->vx[k] = col->vy[k] = col->vz[k] = col->wx[k] = col->wy[k] = col->wz[k] = 0.0;
     int rc = 0;
     if (cp->method == PL_COUPLE_HECHT1) {
-        pl_coupling1_params_t *p = &cp->p1;
-        p->dt = sc->srd.dt;
-        p->kT = sc->coupling.wall_temperature > 0.0 ? sc->coupling.wall_temperature : pl_scene_kT(sc);
-        p->boundary = sc->coupling.boundary;
-        p->placement = sc->coupling.placement;
-        p->max_refl = (int)sc->coupling.max_reflections;
-        p->seed = cp->seed;
-        memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
-        size_t L3 = (size_t)sim->grid.L[0] * (size_t)sim->grid.L[1] * (size_t)sim->grid.L[2];
-        cp->lk_start = pl_alloc((L3 + 1) * sizeof(int32_t), cp->nthreads);
-        cp->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t), cp->nthreads);
-        cp->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t), cp->nthreads);
-        if (!cp->lk_start || !cp->found || !cp->counts) rc = PL_ERR_NOMEM;
-        if (!rc && !(rc = pl_coupling_lookup_update(cp, sim, err))) clear_interiors(cp, sim, NULL);
+        if (!(rc = pl_coupling1_create(cp, sim, &cp->c1, err)) &&
+            !(rc = pl_coupling_lookup_update(&cp->c1->lk, sim, err)))
+            clear_interiors(cp, sim, &cp->c1->lk, NULL);
     } else if (cp->method == PL_COUPLE_HECHT2) {
-        pl_coupling2_params_t *p = &cp->p2;
-        p->rule = sc->srd.rule;
-        p->cos_a = cos(sc->srd.alpha_deg * PL_PI / 180.0);
-        p->sin_a = sin(sc->srd.alpha_deg * PL_PI / 180.0);
-        p->seed = cp->seed;
-        p->kT_target = sc->thermostat.temperature;
-        p->heyes_eps = sc->thermostat.heyes_epsilon;
-        /* virtual wall particles: those of the fluid collision */
-        p->wall_ghosts = pl_sim_wall_ghosts(sim, &p->ghost_density, &p->kT_wall);
-        memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
-        if (p->wall_ghosts && !(p->wall_fix = malloc(PL_WALL_ACC_N * (nc + 1) * sizeof *p->wall_fix)))
-            rc = PL_ERR_NOMEM;
-        cp->keys = malloc((nc + 1) * sizeof *cp->keys);
-        cp->occ_cell = malloc((nc + 1) * sizeof *cp->occ_cell);
-        cp->occ_save = malloc((nc + 1) * sizeof *cp->occ_save);
-        cp->occ_col = malloc((nc + 1) * sizeof *cp->occ_col);
-        cp->col_idx = malloc((nc + 1) * sizeof *cp->col_idx);
-        cp->save_cap = 3 * (nc * (size_t)(4.0 * sc->fluid.density + 16.0) + 64);
-        cp->vsave = pl_alloc(cp->save_cap * sizeof(double), cp->nthreads);
-        if (!cp->keys || !cp->occ_cell || !cp->occ_save || !cp->occ_col || !cp->col_idx || !cp->vsave)
-            rc = PL_ERR_NOMEM;
-    }
-    else if (cp->method == PL_COUPLE_POTENTIAL && !(rc = pl_coupling_potential_setup(cp, sim, err))) {
-        for (size_t k = 0; k < nc; ++k) cp->rad_big[k] = cp->wca.sigma;
+        rc = pl_coupling2_create(cp, sim, &cp->c2, err);
+    } else if (cp->method == PL_COUPLE_POTENTIAL && !(rc = pl_coupling_potential_create(cp, sim, &cp->pot, err))) {
+        /* the interiors of the spheres of radius sigma_cf */
+        pl_coupling_potential_state_t *ps = cp->pot;
+        for (size_t k = 0; k < nc; ++k) ps->rad_big[k] = ps->wca.sigma;
         pl_coupling_colloids_t v = pl_coupling_view(col);
-        v.rad = cp->rad_big;
-        size_t need;
-        while ((need = pl_coupling_lookup_build(&v, sim->grid.L, sim->grid.walls, cp->lk_start,
-                                                cp->lk_list, cp->lk_cap)) > cp->lk_cap) {
-            pl_free(cp->lk_list);
-            cp->lk_cap = need;
-            if (!(cp->lk_list = pl_alloc(need * sizeof(int32_t), cp->nthreads))) {
-                rc = PL_ERR_NOMEM;
-                break;
-            }
-        }
-        if (!rc) clear_interiors(cp, sim, cp->rad_big);
+        v.rad = ps->rad_big;
+        if (!(rc = pl_coupling_lookup_fill(&ps->lk, sim, &v, err))) clear_interiors(cp, sim, &ps->lk, ps->rad_big);
     }
     if (rc) {
         pl_coupling_free(cp);
@@ -189,25 +147,8 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
 void pl_coupling_free(pl_coupling_t *cp)
 {
     if (!cp) return;
-    pl_free(cp->lk_start);
-    pl_free(cp->lk_list);
-    pl_free(cp->found);
-    pl_free(cp->counts);
-    free(cp->keys);
-    free(cp->p2.wall_fix);
-    free(cp->occ_cell);
-    free(cp->occ_save);
-    free(cp->occ_col);
-    free(cp->col_idx);
-    pl_free(cp->vsave);
-    free(cp->rad_big);
-    pl_free(cp->marks);
-    free(cp->axis_buf);
-    free(cp->cf);
-    free(cp->cf_mean);
-    free(cp->wca_partial);
-    free(cp->near_idx);
-    free(cp->near_owner);
-    free(cp->near_buf);
+    pl_coupling1_free(cp->c1);
+    pl_coupling2_free(cp->c2);
+    pl_coupling_potential_free(cp->pot);
     free(cp);
 }

@@ -61,8 +61,8 @@ static void coupling_stages(pl_sim_t *sim)
 /* ---- thermo columns ------------------------------------------------------ */
 static long long v_events(const pl_thermo_sample_t *s, int trunc)
 {
-    const pl_coupling_t *cp = s->sim->coupling;
-    return (long long)(trunc ? cp->truncations : cp->events);
+    const pl_coupling1_state_t *c1 = s->sim->coupling->c1; /* a column of coupling I only */
+    return (long long)(trunc ? c1->truncations : c1->events);
 }
 static double v_drag(const pl_thermo_sample_t *s, int d) /* mean force per pinned colloid so far */
 {

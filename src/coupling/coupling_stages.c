@@ -1,13 +1,54 @@
-/* Plan stages of the coupling: they unpack the sim and call the kernels of
- * kernels/coupling_*.c, then apply what the kernels collected to the
- * colloids.  Centre-of-mass drift removal (Hecht Sec. VIII.A). */
+/* Couplings I and II (Hecht Secs. IV-V): their state (pl_coupling1_state_t,
+ * pl_coupling2_state_t), built here from the scene, and their plan stages,
+ * which unpack the sim and call the kernels of kernels/coupling_*.c, then
+ * apply what the kernels collected to the colloids.  The state lives with
+ * the stages that use it; a run builds only its method's.  Also the stages
+ * every method may have: pinned colloids' impulse, flow hold, centre-of-mass
+ * drift removal (Hecht Sec. VIII.A). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
 #include "peloid/sim.h"
+
+/* ---- coupling I ---------------------------------------------------------- */
+int pl_coupling1_create(const pl_coupling_t *cp, const pl_sim_t *sim, pl_coupling1_state_t **out, pl_err_t *err)
+{
+    const pl_scene_t *sc = &sim->scene;
+    *out = NULL;
+    pl_coupling1_state_t *s = calloc(1, sizeof *s);
+    if (!s) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling");
+    pl_coupling1_params_t *p = &s->p;
+    p->dt = sc->srd.dt;
+    p->kT = sc->coupling.wall_temperature > 0.0 ? sc->coupling.wall_temperature : pl_scene_kT(sc);
+    p->boundary = sc->coupling.boundary;
+    p->placement = sc->coupling.placement;
+    p->max_refl = (int)sc->coupling.max_reflections;
+    p->seed = cp->seed;
+    memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
+    int rc = pl_coupling_lookup_init(&s->lk, sim->grid.L, cp->nthreads, err);
+    s->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t), cp->nthreads);
+    s->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t), cp->nthreads);
+    if (!rc && (!s->found || !s->counts)) rc = pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling");
+    if (rc) {
+        pl_coupling1_free(s);
+        return rc;
+    }
+    *out = s;
+    return 0;
+}
+
+void pl_coupling1_free(pl_coupling1_state_t *s)
+{
+    if (!s) return;
+    pl_coupling_lookup_free(&s->lk);
+    pl_free(s->found);
+    pl_free(s->counts);
+    free(s);
+}
 
 /* Coupling I after stream+bin: reflections with their impulses on the
  * colloids, event counters. */
@@ -15,20 +56,21 @@ int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)ctx;
     pl_coupling_t *cp = sim->coupling;
+    pl_coupling1_state_t *s = cp->c1;
     pl_colloid_t *c = sim->colloids;
-    int rc = pl_coupling_lookup_update(cp, sim, err);
+    int rc = pl_coupling_lookup_update(&s->lk, sim, err);
     if (rc) return rc;
-    cp->p1.step = (uint64_t)sim->step;
+    s->p.step = (uint64_t)sim->step;
     pl_coupling_colloids_t v = pl_coupling_view(c);
     double *const vel[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
     int64_t wall[PL_WALL_ACC_N] = {0};
-    cp->p1.wall_acc = sim->wall_acc ? wall : NULL;
-    pl_coupling1_reflect(&sim->fluid, &sim->grid, &cp->p1, &v, vel, cp->lk_start, cp->lk_list,
-                         sim->hist, cp->nthreads, cp->found, cp->counts);
-    cp->p1.wall_acc = NULL;
+    s->p.wall_acc = sim->wall_acc ? wall : NULL;
+    pl_coupling1_reflect(&sim->fluid, &sim->grid, &s->p, &v, vel, s->lk.start, s->lk.list, sim->hist,
+                         cp->nthreads, s->found, s->counts);
+    s->p.wall_acc = NULL;
     if (sim->wall_acc) pl_sim_wall_add(sim, wall);
-    cp->events += cp->counts[0];
-    cp->truncations += cp->counts[1];
+    s->events += s->counts[0];
+    s->truncations += s->counts[1];
     if (cp->pinned) pl_coupling_absorb_pinned(cp, c, sim->scene.srd.dt);
     return 0;
 }
@@ -51,40 +93,88 @@ static int cmp_u64(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* ---- coupling II --------------------------------------------------------- */
+int pl_coupling2_create(const pl_coupling_t *cp, const pl_sim_t *sim, pl_coupling2_state_t **out, pl_err_t *err)
+{
+    const pl_scene_t *sc = &sim->scene;
+    const size_t nc = sim->colloids ? sim->colloids->n : 0;
+    *out = NULL;
+    pl_coupling2_state_t *s = calloc(1, sizeof *s);
+    if (!s) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling");
+    pl_coupling2_params_t *p = &s->p;
+    p->rule = sc->srd.rule;
+    p->cos_a = cos(sc->srd.alpha_deg * PL_PI / 180.0);
+    p->sin_a = sin(sc->srd.alpha_deg * PL_PI / 180.0);
+    p->seed = cp->seed;
+    p->kT_target = sc->thermostat.temperature;
+    p->heyes_eps = sc->thermostat.heyes_epsilon;
+    /* virtual wall particles: those of the fluid collision */
+    p->wall_ghosts = pl_sim_wall_ghosts(sim, &p->ghost_density, &p->kT_wall);
+    memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
+    int bad = p->wall_ghosts && !(p->wall_fix = malloc(PL_WALL_ACC_N * (nc + 1) * sizeof *p->wall_fix));
+    s->keys = malloc((nc + 1) * sizeof *s->keys);
+    s->occ_cell = malloc((nc + 1) * sizeof *s->occ_cell);
+    s->occ_save = malloc((nc + 1) * sizeof *s->occ_save);
+    s->occ_col = malloc((nc + 1) * sizeof *s->occ_col);
+    s->col_idx = malloc((nc + 1) * sizeof *s->col_idx);
+    s->save_cap = 3 * (nc * (size_t)(4.0 * sc->fluid.density + 16.0) + 64);
+    s->vsave = pl_alloc(s->save_cap * sizeof(double), cp->nthreads);
+    if (bad || !s->keys || !s->occ_cell || !s->occ_save || !s->occ_col || !s->col_idx || !s->vsave) {
+        pl_coupling2_free(s);
+        return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling");
+    }
+    *out = s;
+    return 0;
+}
+
+void pl_coupling2_free(pl_coupling2_state_t *s)
+{
+    if (!s) return;
+    free(s->p.wall_fix);
+    free(s->keys);
+    free(s->occ_cell);
+    free(s->occ_save);
+    free(s->occ_col);
+    free(s->col_idx);
+    pl_free(s->vsave);
+    free(s);
+}
+
 /* Coupling II before the fluid collision: colloids binned into the shifted
  * collision cells (sorted by cell, then index), the fluid velocities of the
  * occupied cells saved. */
 int pl_coupling_stage_save(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)ctx;
-    pl_coupling_t *cp = sim->coupling;
+    const pl_coupling_t *cp = sim->coupling;
+    pl_coupling2_state_t *s = cp->c2;
     const pl_colloid_t *c = sim->colloids;
     for (size_t k = 0; k < c->n; ++k)
-        cp->keys[k] = (uint64_t)pl_coupling_cell_of(&sim->grid, c->x[k], c->y[k], c->z[k]) << 32 | k;
-    qsort(cp->keys, c->n, sizeof *cp->keys, cmp_u64);
+        s->keys[k] = (uint64_t)pl_coupling_cell_of(&sim->grid, c->x[k], c->y[k], c->z[k]) << 32 | k;
+    qsort(s->keys, c->n, sizeof *s->keys, cmp_u64);
     size_t nocc = 0, nsave = 0;
     for (size_t q = 0; q < c->n; ++q) {
-        uint32_t cell = (uint32_t)(cp->keys[q] >> 32);
-        if (q == 0 || cell != cp->occ_cell[nocc - 1]) {
-            cp->occ_cell[nocc] = cell;
-            cp->occ_col[nocc] = (int32_t)q;
-            cp->occ_save[nocc] = nsave;
+        uint32_t cell = (uint32_t)(s->keys[q] >> 32);
+        if (q == 0 || cell != s->occ_cell[nocc - 1]) {
+            s->occ_cell[nocc] = cell;
+            s->occ_col[nocc] = (int32_t)q;
+            s->occ_save[nocc] = nsave;
             nsave += sim->cell_start[cell + 1] - sim->cell_start[cell];
             nocc++;
         }
-        cp->col_idx[q] = (int32_t)(cp->keys[q] & 0xffffffffu);
+        s->col_idx[q] = (int32_t)(s->keys[q] & 0xffffffffu);
     }
-    cp->occ_col[nocc] = (int32_t)c->n;
-    cp->occ_save[nocc] = nsave;
-    cp->nocc = nocc;
-    if (3 * nsave > cp->save_cap) {
-        pl_free(cp->vsave);
-        cp->save_cap = 3 * (nsave + nsave / 2 + 64);
-        if (!(cp->vsave = pl_alloc(cp->save_cap * sizeof(double), cp->nthreads)))
+    s->occ_col[nocc] = (int32_t)c->n;
+    s->occ_save[nocc] = nsave;
+    s->nocc = nocc;
+    if (3 * nsave > s->save_cap) {
+        pl_free(s->vsave);
+        s->save_cap = 3 * (nsave + nsave / 2 + 64);
+        if (!(s->vsave = pl_alloc(s->save_cap * sizeof(double), cp->nthreads)))
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling II buffer");
     }
-    pl_coupling2_cells_t oc = {cp->nocc, cp->occ_cell, cp->occ_save, cp->occ_col, cp->col_idx};
-    pl_coupling2_save(&sim->fluid, sim->cell_start, &oc, cp->vsave, cp->nthreads);
+    pl_coupling2_cells_t oc = {s->nocc, s->occ_cell, s->occ_save, s->occ_col, s->col_idx};
+    pl_coupling2_save(&sim->fluid, sim->cell_start, &oc, s->vsave, cp->nthreads);
     return 0;
 }
 
@@ -93,19 +183,20 @@ int pl_coupling_stage_save(pl_sim_t *sim, void *ctx, pl_err_t *err)
 static int collide(pl_sim_t *sim, int heyes)
 {
     pl_coupling_t *cp = sim->coupling;
+    pl_coupling2_state_t *s = cp->c2;
     pl_colloid_t *c = sim->colloids;
-    cp->p2.step = (uint64_t)sim->step;
-    pl_coupling2_cells_t oc = {cp->nocc, cp->occ_cell, cp->occ_save, cp->occ_col, cp->col_idx};
+    s->p.step = (uint64_t)sim->step;
+    pl_coupling2_cells_t oc = {s->nocc, s->occ_cell, s->occ_save, s->occ_col, s->col_idx};
     if (heyes)
-        pl_coupling2_collide_heyes(&cp->p2, &oc, &sim->grid, sim->cell_start, cp->vsave, &sim->fluid, c->mass,
+        pl_coupling2_collide_heyes(&s->p, &oc, &sim->grid, sim->cell_start, s->vsave, &sim->fluid, c->mass,
                                    c->vx, c->vy, c->vz, cp->nthreads);
     else
-        pl_coupling2_collide(&cp->p2, &oc, &sim->grid, sim->cell_start, cp->vsave, &sim->fluid, c->mass, c->vx,
+        pl_coupling2_collide(&s->p, &oc, &sim->grid, sim->cell_start, s->vsave, &sim->fluid, c->mass, c->vx,
                              c->vy, c->vz, cp->nthreads);
     /* the walls' push in the occupied cells, replacing the fluid kernel's
      * count there; summed in cell order (deterministic) */
-    for (size_t j = 0; cp->p2.wall_fix && j < cp->nocc; ++j)
-        pl_sim_wall_add_momentum(sim, cp->p2.wall_fix + PL_WALL_ACC_N * j);
+    for (size_t j = 0; s->p.wall_fix && j < s->nocc; ++j)
+        pl_sim_wall_add_momentum(sim, s->p.wall_fix + PL_WALL_ACC_N * j);
     if (cp->pinned) pl_coupling_absorb_pinned(cp, c, sim->scene.srd.dt);
     return 0;
 }

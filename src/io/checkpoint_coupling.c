@@ -4,7 +4,8 @@
  *   - /wall_impulse (walls): momentum each z wall gave the fluid (wall
  *     stress), bottom xyz, top xyz; /side_wall_impulse: the x/y walls';
  *   - /coupling/counters: coupling I reflections and truncations, the
- *     potential coupling's selected particle-steps;
+ *     potential coupling's selected particle-steps (each in its method's
+ *     state; 0 in the file, and not read back, for the other methods);
  *   - /coupling/pinned: impulse (momentum, angular momentum) the pinned
  *     colloids received, and the time it was summed over (drag).
  * Not stored, because every step rebuilds it before use: the colloid lookups,
@@ -28,7 +29,8 @@ int pl_ckpt_coupling_write(hid_t f, const pl_sim_t *sim)
     if (!cp) return bad ? -1 : 0;
     hid_t g = pl_ckpt_group_create(f, "coupling");
     if (g < 0) return -1;
-    const unsigned long long cnt[3] = {cp->events, cp->truncations, cp->near_total};
+    const unsigned long long cnt[3] = {cp->c1 ? cp->c1->events : 0, cp->c1 ? cp->c1->truncations : 0,
+                                       cp->pot ? cp->pot->near_total : 0};
     double pin[7];
     for (int k = 0; k < 6; ++k) pin[k] = cp->impulse[k];
     pin[6] = cp->pinned_time;
@@ -71,9 +73,11 @@ int pl_ckpt_coupling_read(hid_t f, pl_sim_t *sim, const char *path, pl_err_t *er
         if (!isfinite(pin[k]) || (k == 6 && pin[k] < 0.0))
             return pl_err_set(err, PL_ERR_INPUT, "%s: /coupling/pinned[%d] = %g is out of range (corrupt checkpoint)",
                               path, k, pin[k]);
-    cp->events = cnt[0];
-    cp->truncations = cnt[1];
-    cp->near_total = cnt[2];
+    if (cp->c1) {
+        cp->c1->events = cnt[0];
+        cp->c1->truncations = cnt[1];
+    }
+    if (cp->pot) cp->pot->near_total = cnt[2];
     for (int k = 0; k < 6; ++k) cp->impulse[k] = pin[k];
     cp->pinned_time = pin[6];
     return 0;

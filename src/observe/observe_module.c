@@ -27,8 +27,9 @@
  *   VACF      <v(0).v(t)> of the colloid velocities (multiple-tau, AUTO) and
  *             the Green-Kubo D = (1/3) of its integral to T/4 (Hecht Eq. 35).
  *   C_FF      <F(0).F(t)> of the fluid force on the colloids, averaged over
- *             each collision step (potential coupling: cp->cf_mean), and the
- *             Green-Kubo friction (1/3kT) of its integral to its first zero.
+ *             each collision step (potential coupling:
+ *             pl_coupling_mean_force), and the Green-Kubo friction (1/3kT)
+ *             of its integral to its first zero.
  *   clusters  bond = surface gap below observe.clusters_gap, or pair energy
  *             below -observe.clusters_energy (primary / secondary minimum by
  *             the DLVO barrier gap), union-find over linked cells
@@ -515,14 +516,15 @@ static int stage_vacf(pl_sim_t *sim, void *ctx, pl_err_t *err)
     return 0;
 }
 
-/* C_FF of the step-mean fluid force (cp->cf_mean, the potential coupling):
- * from the end of the run's first step on (the start state has no step). */
+/* C_FF of the step-mean fluid force (pl_coupling_mean_force, the potential
+ * coupling): from the end of the run's first step on (the start state has
+ * no step). */
 static int stage_cff(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     pl_observe_t *o = ctx;
     if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
     const pl_scene_t *sc = &sim->scene;
-    if (sim->step < sc->observe.cff_start || sim->step <= o->first || !sim->coupling || !sim->coupling->cf_mean)
+    if (sim->step < sc->observe.cff_start || sim->step <= o->first || !pl_coupling_mean_force(sim->coupling))
         return 0;
     const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
@@ -534,7 +536,7 @@ static int stage_cff(pl_sim_t *sim, void *ctx, pl_err_t *err)
         int rc = pl_mtau_create(&p, &o->cff, err);
         if (rc) return rc;
     }
-    const double *f = sim->coupling->cf_mean;
+    const double *f = pl_coupling_mean_force(sim->coupling);
     pl_mtau_add(o->cff, f, f + c->n, f + 2 * c->n, sim->nthreads);
     o->cff_wall += omp_get_wtime() - t0;
     return 0;
