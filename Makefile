@@ -11,7 +11,11 @@
 CC       ?= gcc
 PYTHON   := /usr/bin/python3
 PKGS     := hdf5 gsl hwloc libconfig jansson
-GIT_REV  := $(shell git rev-parse --short HEAD 2>/dev/null || echo unknown)
+# the commit, with "-dirty" when the sources that build peloid differ from it
+# (summary.json's git_revision then does not claim a commit it was not built from)
+GIT_REV  := $(shell r=$$(git rev-parse --short HEAD 2>/dev/null) || r=unknown; \
+              if [ "$$r" != unknown ] && ! git diff --quiet HEAD -- src include kernels Makefile 2>/dev/null; \
+              then r=$$r-dirty; fi; echo $$r)
 OPTFLAGS ?= -O3 -march=native
 WARN     := -Wall -Wextra -Wconversion -Wshadow -Wmissing-prototypes -Wstrict-prototypes -Werror
 DEFS     ?=
