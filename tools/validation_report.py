@@ -393,6 +393,96 @@ def fig14_msd(sw):
     return row, verdict
 
 
+def drag_blocks(out, p):
+    """1000-step block means of the pinned colloid's force from thermo.tsv's cpl_drag_x (the mean since step 0)
+    after two flow-development times 2 (L/2)^2 / nu: (mean, SE, number of blocks, first step used)."""
+    import numpy as np
+    s = p["summary"]
+    path = os.path.join(out, p["id"], "thermo.tsv")
+    head = open(path).readline().rstrip("\n").split("\t")
+    a = np.loadtxt(path, skiprows=1)
+    step, m = a[:, head.index("step")], a[:, head.index("cpl_drag_x")]
+    L = s["scene"]["box"]["cells"][0]
+    burn = 2.0 * (L / 2.0) ** 2 / s["derived"]["nu"] / s["scene"]["srd"]["dt"]
+    keep = np.where(step >= burn)[0]
+    if len(keep) < 5:
+        return None
+    i0 = keep[0]
+    blocks = [(m[k] * step[k] - m[k - 1] * step[k - 1]) / (step[k] - step[k - 1]) for k in range(i0 + 1, len(step))]
+    b = np.array(blocks)
+    return float(b.mean()), float(b.std(ddof=1) / len(b) ** 0.5), len(b), int(step[i0])
+
+
+def pl_fig6_drag(sw):
+    """Friction against PL Eqs. 40-43 and the point-force form; a_eff (PL Eq. 44)."""
+    import math
+    rows, ok = [], True
+    for p in sw["points"]:
+        if not p["summary"]:
+            rows.append(f"{p['id']}: {p['status']} ({p['message']})")
+            ok = False
+            continue
+        s = p["summary"]
+        sig, L = s["scene"]["coupling"]["sigma_cf"], s["scene"]["box"]["cells"][0]
+        v0 = s["scene"]["coupling"]["flow_velocity"][0]
+        eta, rho, kT = s["derived"]["eta"], s["scene"]["fluid"]["density"], s["derived"]["kT"]
+        fb = drag_blocks(sw["_out"], p)
+        if not fb:
+            rows.append(f"σ_cf = {sig:g}, L = {L}: run too short for the flow development")
+            ok = False
+            continue
+        F, F_se, nb, first = fb
+        xi, xi_se = F / v0, F_se / v0
+        xi_e = 8.0 / 3.0 * math.sqrt(2.0 * math.pi * kT) * rho * sig * sig  # PL Eq. 40, pinned (M -> inf)
+        par = lambda a, b: 1.0 / (1.0 / a + 1.0 / b)
+        xi_pl = par(4.0 * math.pi * eta * sig / (1.0 - 2.837 * sig / L), xi_e)  # PL Eqs. 41-43 as PL evaluate them
+        xi_inf = par(4.0 * math.pi * eta * sig, xi_e)
+        xi_pf = 1.0 / (1.0 / xi_inf - 2.837 / (6.0 * math.pi * eta * L))  # point force (Hasimoto)
+        a_eff = xi / (4.0 * math.pi * eta)
+        rows.append(f"σ_cf = {sig:g} a0, L = {L} a0 ({L / sig:g} σ_cf): ξ = {xi:.1f} ± {xi_se:.1f} "
+                    f"({nb} blocks from step {first}); PL Eqs. 40–43 {xi_pl:.1f} ({100 * (xi / xi_pl - 1):+.1f} %), "
+                    f"point force {xi_pf:.1f} ({100 * (xi / xi_pf - 1):+.1f} %); a_eff = {a_eff:.2f} ± "
+                    f"{xi_se / (4 * math.pi * eta):.2f} a0"
+                    + (" (PL Fig. 6 box: PL's a_eff 1.55 a0)" if abs(L / sig - 16) < 1e-9 and sig == 2.0 else ""))
+        p["_drag"] = (sig, L, xi, xi_se, xi_pl, xi_pf, a_eff)
+    res = [p["_drag"] for p in sw["points"] if "_drag" in p]
+    if not res:
+        return "<br>".join(rows), "incomplete"
+    verdicts = []
+    for sig, L, xi, xi_se, xi_pl, xi_pf, a_eff in res:
+        best = "PL Eqs. 40–43" if abs(xi / xi_pl - 1) < abs(xi / xi_pf - 1) else "the point-force form"
+        within = min(abs(xi / xi_pl - 1), abs(xi / xi_pf - 1)) <= 0.10
+        verdicts.append(f"σ_cf = {sig:g}, L = {L}: " + ("agrees" if within else "**disagrees**") +
+                        f" (closest: {best}, within 10 %: {'yes' if within else 'no'})")
+    for sig, L, xi, xi_se, xi_pl, xi_pf, a_eff in res:
+        if sig == 2.0 and abs(L / sig - 16) < 1e-9:
+            a_se = xi_se / xi * a_eff
+            verdicts.append(("agrees" if abs(a_eff - 1.55) <= 3 * a_se else "**disagrees**") +
+                            f": a_eff = {a_eff:.2f} ± {a_se:.2f} a0 in PL's Fig. 6 box vs PL's 1.55 "
+                            f"({(a_eff - 1.55) / a_se:+.1f} SE)")
+
+    def plot(path):
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, ax = plt.subplots(figsize=(7, 4))
+        xs = range(len(res))
+        ax.errorbar(xs, [r[2] for r in res], yerr=[r[3] for r in res], fmt="o", color="k", capsize=3,
+                    label="peloid ξ (block SE)")
+        ax.plot(xs, [r[4] for r in res], "s", color="C0", label="PL Eqs. 40–43 (PL's evaluation)")
+        ax.plot(xs, [r[5] for r in res], "^", color="C1", label="point force (Hasimoto)")
+        ax.set_xticks(list(xs))
+        ax.set_xticklabels([f"σ_cf = {r[0]:g}, L = {r[1]}" for r in res])
+        ax.set_ylabel("friction ξ (m_f / t0)")
+        ax.set_title("Pinned sphere, potential coupling (PL Figs. 5–6)")
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+    return "<br>".join(rows), "; ".join(verdicts) + ("" if ok else "; incomplete"), None, plot
+
+
 def accuracy_viscosity(sw):
     """Accuracy-cost guide for the Green-Kubo viscosity (studies/accuracy_viscosity.cfg).
 
@@ -570,6 +660,15 @@ STUDIES = [
         "eval": fig14_msd,
     },
     {
+        "name": "pl_fig6_drag",
+        "study": "studies/pl_fig6_drag.cfg",
+        "figure": "PL 2006 Figs. 5–6, Eqs. 40–44",
+        "paper": "friction of a pinned slip sphere = Stokes (finite box) ∥ Enskog; a_eff = 1.55 a0 at σ_cf = 2 a0 "
+                 "in L = 16 σ_cf",
+        "size": "scenes/coupling_drag.cfg (γ = 5, α = 90°, λ = 0.1, ε_cf = 2.5 kT, Re ≈ 0.4), 26000 steps, seed 5",
+        "eval": pl_fig6_drag,
+    },
+    {
         "name": "accuracy_viscosity",
         "study": "studies/accuracy_viscosity.cfg",
         "figure": "PL Eqs. 9–15 (the guide)",
@@ -672,7 +771,7 @@ def main():
         if os.path.exists(os.path.join(rdir, s["name"] + ".png")):
             lines += [f"![{s['name']}]({s['name']}.png)", ""]
     lines += NOTES + [""] + [d + "\n" for d in details] + ["Studies of issue 16 not yet here: the full (κ, Ψ0) diagram (Fig. 9), PL D(φ) (Fig. 11), VACF "
-              "(Figs. 10, 13), friction (Figs. 5–6), g(r) vs BD (Fig. 4); the accuracy–cost guide for D_f, the drag, a colloid's D and the R–Z exponent.", ""]
+              "(Figs. 10, 13), g(r) vs BD (Fig. 4); the accuracy–cost guide for D_f, the drag, a colloid's D and the R–Z exponent.", ""]
     tmp = report + ".tmp"
     open(tmp, "w").write("\n".join(lines))
     os.replace(tmp, report)
