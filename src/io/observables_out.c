@@ -8,6 +8,7 @@
 #include "peloid/blocking.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
+#include "peloid/sim.h"
 
 const double pl_obs_fractions[PL_OBS_NFRAC] = {0.125, 0.25, 0.5, 1.0};
 
@@ -78,4 +79,20 @@ int pl_obs_h5_commit(hid_t f, int bad, const char *tmp, const char *path, const 
         return pl_err_set(err, PL_ERR_IO, "%s: closing the observables file failed", tmp);
     }
     return pl_atomic_commit(tmp, path, err);
+}
+
+json_t *pl_obs_summary_section(pl_json_t *b, json_t *doc, const struct pl_sim *sim, long long first)
+{
+    json_t *all = json_object_get(doc, "observables");
+    if (all) return all;
+    all = json_object();
+    pl_json_set(b, doc, "observables", all);
+    if (b->failed) return NULL;
+    pl_json_int(b, all, "first_step", first);
+    pl_json_int(b, all, "last_step", sim->step); /* < the scene's last step when the stopping rule ended the run */
+    if (sim->observe_resumed >= 0) { /* a restarted run: resumed from the checkpoint or afresh, and why */
+        pl_json_set(b, all, "resumed", json_boolean(sim->observe_resumed));
+        if (!sim->observe_resumed) pl_json_str(b, all, "reason", sim->observe_note);
+    }
+    return all;
 }

@@ -34,6 +34,14 @@ int pl_obs_series(hid_t obs, const char *name, size_t n, const long long *step, 
 void pl_obs_error_time(pl_json_t *b, json_t *e, const pl_obs_point_t pts[PL_OBS_NFRAC], double value, double se,
                        int plateau, double target);
 
+struct pl_sim;
+/* summary.json's "observables" section: the one already in doc (an observer
+ * that finished before wrote it this run), or a new one with the run's head
+ * (first_step, last_step; for a restarted run whether the observers resumed
+ * and, when not, why) set into doc.  NULL (and b failed) when out of
+ * memory. */
+json_t *pl_obs_summary_section(pl_json_t *b, json_t *doc, const struct pl_sim *sim, long long first);
+
 /* Closes observables file f written at tmp and commits it to path
  * (pl_atomic_commit); bad: a write failed before, then `what` names the
  * writer in the error (PL_ERR_IO, with HDF5's reason) and tmp is removed. */

@@ -1236,13 +1236,8 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
     if (rc) return rc;
     const double target = sim->scene.observe.target_rel_error;
     pl_json_t b = {err, path, "observables", 0};
-    json_t *all = json_object();
-    pl_json_int(&b, all, "first_step", o->first);
-    pl_json_int(&b, all, "last_step", sim->step); /* < o->last when the stopping rule ended the run */
-    if (sim->observe_resumed >= 0) { /* a restarted run: resumed from the checkpoint or afresh, and why */
-        pl_json_set(&b, all, "resumed", json_boolean(sim->observe_resumed));
-        if (!sim->observe_resumed) pl_json_str(&b, all, "reason", sim->observe_note);
-    }
+    json_t *all = pl_obs_summary_section(&b, doc, sim, o->first);
+    if (!all) return err->code;
     double D, se, tmin, tmax;
     if (o->msd && diffusion(o, &D, &se, &tmin, &tmax)) {
         json_t *e = entry(&b, o, OB_D, D, se, (double)sim->colloids->n, 0.0, 1, o->msd_wall, target, "a0^2/t0");
@@ -1382,7 +1377,6 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
         pl_json_str(&b, e, "against", "unit Gaussian of (v - <v>) sqrt(M/kT), all axes (Maxwell-Boltzmann)");
         pl_json_set(&b, all, vkey[k], e);
     }
-    pl_json_set(&b, doc, "observables", all);
     return b.failed ? err->code : 0;
 }
 

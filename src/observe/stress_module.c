@@ -610,17 +610,8 @@ static int stress_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *
     int rc = write_h5(sim, o, path, err);
     if (rc) return rc;
     pl_json_t b = {err, path, "observables", 0};
-    json_t *all = json_object_get(doc, "observables");
-    if (!all) {
-        all = json_object();
-        pl_json_int(&b, all, "first_step", o->first);
-        pl_json_int(&b, all, "last_step", sim->step);
-        if (sim->observe_resumed >= 0) {
-            pl_json_set(&b, all, "resumed", json_boolean(sim->observe_resumed));
-            if (!sim->observe_resumed) pl_json_str(&b, all, "reason", sim->observe_note);
-        }
-        pl_json_set(&b, doc, "observables", all);
-    }
+    json_t *all = pl_obs_summary_section(&b, doc, sim, o->first);
+    if (!all) return err->code;
     const pl_scene_t *sc = &sim->scene;
     pl_srd_theory_t th;
     pl_srd_theory(sc->fluid.density, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, o->kT, &th);
