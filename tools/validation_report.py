@@ -19,6 +19,21 @@ import subprocess
 import sys
 
 
+def pyplot():
+    """matplotlib.pyplot on the file-only backend (the report's plots are PNGs)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def save_figure(plt, fig, path):
+    """Writes a study plot as the report's PNG and frees it."""
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
 def load(out, name):
     path = os.path.join(out, name, "sweep.json")
     if not os.path.exists(path):
@@ -222,9 +237,7 @@ def fig5_rdf(sw):
                            f"{'yes' if at_sec else 'no'})" if first and r_sec else "not found"))
 
     def plot(path):
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+        plt = pyplot()
         pts = [q for q in sw["points"] if q["summary"]]
         fig, ax = plt.subplots(len(pts), 1, figsize=(8, 3.3 * len(pts)), sharex=True, squeeze=False)
         for a, p in zip(ax[:, 0], pts):
@@ -247,9 +260,7 @@ def fig5_rdf(sw):
             a.set_ylim(bottom=0.05 if g.max() > 10 else 0)
             a.legend(fontsize=8)
         ax[-1, 0].set_xlabel("r / R (dotted: Hecht's peaks A–D for touching spheres; triangles: peaks found)")
-        fig.tight_layout()
-        fig.savefig(path, dpi=110)
-        plt.close(fig)
+        save_figure(plt, fig, path)
     return "<br>".join(rows), "; ".join(verdicts) or "incomplete", None, plot
 
 
@@ -338,9 +349,7 @@ def fig4_rz(sw):
         verdicts.append(f"Pe = 0.5, 1, 2 differ by {spread:.2f} in l (Hecht: similar; PL: weak Pe dependence)")
 
     def plot(path):
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+        plt = pyplot()
         import numpy as np
         fig, axes = plt.subplots(1, 2, figsize=(11, 4.3), sharey=True)
         for ax, frame in zip(axes, ("volume", "momentum")):
@@ -363,9 +372,7 @@ def fig4_rz(sw):
             ax.grid(True, which="both", alpha=0.3)
         axes[0].set_ylabel("v_s / v∞ (fitted v∞)")
         fig.suptitle("Richardson–Zaki (Hecht Fig. 4, Eq. 37), coupling II, periodic box", fontsize=11)
-        fig.tight_layout()
-        fig.savefig(path, dpi=110)
-        plt.close(fig)
+        save_figure(plt, fig, path)
     return "<br>".join(rows), "; ".join(verdicts), None, plot
 
 
@@ -462,9 +469,7 @@ def pl_fig6_drag(sw):
                             f"({(a_eff - 1.55) / a_se:+.1f} SE)")
 
     def plot(path):
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+        plt = pyplot()
         fig, ax = plt.subplots(figsize=(7, 4))
         xs = range(len(res))
         ax.errorbar(xs, [r[2] for r in res], yerr=[r[3] for r in res], fmt="o", color="k", capsize=3,
@@ -477,9 +482,7 @@ def pl_fig6_drag(sw):
         ax.set_title("Pinned sphere, potential coupling (PL Figs. 5–6)")
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=8)
-        fig.tight_layout()
-        fig.savefig(path, dpi=110)
-        plt.close(fig)
+        save_figure(plt, fig, path)
     return "<br>".join(rows), "; ".join(verdicts) + ("" if ok else "; incomplete"), None, plot
 
 
@@ -563,9 +566,7 @@ def accuracy_viscosity(sw):
         " (per setting, within 3 SE at the longest run)"
 
     def plot(path):
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+        plt = pyplot()
         fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
         for k in sorted(runs):
             r = runs[k]
@@ -592,9 +593,7 @@ def accuracy_viscosity(sw):
         ax[0].set_title("error against PL Eqs. 9–15")
         ax[1].set_title("statistical error")
         ax[1].legend(fontsize=7, ncol=2)
-        fig.tight_layout()
-        fig.savefig(path, dpi=110)
-        plt.close(fig)
+        save_figure(plt, fig, path)
     return value, verdict, details, plot
 
 
