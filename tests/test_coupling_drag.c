@@ -45,9 +45,8 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "peloid/coupling.h"
+#include "coupling_test_util.h"
 #include "peloid/srd_theory.h"
-#include "support.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -73,16 +72,9 @@ static double pinned_friction(double sigma, double v0, long long burn_steps, dou
     enum { NB = 20 };
     pl_sim_t *sim = pl_test_sim(text, 2);
     pl_test_steps(sim, burn);
-    double F[NB], mean = 0.0, var = 0.0;
-    for (int b = 0; b < NB; ++b) {
-        double p0 = sim->coupling->impulse[0], t0 = sim->coupling->pinned_time;
-        pl_test_steps(sim, block);
-        F[b] = (sim->coupling->impulse[0] - p0) / (sim->coupling->pinned_time - t0);
-        mean += F[b] / NB;
-    }
-    for (int b = 0; b < NB; ++b) var += (F[b] - mean) * (F[b] - mean) / (NB - 1);
+    double se_F, mean = pl_test_pinned_force(sim, 0, NB, block, &se_F);
     pl_sim_free(sim);
-    *se_out = sqrt(var / NB) / v0;
+    *se_out = se_F / v0;
     if (!quick) cr_expect_lt(*se_out / (mean / v0), 0.05, "drag too noisy to judge: %.3g +- %.3g", mean / v0, *se_out);
     return mean / v0;
 }

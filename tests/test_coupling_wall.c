@@ -36,8 +36,7 @@
 #include <stdlib.h>
 #include <unistd.h>
 
-#include "peloid/coupling.h"
-#include "support.h"
+#include "coupling_test_util.h"
 
 static const double PI = 3.14159265358979323846;
 static const double EPS_CF = 2.5, SIGMA_CF = 2.0, KT = 1.0, ZC = 1.9;
@@ -122,16 +121,7 @@ static void wall_force(const char *walls, double *F, double *se, double *exact)
     enum { NB = 20 };
     long long burn = quick ? 10 : 500, block = quick ? 5 : 5000;
     pl_test_steps(sim, burn);
-    double Fb[NB], mean = 0.0, var = 0.0;
-    for (int b = 0; b < NB; ++b) {
-        double p0 = sim->coupling->impulse[2], t0 = sim->coupling->pinned_time;
-        pl_test_steps(sim, block);
-        Fb[b] = (sim->coupling->impulse[2] - p0) / (sim->coupling->pinned_time - t0);
-        mean += Fb[b] / NB;
-    }
-    for (int b = 0; b < NB; ++b) var += (Fb[b] - mean) * (Fb[b] - mean) / (NB - 1);
-    *F = mean;
-    *se = sqrt(var / NB);
+    *F = pl_test_pinned_force(sim, 2, NB, block, se);
     *exact = boltzmann_force((double)sim->fluid.n, sim->grid.L[0] * sim->grid.L[1] * sim->grid.L[2]);
     pl_sim_free(sim);
 }
