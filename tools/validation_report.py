@@ -679,6 +679,45 @@ STUDIES = [
 ]
 
 
+def reduced_fig9_kappa(sw):
+    """studies/reduced/hecht_fig9_kappa.cfg: suspended at 1.0e8 /m, clustered at 2.0e8 /m (the full rule)."""
+    got = {}
+    for p in sw["points"]:
+        k = p["params"]["physical.kappa"]
+        n = p["summary"]["mapping"]["colloid"]["n_colloids"]
+        lc = p["summary"]["observables"]["largest_cluster"]
+        got[k] = (cluster_state(lc["value"] / n), 100 * lc["value"] / n, 100 * lc["stderr"] / n)
+    msg = "; ".join(f"kappa {k:.2g}: largest cluster {f:.1f} +- {e:.1f} % -> {s}" for k, (s, f, e) in sorted(got.items()))
+    return got[1.0e8][0] == "suspended" and got[2.0e8][0] == "clustered", msg
+
+
+def reduced_accuracy_viscosity(sw):
+    """studies/reduced/accuracy_viscosity.cfg: within 3 SE of PL at 12000 steps; SE(12000)/SE(3000) in 0.3-0.8."""
+    import math
+    se, good, msg = {}, True, []
+    for p in sw["points"]:
+        e = p["summary"]["observables"]["fluid_viscosity"]
+        lam, steps = p["params"]["srd.dt"], p["params"]["steps"]
+        se[(lam, steps)] = e["stderr"]
+        if steps == 12000:
+            dev = (e["value"] - e["theory_PL_Eq15"]) / e["stderr"]
+            good &= abs(dev) <= 3
+            msg.append(f"lambda {lam:g}: eta {e['value']:.3f} +- {e['stderr']:.3f} vs PL {e['theory_PL_Eq15']:.3f} ({dev:+.1f} SE)")
+    lams = sorted({k[0] for k in se})
+    ratio = math.exp(sum(math.log(se[(l, 12000)] / se[(l, 3000)]) for l in lams) / len(lams))
+    good &= 0.3 <= ratio <= 0.8
+    msg.append(f"SE(12000) / SE(3000) = {ratio:.2f} (expected 0.5)")
+    return good, "; ".join(msg)
+
+
+# The reduced studies of make check (tests/studies_reduced.sh runs studies/reduced/NAME.cfg for every NAME
+# here and asserts the check): each returns (passed, one-line message).
+REDUCED = {
+    "hecht_fig9_kappa": reduced_fig9_kappa,
+    "accuracy_viscosity": reduced_accuracy_viscosity,
+}
+
+
 def mapped_time(sw):
     """Real time the runs covered: steps x srd.dt x t0 (summary.json units_si)."""
     ts = set()
