@@ -60,6 +60,27 @@ def cluster_state(fraction):
     return "clustered" if fraction > 0.10 else "suspended"
 
 
+def fig9_point(sw, p, rng):
+    """One finished Fig. 9 point by both rules of fig9_kappa: the largest cluster (second-half mean) as a
+    fraction of the colloids and the cluster rule's state; the contact peaks B-D of g(r) present (PEAK_SE)
+    and the g(r) rule's state."""
+    n = p["summary"]["mapping"]["colloid"]["n_colloids"]
+    lc = p["summary"]["observables"]["largest_cluster"]
+    frac, se = lc["value"] / n, lc["stderr"] / n
+    first, peaks = contact_peaks(*rdf_of(sw, p), rng)
+    more = [lab for lab, _, _ in FIG5_PEAKS if present(peaks[lab])]
+    return {"n": n, "lc": lc, "frac": frac, "se": se, "state": cluster_state(frac), "peaks": peaks, "more": more,
+            "gr_state": "clustered" if more else "suspended"}
+
+
+def describe_fig9_point(q):
+    lc, more, peaks = q["lc"], q["more"], q["peaks"]
+    return (f"largest cluster {lc['value']:.1f} ± {lc['stderr']:.1f} of {q['n']} ({100 * q['frac']:.1f} ± "
+            f"{100 * q['se']:.1f} %) → {q['state']}; g(r) peaks beyond the first: "
+            + (", ".join(f"{lab} ({peaks[lab][2]:.0f} SE)" for lab in more) if more else "none")
+            + f" → {q['gr_state']}")
+
+
 def fig9_kappa(sw):
     """Two rules, each stated before the runs it judges: the cluster rule (clustered when the largest
     cluster, second-half mean, holds > 10 % of the colloids) and Hecht's g(r) rule (Sec. X.B: suspended
@@ -73,18 +94,9 @@ def fig9_kappa(sw):
         if not p["summary"]:
             rows.append(f"κ = {k:.2g} /m: {p['status']} ({p['message']})")
             continue
-        n = p["summary"]["mapping"]["colloid"]["n_colloids"]
-        lc = p["summary"]["observables"]["largest_cluster"]
-        frac, se = lc["value"] / n, lc["stderr"] / n
-        state = cluster_state(frac)
-        states[k] = state
-        first, peaks = contact_peaks(*rdf_of(sw, p), rng)
-        more = [lab for lab, _, _ in FIG5_PEAKS if present(peaks[lab])]
-        gr_states[k] = "clustered" if more else "suspended"
-        rows.append(f"κ = {k:.2g} /m{f' (seed {seed})' if seed else ''}: largest cluster {lc['value']:.1f} ± {lc['stderr']:.1f} of {n} "
-                    f"({100 * frac:.1f} ± {100 * se:.1f} %) → {state}; g(r) peaks beyond the first: "
-                    + (", ".join(f"{lab} ({peaks[lab][2]:.0f} SE)" for lab in more) if more else "none")
-                    + f" → {gr_states[k]}")
+        q = fig9_point(sw, p, rng)
+        states[k], gr_states[k] = q["state"], q["gr_state"]
+        rows.append(f"κ = {k:.2g} /m{f' (seed {seed})' if seed else ''}: " + describe_fig9_point(q))
     want = {1.4e8: "suspended", 1.6e8: "clustered"}
     want = {k: v for k, v in want.items() if any(p["params"]["physical.kappa"] == k for p in sw["points"])}
     if not want or not all(k in states for k in want):
