@@ -158,7 +158,7 @@ def fig9_points(sw, keys):
     for p in sw["points"]:
         at = tuple(p["params"][k] for k in keys)
         if not p["summary"]:
-            pts[at] = {"failed": f"{p['status']} (exit {p.get('exit_code')}): {p['message']}"}
+            pts[at] = {"failed": f"{p['status']} (exit {p.get('exit_code')}): " + p["message"].replace("peloid: error: ", "")}
             continue
         q = fig9_point(sw, p, rng)
         q["barrier"], q["secondary"] = dlvo_shape(p["summary"])
@@ -216,9 +216,10 @@ def fig9_grow(line, key):
 
 
 def count_statements(res):
-    """'k of n agree' over the judged statements, and how many could not be judged."""
+    """'k of n agree' over the decided statements, and how many were not (a point did not finish, or S4 not
+    resolved)."""
     judged = [r for r in res if r is not None]
-    return f"{sum(judged)} of {len(judged)} agree" + (f" ({len(res) - len(judged)} not judged)" if len(judged) < len(res) else "")
+    return f"{sum(judged)} of {len(judged)} agree" + (f" ({len(res) - len(judged)} not decided)" if len(judged) < len(res) else "")
 
 
 def verdict_word(ok):
@@ -281,7 +282,7 @@ def fig9_diagram(sw):
             if q is None:
                 cells.append("–")
             elif "failed" in q:
-                cells.append(f"failed: {q['failed']}")
+                cells.append(q["failed"])
             else:
                 dl = (f"min {q['secondary']:.2g} kT" if q["secondary"] is not None else "no secondary min") + \
                      (f", barrier {q['barrier']:.3g} kT" if q["barrier"] is not None else ", no barrier")
@@ -291,6 +292,7 @@ def fig9_diagram(sw):
     details = "\n".join(lines)
 
     def plot(path):
+        import textwrap
         plt = pyplot()
         fig, axes = plt.subplots(1, 2, figsize=(13, 6.2), sharey=True)
         col = {"clustered": "C3", "suspended": "C0"}
@@ -300,7 +302,8 @@ def fig9_diagram(sw):
                 x, y = psi.index(s), kap.index(k)
                 if "failed" in q:
                     ax.plot(x, y, "x", color="0.4", ms=12, mew=2)
-                    ax.text(x + 0.12, y, "failed: " + q["failed"][:40], fontsize=6, va="center", color="0.3")
+                    short = ":".join(q["failed"].split(":")[:2])  # 'failed (exit N): the guard'; the table has it all
+                    ax.text(x + 0.14, y, "\n".join(textwrap.wrap(short, 18)), fontsize=6.5, va="center", color="0.3")
                     continue
                 ax.plot(x, y, "o", color=col[q[key]], ms=16)
                 if key == "state":
@@ -315,13 +318,13 @@ def fig9_diagram(sw):
             for (k, s), lab in (((2.0e8, 0.02), "S1: Hecht clustered"), ((7.3e7, 0.05), "S2: Hecht suspended")):
                 if (k, s) in pts:
                     ax.plot(psi.index(s), kap.index(k), "o", mfc="none", mec="k", ms=24, mew=1.2)
-                    ax.text(psi.index(s) - 0.1, kap.index(k) + 0.32, lab, fontsize=7, ha="center")
+                    ax.text(psi.index(s), kap.index(k) - 0.36, lab, fontsize=7, ha="center")
             if 1.4e8 in kap and 1.6e8 in kap and 0.02 in psi:
                 y = kap.index(1.4e8) + 0.5
                 ax.plot([psi.index(0.02) - 0.4, psi.index(0.02) + 0.4], [y, y], "k--", lw=1.5)
                 ax.text(psi.index(0.02) - 0.45, y, "S3: Hecht's boundary", fontsize=7, ha="right", va="center")
             if 2.0e8 in kap and 0.02 in psi:
-                y = kap.index(2.0e8) + 0.42
+                y = kap.index(2.0e8) + 0.5
                 ax.annotate("", xy=(len(psi) - 1 + 0.2, y), xytext=(psi.index(0.02) + 0.2, y),
                             arrowprops=dict(arrowstyle="->", lw=1))
                 ax.text(len(psi) - 1.3, y + 0.08, "S4: Hecht, clustering grows with Ψ0", fontsize=7, ha="center")
