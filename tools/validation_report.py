@@ -351,7 +351,7 @@ def fig9_phi(sw):
     pts = fig9_points(sw, ["physical.kappa", "physical.volume_fraction"])
     rows = []
     for (k, f), q in sorted(pts.items()):
-        rows.append(f"κ = {k:.2g} /m, φ = {f:g}: " + (q["failed"] if "failed" in q else
+        rows.append(f"κ = {fmt_kappa(k)} /m, φ = {f:g}: " + (q["failed"] if "failed" in q else
                                                       f"{q['n']} colloids, " + describe_fig9_point(q)))
     verdicts, counts = [], []
     for rule, key in RULES:
@@ -362,7 +362,7 @@ def fig9_phi(sw):
             ok = None if len(done) < len(line) or not done else all(st == want for _, st in done)
             res.append(ok)
             good = sum(st == want for _, st in done)
-            words.append(f"{name} {verdict_word(ok)}: {want} at κ = {k:.2g} at {good} of {len(line)} φ ("
+            words.append(f"{name} {verdict_word(ok)}: {want} at κ = {fmt_kappa(k)} at {good} of {len(line)} φ ("
                          + ", ".join(f"{st} at {f:g}" for f, st in done) + ")")
         counts.append(f"{rule}: {count_statements(res)}")
         verdicts.append(f"{rule}: " + "; ".join(words))
@@ -378,11 +378,12 @@ def fig9_phi(sw):
                 continue
             ax[0].errorbar([q["phi"] for _, q in line], [100 * q["frac"] for _, q in line],
                            yerr=[100 * q["se"] for _, q in line], color="k", lw=0.8, capsize=2,
-                           label=f"κ = {k:.2g} /m (Hecht: {'suspended' if k < 1.5e8 else 'clustered'})", marker=None)
+                           label=f"κ = {fmt_kappa(k)} /m (Hecht: {'suspended' if k < 1.5e8 else 'clustered'})", marker=mk,
+                           mfc="none", mec="k", ms=9)
             for f, q in line:
                 ax[0].plot(q["phi"], 100 * q["frac"], mk, color=col[q["state"]], ms=9)
-                ax[0].text(q["phi"], 100 * q["frac"] + 4, ",".join(q["more"]) or "A", fontsize=7, ha="center",
-                           color=col[q["gr_state"]])
+                ax[0].text(q["phi"] + 0.006, 100 * q["frac"] - 1, ",".join(q["more"]) or "A only", fontsize=7, ha="left",
+                           va="top", color=col[q["gr_state"]])
             p_by = {p["params"]["physical.volume_fraction"]: p for p in sw["points"]
                     if p["params"]["physical.kappa"] == k and p["summary"]}
             for i, (f, q) in enumerate(line):
@@ -395,7 +396,7 @@ def fig9_phi(sw):
             ax[1 + j].set_ylim(0, 2.0 * len(line) + 6)
             ax[1 + j].set_xlabel("r / R (dotted: touching-sphere peaks A–D)")
             ax[1 + j].set_ylabel("g(r), shifted by 2 per φ (clipped)")
-            ax[1 + j].set_title(f"κ = {k:.2g} /m, Ψ0 = 20 mV (Hecht Fig. {12 if k < 1.5e8 else 13}); colour: g(r) rule",
+            ax[1 + j].set_title(f"κ = {fmt_kappa(k)} /m, Ψ0 = 20 mV (Hecht Fig. {12 if k < 1.5e8 else 13}); colour: g(r) rule",
                                 fontsize=9)
         ax[0].axhline(10, color="grey", ls="--", lw=0.8)
         ax[0].set_xlabel("φ (realised)")
@@ -992,6 +993,26 @@ def reduced_fig9_kappa(sw):
     return got[1.0e8][0] == "suspended" and got[2.0e8][0] == "clustered", msg
 
 
+def reduced_fig9_diagram(sw):
+    """studies/reduced/hecht_fig9_diagram.cfg, the Psi0 direction along kappa = 2e8 /m (Hecht Fig. 11): the full
+    study's direction, clustering falls as Psi0 rises (largest cluster 99.8 % at 20 mV, 18.4 % at 50 mV).  Bound:
+    clustered at 20 mV by the full rule (> 10 %) and the largest-cluster fraction at 50 mV below that at 20 mV
+    by more than 30 percentage points (the full study's gap is 81; in half the time fewer 50 mV pairs have
+    crossed into the -3.1 kT secondary minimum, while 20 mV, without a barrier, clusters within 0.1 s).
+    Fails if clustering grew with Psi0 as Hecht's Fig. 11 caption says, or if 20 mV did not cluster."""
+    got = {}
+    for p in sw["points"]:
+        s = p["params"]["physical.surface_potential"]
+        n = p["summary"]["mapping"]["colloid"]["n_colloids"]
+        lc = p["summary"]["observables"]["largest_cluster"]
+        got[s] = (lc["value"] / n, lc["stderr"] / n)
+    (f20, e20), (f50, e50) = got[0.02], got[0.05]
+    msg = (f"kappa 2e8: largest cluster {100 * f20:.1f} +- {100 * e20:.1f} % at 20 mV ({cluster_state(f20)}), "
+           f"{100 * f50:.1f} +- {100 * e50:.1f} % at 50 mV ({cluster_state(f50)}); drop {100 * (f20 - f50):.1f} points "
+           f"(bound > 30)")
+    return cluster_state(f20) == "clustered" and f20 - f50 > 0.30, msg
+
+
 def reduced_accuracy_viscosity(sw):
     """studies/reduced/accuracy_viscosity.cfg: within 3 SE of PL at 12000 steps; SE(12000)/SE(3000) in 0.3-0.8."""
     import math
@@ -1015,6 +1036,7 @@ def reduced_accuracy_viscosity(sw):
 # here and asserts the check): each returns (passed, one-line message).
 REDUCED = {
     "hecht_fig9_kappa": reduced_fig9_kappa,
+    "hecht_fig9_diagram": reduced_fig9_diagram,
     "accuracy_viscosity": reduced_accuracy_viscosity,
 }
 
@@ -1051,6 +1073,25 @@ NOTES = [
     "(`peloid params`).  Not checked: Hecht's own resolution (λ = 0.5 a0, M = 60, δt = 2.05 ms, Hecht "
     "Sec. VII.C) against the scene's (λ = 0.1, 10 per cell), which changes the colloids' hydrodynamics and "
     "so the rate at which flocs form within the run.  No parameter was tuned.",
+    "",
+    "**Hecht Fig. 9 as a diagram, Figs. 10–13.**  The same two rules, per point, seed 9, the scene's 1140 steps "
+    "(0.34 s of mapped time; Hecht ran 1 s).  Axes: Hecht gives Fig. 9's values only in its pictures; the text "
+    "fixes its left column (Ψ0 = 20 mV, κ varying: Fig. 10) and its first row (κ = 2e8 /m, Ψ0 varying: Fig. "
+    "11), and Figs. 5–7 and 14 use 50 mV at 7.3e7–3e8 /m.  The grid: κ = 7.3e7, 1.0e8, 1.4e8, 1.6e8, 2.0e8, "
+    "3.0e8 /m × Ψ0 = 20, 35, 50 mV and 10 mV (left of the left column).  The orientation is read from the text, "
+    "not stated by it: *upper* = larger κ (at 20 mV Hecht clusters at the larger κ and the first row is 2e8), "
+    "*right* = larger Ψ0 (the left column is 20 mV); S1 and S2 test its corners.  So read, S1–S2 (suspended at "
+    "high Ψ0) and S4 (Fig. 11: clustering grows with Ψ0) point in opposite directions.  Hecht's Eq. 1 makes the "
+    "repulsion grow with Ψ0 (its tanh² prefactor), so with Eqs. 1–2 the secondary minimum becomes shallower and "
+    "the barrier higher as Ψ0 rises (at 2e8 /m: −6.3, −3.8, −3.1 kT at 20, 35, 50 mV, `peloid params`); peloid "
+    "uses Eqs. 1–2 as written and its clustering falls with Ψ0.  The 20 mV points reproduce hecht_fig9_kappa's "
+    "and the 50 mV points at 7.3e7 and 3e8 hecht_fig5_rdf's (same scene and seed: the same trajectories), so S3 "
+    "repeats that study's disagreement.  Failed points: without a DLVO barrier (10 mV at κ ≥ 1.4e8, 20 mV at "
+    "3e8) the colloids fall into the parabolic primary minimum and overlap past the 10 % guard "
+    "(colloids.max_overlap) with hertz_K = 1000 kT/a0^2.5, within the first 61 SRD steps; they are kept as "
+    "failed, not re-run with a stiffer K (at 7.3e7 and 1.0e8 the 10 mV points ran and cluster).  The two rules "
+    "differ at one point near the boundary (1.6e8 /m, 35 mV: largest cluster 3.5 %, but a D peak).  One seed per "
+    "point; the SEs are from blocking within the run.  No parameter was tuned.",
     "",
     "**Hecht Fig. 4 (Richardson–Zaki).**  The sedimentation observer measures the slip velocity u "
     "(colloids relative to the fluid's mean).  The exponent depends on the frame, and Hecht does not say "
