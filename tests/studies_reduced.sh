@@ -8,6 +8,9 @@
 #  - Hecht Fig. 9 kappa (~140 colloids, 0.17 s mapped): suspended at kappa =
 #    1.0e8 /m, clustered at 2.0e8 /m by the full study's rule (largest cluster
 #    above 10 % of the colloids); measured 2.1 +- 0.1 % and 97.6 +- 0.4 %.
+#  - Hecht Fig. 9 diagram (the same reduced box, kappa = 2e8 /m): the full
+#    study's Psi0 direction, clustered at 20 mV and the largest cluster at
+#    50 mV more than 30 points below; measured 97.6 +- 0.4 % and 34.5 +- 2.0 %.
 #  - accuracy-cost guide (rho = 10, lambda = 0.1 and 1): within 3 SE of PL
 #    Eqs. 9-15 at 12000 steps (0.3 % chance failure per point), and SE(12000
 #    steps) / SE(3000 steps) in 0.3-0.8 (expected 0.5; a blocking SE from
