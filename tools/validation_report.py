@@ -1091,7 +1091,11 @@ NOTES = [
     "(colloids.max_overlap) with hertz_K = 1000 kT/a0^2.5, within the first 61 SRD steps; they are kept as "
     "failed, not re-run with a stiffer K (at 7.3e7 and 1.0e8 the 10 mV points ran and cluster).  The two rules "
     "differ at one point near the boundary (1.6e8 /m, 35 mV: largest cluster 3.5 %, but a D peak).  One seed per "
-    "point; the SEs are from blocking within the run.  No parameter was tuned.",
+    "point; the SEs are from blocking within the run.  Figs. 12–13 (studies/hecht_fig9_phi.cfg): the colloid "
+    "count follows φ in the same 15³-cell box (236–1181 colloids); its φ = 0.14 points are the grid's.  Not run: "
+    "Hecht's whole second (only κ = 1.4e8 at 20 mV has it, hecht_fig9_kappa_1s), other seeds for the grid, and "
+    "Hecht's long-range g(r) statements of Figs. 12–13 (peaks at 6–8 R growing with φ: in the plot, not judged).  "
+    "No parameter was tuned.",
     "",
     "**Hecht Fig. 4 (Richardson–Zaki).**  The sedimentation observer measures the slip velocity u "
     "(colloids relative to the fluid's mean).  The exponent depends on the frame, and Hecht does not say "
