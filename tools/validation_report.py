@@ -880,9 +880,13 @@ def pl_drag_guide(sw):
                           f"~{cpu:.0f} s", f" (extrapolated from the full run, {100 * x['dev']:+.1f} ± "
                           f"{100 * x['se']:.1f} %, by SE ∝ CPU^−½)"))
         else:
-            guide.append((f"{100 * a:g} %", "none of these points", "–",
-                          " (at every full run |deviation| + SE ≥ a: the deviation from PL Eqs. 40–43, or its SE, "
-                          "too large to reach a or to extrapolate)"))
+            k = min(runs, key=lambda q: abs(runs[q][-1]["dev"]) + runs[q][-1]["se"])
+            x = runs[k][-1]
+            guide.append((f"{100 * a:g} %", "not established by these runs", "–",
+                          f" (at every full run the size of the deviation plus its SE ≥ a, so whether the deviation from PL Eqs. 40–43 "
+                          f"is below a is not resolved; the closest, {name(k)}, {100 * x['dev']:+.1f} ± "
+                          f"{100 * x['se']:.1f} %, would need ~{x['steps'] * (2 * x['se'] / a) ** 2:.0f} steps, "
+                          f"~{x['cpu'] * (2 * x['se'] / a) ** 2:.0f} s, for 2 SE ≤ a, by SE ∝ CPU^−½)"))
     table = ["| σ_cf (a0) | L (a0) | PL Eqs. 40–43 ξ | run lengths: steps, deviation ± SE, CPU s |", "|---|---|---|---|"]
     for k in sorted(runs):
         r = runs[k]
