@@ -982,7 +982,6 @@ def rz_precision(sw):
     Precision a is reached when 2 SE(l) <= a |l|; where no prefix reaches it, the cost is extrapolated from
     the full runs by SE ~ CPU^(-1/2)."""
     import h5py
-    import numpy as np
     g1 = 87.3
     fits, check = {}, []
     by_pe = {}
@@ -1064,8 +1063,7 @@ def rz_precision(sw):
                "thread, about half that in wall time with two points side by side on the 2 cores):\n\n"
                "| precision | setting | CPU seconds |\n|---|---|---|\n"
                + "\n".join(f"| {acc} | {setting} | {cost}{note} |" for acc, setting, cost, note in guide))
-    x1 = fits.get(1.0, fits[min(fits)])[-1]
-    value = (f"SE(l) at the full runs: " + ", ".join(f"Pe = {pe:g}: {100 * r[-1]['se'] / abs(r[-1]['l']):.1f} % "
+    value = ("SE(l) at the full runs: " + ", ".join(f"Pe = {pe:g}: {100 * r[-1]['se'] / abs(r[-1]['l']):.1f} % "
                                                      f"({r[-1]['cpu']:.0f} s)" for pe, r in sorted(fits.items()))
              + "; " + "; ".join(f"{acc}: {setting}, {cost}" for acc, setting, cost, _ in guide))
     verdict = "precision only (no exact reference for l)"
