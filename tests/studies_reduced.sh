@@ -15,6 +15,11 @@
 #    Eqs. 9-15 at 12000 steps (0.3 % chance failure per point), and SE(12000
 #    steps) / SE(3000 steps) in 0.3-0.8 (expected 0.5; a blocking SE from
 #    ~10-20 blocks scatters by ~20 %, the mean ratio by ~0.1: 2-3 sigma).
+#  - fluid self-diffusion guide (lambda = 1, 625 and 5000 particles, 1000
+#    steps): D within 3 SE of PL Eq. 6 at 5000 particles; SE(625) / SE(5000)
+#    in 1.6-4.5 (expected sqrt(8) = 2.83); SE(1000 steps) / SE(250-step
+#    prefix) in 0.6-1.6 (expected 1: one time origin, the SE does not fall
+#    with the run length).
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 PY=/usr/bin/python3
