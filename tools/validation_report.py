@@ -738,6 +738,13 @@ def pl_fig10_vacf(sw):
     late = (lag >= 2 * th["tau_nu"] - 1e-9) & (lag <= th["t_box"] + 1e-9)
     amp_late = {k: mean_se([np.sum(e[0][late] * y[late[win]]) / np.sum(y[late[win]] ** 2) for e in est])
                 for k, y in forms.items()} if late.sum() >= 2 else {}
+    subs = []  # information: A against MCT in sub-windows of the tail window (does it approach 1?)
+    edges = [th["tau_nu"], 2 * th["tau_nu"], 4 * th["tau_nu"], th["t_box"]]
+    for lo, hi in zip(edges[:-1], edges[1:]):
+        sw_ = (lag >= lo - 1e-9) & (lag < hi - 1e-9) if hi < th["t_box"] else (lag >= lo - 1e-9) & (lag <= hi + 1e-9)
+        if hi > lo and sw_.sum() >= 2:
+            y = np.array([mct(t) for t in lag[sw_]])
+            subs.append((lo, hi) + mean_se([np.sum(e[0][sw_] * y) / np.sum(y * y) for e in est]))
     # 3. Langevin
     def at(t):
         i = int(np.argmin(abs(lag - t)))
@@ -774,8 +781,8 @@ def pl_fig10_vacf(sw):
              f"({100 * (tau / th['tau_E'] - 1):+.1f} %); tail amplitude over {th['tau_nu']:.1f}–{th['t_box']:.0f} t0: "
              + ", ".join(f"A = {a:.3f} ± {e:.3f} vs {k}" for k, (a, e) in amps.items())
              + f"; C(1 t0) = {lang[0][1]:.3f} ± {lang[0][2]:.3f} vs Langevin {lang[0][3]:.3f}, C({lang[1][0]:g} t0) = "
-             f"{lang[1][1]:.4f} ± {lang[1][2]:.4f} vs {lang[1][3]:.4f}; C_FF(Δt_c)/C_FF(0) = {r1[0]:.3f} ± {r1[1]:.3f} "
-             f"→ τ_FP = {tau_fp:.3f} ± {tau_fp_se:.3f} t0; M⟨V²⟩/kT = {mv2[0]:.3f} ± {mv2[1]:.3f}")
+             f"{lang[1][1]:.4f} ± {lang[1][2]:.4f} vs {lang[1][3]:.4f}; C_FF(Δt_c)/C_FF(0) = {r1[0]:.4f} ± {r1[1]:.4f} "
+             f"→ τ_FP = {tau_fp:.4f} ± {tau_fp_se:.4f} t0; M⟨V²⟩/kT = {mv2[0]:.3f} ± {mv2[1]:.3f}")
     k_mct, k_box = "MCT (PL Eq. B6)", "box transverse-mode sum"
     verdicts = [
         ("agrees" if ok1 else "**disagrees**") + f" (Enskog τ within 3√(SE² + S_w²) = {tol:.3f} t0, S_w = {s_w:.3f} "
@@ -816,15 +823,17 @@ def pl_fig10_vacf(sw):
         + "; ".join(f"{k}: A = {a:.3f} ± {e:.3f} ({(a - 1) / e:+.1f} SE)" for k, (a, e) in amps.items())
         + (".  From 2τ_ν on: " + "; ".join(f"{k}: {a:.3f} ± {e:.3f}" for k, (a, e) in amp_late.items())
            if amp_late else "")
+        + (".  Against MCT in parts of the window: " + "; ".join(f"{lo:.0f}–{hi:.0f} t0: {a:.3f} ± {e:.3f}"
+                                                                for lo, hi, a, e in subs) if subs else "")
         + f".  Rule fixed before the runs: |A − 1| ≤ 3 SE for MCT and for the box sum.\n\n"
         f"3. *Langevin* (PL Eq. B3, τ_B = M_c/ξ = {th['tau_B']:.3f} t0, ξ = ξ_E ∥ 4πησ_cf/(1 − 2.837σ_cf/L) = "
         f"{th['xi']:.1f}, PL Eqs. 40–43): "
         + "; ".join(f"t = {tt:g} t0: C = {c:.4f} ± {e:.4f}, Langevin {cl:.4f} ({z:+.1f} SE)" for tt, c, e, cl, z in lang)
         + (f"; C first exceeds the Langevin form at t = {cross:g} t0" if cross is not None else "")
         + ".  Rule: below it by > 3 SE at 1 t0 and above it by > 3 SE at τ_ν.\n\n"
-        f"4. *C_FF* of the collision-step-averaged fluid force (README \"C_FF\"): C_FF(Δt_c)/C_FF(0) = {r1[0]:.3f} ± "
-        f"{r1[1]:.3f}, C_FF(2Δt_c)/C_FF(Δt_c) = {r2[0]:.3f} ± {r2[1]:.3f}; an exponential instantaneous C_FF "
-        f"averaged over Δt_c windows gives that first ratio for τ_FP = {tau_fp:.3f} ± {tau_fp_se:.3f} t0 (PL: 0.09 t0; "
+        f"4. *C_FF* of the collision-step-averaged fluid force (README \"C_FF\"): C_FF(Δt_c)/C_FF(0) = {r1[0]:.4f} ± "
+        f"{r1[1]:.4f}, C_FF(2Δt_c)/C_FF(Δt_c) = {r2[0]:.4f} ± {r2[1]:.4f}; an exponential instantaneous C_FF "
+        f"averaged over Δt_c windows gives that first ratio for τ_FP = {tau_fp:.4f} ± {tau_fp_se:.4f} t0 (PL: 0.09 t0; "
         f"the model ignores the negative hydrodynamic part and treats the trapezoid over 4 MD steps as a box-car).  "
         f"Time scales: τ_FP = {tau_fp:.3f}, τ_E = {tau:.3f} ± {tau_se:.3f} (fit), τ_B = ∫₀^{{{t_int:.0f} t0}} C dt = "
         f"M_c D/kT = {tb[0]:.2f} ± {tb[1]:.2f} (Green–Kubo; PL Eqs. 40–43: {th['tau_B']:.2f}; PL Fig. 10: 2.5), "
@@ -836,13 +845,15 @@ def pl_fig10_vacf(sw):
     def plot(path):
         plt = pyplot()
         fig, ax = plt.subplots(1, 2, figsize=(12, 4.8))
-        t = np.logspace(-1, math.log10(max(lag[-1], 200)), 300)
+        tmax = 4.0 * th["t_box"]
+        t = np.logspace(-1, math.log10(tmax), 300)
         tl = t[t >= 1.0]
         a = ax[0]
-        pos = (lag > 0) & (C > 0)
+        shown = lag <= tmax
+        pos = (lag > 0) & (C > 0) & shown
         a.errorbar(lag[pos], C[pos], yerr=C_se[pos], fmt="o", ms=2.5, color="k", elinewidth=0.7,
                    label=f"peloid C(t) ({n} estimates, ±SE)")
-        neg = (lag > 0) & (C <= 0)
+        neg = (lag > 0) & (C <= 0) & shown
         a.plot(lag[neg], -C[neg], "o", ms=2.5, mfc="none", color="k", label="−C(t) where C < 0")
         a.plot(t, np.exp(-t / th["tau_E"]), "-.", color="C0", label=f"Enskog exp(−t/τ_E), τ_E = {th['tau_E']:.2f} (B11)")
         a.plot(t, np.exp(-t / th["tau_B"]), "--", color="C1", label=f"Langevin exp(−t/τ_B), τ_B = {th['tau_B']:.2f} (B3)")
@@ -850,15 +861,15 @@ def pl_fig10_vacf(sw):
         a.plot(tl, [box(x) for x in tl], "-", color="C3", lw=1, label="box transverse-mode sum (k ≠ 0)")
         a.plot(tl, [b5(x) for x in tl], "-", color="C4", lw=0.8, alpha=0.7, label="B5 (stick, a = σ_cf)")
         a.plot(tl, [b5(x) + box(x) - mct(x) for x in tl], "--", color="C4", lw=0.8, label="B5 + box correction")
-        fp = (lagf > 0) & (F > 0)
-        a.plot(lagf[fp], F[fp], "s", ms=2.5, color="C5", label="C_FF(t)/C_FF(0) (step-averaged force)")
-        fn = (lagf > 0) & (F <= 0)
+        fp = (lagf > 0) & (F > 0) & (lagf <= 10)
+        a.plot(lagf[fp], F[fp], "s", ms=2.5, color="C5", label="C_FF(t)/C_FF(0) (step-averaged force, t ≤ 10)")
+        fn = (lagf > 0) & (F <= 0) & (lagf <= 10)
         a.plot(lagf[fn], -F[fn], "s", ms=2.5, mfc="none", color="C5", label="−C_FF where < 0")
         a.axvspan(th["tau_nu"], th["t_box"], color="grey", alpha=0.12, label="tail fit window [τ_ν, L²/4π²ν]")
         a.set_xscale("log")
         a.set_yscale("log")
         a.set_ylim(1e-4, 1.5)
-        a.set_xlim(0.08, max(lag[-1], 200))
+        a.set_xlim(0.08, tmax)
         a.set_xlabel("t (t0)")
         a.set_ylabel("C(t) = ⟨V(t)V(0)⟩/⟨V²⟩")
         a.set_title(f"PL Figs. 10/13: σ_cf = {th['sig']:g}, L = {th['L']}, slip, potential coupling", fontsize=10)
@@ -1083,6 +1094,25 @@ NOTES = [
     "λ = 0.5 a0, Hecht Sec. VII.C), which sets that friction; Hertz K = 1e5 kT/a0^2.5 (stiffer than the "
     "Fig. 9 scenes, whose 1000 lets thermal collisions overlap past the 10 % guard without DLVO "
     "repulsion).  No parameter was tuned.",
+    "",
+    "**PL Figs. 10, 13 (VACF).**  The rules were fixed (and committed) before the runs.  The tail: over "
+    "τ_ν–L²/(4π²ν) the measured C(t) runs parallel to t^−3/2 but about 1.66 × the mode-coupling amplitude of PL "
+    "Eq. B6 (the same in 8–16 and 16–32 t0), so the verdict is *disagrees* for MCT and for the box's "
+    "transverse-mode sum alike (they differ by only 1–18 % here, almost all of it the zero-momentum offset).  "
+    "Checked, not the cause: the normalisation (M⟨V²⟩/kT = 1.000 ± 0.003); momentum conservation (the fluid "
+    "momentum in thermo.tsv fluctuates with the r.m.s. √(8 M_c kT) ≈ 37 of the colloids' momentum and does not "
+    "drift); ν of this fluid (α = 90°, random axis, ρ = 5, λ = 0.1, rescale thermostat; a separate 10³ Green–Kubo "
+    "run of 30000 steps, 2026-12-02: η = 2.474 ± 0.040 against PL Eqs. 9–15's 2.496, so ν_eff would have to be 30 % "
+    "lower to explain the factor); sound in the periodic box (the longitudinal-mode sum with c_s = √(5/3), "
+    "damping ≈ (4/3)ν k² stays below 0.002 beyond 8 t0, against the excess of 0.04 at τ_ν).  Not checked: the "
+    "continuum VACF of a neutrally buoyant *slip* sphere (PL Eq. B5 is the stick form and lies below the "
+    "asymptote; a slip sphere's approach to it, with the Enskog friction in parallel, may come from above), "
+    "and whether the factor falls to 1 after ~50 t0, where a bigger box and far longer runs are needed (32–52 t0: "
+    "1.4 ± 0.5).  The Langevin rule fails only at its fixed time τ_ν, where C crosses exp(−t/τ_B) (τ_B = 3.45 t0 "
+    "of PL Eqs. 40–43, finite box; PL quote 2.5 t0); it lies 6 and 4 SE above it at 2τ_ν and 4τ_ν.  The Enskog "
+    "time agrees only through the fit form's window systematic (statistically τ is 15 SE above τ_E): the "
+    "one-parameter fit takes up part of the hydrodynamic decay, which is larger in this box than in "
+    "tests/test_coupling_vacf.c's L = 16 (1.21–1.25 t0 there).  No parameter was tuned.",
 ]
 
 
@@ -1128,8 +1158,8 @@ def main():
     for s in STUDIES:
         if os.path.exists(os.path.join(rdir, s["name"] + ".png")):
             lines += [f"![{s['name']}]({s['name']}.png)", ""]
-    lines += NOTES + [""] + [d + "\n" for d in details] + ["Studies of issue 16 not yet here: the full (κ, Ψ0) diagram (Fig. 9), PL D(φ) (Fig. 11), VACF "
-              "(Figs. 10, 13), g(r) vs BD (Fig. 4); the accuracy–cost guide for D_f, the drag, a colloid's D and the R–Z exponent.", ""]
+    lines += NOTES + [""] + [d + "\n" for d in details] + ["Studies of issue 16 not yet here: the full (κ, Ψ0) diagram (Fig. 9), PL D(φ) (Fig. 11), "
+              "g(r) vs BD (Fig. 4); the accuracy–cost guide for D_f, the drag, a colloid's D and the R–Z exponent.", ""]
     tmp = report + ".tmp"
     open(tmp, "w").write("\n".join(lines))
     os.replace(tmp, report)
