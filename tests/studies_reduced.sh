@@ -20,6 +20,11 @@
 #    in 1.6-4.5 (expected sqrt(8) = 2.83); SE(1000 steps) / SE(250-step
 #    prefix) in 0.6-1.6 (expected 1: one time origin, the SE does not fall
 #    with the run length).
+#  - PL Figs. 10/13 VACF (8 colloids in L = 16, 2 x 3000 steps): the Enskog
+#    decay time (0.2-1.2 t0 fit) within 25 % of tau_E (SE ~3 %, the fit form's
+#    window systematic ~5 %; a doubled M_c gives -50 %), C(1 t0) below the
+#    Langevin form, C_FF's decay time below 0.3 t0; measured tau = 1.253 +-
+#    0.032 vs 1.257, C(1) = 0.449 vs 0.715, tau_FP = 0.124 t0.
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 PY=/usr/bin/python3
