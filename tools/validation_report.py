@@ -559,12 +559,19 @@ def pl_fig4_rdf(sw):
                 "incomplete: the BD or the SRD (depletion_comp) point did not finish")
     g = {k: pl4_rdf(sw, p) for k, p in roles.items()}
     cmp_ = {k: pl4_compare(g[k], g["bd"]) for k in roles if k != "bd"}
+    # the companion study: the BD reference at half the time step (studies/pl_fig4_rdf_bd_dt.cfg)
+    bd_half = load(os.path.dirname(sw["_out"]), "pl_fig4_rdf_bd_dt")
+    bd_half = next((p for p in bd_half["points"] if p["summary"]), None) if bd_half else None
+    if bd_half:
+        g["bd_half"] = pl4_rdf({"_out": os.path.join(os.path.dirname(sw["_out"]), "pl_fig4_rdf_bd_dt")}, bd_half)
+        cmp_["bd_half"] = pl4_compare(g["bd_half"], g["bd"])
     s0 = roles["comp"]["summary"]
     col, obs = s0["scene"]["colloids"], s0["scene"]["observe"]
     box = s0["scene"]["box"]["cells"]
     sig = s0["scene"]["wca"]["sigma"]
     phi = np.pi / 6 * col["count"] * sig ** 3 / float(np.prod(box))
-    names = {"comp": "SRD + depletion_comp", "nocomp": "SRD without compensation", "bd": "BD"}
+    names = {"comp": "SRD + depletion_comp", "nocomp": "SRD without compensation", "bd": "BD",
+             "bd_half": "BD at half the step"}
     rows, eq = [], []
     r = g["bd"][0]
     c = cmp_["comp"]
@@ -607,6 +614,21 @@ def pl_fig4_rdf(sw):
                     f"({r[i0] - dr / 2:.1f}–{r[i0 + 2] + dr / 2:.1f} a0) {100 * (ga.mean() / gb.mean() - 1):+.1f} % = "
                     f"{exc:+.1f} SE, χ² p = {n['p']:.2g}: PL's contact excess "
                     + ("seen" if exc > 3 else "not resolved"))
+    if bd_half:
+        h = cmp_["bd_half"]
+        moved = [i for i in range(len(r)) if h["use"][i] and abs(h["z"][i]) > 3]
+        keep = c["use"].copy()
+        keep[moved] = False
+        chi2 = float(np.sum(c["z"][keep] ** 2))
+        dof = int(keep.sum())
+        rows.append(f"BD at half the step (0.0125 t0, studies/pl_fig4_rdf_bd_dt.cfg): vs BD at PL's step χ² = "
+                    f"{h['chi2']:.1f} / {h['dof']} (p = {h['p']:.2g}); bins moved by more than 3 SE: "
+                    + (", ".join(f"{r[i] - dr / 2:.1f}–{r[i] + dr / 2:.1f} a0 ({g['bd'][1][i]:.4f} → "
+                                 f"{g['bd_half'][1][i]:.4f}, {h['z'][i]:+.1f} SE)" for i in moved) or "none"))
+        verdict += (f"; supplementary (defined after the BD step check, before the SRD runs ended): without the "
+                    f"{len(moved)} bin(s) where the BD reference itself moves by > 3 SE when its step is halved, "
+                    f"SRD + depletion_comp vs BD χ² = {chi2:.1f}/{dof} = {chi2 / max(dof, 1):.2f}, p = "
+                    f"{chi2_sf(chi2, dof):.2g}")
     value = "<br>".join(rows)
     dep = s0.get("colloid_pairs", {})
     details = (
@@ -627,12 +649,12 @@ def pl_fig4_rdf(sw):
     def plot(path):
         plt = pyplot()
         fig, ax = plt.subplots(3, 1, figsize=(8, 9.5), gridspec_kw={"height_ratios": [3, 2, 2]})
-        col_ = {"bd": "k", "comp": "C3", "nocomp": "C0"}
-        for k in ("bd", "comp", "nocomp"):
+        col_ = {"bd": "k", "comp": "C3", "nocomp": "C0", "bd_half": "C2"}
+        for k in ("bd", "bd_half", "comp", "nocomp"):
             if k not in g:
                 continue
             rr, gg, ee = g[k]
-            lab = names[k] + (f" (χ²/dof {cmp_[k]['chi2'] / cmp_[k]['dof']:.2f})" if k != "bd" else "")
+            lab = names[k] + (f" (vs BD: χ²/dof {cmp_[k]['chi2'] / cmp_[k]['dof']:.2f})" if k != "bd" else "")
             ax[0].fill_between(rr, gg - ee, gg + ee, color=col_[k], alpha=0.25, lw=0)
             ax[0].plot(rr, gg, color=col_[k], lw=1, label=lab)
             ax[1].fill_between(rr, gg - ee, gg + ee, color=col_[k], alpha=0.25, lw=0, step="mid")
@@ -651,7 +673,7 @@ def pl_fig4_rdf(sw):
         ax[1].text(sig, 0.02, " σ_cc", transform=ax[1].get_xaxis_transform(), fontsize=8)
         ax[1].text(2 * 2 ** (1 / 6) * s0["scene"]["coupling"]["sigma_cf"], 0.02, " end of the depletion potential",
                    transform=ax[1].get_xaxis_transform(), fontsize=8)
-        for k in ("comp", "nocomp"):
+        for k in ("comp", "nocomp", "bd_half"):
             if k in cmp_:
                 u = cmp_[k]["use"]
                 ax[2].plot(r[u], cmp_[k]["z"][u], "o-", ms=2.5, lw=0.6, color=col_[k],
@@ -661,7 +683,7 @@ def pl_fig4_rdf(sw):
         ax[2].axhline(0, color="k", lw=0.6)
         ax[2].set_xlim(lo, r[-1] + dr / 2)
         ax[2].set_xlabel("r (a0)")
-        ax[2].set_ylabel("(g_SRD − g_BD) / combined SE")
+        ax[2].set_ylabel("(g − g_BD) / combined SE")
         ax[2].legend(fontsize=8)
         save_figure(plt, fig, path)
     return value, verdict, details, plot
