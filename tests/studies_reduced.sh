@@ -25,6 +25,10 @@
 #    window systematic ~5 %; a doubled M_c gives -50 %), C(1 t0) below the
 #    Langevin form, C_FF's decay time below 0.3 t0; measured tau = 1.253 +-
 #    0.032 vs 1.257, C(1) = 0.449 vs 0.715, tau_FP = 0.124 t0.
+#  - PL Fig. 4 g(r) (8 colloids in 12^3, SRD with depletion_comp 5000 steps
+#    vs BD): contact peak within 5 combined SE, chi^2 p >= 1e-4, combined
+#    peak SE < 0.25; measured -1.1 SE, p = 0.99 (SRD at sigma_cc = 4.1
+#    against BD at 4.3 fails it: p = 6e-10).
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 PY=/usr/bin/python3
