@@ -189,7 +189,7 @@ check-asan: | deps
 STUDIES := studies/hecht_fig9_kappa.cfg studies/hecht_fig9_kappa_replica.cfg studies/hecht_fig9_kappa_1s.cfg \
            studies/hecht_fig9_bonds.cfg studies/hecht_fig5_rdf.cfg studies/hecht_fig4_rz.cfg studies/hecht_fig14_msd.cfg \
            studies/pl_fig6_drag.cfg studies/accuracy_viscosity.cfg \
-           studies/pl_fig11_dphi.cfg
+           studies/pl_fig11_dphi.cfg studies/pl_fig11_dphi_solvent.cfg
 studies: $(BIN)
 	@set -e; for s in $(STUDIES); do ./$(BIN) sweep $$s; done
 validation-report:
