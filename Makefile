@@ -190,7 +190,8 @@ STUDIES := studies/hecht_fig9_kappa.cfg studies/hecht_fig9_kappa_replica.cfg stu
            studies/hecht_fig9_bonds.cfg studies/hecht_fig5_rdf.cfg studies/hecht_fig4_rz.cfg studies/hecht_fig14_msd.cfg \
            studies/pl_fig6_drag.cfg studies/accuracy_viscosity.cfg \
            studies/hecht_fig9_diagram.cfg studies/hecht_fig9_phi.cfg studies/accuracy_fluid_diffusion.cfg \
-           studies/pl_fig10_vacf.cfg studies/pl_fig4_rdf.cfg studies/pl_fig4_rdf_bd_dt.cfg
+           studies/pl_fig10_vacf.cfg studies/pl_fig4_rdf.cfg studies/pl_fig4_rdf_bd_dt.cfg \
+           studies/pl_fig11_dphi.cfg studies/pl_fig11_dphi_solvent.cfg
 studies: $(BIN)
 	@set -e; for s in $(STUDIES); do ./$(BIN) sweep $$s; done
 validation-report:
