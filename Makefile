@@ -135,7 +135,7 @@ check-build: $(CHECK_BIN) $(BIN)
 
 # The long physics validations (each several minutes on 2 cores) run in
 # `make validate-physics`; `make validate` runs them, then the paper studies
-# (make studies, ~30 min on 2 cores) and regenerates validation/REPORT.md;
+# (make studies, ~40 min on 2 cores) and regenerates validation/REPORT.md;
 # `make check` runs everything else.  CI runs check and validate-physics (the
 # studies would take its total past 60 min).
 VALIDATE_TESTS := test_coupling_drag test_coupling_wall test_coupling_vacf test_coupling_depletion test_coupling_thermal
@@ -191,7 +191,7 @@ STUDIES := studies/hecht_fig9_kappa.cfg studies/hecht_fig9_kappa_replica.cfg stu
            studies/pl_fig6_drag.cfg studies/accuracy_viscosity.cfg \
            studies/hecht_fig9_diagram.cfg studies/hecht_fig9_phi.cfg studies/accuracy_fluid_diffusion.cfg \
            studies/pl_fig10_vacf.cfg studies/pl_fig4_rdf.cfg studies/pl_fig4_rdf_bd_dt.cfg \
-           studies/pl_fig11_dphi.cfg studies/pl_fig11_dphi_solvent.cfg
+           studies/pl_fig11_dphi.cfg studies/pl_fig11_dphi_solvent.cfg studies/accuracy_drag_substeps.cfg
 studies: $(BIN)
 	@set -e; for s in $(STUDIES); do ./$(BIN) sweep $$s; done
 validation-report:

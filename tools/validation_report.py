@@ -34,6 +34,23 @@ def save_figure(plt, fig, path):
     plt.close(fig)
 
 
+def guide_axes(ax, dev_label, se_label):
+    """The two panels of an accuracy-cost guide: ax[0] the deviation from the reference with its SE, ax[1] the SE,
+    both against CPU seconds on log x axes, dotted lines at 1, 3 and 10 %."""
+    for a in ax:
+        a.set_xscale("log")
+        a.set_xlabel("CPU seconds (one thread)")
+        a.grid(True, which="both", alpha=0.3)
+    ax[1].set_yscale("log")
+    for t in (1, 3, 10):
+        ax[1].axhline(t, color="grey", lw=0.6, ls=":")
+        for sgn in (1, -1):
+            ax[0].axhline(sgn * t, color="grey", lw=0.6, ls=":")
+    ax[0].axhline(0.0, color="k", lw=0.8)
+    ax[0].set_ylabel(dev_label)
+    ax[1].set_ylabel(se_label)
+
+
 def load(out, name):
     path = os.path.join(out, name, "sweep.json")
     if not os.path.exists(path):
@@ -347,7 +364,6 @@ def fig9_diagram(sw):
 def fig9_phi(sw):
     """Hecht Figs. 12-13: the verdict per volume fraction at kappa = 1.4e8 (Hecht: suspended) and 1.6e8 /m
     (clustered), Psi0 = 20 mV; statements S5, S6 of studies/hecht_fig9_phi.cfg per rule."""
-    import numpy as np
     pts = fig9_points(sw, ["physical.kappa", "physical.volume_fraction"])
     rows = []
     for (k, f), q in sorted(pts.items()):
@@ -1147,18 +1163,7 @@ def accuracy_viscosity(sw):
         c0 = min(c)
         ref = [100 * max(x["se"] for r in runs.values() for x in r if x["cpu"] == c0)]
         ax[1].plot([c0, max(c)], [ref[0], ref[0] * (c0 / max(c)) ** 0.5], "k--", label="∝ CPU^−½")
-        for a in ax:
-            a.set_xscale("log")
-            a.set_xlabel("CPU seconds (one thread)")
-            a.grid(True, which="both", alpha=0.3)
-        ax[1].set_yscale("log")
-        for t in (1, 3, 10):
-            ax[1].axhline(t, color="grey", lw=0.6, ls=":")
-            for sgn in (1, -1):
-                ax[0].axhline(sgn * t, color="grey", lw=0.6, ls=":")
-        ax[0].axhline(0.0, color="k", lw=0.8)
-        ax[0].set_ylabel("η / η_PL − 1 (%), bars: SE; dotted: ±1, 3, 10 %")
-        ax[1].set_ylabel("SE / η_PL (%)")
+        guide_axes(ax, "η / η_PL − 1 (%), bars: SE; dotted: ±1, 3, 10 %", "SE / η_PL (%)")
         ax[0].set_title("error against PL Eqs. 9–15")
         ax[1].set_title("statistical error")
         ax[1].legend(fontsize=7, ncol=2)
@@ -1395,20 +1400,22 @@ def pl_drag_guide(sw):
     where no prefix reaches it, the cost is extrapolated from the full run by SE ~ CPU^(-1/2), for points
     whose full-run deviation is below a by more than its SE."""
     runs = {}
-    for p in sw["points"]:
+    # the MD-substep knob: studies/accuracy_drag_substeps.cfg (pl_fig6_drag's first point at 1, 2, 8 substeps)
+    sub = load(os.path.dirname(os.path.normpath(sw["_out"])), "accuracy_drag_substeps")
+    for sweep, p in [(sw, p) for p in sw["points"]] + ([(sub, p) for p in sub["points"]] if sub else []):
         s = p["summary"]
         if not s:
             continue
         v0 = s["scene"]["coupling"]["flow_velocity"][0]
         xi_pl, xi_pf = drag_theory(s)
-        key = (s["scene"]["coupling"]["sigma_cf"], s["scene"]["box"]["cells"][0])
-        full = drag_blocks(sw["_out"], p)
+        key = (s["scene"]["coupling"]["sigma_cf"], s["scene"]["box"]["cells"][0], s["scene"]["colloids"]["substeps"])
+        full = drag_blocks(sweep["_out"], p)
         if not full:
             continue
         total = s["last_step"] - s["first_step"]
         lasts = [full[3] + 1000 * n for n in DRAG_PREFIX_BLOCKS if n < full[2]] + [s["last_step"]]
         for last in lasts:
-            F, F_se, nb, first = drag_blocks(sw["_out"], p, last)
+            F, F_se, nb, first = drag_blocks(sweep["_out"], p, last)
             runs.setdefault(key, []).append({"steps": last, "blocks": nb, "dev": F / v0 / xi_pl - 1,
                                              "se": F_se / v0 / xi_pl, "dev_pf": F / v0 / xi_pf - 1,
                                              "cpu": s["cpu_seconds"] * last / total, "xi_pl": xi_pl,
@@ -1417,7 +1424,8 @@ def pl_drag_guide(sw):
         return "no point finished", "incomplete", "", None
 
     def name(k, x=None):
-        return f"σ_cf = {k[0]:g} a0, L = {k[1]} ({k[1] / k[0]:g} σ_cf)" + (f", {x['steps']} steps" if x else "")
+        return (f"σ_cf = {k[0]:g} a0, L = {k[1]} ({k[1] / k[0]:g} σ_cf), {k[2]} MD substep{'s' if k[2] > 1 else ''}"
+                + (f", {x['steps']} steps" if x else ""))
     guide = []
     for a in (0.10, 0.03, 0.01):
         hit = [(x["cpu"], k, x) for k, r in runs.items() for x in r if abs(x["dev"]) <= a and 2 * x["se"] <= a]
@@ -1442,15 +1450,18 @@ def pl_drag_guide(sw):
                           f"is below a is not resolved; the closest, {name(k)}, {100 * x['dev']:+.1f} ± "
                           f"{100 * x['se']:.1f} %, would need ~{x['steps'] * (2 * x['se'] / a) ** 2:.0f} steps, "
                           f"~{x['cpu'] * (2 * x['se'] / a) ** 2:.0f} s, for 2 SE ≤ a, by SE ∝ CPU^−½)"))
-    table = ["| σ_cf (a0) | L (a0) | PL Eqs. 40–43 ξ | run lengths: steps, deviation ± SE, CPU s |", "|---|---|---|---|"]
+    table = ["| σ_cf (a0) | L (a0) | MD substeps | PL Eqs. 40–43 ξ | run lengths: steps, deviation ± SE, CPU s |",
+             "|---|---|---|---|---|"]
     for k in sorted(runs):
         r = runs[k]
-        table.append(f"| {k[0]:g} | {k[1]} | {r[0]['xi_pl']:.1f} | " + "; ".join(
+        table.append(f"| {k[0]:g} | {k[1]} | {k[2]} | {r[0]['xi_pl']:.1f} | " + "; ".join(
             f"{x['steps']}: {100 * x['dev']:+.1f} ± {100 * x['se']:.1f} %, {x['cpu']:.0f} s" for x in r) + " |")
     off = [k for k, r in runs.items() if abs(r[-1]["dev"]) > 3 * r[-1]["se"]]
     details = ("**Accuracy–cost guide, friction of a pinned sphere** (`studies/pl_fig6_drag.cfg`'s runs: potential "
                "coupling, γ = 5, α = 90°, λ = 0.1, v∞ = 0.1 (σ_cf = 2) and 0.0667 (σ_cf = 3) a0/t0).  The "
-               "resolution knob is σ_cf / a0 (2 or 3, in boxes of 8 σ_cf; and 2 in PL's 16 σ_cf box), the "
+               "resolution knobs are σ_cf / a0 (2 or 3, in boxes of 8 σ_cf; and 2 in PL's 16 σ_cf box) and the MD "
+               "substeps per collision step (PL's 4; 1, 2 and 8 at σ_cf = 2, L = 16: "
+               "`studies/accuracy_drag_substeps.cfg`), the "
                "run-length knob the prefix of each run: 5, 10, 20 and all 1000-step blocks after the flow "
                "development (2 (L/2)² / ν), SE from those blocks, cost the prefix's share of `cpu_seconds` (one "
                "thread).  Deviation = ξ / ξ_PL − 1 against PL Eqs. 40–43 as PL evaluate them.\n\n"
@@ -1463,7 +1474,11 @@ def pl_drag_guide(sw):
                                        f" point-force form {100 * runs[k][-1]['dev_pf']:+.1f} %)" for k in sorted(off))
                            + ": a longer run does not close that gap; it is the discretisation of the coupling at "
                            "that σ_cf / a0 (and the box), which bounds the accuracy a run of this resolution can "
-                           "reach." if off else "Every point's full run agrees with PL Eqs. 40–43 within 3 SE."))
+                           "reach." if off else "Every point's full run agrees with PL Eqs. 40–43 within 3 SE.")
+               + "".join(f"  Stopped: {p['params'].get('colloids.substeps', '?')} MD substep(s) — {p['message']} "
+                         "(too few MD steps for the coupling's WCA shell: a fluid particle is kicked past the speed "
+                         "guard; the run stops with this named cause instead of going on wrong)."
+                         for p in (sub["points"] if sub else []) if not p["summary"]))
     value = "; ".join(f"{name(k)}: {100 * r[-1]['dev']:+.1f} ± {100 * r[-1]['se']:.1f} % ({r[-1]['cpu']:.0f} s)"
                       for k, r in sorted(runs.items())) + "; " + \
         "; ".join(f"{acc}: {setting}, {cost}" for acc, setting, cost, _ in guide)
@@ -1483,18 +1498,7 @@ def pl_drag_guide(sw):
         r0 = min(runs.values(), key=lambda r: r[0]["cpu"])
         ax[1].plot([r0[0]["cpu"], max(c)], [100 * r0[0]["se"], 100 * r0[0]["se"] * (r0[0]["cpu"] / max(c)) ** 0.5],
                    "k--", label="∝ CPU^−½")
-        for a in ax:
-            a.set_xscale("log")
-            a.set_xlabel("CPU seconds (one thread)")
-            a.grid(True, which="both", alpha=0.3)
-        ax[1].set_yscale("log")
-        for t in (1, 3, 10):
-            ax[1].axhline(t, color="grey", lw=0.6, ls=":")
-            for sgn in (1, -1):
-                ax[0].axhline(sgn * t, color="grey", lw=0.6, ls=":")
-        ax[0].axhline(0.0, color="k", lw=0.8)
-        ax[0].set_ylabel("ξ / ξ_PL − 1 (%), bars: SE; dotted: ±1, 3, 10 %")
-        ax[1].set_ylabel("SE / ξ_PL (%)")
+        guide_axes(ax, "ξ / ξ_PL − 1 (%), bars: SE; dotted: ±1, 3, 10 %", "SE / ξ_PL (%)")
         ax[0].set_title("error against PL Eqs. 40–43 (run length: prefixes)", fontsize=9)
         ax[1].set_title("statistical error", fontsize=9)
         ax[0].legend(fontsize=7)
@@ -2199,6 +2203,22 @@ def pl_fig11_dphi(sw):
     zc = (sc[2] - FIG11_C) / sc[3]
     chk = load(os.path.dirname(os.path.normpath(sw["_out"])), "pl_fig11_dphi_solvent")
     chk = fig11_points(chk) if chk else []
+    # The constant-solvent series (second step of the check): N = 1 of the main study (its solvent 0.8 % denser
+    # than gamma = 5, below its SE) and the check's points, fit over phi <= 0.15 as above.
+    series = [pts[0]] + [x for x in chk if x["phi"] <= FIG11_PHI_FIT and x["N"] != pts[0]["N"]]
+    ss = (fit_linear_phi([x["phi"] for x in series], [x["D"] for x in series], [x["se"] for x in series])
+          if len(series) >= 3 else None)
+    zs = (ss[2] - FIG11_C) / ss[3] if ss else None
+    series_txt = (f"the series with the solvent at γ = 5 in the free volume at every N (`studies/pl_fig11_dphi_solvent.cfg`, "
+                  f"N = {', '.join(str(x['N']) for x in series)}): c = {ss[2]:.2f} ± {ss[3]:.2f} ({zs:+.1f} SE from 1.1795), "
+                  f"D0 = {ss[0]:.5f} ± {ss[1]:.5f}, χ² = {ss[4]:.1f} / {ss[5]} dof" if ss else "")
+    beyond = []
+    if ss:
+        beyond = [x for x in chk if x["phi"] > FIG11_PHI_FIT]
+        series_txt += "".join(f"; beyond the fit, N = {x['N']} (φ = {x['phi']:.2f}): D = {x['D']:.5f} ± {x['se']:.5f}, "
+                              f"D0 (1 − 1.1795 φ) = {ss[0] * (1 - FIG11_C * x['phi']):.5f}, the fit's line "
+                              f"{ss[0] * (1 - ss[2] * x['phi']):.5f}" for x in beyond)
+        chk = []  # the series replaces the single-point checks
     verdict = (("agrees" if abs(z) <= 3 else "**disagrees**") +
                f": c = {c:.2f} ± {cse:.2f} vs PL's 1.1795 ({z:+.1f} SE; rule \\|c − 1.1795\\| ≤ 3 SE); D decreases with φ "
                f"at {c / cse:.1f} SE.  Cause found after the first evaluation: fluid.density counts the whole box, so "
@@ -2209,6 +2229,7 @@ def pl_fig11_dphi(sw):
                          f"with the fit's D0 ({(cc[0] - FIG11_C) / cc[1]:+.1f} SE): the solvent density explains part "
                          f"of the excess, the PL Eqs. 40–43 scaling overstates it"
                          for x in chk for y in pts if y["N"] == x["N"] for cc in [fig11_c_point(x, D0, D0se)])
+               + (f"; {series_txt}" if ss else "")
                + ("; incomplete: " + ", ".join(missing) if missing else ""))
     guide = fig11_guide(pts[0])
     acc = []
@@ -2268,6 +2289,9 @@ def pl_fig11_dphi(sw):
                   f"{min(sc[2], cc[0]):.1f}–{max(sc[2], cc[0]):.1f}, within {max(abs(zc), abs(cc[0] - FIG11_C) / cc[1]):.1f} "
                   "SE of 1.1795."
                   for x in chk for y in pts if y["N"] == x["N"] for cc in [fig11_c_point(x, D0, D0se)])
+        + (f"  Then {series_txt}; its points: " + "; ".join(
+            f"N = {x['N']} (φ = {x['phi']:.3f}, fluid.density = {x['fluid'] / pts[0]['L'] ** 3:.4f}): D = {x['D']:.5f} ± "
+            f"{x['se']:.5f} ({x['T']:.0f} t0, {x['cpu']:.0f} CPU s)" for x in series[1:]) + "." if ss else "")
         + "  Whether PL kept γ per cell of the box or of the free volume, their text does not say."
         + "\n\nCaveats.  PL's prediction is for an unbounded suspension; here the box is periodic and small "
         f"(L = {pts[0]['L']:g} a0 = {pts[0]['L'] / 2:g} σ_cf), so D0 carries Hasimoto's finite-size correction (kT/ξ "
@@ -2294,7 +2318,7 @@ def pl_fig11_dphi(sw):
     def plot(path):
         import numpy as np
         plt = pyplot()
-        fig, ax = plt.subplots(1, 3, figsize=(15, 4.4))
+        fig, ax = plt.subplots(1, 3, figsize=(15, 6.2))
         for i, x in enumerate(pts):
             tt, dd = x["curve"]
             ax[0].plot(tt, dd, color=f"C{i}", lw=1, label=f"N = {x['N']}, φ = {x['phi']:.3f}")
@@ -2313,6 +2337,13 @@ def pl_fig11_dphi(sw):
         for x in chk:
             ax[1].errorbar([x["phi"]], [x["D"]], yerr=[x["se"]], fmt="^", color="C3", capsize=3,
                            label="run with γ = 5 in the free volume")
+        if ss:
+            sv = series[1:] + beyond
+            ax[1].errorbar([x["phi"] for x in sv], [x["D"] for x in sv], yerr=[x["se"] for x in sv], fmt="^",
+                           color="C3", capsize=3, label=f"solvent γ = 5 in the free volume (fit φ ≤ 0.15 with N = 1: "
+                                                        f"c = {ss[2]:.2f} ± {ss[3]:.2f})")
+            xs_ = np.linspace(0, max(x["phi"] for x in sv) * 1.05, 50)
+            ax[1].plot(xs_, ss[0] * (1 - ss[2] * xs_), color="C3", ls="-.", lw=1)
         xs = np.linspace(0, max(ph) * 1.05, 50)
         ax[1].plot(xs, D0 * (1 - c * xs), color="C0", label=f"fit φ ≤ 0.15: c = {c:.2f} ± {cse:.2f}")
         ax[1].plot(xs, D0 * (1 - FIG11_C * xs), color="C1", ls="--", label="D0 (1 − 1.1795 φ), PL [90]")
@@ -2322,7 +2353,7 @@ def pl_fig11_dphi(sw):
         ax[1].set_xlabel("φ = (4/3)π N σ_cf³ / V")
         ax[1].set_ylabel("D (a0²/t0)")
         ax[1].set_title("D(φ) (PL Fig. 11 inset)")
-        ax[1].legend(fontsize=7)
+        ax[1].legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=1)
         cpu = [g["cpu"] for g in guide]
         ax[2].errorbar(cpu, [100 * g["dev"] for g in guide], yerr=[100 * g["rse"] for g in guide], marker="o",
                        capsize=3, color="k", label="error vs kT/ξ (bars: SE)")
@@ -2476,7 +2507,8 @@ STUDIES = [
         "study": "studies/pl_fig6_drag.cfg",
         "figure": "PL Eqs. 40–43 (the guide)",
         "paper": "friction of a pinned slip sphere, PL Eqs. 40–43 as PL evaluate them",
-        "size": "as pl_fig6_drag; run length from prefixes of its runs",
+        "size": "as pl_fig6_drag, and its σ_cf = 2, L = 16 point at 1, 2 and 8 MD substeps "
+                "(studies/accuracy_drag_substeps.cfg); run length from prefixes of the runs",
         "eval": pl_drag_guide,
     },
     {
