@@ -32,7 +32,7 @@ lammps_rate() { # deck P rep -> updates/s per core (Loop time covers the steps o
   awk -v n=$N -v s=$STEPS -v p="$2" '/^Loop time of/ {print n*s/$4/p}' "$TMP/lmp$1.$2.$3"
 }
 
-echo "# run_peers: L=$L ($N SRD particles), $STEPS steps, $REPS interleaved reps, $(lammps_version), peloid $(git rev-parse --short HEAD 2>/dev/null || echo unknown), $(date -u +%FT%TZ), load $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "# run_peers: L=$L ($N SRD particles), $STEPS steps, $REPS interleaved reps, $(lammps_version), checkout $(git rev-parse --short HEAD 2>/dev/null || echo unknown), $(date -u +%FT%TZ), load $(cut -d' ' -f1-3 /proc/loadavg)"
 printf "code\tranks_or_threads\tparticles\tsteps\tupdates_per_s_per_core_median\tmin\tmax\tper_rep\n" | tee "$TSV"
 for P in 1 2; do
   : > "$TMP/pure.$P"; : > "$TMP/big.$P"; : > "$TMP/pl.$P"
@@ -57,3 +57,4 @@ for P in 1 2; do
         "$P" "$c" "$m" "$(awk '{printf "%s%.1f", (NR>1?", ":""), $1}' "$TMP/ratio.$c.$P")" "$lo" | tee -a "$TSV"
   done
 done
+sed -n 's/.*"git_revision": "\([^"]*\)".*/# peloid binary built from \1/p' "$TMP/pl.1.1/summary.json" | head -1 | tee -a "$TSV"
