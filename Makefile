@@ -154,17 +154,10 @@ validate: validate-physics
 	@$(MAKE) --no-print-directory studies validation-report
 	@echo "make validate: all suites passed, validation/REPORT.md regenerated"
 
+CLI_SUITES := cli restart_guard full_disk regression observers stress readers sweep sweep_slurm studies_reduced
 check-cli: $(BIN)
-	@bash tests/cli.sh ./$(BIN)
-	@bash tests/restart_guard.sh ./$(BIN)
-	@bash tests/full_disk.sh ./$(BIN)
-	@bash tests/regression.sh ./$(BIN)
-	@bash tests/observers.sh ./$(BIN)
-	@bash tests/stress.sh ./$(BIN)
-	@bash tests/readers.sh ./$(BIN)
-	@bash tests/sweep.sh ./$(BIN)
-	@bash tests/sweep_slurm.sh ./$(BIN)
-	@bash tests/studies_reduced.sh ./$(BIN)
+	@set -e; for t in $(CLI_SUITES); do s=$$(date +%s); bash tests/$$t.sh ./$(BIN); \
+	  echo "   (tests/$$t.sh: $$(( $$(date +%s) - s )) s)"; done
 
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
 # shrinks the physics runs; the sanitizers slow code ~3-10x), and the
@@ -177,8 +170,9 @@ ASAN_MAKE = BUILD=build-asan \
   OPTFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
 check-asan: | deps
 	@$(MAKE) --no-print-directory $(ASAN_MAKE) $(patsubst %,build-asan/tests/%,$(ASAN_TESTS)) build-asan/bin/peloid
-	@set -e; for t in $(ASAN_TESTS); do \
-	  echo "== asan $$t"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$$t --jobs 1; done
+	@set -e; for t in $(ASAN_TESTS); do s=$$(date +%s); \
+	  echo "== asan $$t"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$$t --jobs 1; \
+	  echo "   (asan $$t: $$(( $$(date +%s) - s )) s)"; done
 	@echo "== asan bin/peloid on tests/bad_scenes"
 	@ASAN_OPTIONS=detect_leaks=1 bash tests/bad_scenes.sh build-asan/bin/peloid
 
