@@ -11,6 +11,14 @@
 #  - Hecht Fig. 9 diagram (the same reduced box, kappa = 2e8 /m): the full
 #    study's Psi0 direction, clustered at 20 mV and the largest cluster at
 #    50 mV more than 30 points below; measured 97.6 +- 0.4 % and 34.5 +- 2.0 %.
+#  - Hecht Figs. 5-7 g(r) (the same reduced box, Psi0 = 50 mV): at least
+#    one contact peak B-D 5 SE high at kappa = 3e8 /m (the full study: all
+#    three), none at 7.3e7 /m, there the first peak at the secondary minimum
+#    within 3 SE or 0.05 R; measured B 6.2, D 12.7 SE (C 4.7); 0.4-0.9 SE;
+#    2.435 +- 0.038 R vs 2.459 R.
+#  - Hecht Fig. 14 MSD ((3.2 um)^3, 179 colloids, phi = 0.35, 240 steps): D
+#    over steps 180-240 below D over 0-60 by more than 3 combined SE;
+#    measured 0.00151 +- 0.00012 vs 0.00626 +- 0.00025 a0^2/t0 (17.1 SE).
 #  - accuracy-cost guide (rho = 10, lambda = 0.1 and 1): within 3 SE of PL
 #    Eqs. 9-15 at 12000 steps (0.3 % chance failure per point), and SE(12000
 #    steps) / SE(3000 steps) in 0.3-0.8 (expected 0.5; a blocking SE from

@@ -21,8 +21,8 @@ import sys
 
 from validation.common import load, run_time
 from validation.fluid_guides import accuracy_fluid_diffusion, accuracy_viscosity, reduced_accuracy_fluid_diffusion, reduced_accuracy_viscosity
-from validation.hecht_clusters import fig14_msd, fig9_bonds, fig9_diagram, fig9_kappa, fig9_phi, reduced_fig9_diagram, reduced_fig9_kappa
-from validation.hecht_rdf import fig5_rdf
+from validation.hecht_clusters import fig14_msd, fig9_bonds, fig9_diagram, fig9_kappa, fig9_phi, reduced_fig14_msd, reduced_fig9_diagram, reduced_fig9_kappa
+from validation.hecht_rdf import fig5_rdf, reduced_fig5_rdf
 from validation.hecht_rz import fig4_rz, rz_precision
 from validation.pl_drag import pl_drag_guide, pl_fig6_drag
 from validation.pl_fig10 import pl_fig10_vacf, reduced_pl_fig10_vacf
@@ -194,6 +194,8 @@ STUDIES = [
 REDUCED = {
     "hecht_fig9_kappa": reduced_fig9_kappa,
     "hecht_fig9_diagram": reduced_fig9_diagram,
+    "hecht_fig5_rdf": reduced_fig5_rdf,
+    "hecht_fig14_msd": reduced_fig14_msd,
     "accuracy_viscosity": reduced_accuracy_viscosity,
     "accuracy_fluid_diffusion": reduced_accuracy_fluid_diffusion,
     "pl_fig10_vacf": reduced_pl_fig10_vacf,

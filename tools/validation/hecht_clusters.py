@@ -413,3 +413,20 @@ def reduced_fig9_diagram(sw):
            f"{100 * f50:.1f} +- {100 * e50:.1f} % at 50 mV ({cluster_state(f50)}); drop {100 * (f20 - f50):.1f} points "
            f"(bound > 30)")
     return cluster_state(f20) == "clustered" and f20 - f50 > 0.30, msg
+
+
+def reduced_fig14_msd(sw):
+    """studies/reduced/hecht_fig14_msd.cfg (179 colloids, 240 steps): the full study's headline and rule, the
+    colloids slow down as they cluster, D from the MSD over the last quarter (steps 180-240) below D over the
+    first (0-60) by more than 3 combined SE (the SEs over colloids of this run: the same rule is looser here by
+    the larger SE).  Fails if the late D were not clearly lower, e.g. a repulsive scene or swapped windows."""
+    got = {}
+    for p in sw["points"]:
+        d = p["summary"]["observables"]["colloid_D"]
+        got[p["params"]["observe.msd_start"]] = (d["value"], d["stderr"], p["params"]["steps"])
+    if len(got) < 2:
+        return False, "a point is missing"
+    (s0, (e, e_se, e1)), (s1, (l, l_se, l1)) = sorted(got.items())
+    z = (e - l) / (e_se ** 2 + l_se ** 2) ** 0.5
+    return z > 3, (f"D over steps {s0}-{e1} {e:.3g} +- {e_se:.2g}, over {s1}-{l1} {l:.3g} +- {l_se:.2g} a0^2/t0 "
+                   f"({l / e:.2f} of early, {z:.1f} combined SE; bound > 3)")
