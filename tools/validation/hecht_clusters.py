@@ -428,7 +428,8 @@ def reduced_fig9_phi(sw):
         lc = p["summary"]["observables"]["largest_cluster"]
         got[phi] = (lc["value"] / n, lc["stderr"] / n, n)
     (f1, e1, n1), (f2, e2, n2) = got[0.07], got[0.21]
-    msg = (f"kappa 1.4e8: largest cluster {100 * f1:.1f} +- {100 * e1:.1f} % of {n1} at phi 0.07 ({cluster_state(f1)}), "
+    kappa = sw["points"][0]["params"]["physical.kappa"]
+    msg = (f"kappa {kappa:.2g}: largest cluster {100 * f1:.1f} +- {100 * e1:.1f} % of {n1} at phi 0.07 ({cluster_state(f1)}), "
            f"{100 * f2:.1f} +- {100 * e2:.1f} % of {n2} at 0.21 ({cluster_state(f2)}); growth {100 * (f2 - f1):.1f} "
            f"points (bound > 30)")
     return f2 - f1 > 0.30, msg

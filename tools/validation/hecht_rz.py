@@ -284,6 +284,7 @@ def reduced_fig4_rz(sw):
         got[p["params"]["physical.volume_fraction"]] = rz_speed(p["summary"], "slip")
     (u1, e1), (u2, e2) = got[0.05], got[0.35]
     z = (u1 - u2) / (e1 * e1 + e2 * e2) ** 0.5
-    msg = (f"Pe = 1: slip u = {u1:.4f} +- {e1:.4f} at phi 0.05, {u2:.4f} +- {e2:.4f} at 0.35 a0/t0; "
+    pe = sw["points"][0]["params"].get("physical.gravity", 87.3) / 87.3  # the base scene's g is Pe = 1
+    msg = (f"Pe = {pe:g}: slip u = {u1:.4f} +- {e1:.4f} at phi 0.05, {u2:.4f} +- {e2:.4f} at 0.35 a0/t0; "
            f"drop {100 * (1 - u2 / u1):.0f} %, {z:.1f} combined SE (bound > 3)")
     return u2 < u1 and z > 3.0, msg
