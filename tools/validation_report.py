@@ -21,10 +21,11 @@ import sys
 
 from validation.common import load, run_time
 from validation.fluid_guides import accuracy_fluid_diffusion, accuracy_viscosity, reduced_accuracy_fluid_diffusion, reduced_accuracy_viscosity
-from validation.hecht_clusters import fig14_msd, fig9_bonds, fig9_diagram, fig9_kappa, fig9_phi, reduced_fig14_msd, reduced_fig9_diagram, reduced_fig9_kappa
+from validation.hecht_clusters import (fig14_msd, fig9_bonds, fig9_diagram, fig9_kappa, fig9_phi, reduced_fig14_msd,
+                                       reduced_fig9_diagram, reduced_fig9_kappa, reduced_fig9_phi)
 from validation.hecht_rdf import fig5_rdf, reduced_fig5_rdf
-from validation.hecht_rz import fig4_rz, rz_precision
-from validation.pl_drag import pl_drag_guide, pl_fig6_drag
+from validation.hecht_rz import fig4_rz, reduced_fig4_rz, rz_precision
+from validation.pl_drag import pl_drag_guide, pl_fig6_drag, reduced_pl_fig6_drag
 from validation.pl_fig10 import pl_fig10_vacf, reduced_pl_fig10_vacf
 from validation.pl_fig11 import pl_fig11_dphi, reduced_pl_fig11_dphi
 from validation.pl_fig4 import pl_fig4_rdf, reduced_pl_fig4_rdf
@@ -201,6 +202,9 @@ REDUCED = {
     "pl_fig10_vacf": reduced_pl_fig10_vacf,
     "pl_fig4_rdf": reduced_pl_fig4_rdf,
     "pl_fig11_dphi": reduced_pl_fig11_dphi,
+    "hecht_fig4_rz": reduced_fig4_rz,
+    "pl_fig6_drag": reduced_pl_fig6_drag,
+    "hecht_fig9_phi": reduced_fig9_phi,
 }
 
 
