@@ -8,6 +8,9 @@
 #  - Hecht Fig. 9 kappa (~140 colloids, 0.17 s mapped): suspended at kappa =
 #    1.0e8 /m, clustered at 2.0e8 /m by the full study's rule (largest cluster
 #    above 10 % of the colloids); measured 2.1 +- 0.1 % and 97.6 +- 0.4 %.
+#  - Hecht Figs. 12-13 bond kinds (the same reduced box, kappa = 1.4e8 /m):
+#    the energy bonds are secondary-minimum bonds, >= 0.5 per colloid and
+#    primary ones at most a tenth of them; measured 1.240 +- 0.014 and 0.
 #  - Hecht Fig. 9 diagram (the same reduced box, kappa = 2e8 /m): the full
 #    study's Psi0 direction, clustered at 20 mV and the largest cluster at
 #    50 mV more than 30 points below; measured 97.6 +- 0.4 % and 34.5 +- 2.0 %.

@@ -22,7 +22,7 @@ import sys
 from validation.common import load, run_time
 from validation.fluid_guides import accuracy_fluid_diffusion, accuracy_viscosity, reduced_accuracy_fluid_diffusion, reduced_accuracy_viscosity
 from validation.hecht_clusters import (fig14_msd, fig9_bonds, fig9_diagram, fig9_kappa, fig9_phi, reduced_fig14_msd,
-                                       reduced_fig9_diagram, reduced_fig9_kappa, reduced_fig9_phi)
+                                       reduced_fig9_bonds, reduced_fig9_diagram, reduced_fig9_kappa, reduced_fig9_phi)
 from validation.hecht_rdf import fig5_rdf, reduced_fig5_rdf
 from validation.hecht_rz import fig4_rz, reduced_fig4_rz, rz_precision
 from validation.pl_drag import pl_drag_guide, pl_fig6_drag, reduced_pl_fig6_drag
@@ -194,6 +194,7 @@ STUDIES = [
 # here and asserts the check): each returns (passed, one-line message).
 REDUCED = {
     "hecht_fig9_kappa": reduced_fig9_kappa,
+    "hecht_fig9_bonds": reduced_fig9_bonds,
     "hecht_fig9_diagram": reduced_fig9_diagram,
     "hecht_fig5_rdf": reduced_fig5_rdf,
     "hecht_fig14_msd": reduced_fig14_msd,

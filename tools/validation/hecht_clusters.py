@@ -89,6 +89,21 @@ def fig9_bonds(sw):
     return "<br>".join(rows), verdict
 
 
+def reduced_fig9_bonds(sw):
+    """studies/reduced/hecht_fig9_bonds.cfg, kappa = 1.4e8 /m, Psi0 = 20 mV in the (4 um)^3 box for 0.17 s: the full
+    study's headline, the bonds (pair energy below -1 kT) are secondary-minimum bonds.  Bound: at least 0.5
+    secondary bonds per colloid (the full study: 1.56; this run ~1.2 +- 0.01), and primary bonds at most a tenth
+    of them (the full study: none).  Fails when the colloids do not bond (a repulsive scene) or bond mostly in the
+    primary minimum (a barrier that no longer shields it)."""
+    p = sw["points"][0]
+    n = p["summary"]["mapping"]["colloid"]["n_colloids"]
+    ob = p["summary"]["observables"]
+    b1, b2 = ob["cluster_bonds_primary"], ob["cluster_bonds_secondary"]
+    prim, sec = b1["value"] / n, b2["value"] / n
+    msg = (f"kappa {p['params']['physical.kappa']:.2g}: bonds per colloid {prim:.3f} +- {b1['stderr'] / n:.3f} primary, "
+           f"{sec:.3f} +- {b2['stderr'] / n:.3f} secondary (bound: secondary >= 0.5, primary <= 0.1 x secondary)")
+    return sec >= 0.5 and prim <= 0.1 * sec, msg
+
 def dlvo_shape(summary):
     """The point's DLVO (Hecht Eqs. 1-2 as `peloid params` writes it into summary.json): barrier and
     secondary-minimum depth in kT, None where the potential has none."""
