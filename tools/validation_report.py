@@ -145,7 +145,7 @@ STUDIES = [
         "paper": "D(φ) = D0 (1 − 1.1795 φ) at low φ (slip spheres, PL ref. [90]); a colloid's D vs kT/ξ",
         "size": "L = 16 a0 (γ = 5, α = 90°, λ = 0.1, σ_cf = 2 a0, ε_cf = 2.5 kT, σ_cc = 4.3 a0), N = 1, 4, 8, 16, 27 "
                 "(φ = 0.008–0.22), 30000–330000 steps (3000–33000 t0), seeds 111–127; D from the MSD over lags 40–100 t0; "
-                "check studies/pl_fig11_dphi_solvent.cfg (N = 16, γ = 5 in the free volume, 60000 steps)",
+                "studies/pl_fig11_dphi_solvent.cfg: N = 4, 8, 16, 27 with γ = 5 in the free volume, the same steps (N = 16: 60000)",
         "eval": pl_fig11_dphi,
     },
     {
