@@ -52,7 +52,8 @@ Test(colloid_guards, huge_hertz_K_trips_contact_steps)
     int rc = run_steps(c, 2000, &err);
     cr_expect_eq(rc, PL_ERR_GUARD, "rc %d: %s", rc, err.msg);
     cr_expect(strstr(err.msg, "guard contact_steps: MD step") && strstr(err.msg, "colloids 0 and 1") &&
-                  strstr(err.msg, "min_contact_steps = 20") && strstr(err.msg, "colloids.substeps"),
+                  strstr(err.msg, "min_contact_steps = 20") && strstr(err.msg, "colloids.substeps") &&
+                  strstr(err.msg, "coarse_graining.reach_energy"),
               "message: %s", err.msg);
     all_finite(c);
     pl_colloid_free(c);

@@ -70,8 +70,9 @@ int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err)
                                   "guard contact_steps: MD step %lld: colloids %zu and %d: the "
                                   "collision time pi sqrt(m_red/U'') = %.4g t0 is resolved by "
                                   "%.3g MD steps of dt = %.4g; bound colloids.min_contact_steps = "
-                                  "%g; raise colloids.substeps (or lower hertz.K / the stiffest "
-                                  "term, e.g. dlvo.primary_depth)",
+                                  "%g; raise colloids.substeps (physical{}: it is derived, raise "
+                                  "coarse_graining.reach_energy) or lower hertz.K / the stiffest term, "
+                                  "e.g. dlvo.primary_depth",
                                   st, w, c->g_partner[n + w], PL_PI / sqrt(om2), steps, c->dt,
                                   c->min_contact_steps);
         }
