@@ -311,19 +311,10 @@ def accuracy_fluid_diffusion(sw):
             ax[1].axhline(y, color="grey", lw=0.6, ls="--")
             ax[1].text(min(x["cpu"] for x in est.values()), y, f"N = {N}",
                        va="bottom", fontsize=7, color="grey")
-        for a in ax:
-            a.set_xscale("log")
-            a.set_xlabel("CPU seconds (one thread)")
-            a.grid(True, which="both", alpha=0.3)
-        ax[1].set_yscale("log")
+        guide_axes(ax, "D / D_PL − 1 (%), bars: SE; dotted: ±1, 3, 10 %",
+                   "SE / D_PL (%); dashed: √(2/3N), walkers, long runs", se_lines=False)
         ax[1].set_yticks([0.2, 0.5, 1, 2, 5])
         ax[1].set_yticklabels(["0.2", "0.5", "1", "2", "5"])
-        for t in (1, 3, 10):
-            for sgn in (1, -1):
-                ax[0].axhline(sgn * t, color="grey", lw=0.6, ls=":")
-        ax[0].axhline(0.0, color="k", lw=0.8)
-        ax[0].set_ylabel("D / D_PL − 1 (%), bars: SE; dotted: ±1, 3, 10 %")
-        ax[1].set_ylabel("SE / D_PL (%); dashed: √(2/3N), walkers, long runs")
         ax[0].set_title("error against PL Eq. 6 (points along a line: prefixes 100–3000 steps;\n"
                         "squares: 4 replicas of 3000 steps pooled)", fontsize=9)
         ax[1].set_title("statistical error: flat in run length, ∝ N^−½", fontsize=9)

@@ -3,7 +3,7 @@
 Part of tools/validation_report.py (validation/REPORT.md); each evaluator takes a loaded sweep and
 returns (value, verdict[, details, plot])."""
 import os
-from validation.common import guide_axes, load, pyplot, save_figure
+from validation.common import guide_axes, load_sibling, pl_friction, pyplot, save_figure
 
 
 def drag_blocks(out, p, last=None):
@@ -35,10 +35,8 @@ def drag_theory(s):
     import math
     sig, L = s["scene"]["coupling"]["sigma_cf"], s["scene"]["box"]["cells"][0]
     eta, rho, kT = s["derived"]["eta"], s["scene"]["fluid"]["density"], s["derived"]["kT"]
-    xi_e = 8.0 / 3.0 * math.sqrt(2.0 * math.pi * kT) * rho * sig * sig  # PL Eq. 40, pinned (M -> inf)
-    par = lambda a, b: 1.0 / (1.0 / a + 1.0 / b)
-    xi_pl = par(4.0 * math.pi * eta * sig / (1.0 - 2.837 * sig / L), xi_e)  # PL Eqs. 41-43 as PL evaluate them
-    xi_inf = par(4.0 * math.pi * eta * sig, xi_e)
+    xi_e, _, xi_pl = pl_friction(kT, rho, eta, sig, L)  # pinned: M -> inf
+    xi_inf = 1.0 / (1.0 / (4.0 * math.pi * eta * sig) + 1.0 / xi_e)
     xi_pf = 1.0 / (1.0 / xi_inf - 2.837 / (6.0 * math.pi * eta * L))  # point force (Hasimoto)
     return xi_pl, xi_pf
 
@@ -116,7 +114,7 @@ def pl_drag_guide(sw):
     whose full-run deviation is below a by more than its SE."""
     runs = {}
     # the MD-substep knob: studies/accuracy_drag_substeps.cfg (pl_fig6_drag's first point at 1, 2, 8 substeps)
-    sub = load(os.path.dirname(os.path.normpath(sw["_out"])), "accuracy_drag_substeps")
+    sub = load_sibling(sw, "accuracy_drag_substeps")
     for sweep, p in [(sw, p) for p in sw["points"]] + ([(sub, p) for p in sub["points"]] if sub else []):
         s = p["summary"]
         if not s:

@@ -3,7 +3,7 @@
 Part of tools/validation_report.py (validation/REPORT.md); each evaluator takes a loaded sweep and
 returns (value, verdict[, details, plot])."""
 import os
-from validation.common import pyplot, save_figure
+from validation.common import pl_friction, pyplot, save_figure
 # PL Figs. 10, 13 (studies/pl_fig10_vacf.cfg).  Rules fixed before the runs:
 #  1. Enskog time: PL Eq. B11 fitted (amplitude fixed, ln C = -t / tau through the origin) over 0.2-1.2 t0 as in
 #     tests/test_coupling_vacf.c; agrees with tau_E = M_c / xi_E (PL Eqs. 40, 53, reduced mass) when within
@@ -27,10 +27,7 @@ def pl10_theory(s):
     R, sig = sc["colloids"]["radius"], sc["coupling"]["sigma_cf"] or sc["colloids"]["radius"]
     M = sc["colloids"]["mass_density"] * 4.0 / 3.0 * math.pi * R ** 3
     L, rho, kT, nu, eta = sc["box"]["cells"][0], sc["fluid"]["density"], d["kT"], d["nu"], d["eta"]
-    mu = M / (M + 1.0)  # reduced mass, m_f = 1
-    xi_E = 8.0 / 3.0 * math.sqrt(2.0 * math.pi * kT * mu) * rho * sig * sig  # PL Eq. 40
-    xi_S = 4.0 * math.pi * eta * sig / (1.0 - 2.837 * sig / L)  # PL Eqs. 42-43 as PL evaluate them
-    xi = 1.0 / (1.0 / xi_E + 1.0 / xi_S)  # PL Eq. 41
+    xi_E, xi_S, xi = pl_friction(kT, rho, eta, sig, L, M)  # PL Eqs. 40-43 as PL evaluate them
     return {"M": M, "L": L, "rho": rho, "kT": kT, "nu": nu, "sig": sig, "dt": sc["srd"]["dt"],
             "xi_E": xi_E, "xi_S": xi_S, "xi": xi, "tau_E": M / xi_E, "tau_B": M / xi, "tau_nu": sig * sig / nu,
             "t_box": L * L / (4.0 * math.pi ** 2 * nu), "phi": sc["colloids"]["count"] * 4.0 / 3.0 * math.pi * sig ** 3 / L ** 3,

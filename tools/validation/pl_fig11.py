@@ -3,7 +3,7 @@
 Part of tools/validation_report.py (validation/REPORT.md); each evaluator takes a loaded sweep and
 returns (value, verdict[, details, plot])."""
 import os
-from validation.common import load, pyplot, save_figure
+from validation.common import load_sibling, pl_friction, pyplot, save_figure
 
 
 # PL Fig. 11 (studies/pl_fig11_dphi.cfg): D from the colloids' MSD over lags [FIG11_LAGS] t0 after FIG11_BURN t0,
@@ -75,13 +75,9 @@ def msd_curve(t, r, burn=FIG11_BURN, tmax=150.0):
 def fig11_reference(s, mass):
     """kT / xi of one colloid in the box: PL Eqs. 40-43 as PL evaluate them (Enskog Eq. 40 with the reduced mass,
     in parallel with 4 pi eta sigma_cf / (1 - 2.837 sigma_cf / L)); tests/test_coupling_vacf.c's reference."""
-    import math
     sig, L = s["scene"]["coupling"]["sigma_cf"], s["scene"]["box"]["cells"][0]
     eta, rho, kT = s["derived"]["eta"], s["scene"]["fluid"]["density"], s["derived"]["kT"]
-    mu = 1.0 / (1.0 + 1.0 / mass)
-    xi_e = 8.0 / 3.0 * math.sqrt(2.0 * math.pi * kT * mu) * rho * sig * sig
-    xi_s = 4.0 * math.pi * eta * sig / (1.0 - 2.837 * sig / L)
-    return kT / (1.0 / (1.0 / xi_s + 1.0 / xi_e))
+    return kT / pl_friction(kT, rho, eta, sig, L, mass)[2]
 
 
 def srd_eta(g, alpha_deg, lam, kT=1.0):
@@ -98,16 +94,12 @@ def fig11_solvent_factor(s, mass, phi):
     the fluid outside N colloids is denser by 1 / (1 - phi) (fluid.density counts particles per cell of the whole
     box; summary.json's fluid_particles does not change with N).  Dividing D by it gives D at the solvent of
     the scene's fluid.density."""
-    import math
     g, kT = s["scene"]["fluid"]["density"], s["derived"]["kT"]
     al, lam = s["scene"]["srd"]["alpha"], s["derived"]["lambda"]
     sig, L = s["scene"]["coupling"]["sigma_cf"], s["scene"]["box"]["cells"][0]
-    mu = 1.0 / (1.0 + 1.0 / mass)
 
     def xi(gg):
-        xe = 8.0 / 3.0 * math.sqrt(2.0 * math.pi * kT * mu) * gg * sig * sig
-        xs = 4.0 * math.pi * srd_eta(gg, al, lam, kT) * sig / (1.0 - 2.837 * sig / L)
-        return 1.0 / (1.0 / xs + 1.0 / xe)
+        return pl_friction(kT, gg, srd_eta(gg, al, lam, kT), sig, L, mass)[2]
     return xi(g / (1.0 - phi)) / xi(g)
 
 
@@ -195,7 +187,7 @@ def pl_fig11_dphi(sw):
     # Added after the first evaluation (the rule above stays the verdict): the solvent is denser at higher N.
     sc = fit_linear_phi([x["phi"] for x in low], [x["D"] * x["solv"] for x in low], [x["se"] * x["solv"] for x in low])
     zc = (sc[2] - FIG11_C) / sc[3]
-    chk = load(os.path.dirname(os.path.normpath(sw["_out"])), "pl_fig11_dphi_solvent")
+    chk = load_sibling(sw, "pl_fig11_dphi_solvent")
     chk = fig11_points(chk) if chk else []
     # The constant-solvent series (second step of the check): N = 1 of the main study (its solvent 0.8 % denser
     # than gamma = 5, below its SE) and the check's points, fit over phi <= 0.15 as above.
