@@ -59,7 +59,7 @@ static double model_bytes(const char *stage)
     if (!strcmp(stage, "count")) return 6 * D;
     if (!strcmp(stage, "stream+sort")) return 12 * D;
     if (!strcmp(stage, "stream+bin") || !strcmp(stage, "sort")) return 12 * D + 4;
-    if (!strcmp(stage, "collide")) return 6 * D;
+    if (!strcmp(stage, "collide") || !strcmp(stage, "collide+guards")) return 6 * D;
     return 0.0;
 }
 
@@ -142,8 +142,8 @@ static int fused_step(pl_sim_t *sim, pl_err_t *err, double sec[3])
     pl_srd_stream_sort(&sim->fluid, &sim->grid, &p, sim->hist, sim->cell_start, sim->nthreads);
     double t2 = omp_get_wtime();
     int rc = 0;
-    for (int k = 0; k < sim->nstages; ++k) /* the plan's collide stage */
-        if (!strncmp(sim->stages[k].name, "collide", 7)) /* collide or collide+heyes */
+    for (int k = 0; k < sim->nstages && !rc; ++k) /* the plan's other stages: collide, the guards */
+        if (strcmp(sim->stages[k].name, "stream+bin") && strcmp(sim->stages[k].name, "sort"))
             rc = sim->stages[k].fn(sim, sim->stages[k].ctx, err);
     double t3 = omp_get_wtime();
     sec[0] += t1 - t0;
@@ -213,8 +213,14 @@ static int run_case(const options_t *o, int L, int nt, double stream_gbs, FILE *
         for (int k = 0; k < sim->nstages; ++k) ns[k][r] = 1e9 * sim->stages[k].seconds / (double)steps / n;
         ns[nk - 1][r] = 1e9 * wall / (double)steps / n;
     }
-    /* the pure-fluid plan: stream+bin, sort, collide and nothing else */
-    const int fused = sim->nstages == 3 && !strcmp(sim->stages[0].name, "stream+bin") && !rc;
+    /* the pure-fluid plan: stream+bin, sort, collide and the fluid's guards */
+    int fused = !rc;
+    for (int k = 0; k < sim->nstages; ++k) {
+        const char *nm = sim->stages[k].name;
+        if (strcmp(nm, "stream+bin") && strcmp(nm, "sort") && strcmp(nm, "collide") &&
+            strcmp(nm, "fluid-guard") && strcmp(nm, "output-guard"))
+            fused = 0;
+    }
     for (int r = 0; r < o->reps && fused && !rc; ++r) {
         double sec[3] = {0.0, 0.0, 0.0};
         t0 = omp_get_wtime();
@@ -237,7 +243,7 @@ static int run_case(const options_t *o, int L, int nt, double stream_gbs, FILE *
                    ab, stream_gbs, steps);
     }
     if (fused) {
-        const char *names[4] = {"count", "stream+sort", "collide", "step"};
+        const char *names[4] = {"count", "stream+sort", "collide+guards", "step"};
         char name[64];
         for (int k = 0; k < 4; ++k) {
             snprintf(name, sizeof name, "fused:%s", names[k]);

@@ -66,3 +66,11 @@ size_t pl_srd_guard_scan(const pl_fluid_t *f, const int Lc[3], double vmax2, int
     }
     return first;
 }
+
+size_t pl_srd_guard_scan_speeds(const pl_fluid_t *f, size_t lo, size_t hi, double vmax2)
+{
+    const pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
+    for (size_t i = lo; i < hi; ++i)
+        if (bad_v(vx, vy, vz, i, vmax2)) return i;
+    return hi;
+}

@@ -82,6 +82,30 @@ Test(fluid_guard, speed_lowest_index_any_threads)
     }
 }
 
+/* The guard stage reads the collision's per-block speed flags (the scan
+ * fused into kernels/srd_collide.c) when nothing ran between the two: a
+ * runaway made inside the step (one particle at 1e3 shares its momentum
+ * with its cell) is reported with the same particle and message as the full
+ * scan of the same state, for 1, 2 and 3 threads. */
+Test(fluid_guard, speed_flags_of_the_collision)
+{
+    char first[sizeof ((pl_err_t *)0)->msg] = "";
+    for (int t = 1; t <= 3; ++t) {
+        pl_sim_t *sim = pl_test_sim(FLUID, t);
+        pl_test_steps(sim, 2);
+        sim->fluid.v[2][777] = (pl_real)1e3;
+        pl_err_t err, full;
+        cr_assert_eq(pl_sim_step(sim, &err), PL_ERR_GUARD);
+        cr_expect_eq(sim->guard_bad_step, sim->step, "the flags of this step's collision were used");
+        cr_expect(strstr(err.msg, "guard fluid_speed: step 3: fluid particle"), "%d: %s", t, err.msg);
+        cr_expect_eq(pl_fluid_guard_check(sim, sim->step + 1, 0, &full), PL_ERR_GUARD);
+        cr_expect_str_eq(err.msg, full.msg);
+        if (t == 1) snprintf(first, sizeof first, "%s", err.msg);
+        cr_expect_str_eq(err.msg, first, "%d threads", t);
+        pl_sim_free(sim);
+    }
+}
+
 /* A healthy run passes and the stage is in the plan. */
 Test(fluid_guard, healthy_run_passes)
 {

@@ -89,6 +89,10 @@ struct pl_sim {
     int wall_acc_overflow; /* a fixed-point wall impulse sum overflowed (guard) */
     /* fluid guard bounds (pl_fluid_guard_setup, src/fluid/fluid_guard.c) */
     double guard_vmax;             /* largest speed allowed */
+    /* the collision's per-block speed flags (pl_collide_params_t.guard_bad)
+     * and the step whose collision wrote them (-1: none) */
+    unsigned char *guard_bad;
+    long long guard_bad_step;
     double guard_kT_lo, guard_kT_hi; /* kT_cell band with a thermostat (else 0, inf) */
     /* time-averaged fields */
     int64_t *field_acc;   /* 4 x L0 L1 L2, fixed point */

@@ -102,6 +102,10 @@ typedef struct {
     double wall_u[2][3];
     double *wall_dp;      /* NULL, or PL_WALL_ACC_N x nblocks: momentum the virtual
                            * particles gave the cells of block b (slots as wall_acc) */
+    unsigned char *guard_bad; /* NULL, or one flag per block: 0 only when no particle of
+                               * the block's cells has !(v^2 <= guard_vmax2) after the
+                               * collision (the fluid guard's speed test, fused) */
+    double guard_vmax2;
 } pl_collide_params_t;
 
 /* Fixed-order reductions are done over blocks of this many cells. */
@@ -185,6 +189,9 @@ void pl_srd_layer_velocity(const pl_fluid_t *fluid, int nlayers, const double e[
  * Inf included; only when `positions`) or |v_i|^2 > vmax2 (or not finite);
  * f->n when there is none.  Independent of nthreads. */
 size_t pl_srd_guard_scan(const pl_fluid_t *f, const int L[3], double vmax2, int positions, int nthreads);
+/* The speed test of pl_srd_guard_scan on particles [lo, hi) only, serial:
+ * the lowest failing index, hi if none (a block flagged by the collision). */
+size_t pl_srd_guard_scan_speeds(const pl_fluid_t *f, size_t lo, size_t hi, double vmax2);
 
 /* A wall impulse accumulator slot that overflowed (sticky): the fluid guard
  * reports it (src/fluid/fluid_guard.c). */

@@ -54,7 +54,35 @@ void pl_fluid_guard_setup(pl_sim_t *sim)
 
 static const char *const axis[3] = {"x", "y", "z"};
 
-int pl_fluid_guard_check(const pl_sim_t *sim, long long step, int scan, pl_err_t *err)
+/* The lowest index with a bad speed from the collision's block flags, or -1
+ * when they do not describe the current velocities: the collision of this
+ * step wrote them and no stage ran between it and the guard (couplings'
+ * post-collision, the rescaling thermostat).  A block holding a failing
+ * particle is always flagged (a flag without one is possible: the collision
+ * tests each cell's sum of v^2); particles are in cell order, so the first
+ * flagged block with a failing particle holds the lowest failing index. */
+static long long speeds_from_collision(const pl_sim_t *sim)
+{
+    if (sim->guard_bad_step != sim->step) return -1;
+    for (int k = 0; k < sim->nstages; ++k) {
+        const pl_stage_t *s = &sim->stages[k];
+        if (s->phase == PL_PHASE_STEP && s->slot > PL_SLOT_COLLIDE && s->slot < PL_SLOT_GUARD &&
+            pl_sim_stage_due(sim, s, sim->step))
+            return -1;
+    }
+    const size_t nc = sim->grid.ncells, nb = (nc + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
+    const double vmax = sim->guard_vmax;
+    for (size_t b = 0; b < nb; ++b) {
+        if (!sim->guard_bad[b]) continue;
+        const size_t c1 = (b + 1) * PL_CELL_BLOCK < nc ? (b + 1) * PL_CELL_BLOCK : nc;
+        const size_t lo = sim->cell_start[b * PL_CELL_BLOCK], hi = sim->cell_start[c1];
+        const size_t i = pl_srd_guard_scan_speeds(&sim->fluid, lo, hi, vmax * vmax);
+        if (i < hi) return (long long)i;
+    }
+    return (long long)sim->fluid.n;
+}
+
+static int guard_check(const pl_sim_t *sim, long long step, int scan, int fused, pl_err_t *err)
 {
     const pl_fluid_t *f = &sim->fluid;
     const pl_scene_t *sc = &sim->scene;
@@ -64,7 +92,9 @@ int pl_fluid_guard_check(const pl_sim_t *sim, long long step, int scan, pl_err_t
                           "+-2^62 (2^-%d units); bound 2^62; lower box.wall_velocity_* or srd.dt (the fluid "
                           "is running away)", step, PL_FIELD_FIXED_SHIFT);
     const double vmax = sim->guard_vmax;
-    size_t i = pl_srd_guard_scan(f, sc->box.cells, vmax * vmax, scan, sim->nthreads);
+    const long long from_collision = !scan && fused ? speeds_from_collision(sim) : -1;
+    size_t i = from_collision >= 0 ? (size_t)from_collision
+                                   : pl_srd_guard_scan(f, sc->box.cells, vmax * vmax, scan, sim->nthreads);
     if (i < f->n) {
         double r[3], v[3];
         for (int d = 0; d < 3; ++d) {
@@ -103,6 +133,11 @@ int pl_fluid_guard_check(const pl_sim_t *sim, long long step, int scan, pl_err_t
     return 0;
 }
 
+int pl_fluid_guard_check(const pl_sim_t *sim, long long step, int scan, pl_err_t *err)
+{
+    return guard_check(sim, step, scan, 0, err);
+}
+
 int pl_fluid_guard_stage(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)ctx;
@@ -110,5 +145,5 @@ int pl_fluid_guard_stage(pl_sim_t *sim, void *ctx, pl_err_t *err)
      * the thermo row of step + 1 would show; positions every
      * PL_FLUID_GUARD_SCAN_INTERVAL steps (the run loop adds a scan before
      * every output) */
-    return pl_fluid_guard_check(sim, sim->step + 1, (sim->step + 1) % PL_FLUID_GUARD_SCAN_INTERVAL == 0, err);
+    return guard_check(sim, sim->step + 1, (sim->step + 1) % PL_FLUID_GUARD_SCAN_INTERVAL == 0, 1, err);
 }

@@ -96,11 +96,22 @@ static void collide_sums(pl_sim_t *sim, const pl_collide_params_t *p)
     sim->last_kT_meas = dof > 0 ? s2 / dof : 0.0;
 }
 
+/* The step, and the fluid guard's speed test done inside the collision
+ * (src/fluid/fluid_guard.c uses the flags when nothing moved the fluid
+ * between the collision and the guard). */
+static void collide_guard(pl_sim_t *sim)
+{
+    sim->collide.step = (uint64_t)sim->step;
+    sim->collide.guard_bad = sim->guard_bad;
+    sim->collide.guard_vmax2 = sim->guard_vmax * sim->guard_vmax;
+    sim->guard_bad_step = sim->step;
+}
+
 static int stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)ctx;
     (void)err;
-    sim->collide.step = (uint64_t)sim->step;
+    collide_guard(sim);
     pl_srd_collide(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum, sim->nthreads);
     collide_sums(sim, &sim->collide);
     return 0;
@@ -112,7 +123,7 @@ static int stage_collide_heyes(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)ctx;
     (void)err;
-    sim->collide.step = (uint64_t)sim->step;
+    collide_guard(sim);
     pl_srd_collide_heyes(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum, sim->nthreads);
     collide_sums(sim, &sim->collide);
     return 0;

@@ -93,6 +93,8 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
     sim->hist = pl_alloc((size_t)sim->nthreads * nc * sizeof(uint32_t), sim->nthreads);
     sim->cell_start = pl_alloc((nc + 1) * sizeof(uint32_t), sim->nthreads);
     sim->block_sum = pl_alloc(2 * nb * sizeof(double), sim->nthreads);
+    sim->guard_bad = pl_alloc(nb, sim->nthreads);
+    sim->guard_bad_step = -1;
     sim->obs_scratch = pl_alloc(pl_srd_observe_scratch(n) * sizeof(double), sim->nthreads);
     if (scene->output.fields_interval > 0) sim->field_acc = pl_alloc(4 * L3 * sizeof(int64_t), sim->nthreads);
     /* the momentum each wall exchanges (wall stress) */
@@ -102,7 +104,7 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
         sim->wall_dp = pl_alloc(PL_WALL_ACC_N * nb * sizeof(double), sim->nthreads);
     }
     memcpy(sim->wall_u, scene->box.wall_velocity, sizeof sim->wall_u); /* shear, Hecht Sec. VIII.C */
-    if (!sim->hist || !sim->cell_start || !sim->block_sum || !sim->obs_scratch ||
+    if (!sim->hist || !sim->cell_start || !sim->block_sum || !sim->guard_bad || !sim->obs_scratch ||
         (scene->output.fields_interval > 0 && !sim->field_acc) || (any_walls && (!sim->wall_acc || !sim->wall_dp))) {
         pl_sim_free(sim);
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cell arrays (%zu cells)", nc);
@@ -133,6 +135,7 @@ void pl_sim_free(pl_sim_t *sim)
     pl_free(sim->hist);
     pl_free(sim->cell_start);
     pl_free(sim->block_sum);
+    pl_free(sim->guard_bad);
     pl_free(sim->obs_scratch);
     pl_free(sim->field_acc);
     pl_free(sim->wall_acc);
