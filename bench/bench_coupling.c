@@ -18,9 +18,12 @@
  * bench_srd.c: the couplings move more, so this is the bandwidth-equivalent
  * rate), and the share of the time each coupling stage takes.
  *
- * Output: one TSV line per case on stdout and in bench/out/coupling.tsv.
+ * Output: one TSV line per case on stdout and in bench/out/coupling.tsv; its
+ * last column, stage_ns, the median ns per particle of each stage.
  * Usage: bench_coupling [--quick] [--threads N] [--reps R] [--out DIR]
- *        (PL_BENCH_QUICK=1 = --quick: L = 24, 3 reps) */
+ *                       [--cases a,b,...]
+ *        (PL_BENCH_QUICK=1 = --quick: L = 24, 3 reps; --cases: only those
+ *        cases, and the fluid, which the ratios need) */
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
@@ -86,7 +89,8 @@ static int make_sim(const case_t *c, int L, int ncolloids, int nt, pl_sim_t **si
 /* Median ns per fluid particle and step of the whole step, and the share of
  * the coupling stages (any stage not in the bare fluid plan). */
 static int run_case(const case_t *c, int L, int ncolloids, int nt, int reps, double rep_seconds,
-                    double *ns, double *coupling_share, double *nfluid, char *stages, size_t ssz)
+                    double *ns, double *coupling_share, double *nfluid, char *stages, size_t ssz,
+                    char *stage_ns, size_t nsz)
 {
     pl_scene_t sc;
     pl_sim_t *sim;
@@ -102,6 +106,9 @@ static int run_case(const case_t *c, int L, int ncolloids, int nt, int reps, dou
     if (steps < 3) steps = 3;
     const double n = (double)sim->fluid.n;
     double share[MAX_REPS];
+    enum { MAX_STAGES = 64 };
+    static double st_ns[MAX_STAGES][MAX_REPS];
+    const int nst = sim->nstages < MAX_STAGES ? sim->nstages : MAX_STAGES;
     for (int r = 0; r < reps && !rc; ++r) {
         for (int k = 0; k < sim->nstages; ++k) sim->stages[k].seconds = 0.0;
         t0 = omp_get_wtime();
@@ -111,6 +118,7 @@ static int run_case(const case_t *c, int L, int ncolloids, int nt, int reps, dou
         for (int k = 0; k < sim->nstages; ++k) {
             const char *nm = sim->stages[k].name;
             if (strcmp(nm, "stream+bin") && strcmp(nm, "sort") && strcmp(nm, "collide")) cs += sim->stages[k].seconds;
+            if (k < nst) st_ns[k][r] = 1e9 * sim->stages[k].seconds / (double)steps / n;
         }
         ns[r] = 1e9 * wall / (double)steps / n;
         share[r] = cs / wall;
@@ -124,8 +132,28 @@ static int run_case(const case_t *c, int L, int ncolloids, int nt, int reps, dou
         size_t used = strlen(stages);
         snprintf(stages + used, ssz - used, "%s%s", k ? "," : "", sim->stages[k].name);
     }
+    stage_ns[0] = 0;
+    for (int k = 0; k < nst && !rc; ++k) {
+        double med, smin, smax;
+        bench_stats(st_ns[k], reps, &med, &smin, &smax);
+        size_t used = strlen(stage_ns);
+        snprintf(stage_ns + used, nsz - used, "%s%s=%.2f", k ? "," : "", sim->stages[k].name, med);
+    }
     pl_sim_free(sim);
     return rc;
+}
+
+/* Whether name is an item of the comma-separated list. */
+static int listed(const char *list, const char *name)
+{
+    const size_t n = strlen(name);
+    for (const char *p = list; p && *p;) {
+        const char *e = strchr(p, ',');
+        const size_t len = e ? (size_t)(e - p) : strlen(p);
+        if (len == n && !strncmp(p, name, n)) return 1;
+        p = e ? e + 1 : NULL;
+    }
+    return 0;
 }
 
 int main(int argc, char **argv)
@@ -133,14 +161,15 @@ int main(int argc, char **argv)
     bench_pin_or_reexec(argv);
     int quick = getenv("PL_BENCH_QUICK") && atoi(getenv("PL_BENCH_QUICK"));
     int max_threads = omp_get_max_threads(), reps = 5;
-    const char *outdir = "bench/out";
+    const char *outdir = "bench/out", *only = NULL;
     for (int i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "--quick")) quick = 1;
         else if (!strcmp(argv[i], "--threads") && i + 1 < argc) max_threads = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--reps") && i + 1 < argc) reps = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--out") && i + 1 < argc) outdir = argv[++i];
+        else if (!strcmp(argv[i], "--cases") && i + 1 < argc) only = argv[++i];
         else {
-            fprintf(stderr, "usage: bench_coupling [--quick] [--threads N] [--reps R] [--out DIR]\n");
+            fprintf(stderr, "usage: bench_coupling [--quick] [--threads N] [--reps R] [--out DIR] [--cases a,b]\n");
             return 2;
         }
     }
@@ -166,7 +195,7 @@ int main(int argc, char **argv)
     bench_print_topology(stdout);
     const char *hdr = "case\tL\tthreads\tfluid_particles\tcolloids\tns_per_particle\tns_min\tns_max"
                       "\tupdates_per_s\tupdates_per_s_per_core\tratio_to_fluid\tcoupling_stage_share"
-                      "\teff_GBps\tstream_GBps\tpct_of_stream_bound\treps\tstages\n";
+                      "\teff_GBps\tstream_GBps\tpct_of_stream_bound\treps\tstages\tstage_ns\n";
     printf("%s", hdr);
     fputs(hdr, tsv);
     int rc = 0;
@@ -176,18 +205,20 @@ int main(int argc, char **argv)
         double fluid_ns = NAN;
         for (int k = 0; k < NCASES && !rc; ++k) {
             double ns[MAX_REPS], share, nf, med, lo, hi;
-            char stages[512];
+            char stages[512], stage_ns[1024];
             const int nc = CASES[k].colloids < 0 ? ncolloids : CASES[k].colloids;
-            rc = run_case(&CASES[k], L, nc, t, reps, rep_seconds, ns, &share, &nf, stages, sizeof stages);
+            if (k > 0 && only && !listed(only, CASES[k].name)) continue;
+            rc = run_case(&CASES[k], L, nc, t, reps, rep_seconds, ns, &share, &nf, stages, sizeof stages,
+                          stage_ns, sizeof stage_ns);
             if (rc) break;
             bench_stats(ns, reps, &med, &lo, &hi);
             if (k == 0) fluid_ns = med;
             const double ups = 1e9 / med, gbs = step_bytes / med;
-            char line[1024];
+            char line[2048];
             snprintf(line, sizeof line,
-                     "%s\t%d\t%d\t%.0f\t%d\t%.3f\t%.3f\t%.3f\t%.4g\t%.4g\t%.3f\t%.3f\t%.2f\t%.2f\t%.1f\t%d\t%s\n",
+                     "%s\t%d\t%d\t%.0f\t%d\t%.3f\t%.3f\t%.3f\t%.4g\t%.4g\t%.3f\t%.3f\t%.2f\t%.2f\t%.1f\t%d\t%s\t%s\n",
                      CASES[k].name, L, t, nf, nc, med, lo, hi, ups, ups / t, med / fluid_ns,
-                     share, gbs, stream, 100.0 * gbs / stream, reps, stages);
+                     share, gbs, stream, 100.0 * gbs / stream, reps, stages, stage_ns);
             fputs(line, stdout);
             fputs(line, tsv);
             fflush(stdout);

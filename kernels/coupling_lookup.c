@@ -12,22 +12,6 @@
 #include "peloid/coupling_kernels.h"
 #include "peloid/rng.h"
 
-uint32_t pl_coupling_cell_of(const pl_grid_t *g, double x, double y, double z)
-{
-    const double r[3] = {x, y, z};
-    int ic[3];
-    for (int d = 0; d < 3; ++d) {
-        if (g->walls[d] == PL_WALLS_NONE) {
-            ic[d] = pl_grid_cell_periodic(r[d], g->shift[d], g->n[d]);
-            continue;
-        }
-        ic[d] = pl_grid_cell_closed(r[d], g->shift[d]); /* clipped: a point just beyond a wall */
-        if (ic[d] < 0) ic[d] = 0;
-        if (ic[d] >= g->n[d]) ic[d] = g->n[d] - 1;
-    }
-    return (uint32_t)((ic[2] * g->n[1] + ic[1]) * g->n[0] + ic[0]);
-}
-
 /* Cell range [lo, hi] along one axis touched by [x - R, x + R]; periodic
  * axes wrap later, closed axes are clipped. */
 static void span(double x, double R, int L, int periodic, int *lo, int *hi)
@@ -83,18 +67,11 @@ size_t pl_coupling_lookup_build(const pl_coupling_colloids_t *c, const int L[3],
     return (size_t)start[ncells];
 }
 
-int32_t pl_coupling_inside(const pl_coupling_colloids_t *c, const int L[3], const int walls[3],
-                           const int32_t *start, const int32_t *list, const double r[3],
-                           double p[3])
+/* The first colloid of list[b .. e) that contains r (p: r - centre). */
+static int32_t inside_of(const pl_coupling_colloids_t *c, const int L[3], const int walls[3], const int32_t *list,
+                         int32_t b, int32_t e, const double r[3], double p[3])
 {
-    int ic[3];
-    for (int d = 0; d < 3; ++d) {
-        ic[d] = (int)floor(r[d]);
-        if (ic[d] < 0) ic[d] = 0;
-        if (ic[d] >= L[d]) ic[d] = L[d] - 1;
-    }
-    size_t cell = ((size_t)ic[2] * (size_t)L[1] + (size_t)ic[1]) * (size_t)L[0] + (size_t)ic[0];
-    for (int32_t q = start[cell]; q < start[cell + 1]; ++q) {
+    for (int32_t q = b; q < e; ++q) {
         int32_t k = list[q];
         double d[3] = {r[0] - c->x[k], r[1] - c->y[k], r[2] - c->z[k]};
         for (int a = 0; a < 3; ++a)
@@ -108,6 +85,27 @@ int32_t pl_coupling_inside(const pl_coupling_colloids_t *c, const int L[3], cons
         }
     }
     return -1;
+}
+
+int32_t pl_coupling_inside(const pl_coupling_colloids_t *c, const int L[3], const int walls[3],
+                           const int32_t *start, const int32_t *list, const double r[3],
+                           double p[3])
+{
+    int ic[3];
+    for (int d = 0; d < 3; ++d) {
+        ic[d] = (int)floor(r[d]);
+        if (ic[d] < 0) ic[d] = 0;
+        if (ic[d] >= L[d]) ic[d] = L[d] - 1;
+    }
+    size_t cell = ((size_t)ic[2] * (size_t)L[1] + (size_t)ic[1]) * (size_t)L[0] + (size_t)ic[0];
+    return inside_of(c, L, walls, list, start[cell], start[cell + 1], r, p);
+}
+
+int32_t pl_coupling_inside_cells(const pl_coupling_colloids_t *c, const pl_grid_t *g, const uint32_t *cstart,
+                                 const int32_t *clist, const double r[3], double p[3])
+{
+    const uint32_t cell = pl_coupling_cell_of(g, r[0], r[1], r[2]);
+    return inside_of(c, g->L, g->walls, clist, (int32_t)cstart[cell], (int32_t)cstart[cell + 1], r, p);
 }
 
 void pl_coupling_clear_interiors(pl_fluid_t *f, const pl_coupling_colloids_t *c, const int L[3],

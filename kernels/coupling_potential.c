@@ -4,13 +4,18 @@
  * a radial force: slip surfaces (PL Sec. III.B).  Only the particles near a
  * colloid are integrated at the MD step (the order of the step:
  * src/coupling/coupling_potential.c).  This file finds them (parallel over the
- * streaming's static chunks), gathers them, takes back their free
- * streaming, kicks and drifts them (PL Eqs. 18-19, per particle) and writes
- * them back, and evaluates the forces in parallel over fixed blocks of
- * particles: each block sums its reactions on the colloids in particle order
- * into its own row, and the rows are added in block order, so the result
- * depends on the number of selected particles and colloids but not on the
- * thread count. */
+ * streaming's static chunks; from the colloids near each collision cell
+ * while the fluid is sorted), gathers them with their (particle, colloid)
+ * pairs, takes back their free streaming, kicks and drifts them (PL Eqs.
+ * 18-19, per particle) and writes them back, and evaluates the forces in
+ * parallel over fixed blocks of particles: each block sums its reactions on
+ * the colloids in particle order into its own row, and the rows are added
+ * in block order, so the result depends on the number of selected particles
+ * and colloids but not on the thread count.  The forces over the pairs
+ * (vectorised, no lookup per evaluation) are fused with the kicks and the
+ * drift around them (pl_coupling_potential_force_step): one pass over the
+ * selected particles per MD step instead of four, the same bits (each
+ * particle's and each colloid's operations in the same order). */
 #include <math.h>
 #include <omp.h>
 #include <string.h>
@@ -46,40 +51,56 @@ static inline double min_image(double d, double h, int L) { return d > h ? d - L
  * The same selections as pl_coupling_inside (checkpoints of periodic, z-wall
  * and capillary scenes bitwise equal); select stage 14 -> 10 ns/particle at
  * 1 thread, 7.5 -> 5.5 at 2 (bench_coupling's potential case). */
-static inline int near_any(const image_box_t *q, const pl_coupling_colloids_t *c, const int32_t *lk_start,
-                           const int32_t *lk_list, double x, double y, double z)
+static inline int hit(const image_box_t *q, const pl_coupling_colloids_t *c, int32_t k, double x, double y,
+                      double z)
+{
+    const double dx = min_image(x - c->x[k], q->h[0], q->L[0]);
+    const double dy = min_image(y - c->y[k], q->h[1], q->L[1]);
+    const double dz = min_image(z - c->z[k], q->h[2], q->L[2]);
+    return dx * dx + dy * dy + dz * dz < c->rad[k] * c->rad[k];
+}
+
+/* The unit cell of a position (the lookup's). */
+static inline size_t unit_cell(const image_box_t *q, double x, double y, double z)
 {
     int ix = (int)x, iy = (int)y, iz = (int)z;
     ix = ix < 0 ? 0 : ix < q->L[0] ? ix : q->L[0] - 1;
     iy = iy < 0 ? 0 : iy < q->L[1] ? iy : q->L[1] - 1;
     iz = iz < 0 ? 0 : iz < q->L[2] ? iz : q->L[2] - 1;
-    const size_t cell = ((size_t)iz * (size_t)q->L[1] + (size_t)iy) * (size_t)q->L[0] + (size_t)ix;
+    return ((size_t)iz * (size_t)q->L[1] + (size_t)iy) * (size_t)q->L[0] + (size_t)ix;
+}
+
+/* The number of colloids of the list [b, e) of lk_list whose sphere holds
+ * the point. */
+static inline int near_count(const image_box_t *q, const pl_coupling_colloids_t *c, const int32_t *lk_list,
+                             int32_t b, int32_t e, double x, double y, double z)
+{
     int in = 0;
-    for (int32_t p = lk_start[cell], e = lk_start[cell + 1]; p < e; ++p) {
-        const int32_t k = lk_list[p];
-        const double dx = min_image(x - c->x[k], q->h[0], q->L[0]);
-        const double dy = min_image(y - c->y[k], q->h[1], q->L[1]);
-        const double dz = min_image(z - c->z[k], q->h[2], q->L[2]);
-        in |= dx * dx + dy * dy + dz * dz < c->rad[k] * c->rad[k];
-    }
+    for (int32_t p = b; p < e; ++p) in += hit(q, c, lk_list[p], x, y, z);
     return in;
 }
 
 void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
                       const int32_t *lk_start, const int32_t *lk_list, int nthreads,
-                      uint32_t *found, uint64_t *counts)
+                      uint32_t *found, uint32_t *found_cell, uint64_t *counts)
 {
     const image_box_t q = image_box(g->L, g->walls);
 #pragma omp parallel num_threads(nthreads)
     {
         int t = omp_get_thread_num();
-        size_t lo, hi, m = 0;
+        size_t lo, hi, m = 0, np = 0;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
         for (size_t i = lo; i < hi; ++i) {
+            const double x = f->r[0][i], y = f->r[1][i], z = f->r[2][i];
+            const size_t cell = unit_cell(&q, x, y, z);
+            const int in = near_count(&q, c, lk_list, lk_start[cell], lk_start[cell + 1], x, y, z);
             found[lo + m] = (uint32_t)i;
-            m += (size_t)near_any(&q, c, lk_start, lk_list, f->r[0][i], f->r[1][i], f->r[2][i]);
+            if (found_cell) found_cell[lo + m] = (uint32_t)cell;
+            m += (size_t)(in > 0);
+            np += (size_t)in;
         }
         counts[(size_t)t * 8 + 2] = m;
+        counts[(size_t)t * 8 + 3] = np;
     }
 }
 
@@ -88,47 +109,83 @@ void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
  * rounding (the cells are floor(x - s) of the stored positions, the test
  * near_any's, both in double: errors ~1e-12 a0); periodic axes wrap (every
  * cell once the span covers the axis), closed axes (cells 0 .. L + 1,
- * kernels/coupling_lookup.c) are clipped. */
-static int axis_cells(double x, double R, double s, int n, int periodic, int *idx)
+ * kernels/coupling_lookup.c) are clipped.  gap2: the squared distance from
+ * x to each cell along the axis (0 for the cells that hold x, for the
+ * outer cells of a closed axis, which hold what lies beyond them, and for
+ * every cell once the span covers a periodic axis). */
+static int axis_cells(double x, double R, double s, int n, int periodic, int *idx, double *gap2)
 {
     const double eps = 1e-6;
     int lo = (int)floor(x - R - eps - s), hi = (int)floor(x + R + eps - s);
+    int all = 0, off = 0; /* off: a closed axis's cell i spans [i - 1 + s, i + s) */
     if (!periodic) {
         lo = lo + 1 < 0 ? 0 : lo + 1;
         hi = hi + 1 > n - 1 ? n - 1 : hi + 1;
+        off = -1;
     } else if (hi - lo + 1 >= n) {
         lo = 0;
         hi = n - 1;
+        all = 1;
     }
     int m = 0;
-    for (int i = lo; i <= hi; ++i) idx[m++] = periodic ? ((i % n) + n) % n : i;
+    for (int i = lo; i <= hi; ++i) {
+        const double a = (double)(i + off) + s, b = a + 1.0;
+        double gap = x < a ? a - x : (x > b ? x - b : 0.0);
+        if (all || (!periodic && (i == 0 || i == n - 1))) gap = 0.0;
+        gap2[m] = gap * gap;
+        idx[m++] = periodic ? ((i % n) + n) % n : i;
+    }
     return m;
 }
 
+size_t pl_coupling_cell_candidates(const pl_grid_t *g, const pl_coupling_colloids_t *c, int *axis_buf,
+                                   double *gap_buf, uint32_t *cstart, int32_t *clist, size_t cap)
+{
+    const size_t ncells = g->ncells;
+    int *ax[3] = {axis_buf, axis_buf + g->n[0], axis_buf + g->n[0] + g->n[1]};
+    double *gp[3] = {gap_buf, gap_buf + g->n[0], gap_buf + g->n[0] + g->n[1]};
+    /* counts of cell cl in cstart[cl + 2]; their running sum then leaves
+     * the start of cl in cstart[cl + 1], which the filling advances to its
+     * end = the start of cl + 1 (serial: colloids are few).  A cell is a
+     * candidate's if the sphere (radius + 1e-6) reaches it: about half the
+     * cells of the sphere's bounding box. */
+    memset(cstart, 0, (ncells + 2) * sizeof *cstart);
+    for (int pass = 0; pass < 2; ++pass) {
+        for (size_t k = 0; k < c->n; ++k) {
+            const double r[3] = {c->x[k], c->y[k], c->z[k]}, R = c->rad[k] + 1e-6;
+            int m[3];
+            for (int d = 0; d < 3; ++d)
+                m[d] = axis_cells(r[d], c->rad[k], g->shift[d], g->n[d], g->walls[d] == PL_WALLS_NONE, ax[d], gp[d]);
+            for (int a = 0; a < m[2]; ++a)
+                for (int b = 0; b < m[1]; ++b) {
+                    const double g2 = gp[2][a] + gp[1][b];
+                    if (!(g2 < R * R)) continue;
+                    const size_t row = ((size_t)ax[2][a] * (size_t)g->n[1] + (size_t)ax[1][b]) * (size_t)g->n[0];
+                    for (int e = 0; e < m[0]; ++e) {
+                        if (!(g2 + gp[0][e] < R * R)) continue;
+                        if (pass == 0) cstart[row + (size_t)ax[0][e] + 2]++;
+                        else clist[cstart[row + (size_t)ax[0][e] + 1]++] = (int32_t)k;
+                    }
+                }
+        }
+        if (pass == 0) {
+            for (size_t i = 2; i < ncells + 2; ++i) cstart[i] += cstart[i - 1];
+            if (cstart[ncells + 1] > cap) return cstart[ncells + 1];
+        }
+    }
+    return cstart[ncells];
+}
+
 void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
-                             const int32_t *lk_start, const int32_t *lk_list, const uint32_t *cell_start,
-                             uint8_t *marks, int *axis_buf, int nthreads, uint32_t *found, uint64_t *counts)
+                             const uint32_t *cstart, const int32_t *clist, const uint32_t *cell_start,
+                             int nthreads, uint32_t *found, uint32_t *found_cell, uint64_t *counts)
 {
     const image_box_t q = image_box(g->L, g->walls);
     const size_t ncells = g->ncells;
-    /* mark the cells a selection sphere reaches (serial: colloids are few) */
-    memset(marks, 0, ncells);
-    int *ax[3] = {axis_buf, axis_buf + g->n[0], axis_buf + g->n[0] + g->n[1]};
-    for (size_t k = 0; k < c->n; ++k) {
-        const double r[3] = {c->x[k], c->y[k], c->z[k]};
-        int m[3];
-        for (int d = 0; d < 3; ++d)
-            m[d] = axis_cells(r[d], c->rad[k], g->shift[d], g->n[d], g->walls[d] == PL_WALLS_NONE, ax[d]);
-        for (int a = 0; a < m[2]; ++a)
-            for (int b = 0; b < m[1]; ++b) {
-                uint8_t *row = marks + ((size_t)ax[2][a] * (size_t)g->n[1] + (size_t)ax[1][b]) * (size_t)g->n[0];
-                for (int e = 0; e < m[0]; ++e) row[ax[0][e]] = 1;
-            }
-    }
 #pragma omp parallel num_threads(nthreads)
     {
         int t = omp_get_thread_num();
-        size_t lo, hi, m = 0;
+        size_t lo, hi, m = 0, np = 0;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
         /* first cell ending after lo */
         size_t a = 0, b = ncells;
@@ -138,15 +195,50 @@ void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
             else b = mid;
         }
         for (size_t cl = a; cl < ncells && cell_start[cl] < hi; ++cl) {
-            if (!marks[cl]) continue;
+            const int32_t kb = (int32_t)cstart[cl], ke = (int32_t)cstart[cl + 1];
+            if (kb == ke) continue;
             size_t i0 = cell_start[cl] > lo ? cell_start[cl] : lo;
             size_t i1 = cell_start[cl + 1] < hi ? cell_start[cl + 1] : hi;
             for (size_t i = i0; i < i1; ++i) {
+                const int in = near_count(&q, c, clist, kb, ke, f->r[0][i], f->r[1][i], f->r[2][i]);
                 found[lo + m] = (uint32_t)i;
-                m += (size_t)near_any(&q, c, lk_start, lk_list, f->r[0][i], f->r[1][i], f->r[2][i]);
+                found_cell[lo + m] = (uint32_t)cl;
+                m += (size_t)(in > 0);
+                np += (size_t)in;
             }
         }
         counts[(size_t)t * 8 + 2] = m;
+        counts[(size_t)t * 8 + 3] = np;
+    }
+}
+
+void pl_coupling_find_binned(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
+                             const uint32_t *cstart, const int32_t *clist, int nthreads, uint32_t *found,
+                             uint64_t *counts)
+{
+    const image_box_t q = image_box(g->L, g->walls);
+    const uint32_t *restrict cell = f->cell;
+#pragma omp parallel num_threads(nthreads)
+    {
+        int t = omp_get_thread_num();
+        size_t lo, hi, m = 0, in = 0, np = 0;
+        pl_chunk(f->n, t, nthreads, &lo, &hi);
+        /* the particles in cells with candidates (branch-free append) ... */
+        for (size_t i = lo; i < hi; ++i) {
+            found[lo + m] = (uint32_t)i;
+            m += (size_t)(cstart[cell[i]] != cstart[cell[i] + 1]);
+        }
+        /* ... then those a candidate's sphere holds, in place */
+        for (size_t s = 0; s < m; ++s) {
+            const size_t i = found[lo + s], cl = cell[i];
+            const int k = near_count(&q, c, clist, (int32_t)cstart[cl], (int32_t)cstart[cl + 1], f->r[0][i],
+                                     f->r[1][i], f->r[2][i]);
+            found[lo + in] = (uint32_t)i;
+            in += (size_t)(k > 0);
+            np += (size_t)k;
+        }
+        counts[(size_t)t * 8 + 2] = in;
+        counts[(size_t)t * 8 + 3] = np;
     }
 }
 
@@ -233,30 +325,257 @@ double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const doubl
     return epot;
 }
 
+/* PL Eq. 17 for one pair at separation (dx, dy, dz) (minimum image taken
+ * here): the force on the particle and the energy, 0 beyond the cut-off
+ * (selected, not multiplied: the same bits as wca_block's skip once
+ * summed). */
+static inline void wca_pair(double dx, double dy, double dz, double s2, double rc2, double e24, double e4,
+                            const double h[3], const double L[3], double *gx, double *gy, double *gz, double *ge)
+{
+    dx = dx > h[0] ? dx - L[0] : (dx < -h[0] ? dx + L[0] : dx);
+    dy = dy > h[1] ? dy - L[1] : (dy < -h[1] ? dy + L[1] : dy);
+    dz = dz > h[2] ? dz - L[2] : (dz < -h[2] ? dz + L[2] : dz);
+    const double d2 = dx * dx + dy * dy + dz * dz;
+    double sr6 = s2 / d2;
+    sr6 = sr6 * sr6 * sr6;
+    /* PL Eq. 17: F = 24 eps (2 (s/r)^12 - (s/r)^6) / r^2 * dv */
+    const double ff = e24 * (2.0 * sr6 * sr6 - sr6) / d2, e = e4 * (sr6 * sr6 - sr6 + 0.25);
+    const int in = d2 < rc2;
+    const double fin = in ? ff : 0.0;
+    *gx = fin * dx;
+    *gy = fin * dy;
+    *gz = fin * dz;
+    *ge = in ? e : 0.0;
+}
+
+/* Block of particles [lo, hi): forces into nb->f, reactions and energy into
+ * its row rb (3 nc + 1).  The first pair of each particle (its first
+ * candidate, index j of the scratch g*) vectorised over the particles, the
+ * further ones (scratch nb->n + p) over their list; then the sums of
+ * wca_block, in particle order, each particle's pairs in colloid order. */
+static void pair_block(const pl_coupling_wca_t *w, const pl_coupling_near_t *nb, const pl_coupling_colloids_t *c,
+                       size_t lo, size_t hi, double *rb, double *restrict gx, double *restrict gy,
+                       double *restrict gz, double *restrict ge)
+{
+    const size_t nc = c->n, row = 3 * nc + 1, nn = nb->n;
+    for (size_t q = 0; q < row; ++q) rb[q] = 0.0;
+    const double s2 = w->sigma * w->sigma, rc2 = s2 * cbrt(2.0); /* (2^{1/6} sigma)^2 */
+    const double e24 = 24.0 * w->eps, e4 = 4.0 * w->eps;
+    const image_box_t q = image_box(w->L, w->walls);
+    const double h[3] = {q.h[0], q.h[1], q.h[2]}, L[3] = {q.L[0], q.L[1], q.L[2]};
+    const double *restrict x = nb->r[0], *restrict y = nb->r[1], *restrict z = nb->r[2];
+    const double *restrict cx = c->x, *restrict cy = c->y, *restrict cz = c->z;
+    const int32_t *restrict k0 = nb->k0, *restrict pk = nb->pk;
+    const uint32_t *restrict pj = nb->pj, *restrict ps = nb->pstart;
+#pragma omp simd
+    for (size_t j = lo; j < hi; ++j) {
+        const int32_t k = k0[j];
+        wca_pair(x[j] - cx[k], y[j] - cy[k], z[j] - cz[k], s2, rc2, e24, e4, h, L, gx + j, gy + j, gz + j, ge + j);
+    }
+    for (uint32_t p = ps[lo]; p < ps[hi]; ++p) {
+        const uint32_t j = pj[p];
+        const int32_t k = pk[p];
+        wca_pair(x[j] - cx[k], y[j] - cy[k], z[j] - cz[k], s2, rc2, e24, e4, h, L, gx + nn + p, gy + nn + p,
+                 gz + nn + p, ge + nn + p);
+    }
+    /* the reaction on the colloid of the last first pair (kc) is held in
+     * registers (a run of particles near one colloid: no round trip through
+     * memory per particle); the same subtractions in the same order */
+    double epot = 0.0;
+    double *rx = rb, *ry = rb + nc, *rz = rb + 2 * nc;
+    double *restrict fx = nb->f[0], *restrict fy = nb->f[1], *restrict fz = nb->f[2];
+    int32_t kc = lo < hi ? k0[lo] : 0;
+    double ax = 0.0, ay = 0.0, az = 0.0; /* = row of kc, all 0 at the start */
+    for (size_t j = lo; j < hi; ++j) {
+        const int32_t k = k0[j];
+        if (k != kc) {
+            rx[kc] = ax;
+            ry[kc] = ay;
+            rz[kc] = az;
+            kc = k;
+            ax = rx[k];
+            ay = ry[k];
+            az = rz[k];
+        }
+        epot += ge[j];
+        double F0 = 0.0 + gx[j], F1 = 0.0 + gy[j], F2 = 0.0 + gz[j];
+        ax -= gx[j];
+        ay -= gy[j];
+        az -= gz[j];
+        for (uint32_t p = ps[j]; p < ps[j + 1]; ++p) {
+            const int32_t kp = pk[p];
+            const size_t e = nn + p;
+            epot += ge[e];
+            F0 += gx[e];
+            F1 += gy[e];
+            F2 += gz[e];
+            rx[kp] -= gx[e]; /* kp > k0[j] = kc: not held */
+            ry[kp] -= gy[e];
+            rz[kp] -= gz[e];
+        }
+        fx[j] = F0;
+        fy[j] = F1;
+        fz[j] = F2;
+    }
+    if (lo < hi) {
+        rx[kc] = ax;
+        ry[kc] = ay;
+        rz[kc] = az;
+    }
+    rb[3 * nc] = epot;
+}
+
+/* The reactions of the blocks' rows added in block order, and their energy. */
+static double rows_sum(size_t nc, size_t nblk, const double *partial, double *cfx, double *cfy, double *cfz)
+{
+    const size_t row = 3 * nc + 1;
+    double *cf[3] = {cfx, cfy, cfz};
+    for (size_t q = 0; q < 3 * nc; ++q) /* in block order */
+        for (size_t b = 0; b < nblk; ++b) cf[q / nc][q % nc] += partial[b * row + q];
+    double epot = 0.0;
+    for (size_t b = 0; b < nblk; ++b) epot += partial[b * row + 3 * nc];
+    return epot;
+}
+
+double pl_coupling_wca_pair_forces(const pl_coupling_wca_t *w, const pl_coupling_near_t *nb,
+                                   const pl_coupling_colloids_t *c, double *cfx, double *cfy, double *cfz,
+                                   int nthreads, double *partial, double *pair_buf, size_t pair_cap)
+{
+    const size_t nn = nb->n, nc = c->n, row = 3 * nc + 1, nblk = pl_coupling_wca_blocks(nn, nc);
+    double *gx = pair_buf, *gy = pair_buf + pair_cap, *gz = pair_buf + 2 * pair_cap, *ge = pair_buf + 3 * pair_cap;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads)
+    for (size_t b = 0; b < nblk; ++b)
+        pair_block(w, nb, c, nn * b / nblk, nn * (b + 1) / nblk, partial + b * row, gx, gy, gz, ge);
+    return rows_sum(nc, nblk, partial, cfx, cfy, cfz);
+}
+
+/* Drift of particle j (PL Eq. 18) with the streaming's wall bounce; returns
+ * |r - r0|^2. */
+static inline double drift_one(const pl_coupling_near_t *nb, const pl_grid_t *g, const double wall_u[2][3],
+                               double dt, size_t j, int64_t acc[PL_WALL_ACC_N])
+{
+    double *const *r = nb->r, *const *v = nb->v, *const *disp = nb->disp, *const *rs = nb->r0;
+    const double r0[3] = {r[0][j], r[1][j], r[2][j]};
+    for (int d = 0; d < 3; ++d) {
+        r[d][j] += v[d][j] * dt;
+        if (disp[0]) disp[d][j] += v[d][j] * dt;
+    }
+    if (g->any_walls) {
+        /* the streaming's wall bounce (earliest wall first) */
+        double rr[3] = {r[0][j], r[1][j], r[2][j]}, vv[3] = {v[0][j], v[1][j], v[2][j]};
+        if (pl_srd_wall_bounce(g, wall_u, dt, r0, rr, vv, acc))
+            for (int d = 0; d < 3; ++d) {
+                if (disp[0]) disp[d][j] += rr[d] - r[d][j];
+                r[d][j] = rr[d];
+                v[d][j] = vv[d];
+            }
+    }
+    const double a = r[0][j] - rs[0][j], b = r[1][j] - rs[1][j], e = r[2][j] - rs[2][j];
+    return a * a + b * b + e * e;
+}
+
+double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_coupling_near_t *nb,
+                                        const pl_coupling_colloids_t *c, const pl_grid_t *g,
+                                        const double wall_u[2][3], double h, const double ga[3], int kicks,
+                                        double dt, double *cfx, double *cfy, double *cfz, int nthreads,
+                                        double *partial, double *pair_buf, size_t pair_cap,
+                                        int64_t acc[PL_WALL_ACC_N], double *far2)
+{
+    const size_t nn = nb->n, nc = c->n, row = 3 * nc + 1, nblk = pl_coupling_wca_blocks(nn, nc);
+    double *gx = pair_buf, *gy = pair_buf + pair_cap, *gz = pair_buf + 2 * pair_cap, *ge = pair_buf + 3 * pair_cap;
+    double *const *v = nb->v, *const *F = nb->f;
+    const double g0 = ga[0], g1 = ga[1], g2 = ga[2];
+    double far = 0.0;
+    /* integer impulses: the sum is exact in any order; max is exact */
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads) reduction(+ : acc[:PL_WALL_ACC_N]) \
+    reduction(max : far)
+    for (size_t b = 0; b < nblk; ++b) {
+        const size_t lo = nn * b / nblk, hi = nn * (b + 1) / nblk;
+        pair_block(w, nb, c, lo, hi, partial + b * row, gx, gy, gz, ge);
+        /* per particle, as pl_coupling_potential_kick (kicks times), then
+         * pl_coupling_potential_drift */
+        for (int q = 0; q < kicks; ++q) {
+            double *restrict vx = v[0], *restrict vy = v[1], *restrict vz = v[2];
+            const double *restrict fx = F[0], *restrict fy = F[1], *restrict fz = F[2];
+#pragma omp simd
+            for (size_t j = lo; j < hi; ++j) {
+                vx[j] += h * (fx[j] + g0);
+                vy[j] += h * (fy[j] + g1);
+                vz[j] += h * (fz[j] + g2);
+            }
+        }
+        if (dt > 0.0 && !g->any_walls && !nb->disp[0]) { /* drift_one, vectorised */
+            double *restrict x = nb->r[0], *restrict y = nb->r[1], *restrict z = nb->r[2];
+            const double *restrict vx = v[0], *restrict vy = v[1], *restrict vz = v[2];
+            const double *restrict x0 = nb->r0[0], *restrict y0 = nb->r0[1], *restrict z0 = nb->r0[2];
+#pragma omp simd reduction(max : far)
+            for (size_t j = lo; j < hi; ++j) {
+                x[j] += vx[j] * dt;
+                y[j] += vy[j] * dt;
+                z[j] += vz[j] * dt;
+                const double a = x[j] - x0[j], bb = y[j] - y0[j], e = z[j] - z0[j];
+                const double d2 = a * a + bb * bb + e * e;
+                far = d2 > far ? d2 : far;
+            }
+        } else if (dt > 0.0) {
+            for (size_t j = lo; j < hi; ++j) {
+                const double d2 = drift_one(nb, g, wall_u, dt, j, acc);
+                far = d2 > far ? d2 : far;
+            }
+        }
+    }
+    *far2 = far;
+    return rows_sum(nc, nblk, partial, cfx, cfy, cfz);
+}
+
 /* ---- the selected particles at the MD step ----------------------------- */
 /* Each particle is handled by one iteration and writes only its own slots
  * (and, in the scatter, the histogram row of its owner thread); the wall
  * impulses are integers: the results are the same for any thread count. */
 
-void pl_coupling_potential_gather(const pl_fluid_t *f, const uint32_t *found, const uint64_t *counts,
-                                  int nthreads, const pl_coupling_near_t *nb)
+void pl_coupling_potential_gather(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
+                                  const uint32_t *found, const uint32_t *found_cell, const uint64_t *counts,
+                                  const uint32_t *cstart, const int32_t *clist, int nthreads,
+                                  const pl_coupling_near_t *nb)
 {
+    const image_box_t q = image_box(g->L, g->walls);
     /* thread t's chunk goes after those of 0..t-1: particle order */
 #pragma omp parallel for schedule(static) num_threads(nthreads)
     for (int t = 0; t < nthreads; ++t) {
-        size_t lo, hi, j = 0;
+        size_t lo, hi, j = 0, p = 0;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
-        for (int u = 0; u < t; ++u) j += counts[(size_t)u * 8 + 2];
-        for (size_t q = 0; q < counts[(size_t)t * 8 + 2]; ++q, ++j) {
-            size_t i = found[lo + q];
+        for (int u = 0; u < t; ++u) {
+            j += counts[(size_t)u * 8 + 2];
+            p += counts[(size_t)u * 8 + 3] - counts[(size_t)u * 8 + 2]; /* pairs beyond the first */
+        }
+        for (size_t s = 0; s < counts[(size_t)t * 8 + 2]; ++s, ++j) {
+            size_t i = found[lo + s];
             nb->idx[j] = (uint32_t)i;
             nb->owner[j] = t;
             for (int d = 0; d < 3; ++d) {
-                nb->r[d][j] = f->r[d][i];
+                nb->r[d][j] = nb->r0[d][j] = f->r[d][i];
                 nb->v[d][j] = f->v[d][i];
-                nb->disp[d][j] = f->tracked ? f->disp[d][i] : 0.0;
+                if (nb->disp[0]) nb->disp[d][j] = f->tracked ? f->disp[d][i] : 0.0;
+            }
+            /* its pairs: the colloids of the selection's test, in order:
+             * the first, then the further ones */
+            nb->pstart[j] = (uint32_t)p;
+            const uint32_t cl = found_cell[lo + s];
+            int first = 1;
+            for (uint32_t e = cstart[cl]; e < cstart[cl + 1]; ++e) {
+                const int32_t k = clist[e];
+                if (!hit(&q, c, k, nb->r[0][j], nb->r[1][j], nb->r[2][j])) continue;
+                if (first) {
+                    nb->k0[j] = k;
+                    first = 0;
+                    continue;
+                }
+                nb->pk[p] = k;
+                nb->pj[p] = (uint32_t)j;
+                p++;
             }
         }
+        if (t == nthreads - 1) nb->pstart[j] = (uint32_t)p;
     }
 }
 
@@ -294,29 +613,19 @@ void pl_coupling_potential_kick(const pl_coupling_near_t *nb, double h, const do
  * per-axis mirror of the end point with a bounce-back velocity made the
  * equilibrium force of a pinned colloid near a no-slip wall 7 % too strong
  * (tests/test_coupling_wall.c: the exact Boltzmann force). */
-void pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t *g, const double wall_u[2][3],
-                                 double dt, int nthreads, int64_t acc[PL_WALL_ACC_N])
+double pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t *g, const double wall_u[2][3],
+                                   double dt, int nthreads, int64_t acc[PL_WALL_ACC_N])
 {
     const size_t nn = nb->n;
-    double *const *r = nb->r, *const *v = nb->v, *const *disp = nb->disp;
-    /* integer impulses: the sum is exact in any order */
-#pragma omp parallel for schedule(static) num_threads(nthreads) reduction(+ : acc[:PL_WALL_ACC_N])
+    double far = 0.0;
+    /* integer impulses: the sum is exact in any order; max is exact */
+#pragma omp parallel for schedule(static) num_threads(nthreads) reduction(+ : acc[:PL_WALL_ACC_N]) \
+    reduction(max : far)
     for (size_t j = 0; j < nn; ++j) {
-        const double r0[3] = {r[0][j], r[1][j], r[2][j]};
-        for (int d = 0; d < 3; ++d) {
-            r[d][j] += v[d][j] * dt;
-            disp[d][j] += v[d][j] * dt;
-        }
-        if (!g->any_walls) continue;
-        /* the streaming's wall bounce (earliest wall first) */
-        double rr[3] = {r[0][j], r[1][j], r[2][j]}, vv[3] = {v[0][j], v[1][j], v[2][j]};
-        if (!pl_srd_wall_bounce(g, wall_u, dt, r0, rr, vv, acc)) continue;
-        for (int d = 0; d < 3; ++d) {
-            disp[d][j] += rr[d] - r[d][j];
-            r[d][j] = rr[d];
-            v[d][j] = vv[d];
-        }
+        const double d2 = drift_one(nb, g, wall_u, dt, j, acc);
+        far = d2 > far ? d2 : far;
     }
+    return far;
 }
 
 /* First index of the selected list whose owner is >= t (owners ascend). */
@@ -335,6 +644,7 @@ void pl_coupling_potential_scatter(const pl_coupling_near_t *nb, pl_fluid_t *f, 
                                    uint32_t *hist, int nthreads)
 {
     const double L[3] = {g->L[0], g->L[1], g->L[2]};
+    const double inner[3] = {L[0] * (1.0 - 0x1p-50), L[1] * (1.0 - 0x1p-50), L[2] * (1.0 - 0x1p-50)};
     /* the particles of one owner (a contiguous run of the list) and its
      * histogram row are handled by one thread */
 #pragma omp parallel for schedule(static) num_threads(nthreads)
@@ -345,7 +655,9 @@ void pl_coupling_potential_scatter(const pl_coupling_near_t *nb, pl_fluid_t *f, 
             size_t i = nb->idx[j];
             for (int d = 0; d < 3; ++d) {
                 double x = nb->r[d][j];
-                if (g->walls[d] == PL_WALLS_NONE) {
+                /* x - L floor(x / L) is x where floor(x / L) = 0 for sure:
+                 * 0 < x < L (1 - 2^-50) (x = -0 becomes +0) */
+                if (g->walls[d] == PL_WALLS_NONE && !(x > 0.0 && x < inner[d])) {
                     x -= L[d] * floor(x / L[d]);
                     if (x >= L[d]) x = 0.0;
                 }

@@ -124,7 +124,7 @@ static void reflect_one(const pl_coupling1_params_t *prm, const pl_coupling_coll
  * N_max times, kicking the colloids as it goes; returns 1 on truncation. */
 static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *prm,
                             const pl_coupling_colloids_t *c, double *const vel[6],
-                            const int32_t *lk_start, const int32_t *lk_list, size_t i, int32_t k,
+                            const uint32_t *cstart, const int32_t *clist, size_t i, int32_t k,
                             double p[3], uint32_t *restrict h, uint64_t *restrict cnt)
 {
     const double L[3] = {g->L[0], g->L[1], g->L[2]};
@@ -162,7 +162,7 @@ static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
         }
         cnt[0]++;
         nref++;
-        k = pl_coupling_inside(c, g->L, g->walls, lk_start, lk_list, r, p);
+        k = pl_coupling_inside_cells(c, g, cstart, clist, r, p);
     }
     if (f->tracked)
         for (int d = 0; d < 3; ++d) {
@@ -183,12 +183,14 @@ static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
 
 void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *p,
                           const pl_coupling_colloids_t *c, double *const vel[6],
-                          const int32_t *lk_start, const int32_t *lk_list, uint32_t *hist,
-                          int nthreads, uint32_t *found, uint64_t *counts)
+                          const uint32_t *cstart, const int32_t *clist, uint32_t *hist, int nthreads,
+                          uint32_t *found, uint64_t *counts)
 {
-    /* Detection, the full pass, in parallel: thread t lists the particles of
-     * its static chunk (the one of the streaming) found inside a colloid. */
-    pl_coupling_find(f, g, c, lk_start, lk_list, nthreads, found, counts);
+    /* Detection, in parallel: thread t lists the particles of its static
+     * chunk (the one of the streaming) found inside a colloid, from the
+     * cells the streaming binned them into (the colloids near each cell:
+     * cstart, clist). */
+    pl_coupling_find_binned(f, g, c, cstart, clist, nthreads, found, counts);
     /* The events, serially in particle order: each sees the colloid velocity
      * left by the one before (collisions are sequential impulses; with a
      * stale velocity light colloids would overheat), and the order does not
@@ -201,8 +203,8 @@ void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_
         for (size_t j = 0; j < counts[(size_t)t * 8 + 2]; ++j) {
             size_t i = found[lo + j];
             double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, q[3];
-            int32_t k = pl_coupling_inside(c, g->L, g->walls, lk_start, lk_list, r, q);
-            counts[1] += (uint64_t)reflect_particle(f, g, p, c, vel, lk_start, lk_list, i, k, q, h,
+            int32_t k = pl_coupling_inside_cells(c, g, cstart, clist, r, q);
+            counts[1] += (uint64_t)reflect_particle(f, g, p, c, vel, cstart, clist, i, k, q, h,
                                                     counts);
         }
     }

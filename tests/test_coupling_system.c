@@ -179,11 +179,15 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
         size_t cap = 8 * L3;
         int32_t *list = malloc(cap * sizeof *list);
         uint32_t *fa = malloc(f->n * sizeof *fa), *fb = malloc(f->n * sizeof *fb);
+        uint32_t *ga = malloc(f->n * sizeof *ga), *gb = malloc(f->n * sizeof *gb);
         uint64_t ca[3 * 8], cb[3 * 8];
-        uint8_t *marks = malloc(sim->grid.ncells);
+        uint32_t *cstart = malloc((sim->grid.ncells + 2) * sizeof *cstart);
+        const size_t ccap = 8 * sim->grid.ncells; /* every colloid in every cell */
+        int32_t *clist = malloc(ccap * sizeof *clist);
         int axis[64];
+        double gap[64];
         double rad[8];
-        cr_assert(start && list && fa && fb && marks);
+        cr_assert(start && list && fa && fb && ga && gb && cstart && clist);
         size_t listed = 0;
         for (long long s = 0; s < steps; ++s) {
             pl_test_steps(sim, 1);
@@ -194,10 +198,11 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
                 v.rad = rad;
                 size_t need = pl_coupling_lookup_build(&v, sim->grid.L, sim->grid.walls, start, list, cap);
                 cr_assert_leq(need, cap);
+                need = pl_coupling_cell_candidates(&sim->grid, &v, axis, gap, cstart, clist, ccap);
+                cr_assert_leq(need, ccap);
                 for (int nt = 1; nt <= 3; nt += 2) {
-                    pl_coupling_find(f, &sim->grid, &v, start, list, nt, fa, ca);
-                    pl_coupling_find_sorted(f, &sim->grid, &v, start, list, sim->cell_start, marks, axis, nt, fb,
-                                            cb);
+                    pl_coupling_find(f, &sim->grid, &v, start, list, nt, fa, ga, ca);
+                    pl_coupling_find_sorted(f, &sim->grid, &v, cstart, clist, sim->cell_start, nt, fb, gb, cb);
                     for (int t = 0; t < nt; ++t) {
                         size_t lo, hi;
                         pl_chunk(f->n, t, nt, &lo, &hi);
@@ -206,6 +211,9 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
                                      (unsigned long long)cb[t * 8 + 2]);
                         cr_assert(same(fa + lo, fb + lo, ca[t * 8 + 2] * sizeof *fa), "box %d, R %g: lists differ", b,
                                   radii[r]);
+                        cr_assert_eq(ca[t * 8 + 3], cb[t * 8 + 3], "box %d, R %g, %d threads: chunk %d pairs %llu vs %llu",
+                                     b, radii[r], nt, t, (unsigned long long)ca[t * 8 + 3],
+                                     (unsigned long long)cb[t * 8 + 3]);
                         listed += ca[t * 8 + 2];
                     }
                 }
@@ -216,7 +224,10 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
         free(list);
         free(fa);
         free(fb);
-        free(marks);
+        free(ga);
+        free(gb);
+        free(cstart);
+        free(clist);
         pl_sim_free(sim);
     }
 }

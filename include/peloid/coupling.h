@@ -43,7 +43,12 @@ typedef struct {
 /* ---- coupling I, reflection (src/coupling/coupling_stages.c) ------------- */
 typedef struct pl_coupling1_state {
     pl_coupling1_params_t p;
-    pl_coupling_lookup_t lk; /* the colloids with their own radii */
+    pl_coupling_lookup_t lk; /* the colloids with their own radii (the initial clearing) */
+    uint32_t *cstart;    /* grid ncells + 2: the colloids near each collision cell */
+    int32_t *clist;      /* (pl_coupling_cell_candidates, their own radii) */
+    size_t clist_cap;
+    int *axis_buf;       /* grid n[0] + n[1] + n[2] (scratch) */
+    double *gap_buf;     /* as many (scratch) */
     uint32_t *found;     /* fluid n: particles found inside (scratch) */
     uint64_t *counts;    /* nthreads x 8 */
     unsigned long long events, truncations; /* since the start of this run */
@@ -67,14 +72,27 @@ typedef struct pl_coupling_potential_state {
     double margin;       /* selection shell beyond the cut-off */
     double *rad_big;     /* ncolloids: cut-off + margin (lookup radii) */
     pl_coupling_lookup_t lk; /* the colloids with the radii rad_big */
+    int lk_valid;        /* lk built for the colloids at this step's selection */
     uint32_t *found;     /* fluid n: particles selected (scratch) */
+    uint32_t *found_cell; /* fluid n: the cell whose candidates each was tested against */
     uint64_t *counts;    /* nthreads x 8 */
-    uint8_t *marks;      /* grid ncells: cells a selection sphere reaches */
+    uint32_t *cstart;    /* grid ncells + 2: candidates of each collision cell */
+    int32_t *clist;      /* (pl_coupling_cell_candidates) */
+    size_t clist_cap;
     int *axis_buf;       /* grid n[0] + n[1] + n[2] (scratch) */
+    double *gap_buf;     /* as many (scratch) */
+    double *c0;          /* 3 x ncolloids: colloid positions at the selection */
+    double far2;         /* largest squared displacement of a selected particle since */
     size_t nnear, near_cap;
     uint32_t *near_idx;  /* selected particles, ascending */
     int32_t *near_owner; /* thread whose chunk (and histogram row) holds it */
-    double *near_buf;    /* 12 x near_cap: r, v, f, saved displacement */
+    double *near_buf;    /* 15 x near_cap: r, v, f, saved displacement, r0 */
+    size_t npair, pair_cap;
+    int32_t *near_k0;    /* near_cap: the first pair's colloid */
+    uint32_t *pair_start; /* near_cap + 1: the further pairs */
+    uint32_t *pair_j;    /* pair_cap each: particle, colloid of each pair */
+    int32_t *pair_k;
+    double *pair_buf;    /* 4 x pair_cap (scratch of the forces) */
     double *cf;          /* 3 x ncolloids: fluid force on the colloids */
     double *cf_mean;     /* 3 x ncolloids: its mean over the last collision step (trapezoid over
                           * the MD steps), NULL unless asked for (pl_coupling_mean_force_on) */

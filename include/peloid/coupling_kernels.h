@@ -21,8 +21,23 @@ typedef struct {
 } pl_coupling_colloids_t;
 
 /* Collision cell of a point under the grid's current shift: the same formula
- * as the fluid binning of kernels/srd_stream.c. */
-uint32_t pl_coupling_cell_of(const pl_grid_t *g, double x, double y, double z);
+ * as the fluid binning of kernels/srd_stream.c (inline: the scatters call it
+ * per particle). */
+static inline uint32_t pl_coupling_cell_of(const pl_grid_t *g, double x, double y, double z)
+{
+    const double r[3] = {x, y, z};
+    int ic[3];
+    for (int d = 0; d < 3; ++d) {
+        if (g->walls[d] == PL_WALLS_NONE) {
+            ic[d] = pl_grid_cell_periodic(r[d], g->shift[d], g->n[d]);
+            continue;
+        }
+        ic[d] = pl_grid_cell_closed(r[d], g->shift[d]); /* clipped: a point just beyond a wall */
+        if (ic[d] < 0) ic[d] = 0;
+        if (ic[d] >= g->n[d]) ic[d] = g->n[d] - 1;
+    }
+    return (uint32_t)((ic[2] * g->n[1] + ic[1]) * g->n[0] + ic[0]);
+}
 
 /* ---- colloid lookup (kernels/coupling_lookup.c) ------------------------ */
 /* Unshifted unit cells over the box (L0 x L1 x L2); start[ncells + 1] and
@@ -38,6 +53,11 @@ size_t pl_coupling_lookup_build(const pl_coupling_colloids_t *c, const int L[3],
 int32_t pl_coupling_inside(const pl_coupling_colloids_t *c, const int L[3], const int walls[3],
                            const int32_t *start, const int32_t *list, const double r[3],
                            double p[3]);
+/* The same from the colloids near the point's collision cell under g->shift
+ * (cstart, clist of pl_coupling_cell_candidates with the radii of c): the
+ * same colloid, since both lists hold every colloid that contains it. */
+int32_t pl_coupling_inside_cells(const pl_coupling_colloids_t *c, const pl_grid_t *g, const uint32_t *cstart,
+                                 const int32_t *clist, const double r[3], double p[3]);
 
 /* Every fluid particle inside a colloid of c (lookup start/list built for
  * c) gets a new uniform position in the box of sides L, redrawn (up to 1000
@@ -69,9 +89,8 @@ typedef struct {
  * consistent.  found: n scratch indices.  counts[0] events (reflections),
  * counts[1] truncations (still inside after max_refl). */
 void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *p,
-                          const pl_coupling_colloids_t *c, double *const vel[6],
-                          const int32_t *lk_start, const int32_t *lk_list, uint32_t *hist,
-                          int nthreads, uint32_t *found, uint64_t *counts);
+                          const pl_coupling_colloids_t *c, double *const vel[6], const uint32_t *cstart,
+                          const int32_t *clist, uint32_t *hist, int nthreads, uint32_t *found, uint64_t *counts);
 
 /* ---- coupling II: colloids in the collision (coupling_collide.c) ------- */
 typedef struct {
@@ -117,19 +136,37 @@ void pl_coupling2_collide_heyes(const pl_coupling2_params_t *p, const pl_couplin
 /* ---- potential coupling (kernels/coupling_potential.c) ---------------- */
 /* Lists in found[lo .. lo + counts[t * 8 + 2]) the particles of thread t's
  * static chunk (as in the streaming) that lie inside a colloid of c (whose
- * rad may be enlarged radii).  Parallel, no atomics. */
+ * rad may be enlarged radii), with (found_cell, unless NULL) the lookup cell
+ * whose list was tested; counts[t * 8 + 3]: the number of (particle,
+ * colloid) pairs found.  Parallel, no atomics. */
 void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
                       const int32_t *lk_start, const int32_t *lk_list, int nthreads,
-                      uint32_t *found, uint64_t *counts);
-/* The same list from the particles of the collision cells a colloid's
- * sphere reaches, when the fluid is still as the last sort left it: sorted
+                      uint32_t *found, uint32_t *found_cell, uint64_t *counts);
+/* CSR lists (cstart[0 .. ncells], clist), in index order, of the colloids
+ * whose sphere (radius c->rad + 1e-6 a0) can reach each collision cell
+ * under g->shift.  cstart: g->ncells + 2 entries, axis_buf: n[0] + n[1] +
+ * n[2] ints, gap_buf as many doubles (scratch).  Returns the number of list
+ * entries needed; fills clist only when that is <= cap. */
+size_t pl_coupling_cell_candidates(const pl_grid_t *g, const pl_coupling_colloids_t *c, int *axis_buf,
+                                   double *gap_buf, uint32_t *cstart, int32_t *clist, size_t cap);
+/* The same list (and pair counts) from the particles of the collision cells
+ * with candidates, when the fluid is still as the last sort left it: sorted
  * by collision cell under g->shift, cell c holding [cell_start[c],
- * cell_start[c + 1]).  Cost ~ the particles near colloids plus one byte and
- * one offset per cell, instead of every particle.  marks: g->ncells bytes,
- * axis_buf: n[0] + n[1] + n[2] ints (scratch). */
+ * cell_start[c + 1]); each particle tested against its cell's candidates
+ * (found_cell: that cell).  Cost ~ the particles near colloids plus one
+ * offset per cell, instead of every particle. */
 void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
-                             const int32_t *lk_start, const int32_t *lk_list, const uint32_t *cell_start,
-                             uint8_t *marks, int *axis_buf, int nthreads, uint32_t *found, uint64_t *counts);
+                             const uint32_t *cstart, const int32_t *clist, const uint32_t *cell_start,
+                             int nthreads, uint32_t *found, uint32_t *found_cell, uint64_t *counts);
+
+/* The list of pl_coupling_find from the cells the binning left in f->cell
+ * (under g->shift, after the streaming): the particles of the cells with
+ * candidates (cstart, clist of pl_coupling_cell_candidates), then each
+ * tested against its cell's.  Reads 4 B per particle where the full scan
+ * reads the positions and finds their unit cells. */
+void pl_coupling_find_binned(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
+                             const uint32_t *cstart, const int32_t *clist, int nthreads, uint32_t *found,
+                             uint64_t *counts);
 
 typedef struct {
     double sigma, eps; /* PL Eq. 17 */
@@ -151,20 +188,54 @@ double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const doubl
 
 /* The particles selected for the MD step (n of them), in particle order:
  * fluid index, the thread whose streaming chunk (pl_chunk) and histogram
- * row hold it (ascending), and double copies of position, velocity, force
- * and displacement that the MD step integrates. */
+ * row hold it (ascending), double copies of position, velocity, force and
+ * displacement (disp[*] NULL: not kept, for a fluid that does not track
+ * it) that the MD step integrates, the position at the selection
+ * (r0); and their pairs: particle j's candidate colloids (those whose
+ * selection sphere held it, in index order) are k0[j], then pk[pstart[j]
+ * .. pstart[j + 1]), pj the particle of each of these further pairs. */
 typedef struct {
     size_t n;
     uint32_t *idx;
     int32_t *owner;
-    double *r[3], *v[3], *f[3], *disp[3];
+    double *r[3], *v[3], *f[3], *disp[3], *r0[3];
+    int32_t *k0;
+    uint32_t *pstart, *pj;
+    int32_t *pk;
 } pl_coupling_near_t;
 
+/* PL Eq. 17 forces as pl_coupling_wca_forces, over the pairs of nb instead
+ * of a lookup: the same bits wherever every pair within the cut-off is one
+ * of them (the caller checks that the particles and colloids have moved
+ * less than the selection margin together).  pair_buf: 4 x pair_cap doubles
+ * (scratch; pair_cap >= all the pairs). */
+double pl_coupling_wca_pair_forces(const pl_coupling_wca_t *w, const pl_coupling_near_t *nb,
+                                   const pl_coupling_colloids_t *c, double *cfx, double *cfy, double *cfz,
+                                   int nthreads, double *partial, double *pair_buf, size_t pair_cap);
+
+/* One force evaluation of the MD step fused with the particle moves around
+ * it: pl_coupling_wca_pair_forces, then per particle `kicks` half kicks
+ * (pl_coupling_potential_kick: 1 at the last MD step, 2 when the next one
+ * follows) and, for dt > 0, the drift (pl_coupling_potential_drift, its
+ * largest |r - r0|^2 in *far2, else 0).  The same bits as the separate
+ * kernels: each particle's operations in the same order; the particles
+ * and colloids meet only through the forces. */
+double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_coupling_near_t *nb,
+                                        const pl_coupling_colloids_t *c, const pl_grid_t *g,
+                                        const double wall_u[2][3], double h, const double ga[3], int kicks,
+                                        double dt, double *cfx, double *cfy, double *cfz, int nthreads,
+                                        double *partial, double *pair_buf, size_t pair_cap,
+                                        int64_t acc[PL_WALL_ACC_N], double *far2);
+
 /* Fills nb (nb->n = the sum of counts[t * 8 + 2]) from the lists of
- * pl_coupling_find(_sorted): idx, owner, r, v and disp (0 when the fluid is
- * not tracked); f is not touched. */
-void pl_coupling_potential_gather(const pl_fluid_t *f, const uint32_t *found, const uint64_t *counts,
-                                  int nthreads, const pl_coupling_near_t *nb);
+ * pl_coupling_find(_sorted): idx, owner, r, r0, v, disp (0 when the fluid
+ * is not tracked), and the pairs, tested again against the candidates of
+ * the particle's found_cell in (cstart, clist) (the lists the selection
+ * used); f is not touched. */
+void pl_coupling_potential_gather(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
+                                  const uint32_t *found, const uint32_t *found_cell, const uint64_t *counts,
+                                  const uint32_t *cstart, const int32_t *clist, int nthreads,
+                                  const pl_coupling_near_t *nb);
 /* Takes back the free streaming of the selected particles (nb holding
  * their state before it): the saved displacements into f (tracked fluids),
  * and, when sp is not NULL, adds to acc the wall impulses the streaming
@@ -177,9 +248,10 @@ void pl_coupling_potential_kick(const pl_coupling_near_t *nb, double h, const do
  * reflection at the walls of every closed axis of g as the streaming does
  * (bounce-back in the frame of the wall for no-slip, the z walls moving
  * with wall_u (bottom, top) and the x/y walls at rest; specular for slip);
- * the walls' impulses added to acc (fixed point, PL_WALL_ACC_N slots). */
-void pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t *g, const double wall_u[2][3],
-                                 double dt, int nthreads, int64_t acc[PL_WALL_ACC_N]);
+ * the walls' impulses added to acc (fixed point, PL_WALL_ACC_N slots).
+ * Returns the largest |r - r0|^2. */
+double pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t *g, const double wall_u[2][3],
+                                   double dt, int nthreads, int64_t acc[PL_WALL_ACC_N]);
 /* Writes the selected particles back into f, wrapped on periodic axes,
  * with their new collision cell (under g->shift), moving each from its old
  * to its new cell in its owner's row of hist (nthreads x g->ncells). */

@@ -41,11 +41,15 @@ int pl_coupling_potential_create(const pl_coupling_t *cp, const pl_sim_t *sim,
     ps->rad_big = malloc((c->n + 1) * sizeof(double));
     ps->cf = malloc(3 * (c->n + 1) * sizeof(double));
     ps->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t), cp->nthreads);
+    ps->found_cell = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t), cp->nthreads);
+    ps->c0 = malloc(3 * (c->n + 1) * sizeof(double));
     ps->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t), cp->nthreads);
     int rc = pl_coupling_lookup_init(&ps->lk, sim->grid.L, cp->nthreads, err);
-    ps->marks = pl_alloc(sim->grid.ncells, cp->nthreads);
+    ps->cstart = pl_alloc((sim->grid.ncells + 2) * sizeof(uint32_t), cp->nthreads);
     ps->axis_buf = malloc((size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(int));
-    if (!rc && (!ps->rad_big || !ps->cf || !ps->found || !ps->counts || !ps->marks || !ps->axis_buf))
+    ps->gap_buf = malloc((size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(double));
+    if (!rc && (!ps->rad_big || !ps->cf || !ps->found || !ps->found_cell || !ps->c0 || !ps->counts ||
+                !ps->cstart || !ps->axis_buf || !ps->gap_buf))
         rc = pl_err_set(err, PL_ERR_NOMEM, "out of memory for the potential coupling");
     if (rc) {
         pl_coupling_potential_free(ps);
@@ -61,12 +65,21 @@ void pl_coupling_potential_free(pl_coupling_potential_state_t *ps)
     free(ps->rad_big);
     pl_coupling_lookup_free(&ps->lk);
     pl_free(ps->found);
+    pl_free(ps->found_cell);
     pl_free(ps->counts);
-    pl_free(ps->marks);
+    pl_free(ps->cstart);
+    free(ps->clist);
     free(ps->axis_buf);
+    free(ps->gap_buf);
+    free(ps->c0);
     free(ps->near_idx);
     free(ps->near_owner);
     free(ps->near_buf);
+    free(ps->pair_start);
+    free(ps->near_k0);
+    free(ps->pair_j);
+    free(ps->pair_k);
+    free(ps->pair_buf);
     free(ps->cf);
     free(ps->cf_mean);
     free(ps->wca_partial);
@@ -80,22 +93,34 @@ static pl_coupling_colloids_t big_view(const pl_coupling_potential_state_t *ps, 
     return v;
 }
 
-/* Lookup with the selection radii around the current colloid positions. */
+/* The colloids at the selection (positions c0) with the selection radii. */
+static pl_coupling_colloids_t sel_view(const pl_coupling_potential_state_t *ps, const pl_colloid_t *c)
+{
+    pl_coupling_colloids_t v = big_view(ps, c);
+    v.x = ps->c0;
+    v.y = ps->c0 + c->n;
+    v.z = ps->c0 + 2 * c->n;
+    return v;
+}
+
+/* Lookup with the selection radii around the colloids at the selection
+ * (built when used: the full scan, the forces' fall-back). */
 static int lookup_big(pl_coupling_potential_state_t *ps, const pl_sim_t *sim, pl_err_t *err)
 {
-    const pl_colloid_t *c = sim->colloids;
-    double rc = ps->wca.sigma * pow(2.0, 1.0 / 6.0);
-    for (size_t k = 0; k < c->n; ++k) ps->rad_big[k] = rc + ps->margin;
-    pl_coupling_colloids_t v = big_view(ps, c);
-    return pl_coupling_lookup_fill(&ps->lk, sim, &v, err);
+    if (ps->lk_valid) return 0;
+    pl_coupling_colloids_t v = sel_view(ps, sim->colloids);
+    int rc = pl_coupling_lookup_fill(&ps->lk, sim, &v, err);
+    ps->lk_valid = !rc;
+    return rc;
 }
 
 #define NB(ps, a) ((ps)->near_buf + (size_t)(a) * (ps)->near_cap)
 
-/* The selected particles as the kernels see them (rows of near_buf). */
-static pl_coupling_near_t near_view(const pl_coupling_potential_state_t *ps)
+/* The selected particles as the kernels see them (rows of near_buf); the
+ * displacements only for a fluid that tracks them. */
+static pl_coupling_near_t near_view(const pl_coupling_potential_state_t *ps, const pl_fluid_t *f)
 {
-    return (pl_coupling_near_t){
+    pl_coupling_near_t nb = {
         .n = ps->nnear,
         .idx = ps->near_idx,
         .owner = ps->near_owner,
@@ -103,7 +128,25 @@ static pl_coupling_near_t near_view(const pl_coupling_potential_state_t *ps)
         .v = {NB(ps, 3), NB(ps, 4), NB(ps, 5)},
         .f = {NB(ps, 6), NB(ps, 7), NB(ps, 8)},
         .disp = {NB(ps, 9), NB(ps, 10), NB(ps, 11)},
+        .r0 = {NB(ps, 12), NB(ps, 13), NB(ps, 14)},
+        .k0 = ps->near_k0,
+        .pstart = ps->pair_start,
+        .pj = ps->pair_j,
+        .pk = ps->pair_k,
     };
+    if (!f->tracked)
+        for (int d = 0; d < 3; ++d) nb.disp[d] = NULL;
+    return nb;
+}
+
+/* Grows *buf to hold n elements of size sz (contents dropped). */
+static int grow(void **buf, size_t *cap, size_t n, size_t sz)
+{
+    if (n <= *cap) return 0;
+    free(*buf);
+    *cap = n + n / 2 + 256;
+    *buf = malloc(*cap * sz);
+    return *buf ? 0 : -1;
 }
 
 int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
@@ -112,31 +155,76 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
     const pl_coupling_t *cp = sim->coupling;
     pl_coupling_potential_state_t *ps = cp->pot;
     pl_fluid_t *f = &sim->fluid;
-    int rc = lookup_big(ps, sim, err);
-    if (rc) return rc;
-    pl_coupling_colloids_t v = big_view(ps, sim->colloids);
-    if (sim->fluid_sorted) /* the same list, from the cells near colloids */
-        pl_coupling_find_sorted(f, &sim->grid, &v, ps->lk.start, ps->lk.list, sim->cell_start, ps->marks,
-                                ps->axis_buf, cp->nthreads, ps->found, ps->counts);
-    else
-        pl_coupling_find(f, &sim->grid, &v, ps->lk.start, ps->lk.list, cp->nthreads, ps->found, ps->counts);
-    size_t nn = 0;
-    for (int t = 0; t < cp->nthreads; ++t) nn += ps->counts[(size_t)t * 8 + 2];
+    const pl_colloid_t *c = sim->colloids;
+    const double rc = ps->wca.sigma * pow(2.0, 1.0 / 6.0);
+    for (size_t k = 0; k < c->n; ++k) {
+        ps->rad_big[k] = rc + ps->margin;
+        ps->c0[k] = c->x[k];
+        ps->c0[c->n + k] = c->y[k];
+        ps->c0[2 * c->n + k] = c->z[k];
+    }
+    ps->lk_valid = 0;
+    ps->far2 = 0.0;
+    pl_coupling_colloids_t v = sel_view(ps, c);
+    const uint32_t *cs;
+    const int32_t *cl;
+    if (sim->fluid_sorted) { /* the same list, from the cells near colloids */
+        for (;;) {
+            size_t need = pl_coupling_cell_candidates(&sim->grid, &v, ps->axis_buf, ps->gap_buf, ps->cstart, ps->clist,
+                                                      ps->clist_cap);
+            if (need <= ps->clist_cap) break;
+            if (grow((void **)&ps->clist, &ps->clist_cap, need, sizeof *ps->clist))
+                return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloids near each cell");
+        }
+        pl_coupling_find_sorted(f, &sim->grid, &v, ps->cstart, ps->clist, sim->cell_start, cp->nthreads,
+                                ps->found, ps->found_cell, ps->counts);
+        cs = ps->cstart;
+        cl = ps->clist;
+    } else {
+        int rc2 = lookup_big(ps, sim, err);
+        if (rc2) return rc2;
+        pl_coupling_find(f, &sim->grid, &v, ps->lk.start, ps->lk.list, cp->nthreads, ps->found, ps->found_cell,
+                         ps->counts);
+        cs = (const uint32_t *)ps->lk.start; /* offsets >= 0 */
+        cl = ps->lk.list;
+    }
+    size_t nn = 0, np = 0;
+    for (int t = 0; t < cp->nthreads; ++t) {
+        nn += ps->counts[(size_t)t * 8 + 2];
+        np += ps->counts[(size_t)t * 8 + 3];
+    }
+    if (np > UINT32_MAX) return pl_err_set(err, PL_ERR_NOMEM, "%zu near-colloid pairs: more than 2^32", np);
     if (nn > ps->near_cap) {
         free(ps->near_idx);
         free(ps->near_owner);
         free(ps->near_buf);
+        free(ps->pair_start);
+        free(ps->near_k0);
         ps->near_cap = nn + nn / 2 + 256;
         ps->near_idx = malloc(ps->near_cap * sizeof *ps->near_idx);
         ps->near_owner = malloc(ps->near_cap * sizeof *ps->near_owner);
-        ps->near_buf = malloc(12 * ps->near_cap * sizeof *ps->near_buf);
-        if (!ps->near_idx || !ps->near_owner || !ps->near_buf)
+        ps->near_buf = malloc(15 * ps->near_cap * sizeof *ps->near_buf);
+        ps->pair_start = malloc((ps->near_cap + 1) * sizeof *ps->pair_start);
+        ps->near_k0 = malloc(ps->near_cap * sizeof *ps->near_k0);
+        if (!ps->near_idx || !ps->near_owner || !ps->near_buf || !ps->pair_start || !ps->near_k0)
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for %zu near-colloid particles", nn);
     }
-    pl_coupling_near_t nb = near_view(ps);
+    if (np > ps->pair_cap) {
+        size_t cap = ps->pair_cap;
+        free(ps->pair_buf);
+        ps->pair_buf = NULL;
+        if (grow((void **)&ps->pair_j, &cap, np, sizeof *ps->pair_j) ||
+            (cap = ps->pair_cap, grow((void **)&ps->pair_k, &cap, np, sizeof *ps->pair_k)) ||
+            !(ps->pair_buf = malloc(4 * cap * sizeof *ps->pair_buf)))
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for %zu near-colloid pairs", np);
+        ps->pair_cap = cap;
+    }
+    pl_coupling_near_t nb = near_view(ps, &sim->fluid);
     nb.n = nn;
-    pl_coupling_potential_gather(f, ps->found, ps->counts, cp->nthreads, &nb);
-    const size_t nc = sim->colloids->n, partial = pl_coupling_wca_blocks(nn, nc) * (3 * nc + 1);
+    nb.pstart[0] = 0;
+    pl_coupling_potential_gather(f, &sim->grid, &v, ps->found, ps->found_cell, ps->counts, cs, cl, cp->nthreads,
+                                 &nb);
+    const size_t partial = pl_coupling_wca_blocks(nn, c->n) * (3 * c->n + 1);
     if (partial > ps->wca_partial_cap) {
         free(ps->wca_partial);
         ps->wca_partial_cap = partial;
@@ -145,23 +233,63 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the forces of %zu near-colloid particles", nn);
     }
     ps->nnear = nn;
+    ps->npair = np;
     ps->near_total += nn;
     return 0;
 }
 
 /* Fluid forces on the selected particles and the colloids (the colloids'
  * own forces recomputed first). */
-static int forces(const pl_coupling_t *cp, pl_colloid_t *c, pl_err_t *err)
+static double min_image(double d, double L, int periodic)
+{
+    return periodic ? d - L * nearbyint(d / L) : d;
+}
+
+/* Whether every pair within the cut-off is a pair of the selection: a
+ * particle within rc of a colloid now was within rc + |its move| + |the
+ * colloid's move| of it at the selection, so a pair if the largest moves
+ * add up to less than the margin (1e-9 a0 against rounding); then the
+ * pairs' sums are the lookup's, bit for bit.  Otherwise (never seen: 8
+ * thermal speeds) the forces go over the lookup. */
+static int pairs_hold(const pl_coupling_potential_state_t *ps, const pl_colloid_t *c)
+{
+    double moved = 0.0;
+    for (size_t k = 0; k < c->n; ++k) {
+        const double dx = min_image(c->x[k] - ps->c0[k], c->box[0], c->periodic[0]);
+        const double dy = min_image(c->y[k] - ps->c0[c->n + k], c->box[1], c->periodic[1]);
+        const double dz = min_image(c->z[k] - ps->c0[2 * c->n + k], c->box[2], c->periodic[2]);
+        const double d = sqrt(dx * dx + dy * dy + dz * dz);
+        moved = d > moved ? d : moved;
+    }
+    return sqrt(ps->far2) + moved < ps->margin - 1e-9;
+}
+
+/* Fluid forces on the selected particles and the colloids (the colloids'
+ * own forces recomputed first), fused with the particles' moves after
+ * them (pl_coupling_potential_force_step: `kicks` half kicks, the drift
+ * when dt > 0). */
+static int forces(pl_coupling_t *cp, const pl_sim_t *sim, pl_colloid_t *c, const double g[3], double h,
+                  int kicks, double dt, int64_t wacc[PL_WALL_ACC_N], pl_err_t *err)
 {
     pl_coupling_potential_state_t *ps = cp->pot;
     if (!cp->pinned && pl_colloid_forces(c, err)) return err->code;
     memset(ps->cf, 0, 3 * c->n * sizeof(double));
     pl_coupling_colloids_t v = big_view(ps, c);
-    size_t nn = ps->nnear;
-    ps->epot_cf = pl_coupling_wca_forces(&ps->wca, nn, NB(ps, 0), NB(ps, 1), NB(ps, 2), NB(ps, 6),
-                                         NB(ps, 7), NB(ps, 8), &v, ps->lk.start, ps->lk.list,
-                                         ps->cf, ps->cf + c->n, ps->cf + 2 * c->n, cp->nthreads,
-                                         ps->wca_partial);
+    const pl_coupling_near_t nb = near_view(ps, &sim->fluid);
+    double *cf[3] = {ps->cf, ps->cf + c->n, ps->cf + 2 * c->n};
+    if (pairs_hold(ps, c)) {
+        ps->epot_cf = pl_coupling_potential_force_step(&ps->wca, &nb, &v, &sim->grid, sim->wall_u, h, g, kicks, dt,
+                                                       cf[0], cf[1], cf[2], cp->nthreads, ps->wca_partial,
+                                                       ps->pair_buf, ps->pair_cap, wacc, &ps->far2);
+    } else {
+        int rc = lookup_big(ps, sim, err);
+        if (rc) return rc;
+        ps->epot_cf = pl_coupling_wca_forces(&ps->wca, nb.n, nb.r[0], nb.r[1], nb.r[2], nb.f[0], nb.f[1], nb.f[2],
+                                             &v, ps->lk.start, ps->lk.list, cf[0], cf[1], cf[2], cp->nthreads,
+                                             ps->wca_partial);
+        for (int q = 0; q < kicks; ++q) pl_coupling_potential_kick(&nb, h, g, cp->nthreads);
+        ps->far2 = dt > 0.0 ? pl_coupling_potential_drift(&nb, &sim->grid, sim->wall_u, dt, cp->nthreads, wacc) : 0.0;
+    }
     if (cp->pinned) return 0;
     for (size_t k = 0; k < c->n; ++k) {
         c->fx[k] += ps->cf[k];
@@ -208,30 +336,33 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
     int64_t wacc[PL_WALL_ACC_N] = {0}, sacc[PL_WALL_ACC_N] = {0};
     pl_stream_params_t sp;
     pl_sim_stream_params(sim, &sp);
-    const pl_coupling_near_t nb = near_view(ps);
+    const pl_coupling_near_t nb = near_view(ps, &sim->fluid);
     pl_coupling_potential_unstream(&nb, f, &sim->grid, sim->wall_acc ? &sp : NULL, cp->nthreads, sacc);
     const double dtm = c->dt, h = 0.5 * dtm;
-    if (forces(cp, c, err)) return err->code;
+    /* PL Eqs. 18-19, velocity Verlet; the particles' kick - drift - forces -
+     * kick of each MD step regrouped as forces - kick (- kick - drift of the
+     * next MD step) in one pass: each particle's operations and each
+     * colloid's in the same order as in separate passes */
+    const int S = c->substeps;
+    if (forces(cp, sim, c, g, h, S > 0, S > 0 ? dtm : 0.0, wacc, err)) return err->code;
     if (ps->cf_mean) memset(ps->cf_mean, 0, 3 * c->n * sizeof(double));
-    for (int s = 0; s < c->substeps; ++s) { /* PL Eqs. 18-19 */
+    for (int s = 0; s < S; ++s) {
         if (!cp->pinned) {
             pl_colloid_kick(c->n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
                             c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->nthreads);
             pl_colloid_drift(c->n, dtm, c->box, c->periodic, c->x, c->y, c->z, c->ix, c->iy, c->iz,
                              c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3, c->nthreads);
         }
-        pl_coupling_potential_kick(&nb, h, g, cp->nthreads);
-        pl_coupling_potential_drift(&nb, &sim->grid, sim->wall_u, dtm, cp->nthreads, wacc);
         if (cp->pinned) /* impulse of the fluid force over this MD step (trapezoid) */
             for (size_t k = 0; k < c->n; ++k)
                 for (int d = 0; d < 3; ++d) cp->impulse[d] += h * ps->cf[(size_t)d * c->n + k];
         mean_force_add(ps, c->n, h);
-        if (forces(cp, c, err)) return err->code;
+        const int more = s + 1 < S;
+        if (forces(cp, sim, c, g, h, more ? 2 : 1, more ? dtm : 0.0, wacc, err)) return err->code;
         mean_force_add(ps, c->n, h);
         if (cp->pinned)
             for (size_t k = 0; k < c->n; ++k)
                 for (int d = 0; d < 3; ++d) cp->impulse[d] += h * ps->cf[(size_t)d * c->n + k];
-        pl_coupling_potential_kick(&nb, h, g, cp->nthreads);
         if (!cp->pinned) {
             pl_colloid_kick(c->n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
                             c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->nthreads);

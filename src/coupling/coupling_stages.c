@@ -32,7 +32,11 @@ int pl_coupling1_create(const pl_coupling_t *cp, const pl_sim_t *sim, pl_couplin
     int rc = pl_coupling_lookup_init(&s->lk, sim->grid.L, cp->nthreads, err);
     s->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t), cp->nthreads);
     s->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t), cp->nthreads);
-    if (!rc && (!s->found || !s->counts)) rc = pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling");
+    s->cstart = pl_alloc((sim->grid.ncells + 2) * sizeof(uint32_t), cp->nthreads);
+    s->axis_buf = malloc((size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(int));
+    s->gap_buf = malloc((size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(double));
+    if (!rc && (!s->found || !s->counts || !s->cstart || !s->axis_buf || !s->gap_buf))
+        rc = pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling");
     if (rc) {
         pl_coupling1_free(s);
         return rc;
@@ -47,6 +51,10 @@ void pl_coupling1_free(pl_coupling1_state_t *s)
     pl_coupling_lookup_free(&s->lk);
     pl_free(s->found);
     pl_free(s->counts);
+    pl_free(s->cstart);
+    free(s->clist);
+    free(s->axis_buf);
+    free(s->gap_buf);
     free(s);
 }
 
@@ -58,15 +66,22 @@ int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_coupling_t *cp = sim->coupling;
     pl_coupling1_state_t *s = cp->c1;
     pl_colloid_t *c = sim->colloids;
-    int rc = pl_coupling_lookup_update(&s->lk, sim, err);
-    if (rc) return rc;
     s->p.step = (uint64_t)sim->step;
     pl_coupling_colloids_t v = pl_coupling_view(c);
+    for (;;) { /* the colloids near each collision cell of the binning */
+        size_t need =
+            pl_coupling_cell_candidates(&sim->grid, &v, s->axis_buf, s->gap_buf, s->cstart, s->clist, s->clist_cap);
+        if (need <= s->clist_cap) break;
+        free(s->clist);
+        s->clist_cap = need + need / 2 + 256;
+        if (!(s->clist = malloc(s->clist_cap * sizeof *s->clist)))
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloids near each cell");
+    }
     double *const vel[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
     int64_t wall[PL_WALL_ACC_N] = {0};
     s->p.wall_acc = sim->wall_acc ? wall : NULL;
-    pl_coupling1_reflect(&sim->fluid, &sim->grid, &s->p, &v, vel, s->lk.start, s->lk.list, sim->hist,
-                         cp->nthreads, s->found, s->counts);
+    pl_coupling1_reflect(&sim->fluid, &sim->grid, &s->p, &v, vel, s->cstart, s->clist, sim->hist, cp->nthreads,
+                         s->found, s->counts);
     s->p.wall_acc = NULL;
     if (sim->wall_acc) pl_sim_wall_add(sim, wall);
     s->events += s->counts[0];
