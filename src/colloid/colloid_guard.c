@@ -12,8 +12,11 @@
  *   - drift of the total energy in undamped NVE runs beyond
  *     colloids.max_energy_drift kT per colloid (Hecht Sec. IX.A)
  * Each message names step, particles, quantity, bound and the parameter to
- * change.  The per-particle maxima come from the force kernel; the scans here
- * are serial in index order, so the reported pair is thread-count independent. */
+ * change.  The per-particle maxima come from the force kernel.  Every MD step
+ * runs one parallel pass (maxima and flags: exact, so independent of the
+ * thread count); only when it finds a bound exceeded does the serial scan in
+ * index order run, which names the lowest-index offender, so the message is
+ * the same for any thread count. */
 #include <math.h>
 
 #include "peloid/real.h" /* PL_PI */
@@ -28,10 +31,25 @@ static size_t argmax(const double *a, size_t n)
     return w;
 }
 
-int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err)
+/* Drift of the total energy in undamped NVE runs (every guard_interval). */
+static int energy_check(pl_colloid_t *c, pl_err_t *err)
+{
+    pl_colloid_energy_t e;
+    pl_colloid_energy(c, &e);
+    double drift = fabs(e.total - c->e0) / (double)c->n;
+    if (!(drift <= c->max_energy_drift))
+        return pl_err_set(err, PL_ERR_GUARD,
+                          "guard energy_drift: MD step %lld: all %zu colloids: |E - E0|/N = "
+                          "%.4g kT (E0 = %.6g, E = %.6g); bound colloids.max_energy_drift = "
+                          "%g; raise colloids.substeps (smaller dt_MD)",
+                          c->md_step, c->n, drift, c->e0, e.total, c->max_energy_drift);
+    return 0;
+}
+
+/* The serial scan: the first bound exceeded, with its lowest-index offender. */
+static int guard_report(const pl_colloid_t *c, pl_err_t *err)
 {
     size_t n = c->n;
-    if (!n) return 0;
     long long st = c->md_step;
     for (size_t i = 0; i < n; ++i) {
         double s = c->x[i] + c->y[i] + c->z[i] + c->vx[i] + c->vy[i] + c->vz[i] + c->fx[i] +
@@ -84,16 +102,41 @@ int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err)
                           "(dissipative rate %.4g /t0); bound 0.5; raise lubrication.min_gap or "
                           "colloids.substeps, or lower hertz.beta / hertz.gamma_t",
                           st, w, c->g_partner[2 * n + w], c->g_damp[w] * c->dt, c->g_damp[w]);
-    if (check_energy) {
-        pl_colloid_energy_t e;
-        pl_colloid_energy(c, &e);
-        double drift = fabs(e.total - c->e0) / (double)n;
-        if (!(drift <= c->max_energy_drift))
-            return pl_err_set(err, PL_ERR_GUARD,
-                              "guard energy_drift: MD step %lld: all %zu colloids: |E - E0|/N = "
-                              "%.4g kT (E0 = %.6g, E = %.6g); bound colloids.max_energy_drift = "
-                              "%g; raise colloids.substeps (smaller dt_MD)",
-                              st, n, drift, c->e0, e.total, c->max_energy_drift);
-    }
     return 0;
+}
+
+/* One parallel pass: does any bound trip?  The same tests as guard_report,
+ * on the maxima (a NaN guard quantity sends it to guard_report too). */
+static int guard_trips(const pl_colloid_t *c)
+{
+    const size_t n = c->n;
+    double mov = 0.0, mom = 0.0, mdp = 0.0;
+    int bad = 0;
+#pragma omp parallel for schedule(static) num_threads(c->nthreads) reduction(max : mov, mom, mdp) \
+    reduction(| : bad) if (n >= PL_COLLOID_OMP_MIN)
+    for (size_t i = 0; i < n; ++i) {
+        double s = c->x[i] + c->y[i] + c->z[i] + c->vx[i] + c->vy[i] + c->vz[i] + c->fx[i] +
+                   c->fy[i] + c->fz[i] + c->wx[i] + c->wy[i] + c->wz[i];
+        bad |= !isfinite(s);
+        bad |= c->ix[i] > PL_COLLOID_IMAGE_MAX || c->ix[i] < -PL_COLLOID_IMAGE_MAX ||
+               c->iy[i] > PL_COLLOID_IMAGE_MAX || c->iy[i] < -PL_COLLOID_IMAGE_MAX ||
+               c->iz[i] > PL_COLLOID_IMAGE_MAX || c->iz[i] < -PL_COLLOID_IMAGE_MAX;
+        const double ov = c->g_overlap[i], om = c->g_omega2[i], dp = c->g_damp[i];
+        bad |= isnan(ov) || isnan(om) || isnan(dp);
+        mov = ov > mov ? ov : mov;
+        mom = om > mom ? om : mom;
+        mdp = dp > mdp ? dp : mdp;
+    }
+    if (bad || mov > c->max_overlap || mdp * c->dt > 0.5) return 1;
+    return c->min_contact_steps > 0.0 && mom > 0.0 && PL_PI / sqrt(mom) / c->dt < c->min_contact_steps;
+}
+
+int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err)
+{
+    if (!c->n) return 0;
+    if (guard_trips(c)) {
+        int rc = guard_report(c, err);
+        if (rc) return rc;
+    }
+    return check_energy ? energy_check(c, err) : 0;
 }
