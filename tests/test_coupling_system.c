@@ -231,3 +231,22 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
         pl_sim_free(sim);
     }
 }
+
+/* A potential coupling whose first selections find no fluid particle near
+ * the colloid (a sparse fluid: 5 particles in 512 cells) runs: the selection
+ * buffers exist even when empty (the gather writes their first offset). */
+Test(coupling_system, potential_with_no_particle_selected, .timeout = 60)
+{
+    pl_sim_t *s = pl_test_sim("seed = 1;\nbox: { cells = [8, 8, 8]; };\n"
+                              "fluid: { density = 0.01; temperature = 1.0; };\nsrd: { dt = 0.1; };\n"
+                              "colloids: { count = 1; radius = 0.5; mass_density = 5.0; temperature = 1.0;\n"
+                              "  init = \"lattice\"; pairs = \"wca\"; substeps = 4; };\n"
+                              "wca: { epsilon = 2.5; sigma = 1.0; n = 24.0; };\n"
+                              "coupling: { method = \"potential\"; sigma_cf = 0.5; epsilon_cf = 2.5; };\n",
+                              1);
+    pl_test_steps(s, 20);
+    cr_expect_eq(s->coupling->pot->nnear, 0, "the test wants an empty selection, got %zu particles",
+                 s->coupling->pot->nnear);
+    cr_expect(isfinite(s->colloids->x[0]) && isfinite(s->fluid.v[0][0]), "state not finite");
+    pl_sim_free(s);
+}

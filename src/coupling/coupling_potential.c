@@ -194,7 +194,9 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
         np += ps->counts[(size_t)t * 8 + 3];
     }
     if (np > UINT32_MAX) return pl_err_set(err, PL_ERR_NOMEM, "%zu near-colloid pairs: more than 2^32", np);
-    if (nn > ps->near_cap) {
+    /* allocated at the first selection even when it finds no particle: the
+     * gather and the force kernels write pstart[0] */
+    if (nn > ps->near_cap || !ps->pair_start) {
         free(ps->near_idx);
         free(ps->near_owner);
         free(ps->near_buf);
@@ -209,12 +211,12 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
         if (!ps->near_idx || !ps->near_owner || !ps->near_buf || !ps->pair_start || !ps->near_k0)
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for %zu near-colloid particles", nn);
     }
-    if (np > ps->pair_cap) {
-        size_t cap = ps->pair_cap;
+    if (np > ps->pair_cap || !ps->pair_buf) {
+        size_t cap = ps->pair_cap, need = np ? np : 1;
         free(ps->pair_buf);
         ps->pair_buf = NULL;
-        if (grow((void **)&ps->pair_j, &cap, np, sizeof *ps->pair_j) ||
-            (cap = ps->pair_cap, grow((void **)&ps->pair_k, &cap, np, sizeof *ps->pair_k)) ||
+        if (grow((void **)&ps->pair_j, &cap, need, sizeof *ps->pair_j) ||
+            (cap = ps->pair_cap, grow((void **)&ps->pair_k, &cap, need, sizeof *ps->pair_k)) ||
             !(ps->pair_buf = malloc(4 * cap * sizeof *ps->pair_buf)))
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for %zu near-colloid pairs", np);
         ps->pair_cap = cap;
