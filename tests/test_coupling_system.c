@@ -250,3 +250,26 @@ Test(coupling_system, potential_with_no_particle_selected, .timeout = 60)
     cr_expect(isfinite(s->colloids->x[0]) && isfinite(s->fluid.v[0][0]), "state not finite");
     pl_sim_free(s);
 }
+
+/* The potential coupling counts its force evaluations (substeps + 1 per
+ * collision step) and those at which the selection margin was used up: none
+ * in an ordinary run; every one when the margin is zero (each then takes the
+ * lookup path). */
+Test(coupling_system, potential_counts_margin_exceeded, .timeout = 120)
+{
+    const char *cpl = "method = \"potential\"; sigma_cf = 2.0; epsilon_cf = 2.5;";
+    pl_sim_t *a = make("", cpl, "", 1);
+    pl_test_steps(a, 6);
+    cr_expect_eq(a->coupling->pot->force_calls, 6 * 5, "force evaluations %llu", a->coupling->pot->force_calls);
+    cr_expect_eq(a->coupling->pot->margin_exceeded, 0, "margin exceeded %llu times in an ordinary run",
+                 a->coupling->pot->margin_exceeded);
+    pl_sim_free(a);
+    pl_sim_t *b = make("", cpl, "", 1);
+    b->coupling->pot->margin = 0.0;
+    pl_test_steps(b, 6);
+    cr_expect_eq(b->coupling->pot->margin_exceeded, b->coupling->pot->force_calls,
+                 "zero margin: %llu of %llu evaluations counted", b->coupling->pot->margin_exceeded,
+                 b->coupling->pot->force_calls);
+    cr_expect_gt(b->coupling->pot->force_calls, 0);
+    pl_sim_free(b);
+}

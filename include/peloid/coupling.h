@@ -100,6 +100,12 @@ typedef struct pl_coupling_potential_state {
     size_t wca_partial_cap; /* doubles */
     double epot_cf;      /* PL Eq. 17 energy after the last MD step */
     unsigned long long near_total; /* selected particle-steps (cost counter) */
+    /* force evaluations in this run, and those at which the selection margin
+     * was used up (a selected particle's move plus the largest colloid move
+     * since the selection reached it): a fluid particle that was not
+     * selected may then have entered the cut-off unseen until the next
+     * selection (summary.json "coupling") */
+    unsigned long long force_calls, margin_exceeded;
 } pl_coupling_potential_state_t;
 
 /* ---- common part (src/coupling/coupling.c) ------------------------------- */

@@ -4,6 +4,7 @@
  * the fluid's, and its thermo columns (coupling I event counters, the drag
  * on pinned colloids).  Hecht Secs. IV-V, VIII.A; PL Secs. III, V. */
 #include "checkpoint_h5.h"
+#include "json_build.h"
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
 #include "peloid/module.h"
@@ -100,6 +101,21 @@ static int coupling_ckpt_read(int64_t f, pl_sim_t *sim, const char *path, pl_err
     return pl_ckpt_coupling_read((hid_t)f, sim, path, err);
 }
 
+/* summary.json "coupling" (potential coupling): how often the selection
+ * margin was used up in this run (not checkpointed: counts of this run). */
+static int coupling_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
+{
+    (void)dir;
+    if (!sim->coupling || sim->coupling->method != PL_COUPLE_POTENTIAL || !sim->coupling->pot) return 0;
+    const pl_coupling_potential_state_t *ps = sim->coupling->pot;
+    pl_json_t b = {err, sim->scene.path, "coupling", 0};
+    json_t *o = json_object();
+    pl_json_int(&b, o, "potential_force_evaluations", (long long)ps->force_calls);
+    pl_json_int(&b, o, "selection_margin_exceeded", (long long)ps->margin_exceeded);
+    pl_json_set(&b, doc, "coupling", o);
+    return b.failed ? err->code : 0;
+}
+
 const pl_module_t pl_coupling_module = {
     .name = "coupling",
     .create = coupling_create,
@@ -108,4 +124,5 @@ const pl_module_t pl_coupling_module = {
     .thermo_columns = coupling_columns,
     .checkpoint_write = coupling_ckpt_write,
     .checkpoint_read = coupling_ckpt_read,
+    .finish = coupling_finish,
 };

@@ -279,11 +279,13 @@ static int forces(pl_coupling_t *cp, const pl_sim_t *sim, pl_colloid_t *c, const
     pl_coupling_colloids_t v = big_view(ps, c);
     const pl_coupling_near_t nb = near_view(ps, &sim->fluid);
     double *cf[3] = {ps->cf, ps->cf + c->n, ps->cf + 2 * c->n};
+    ps->force_calls++;
     if (pairs_hold(ps, c)) {
         ps->epot_cf = pl_coupling_potential_force_step(&ps->wca, &nb, &v, &sim->grid, sim->wall_u, h, g, kicks, dt,
                                                        cf[0], cf[1], cf[2], cp->nthreads, ps->wca_partial,
                                                        ps->pair_buf, ps->pair_cap, wacc, &ps->far2);
     } else {
+        ps->margin_exceeded++;
         int rc = lookup_big(ps, sim, err);
         if (rc) return rc;
         ps->epot_cf = pl_coupling_wca_forces(&ps->wca, nb.n, nb.r[0], nb.r[1], nb.r[2], nb.f[0], nb.f[1], nb.f[2],
