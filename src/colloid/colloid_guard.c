@@ -31,6 +31,29 @@ static size_t argmax(const double *a, size_t n)
     return w;
 }
 
+/* The tests both scans apply, per colloid or on a maximum. */
+static inline int state_finite(const pl_colloid_t *c, size_t i)
+{
+    double s = c->x[i] + c->y[i] + c->z[i] + c->vx[i] + c->vy[i] + c->vz[i] + c->fx[i] + c->fy[i] +
+               c->fz[i] + c->wx[i] + c->wy[i] + c->wz[i];
+    return isfinite(s);
+}
+/* The first axis whose image counter is beyond the bound, or -1. */
+static inline int image_axis_out(const pl_colloid_t *c, size_t i)
+{
+    const int32_t im[3] = {c->ix[i], c->iy[i], c->iz[i]};
+    for (int d = 0; d < 3; ++d)
+        if (im[d] > PL_COLLOID_IMAGE_MAX || im[d] < -PL_COLLOID_IMAGE_MAX) return d;
+    return -1;
+}
+/* MD steps resolving the collision of a pair with stiffness om2 = U''/m_red. */
+static inline double contact_steps(const pl_colloid_t *c, double om2) { return PL_PI / sqrt(om2) / c->dt; }
+static inline int contact_trips(const pl_colloid_t *c, double om2)
+{
+    return c->min_contact_steps > 0.0 && om2 > 0.0 && contact_steps(c, om2) < c->min_contact_steps;
+}
+static inline int damping_trips(const pl_colloid_t *c, double damp) { return damp * c->dt > 0.5; }
+
 /* Drift of the total energy in undamped NVE runs (every guard_interval). */
 static int energy_check(pl_colloid_t *c, pl_err_t *err)
 {
@@ -52,9 +75,7 @@ static int guard_report(const pl_colloid_t *c, pl_err_t *err)
     size_t n = c->n;
     long long st = c->md_step;
     for (size_t i = 0; i < n; ++i) {
-        double s = c->x[i] + c->y[i] + c->z[i] + c->vx[i] + c->vy[i] + c->vz[i] + c->fx[i] +
-                   c->fy[i] + c->fz[i] + c->wx[i] + c->wy[i] + c->wz[i];
-        if (!isfinite(s))
+        if (!state_finite(c, i))
             return pl_err_set(err, PL_ERR_GUARD,
                               "guard nan: MD step %lld: colloid %zu has a non-finite position, "
                               "velocity or force (x=%g v=%g f=%g); bound: finite; reduce the time "
@@ -62,14 +83,13 @@ static int guard_report(const pl_colloid_t *c, pl_err_t *err)
                               st, i, c->x[i], c->vx[i], c->fx[i]);
     }
     for (size_t i = 0; i < n; ++i) {
-        const int32_t im[3] = {c->ix[i], c->iy[i], c->iz[i]};
-        for (int d = 0; d < 3; ++d)
-            if (im[d] > PL_COLLOID_IMAGE_MAX || im[d] < -PL_COLLOID_IMAGE_MAX)
-                return pl_err_set(err, PL_ERR_GUARD,
-                                  "guard image: MD step %lld: colloid %zu crossed the periodic box more than "
-                                  "%d times along %c (image counter int32); bound %d; the colloid is running "
-                                  "away: lower colloids.gravity or srd.dt, or raise colloids.substeps",
-                                  st, i, PL_COLLOID_IMAGE_MAX, "xyz"[d], PL_COLLOID_IMAGE_MAX);
+        const int d = image_axis_out(c, i);
+        if (d >= 0)
+            return pl_err_set(err, PL_ERR_GUARD,
+                              "guard image: MD step %lld: colloid %zu crossed the periodic box more than "
+                              "%d times along %c (image counter int32); bound %d; the colloid is running "
+                              "away: lower colloids.gravity or srd.dt, or raise colloids.substeps",
+                              st, i, PL_COLLOID_IMAGE_MAX, "xyz"[d], PL_COLLOID_IMAGE_MAX);
     }
     size_t w = argmax(c->g_overlap, n);
     if (c->g_overlap[w] > c->max_overlap)
@@ -78,25 +98,20 @@ static int guard_report(const pl_colloid_t *c, pl_err_t *err)
                           "R_i+R_j; bound colloids.max_overlap = %g; raise hertz.K (or the "
                           "repulsion), or lower the approach speed / gravity",
                           st, w, c->g_partner[w], c->g_overlap[w], c->max_overlap);
-    if (c->min_contact_steps > 0.0) {
-        w = argmax(c->g_omega2, n);
-        double om2 = c->g_omega2[w];
-        if (om2 > 0.0) {
-            double steps = PL_PI / sqrt(om2) / c->dt;
-            if (steps < c->min_contact_steps)
-                return pl_err_set(err, PL_ERR_GUARD,
-                                  "guard contact_steps: MD step %lld: colloids %zu and %d: the "
-                                  "collision time pi sqrt(m_red/U'') = %.4g t0 is resolved by "
-                                  "%.3g MD steps of dt = %.4g; bound colloids.min_contact_steps = "
-                                  "%g; raise colloids.substeps (physical{}: it is derived, raise "
-                                  "coarse_graining.reach_energy) or lower hertz.K / the stiffest term, "
-                                  "e.g. dlvo.primary_depth",
-                                  st, w, c->g_partner[n + w], PL_PI / sqrt(om2), steps, c->dt,
-                                  c->min_contact_steps);
-        }
-    }
+    w = argmax(c->g_omega2, n);
+    const double om2 = c->g_omega2[w];
+    if (contact_trips(c, om2))
+        return pl_err_set(err, PL_ERR_GUARD,
+                          "guard contact_steps: MD step %lld: colloids %zu and %d: the "
+                          "collision time pi sqrt(m_red/U'') = %.4g t0 is resolved by "
+                          "%.3g MD steps of dt = %.4g; bound colloids.min_contact_steps = "
+                          "%g; raise colloids.substeps (physical{}: it is derived, raise "
+                          "coarse_graining.reach_energy) or lower hertz.K / the stiffest term, "
+                          "e.g. dlvo.primary_depth",
+                          st, w, c->g_partner[n + w], PL_PI / sqrt(om2), contact_steps(c, om2), c->dt,
+                          c->min_contact_steps);
     w = argmax(c->g_damp, n);
-    if (c->g_damp[w] * c->dt > 0.5)
+    if (damping_trips(c, c->g_damp[w]))
         return pl_err_set(err, PL_ERR_GUARD,
                           "guard damping: MD step %lld: colloids %zu and %d: dt zeta/m_red = %.4g "
                           "(dissipative rate %.4g /t0); bound 0.5; raise lubrication.min_gap or "
@@ -115,20 +130,14 @@ static int guard_trips(const pl_colloid_t *c)
 #pragma omp parallel for schedule(static) num_threads(c->nthreads) reduction(max : mov, mom, mdp) \
     reduction(| : bad) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i) {
-        double s = c->x[i] + c->y[i] + c->z[i] + c->vx[i] + c->vy[i] + c->vz[i] + c->fx[i] +
-                   c->fy[i] + c->fz[i] + c->wx[i] + c->wy[i] + c->wz[i];
-        bad |= !isfinite(s);
-        bad |= c->ix[i] > PL_COLLOID_IMAGE_MAX || c->ix[i] < -PL_COLLOID_IMAGE_MAX ||
-               c->iy[i] > PL_COLLOID_IMAGE_MAX || c->iy[i] < -PL_COLLOID_IMAGE_MAX ||
-               c->iz[i] > PL_COLLOID_IMAGE_MAX || c->iz[i] < -PL_COLLOID_IMAGE_MAX;
+        bad |= !state_finite(c, i) || image_axis_out(c, i) >= 0;
         const double ov = c->g_overlap[i], om = c->g_omega2[i], dp = c->g_damp[i];
         bad |= isnan(ov) || isnan(om) || isnan(dp);
         mov = ov > mov ? ov : mov;
         mom = om > mom ? om : mom;
         mdp = dp > mdp ? dp : mdp;
     }
-    if (bad || mov > c->max_overlap || mdp * c->dt > 0.5) return 1;
-    return c->min_contact_steps > 0.0 && mom > 0.0 && PL_PI / sqrt(mom) / c->dt < c->min_contact_steps;
+    return bad || mov > c->max_overlap || contact_trips(c, mom) || damping_trips(c, mdp);
 }
 
 int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err)
