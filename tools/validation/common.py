@@ -22,21 +22,22 @@ def save_figure(plt, fig, path):
     plt.close(fig)
 
 
-def guide_axes(ax, dev_label, se_label, se_lines=True):
+def guide_axes(ax, dev_label, se_label, se_lines=True, dev_lines=True, xlabel="CPU seconds (one thread)"):
     """The two panels of an accuracy-cost guide: ax[0] the deviation from the reference with its SE, ax[1] the SE,
-    both against CPU seconds on log x axes, dotted lines at +-1, 3 and 10 % (on ax[1] too unless se_lines is
-    False)."""
+    both against CPU seconds on log x axes, dotted lines at +-1, 3 and 10 % (on ax[1] unless se_lines is False;
+    on ax[0], with the zero line, unless dev_lines is False: a panel of values, not deviations)."""
     for a in ax:
         a.set_xscale("log")
-        a.set_xlabel("CPU seconds (one thread)")
+        a.set_xlabel(xlabel)
         a.grid(True, which="both", alpha=0.3)
     ax[1].set_yscale("log")
     for t in (1, 3, 10):
         if se_lines:
             ax[1].axhline(t, color="grey", lw=0.6, ls=":")
-        for sgn in (1, -1):
+        for sgn in (1, -1) if dev_lines else ():
             ax[0].axhline(sgn * t, color="grey", lw=0.6, ls=":")
-    ax[0].axhline(0.0, color="k", lw=0.8)
+    if dev_lines:
+        ax[0].axhline(0.0, color="k", lw=0.8)
     ax[0].set_ylabel(dev_label)
     ax[1].set_ylabel(se_label)
 

@@ -3,7 +3,7 @@
 Part of tools/validation_report.py (validation/REPORT.md); each evaluator takes a loaded sweep and
 returns (value, verdict[, details, plot])."""
 import os
-from validation.common import pyplot, save_figure
+from validation.common import guide_axes, pyplot, save_figure
 
 
 def rz_fit(points):
@@ -252,19 +252,12 @@ def rz_precision(sw):
         r0 = fits.get(1.0, fits[min(fits)])
         y0 = 100 * r0[0]["stat"] / abs(r0[0]["l"])
         ax[1].plot([r0[0]["cpu"], max(c)], [y0, y0 * (r0[0]["cpu"] / max(c)) ** 0.5], "k--", label="∝ CPU^−½")
-        for t in (1, 3, 10):
-            ax[1].axhline(t, color="grey", lw=0.6, ls=":")
         ax[0].axhline(3.5, color="grey", ls="--", lw=0.8)
         ax[0].text(min(c), 3.5, " Hecht 3.5 (empirical)", va="bottom", fontsize=7)
         ax[0].axhline(4.65, color="grey", ls="-.", lw=0.8)
         ax[0].text(min(c), 4.65, " Richardson–Zaki 4.65 (empirical)", va="bottom", fontsize=7)
-        for a in ax:
-            a.set_xscale("log")
-            a.set_xlabel("CPU seconds, five points (one thread)")
-            a.grid(True, which="both", alpha=0.3)
-        ax[1].set_yscale("log")
-        ax[0].set_ylabel("l (Richardson–Zaki frame), bars: SE")
-        ax[1].set_ylabel("SE(l) / l (%); dotted: 1, 3, 10 %")
+        guide_axes(ax, "l (Richardson–Zaki frame), bars: SE", "SE(l) / l (%); dotted: 1, 3, 10 %", dev_lines=False,
+                   xlabel="CPU seconds, five points (one thread)")
         ax[0].set_title("l from prefixes of the runs (no exact reference)", fontsize=9)
         ax[1].set_title("precision (not accuracy)", fontsize=9)
         ax[0].legend(fontsize=8)
