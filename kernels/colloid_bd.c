@@ -11,18 +11,8 @@
 #include <math.h>
 
 #include "peloid/real.h" /* PL_PI */
-#include "peloid/colloid_kernels.h"
+#include "colloid_integrate.h" /* pl_colloid_wrap */
 #include "peloid/rng.h"
-
-static inline void wrap(double *x, int32_t *img, double L)
-{
-    double k = floor(*x / L);
-    if (k != 0.0) {
-        *x -= k * L;
-        if (*x >= L) *x -= L;
-        *img += (int32_t)k;
-    }
-}
 
 void pl_colloid_bd_step(const pl_colloid_bd_params_t *p, size_t n, const double box[3],
                         const int periodic[3], const double *restrict rad, double *restrict x,
@@ -56,9 +46,9 @@ void pl_colloid_bd_step(const pl_colloid_bd_params_t *p, size_t n, const double 
         x[i] += dx;
         y[i] += dy;
         z[i] += dz;
-        if (periodic[0]) wrap(&x[i], &ix[i], box[0]);
-        if (periodic[1]) wrap(&y[i], &iy[i], box[1]);
-        if (periodic[2]) wrap(&z[i], &iz[i], box[2]);
+        if (periodic[0]) pl_colloid_wrap(&x[i], &ix[i], box[0]);
+        if (periodic[1]) pl_colloid_wrap(&y[i], &iy[i], box[1]);
+        if (periodic[2]) pl_colloid_wrap(&z[i], &iz[i], box[2]);
         vx[i] = fx[i] / zt;
         vy[i] = fy[i] / zt;
         vz[i] = fz[i] / zt;

@@ -303,46 +303,26 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
 _Static_assert(PL_CT_ALL == 31u, "one CASES level per pair-term bit: extend ALL_CASES");
 #define ALL_CASES CASES32(0)
 
-/* Pass 2: the pairs others own with i, in ascending owner index (Newton's
- * third law: the force on i is minus the force on the owner). */
-static inline void reverse_add(const pl_colloid_nlist_t *nl, const pl_colloid_view_t *v, int torques)
+/* Pass 1 as an orphaned worksharing loop (call it from every thread of a
+ * parallel region, or outside one): the implicit barrier of its loop ends it. */
+void pl_colloid_pair_owner_pass(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
+                                const pl_colloid_view_t *v)
 {
-#pragma omp for schedule(static)
-    for (size_t i = 0; i < v->n; ++i) {
-        const size_t q0 = 3 * (size_t)nl->rstart[i], q1 = 3 * (size_t)nl->rstart[i + 1];
-        double fx = v->fx[i], fy = v->fy[i], fz = v->fz[i];
-        for (size_t q = q0; q < q1; q += 3) {
-            fx -= nl->pf[q];
-            fy -= nl->pf[q + 1];
-            fz -= nl->pf[q + 2];
-        }
-        v->fx[i] = fx;
-        v->fy[i] = fy;
-        v->fz[i] = fz;
-        if (!torques) continue;
-        double tx = v->tx[i], ty = v->ty[i], tz = v->tz[i];
-        for (size_t q = q0; q < q1; q += 3) {
-            tx += nl->pt[q];
-            ty += nl->pt[q + 1];
-            tz += nl->pt[q + 2];
-        }
-        v->tx[i] = tx;
-        v->ty[i] = ty;
-        v->tz[i] = tz;
-    }
+    enum { E = 0 };
+    const unsigned mask = p->terms & PL_CT_ALL;
+    switch (mask) { ALL_CASES }
 }
 
 void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
                             const pl_colloid_view_t *v, int nthreads)
 {
-    enum { E = 0 };
-    const unsigned mask = p->terms & PL_CT_ALL;
-    const int torques = (p->terms & PL_CT_HERTZ) && p->hertz_gamma_t > 0.0;
+    const int torques = pl_colloid_pair_torques(p);
     /* one parallel region: pass 1, the barrier of its loop, pass 2 */
 #pragma omp parallel num_threads(nthreads) if (v->n >= PL_COLLOID_OMP_MIN)
     {
-        switch (mask) { ALL_CASES }
-        reverse_add(nl, v, torques);
+        pl_colloid_pair_owner_pass(p, nl, v);
+#pragma omp for schedule(static)
+        for (size_t i = 0; i < v->n; ++i) pl_colloid_pair_reverse_one(nl, v, i, torques);
     }
 }
 

@@ -8,7 +8,7 @@
  * result does not depend on the thread count. */
 #include <math.h>
 
-#include "peloid/colloid_kernels.h"
+#include "colloid_integrate.h"
 
 void pl_colloid_kick(size_t n, double h, const double *restrict mass,
                      const double *restrict inertia, const double *restrict fx,
@@ -19,15 +19,7 @@ void pl_colloid_kick(size_t n, double h, const double *restrict mass,
                      double *restrict wz, int nthreads)
 {
 #pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
-    for (size_t i = 0; i < n; ++i) {
-        double a = h / mass[i], b = h / inertia[i];
-        vx[i] += a * fx[i]; /* PL Eq. 19 / Hecht Eq. 8, half of it */
-        vy[i] += a * fy[i];
-        vz[i] += a * fz[i];
-        wx[i] += b * tx[i]; /* Hecht Eq. 9, symmetric split */
-        wy[i] += b * ty[i];
-        wz[i] += b * tz[i];
-    }
+    for (size_t i = 0; i < n; ++i) pl_colloid_kick_one(i, h, mass, inertia, fx, fy, fz, tx, ty, tz, vx, vy, vz, wx, wy, wz);
 }
 
 void pl_colloid_quat_rotate(double px, double py, double pz, double q[4])
@@ -58,21 +50,6 @@ void pl_colloid_quat_rotate(double px, double py, double pz, double q[4])
     q[3] = r3 * nrm;
 }
 
-static inline void wrap(double *x, int32_t *img, double L)
-{
-    double k = floor(*x / L);
-    if (k != 0.0) {
-        if (!isfinite(k)) return; /* NaN/Inf position: the NaN guard reports it */
-        *x -= k * L;
-        if (*x >= L) *x -= L; /* rounding of -tiny + L */
-        /* saturated beyond PL_COLLOID_IMAGE_MAX (the colloid guard stops
-         * the run): no int32 overflow */
-        const double im = (double)*img + k;
-        *img = im > PL_COLLOID_IMAGE_MAX ? PL_COLLOID_IMAGE_MAX + 1
-               : im < -PL_COLLOID_IMAGE_MAX ? -PL_COLLOID_IMAGE_MAX - 1 : (int32_t)im;
-    }
-}
-
 void pl_colloid_drift(size_t n, double dt, const double box[3], const int periodic[3],
                       double *restrict x, double *restrict y, double *restrict z,
                       int32_t *restrict ix, int32_t *restrict iy, int32_t *restrict iz,
@@ -82,20 +59,8 @@ void pl_colloid_drift(size_t n, double dt, const double box[3], const int period
                       double *restrict q1, double *restrict q2, double *restrict q3, int nthreads)
 {
 #pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
-    for (size_t i = 0; i < n; ++i) {
-        x[i] += dt * vx[i]; /* PL Eq. 18 / Hecht Eq. 7 (v already half-kicked) */
-        y[i] += dt * vy[i];
-        z[i] += dt * vz[i];
-        if (periodic[0]) wrap(&x[i], &ix[i], box[0]);
-        if (periodic[1]) wrap(&y[i], &iy[i], box[1]);
-        if (periodic[2]) wrap(&z[i], &iz[i], box[2]);
-        double q[4] = {q0[i], q1[i], q2[i], q3[i]};
-        pl_colloid_quat_rotate(dt * wx[i], dt * wy[i], dt * wz[i], q);
-        q0[i] = q[0];
-        q1[i] = q[1];
-        q2[i] = q[2];
-        q3[i] = q[3];
-    }
+    for (size_t i = 0; i < n; ++i)
+        pl_colloid_drift_one(i, dt, box, periodic, x, y, z, ix, iy, iz, vx, vy, vz, wx, wy, wz, q0, q1, q2, q3);
 }
 
 void pl_colloid_ext_forces(const pl_colloid_ext_params_t *p, size_t n, const double *restrict x,
@@ -104,33 +69,7 @@ void pl_colloid_ext_forces(const pl_colloid_ext_params_t *p, size_t n, const dou
                            const double *restrict mass, double *restrict fx,
                            double *restrict fy, double *restrict fz, double *restrict epot, int nthreads)
 {
-    const double rf = pow(2.0, 1.0 / p->wall_n), nn = p->wall_n, eps = p->wall_eps;
+    const double rf = pow(2.0, 1.0 / p->wall_n);
 #pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
-    for (size_t i = 0; i < n; ++i) {
-        double m = mass[i];
-        fx[i] += m * p->g[0];
-        fy[i] += m * p->g[1];
-        fz[i] += m * p->g[2];
-        double ew = 0.0;
-        const double pos[3] = {x[i], y[i], z[i]};
-        double *const f[3] = {&fx[i], &fy[i], &fz[i]};
-        for (int d = 0; d < 3; ++d) {
-            if (!p->walls[d]) continue;
-            /* PL Eq. 16 form against each wall, sigma = R_i, r = wall distance */
-            double s = rad[i], hs[2] = {pos[d], p->L[d] - pos[d]}, sg[2] = {1.0, -1.0};
-            for (int w = 0; w < 2; ++w) {
-                double hw = hs[w] > 1e-3 * s ? hs[w] : 1e-3 * s;
-                if (hw < rf * s) {
-                    double sn = pow(s / hw, nn), s2n = sn * sn;
-                    ew += 4.0 * eps * (s2n - sn + 0.25);
-                    *f[d] += sg[w] * 4.0 * eps * nn * (2.0 * s2n - sn) / hw;
-                }
-            }
-        }
-        if (epot) {
-            epot[(size_t)PL_CE_WALL * n + i] = ew;
-            /* -m g . x with the unwrapped height (gravity acts along z) */
-            epot[(size_t)PL_CE_GRAVITY * n + i] = -m * p->g[2] * zu[i];
-        }
-    }
+    for (size_t i = 0; i < n; ++i) pl_colloid_ext_one(p, rf, n, i, x, y, z, zu, rad, mass, fx, fy, fz, epot);
 }

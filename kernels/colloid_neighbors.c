@@ -89,10 +89,7 @@ double pl_colloid_nlist_max_disp2(const pl_colloid_nlist_t *nl, const double box
     /* max is exact, so the reduction order does not matter */
 #pragma omp parallel for schedule(static) num_threads(nthreads) reduction(max : m) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i) {
-        double dx = pl_min_image(x[i] - nl->x0[i], box[0], periodic[0]);
-        double dy = pl_min_image(y[i] - nl->y0[i], box[1], periodic[1]);
-        double dz = pl_min_image(z[i] - nl->z0[i], box[2], periodic[2]);
-        double d2 = dx * dx + dy * dy + dz * dz;
+        double d2 = pl_colloid_nlist_disp2(nl, box, periodic, x, y, z, i);
         /* a non-finite position forces a rebuild; the NaN guard reports it */
         if (!(d2 <= m)) m = isnan(d2) ? INFINITY : d2;
     }

@@ -130,6 +130,11 @@ int pl_colloid_neighbors_init(pl_colloid_t *c, double rc, double skin_fraction, 
  * PL_ERR_NOMEM when a grown neighbour list cannot be allocated. */
 int pl_colloid_forces(pl_colloid_t *c, pl_err_t *err);
 
+/* One velocity-Verlet MD step with the force evaluation (the neighbour list
+ * rebuilt when needed) and the guard maxima into g, through the fused
+ * kernels of kernels/colloid_verlet.c: the same state as pl_colloid_kick,
+ * pl_colloid_drift, pl_colloid_forces, pl_colloid_kick. */
+int pl_colloid_verlet_step(pl_colloid_t *c, pl_colloid_guard_max_t *g, pl_err_t *err);
 /* One MD step (velocity Verlet + quaternions, or BD), then the guards. */
 int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err);
 /* The plan stage: colloids.substeps MD steps of one collision step. */
@@ -138,6 +143,10 @@ int pl_colloid_advance(pl_colloid_t *c, long long collision_step, pl_err_t *err)
 /* Guards on the state after the force evaluation of MD step c->md_step
  * (src/colloid/colloid_guard.c).  PL_ERR_GUARD with the message on failure. */
 int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err);
+/* The same guards, their per-colloid tests and maxima already computed (by
+ * the fused MD step). */
+int pl_colloid_guard_max(pl_colloid_t *c, const pl_colloid_guard_max_t *g, int check_energy,
+                         pl_err_t *err);
 
 /* Kinetic + potential energy terms of the current state (fixed-order sums);
  * evaluates the pair energies (into epot) for the positions of the last

@@ -119,6 +119,18 @@ static inline int pl_colloid_pair_owner(size_t i, size_t j)
     return ((i + j) & 1u) ? i < j : i > j;
 }
 
+/* Squared displacement of colloid i since the last build (minimum image on
+ * periodic axes). */
+static inline double pl_colloid_nlist_disp2(const pl_colloid_nlist_t *nl, const double box[3],
+                                            const int periodic[3], const double *x,
+                                            const double *y, const double *z, size_t i)
+{
+    double dx = pl_min_image(x[i] - nl->x0[i], box[0], periodic[0]);
+    double dy = pl_min_image(y[i] - nl->y0[i], box[1], periodic[1]);
+    double dz = pl_min_image(z[i] - nl->z0[i], box[2], periodic[2]);
+    return dx * dx + dy * dy + dz * dz;
+}
+
 /* Largest squared displacement since the last build, with the minimum image
  * on periodic axes (a max: exact and the same for any thread count). */
 double pl_colloid_nlist_max_disp2(const pl_colloid_nlist_t *nl, const double box[3],
@@ -142,6 +154,45 @@ void pl_colloid_nlist_fill(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cel
  * colloids is the maximum over all pairs.  v->epot is not touched. */
 void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
                             const pl_colloid_view_t *v, int nthreads);
+
+/* The two passes of pl_colloid_pair_forces, for a caller that fuses more
+ * per-colloid work into pass 2 (kernels/colloid_verlet.c).  Pass 1: each
+ * colloid's own pairs, an orphaned worksharing loop (static schedule) to be
+ * called by every thread of the caller's parallel region; its implicit
+ * barrier ends it.  Pass 2, per colloid i after that barrier: the reverse
+ * entries in ascending owner index (Newton's third law: the force on i is
+ * minus the force on the owner), and the torques when the pair terms carry
+ * them (pl_colloid_pair_torques). */
+void pl_colloid_pair_owner_pass(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
+                                const pl_colloid_view_t *v);
+static inline int pl_colloid_pair_torques(const pl_colloid_pair_params_t *p)
+{
+    return (p->terms & PL_CT_HERTZ) && p->hertz_gamma_t > 0.0;
+}
+static inline void pl_colloid_pair_reverse_one(const pl_colloid_nlist_t *nl,
+                                               const pl_colloid_view_t *v, size_t i, int torques)
+{
+    const size_t q0 = 3 * (size_t)nl->rstart[i], q1 = 3 * (size_t)nl->rstart[i + 1];
+    double fx = v->fx[i], fy = v->fy[i], fz = v->fz[i];
+    for (size_t q = q0; q < q1; q += 3) {
+        fx -= nl->pf[q];
+        fy -= nl->pf[q + 1];
+        fz -= nl->pf[q + 2];
+    }
+    v->fx[i] = fx;
+    v->fy[i] = fy;
+    v->fz[i] = fz;
+    if (!torques) return;
+    double tx = v->tx[i], ty = v->ty[i], tz = v->tz[i];
+    for (size_t q = q0; q < q1; q += 3) {
+        tx += nl->pt[q];
+        ty += nl->pt[q + 1];
+        tz += nl->pt[q + 2];
+    }
+    v->tx[i] = tx;
+    v->ty[i] = ty;
+    v->tz[i] = tz;
+}
 
 /* Pair energies of the present positions: rows PL_CE_DLVO, _HERTZ, _WCA,
  * _DEPL of v->epot get, for each colloid, the energies of the pairs it owns
@@ -167,6 +218,60 @@ typedef struct {
 void pl_colloid_ext_forces(const pl_colloid_ext_params_t *p, size_t n, const double *x,
                            const double *y, const double *z, const double *zu, const double *rad,
                            const double *mass, double *fx, double *fy, double *fz, double *epot, int nthreads);
+
+/* The guard's tests on one colloid (src/colloid/colloid_guard.c): its state
+ * finite (one sum of the 12 components, in this order), and the first axis
+ * whose image counter is beyond PL_COLLOID_IMAGE_MAX (-1: none). */
+static inline int pl_colloid_state_finite(double x, double y, double z, double vx, double vy,
+                                          double vz, double fx, double fy, double fz, double wx,
+                                          double wy, double wz)
+{
+    return isfinite(x + y + z + vx + vy + vz + fx + fy + fz + wx + wy + wz);
+}
+static inline int pl_colloid_image_axis_out(int32_t ix, int32_t iy, int32_t iz)
+{
+    const int32_t im[3] = {ix, iy, iz};
+    for (int d = 0; d < 3; ++d)
+        if (im[d] > PL_COLLOID_IMAGE_MAX || im[d] < -PL_COLLOID_IMAGE_MAX) return d;
+    return -1;
+}
+
+/* The maxima over all colloids of the guard quantities of the pair kernel
+ * (g_overlap, g_omega2, g_damp; exact, so independent of the thread count)
+ * and whether some colloid failed a per-colloid test (or has a NaN guard
+ * quantity). */
+typedef struct {
+    double overlap, omega2, damp;
+    int bad;
+} pl_colloid_guard_max_t;
+
+/* The arrays of the colloids' dynamical state one MD step updates (n each). */
+typedef struct {
+    size_t n;
+    double box[3];
+    int periodic[3];
+    const double *mass, *inertia, *rad;
+    double *x, *y, *z, *zu; /* zu: unwrapped z (gravity energy) */
+    int32_t *ix, *iy, *iz;
+    double *vx, *vy, *vz, *wx, *wy, *wz;
+    double *q0, *q1, *q2, *q3;
+    double *fx, *fy, *fz, *tx, *ty, *tz;
+} pl_colloid_dyn_t;
+
+/* Velocity-Verlet MD step of time step dt in two parallel regions
+ * (kernels/colloid_verlet.c), bitwise the same as the separate passes
+ * (pl_colloid_kick, pl_colloid_drift, pl_colloid_pair_forces,
+ * pl_colloid_ext_forces, pl_colloid_kick, then the guard's pass).
+ * Open: the half kick and the drift; returns the largest squared
+ * displacement since the list build (+inf for a non-finite one).  The caller
+ * rebuilds the list when needed, then Close: pair forces (v: the same arrays
+ * as s), external forces, the second half kick and the guard maxima into g. */
+double pl_colloid_verlet_open(const pl_colloid_dyn_t *s, double dt, const pl_colloid_nlist_t *nl,
+                              int nthreads);
+void pl_colloid_verlet_close(const pl_colloid_dyn_t *s, double dt,
+                             const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
+                             const pl_colloid_view_t *v, const pl_colloid_ext_params_t *ext,
+                             double *epot, pl_colloid_guard_max_t *g, int nthreads);
 
 /* Velocity Verlet half kick (PL Eq. 19 / Hecht Eq. 8 and the rotational
  * analogue of Hecht Eq. 9): v += h F/m, w += h T/I. */

@@ -31,20 +31,16 @@ static size_t argmax(const double *a, size_t n)
     return w;
 }
 
-/* The tests both scans apply, per colloid or on a maximum. */
+/* The tests both scans apply, per colloid or on a maximum (the per-colloid
+ * ones shared with the fused MD step, kernels/colloid_verlet.c). */
 static inline int state_finite(const pl_colloid_t *c, size_t i)
 {
-    double s = c->x[i] + c->y[i] + c->z[i] + c->vx[i] + c->vy[i] + c->vz[i] + c->fx[i] + c->fy[i] +
-               c->fz[i] + c->wx[i] + c->wy[i] + c->wz[i];
-    return isfinite(s);
+    return pl_colloid_state_finite(c->x[i], c->y[i], c->z[i], c->vx[i], c->vy[i], c->vz[i],
+                                   c->fx[i], c->fy[i], c->fz[i], c->wx[i], c->wy[i], c->wz[i]);
 }
-/* The first axis whose image counter is beyond the bound, or -1. */
 static inline int image_axis_out(const pl_colloid_t *c, size_t i)
 {
-    const int32_t im[3] = {c->ix[i], c->iy[i], c->iz[i]};
-    for (int d = 0; d < 3; ++d)
-        if (im[d] > PL_COLLOID_IMAGE_MAX || im[d] < -PL_COLLOID_IMAGE_MAX) return d;
-    return -1;
+    return pl_colloid_image_axis_out(c->ix[i], c->iy[i], c->iz[i]);
 }
 /* MD steps resolving the collision of a pair with stiffness om2 = U''/m_red. */
 static inline double contact_steps(const pl_colloid_t *c, double om2) { return PL_PI / sqrt(om2) / c->dt; }
@@ -120,9 +116,9 @@ static int guard_report(const pl_colloid_t *c, pl_err_t *err)
     return 0;
 }
 
-/* One parallel pass: does any bound trip?  The same tests as guard_report,
- * on the maxima (a NaN guard quantity sends it to guard_report too). */
-static int guard_trips(const pl_colloid_t *c)
+/* One parallel pass: the maxima and flags of the guard (the same as the
+ * close of the fused MD step computes). */
+static void guard_max(const pl_colloid_t *c, pl_colloid_guard_max_t *g)
 {
     const size_t n = c->n;
     double mov = 0.0, mom = 0.0, mdp = 0.0;
@@ -137,15 +133,30 @@ static int guard_trips(const pl_colloid_t *c)
         mom = om > mom ? om : mom;
         mdp = dp > mdp ? dp : mdp;
     }
-    return bad || mov > c->max_overlap || contact_trips(c, mom) || damping_trips(c, mdp);
+    g->overlap = mov;
+    g->omega2 = mom;
+    g->damp = mdp;
+    g->bad = bad;
+}
+
+int pl_colloid_guard_max(pl_colloid_t *c, const pl_colloid_guard_max_t *g, int check_energy,
+                         pl_err_t *err)
+{
+    if (!c->n) return 0;
+    /* does any bound trip?  The same tests as guard_report, on the maxima (a
+     * NaN guard quantity sends it to guard_report too) */
+    if (g->bad || g->overlap > c->max_overlap || contact_trips(c, g->omega2) ||
+        damping_trips(c, g->damp)) {
+        int rc = guard_report(c, err);
+        if (rc) return rc;
+    }
+    return check_energy ? energy_check(c, err) : 0;
 }
 
 int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err)
 {
     if (!c->n) return 0;
-    if (guard_trips(c)) {
-        int rc = guard_report(c, err);
-        if (rc) return rc;
-    }
-    return check_energy ? energy_check(c, err) : 0;
+    pl_colloid_guard_max_t g;
+    guard_max(c, &g);
+    return pl_colloid_guard_max(c, &g, check_energy, err);
 }

@@ -156,15 +156,45 @@ int pl_colloid_neighbors_init(pl_colloid_t *c, double rc, double skin_fraction, 
     return 0;
 }
 
+/* Rebuilds the list when a colloid may have moved a pair from beyond the
+ * list radius to inside the cut-off: disp2, the largest squared displacement
+ * since the build, beyond (skin/2)^2 (a function of the state alone). */
+static int nlist_ensure(pl_colloid_t *c, double disp2, pl_err_t *err)
+{
+    const double half = 0.5 * c->nlist.skin;
+    if (c->nlist.builds == 0 || !(disp2 <= half * half)) return nlist_build(c, err);
+    return 0;
+}
+
+static pl_colloid_dyn_t colloid_dyn(pl_colloid_t *c)
+{
+    pl_colloid_dyn_t s = {.n = c->n, .box = {c->box[0], c->box[1], c->box[2]},
+                          .periodic = {c->periodic[0], c->periodic[1], c->periodic[2]},
+                          .mass = c->mass, .inertia = c->inertia, .rad = c->rad, .x = c->x,
+                          .y = c->y, .z = c->z, .zu = c->zu, .ix = c->ix, .iy = c->iy, .iz = c->iz,
+                          .vx = c->vx, .vy = c->vy, .vz = c->vz, .wx = c->wx, .wy = c->wy,
+                          .wz = c->wz, .q0 = c->q0, .q1 = c->q1, .q2 = c->q2, .q3 = c->q3,
+                          .fx = c->fx, .fy = c->fy, .fz = c->fz, .tx = c->tx, .ty = c->ty,
+                          .tz = c->tz};
+    return s;
+}
+
+int pl_colloid_verlet_step(pl_colloid_t *c, pl_colloid_guard_max_t *g, pl_err_t *err)
+{
+    const pl_colloid_dyn_t s = colloid_dyn(c);
+    const double disp2 = pl_colloid_verlet_open(&s, c->dt, &c->nlist, c->nthreads);
+    if (nlist_ensure(c, disp2, err)) return err->code;
+    const pl_colloid_view_t v = colloid_view(c);
+    pl_colloid_verlet_close(&s, c->dt, &c->pair, &c->nlist, &v, &c->ext, c->epot, g, c->nthreads);
+    return 0;
+}
+
 int pl_colloid_forces(pl_colloid_t *c, pl_err_t *err)
 {
     pl_colloid_nlist_t *nl = &c->nlist;
-    double half = 0.5 * nl->skin;
-    /* rebuild when a colloid may have moved a pair from beyond the list
-     * radius to inside the cut-off (a function of the state alone) */
-    if (nl->builds == 0 ||
-        !(pl_colloid_nlist_max_disp2(nl, c->box, c->periodic, c->x, c->y, c->z, c->nthreads) <= half * half))
-        if (nlist_build(c, err)) return err->code;
+    double disp2 = nl->builds ? pl_colloid_nlist_max_disp2(nl, c->box, c->periodic, c->x, c->y, c->z, c->nthreads)
+                              : INFINITY;
+    if (nlist_ensure(c, disp2, err)) return err->code;
     pl_colloid_view_t v = colloid_view(c);
     pl_colloid_pair_forces(&c->pair, nl, &v, c->nthreads);
     for (size_t i = 0; i < c->n; ++i) c->zu[i] = c->z[i] + (double)c->iz[i] * c->box[2];

@@ -6,28 +6,23 @@
 
 int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err)
 {
-    size_t n = c->n;
-    double h = 0.5 * c->dt;
-    if (c->integrator == PL_CINT_VERLET) {
-        pl_colloid_kick(n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
-                        c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->nthreads);
-        pl_colloid_drift(n, c->dt, c->box, c->periodic, c->x, c->y, c->z, c->ix, c->iy, c->iz,
-                         c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3, c->nthreads);
-        /* velocity-dependent forces (damping, friction, lubrication) see the
-         * half-step velocities */
-        if (pl_colloid_forces(c, err)) return err->code;
-        pl_colloid_kick(n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
-                        c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->nthreads);
+    pl_colloid_guard_max_t g;
+    const int fused = c->integrator == PL_CINT_VERLET;
+    if (fused) {
+        /* kick, drift, forces (the velocity-dependent ones: damping,
+         * friction, lubrication see the half-step velocities), kick, and
+         * the guard's maxima, in the fused kernels */
+        if (pl_colloid_verlet_step(c, &g, err)) return err->code;
     } else {
         pl_colloid_bd_params_t bp = {c->dt, c->kT, c->bd_eta, c->seed, (uint64_t)c->md_step};
-        pl_colloid_bd_step(&bp, n, c->box, c->periodic, c->rad, c->x, c->y, c->z, c->ix, c->iy,
+        pl_colloid_bd_step(&bp, c->n, c->box, c->periodic, c->rad, c->x, c->y, c->z, c->ix, c->iy,
                            c->iz, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz, c->vx, c->vy, c->vz,
                            c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3, c->nthreads);
         if (pl_colloid_forces(c, err)) return err->code;
     }
     c->md_step++;
     int check_e = c->nve && c->max_energy_drift > 0.0 && c->md_step % c->guard_interval == 0;
-    return pl_colloid_guard(c, check_e, err);
+    return fused ? pl_colloid_guard_max(c, &g, check_e, err) : pl_colloid_guard(c, check_e, err);
 }
 
 int pl_colloid_advance(pl_colloid_t *c, long long collision_step, pl_err_t *err)
