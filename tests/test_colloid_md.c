@@ -1,8 +1,9 @@
 /* Colloid dynamics invariants: NVE energy conservation with damping off,
  * linear and angular momentum conservation, monotone energy decay with
  * damping (Hecht Sec. IX.A), the friction impulse of noncentral collisions of
- * eight Hertz spheres in a closed box (Hecht Sec. II end), and bitwise
- * identical runs for 1 and 2 threads. */
+ * eight Hertz spheres in a closed box (Hecht Sec. II end), bitwise
+ * identical runs for 1 and 2 threads, and the fused MD step bitwise equal to
+ * its separate passes. */
 #include <math.h>
 #include <omp.h>
 #include <string.h>
@@ -221,4 +222,56 @@ Test(colloid_md, bitwise_threads)
     cr_expect(memcmp(snap[0], snap[1], 9 * n * sizeof(double)) == 0, "1 and 2 threads differ");
     free(snap[0]);
     free(snap[1]);
+}
+
+/* The fused velocity-Verlet step (kernels/colloid_verlet.c, what
+ * pl_colloid_md_step runs) against the separate passes it replaces (kick,
+ * drift, pl_colloid_forces, kick, pl_colloid_guard; the potential coupling's
+ * MD loop still runs these): every state array bitwise equal after 200 MD
+ * steps, 2 threads, every pair term with friction torques, walls on z and
+ * gravity (the external forces), 400 colloids (threaded). */
+Test(colloid_md, fused_step_equals_separate_passes)
+{
+    const char *sc = "box: { cells = [40, 40, 40]; walls_z = \"slip\"; }; fluid: { density = 0.0; };\n"
+                     "colloids: { count = 400; init = \"random\"; radius = 1.8; polydispersity = 0.1;\n"
+                     "  pairs = \"dlvo, hertz, lubrication, wca\"; substeps = 10; temperature = 3.0;\n"
+                     "  gravity = [0.0, 0.0, -0.002]; min_contact_steps = 0.0; };\n"
+                     "dlvo: { psi0 = 20.0; kappa = 1.4e8; hamaker = 4.76e-20; length_unit = 1.25e-7; };\n"
+                     "hertz: { K = 1000.0; beta = 2.0; gamma_t = 3.0; };\n";
+    pl_scene_t s;
+    scene_from(sc, &s);
+    pl_colloid_t *a, *b;
+    pl_err_t err;
+    cr_assert_eq(pl_colloid_create(&s, 2, &a, &err), 0, "%s", err.msg);
+    cr_assert_eq(pl_colloid_create(&s, 2, &b, &err), 0, "%s", err.msg);
+    const size_t n = a->n;
+    long long builds = a->nlist.builds;
+    for (int k = 0; k < 200; ++k) {
+        cr_assert_eq(pl_colloid_md_step(a, &err), 0, "%s", err.msg);
+        const double h = 0.5 * b->dt;
+        pl_colloid_kick(n, h, b->mass, b->inertia, b->fx, b->fy, b->fz, b->tx, b->ty, b->tz, b->vx,
+                        b->vy, b->vz, b->wx, b->wy, b->wz, b->nthreads);
+        pl_colloid_drift(n, b->dt, b->box, b->periodic, b->x, b->y, b->z, b->ix, b->iy, b->iz, b->vx,
+                         b->vy, b->vz, b->wx, b->wy, b->wz, b->q0, b->q1, b->q2, b->q3, b->nthreads);
+        cr_assert_eq(pl_colloid_forces(b, &err), 0, "%s", err.msg);
+        pl_colloid_kick(n, h, b->mass, b->inertia, b->fx, b->fy, b->fz, b->tx, b->ty, b->tz, b->vx,
+                        b->vy, b->vz, b->wx, b->wy, b->wz, b->nthreads);
+        b->md_step++;
+        cr_assert_eq(pl_colloid_guard(b, 0, &err), 0, "%s", err.msg);
+    }
+    cr_expect_gt(a->nlist.builds, builds, "the run rebuilt no neighbour list");
+    cr_expect_eq(a->nlist.builds, b->nlist.builds);
+    const double *da[] = {a->x, a->y, a->z, a->vx, a->vy, a->vz, a->wx, a->wy, a->wz, a->fx, a->fy,
+                          a->fz, a->tx, a->ty, a->tz, a->q0, a->q1, a->q2, a->q3, a->zu,
+                          a->g_overlap, a->g_omega2, a->g_damp};
+    const double *db[] = {b->x, b->y, b->z, b->vx, b->vy, b->vz, b->wx, b->wy, b->wz, b->fx, b->fy,
+                          b->fz, b->tx, b->ty, b->tz, b->q0, b->q1, b->q2, b->q3, b->zu,
+                          b->g_overlap, b->g_omega2, b->g_damp};
+    for (size_t q = 0; q < sizeof da / sizeof da[0]; ++q)
+        cr_expect(memcmp(da[q], db[q], n * sizeof(double)) == 0, "state array %zu differs", q);
+    cr_expect(memcmp(a->epot, b->epot, (size_t)PL_CE_NTERMS * n * sizeof(double)) == 0, "epot differs");
+    const int32_t *ia[] = {a->ix, a->iy, a->iz}, *ib[] = {b->ix, b->iy, b->iz};
+    for (int q = 0; q < 3; ++q) cr_expect(memcmp(ia[q], ib[q], n * sizeof(int32_t)) == 0, "image %d differs", q);
+    pl_colloid_free(a);
+    pl_colloid_free(b);
 }
