@@ -50,12 +50,11 @@ void pl_colloid_verlet_close(const pl_colloid_dyn_t *s, double dt,
     const size_t n = s->n;
     const double h = 0.5 * dt, rf = pow(2.0, 1.0 / ext->wall_n), Lz = s->box[2];
     const int torques = pl_colloid_pair_torques(p);
-    double mov = 0.0, mom = 0.0, mdp = 0.0;
-    int bad = 0;
+    pl_colloid_guard_max_t gm = {0.0, 0.0, 0.0, 0};
 #pragma omp parallel num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
     {
         pl_colloid_pair_owner_pass(p, nl, v);
-#pragma omp for schedule(static) reduction(max : mov, mom, mdp) reduction(| : bad)
+#pragma omp for schedule(static) reduction(pl_guard_max : gm)
         for (size_t i = 0; i < n; ++i) {
             pl_colloid_pair_reverse_one(nl, v, i, torques);
             s->zu[i] = s->z[i] + (double)s->iz[i] * Lz;
@@ -63,19 +62,12 @@ void pl_colloid_verlet_close(const pl_colloid_dyn_t *s, double dt,
                                s->fy, s->fz, epot);
             pl_colloid_kick_one(i, h, s->mass, s->inertia, s->fx, s->fy, s->fz, s->tx, s->ty,
                                 s->tz, s->vx, s->vy, s->vz, s->wx, s->wy, s->wz);
-            bad |= !pl_colloid_state_finite(s->x[i], s->y[i], s->z[i], s->vx[i], s->vy[i],
-                                            s->vz[i], s->fx[i], s->fy[i], s->fz[i], s->wx[i],
-                                            s->wy[i], s->wz[i]) ||
-                   pl_colloid_image_axis_out(s->ix[i], s->iy[i], s->iz[i]) >= 0;
-            const double ov = v->g_overlap[i], om = v->g_omega2[i], dp = v->g_damp[i];
-            bad |= isnan(ov) || isnan(om) || isnan(dp);
-            mov = ov > mov ? ov : mov;
-            mom = om > mom ? om : mom;
-            mdp = dp > mdp ? dp : mdp;
+            const int ok = pl_colloid_state_finite(s->x[i], s->y[i], s->z[i], s->vx[i], s->vy[i],
+                                                   s->vz[i], s->fx[i], s->fy[i], s->fz[i],
+                                                   s->wx[i], s->wy[i], s->wz[i]) &&
+                           pl_colloid_image_axis_out(s->ix[i], s->iy[i], s->iz[i]) < 0;
+            pl_colloid_guard_add(&gm, ok, v->g_overlap[i], v->g_omega2[i], v->g_damp[i]);
         }
     }
-    g->overlap = mov;
-    g->omega2 = mom;
-    g->damp = mdp;
-    g->bad = bad;
+    *g = gm;
 }

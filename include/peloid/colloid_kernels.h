@@ -245,6 +245,24 @@ typedef struct {
     int bad;
 } pl_colloid_guard_max_t;
 
+/* Adds colloid i to g: state_ok (its per-colloid tests passed) and the pair
+ * kernel's guard quantities ov, om, dp of i (a NaN one marks g bad). */
+static inline void pl_colloid_guard_add(pl_colloid_guard_max_t *g, int state_ok, double ov,
+                                        double om, double dp)
+{
+    g->bad |= !state_ok || isnan(ov) || isnan(om) || isnan(dp);
+    g->overlap = ov > g->overlap ? ov : g->overlap;
+    g->omega2 = om > g->omega2 ? om : g->omega2;
+    g->damp = dp > g->damp ? dp : g->damp;
+}
+static inline void pl_colloid_guard_merge(pl_colloid_guard_max_t *out, const pl_colloid_guard_max_t *in)
+{
+    pl_colloid_guard_add(out, !in->bad, in->overlap, in->omega2, in->damp);
+}
+/* The OpenMP reduction of partial maxima (exact: any order, any thread count). */
+#pragma omp declare reduction(pl_guard_max : pl_colloid_guard_max_t : pl_colloid_guard_merge(&omp_out, &omp_in)) \
+    initializer(omp_priv = (pl_colloid_guard_max_t){0.0, 0.0, 0.0, 0})
+
 /* The arrays of the colloids' dynamical state one MD step updates (n each). */
 typedef struct {
     size_t n;

@@ -121,22 +121,13 @@ static int guard_report(const pl_colloid_t *c, pl_err_t *err)
 static void guard_max(const pl_colloid_t *c, pl_colloid_guard_max_t *g)
 {
     const size_t n = c->n;
-    double mov = 0.0, mom = 0.0, mdp = 0.0;
-    int bad = 0;
-#pragma omp parallel for schedule(static) num_threads(c->nthreads) reduction(max : mov, mom, mdp) \
-    reduction(| : bad) if (n >= PL_COLLOID_OMP_MIN)
-    for (size_t i = 0; i < n; ++i) {
-        bad |= !state_finite(c, i) || image_axis_out(c, i) >= 0;
-        const double ov = c->g_overlap[i], om = c->g_omega2[i], dp = c->g_damp[i];
-        bad |= isnan(ov) || isnan(om) || isnan(dp);
-        mov = ov > mov ? ov : mov;
-        mom = om > mom ? om : mom;
-        mdp = dp > mdp ? dp : mdp;
-    }
-    g->overlap = mov;
-    g->omega2 = mom;
-    g->damp = mdp;
-    g->bad = bad;
+    pl_colloid_guard_max_t gm = {0.0, 0.0, 0.0, 0};
+#pragma omp parallel for schedule(static) num_threads(c->nthreads) reduction(pl_guard_max : gm) \
+    if (n >= PL_COLLOID_OMP_MIN)
+    for (size_t i = 0; i < n; ++i)
+        pl_colloid_guard_add(&gm, state_finite(c, i) && image_axis_out(c, i) < 0, c->g_overlap[i],
+                             c->g_omega2[i], c->g_damp[i]);
+    *g = gm;
 }
 
 int pl_colloid_guard_max(pl_colloid_t *c, const pl_colloid_guard_max_t *g, int check_energy,
