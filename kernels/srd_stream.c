@@ -35,6 +35,9 @@ static inline __attribute__((always_inline)) void moved_range(pl_fluid_t *f, con
     }
 }
 
+/* Whether a and b have the same bits (-0.0 and +0.0 differ). */
+static inline int same_bits(pl_real a, pl_real b) { return !memcmp(&a, &b, sizeof a); }
+
 /* mode: 0 = bin only, 1 = drift + store + bin, 2 = count the drifted cell
  * without storing anything but the histogram. */
 static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict h, size_t lo,
@@ -61,6 +64,27 @@ static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict 
         return;
     }
     const int tracked = f->tracked && mode == 1;
+    if (!tracked && !c->walls && c->a[0] == 0.0 && c->a[1] == 0.0 && c->a[2] == 0.0) {
+        /* No body force: the kick v + 0 leaves every velocity as it is
+         * except -0.0 (which becomes +0.0), so v is stored only where its
+         * bits change: the velocity arrays are read, not written back
+         * (24 B per particle less, and no dirty lines to write back). */
+        double rb[3][PL_DRIFT_BLOCK], vb[3][PL_DRIFT_BLOCK];
+        uint32_t cb[PL_DRIFT_BLOCK];
+        for (size_t i = lo; i < hi; i += PL_DRIFT_BLOCK) {
+            const size_t m = hi - i < PL_DRIFT_BLOCK ? hi - i : PL_DRIFT_BLOCK;
+            pl_drift_block_periodic(c, x + i, y + i, z + i, vx + i, vy + i, vz + i, m, rb, vb, cb);
+            for (size_t k = 0; k < m; ++k) {
+                x[i + k] = (pl_real)rb[0][k]; y[i + k] = (pl_real)rb[1][k]; z[i + k] = (pl_real)rb[2][k];
+                if (!same_bits((pl_real)vb[0][k], vx[i + k])) vx[i + k] = (pl_real)vb[0][k];
+                if (!same_bits((pl_real)vb[1][k], vy[i + k])) vy[i + k] = (pl_real)vb[1][k];
+                if (!same_bits((pl_real)vb[2][k], vz[i + k])) vz[i + k] = (pl_real)vb[2][k];
+                cell[i + k] = cb[k];
+                h[cb[k]]++;
+            }
+        }
+        return;
+    }
     if (!tracked && !c->walls) {
         double rb[3][PL_DRIFT_BLOCK], vb[3][PL_DRIFT_BLOCK];
         uint32_t cb[PL_DRIFT_BLOCK];

@@ -1,6 +1,7 @@
 /* Counting sort: particles grouped by cell, stable, cell_start correct, and
  * the result identical for 1, 2 and 3 threads (DESIGN.md "Data"). */
 #include <criterion/criterion.h>
+#include <math.h>
 #include <string.h>
 
 #include "peloid/rng.h"
@@ -68,4 +69,47 @@ Test(sort, grouped_stable_and_thread_independent)
     }
     pl_fluid_free(&ref);
     pl_free(ref_start);
+}
+
+/* The streaming of an untracked periodic fluid without body force stores a
+ * velocity only where the kick v + 0 changes its bits (kernels/srd_stream.c):
+ * the state is bitwise the one the general per-particle path (a tracked
+ * fluid) leaves, -0.0 velocities (which become +0.0) included; the kick
+ * -0.0 too.  Fails if the velocities are simply not written back. */
+Test(stream, kick_free_store_is_bitwise_the_kick)
+{
+    const size_t n = 3000;
+    for (int neg = 0; neg < 2; ++neg) {
+        pl_fluid_t a, b;
+        pl_grid_t g;
+        fill(&a, &g, n, 5);
+        fill(&b, &g, n, 5);
+        a.tracked = 0; /* the block path; b keeps the per-particle one */
+        for (size_t i = 0; i < n; ++i)
+            for (int d = 0; d < 3; ++d) {
+                pl_rand4_t r = pl_rng_uniform4(9, 2, 0, i, 0);
+                const double v = i % 7 == 0 ? -0.0 : i % 11 == 0 ? 0.0 : 2.0 * r.u[d] - 1.0;
+                a.v[d][i] = b.v[d][i] = (pl_real)v;
+            }
+        pl_stream_params_t p;
+        memset(&p, 0, sizeof p);
+        p.dt = 0.1;
+        for (int d = 0; d < 3; ++d) p.accel[d] = neg ? -0.0 : 0.0;
+        uint32_t *ha = pl_alloc(2 * g.ncells * sizeof(uint32_t), 2), *hb = pl_alloc(2 * g.ncells * sizeof(uint32_t), 2);
+        pl_srd_stream_bin(&a, &g, &p, ha, 2);
+        pl_srd_stream_bin(&b, &g, &p, hb, 2);
+        for (int d = 0; d < 3; ++d) {
+            cr_assert_eq(memcmp(a.r[d], b.r[d], n * sizeof(pl_real)), 0, "positions, accel %s0", neg ? "-" : "+");
+            cr_assert_eq(memcmp(a.v[d], b.v[d], n * sizeof(pl_real)), 0, "velocities, accel %s0", neg ? "-" : "+");
+        }
+        cr_assert_eq(memcmp(a.cell, b.cell, n * sizeof(uint32_t)), 0);
+        cr_assert_eq(memcmp(ha, hb, 2 * g.ncells * sizeof(uint32_t)), 0);
+        cr_assert(!neg || signbit(a.v[0][0]), "-0.0 + -0.0 stays -0.0");
+        cr_assert(neg || !signbit(a.v[0][0]), "-0.0 + 0.0 is +0.0");
+        a.tracked = 1;
+        pl_fluid_free(&a);
+        pl_fluid_free(&b);
+        pl_free(ha);
+        pl_free(hb);
+    }
 }
