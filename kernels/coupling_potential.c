@@ -225,10 +225,19 @@ void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
             for (size_t s = i0; s < i1; s += RUN) {
                 const size_t len = i1 - s < RUN ? i1 - s : RUN;
                 for (size_t u = 0; u < len; ++u) in[u] = 0;
-                for (uint32_t e = kb; e < ke; ++e) {
+                for (uint32_t e = kb; e < ke; ++e) { /* hit(), with its operands in registers */
                     const int32_t k = clist[e];
+                    const double cx = c->x[k], cy = c->y[k], cz = c->z[k], r2 = c->rad[k] * c->rad[k];
+                    const double h0 = q.h[0], h1 = q.h[1], h2 = q.h[2];
+                    const double L0 = q.L[0], L1 = q.L[1], L2 = q.L[2];
 #pragma omp simd
-                    for (size_t u = 0; u < len; ++u) in[u] += hit(&q, c, k, x[s + u], y[s + u], z[s + u]);
+                    for (size_t u = 0; u < len; ++u) {
+                        double dx = x[s + u] - cx, dy = y[s + u] - cy, dz = z[s + u] - cz;
+                        dx = dx > h0 ? dx - L0 : (dx < -h0 ? dx + L0 : dx);
+                        dy = dy > h1 ? dy - L1 : (dy < -h1 ? dy + L1 : dy);
+                        dz = dz > h2 ? dz - L2 : (dz < -h2 ? dz + L2 : dz);
+                        in[u] += dx * dx + dy * dy + dz * dz < r2;
+                    }
                 }
                 for (size_t u = 0; u < len; ++u) { /* branch-free append */
                     found[lo + m] = (uint32_t)(s + u);
