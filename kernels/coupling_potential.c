@@ -535,9 +535,38 @@ double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_cou
         pair_block(w, nb, c, lo, hi, partial + b * row, gx, gy, gz, ge);
         /* per particle, as pl_coupling_potential_kick (kicks times), then
          * pl_coupling_potential_drift */
+        double *restrict vx = v[0], *restrict vy = v[1], *restrict vz = v[2];
+        const double *restrict fx = F[0], *restrict fy = F[1], *restrict fz = F[2];
+        if (dt > 0.0 && !g->any_walls && !nb->disp[0] && (kicks == 1 || kicks == 2)) {
+            /* the kicks and drift_one in one vectorised pass, the velocity
+             * kept in registers between them: the same operations on each
+             * particle in the same order */
+            double *restrict x = nb->r[0], *restrict y = nb->r[1], *restrict z = nb->r[2];
+            const double *restrict x0 = nb->r0[0], *restrict y0 = nb->r0[1], *restrict z0 = nb->r0[2];
+            const int twice = kicks == 2;
+#pragma omp simd reduction(max : far)
+            for (size_t j = lo; j < hi; ++j) {
+                const double kx = h * (fx[j] + g0), ky = h * (fy[j] + g1), kz = h * (fz[j] + g2);
+                double ux = vx[j] + kx, uy = vy[j] + ky, uz = vz[j] + kz;
+                if (twice) {
+                    ux += kx;
+                    uy += ky;
+                    uz += kz;
+                }
+                vx[j] = ux;
+                vy[j] = uy;
+                vz[j] = uz;
+                const double px = x[j] + ux * dt, py = y[j] + uy * dt, pz = z[j] + uz * dt;
+                x[j] = px;
+                y[j] = py;
+                z[j] = pz;
+                const double a = px - x0[j], bb = py - y0[j], e = pz - z0[j];
+                const double d2 = a * a + bb * bb + e * e;
+                far = d2 > far ? d2 : far;
+            }
+            continue;
+        }
         for (int q = 0; q < kicks; ++q) {
-            double *restrict vx = v[0], *restrict vy = v[1], *restrict vz = v[2];
-            const double *restrict fx = F[0], *restrict fy = F[1], *restrict fz = F[2];
 #pragma omp simd
             for (size_t j = lo; j < hi; ++j) {
                 vx[j] += h * (fx[j] + g0);
@@ -547,7 +576,6 @@ double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_cou
         }
         if (dt > 0.0 && !g->any_walls && !nb->disp[0]) { /* drift_one, vectorised */
             double *restrict x = nb->r[0], *restrict y = nb->r[1], *restrict z = nb->r[2];
-            const double *restrict vx = v[0], *restrict vy = v[1], *restrict vz = v[2];
             const double *restrict x0 = nb->r0[0], *restrict y0 = nb->r0[1], *restrict z0 = nb->r0[2];
 #pragma omp simd reduction(max : far)
             for (size_t j = lo; j < hi; ++j) {
