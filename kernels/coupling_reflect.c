@@ -31,10 +31,15 @@
  * where it is and counted as a truncation.
  *
  * Race freedom and determinism: the detection pass is parallel over the
- * static chunks of the streaming; the reflections (few) then run serially in
+ * static chunks of the streaming; the reflections (few) then run in
  * particle order, each particle's cell moved in the histogram row of the
  * thread that streamed it, so the counting sort stays consistent and the
- * result is bitwise the same for any thread count.  Random numbers: Philox (seed,
+ * result is bitwise the same for any thread count.  Only the events on the
+ * same colloid depend on each other (each sees the velocity the one before
+ * left), so with several threads (and no walls) each thread takes the
+ * events of its block of colloids, in particle order (parallel_events);
+ * a particle reflected into a second colloid would tie two blocks, and the
+ * step then runs the serial loop instead.  Random numbers: Philox (seed,
  * PL_RNG_REFLECT), counter (step, particle index, reflection number); particle indices
  * are those of the last (thread-independent) counting sort. */
 #include <math.h>

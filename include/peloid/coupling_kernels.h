@@ -171,8 +171,9 @@ size_t pl_coupling_cell_candidates(const pl_grid_t *g, const pl_coupling_colloid
  * with candidates, when the fluid is still as the last sort left it: sorted
  * by collision cell under g->shift, cell c holding [cell_start[c],
  * cell_start[c + 1]); each particle tested against its cell's candidates
- * (found_cell: that cell).  Cost ~ the particles near colloids plus one
- * offset per cell, instead of every particle. */
+ * (found_cell: that cell, or an earlier one of the same run of cells with
+ * the same candidates: the same list).  Cost ~ the particles near colloids
+ * plus one offset per cell, instead of every particle. */
 void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
                              const uint32_t *cstart, const int32_t *clist, const uint32_t *cell_start,
                              int nthreads, uint32_t *found, uint32_t *found_cell, uint64_t *counts);
