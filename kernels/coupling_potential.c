@@ -176,17 +176,30 @@ size_t pl_coupling_cell_candidates(const pl_grid_t *g, const pl_coupling_colloid
     return cstart[ncells];
 }
 
+/* Whether collision cells a and b have the same candidate list. */
+static inline int same_candidates(const uint32_t *cstart, const int32_t *clist, size_t a, size_t b)
+{
+    const uint32_t na = cstart[a + 1] - cstart[a];
+    if (cstart[b + 1] - cstart[b] != na) return 0;
+    for (uint32_t e = 0; e < na; ++e)
+        if (clist[cstart[a] + e] != clist[cstart[b] + e]) return 0;
+    return 1;
+}
+
 void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
                              const uint32_t *cstart, const int32_t *clist, const uint32_t *cell_start,
                              int nthreads, uint32_t *found, uint32_t *found_cell, uint64_t *counts)
 {
     const image_box_t q = image_box(g->L, g->walls);
     const size_t ncells = g->ncells;
+    enum { RUN = 256 }; /* particles tested at a time */
 #pragma omp parallel num_threads(nthreads)
     {
         int t = omp_get_thread_num();
         size_t lo, hi, m = 0, np = 0;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
+        const double *restrict x = f->r[0], *restrict y = f->r[1], *restrict z = f->r[2];
+        int in[RUN];
         /* first cell ending after lo */
         size_t a = 0, b = ncells;
         while (a < b) {
@@ -194,18 +207,46 @@ void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
             if (cell_start[mid + 1] <= lo) a = mid + 1;
             else b = mid;
         }
-        for (size_t cl = a; cl < ncells && cell_start[cl] < hi; ++cl) {
-            const int32_t kb = (int32_t)cstart[cl], ke = (int32_t)cstart[cl + 1];
-            if (kb == ke) continue;
-            size_t i0 = cell_start[cl] > lo ? cell_start[cl] : lo;
-            size_t i1 = cell_start[cl + 1] < hi ? cell_start[cl + 1] : hi;
-            for (size_t i = i0; i < i1; ++i) {
-                const int in = near_count(&q, c, clist, kb, ke, f->r[0][i], f->r[1][i], f->r[2][i]);
-                found[lo + m] = (uint32_t)i;
-                found_cell[lo + m] = (uint32_t)cl;
-                m += (size_t)(in > 0);
-                np += (size_t)in;
+        /* runs of consecutive cells with the same candidates: one
+         * contiguous range of particles, tested candidate by candidate
+         * (vectorised over the particles), each listed with the run's
+         * first cell (the same candidates as its own) */
+        size_t cl = a;
+        while (cl < ncells && cell_start[cl] < hi) {
+            const uint32_t kb = cstart[cl], ke = cstart[cl + 1];
+            if (kb == ke) {
+                ++cl;
+                continue;
             }
+            size_t ce = cl + 1;
+            while (ce < ncells && cell_start[ce] < hi && same_candidates(cstart, clist, cl, ce)) ++ce;
+            const size_t i0 = cell_start[cl] > lo ? cell_start[cl] : lo;
+            const size_t i1 = cell_start[ce] < hi ? cell_start[ce] : hi;
+            for (size_t s = i0; s < i1; s += RUN) {
+                const size_t len = i1 - s < RUN ? i1 - s : RUN;
+                for (size_t u = 0; u < len; ++u) in[u] = 0;
+                for (uint32_t e = kb; e < ke; ++e) { /* hit(), with its operands in registers */
+                    const int32_t k = clist[e];
+                    const double cx = c->x[k], cy = c->y[k], cz = c->z[k], r2 = c->rad[k] * c->rad[k];
+                    const double h0 = q.h[0], h1 = q.h[1], h2 = q.h[2];
+                    const double L0 = q.L[0], L1 = q.L[1], L2 = q.L[2];
+#pragma omp simd
+                    for (size_t u = 0; u < len; ++u) {
+                        double dx = x[s + u] - cx, dy = y[s + u] - cy, dz = z[s + u] - cz;
+                        dx = dx > h0 ? dx - L0 : (dx < -h0 ? dx + L0 : dx);
+                        dy = dy > h1 ? dy - L1 : (dy < -h1 ? dy + L1 : dy);
+                        dz = dz > h2 ? dz - L2 : (dz < -h2 ? dz + L2 : dz);
+                        in[u] += dx * dx + dy * dy + dz * dz < r2;
+                    }
+                }
+                for (size_t u = 0; u < len; ++u) { /* branch-free append */
+                    found[lo + m] = (uint32_t)(s + u);
+                    found_cell[lo + m] = (uint32_t)cl;
+                    m += (size_t)(in[u] > 0);
+                    np += (size_t)in[u];
+                }
+            }
+            cl = ce;
         }
         counts[(size_t)t * 8 + 2] = m;
         counts[(size_t)t * 8 + 3] = np;
@@ -494,9 +535,38 @@ double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_cou
         pair_block(w, nb, c, lo, hi, partial + b * row, gx, gy, gz, ge);
         /* per particle, as pl_coupling_potential_kick (kicks times), then
          * pl_coupling_potential_drift */
+        double *restrict vx = v[0], *restrict vy = v[1], *restrict vz = v[2];
+        const double *restrict fx = F[0], *restrict fy = F[1], *restrict fz = F[2];
+        if (dt > 0.0 && !g->any_walls && !nb->disp[0] && (kicks == 1 || kicks == 2)) {
+            /* the kicks and drift_one in one vectorised pass, the velocity
+             * kept in registers between them: the same operations on each
+             * particle in the same order */
+            double *restrict x = nb->r[0], *restrict y = nb->r[1], *restrict z = nb->r[2];
+            const double *restrict x0 = nb->r0[0], *restrict y0 = nb->r0[1], *restrict z0 = nb->r0[2];
+            const int twice = kicks == 2;
+#pragma omp simd reduction(max : far)
+            for (size_t j = lo; j < hi; ++j) {
+                const double kx = h * (fx[j] + g0), ky = h * (fy[j] + g1), kz = h * (fz[j] + g2);
+                double ux = vx[j] + kx, uy = vy[j] + ky, uz = vz[j] + kz;
+                if (twice) {
+                    ux += kx;
+                    uy += ky;
+                    uz += kz;
+                }
+                vx[j] = ux;
+                vy[j] = uy;
+                vz[j] = uz;
+                const double px = x[j] + ux * dt, py = y[j] + uy * dt, pz = z[j] + uz * dt;
+                x[j] = px;
+                y[j] = py;
+                z[j] = pz;
+                const double a = px - x0[j], bb = py - y0[j], e = pz - z0[j];
+                const double d2 = a * a + bb * bb + e * e;
+                far = d2 > far ? d2 : far;
+            }
+            continue;
+        }
         for (int q = 0; q < kicks; ++q) {
-            double *restrict vx = v[0], *restrict vy = v[1], *restrict vz = v[2];
-            const double *restrict fx = F[0], *restrict fy = F[1], *restrict fz = F[2];
 #pragma omp simd
             for (size_t j = lo; j < hi; ++j) {
                 vx[j] += h * (fx[j] + g0);
@@ -506,7 +576,6 @@ double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_cou
         }
         if (dt > 0.0 && !g->any_walls && !nb->disp[0]) { /* drift_one, vectorised */
             double *restrict x = nb->r[0], *restrict y = nb->r[1], *restrict z = nb->r[2];
-            const double *restrict vx = v[0], *restrict vy = v[1], *restrict vz = v[2];
             const double *restrict x0 = nb->r0[0], *restrict y0 = nb->r0[1], *restrict z0 = nb->r0[2];
 #pragma omp simd reduction(max : far)
             for (size_t j = lo; j < hi; ++j) {
@@ -561,6 +630,10 @@ void pl_coupling_potential_gather(const pl_fluid_t *f, const pl_grid_t *g, const
              * the first, then the further ones */
             nb->pstart[j] = (uint32_t)p;
             const uint32_t cl = found_cell[lo + s];
+            if (cstart[cl + 1] - cstart[cl] == 1) { /* a listed particle with one candidate: its only pair */
+                nb->k0[j] = clist[cstart[cl]];
+                continue;
+            }
             int first = 1;
             for (uint32_t e = cstart[cl]; e < cstart[cl + 1]; ++e) {
                 const int32_t k = clist[e];

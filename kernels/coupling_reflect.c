@@ -31,10 +31,15 @@
  * where it is and counted as a truncation.
  *
  * Race freedom and determinism: the detection pass is parallel over the
- * static chunks of the streaming; the reflections (few) then run serially in
+ * static chunks of the streaming; the reflections (few) then run in
  * particle order, each particle's cell moved in the histogram row of the
  * thread that streamed it, so the counting sort stays consistent and the
- * result is bitwise the same for any thread count.  Random numbers: Philox (seed,
+ * result is bitwise the same for any thread count.  Only the events on the
+ * same colloid depend on each other (each sees the velocity the one before
+ * left), so with several threads (and no walls) each thread takes the
+ * events of its block of colloids, in particle order (parallel_events);
+ * a particle reflected into a second colloid would tie two blocks, and the
+ * step then runs the serial loop instead.  Random numbers: Philox (seed,
  * PL_RNG_REFLECT), counter (step, particle index, reflection number); particle indices
  * are those of the last (thread-independent) counting sort. */
 #include <math.h>
@@ -125,8 +130,9 @@ static void reflect_one(const pl_coupling1_params_t *prm, const pl_coupling_coll
 static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *prm,
                             const pl_coupling_colloids_t *c, double *const vel[6],
                             const uint32_t *cstart, const int32_t *clist, size_t i, int32_t k,
-                            double p[3], uint32_t *restrict h, uint64_t *restrict cnt)
+                            double p[3], uint32_t *restrict h, uint64_t *restrict cnt, int par)
 {
+    const int32_t k_first = k;
     const double L[3] = {g->L[0], g->L[1], g->L[2]};
     double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]};
     const double r_old[3] = {r[0], r[1], r[2]};
@@ -163,6 +169,10 @@ static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
         cnt[0]++;
         nref++;
         k = pl_coupling_inside_cells(c, g, cstart, clist, r, p);
+        /* par: events of other colloids run concurrently; one inside a
+         * second colloid would need that colloid's velocity at this point
+         * of the particle order (nothing of i written yet) */
+        if (par && k >= 0 && k != k_first && nref < prm->max_refl) return -1;
     }
     if (f->tracked)
         for (int d = 0; d < 3; ++d) {
@@ -175,16 +185,126 @@ static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
         f->v[d][i] = (pl_real)v[d];
     }
     uint32_t cell = pl_coupling_cell_of(g, f->r[0][i], f->r[1][i], f->r[2][i]);
-    h[f->cell[i]]--;
-    h[cell]++;
+    if (par) { /* rows shared between threads: integer counts, any order */
+#pragma omp atomic
+        h[f->cell[i]]--;
+#pragma omp atomic
+        h[cell]++;
+    } else {
+        h[f->cell[i]]--;
+        h[cell]++;
+    }
     f->cell[i] = cell;
     return k >= 0;
+}
+
+/* The events with the colloids split between the threads: thread t takes,
+ * in particle order, the particles found inside a colloid of its static
+ * block of colloids, so each colloid sees the same events in the same
+ * order as in the serial loop, with the same random numbers (keyed by
+ * step, particle, reflection).  A particle whose reflection puts it inside
+ * another colloid stops the pass: every particle handled is put back
+ * (saved state), the colloid velocities too, and the caller runs the serial
+ * loop.  Only without walls (no wall impulses to sum).  Returns 0 when done,
+ * -1 when it gave up. */
+static int parallel_events(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *prm,
+                           const pl_coupling_colloids_t *c, double *const vel[6], const uint32_t *cstart,
+                           const int32_t *clist, uint32_t *hist, int nthreads, const uint32_t *found,
+                           uint64_t *counts, pl_coupling1_scratch_t *sc)
+{
+    const size_t nc = c->n;
+    size_t total = 0;
+    for (int t = 0; t < nthreads; ++t) total += counts[(size_t)t * 8 + 2];
+    if (total > sc->cap || 6 * nc > sc->vcap) {
+        sc->need = total;
+        return -1;
+    }
+    for (int j = 0; j < 6; ++j) /* the colloid velocities before, to put back */
+        for (size_t k = 0; k < nc; ++k) sc->vsave[(size_t)j * nc + k] = vel[j][k];
+    int gave_up = 0;
+    uint64_t cnt[2] = {0, 0};
+#pragma omp parallel num_threads(nthreads) reduction(+ : cnt[:2])
+    {
+        /* the first colloid of each listed particle (flat list, particle
+         * order), in parallel */
+#pragma omp for schedule(static)
+        for (int t = 0; t < nthreads; ++t) {
+            size_t lo, hi, j = 0;
+            pl_chunk(f->n, t, nthreads, &lo, &hi);
+            for (int u = 0; u < t; ++u) j += counts[(size_t)u * 8 + 2];
+            for (size_t s = 0; s < counts[(size_t)t * 8 + 2]; ++s, ++j) {
+                const size_t i = found[lo + s];
+                const double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]};
+                double q[3];
+                sc->idx[j] = (uint32_t)i;
+                sc->owner[j] = t;
+                sc->k[j] = pl_coupling_inside_cells(c, g, cstart, clist, r, q);
+                sc->done[j] = 0;
+            }
+        }
+        const int T = omp_get_num_threads(), me = omp_get_thread_num();
+        const int32_t k0 = (int32_t)(nc * (size_t)me / (size_t)T), k1 = (int32_t)(nc * (size_t)(me + 1) / (size_t)T);
+        uint64_t mine[2] = {0, 0};
+        for (size_t j = 0; j < total; ++j) {
+            const int32_t k = sc->k[j];
+            if ((k < 0 ? 0 : k) < k0 || (k < 0 ? 0 : k) >= k1) continue; /* none (k < 0): colloid 0's thread */
+            int stop;
+#pragma omp atomic read
+            stop = gave_up;
+            if (stop) break;
+            const size_t i = sc->idx[j];
+            double *sv = sc->state + 7 * j;
+            for (int d = 0; d < 3; ++d) {
+                sv[d] = f->r[d][i];
+                sv[3 + d] = f->v[d][i];
+            }
+            sv[6] = (double)f->cell[i];
+            const double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]};
+            double q[3];
+            pl_coupling_inside_cells(c, g, cstart, clist, r, q);
+            const int rc = reflect_particle(f, g, prm, c, vel, cstart, clist, i, k, q,
+                                            hist + (size_t)sc->owner[j] * g->ncells, mine, 1);
+            if (rc < 0) {
+#pragma omp atomic write
+                gave_up = 1;
+                break;
+            }
+            sc->done[j] = 1;
+            mine[1] += (uint64_t)rc;
+        }
+        cnt[0] += mine[0];
+        cnt[1] += mine[1];
+    }
+    if (!gave_up) {
+        counts[0] = cnt[0];
+        counts[1] = cnt[1];
+        sc->parallel++;
+        return 0;
+    }
+    sc->gave_up++;
+    /* put back what was done (disp is not tracked: see the caller) */
+    for (size_t j = 0; j < total; ++j) {
+        if (!sc->done[j]) continue;
+        const size_t i = sc->idx[j];
+        const double *sv = sc->state + 7 * j;
+        uint32_t *h = hist + (size_t)sc->owner[j] * g->ncells;
+        for (int d = 0; d < 3; ++d) {
+            f->r[d][i] = (pl_real)sv[d];
+            f->v[d][i] = (pl_real)sv[3 + d];
+        }
+        h[f->cell[i]]--;
+        f->cell[i] = (uint32_t)sv[6];
+        h[f->cell[i]]++;
+    }
+    for (int j = 0; j < 6; ++j)
+        for (size_t k = 0; k < nc; ++k) vel[j][k] = sc->vsave[(size_t)j * nc + k];
+    return -1;
 }
 
 void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *p,
                           const pl_coupling_colloids_t *c, double *const vel[6],
                           const uint32_t *cstart, const int32_t *clist, uint32_t *hist, int nthreads,
-                          uint32_t *found, uint64_t *counts)
+                          uint32_t *found, uint64_t *counts, pl_coupling1_scratch_t *sc)
 {
     /* Detection, in parallel: thread t lists the particles of its static
      * chunk (the one of the streaming) found inside a colloid, from the
@@ -196,6 +316,9 @@ void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_
      * stale velocity light colloids would overheat), and the order does not
      * depend on the thread count. */
     counts[0] = counts[1] = 0;
+    if (sc && nthreads > 1 && !g->any_walls && !f->tracked && !p->wall_acc && c->n >= 2 &&
+        !parallel_events(f, g, p, c, vel, cstart, clist, hist, nthreads, found, counts, sc))
+        return;
     for (int t = 0; t < nthreads; ++t) {
         size_t lo, hi;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
@@ -205,7 +328,7 @@ void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_
             double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, q[3];
             int32_t k = pl_coupling_inside_cells(c, g, cstart, clist, r, q);
             counts[1] += (uint64_t)reflect_particle(f, g, p, c, vel, cstart, clist, i, k, q, h,
-                                                    counts);
+                                                    counts, 0);
         }
     }
 }

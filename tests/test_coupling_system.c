@@ -273,3 +273,52 @@ Test(coupling_system, potential_counts_margin_exceeded, .timeout = 120)
     cr_expect_gt(b->coupling->pot->force_calls, 0);
     pl_sim_free(b);
 }
+
+/* Coupling I's events in parallel over blocks of colloids (more than one
+ * thread, periodic box) give the serial loop's bits: fluid and colloids
+ * after 8 steps at 1, 2 and 3 threads, on a lattice (the parallel pass runs
+ * every step after the first) and on a dense random suspension (particles
+ * reflected into a second colloid: the pass may give up and the serial loop
+ * runs; either way the same bits). */
+Test(coupling_system, reflect_events_parallel_equal_serial, .timeout = 120)
+{
+    const char *tails[2] = {
+        "colloids: { count = 8; radius = 2.0; mass_density = 5.0; temperature = 1.0; init = \"lattice\";\n"
+        "  pairs = \"hertz\"; substeps = 4; };\n",
+        "colloids: { count = 14; radius = 2.0; mass_density = 5.0; temperature = 1.0; init = \"random\";\n"
+        "  pairs = \"hertz\"; substeps = 4; };\n"};
+    for (int s = 0; s < 2; ++s) {
+        char text[1024];
+        snprintf(text, sizeof text,
+                 "seed = 5;\nbox: { cells = [12, 12, 12]; };\nfluid: { density = 5.0; temperature = 1.0; };\n"
+                 "srd: { dt = 0.1; };\n%scoupling: { method = \"hecht1\"; boundary = \"stick_stochastic\";\n"
+                 "  placement = \"entry\"; max_reflections = 4; };\n",
+                 tails[s]);
+        pl_sim_t *sim[3];
+        for (int t = 0; t < 3; ++t) {
+            sim[t] = pl_test_sim(text, t + 1);
+            pl_test_steps(sim[t], 8);
+        }
+        const pl_coupling1_scratch_t *sc = &sim[1]->coupling->c1->events_scratch;
+        if (s == 0) cr_expect_geq(sc->parallel, 7, "parallel event passes: %llu of 8 steps", sc->parallel);
+        cr_expect_gt(sim[0]->coupling->c1->events, 0, "scene %d: no reflection", s);
+        for (int t = 1; t < 3; ++t) {
+            const pl_fluid_t *a = &sim[0]->fluid, *b = &sim[t]->fluid;
+            for (int d = 0; d < 3; ++d) {
+                cr_assert(same(a->r[d], b->r[d], a->n * sizeof *a->r[d]), "scene %d, %d threads: positions differ", s,
+                          t + 1);
+                cr_assert(same(a->v[d], b->v[d], a->n * sizeof *a->v[d]), "scene %d, %d threads: velocities differ", s,
+                          t + 1);
+            }
+            const pl_colloid_t *ca = sim[0]->colloids, *cb = sim[t]->colloids;
+            cr_assert(same(ca->vx, cb->vx, ca->n * sizeof *ca->vx) && same(ca->wz, cb->wz, ca->n * sizeof *ca->wz) &&
+                          same(ca->x, cb->x, ca->n * sizeof *ca->x),
+                      "scene %d, %d threads: colloids differ", s, t + 1);
+            cr_assert_eq(sim[0]->coupling->c1->events, sim[t]->coupling->c1->events);
+            cr_assert_eq(sim[0]->coupling->c1->truncations, sim[t]->coupling->c1->truncations);
+        }
+        fprintf(stderr, "reflect_events_parallel: scene %d: %llu events, 2 threads: %llu parallel passes, %llu given up\n",
+                s, sim[0]->coupling->c1->events, sc->parallel, sc->gave_up);
+        for (int t = 0; t < 3; ++t) pl_sim_free(sim[t]);
+    }
+}

@@ -51,6 +51,7 @@ typedef struct pl_coupling1_state {
     double *gap_buf;     /* as many (scratch) */
     uint32_t *found;     /* fluid n: particles found inside (scratch) */
     uint64_t *counts;    /* nthreads x 8 */
+    pl_coupling1_scratch_t events_scratch; /* the events in parallel (grown as needed) */
     unsigned long long events, truncations; /* since the start of this run */
 } pl_coupling1_state_t;
 

@@ -88,9 +88,27 @@ typedef struct {
  * as in the streaming) are updated, so the counting sort that follows stays
  * consistent.  found: n scratch indices.  counts[0] events (reflections),
  * counts[1] truncations (still inside after max_refl). */
+typedef struct {
+    size_t cap;       /* particles found inside that idx, owner, k, done, state hold */
+    size_t vcap;      /* doubles of vsave (6 x colloids) */
+    size_t need;      /* set when cap was too small for this step's events */
+    uint32_t *idx;    /* cap each: the particle, its streaming thread, first colloid, */
+    int32_t *owner;   /* whether its events are done, and */
+    int32_t *k;
+    unsigned char *done;
+    double *state;    /* 7 x cap: its r, v and cell before them */
+    double *vsave;    /* vcap: the colloid velocities before the events */
+    unsigned long long parallel, gave_up; /* steps done in parallel; given up (a second colloid) */
+} pl_coupling1_scratch_t;
+
+/* sc (NULL: serial only): scratch for the events in parallel (more than
+ * one thread, two or more colloids, no walls, no displacement tracking);
+ * too small for a step's events (sc->need then says how many) that step
+ * runs serially.  The result is the same bits either way. */
 void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *p,
                           const pl_coupling_colloids_t *c, double *const vel[6], const uint32_t *cstart,
-                          const int32_t *clist, uint32_t *hist, int nthreads, uint32_t *found, uint64_t *counts);
+                          const int32_t *clist, uint32_t *hist, int nthreads, uint32_t *found, uint64_t *counts,
+                          pl_coupling1_scratch_t *sc);
 
 /* ---- coupling II: colloids in the collision (coupling_collide.c) ------- */
 typedef struct {
@@ -153,8 +171,9 @@ size_t pl_coupling_cell_candidates(const pl_grid_t *g, const pl_coupling_colloid
  * with candidates, when the fluid is still as the last sort left it: sorted
  * by collision cell under g->shift, cell c holding [cell_start[c],
  * cell_start[c + 1]); each particle tested against its cell's candidates
- * (found_cell: that cell).  Cost ~ the particles near colloids plus one
- * offset per cell, instead of every particle. */
+ * (found_cell: that cell, or an earlier one of the same run of cells with
+ * the same candidates: the same list).  Cost ~ the particles near colloids
+ * plus one offset per cell, instead of every particle. */
 void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
                              const uint32_t *cstart, const int32_t *clist, const uint32_t *cell_start,
                              int nthreads, uint32_t *found, uint32_t *found_cell, uint64_t *counts);

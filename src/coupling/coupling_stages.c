@@ -45,6 +45,42 @@ int pl_coupling1_create(const pl_coupling_t *cp, const pl_sim_t *sim, pl_couplin
     return 0;
 }
 
+static void scratch_free(pl_coupling1_scratch_t *sc)
+{
+    free(sc->idx);
+    free(sc->owner);
+    free(sc->k);
+    free(sc->done);
+    free(sc->state);
+    free(sc->vsave);
+    const unsigned long long par = sc->parallel, gave = sc->gave_up;
+    memset(sc, 0, sizeof *sc);
+    sc->parallel = par;
+    sc->gave_up = gave;
+}
+
+/* Room for n particles' events and nc colloids (0: out of memory; the
+ * events then run serially, the same bits). */
+static int scratch_grow(pl_coupling1_scratch_t *sc, size_t n, size_t nc)
+{
+    if (n <= sc->cap && 6 * nc <= sc->vcap) return 1;
+    scratch_free(sc);
+    const size_t cap = n + n / 2 + 256;
+    sc->idx = malloc(cap * sizeof *sc->idx);
+    sc->owner = malloc(cap * sizeof *sc->owner);
+    sc->k = malloc(cap * sizeof *sc->k);
+    sc->done = malloc(cap);
+    sc->state = malloc(7 * cap * sizeof *sc->state);
+    sc->vsave = malloc((6 * nc + 1) * sizeof *sc->vsave);
+    if (!sc->idx || !sc->owner || !sc->k || !sc->done || !sc->state || !sc->vsave) {
+        scratch_free(sc);
+        return 0;
+    }
+    sc->cap = cap;
+    sc->vcap = 6 * nc;
+    return 1;
+}
+
 void pl_coupling1_free(pl_coupling1_state_t *s)
 {
     if (!s) return;
@@ -52,6 +88,7 @@ void pl_coupling1_free(pl_coupling1_state_t *s)
     pl_free(s->found);
     pl_free(s->counts);
     pl_free(s->cstart);
+    scratch_free(&s->events_scratch);
     free(s->clist);
     free(s->axis_buf);
     free(s->gap_buf);
@@ -80,8 +117,12 @@ int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
     double *const vel[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
     int64_t wall[PL_WALL_ACC_N] = {0};
     s->p.wall_acc = sim->wall_acc ? wall : NULL;
+    pl_coupling1_scratch_t *sc = &s->events_scratch;
+    sc->need = 0;
     pl_coupling1_reflect(&sim->fluid, &sim->grid, &s->p, &v, vel, s->cstart, s->clist, sim->hist, cp->nthreads,
-                         s->found, s->counts);
+                         s->found, s->counts, sc);
+    if (sc->need || sc->vcap < 6 * c->n) /* room for the next step's events (else serial) */
+        scratch_grow(sc, sc->need, c->n);
     s->p.wall_acc = NULL;
     if (sim->wall_acc) pl_sim_wall_add(sim, wall);
     s->events += s->counts[0];
