@@ -544,25 +544,33 @@ double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_cou
             double *restrict x = nb->r[0], *restrict y = nb->r[1], *restrict z = nb->r[2];
             const double *restrict x0 = nb->r0[0], *restrict y0 = nb->r0[1], *restrict z0 = nb->r0[2];
             const int twice = kicks == 2;
-#pragma omp simd reduction(max : far)
-            for (size_t j = lo; j < hi; ++j) {
-                const double kx = h * (fx[j] + g0), ky = h * (fy[j] + g1), kz = h * (fz[j] + g2);
-                double ux = vx[j] + kx, uy = vy[j] + ky, uz = vz[j] + kz;
-                if (twice) {
-                    ux += kx;
-                    uy += ky;
-                    uz += kz;
+            /* the squared displacements of a chunk go to a buffer and their
+             * maximum is taken after the vectorised loop (clang does not
+             * vectorise the max inside it) */
+            enum { CH = 256 };
+            double d2b[CH];
+            for (size_t j0 = lo; j0 < hi; j0 += CH) {
+                const size_t j1 = hi - j0 < CH ? hi : j0 + CH;
+#pragma omp simd
+                for (size_t j = j0; j < j1; ++j) {
+                    const double kx = h * (fx[j] + g0), ky = h * (fy[j] + g1), kz = h * (fz[j] + g2);
+                    double ux = vx[j] + kx, uy = vy[j] + ky, uz = vz[j] + kz;
+                    if (twice) {
+                        ux += kx;
+                        uy += ky;
+                        uz += kz;
+                    }
+                    vx[j] = ux;
+                    vy[j] = uy;
+                    vz[j] = uz;
+                    const double px = x[j] + ux * dt, py = y[j] + uy * dt, pz = z[j] + uz * dt;
+                    x[j] = px;
+                    y[j] = py;
+                    z[j] = pz;
+                    const double a = px - x0[j], bb = py - y0[j], e = pz - z0[j];
+                    d2b[j - j0] = a * a + bb * bb + e * e;
                 }
-                vx[j] = ux;
-                vy[j] = uy;
-                vz[j] = uz;
-                const double px = x[j] + ux * dt, py = y[j] + uy * dt, pz = z[j] + uz * dt;
-                x[j] = px;
-                y[j] = py;
-                z[j] = pz;
-                const double a = px - x0[j], bb = py - y0[j], e = pz - z0[j];
-                const double d2 = a * a + bb * bb + e * e;
-                far = d2 > far ? d2 : far;
+                for (size_t k = 0; k < j1 - j0; ++k) far = d2b[k] > far ? d2b[k] : far;
             }
             continue;
         }
