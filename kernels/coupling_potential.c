@@ -198,7 +198,7 @@ void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
         int t = omp_get_thread_num();
         size_t lo, hi, m = 0, np = 0;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
-        const double *restrict x = f->r[0], *restrict y = f->r[1], *restrict z = f->r[2];
+        const pl_real *restrict x = f->r[0], *restrict y = f->r[1], *restrict z = f->r[2];
         int in[RUN];
         /* first cell ending after lo */
         size_t a = 0, b = ncells;
