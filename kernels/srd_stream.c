@@ -38,6 +38,30 @@ static inline __attribute__((always_inline)) void moved_range(pl_fluid_t *f, con
 /* Whether a and b have the same bits (-0.0 and +0.0 differ). */
 static inline int same_bits(pl_real a, pl_real b) { return !memcmp(&a, &b, sizeof a); }
 
+/* The periodic box without tracking, in blocks: drift, store, bin.
+ * kick_free (a literal at each call): store a velocity only where its bits
+ * changed (see the caller). */
+static inline __attribute__((always_inline)) void periodic_blocks(
+    const pl_drift_t *c, pl_real *restrict x, pl_real *restrict y, pl_real *restrict z,
+    pl_real *restrict vx, pl_real *restrict vy, pl_real *restrict vz, uint32_t *restrict cell,
+    uint32_t *restrict h, size_t lo, size_t hi, const int kick_free)
+{
+    double rb[3][PL_DRIFT_BLOCK], vb[3][PL_DRIFT_BLOCK];
+    uint32_t cb[PL_DRIFT_BLOCK];
+    pl_real *const v[3] = {vx, vy, vz};
+    for (size_t i = lo; i < hi; i += PL_DRIFT_BLOCK) {
+        const size_t m = hi - i < PL_DRIFT_BLOCK ? hi - i : PL_DRIFT_BLOCK;
+        pl_drift_block_periodic(c, x + i, y + i, z + i, vx + i, vy + i, vz + i, m, rb, vb, cb);
+        for (size_t k = 0; k < m; ++k) {
+            x[i + k] = (pl_real)rb[0][k]; y[i + k] = (pl_real)rb[1][k]; z[i + k] = (pl_real)rb[2][k];
+            for (int d = 0; d < 3; ++d)
+                if (!kick_free || !same_bits((pl_real)vb[d][k], v[d][i + k])) v[d][i + k] = (pl_real)vb[d][k];
+            cell[i + k] = cb[k];
+            h[cb[k]]++;
+        }
+    }
+}
+
 /* mode: 0 = bin only, 1 = drift + store + bin, 2 = count the drifted cell
  * without storing anything but the histogram. */
 static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict h, size_t lo,
@@ -64,40 +88,15 @@ static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict 
         return;
     }
     const int tracked = f->tracked && mode == 1;
-    if (!tracked && !c->walls && c->a[0] == 0.0 && c->a[1] == 0.0 && c->a[2] == 0.0) {
+    if (!tracked && !c->walls) {
         /* No body force: the kick v + 0 leaves every velocity as it is
          * except -0.0 (which becomes +0.0), so v is stored only where its
          * bits change: the velocity arrays are read, not written back
          * (24 B per particle less, and no dirty lines to write back). */
-        double rb[3][PL_DRIFT_BLOCK], vb[3][PL_DRIFT_BLOCK];
-        uint32_t cb[PL_DRIFT_BLOCK];
-        for (size_t i = lo; i < hi; i += PL_DRIFT_BLOCK) {
-            const size_t m = hi - i < PL_DRIFT_BLOCK ? hi - i : PL_DRIFT_BLOCK;
-            pl_drift_block_periodic(c, x + i, y + i, z + i, vx + i, vy + i, vz + i, m, rb, vb, cb);
-            for (size_t k = 0; k < m; ++k) {
-                x[i + k] = (pl_real)rb[0][k]; y[i + k] = (pl_real)rb[1][k]; z[i + k] = (pl_real)rb[2][k];
-                if (!same_bits((pl_real)vb[0][k], vx[i + k])) vx[i + k] = (pl_real)vb[0][k];
-                if (!same_bits((pl_real)vb[1][k], vy[i + k])) vy[i + k] = (pl_real)vb[1][k];
-                if (!same_bits((pl_real)vb[2][k], vz[i + k])) vz[i + k] = (pl_real)vb[2][k];
-                cell[i + k] = cb[k];
-                h[cb[k]]++;
-            }
-        }
-        return;
-    }
-    if (!tracked && !c->walls) {
-        double rb[3][PL_DRIFT_BLOCK], vb[3][PL_DRIFT_BLOCK];
-        uint32_t cb[PL_DRIFT_BLOCK];
-        for (size_t i = lo; i < hi; i += PL_DRIFT_BLOCK) {
-            const size_t m = hi - i < PL_DRIFT_BLOCK ? hi - i : PL_DRIFT_BLOCK;
-            pl_drift_block_periodic(c, x + i, y + i, z + i, vx + i, vy + i, vz + i, m, rb, vb, cb);
-            for (size_t k = 0; k < m; ++k) {
-                x[i + k] = (pl_real)rb[0][k]; y[i + k] = (pl_real)rb[1][k]; z[i + k] = (pl_real)rb[2][k];
-                vx[i + k] = (pl_real)vb[0][k]; vy[i + k] = (pl_real)vb[1][k]; vz[i + k] = (pl_real)vb[2][k];
-                cell[i + k] = cb[k];
-                h[cb[k]]++;
-            }
-        }
+        if (c->a[0] == 0.0 && c->a[1] == 0.0 && c->a[2] == 0.0)
+            periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 1);
+        else
+            periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 0);
         return;
     }
     /* the common wall layouts with their closed axes as constants */
