@@ -283,6 +283,50 @@ void pl_coupling_find_binned(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
     }
 }
 
+void pl_coupling_find_block(void *ctx, int t, size_t lo, size_t hi)
+{
+    const pl_coupling_find_ctx_t *x = ctx;
+    const pl_fluid_t *f = x->f;
+    const image_box_t q = image_box(x->g->L, x->g->walls);
+    const uint32_t *restrict cell = f->cell, *restrict cstart = x->cstart;
+    const uint64_t *restrict mask = x->mask;
+    size_t clo, chi;
+    pl_chunk(f->n, t, x->nthreads, &clo, &chi);
+    uint32_t *restrict out = x->found + clo;
+    uint64_t *cnt = x->counts + (size_t)t * 8;
+    /* the steps of pl_coupling_find_binned on [lo, hi), appended after what
+     * the chunk's earlier blocks left; the cells with candidates from a bit
+     * per cell (4 KiB at L = 32: stays in L1 while the streaming passes
+     * megabytes through, where the offsets cstart would come from memory) */
+    const size_t m0 = cnt[2];
+    size_t m = m0, in = m0, np = cnt[3];
+    for (size_t i = lo; i < hi; ++i) {
+        const uint32_t cl = cell[i];
+        out[m] = (uint32_t)i;
+        m += (size_t)((mask[cl >> 6] >> (cl & 63)) & 1u);
+    }
+    for (size_t s = m0; s < m; ++s) {
+        const size_t i = out[s], cl = cell[i];
+        const int k = near_count(&q, &x->c, x->clist, (int32_t)cstart[cl], (int32_t)cstart[cl + 1], f->r[0][i],
+                                 f->r[1][i], f->r[2][i]);
+        out[in] = (uint32_t)i;
+        in += (size_t)(k > 0);
+        np += (size_t)k;
+    }
+    cnt[2] = in;
+    cnt[3] = np;
+}
+
+void pl_coupling_cell_mask(const uint32_t *cstart, size_t ncells, uint64_t *mask)
+{
+    for (size_t w = 0; w < (ncells + 63) / 64; ++w) {
+        uint64_t b = 0;
+        const size_t e = ncells - 64 * w < 64 ? ncells - 64 * w : 64;
+        for (size_t j = 0; j < e; ++j) b |= (uint64_t)(cstart[64 * w + j + 1] != cstart[64 * w + j]) << j;
+        mask[w] = b;
+    }
+}
+
 size_t pl_coupling_wca_blocks(size_t nn, size_t ncolloids)
 {
     enum { BLOCK = 2048 };

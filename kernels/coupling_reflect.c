@@ -30,8 +30,10 @@
  * N_max times (Hecht Sec. IV); a particle still inside after that is left
  * where it is and counted as a truncation.
  *
- * Race freedom and determinism: the detection pass is parallel over the
- * static chunks of the streaming; the reflections (few) then run in
+ * Race freedom and determinism: the detection is parallel over the
+ * static chunks of the streaming (normally inside the streaming itself,
+ * pl_coupling_find_block on each block just streamed: the same list, see
+ * src/coupling/coupling_stages.c); the reflections (few) then run in
  * particle order, each particle's cell moved in the histogram row of the
  * thread that streamed it, so the counting sort stays consistent and the
  * result is bitwise the same for any thread count.  Only the events on the
@@ -319,13 +321,13 @@ static int parallel_events(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1
 void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *p,
                           const pl_coupling_colloids_t *c, double *const vel[6],
                           const uint32_t *cstart, const int32_t *clist, uint32_t *hist, int nthreads,
-                          uint32_t *found, uint64_t *counts, pl_coupling1_scratch_t *sc)
+                          uint32_t *found, uint64_t *counts, pl_coupling1_scratch_t *sc, int detected)
 {
     /* Detection, in parallel: thread t lists the particles of its static
      * chunk (the one of the streaming) found inside a colloid, from the
      * cells the streaming binned them into (the colloids near each cell:
-     * cstart, clist). */
-    pl_coupling_find_binned(f, g, c, cstart, clist, nthreads, found, counts);
+     * cstart, clist); usually done inside the streaming already. */
+    if (!detected) pl_coupling_find_binned(f, g, c, cstart, clist, nthreads, found, counts);
     /* The events, serially in particle order: each sees the colloid velocity
      * left by the one before (collisions are sequential impulses; with a
      * stale velocity light colloids would overheat), and the order does not
