@@ -164,11 +164,12 @@ void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
                       uint32_t *found, uint32_t *found_cell, uint64_t *counts);
 /* CSR lists (cstart[0 .. ncells], clist), in index order, of the colloids
  * whose sphere (radius c->rad + 1e-6 a0) can reach each collision cell
- * under g->shift.  cstart: g->ncells + 2 entries, axis_buf: n[0] + n[1] +
- * n[2] ints, gap_buf as many doubles (scratch).  Returns the number of list
- * entries needed; fills clist only when that is <= cap. */
+ * under g->shift.  cstart: g->ncells + 2 entries, axis_buf: nthreads x
+ * (n[0] + n[1] + n[2]) ints, gap_buf as many doubles (scratch).  Returns
+ * the number of list entries needed; fills clist only when that is <= cap.
+ * Parallel over slabs of z planes: the same lists for any thread count. */
 size_t pl_coupling_cell_candidates(const pl_grid_t *g, const pl_coupling_colloids_t *c, int *axis_buf,
-                                   double *gap_buf, uint32_t *cstart, int32_t *clist, size_t cap);
+                                   double *gap_buf, uint32_t *cstart, int32_t *clist, size_t cap, int nthreads);
 /* The same list (and pair counts) from the particles of the collision cells
  * with candidates, when the fluid is still as the last sort left it: sorted
  * by collision cell under g->shift, cell c holding [cell_start[c],

@@ -34,8 +34,8 @@ int pl_coupling1_create(const pl_coupling_t *cp, const pl_sim_t *sim, pl_couplin
     s->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t), cp->nthreads);
     s->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t), cp->nthreads);
     s->cstart = pl_alloc((sim->grid.ncells + 2) * sizeof(uint32_t), cp->nthreads);
-    s->axis_buf = malloc((size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(int));
-    s->gap_buf = malloc((size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(double));
+    s->axis_buf = malloc((size_t)cp->nthreads * (size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(int));
+    s->gap_buf = malloc((size_t)cp->nthreads * (size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(double));
     s->cell_mask = malloc((sim->grid.ncells + 63) / 64 * sizeof(uint64_t) + 8);
     if (!rc && (!s->found || !s->counts || !s->cstart || !s->axis_buf || !s->gap_buf || !s->cell_mask))
         rc = pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling");
@@ -101,10 +101,11 @@ void pl_coupling1_free(pl_coupling1_state_t *s)
 /* The colloids near each collision cell under the shift of g (cstart,
  * clist). */
 static int cell_candidates(pl_coupling1_state_t *s, const pl_grid_t *g, const pl_coupling_colloids_t *v,
-                           pl_err_t *err)
+                           int nthreads, pl_err_t *err)
 {
     for (;;) {
-        size_t need = pl_coupling_cell_candidates(g, v, s->axis_buf, s->gap_buf, s->cstart, s->clist, s->clist_cap);
+        size_t need = pl_coupling_cell_candidates(g, v, s->axis_buf, s->gap_buf, s->cstart, s->clist, s->clist_cap,
+                                                  nthreads);
         if (need <= s->clist_cap) return 0;
         free(s->clist);
         s->clist_cap = need + need / 2 + 256;
@@ -128,7 +129,7 @@ int pl_coupling_stage_reflect_cells(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_grid_t g = sim->grid;
     pl_grid_draw_shift(&g, (uint64_t)sc->run.seed, (uint64_t)sim->step, sc->srd.grid_shift);
     const pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
-    int rc = cell_candidates(s, &g, &v, err);
+    int rc = cell_candidates(s, &g, &v, sim->nthreads, err);
     if (rc) return rc;
     pl_coupling_cell_mask(s->cstart, g.ncells, s->cell_mask);
     memset(s->counts, 0, (size_t)sim->nthreads * 8 * sizeof *s->counts);
@@ -157,7 +158,7 @@ int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
     const int detected = s->armed_step == sim->step && !sim->stream_hook;
     s->armed_step = -1;
     if (!detected) {
-        int rc = cell_candidates(s, &sim->grid, &v, err);
+        int rc = cell_candidates(s, &sim->grid, &v, cp->nthreads, err);
         if (rc) return rc;
     }
     double *const vel[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
