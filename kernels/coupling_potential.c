@@ -113,7 +113,7 @@ void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
  * x to each cell along the axis (0 for the cells that hold x, for the
  * outer cells of a closed axis, which hold what lies beyond them, and for
  * every cell once the span covers a periodic axis). */
-static int axis_cells(double x, double R, double s, int n, int periodic, int *idx, double *gap2)
+static inline int axis_cells(double x, double R, double s, int n, int periodic, int *idx, double *gap2)
 {
     const double eps = 1e-6;
     int lo = (int)floor(x - R - eps - s), hi = (int)floor(x + R + eps - s);
@@ -138,42 +138,90 @@ static int axis_cells(double x, double R, double s, int n, int periodic, int *id
     return m;
 }
 
-size_t pl_coupling_cell_candidates(const pl_grid_t *g, const pl_coupling_colloids_t *c, int *axis_buf,
-                                   double *gap_buf, uint32_t *cstart, int32_t *clist, size_t cap)
+/* The candidate cells of colloid k in the z planes [zlo, zhi): pass 0
+ * counts them (cstart[cl + 2]), pass 1 appends k (cstart[cl + 1] the fill
+ * position). */
+static inline void candidate_cells(const pl_grid_t *g, const pl_coupling_colloids_t *c, size_t k, int pass,
+                                   size_t zlo, size_t zhi, int *const ax[3], double *const gp[3],
+                                   uint32_t *cstart, int32_t *clist)
 {
-    const size_t ncells = g->ncells;
-    int *ax[3] = {axis_buf, axis_buf + g->n[0], axis_buf + g->n[0] + g->n[1]};
-    double *gp[3] = {gap_buf, gap_buf + g->n[0], gap_buf + g->n[0] + g->n[1]};
-    /* counts of cell cl in cstart[cl + 2]; their running sum then leaves
-     * the start of cl in cstart[cl + 1], which the filling advances to its
-     * end = the start of cl + 1 (serial: colloids are few).  A cell is a
-     * candidate's if the sphere (radius + 1e-6) reaches it: about half the
-     * cells of the sphere's bounding box. */
-    memset(cstart, 0, (ncells + 2) * sizeof *cstart);
-    for (int pass = 0; pass < 2; ++pass) {
-        for (size_t k = 0; k < c->n; ++k) {
-            const double r[3] = {c->x[k], c->y[k], c->z[k]}, R = c->rad[k] + 1e-6;
-            int m[3];
-            for (int d = 0; d < 3; ++d)
-                m[d] = axis_cells(r[d], c->rad[k], g->shift[d], g->n[d], g->walls[d] == PL_WALLS_NONE, ax[d], gp[d]);
-            for (int a = 0; a < m[2]; ++a)
-                for (int b = 0; b < m[1]; ++b) {
-                    const double g2 = gp[2][a] + gp[1][b];
-                    if (!(g2 < R * R)) continue;
-                    const size_t row = ((size_t)ax[2][a] * (size_t)g->n[1] + (size_t)ax[1][b]) * (size_t)g->n[0];
-                    for (int e = 0; e < m[0]; ++e) {
-                        if (!(g2 + gp[0][e] < R * R)) continue;
-                        if (pass == 0) cstart[row + (size_t)ax[0][e] + 2]++;
-                        else clist[cstart[row + (size_t)ax[0][e] + 1]++] = (int32_t)k;
-                    }
-                }
-        }
-        if (pass == 0) {
-            for (size_t i = 2; i < ncells + 2; ++i) cstart[i] += cstart[i - 1];
-            if (cstart[ncells + 1] > cap) return cstart[ncells + 1];
+    const double r[3] = {c->x[k], c->y[k], c->z[k]}, R = c->rad[k] + 1e-6;
+    int m[3];
+    m[2] = axis_cells(r[2], c->rad[k], g->shift[2], g->n[2], g->walls[2] == PL_WALLS_NONE, ax[2], gp[2]);
+    int any = 0;
+    for (int a = 0; a < m[2]; ++a) any |= (size_t)ax[2][a] >= zlo && (size_t)ax[2][a] < zhi;
+    if (!any) return;
+    for (int d = 0; d < 2; ++d)
+        m[d] = axis_cells(r[d], c->rad[k], g->shift[d], g->n[d], g->walls[d] == PL_WALLS_NONE, ax[d], gp[d]);
+    for (int a = 0; a < m[2]; ++a) {
+        if ((size_t)ax[2][a] < zlo || (size_t)ax[2][a] >= zhi) continue;
+        for (int b = 0; b < m[1]; ++b) {
+            const double g2 = gp[2][a] + gp[1][b];
+            if (!(g2 < R * R)) continue;
+            const size_t row = ((size_t)ax[2][a] * (size_t)g->n[1] + (size_t)ax[1][b]) * (size_t)g->n[0];
+            for (int e = 0; e < m[0]; ++e) {
+                if (!(g2 + gp[0][e] < R * R)) continue;
+                if (pass == 0) cstart[row + (size_t)ax[0][e] + 2]++;
+                else clist[cstart[row + (size_t)ax[0][e] + 1]++] = (int32_t)k;
+            }
         }
     }
-    return cstart[ncells];
+}
+
+enum { CAND_MAX_THREADS = 256 };
+
+size_t pl_coupling_cell_candidates(const pl_grid_t *g, const pl_coupling_colloids_t *c, int *axis_buf,
+                                   double *gap_buf, uint32_t *cstart, int32_t *clist, size_t cap, int nthreads)
+{
+    const size_t plane = (size_t)g->n[0] * (size_t)g->n[1];
+    const size_t nbuf = (size_t)g->n[0] + (size_t)g->n[1] + (size_t)g->n[2];
+    if (nthreads > CAND_MAX_THREADS) nthreads = CAND_MAX_THREADS;
+    if (nthreads > g->n[2]) nthreads = g->n[2];
+    if (nthreads < 1) nthreads = 1;
+    uint32_t part[CAND_MAX_THREADS + 1];
+    size_t need = 0;
+    /* counts of cell cl in cstart[cl + 2]; their running sum then leaves
+     * the start of cl in cstart[cl + 1], which the filling advances to its
+     * end = the start of cl + 1.  A cell is a candidate's if the sphere
+     * (radius + 1e-6) reaches it: about half the cells of the sphere's
+     * bounding box.  In parallel over slabs of z planes (the arrays are
+     * cold here, the streaming passed megabytes since): thread t counts,
+     * sums and fills the cells of its planes, every colloid in index order,
+     * so each cell's list is the serial loop's; its running sum is offset
+     * by the slabs before (integers: the same for any thread count). */
+#pragma omp parallel num_threads(nthreads)
+    {
+        const int t = omp_get_thread_num(), T = omp_get_num_threads();
+        size_t zlo, zhi;
+        pl_chunk((size_t)g->n[2], t, T, &zlo, &zhi);
+        const size_t clo = zlo * plane, chi = zhi * plane;
+        int *const ax[3] = {axis_buf + (size_t)t * nbuf, axis_buf + (size_t)t * nbuf + g->n[0],
+                            axis_buf + (size_t)t * nbuf + g->n[0] + g->n[1]};
+        double *const gp[3] = {gap_buf + (size_t)t * nbuf, gap_buf + (size_t)t * nbuf + g->n[0],
+                               gap_buf + (size_t)t * nbuf + g->n[0] + g->n[1]};
+        if (t == 0) cstart[0] = cstart[1] = 0;
+        memset(cstart + clo + 2, 0, (chi - clo) * sizeof *cstart);
+        for (size_t k = 0; k < c->n; ++k) candidate_cells(g, c, k, 0, zlo, zhi, ax, gp, cstart, clist);
+        uint32_t run = 0;
+        for (size_t i = clo + 2; i < chi + 2; ++i) {
+            run += cstart[i];
+            cstart[i] = run;
+        }
+        part[t + 1] = run;
+#pragma omp barrier
+#pragma omp single
+        {
+            part[0] = 0;
+            for (int u = 0; u < T; ++u) part[u + 1] += part[u];
+            need = part[T];
+        } /* (implied barrier) */
+        if (part[t])
+            for (size_t i = clo + 2; i < chi + 2; ++i) cstart[i] += part[t];
+#pragma omp barrier
+        if (need <= cap)
+            for (size_t k = 0; k < c->n; ++k) candidate_cells(g, c, k, 1, zlo, zhi, ax, gp, cstart, clist);
+    }
+    return need;
 }
 
 /* Whether collision cells a and b have the same candidate list. */
@@ -280,6 +328,50 @@ void pl_coupling_find_binned(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
         }
         counts[(size_t)t * 8 + 2] = in;
         counts[(size_t)t * 8 + 3] = np;
+    }
+}
+
+void pl_coupling_find_block(void *ctx, int t, size_t lo, size_t hi)
+{
+    const pl_coupling_find_ctx_t *x = ctx;
+    const pl_fluid_t *f = x->f;
+    const image_box_t q = image_box(x->g->L, x->g->walls);
+    const uint32_t *restrict cell = f->cell, *restrict cstart = x->cstart;
+    const uint64_t *restrict mask = x->mask;
+    size_t clo, chi;
+    pl_chunk(f->n, t, x->nthreads, &clo, &chi);
+    uint32_t *restrict out = x->found + clo;
+    uint64_t *cnt = x->counts + (size_t)t * 8;
+    /* the steps of pl_coupling_find_binned on [lo, hi), appended after what
+     * the chunk's earlier blocks left; the cells with candidates from a bit
+     * per cell (4 KiB at L = 32: stays in L1 while the streaming passes
+     * megabytes through, where the offsets cstart would come from memory) */
+    const size_t m0 = cnt[2];
+    size_t m = m0, in = m0, np = cnt[3];
+    for (size_t i = lo; i < hi; ++i) {
+        const uint32_t cl = cell[i];
+        out[m] = (uint32_t)i;
+        m += (size_t)((mask[cl >> 6] >> (cl & 63)) & 1u);
+    }
+    for (size_t s = m0; s < m; ++s) {
+        const size_t i = out[s], cl = cell[i];
+        const int k = near_count(&q, &x->c, x->clist, (int32_t)cstart[cl], (int32_t)cstart[cl + 1], f->r[0][i],
+                                 f->r[1][i], f->r[2][i]);
+        out[in] = (uint32_t)i;
+        in += (size_t)(k > 0);
+        np += (size_t)k;
+    }
+    cnt[2] = in;
+    cnt[3] = np;
+}
+
+void pl_coupling_cell_mask(const uint32_t *cstart, size_t ncells, uint64_t *mask)
+{
+    for (size_t w = 0; w < (ncells + 63) / 64; ++w) {
+        uint64_t b = 0;
+        const size_t e = ncells - 64 * w < 64 ? ncells - 64 * w : 64;
+        for (size_t j = 0; j < e; ++j) b |= (uint64_t)(cstart[64 * w + j + 1] != cstart[64 * w + j]) << j;
+        mask[w] = b;
     }
 }
 

@@ -30,8 +30,10 @@
  * N_max times (Hecht Sec. IV); a particle still inside after that is left
  * where it is and counted as a truncation.
  *
- * Race freedom and determinism: the detection pass is parallel over the
- * static chunks of the streaming; the reflections (few) then run in
+ * Race freedom and determinism: the detection is parallel over the
+ * static chunks of the streaming (normally inside the streaming itself,
+ * pl_coupling_find_block on each block just streamed: the same list, see
+ * src/coupling/coupling_stages.c); the reflections (few) then run in
  * particle order, each particle's cell moved in the histogram row of the
  * thread that streamed it, so the counting sort stays consistent and the
  * result is bitwise the same for any thread count.  Only the events on the
@@ -198,6 +200,19 @@ static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
     return k >= 0;
 }
 
+/* Events are few and far apart in the particle arrays: each one's position,
+ * velocity and cell are fetched PF events ahead (the misses of one event
+ * otherwise wait in turn). */
+enum { PF = 6 };
+static inline void prefetch_particle(const pl_fluid_t *f, size_t i)
+{
+    for (int d = 0; d < 3; ++d) {
+        __builtin_prefetch(f->r[d] + i, 1, 3);
+        __builtin_prefetch(f->v[d] + i, 1, 3);
+    }
+    __builtin_prefetch(f->cell + i, 1, 3);
+}
+
 /* The events with the colloids split between the threads: thread t takes,
  * in particle order, the particles found inside a colloid of its static
  * block of colloids, so each colloid sees the same events in the same
@@ -232,7 +247,9 @@ static int parallel_events(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1
             size_t lo, hi, j = 0;
             pl_chunk(f->n, t, nthreads, &lo, &hi);
             for (int u = 0; u < t; ++u) j += counts[(size_t)u * 8 + 2];
-            for (size_t s = 0; s < counts[(size_t)t * 8 + 2]; ++s, ++j) {
+            const size_t nt = counts[(size_t)t * 8 + 2];
+            for (size_t s = 0; s < nt; ++s, ++j) {
+                if (s + PF < nt) prefetch_particle(f, found[lo + s + PF]);
                 const size_t i = found[lo + s];
                 const double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]};
                 double q[3];
@@ -304,13 +321,13 @@ static int parallel_events(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1
 void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *p,
                           const pl_coupling_colloids_t *c, double *const vel[6],
                           const uint32_t *cstart, const int32_t *clist, uint32_t *hist, int nthreads,
-                          uint32_t *found, uint64_t *counts, pl_coupling1_scratch_t *sc)
+                          uint32_t *found, uint64_t *counts, pl_coupling1_scratch_t *sc, int detected)
 {
     /* Detection, in parallel: thread t lists the particles of its static
      * chunk (the one of the streaming) found inside a colloid, from the
      * cells the streaming binned them into (the colloids near each cell:
-     * cstart, clist). */
-    pl_coupling_find_binned(f, g, c, cstart, clist, nthreads, found, counts);
+     * cstart, clist); usually done inside the streaming already. */
+    if (!detected) pl_coupling_find_binned(f, g, c, cstart, clist, nthreads, found, counts);
     /* The events, serially in particle order: each sees the colloid velocity
      * left by the one before (collisions are sequential impulses; with a
      * stale velocity light colloids would overheat), and the order does not
@@ -323,7 +340,9 @@ void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_
         size_t lo, hi;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
         uint32_t *h = hist + (size_t)t * g->ncells;
-        for (size_t j = 0; j < counts[(size_t)t * 8 + 2]; ++j) {
+        const size_t nt = counts[(size_t)t * 8 + 2];
+        for (size_t j = 0; j < nt; ++j) {
+            if (j + PF < nt) prefetch_particle(f, found[lo + j + PF]);
             size_t i = found[lo + j];
             double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, q[3];
             int32_t k = pl_coupling_inside_cells(c, g, cstart, clist, r, q);

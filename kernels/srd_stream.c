@@ -4,7 +4,10 @@
  *
  * The drift itself (Hecht Eq. 11 / PL Eqs. 1-2, walls, grid shift) is
  * pl_drift_one in srd_drift.h.  The cell of each particle is counted in the
- * owning thread's histogram row (no atomics; STYLE.md 6). */
+ * owning thread's histogram row (no atomics; STYLE.md 6).  An optional hook
+ * (pl_stream_params_t.hook) sees each block right after it was stored:
+ * coupling I finds the particles inside colloids there, while the block is
+ * in L1, instead of in a pass of its own. */
 #include <omp.h>
 #include <string.h>
 
@@ -44,7 +47,7 @@ static inline int same_bits(pl_real a, pl_real b) { return !memcmp(&a, &b, sizeo
 static inline __attribute__((always_inline)) void periodic_blocks(
     const pl_drift_t *c, pl_real *restrict x, pl_real *restrict y, pl_real *restrict z,
     pl_real *restrict vx, pl_real *restrict vy, pl_real *restrict vz, uint32_t *restrict cell,
-    uint32_t *restrict h, size_t lo, size_t hi, const int kick_free)
+    uint32_t *restrict h, size_t lo, size_t hi, const int kick_free, pl_stream_hook_fn hook, void *hook_ctx, int t)
 {
     double rb[3][PL_DRIFT_BLOCK], vb[3][PL_DRIFT_BLOCK];
     uint32_t cb[PL_DRIFT_BLOCK];
@@ -59,13 +62,14 @@ static inline __attribute__((always_inline)) void periodic_blocks(
             cell[i + k] = cb[k];
             h[cb[k]]++;
         }
+        if (hook) hook(hook_ctx, t, i, i + m); /* the block still in L1 */
     }
 }
 
 /* mode: 0 = bin only, 1 = drift + store + bin, 2 = count the drifted cell
  * without storing anything but the histogram. */
 static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict h, size_t lo,
-                         size_t hi, int mode, int64_t *wall_acc)
+                         size_t hi, int mode, int64_t *wall_acc, const pl_stream_params_t *p, int t)
 {
     pl_real *restrict x = f->r[0], *restrict y = f->r[1], *restrict z = f->r[2];
     pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
@@ -88,15 +92,16 @@ static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict 
         return;
     }
     const int tracked = f->tracked && mode == 1;
+    const pl_stream_hook_fn hook = mode == 1 ? p->hook : NULL;
     if (!tracked && !c->walls) {
         /* No body force: the kick v + 0 leaves every velocity as it is
          * except -0.0 (which becomes +0.0), so v is stored only where its
          * bits change: the velocity arrays are read, not written back
          * (24 B per particle less, and no dirty lines to write back). */
         if (c->a[0] == 0.0 && c->a[1] == 0.0 && c->a[2] == 0.0)
-            periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 1);
+            periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 1, hook, p->hook_ctx, t);
         else
-            periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 0);
+            periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 0, hook, p->hook_ctx, t);
         return;
     }
     /* the common wall layouts with their closed axes as constants */
@@ -104,6 +109,7 @@ static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict 
     if (!w[0] && !w[1] && w[2]) moved_range(f, c, (const int[3]){0, 0, 1}, h, lo, hi, tracked, wall_acc);
     else if (w[0] && w[1] && !w[2]) moved_range(f, c, (const int[3]){1, 1, 0}, h, lo, hi, tracked, wall_acc);
     else moved_range(f, c, w, h, lo, hi, tracked, wall_acc);
+    if (hook) hook(p->hook_ctx, t, lo, hi);
 }
 
 static void run(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params_t *p, uint32_t *hist,
@@ -123,7 +129,7 @@ static void run(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params_t *p, 
         /* the wall impulses of this thread's chunk, in its own cache line */
         int64_t *acc = mode == 1 && c.walls && p->wall_acc ? p->wall_acc + (size_t)t * PL_WALL_ACC_STRIDE : NULL;
         if (acc) memset(acc, 0, PL_WALL_ACC_STRIDE * sizeof *acc);
-        stream_range(f, &c, h, lo, hi, mode, acc);
+        stream_range(f, &c, h, lo, hi, mode, acc, p, t);
     }
 }
 

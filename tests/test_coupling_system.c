@@ -184,8 +184,11 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
         uint32_t *cstart = malloc((sim->grid.ncells + 2) * sizeof *cstart);
         const size_t ccap = 8 * sim->grid.ncells; /* every colloid in every cell */
         int32_t *clist = malloc(ccap * sizeof *clist);
-        int axis[64];
-        double gap[64];
+        int axis[256]; /* 3 threads x (n0 + n1 + n2) */
+        double gap[256];
+        uint32_t *cstart2 = malloc((sim->grid.ncells + 2) * sizeof *cstart2);
+        int32_t *clist2 = malloc(ccap * sizeof *clist2);
+        cr_assert(cstart2 && clist2);
         double rad[8];
         cr_assert(start && list && fa && fb && ga && gb && cstart && clist);
         size_t listed = 0;
@@ -198,8 +201,16 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
                 v.rad = rad;
                 size_t need = pl_coupling_lookup_build(&v, sim->grid.L, sim->grid.walls, start, list, cap);
                 cr_assert_leq(need, cap);
-                need = pl_coupling_cell_candidates(&sim->grid, &v, axis, gap, cstart, clist, ccap);
+                need = pl_coupling_cell_candidates(&sim->grid, &v, axis, gap, cstart, clist, ccap, 1);
                 cr_assert_leq(need, ccap);
+                for (int nt = 2; nt <= 3; ++nt) { /* the same lists for any thread count */
+                    const size_t need2 = pl_coupling_cell_candidates(&sim->grid, &v, axis, gap, cstart2, clist2, ccap, nt);
+                    cr_assert_eq(need2, need, "box %d, R %g, %d threads: %zu vs %zu entries", b, radii[r], nt, need2,
+                                 need);
+                    cr_assert(same(cstart, cstart2, (sim->grid.ncells + 1) * sizeof *cstart) &&
+                                  same(clist, clist2, need * sizeof *clist),
+                              "box %d, R %g, %d threads: candidate lists differ", b, radii[r], nt);
+                }
                 for (int nt = 1; nt <= 3; nt += 2) {
                     pl_coupling_find(f, &sim->grid, &v, start, list, nt, fa, ga, ca);
                     pl_coupling_find_sorted(f, &sim->grid, &v, cstart, clist, sim->cell_start, nt, fb, gb, cb);
@@ -228,6 +239,8 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
         free(gb);
         free(cstart);
         free(clist);
+        free(cstart2);
+        free(clist2);
         pl_sim_free(sim);
     }
 }

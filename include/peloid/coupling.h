@@ -52,6 +52,9 @@ typedef struct pl_coupling1_state {
     uint32_t *found;     /* fluid n: particles found inside (scratch) */
     uint64_t *counts;    /* nthreads x 8 */
     pl_coupling1_scratch_t events_scratch; /* the events in parallel (grown as needed) */
+    pl_coupling_find_ctx_t find_ctx; /* the detection inside the streaming */
+    uint64_t *cell_mask; /* (grid ncells + 63) / 64: the cells with candidates */
+    long long armed_step; /* the step whose streaming detects (-1: none) */
     unsigned long long events, truncations; /* since the start of this run */
 } pl_coupling1_state_t;
 
@@ -159,6 +162,7 @@ int pl_coupling_potential_create(const pl_coupling_t *cp, const struct pl_sim *s
 void pl_coupling_potential_free(pl_coupling_potential_state_t *s);
 
 /* Plan stages (src/coupling/coupling_stages.c). */
+int pl_coupling_stage_reflect_cells(struct pl_sim *sim, void *ctx, pl_err_t *err);
 int pl_coupling_stage_reflect(struct pl_sim *sim, void *ctx, pl_err_t *err);
 int pl_coupling_stage_save(struct pl_sim *sim, void *ctx, pl_err_t *err);
 int pl_coupling_stage_collide(struct pl_sim *sim, void *ctx, pl_err_t *err);

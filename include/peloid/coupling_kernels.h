@@ -104,11 +104,13 @@ typedef struct {
 /* sc (NULL: serial only): scratch for the events in parallel (more than
  * one thread, two or more colloids, no walls, no displacement tracking);
  * too small for a step's events (sc->need then says how many) that step
- * runs serially.  The result is the same bits either way. */
+ * runs serially.  The result is the same bits either way.  detected: found
+ * and counts already hold the particles inside (pl_coupling_find_block ran
+ * in this step's streaming); else the kernel finds them. */
 void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *p,
                           const pl_coupling_colloids_t *c, double *const vel[6], const uint32_t *cstart,
                           const int32_t *clist, uint32_t *hist, int nthreads, uint32_t *found, uint64_t *counts,
-                          pl_coupling1_scratch_t *sc);
+                          pl_coupling1_scratch_t *sc, int detected);
 
 /* ---- coupling II: colloids in the collision (coupling_collide.c) ------- */
 typedef struct {
@@ -162,11 +164,12 @@ void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
                       uint32_t *found, uint32_t *found_cell, uint64_t *counts);
 /* CSR lists (cstart[0 .. ncells], clist), in index order, of the colloids
  * whose sphere (radius c->rad + 1e-6 a0) can reach each collision cell
- * under g->shift.  cstart: g->ncells + 2 entries, axis_buf: n[0] + n[1] +
- * n[2] ints, gap_buf as many doubles (scratch).  Returns the number of list
- * entries needed; fills clist only when that is <= cap. */
+ * under g->shift.  cstart: g->ncells + 2 entries, axis_buf: nthreads x
+ * (n[0] + n[1] + n[2]) ints, gap_buf as many doubles (scratch).  Returns
+ * the number of list entries needed; fills clist only when that is <= cap.
+ * Parallel over slabs of z planes: the same lists for any thread count. */
 size_t pl_coupling_cell_candidates(const pl_grid_t *g, const pl_coupling_colloids_t *c, int *axis_buf,
-                                   double *gap_buf, uint32_t *cstart, int32_t *clist, size_t cap);
+                                   double *gap_buf, uint32_t *cstart, int32_t *clist, size_t cap, int nthreads);
 /* The same list (and pair counts) from the particles of the collision cells
  * with candidates, when the fluid is still as the last sort left it: sorted
  * by collision cell under g->shift, cell c holding [cell_start[c],
@@ -186,6 +189,28 @@ void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
 void pl_coupling_find_binned(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
                              const uint32_t *cstart, const int32_t *clist, int nthreads, uint32_t *found,
                              uint64_t *counts);
+
+/* The same list from inside the streaming (a pl_stream_hook_fn, ctx a
+ * pl_coupling_find_ctx_t): each block of particles just streamed and binned,
+ * still in L1, filtered and tested as pl_coupling_find_binned does, appended
+ * to its thread's part of found; counts[t * 8 + 2], [t * 8 + 3] must be 0
+ * before the streaming and hold what pl_coupling_find_binned leaves there
+ * after it (the blocks of a chunk come in particle order). */
+typedef struct {
+    const pl_fluid_t *f;
+    const pl_grid_t *g;
+    pl_coupling_colloids_t c;
+    const uint32_t *cstart;
+    const int32_t *clist;
+    const uint64_t *mask; /* pl_coupling_cell_mask of cstart */
+    int nthreads;
+    uint32_t *found;
+    uint64_t *counts;
+} pl_coupling_find_ctx_t;
+void pl_coupling_find_block(void *ctx, int t, size_t lo, size_t hi);
+/* Bit c % 64 of mask[c / 64]: cell c has candidates (cstart[c + 1] !=
+ * cstart[c]); mask: (ncells + 63) / 64 words. */
+void pl_coupling_cell_mask(const uint32_t *cstart, size_t ncells, uint64_t *mask);
 
 typedef struct {
     double sigma, eps; /* PL Eq. 17 */

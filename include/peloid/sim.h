@@ -85,6 +85,12 @@ struct pl_sim {
      * checkpointed.  The wall stress (PL Eq. 13). */
     double wall_impulse[3][3];
     int64_t *wall_acc;    /* nthreads x PL_WALL_ACC_STRIDE (streaming bounces) */
+    /* a pass the streaming of step stream_hook_step runs on what it streamed
+     * (pl_stream_params_t.hook), set by a stage before it (coupling I's
+     * detection); the streaming clears stream_hook once it ran it */
+    pl_stream_hook_fn stream_hook;
+    void *stream_hook_ctx;
+    long long stream_hook_step;
     double *wall_dp;      /* PL_WALL_ACC_N x blocks (virtual particles of the collision) */
     int wall_acc_overflow; /* a fixed-point wall impulse sum overflowed (guard) */
     /* fluid guard bounds (pl_fluid_guard_setup, src/fluid/fluid_guard.c) */

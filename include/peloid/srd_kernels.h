@@ -23,12 +23,22 @@ enum { PL_WALL_ACC_N = 9, PL_WALL_ACC_STRIDE = 16 };
 /* Slot of wall `top` (0: at 0, 1: at L) of axis `axis`. */
 static inline int pl_wall_slot(int axis, int top) { return axis == 2 ? top : 2; }
 
+/* A pass over particles just streamed and binned, run by pl_srd_stream_bin
+ * inside its parallel region: thread t calls it on consecutive ranges [lo,
+ * hi) of its static chunk (pl_chunk), in order, each right after the range
+ * was stored (blocks of PL_DRIFT_BLOCK on the periodic path, so the range
+ * is still in L1; the whole chunk on the others).  Coupling I's detection
+ * (pl_coupling_find_block) saves its own pass over the particle arrays. */
+typedef void (*pl_stream_hook_fn)(void *ctx, int t, size_t lo, size_t hi);
+
 typedef struct {
     double dt;          /* collision time step */
     double accel[3];    /* body force per unit mass (kick before the drift) */
     double wall_u[2][3];/* wall velocities (bottom z = 0, top z = Lz) */
     int64_t *wall_acc;  /* NULL, or nthreads x PL_WALL_ACC_STRIDE: pl_srd_stream_bin
                          * writes the impulse the walls gave each thread's chunk */
+    pl_stream_hook_fn hook; /* NULL, or run on what pl_srd_stream_bin streamed */
+    void *hook_ctx;
 } pl_stream_params_t;
 
 /* r += v dt (after v += accel dt) with periodic wrap or wall reflection,

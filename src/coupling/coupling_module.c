@@ -40,7 +40,10 @@ static void coupling_stages(pl_sim_t *sim)
         add(sim, "potential-select", pl_coupling_stage_select, 1, 0, PL_SLOT_PRE_STREAM);
         add(sim, "potential-md", pl_coupling_stage_potential_md, 1, 0, PL_SLOT_POST_STREAM);
     }
-    if (m == PL_COUPLE_HECHT1) add(sim, "coupling1-reflect", pl_coupling_stage_reflect, 1, 0, PL_SLOT_POST_STREAM);
+    if (m == PL_COUPLE_HECHT1) {
+        add(sim, "coupling1-cells", pl_coupling_stage_reflect_cells, 1, 0, PL_SLOT_PRE_STREAM);
+        add(sim, "coupling1-reflect", pl_coupling_stage_reflect, 1, 0, PL_SLOT_POST_STREAM);
+    }
     if (m == PL_COUPLE_HECHT2) {
         add(sim, "coupling2-save", pl_coupling_stage_save, 1, 0, PL_SLOT_PRE_COLLIDE);
         if (sc->thermostat.type == PL_THERMO_HEYES) { /* the variant of the fluid's collision */

@@ -46,8 +46,8 @@ int pl_coupling_potential_create(const pl_coupling_t *cp, const pl_sim_t *sim,
     ps->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t), cp->nthreads);
     int rc = pl_coupling_lookup_init(&ps->lk, sim->grid.L, cp->nthreads, err);
     ps->cstart = pl_alloc((sim->grid.ncells + 2) * sizeof(uint32_t), cp->nthreads);
-    ps->axis_buf = malloc((size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(int));
-    ps->gap_buf = malloc((size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(double));
+    ps->axis_buf = malloc((size_t)cp->nthreads * (size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(int));
+    ps->gap_buf = malloc((size_t)cp->nthreads * (size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(double));
     if (!rc && (!ps->rad_big || !ps->cf || !ps->found || !ps->found_cell || !ps->c0 || !ps->counts ||
                 !ps->cstart || !ps->axis_buf || !ps->gap_buf))
         rc = pl_err_set(err, PL_ERR_NOMEM, "out of memory for the potential coupling");
@@ -171,7 +171,7 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
     if (sim->fluid_sorted) { /* the same list, from the cells near colloids */
         for (;;) {
             size_t need = pl_coupling_cell_candidates(&sim->grid, &v, ps->axis_buf, ps->gap_buf, ps->cstart, ps->clist,
-                                                      ps->clist_cap);
+                                                      ps->clist_cap, cp->nthreads);
             if (need <= ps->clist_cap) break;
             if (grow((void **)&ps->clist, &ps->clist_cap, need, sizeof *ps->clist))
                 return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloids near each cell");

@@ -21,6 +21,7 @@ int pl_coupling1_create(const pl_coupling_t *cp, const pl_sim_t *sim, pl_couplin
     *out = NULL;
     pl_coupling1_state_t *s = calloc(1, sizeof *s);
     if (!s) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling");
+    s->armed_step = -1;
     pl_coupling1_params_t *p = &s->p;
     p->dt = sc->srd.dt;
     p->kT = sc->coupling.wall_temperature > 0.0 ? sc->coupling.wall_temperature : pl_scene_kT(sc);
@@ -33,9 +34,10 @@ int pl_coupling1_create(const pl_coupling_t *cp, const pl_sim_t *sim, pl_couplin
     s->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t), cp->nthreads);
     s->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t), cp->nthreads);
     s->cstart = pl_alloc((sim->grid.ncells + 2) * sizeof(uint32_t), cp->nthreads);
-    s->axis_buf = malloc((size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(int));
-    s->gap_buf = malloc((size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(double));
-    if (!rc && (!s->found || !s->counts || !s->cstart || !s->axis_buf || !s->gap_buf))
+    s->axis_buf = malloc((size_t)cp->nthreads * (size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(int));
+    s->gap_buf = malloc((size_t)cp->nthreads * (size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(double));
+    s->cell_mask = malloc((sim->grid.ncells + 63) / 64 * sizeof(uint64_t) + 8);
+    if (!rc && (!s->found || !s->counts || !s->cstart || !s->axis_buf || !s->gap_buf || !s->cell_mask))
         rc = pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling");
     if (rc) {
         pl_coupling1_free(s);
@@ -92,7 +94,53 @@ void pl_coupling1_free(pl_coupling1_state_t *s)
     free(s->clist);
     free(s->axis_buf);
     free(s->gap_buf);
+    free(s->cell_mask);
     free(s);
+}
+
+/* The colloids near each collision cell under the shift of g (cstart,
+ * clist). */
+static int cell_candidates(pl_coupling1_state_t *s, const pl_grid_t *g, const pl_coupling_colloids_t *v,
+                           int nthreads, pl_err_t *err)
+{
+    for (;;) {
+        size_t need = pl_coupling_cell_candidates(g, v, s->axis_buf, s->gap_buf, s->cstart, s->clist, s->clist_cap,
+                                                  nthreads);
+        if (need <= s->clist_cap) return 0;
+        free(s->clist);
+        s->clist_cap = need + need / 2 + 256;
+        if (!(s->clist = malloc(s->clist_cap * sizeof *s->clist)))
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloids near each cell");
+    }
+}
+
+/* Coupling I before stream+bin (after the colloid MD): the colloids near
+ * each collision cell under the shift this step's streaming draws (the same
+ * draw: a function of seed and step), and the detection armed to run inside
+ * the streaming (pl_coupling_find_block on each block just streamed, while
+ * it is in L1: no pass of its own over the cells and positions, ~a tenth of
+ * the fluid step).  The colloids do not move until the reflections. */
+int pl_coupling_stage_reflect_cells(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    pl_coupling_t *cp = sim->coupling;
+    pl_coupling1_state_t *s = cp->c1;
+    const pl_scene_t *sc = &sim->scene;
+    pl_grid_t g = sim->grid;
+    pl_grid_draw_shift(&g, (uint64_t)sc->run.seed, (uint64_t)sim->step, sc->srd.grid_shift);
+    const pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
+    int rc = cell_candidates(s, &g, &v, sim->nthreads, err);
+    if (rc) return rc;
+    pl_coupling_cell_mask(s->cstart, g.ncells, s->cell_mask);
+    memset(s->counts, 0, (size_t)sim->nthreads * 8 * sizeof *s->counts);
+    s->find_ctx = (pl_coupling_find_ctx_t){.f = &sim->fluid, .g = &sim->grid, .c = v, .cstart = s->cstart,
+                                           .clist = s->clist, .mask = s->cell_mask, .nthreads = sim->nthreads,
+                                           .found = s->found, .counts = s->counts};
+    sim->stream_hook = pl_coupling_find_block;
+    sim->stream_hook_ctx = &s->find_ctx;
+    sim->stream_hook_step = sim->step;
+    s->armed_step = sim->step;
+    return 0;
 }
 
 /* Coupling I after stream+bin: reflections with their impulses on the
@@ -105,14 +153,13 @@ int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_colloid_t *c = sim->colloids;
     s->p.step = (uint64_t)sim->step;
     pl_coupling_colloids_t v = pl_coupling_view(c);
-    for (;;) { /* the colloids near each collision cell of the binning */
-        size_t need =
-            pl_coupling_cell_candidates(&sim->grid, &v, s->axis_buf, s->gap_buf, s->cstart, s->clist, s->clist_cap);
-        if (need <= s->clist_cap) break;
-        free(s->clist);
-        s->clist_cap = need + need / 2 + 256;
-        if (!(s->clist = malloc(s->clist_cap * sizeof *s->clist)))
-            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloids near each cell");
+    /* the streaming ran the detection armed for it (it clears the hook),
+     * else the colloids near each collision cell of the binning now */
+    const int detected = s->armed_step == sim->step && !sim->stream_hook;
+    s->armed_step = -1;
+    if (!detected) {
+        int rc = cell_candidates(s, &sim->grid, &v, cp->nthreads, err);
+        if (rc) return rc;
     }
     double *const vel[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
     int64_t wall[PL_WALL_ACC_N] = {0};
@@ -120,7 +167,7 @@ int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_coupling1_scratch_t *sc = &s->events_scratch;
     sc->need = 0;
     pl_coupling1_reflect(&sim->fluid, &sim->grid, &s->p, &v, vel, s->cstart, s->clist, sim->hist, cp->nthreads,
-                         s->found, s->counts, sc);
+                         s->found, s->counts, sc, detected);
     if (sc->need || sc->vcap < 6 * c->n) /* room for the next step's events (else serial) */
         scratch_grow(sc, sc->need, c->n);
     s->p.wall_acc = NULL;

@@ -34,7 +34,12 @@ static int stage_stream(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_stream_params_t p;
     pl_sim_stream_params(sim, &p);
     p.wall_acc = sim->wall_acc; /* NULL without walls */
+    if (sim->stream_hook && sim->stream_hook_step == sim->step) {
+        p.hook = sim->stream_hook;
+        p.hook_ctx = sim->stream_hook_ctx;
+    }
     pl_srd_stream_bin(&sim->fluid, &sim->grid, &p, sim->hist, sim->nthreads);
+    sim->stream_hook = NULL; /* ran (or stale) */
     if (sim->wall_acc) { /* integer sums: the same for any thread count */
         int64_t acc[PL_WALL_ACC_N] = {0};
         for (int t = 0; t < sim->nthreads; ++t)
