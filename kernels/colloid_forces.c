@@ -251,10 +251,8 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
                 if (per[2]) dz -= L[2] * rint(dz * iL[2]);
                 pair_eval(p, v, i, j, dx, dy, dz, dx * dx + dy * dy + dz * dz, T, E, &a, fo, tj);
             }
-            /* a cross entry (rpos < 0) of a tail pair is evaluated by pass 2 */
-            if (!E && (nl->rpos[s] >= 0 || !(FAR && bcls[k] != 2.0))) {
-                const int32_t rp = nl->rpos[s];
-                size_t q = 3 * (size_t)(rp >= 0 ? rp : -2 - rp);
+            if (!E) {
+                size_t q = 3 * (size_t)nl->rpos[s];
                 nl->pf[q] = fo[0];
                 nl->pf[q + 1] = fo[1];
                 nl->pf[q + 2] = fo[2];
@@ -284,83 +282,6 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
     v->g_partner[i] = a.jov;
     v->g_partner[v->n + i] = a.jom;
     v->g_partner[2 * v->n + i] = a.jdamp;
-}
-
-/* For pass 2's cross entries of the DLVO masks: the class of the pair (owner
- * i, partner j) and, when it is beyond the cut-off or in the van der Waals
- * tail, the force on i, as pass 1's far path computes them (owner_pairs,
- * E = 0): the same expressions on the same operands in scalar arithmetic,
- * which rounds as the vector lanes do (-ffp-contract=off), so the same bits.
- * Returns 0 for a nearer pair: its force depends on velocities (the
- * dissipative terms), which the fused MD step kicks during pass 2, so the
- * owner writes its entry as for any other pair. */
-static int cross_tail(const pl_colloid_pair_params_t *p, const pl_colloid_view_t *v, size_t i,
-                      size_t j, double fo[3])
-{
-    const unsigned T = p->terms & PL_CT_ALL;
-    if (!(T & PL_CT_DLVO)) return 0;
-    const double L[3] = {p->box[0], p->box[1], p->box[2]};
-    const double iL[3] = {1.0 / L[0], 1.0 / L[1], 1.0 / L[2]};
-    const double pL[3] = {p->periodic[0] ? L[0] : 0.0, p->periodic[1] ? L[1] : 0.0,
-                          p->periodic[2] ? L[2] : 0.0};
-    const double far_gap = (T & PL_CT_LUB) && p->lub_hcut > p->coul_hcut ? p->lub_hcut : p->coul_hcut;
-    double dx = v->x[i] - v->x[j], dy = v->y[i] - v->y[j], dz = v->z[i] - v->z[j];
-    dx -= pL[0] * rint(dx * iL[0]);
-    dy -= pL[1] * rint(dy * iL[1]);
-    dz -= pL[2] * rint(dz * iL[2]);
-    double r2 = dx * dx + dy * dy + dz * dz;
-    double d = v->rad[i] + v->rad[j], rc = d + p->gap_cut, rf = d + far_gap;
-    if (T & PL_CT_WCA) {
-        double wrc = (p->wca_sigma > 0.0 ? p->wca_sigma : d) * p->wca_rfac;
-        rc = rc > wrc ? rc : wrc;
-        rf = rf > wrc ? rf : wrc;
-    }
-    if (T & PL_CT_DEPL) {
-        rc = rc > p->dep_rc ? rc : p->dep_rc;
-        rf = rf > p->dep_rc ? rf : p->dep_rc;
-    }
-    double rd = d + p->dlvo_hcut;
-    int in = r2 < rc * rc, far = in & (r2 >= rf * rf) & (r2 < rd * rd);
-    if (in && !far) return 0;
-    double d2 = d * d, r2f = far ? r2 : 2.0, sf = far ? r2 - d2 : 1.0;
-    double ir2 = 1.0 / r2f, is = 1.0 / sf;
-    double fc = -(p->hamaker * d2 * d2 * d2 / 6.0) * (ir2 * ir2) * (is * is);
-    double fm = far ? 1.0 : 0.0;
-    fo[0] = fm * (fc * dx);
-    fo[1] = fm * (fc * dy);
-    fo[2] = fm * (fc * dz);
-    return 1;
-}
-
-void pl_colloid_pair_reverse_one(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
-                                 const pl_colloid_view_t *v, size_t i, int torques)
-{
-    const int32_t q0 = nl->rstart[i], q1 = nl->rstart[i + 1];
-    double fx = v->fx[i], fy = v->fy[i], fz = v->fz[i];
-    double tx = v->tx[i], ty = v->ty[i], tz = v->tz[i];
-    for (int32_t q = q0; q < q1; ++q) {
-        double f[3], t[3] = {0.0, 0.0, 0.0};
-        const int32_t o = nl->rcross[q];
-        if (!(o >= 0 && cross_tail(p, v, (size_t)o, i, f))) { /* the tail: no torque */
-            const size_t k = 3 * (size_t)q;
-            f[0] = nl->pf[k], f[1] = nl->pf[k + 1], f[2] = nl->pf[k + 2];
-            if (torques) t[0] = nl->pt[k], t[1] = nl->pt[k + 1], t[2] = nl->pt[k + 2];
-        }
-        /* minus the force on the owner (Newton's third law); the torque on i */
-        fx -= f[0];
-        fy -= f[1];
-        fz -= f[2];
-        tx += t[0];
-        ty += t[1];
-        tz += t[2];
-    }
-    v->fx[i] = fx;
-    v->fy[i] = fy;
-    v->fz[i] = fz;
-    if (!torques) return;
-    v->tx[i] = tx;
-    v->ty[i] = ty;
-    v->tz[i] = tz;
 }
 
 /* One worksharing loop per term mask inside one parallel region: the switch
@@ -401,7 +322,7 @@ void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_
     {
         pl_colloid_pair_owner_pass(p, nl, v);
 #pragma omp for schedule(static)
-        for (size_t i = 0; i < v->n; ++i) pl_colloid_pair_reverse_one(p, nl, v, i, torques);
+        for (size_t i = 0; i < v->n; ++i) pl_colloid_pair_reverse_one(nl, v, i, torques);
     }
 }
 

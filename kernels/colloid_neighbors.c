@@ -127,22 +127,9 @@ void pl_colloid_nlist_fill(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cel
     for (size_t i = 0; i <= n; ++i) rs[i] = 0;
     for (size_t p = 0; p < nl->npairs; ++p) rs[nl->nbr[p] + 1]++;
     for (size_t i = 0; i < n; ++i) rs[i + 1] += rs[i];
-    /* cross entries: owner and partner in different blocks of the static
-     * schedule of the kernels' team (libgomp's: the first n % T threads get
-     * one colloid more).  Which entries are cross only moves work between
-     * the passes: the forces are the same bits either way. */
-    const size_t T = n >= PL_COLLOID_OMP_MIN && nthreads > 1 ? (size_t)nthreads : 1;
-    const size_t bq = n / T, br = n % T, bsplit = br * (bq + 1);
-    for (size_t i = 0; i < n; ++i) {
-        const size_t bi = i < bsplit ? i / (bq + 1) : br + (i - bsplit) / bq;
-        for (int32_t p = nl->start[i]; p < nl->start[i + 1]; ++p) {
-            const size_t j = (size_t)nl->nbr[p];
-            const size_t bj = j < bsplit ? j / (bq + 1) : br + (j - bsplit) / bq;
-            const int32_t q = rs[j]++;
-            nl->rpos[p] = bi == bj ? q : -2 - q;
-            nl->rcross[q] = bi == bj ? -1 : (int32_t)i;
-        }
-    }
+    for (size_t i = 0; i < n; ++i)
+        for (int32_t p = nl->start[i]; p < nl->start[i + 1]; ++p)
+            nl->rpos[p] = rs[nl->nbr[p]]++;
     for (size_t i = n; i > 0; --i) rs[i] = rs[i - 1];
     rs[0] = 0;
     nl->builds++;

@@ -56,7 +56,7 @@ void pl_colloid_verlet_close(const pl_colloid_dyn_t *s, double dt,
         pl_colloid_pair_owner_pass(p, nl, v);
 #pragma omp for schedule(static) reduction(pl_guard_max : gm)
         for (size_t i = 0; i < n; ++i) {
-            pl_colloid_pair_reverse_one(p, nl, v, i, torques);
+            pl_colloid_pair_reverse_one(nl, v, i, torques);
             s->zu[i] = s->z[i] + (double)s->iz[i] * Lz;
             pl_colloid_ext_one(ext, rf, n, i, s->x, s->y, s->z, s->zu, s->rad, s->mass, s->fx,
                                s->fy, s->fz, epot);

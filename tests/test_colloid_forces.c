@@ -167,13 +167,12 @@ static long direct_sum_check(const pl_colloid_t *c, const char *what)
     return inside;
 }
 
-/* 300 polydisperse colloids with DLVO + Hertz + WCA in a periodic 40^3 box,
- * for `nthreads` threads. */
-static pl_colloid_t *random_colloids_threads(size_t n, double skin_fraction, int nthreads)
+/* 300 polydisperse colloids with DLVO + Hertz + WCA in a periodic 40^3 box. */
+static pl_colloid_t *random_colloids(size_t n, double skin_fraction)
 {
     pl_colloid_t *c;
     pl_err_t err;
-    cr_assert_eq(pl_colloid_alloc(n, nthreads, &c, &err), 0);
+    cr_assert_eq(pl_colloid_alloc(n, omp_get_max_threads(), &c, &err), 0);
     pl_colloid_pair_params_t *p = &c->pair;
     pl_scene_dlvo_t s = {81, 20, 1, 300, 1.4e8, 4.76e-20, 1.25e-7, 6.0, 0.0, 1e-3};
     pl_colloid_dlvo_info_t info;
@@ -192,10 +191,6 @@ static pl_colloid_t *random_colloids_threads(size_t n, double skin_fraction, int
     cr_assert_eq(pl_colloid_neighbors_init(c, 4.4 + p->gap_cut, skin_fraction, &err), 0);
     cr_assert(c->nlist.skin == skin_fraction * (4.4 + p->gap_cut), "skin not capped");
     return c;
-}
-static pl_colloid_t *random_colloids(size_t n, double skin_fraction)
-{
-    return random_colloids_threads(n, skin_fraction, omp_get_max_threads());
 }
 
 /* The neighbour-list kernel against the direct sum on a fresh list. */
@@ -255,49 +250,6 @@ Test(colloid_forces, forces_do_not_depend_on_the_list)
     cr_expect_eq(memcmp(a->fz, b->fz, n * sizeof *a->fz), 0);
     pl_colloid_free(a);
     pl_colloid_free(b);
-}
-
-/* Every term, dissipative ones and torques included, with random velocities
- * and spins: the forces, torques and guard maxima of a list built for 2
- * threads (whose pairs between the two threads' blocks are evaluated again
- * by the partner's thread, pass 2's cross entries) equal bit for bit those
- * of a 1-thread list (none), with and without the WCA term (which sends the
- * nearer pairs of the DLVO masks down another path). */
-Test(colloid_forces, cross_thread_entries_give_the_same_bits)
-{
-    for (int wca = 0; wca <= 1; ++wca) {
-        pl_colloid_t *c[2] = {random_colloids_threads(300, 0.1, 1), random_colloids_threads(300, 0.1, 2)};
-        pl_err_t err;
-        for (int k = 0; k < 2; ++k) {
-            pl_colloid_pair_params_t *p = &c[k]->pair;
-            p->terms = PL_CT_DLVO | PL_CT_HERTZ | PL_CT_LUB | (wca ? PL_CT_WCA : 0u);
-            p->hertz_beta = 3.0, p->hertz_gamma_t = 2.0;
-            p->lub_eta = 1.0, p->lub_hmin = 0.01, p->lub_hcut = 0.5;
-            srand(11);
-            for (size_t i = 0; i < c[k]->n; ++i) {
-                double *w[6] = {&c[k]->vx[i], &c[k]->vy[i], &c[k]->vz[i], &c[k]->wx[i], &c[k]->wy[i], &c[k]->wz[i]};
-                for (int d = 0; d < 6; ++d) *w[d] = (double)rand() / RAND_MAX - 0.5;
-            }
-            cr_assert_eq(pl_colloid_forces(c[k], &err), 0, "%s", err.msg);
-        }
-        long cross = 0;
-        for (size_t q = 0; q < c[1]->nlist.npairs; ++q) cross += c[1]->nlist.rcross[q] >= 0;
-        for (size_t q = 0; q < c[0]->nlist.npairs; ++q) cr_assert(c[0]->nlist.rcross[q] < 0);
-        cr_assert(cross > 50, "only %ld cross entries: the test needs them", cross);
-        size_t n = c[0]->n;
-        const double *a[] = {c[0]->fx, c[0]->fy, c[0]->fz, c[0]->tx, c[0]->ty, c[0]->tz,
-                             c[0]->g_overlap, c[0]->g_omega2, c[0]->g_damp};
-        const double *b[] = {c[1]->fx, c[1]->fy, c[1]->fz, c[1]->tx, c[1]->ty, c[1]->tz,
-                             c[1]->g_overlap, c[1]->g_omega2, c[1]->g_damp};
-        for (size_t k = 0; k < sizeof a / sizeof *a; ++k)
-            cr_expect_eq(memcmp(a[k], b[k], n * sizeof(double)), 0, "array %zu differs (wca %d)", k, wca);
-        cr_expect_eq(memcmp(c[0]->g_partner, c[1]->g_partner, 3 * n * sizeof(int32_t)), 0);
-        double tmax = 0.0;
-        for (size_t i = 0; i < n; ++i) tmax = fmax(tmax, fabs(c[0]->tx[i]));
-        cr_expect(tmax > 0.0, "no torques: the test wants contacts with friction");
-        pl_colloid_free(c[0]);
-        pl_colloid_free(c[1]);
-    }
 }
 
 /* The kernel drops Eq. 1 beyond coul_hcut: there its energy and force are

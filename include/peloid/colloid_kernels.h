@@ -97,14 +97,7 @@ void pl_colloid_cells_build(pl_colloid_cells_t *cells, size_t n, const double *x
  * ascending index; the reverse entries of a colloid are the pairs other
  * colloids own with it, in ascending owner index: the force kernel writes a
  * pair's result into its partner's reverse entry (rpos) and each colloid then
- * reads its own entries contiguously.  Except across threads: where owner and
- * partner fall in different blocks of the static schedule of the thread
- * count the list was built for, the partner's thread evaluates the pair again
- * in pass 2 when it is in the van der Waals tail (the same expressions on
- * the same operands, so the same bits) instead of reading an entry the other
- * core wrote: on 2 cores these entries
- * (and the cache lines they share) crossing between the cores made a pair
- * cost 1.65x what it costs on one. */
+ * reads its own entries contiguously. */
 typedef struct {
     size_t n, cap;       /* colloids; capacity of the slot arrays */
     size_t npairs;       /* listed pairs (slots in use) */
@@ -113,14 +106,7 @@ typedef struct {
     int32_t *start;      /* n + 1: the own slots of i are start[i] .. start[i+1]-1 */
     int32_t *nbr;        /* cap: partner of each slot */
     int32_t *rstart;     /* n + 1: the reverse entries of i are rstart[i] .. rstart[i+1]-1 */
-    int32_t *rpos;       /* cap: reverse entry q of each slot, or -2 - q for a cross
-                          * entry (see rcross) */
-    int32_t *rcross;     /* cap: per reverse entry, -1, or the owner when owner and
-                          * colloid lie in different threads' blocks (a cross
-                          * entry): pass 2 evaluates that pair itself when it is
-                          * in the van der Waals tail or beyond the cut-off (a
-                          * function of positions only), and the owner writes
-                          * the entry only when it is not */
+    int32_t *rpos;       /* cap: reverse entry of each slot */
     double *pf;          /* 3 cap: per reverse entry, the force on the owner from i */
     double *pt;          /* 3 cap: per reverse entry, the torque on i (tangential friction) */
     double *x0, *y0, *z0;    /* n: positions at the last build */
@@ -183,8 +169,30 @@ static inline int pl_colloid_pair_torques(const pl_colloid_pair_params_t *p)
 {
     return (p->terms & PL_CT_HERTZ) && p->hertz_gamma_t > 0.0;
 }
-void pl_colloid_pair_reverse_one(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
-                                 const pl_colloid_view_t *v, size_t i, int torques);
+static inline void pl_colloid_pair_reverse_one(const pl_colloid_nlist_t *nl,
+                                               const pl_colloid_view_t *v, size_t i, int torques)
+{
+    const size_t q0 = 3 * (size_t)nl->rstart[i], q1 = 3 * (size_t)nl->rstart[i + 1];
+    double fx = v->fx[i], fy = v->fy[i], fz = v->fz[i];
+    for (size_t q = q0; q < q1; q += 3) {
+        fx -= nl->pf[q];
+        fy -= nl->pf[q + 1];
+        fz -= nl->pf[q + 2];
+    }
+    v->fx[i] = fx;
+    v->fy[i] = fy;
+    v->fz[i] = fz;
+    if (!torques) return;
+    double tx = v->tx[i], ty = v->ty[i], tz = v->tz[i];
+    for (size_t q = q0; q < q1; q += 3) {
+        tx += nl->pt[q];
+        ty += nl->pt[q + 1];
+        tz += nl->pt[q + 2];
+    }
+    v->tx[i] = tx;
+    v->ty[i] = ty;
+    v->tz[i] = tz;
+}
 
 /* Pair energies of the present positions: rows PL_CE_DLVO, _HERTZ, _WCA,
  * _DEPL of v->epot get, for each colloid, the energies of the pairs it owns
