@@ -93,13 +93,23 @@ typedef struct {
 
 typedef pl_obs_point_t ept_t; /* an estimate at a run fraction (observables_out.h) */
 
+/* The sampling observers besides the correlators, in plan order (the
+ * correlators' stages come between S(q) and the clusters): table
+ * `samplers`, before observe_stages. */
+enum { SMP_RDF, SMP_SQ, SMP_CLUSTERS, SMP_VDIST, SMP_SEDIMENT, NSMP };
+
+/* A sampling stage's context: the observers and the stage's row. */
+typedef struct {
+    struct pl_observe *o;
+    int k;
+} obs_stage_t;
+
 typedef struct pl_observe {
     long long first, last; /* the run's steps */
     double t_start;        /* wall clock at the run's start */
     /* g(r) */
     pl_rdf_t *rdf;
     pl_rdf_params_t rdf_par;
-    double rdf_wall;
     /* g(r) per size class: ncls classes, npair = ncls (ncls + 1) / 2 partials */
     size_t ncls, npair;
     pl_rdf_t **rdfc;   /* npair, pair (a, b), a <= b, in row order */
@@ -108,10 +118,8 @@ typedef struct pl_observe {
     size_t *cls_n;     /* ncls: colloids per class */
     /* S(q) */
     pl_sq_t *sq;
-    double sq_wall;
-    /* MSD, VACF, C_FF (mtau_observers.h), each with its stage's context */
+    /* MSD, VACF, C_FF (mtau_observers.h) */
     pl_mtobs_t mt[PL_MTOBS_N];
-    struct mt_stage { struct pl_observe *o; pl_mtobs_t *m; } mt_stage[PL_MTOBS_N];
     /* clusters */
     pl_cluster_t *cl;
     pl_blocking_t cb[NCV]; /* cv_names */
@@ -124,18 +132,18 @@ typedef struct pl_observe {
     size_t c_n, c_cap;
     uint64_t *c_hist; /* size distribution summed over samples */
     size_t c_hist_len;
-    double cl_wall;
     /* velocity distributions: 0 fluid, 1 colloids */
     pl_vdist_t *vd[2];
     double *vs[3]; /* scaled components, fluid count (>= colloid count) */
     size_t vs_n;
-    double vd_wall;
     /* sedimentation: phi(z) per sample, mean height, settling velocity */
     size_t s_bins, s_n, s_cap;
     long long *s_step;
     double *s_phi, *s_height, *s_vz, *s_vel; /* s_vel[k]: from heights k-1, k (k >= 1) */
     pl_blocking_t s_vb; /* settling velocity */
-    double s_wall;
+    /* the samplers' wall seconds and the stages' contexts */
+    double wall[NSMP];
+    obs_stage_t smp_ctx[NSMP], mt_ctx[PL_MTOBS_N];
     /* error against run time */
     ept_t ept[OB_N][NFRAC];
     int next_frac;
@@ -277,9 +285,10 @@ static int observe_create(pl_sim_t *sim, pl_err_t *err)
     o->ids_step = -1;
     o->resume_step = -1;
     pl_blocking_init(&o->s_vb);
+    for (int k = 0; k < NSMP; ++k) o->smp_ctx[k] = (obs_stage_t){o, k};
     for (int k = 0; k < PL_MTOBS_N; ++k) {
         o->mt[k].which = k;
-        o->mt_stage[k] = (struct mt_stage){o, &o->mt[k]};
+        o->mt_ctx[k] = (obs_stage_t){o, k};
     }
     sim->observe = o;
     if (sim->scene.observe.cff_interval > 0 && sim->coupling)
@@ -401,13 +410,9 @@ static int rdf_ready(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
     return pl_rdf_create(p, sim->nthreads, &o->rdf, err);
 }
 
-static int stage_rdf(pl_sim_t *sim, void *ctx, pl_err_t *err)
+static int sample_rdf(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
 {
-    pl_observe_t *o = ctx;
-    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
     const pl_scene_t *sc = &sim->scene;
-    if (sim->step < sc->observe.rdf_start) return 0;
-    const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
     if (!o->rdf) {
         int rc = rdf_ready(sim, o, err);
@@ -419,7 +424,6 @@ static int stage_rdf(pl_sim_t *sim, void *ctx, pl_err_t *err)
         if (rc) return rc;
     }
     for (size_t k = 0; k < o->npair; ++k) pl_rdf_sample(o->rdfc[k], c->n, c->x, c->y, c->z, o->cls);
-    o->rdf_wall += omp_get_wtime() - t0;
     return 0;
 }
 
@@ -434,32 +438,26 @@ static int sq_ready(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
     return rc;
 }
 
-static int stage_sq(pl_sim_t *sim, void *ctx, pl_err_t *err)
+static int sample_sq(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
 {
-    pl_observe_t *o = ctx;
-    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
-    const pl_scene_t *sc = &sim->scene;
-    if (sim->step < sc->observe.sq_start) return 0;
-    const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
     if (!o->sq) {
         int rc = sq_ready(sim, o, err);
         if (rc) return rc;
     }
     pl_sq_sample(o->sq, c->n, c->x, c->y, c->z);
-    o->sq_wall += omp_get_wtime() - t0;
     return 0;
 }
 
-/* A multiple-tau observer's stage (ctx: its o->mt_stage). */
+/* A multiple-tau observer's stage (ctx: its o->mt_ctx). */
 static int stage_mtau(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    const struct mt_stage *s = ctx;
-    const pl_observe_t *o = s->o;
+    const obs_stage_t *s = ctx;
+    pl_observe_t *o = s->o;
     if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
     const pl_scene_observe_t *so = &sim->scene.observe;
-    const uint64_t ns = expected_samples(o, pl_mtobs_start(so, s->m->which), pl_mtobs_interval(so, s->m->which));
-    return pl_mtobs_sample(s->m, sim, o->first, ns, err);
+    const uint64_t ns = expected_samples(o, pl_mtobs_start(so, s->k), pl_mtobs_interval(so, s->k));
+    return pl_mtobs_sample(&o->mt[s->k], sim, o->first, ns, err);
 }
 
 /* Energy bond (observe.clusters_bond = "energy"): kind 1 (primary minimum)
@@ -508,13 +506,9 @@ static int clusters_now(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
     return rc;
 }
 
-static int stage_clusters(pl_sim_t *sim, void *ctx, pl_err_t *err)
+static int sample_clusters(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
 {
-    pl_observe_t *o = ctx;
-    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
     const pl_scene_t *sc = &sim->scene;
-    if (sim->step < sc->observe.clusters_start) return 0;
-    const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
     if (!o->c_step) {
         o->c_cap = expected_samples(o, sc->observe.clusters_start, sc->observe.clusters_interval);
@@ -540,7 +534,6 @@ static int stage_clusters(pl_sim_t *sim, void *ctx, pl_err_t *err)
     size_t len;
     const uint64_t *h = pl_cluster_size_hist(o->cl, &len);
     for (size_t s = 0; s < len && s < o->c_hist_len; ++s) o->c_hist[s] += h[s];
-    o->cl_wall += omp_get_wtime() - t0;
     return 0;
 }
 
@@ -556,12 +549,8 @@ static void scale_components(double *const out[3], size_t n, const double *const
     }
 }
 
-static int stage_vdist(pl_sim_t *sim, void *ctx, pl_err_t *err)
+static int sample_vdist(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
 {
-    pl_observe_t *o = ctx;
-    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
-    if (sim->step < sim->scene.observe.vdist_start) return 0;
-    const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
     const size_t nf = sim->fluid.n;
     if (!o->vd[1]) {
@@ -588,7 +577,6 @@ static int stage_vdist(pl_sim_t *sim, void *ctx, pl_err_t *err)
         scale_components(o->vs, c->n, v, c->mass, kT);
         pl_vdist_sample(o->vd[1], c->n, o->vs[0], o->vs[1], o->vs[2]);
     }
-    o->vd_wall += omp_get_wtime() - t0;
     return 0;
 }
 
@@ -600,13 +588,9 @@ static double slice_volume(double zc, double R, double a, double b)
     return PL_PI * (R * R * (hi - lo) - (hi * hi * hi - lo * lo * lo) / 3.0);
 }
 
-static int stage_sediment(pl_sim_t *sim, void *ctx, pl_err_t *err)
+static int sample_sediment(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
 {
-    pl_observe_t *o = ctx;
-    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
     const pl_scene_t *sc = &sim->scene;
-    if (sim->step < sc->observe.sediment_start) return 0;
-    const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
     const double Lz = c->box[2];
     if (!o->s_step) {
@@ -655,7 +639,6 @@ static int stage_sediment(pl_sim_t *sim, void *ctx, pl_err_t *err)
         pl_blocking_add(&o->s_vb, o->s_vel[k]);
     }
     o->s_n++;
-    o->s_wall += omp_get_wtime() - t0;
     return 0;
 }
 
@@ -797,6 +780,38 @@ static int stage_begin(pl_sim_t *sim, void *ctx, pl_err_t *err)
     return 0;
 }
 
+#define OFFS(m) offsetof(pl_scene_observe_t, m)
+static const struct {
+    const char *stage;
+    int (*sample)(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err);
+    size_t interval, start; /* in pl_scene_observe_t */
+} samplers[NSMP] = {
+    [SMP_RDF] = {"observe-rdf", sample_rdf, OFFS(rdf_interval), OFFS(rdf_start)},
+    [SMP_SQ] = {"observe-sq", sample_sq, OFFS(sq_interval), OFFS(sq_start)},
+    [SMP_CLUSTERS] = {"observe-clusters", sample_clusters, OFFS(clusters_interval), OFFS(clusters_start)},
+    [SMP_VDIST] = {"observe-vdist", sample_vdist, OFFS(vdist_interval), OFFS(vdist_start)},
+    [SMP_SEDIMENT] = {"observe-sediment", sample_sediment, OFFS(sediment_interval), OFFS(sediment_start)},
+};
+
+static long long scene_ll(const pl_scene_observe_t *so, size_t off)
+{
+    return *(const long long *)((const char *)so + off);
+}
+
+/* A sampler's stage (ctx: its o->smp_ctx): not at the checkpoint's step
+ * (sampled before it) nor before the sampler's start step; its wall time
+ * to o->wall. */
+static int stage_sample(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    const obs_stage_t *s = ctx;
+    pl_observe_t *o = s->o;
+    if (sim->step == o->resume_step || sim->step < scene_ll(&sim->scene.observe, samplers[s->k].start)) return 0;
+    const double t0 = omp_get_wtime();
+    const int rc = samplers[s->k].sample(sim, o, err);
+    o->wall[s->k] += omp_get_wtime() - t0;
+    return rc;
+}
+
 static void observe_stages(pl_sim_t *sim)
 {
     pl_observe_t *o = sim->observe;
@@ -805,38 +820,19 @@ static void observe_stages(pl_sim_t *sim)
     pl_stage_t b = {.name = "observe-begin", .fn = stage_begin, .ctx = o, .interval = 1,
                     .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
     pl_sim_add_stage(sim, &b, NULL);
-    if (so->rdf_interval > 0) {
-        pl_stage_t s = {.name = "observe-rdf", .fn = stage_rdf, .ctx = o, .interval = so->rdf_interval,
-                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
-        pl_sim_add_stage(sim, &s, NULL);
-    }
-    if (so->sq_interval > 0) {
-        pl_stage_t s = {.name = "observe-sq", .fn = stage_sq, .ctx = o, .interval = so->sq_interval,
-                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
-        pl_sim_add_stage(sim, &s, NULL);
-    }
-    for (int k = 0; k < PL_MTOBS_N; ++k) {
-        if (pl_mtobs_interval(so, k) <= 0) continue;
-        pl_stage_t s = pl_mtobs_stage(so, k);
-        s.fn = stage_mtau;
-        s.ctx = &o->mt_stage[k];
-        pl_sim_add_stage(sim, &s, NULL);
-    }
-    if (so->clusters_interval > 0) {
-        pl_stage_t s = {.name = "observe-clusters", .fn = stage_clusters, .ctx = o,
-                        .interval = so->clusters_interval, .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE,
-                        .at_start = 1};
-        pl_sim_add_stage(sim, &s, NULL);
-    }
-    if (so->vdist_interval > 0) {
-        pl_stage_t s = {.name = "observe-vdist", .fn = stage_vdist, .ctx = o, .interval = so->vdist_interval,
-                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
-        pl_sim_add_stage(sim, &s, NULL);
-    }
-    if (so->sediment_interval > 0) {
-        pl_stage_t s = {.name = "observe-sediment", .fn = stage_sediment, .ctx = o,
-                        .interval = so->sediment_interval, .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE,
-                        .at_start = 1};
+    for (int k = 0; k < NSMP; ++k) {
+        if (k == SMP_CLUSTERS) /* the correlators between S(q) and the clusters */
+            for (int q = 0; q < PL_MTOBS_N; ++q) {
+                if (pl_mtobs_interval(so, q) <= 0) continue;
+                pl_stage_t s = pl_mtobs_stage(so, q);
+                s.fn = stage_mtau;
+                s.ctx = &o->mt_ctx[q];
+                pl_sim_add_stage(sim, &s, NULL);
+            }
+        if (scene_ll(so, samplers[k].interval) <= 0) continue;
+        pl_stage_t s = {.name = samplers[k].stage, .fn = stage_sample, .ctx = &o->smp_ctx[k],
+                        .interval = scene_ll(so, samplers[k].interval), .phase = PL_PHASE_AFTER,
+                        .slot = PL_SLOT_OBSERVE, .at_start = 1};
         pl_sim_add_stage(sim, &s, NULL);
     }
     pl_stage_t e = {.name = "observe-error-time", .fn = stage_error_time, .ctx = o, .interval = 1,
@@ -1088,7 +1084,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
                 pl_json_real(&b, e, "q", qm[best]);
                 pl_json_real(&b, e, "q_R", qm[best] * sim->scene.colloids.radius);
                 pl_json_int(&b, e, "wave_vectors", (long long)pl_sq_vectors(o->sq));
-                pl_json_real(&b, e, "wall_s", o->sq_wall);
+                pl_json_real(&b, e, "wall_s", o->wall[SMP_SQ]);
                 pl_json_str(&b, e, "unit", "1");
                 pl_json_set(&b, all, "sq_peak", e);
             }
@@ -1098,8 +1094,8 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
     pl_mtobs_summary(&b, all, &o->mt[PL_MTOBS_CFF], sim);
     double r, g, gse;
     if (o->rdf && rdf_peak(o, &r, &g, &gse)) {
-        json_t *e = entry(&b, o, OB_RDF_PEAK, g, gse, (double)pl_rdf_samples(o->rdf), 0.0, 1, o->rdf_wall, target,
-                          "1");
+        json_t *e = entry(&b, o, OB_RDF_PEAK, g, gse, (double)pl_rdf_samples(o->rdf), 0.0, 1, o->wall[SMP_RDF],
+                          target, "1");
         pl_json_real(&b, e, "r", r);
         rdf_r_units(&b, e, &sim->scene, r);
         pl_json_int(&b, e, "samples", (long long)pl_rdf_samples(o->rdf));
@@ -1123,7 +1119,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
                 pl_json_real(&b, e, "value", g);
                 pl_json_real(&b, e, "stderr", gse);
                 pl_json_real(&b, e, "n_independent", (double)pl_rdf_samples(o->rdfc[q]));
-                pl_json_real(&b, e, "wall_s", o->rdf_wall);
+                pl_json_real(&b, e, "wall_s", o->wall[SMP_RDF]);
                 pl_json_str(&b, e, "unit", "1");
                 pl_json_real(&b, e, "r", r);
                 rdf_r_units(&b, e, &sim->scene, r);
@@ -1137,8 +1133,8 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
         if (ob == OB_SETTLING || !bl || bl->n < 2 || (ob > OB_BONDS && !energy_bonds)) continue;
         pl_blocking_result_t res = pl_blocking_result(bl);
         if (!isfinite(res.mean) || !isfinite(res.se)) continue;
-        json_t *e = entry(&b, o, ob, res.mean, res.se, res.n_indep, res.inefficiency, res.plateau, o->cl_wall,
-                          target, "1");
+        json_t *e = entry(&b, o, ob, res.mean, res.se, res.n_indep, res.inefficiency, res.plateau,
+                          o->wall[SMP_CLUSTERS], target, "1");
         pl_json_int(&b, e, "samples", (long long)bl->n);
         if (ob == OB_PRIMARY_FRACTION) pl_json_str(&b, e, "over", "samples with at least one bond");
         if (ob >= OB_BONDS && energy_bonds) {
@@ -1151,7 +1147,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
         pl_blocking_result_t res = pl_blocking_result(&o->s_vb);
         if (isfinite(res.mean) && isfinite(res.se)) {
             json_t *e = entry(&b, o, OB_SETTLING, res.mean, res.se, res.n_indep, res.inefficiency, res.plateau,
-                              o->s_wall, target, "a0/t0");
+                              o->wall[SMP_SEDIMENT], target, "a0/t0");
             pl_json_int(&b, e, "samples", (long long)o->s_vb.n);
             if (sim->scene.mapping.enabled) { /* a0/t0 -> m/s */
                 const pl_mapping_t *m = &sim->scene.mapping.map;
@@ -1171,7 +1167,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
         pl_json_real(&b, e, "chi2", chi2);
         pl_json_int(&b, e, "dof", dof);
         pl_json_real(&b, e, "p_value", p);
-        pl_json_real(&b, e, "wall_s", o->vd_wall);
+        pl_json_real(&b, e, "wall_s", o->wall[SMP_VDIST]);
         pl_json_str(&b, e, "against", "unit Gaussian of (v - <v>) sqrt(M/kT), all axes (Maxwell-Boltzmann)");
         pl_json_set(&b, all, vkey[k], e);
     }
