@@ -506,18 +506,28 @@ static int clusters_now(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
     return rc;
 }
 
+/* The cluster series with room for cap samples and the size distribution
+ * of n colloids (at the first sample or a restart). */
+static int clusters_alloc(pl_observe_t *o, size_t cap, size_t n, pl_err_t *err)
+{
+    o->c_cap = cap;
+    o->c_step = malloc(cap * sizeof *o->c_step);
+    int oom = !o->c_step;
+    for (int k = 0; k < NCV; ++k) oom |= !(o->c_val[k] = malloc(cap * sizeof(double)));
+    o->c_hist_len = n + 1;
+    o->c_hist = calloc(o->c_hist_len, sizeof *o->c_hist);
+    if (oom || !o->c_hist) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cluster observer");
+    return 0;
+}
+
 static int sample_clusters(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
 {
     const pl_scene_t *sc = &sim->scene;
     const pl_colloid_t *c = sim->colloids;
     if (!o->c_step) {
-        o->c_cap = expected_samples(o, sc->observe.clusters_start, sc->observe.clusters_interval);
-        o->c_step = malloc(o->c_cap * sizeof *o->c_step);
-        int oom = !o->c_step;
-        for (int k = 0; k < NCV; ++k) oom |= !(o->c_val[k] = malloc(o->c_cap * sizeof(double)));
-        o->c_hist_len = c->n + 1;
-        o->c_hist = calloc(o->c_hist_len, sizeof *o->c_hist);
-        if (oom || !o->c_hist) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cluster observer");
+        const size_t cap = expected_samples(o, sc->observe.clusters_start, sc->observe.clusters_interval);
+        int rc = clusters_alloc(o, cap, c->n, err);
+        if (rc) return rc;
     }
     int rc = clusters_now(sim, o, err);
     if (rc) return rc;
@@ -549,20 +559,29 @@ static void scale_components(double *const out[3], size_t n, const double *const
     }
 }
 
+/* The two histograms and the scaled components' buffers (at the first
+ * sample or a restart). */
+static int vdist_alloc(pl_observe_t *o, const pl_sim_t *sim, pl_err_t *err)
+{
+    pl_vdist_params_t p = {.nbins = VD_BINS, .vmax = 4.0}; /* unit Gaussian: 4 sigma, the tails apart */
+    for (int k = 0; k < 2; ++k) {
+        int rc = pl_vdist_create(&p, &o->vd[k], err);
+        if (rc) return rc;
+    }
+    o->vs_n = sim->fluid.n > sim->colloids->n ? sim->fluid.n : sim->colloids->n;
+    for (int d = 0; d < 3; ++d)
+        if (!(o->vs[d] = malloc(o->vs_n * sizeof(double))))
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the velocity-distribution observer");
+    return 0;
+}
+
 static int sample_vdist(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
 {
     const pl_colloid_t *c = sim->colloids;
     const size_t nf = sim->fluid.n;
     if (!o->vd[1]) {
-        pl_vdist_params_t p = {.nbins = VD_BINS, .vmax = 4.0}; /* unit Gaussian: 4 sigma, the tails apart */
-        for (int k = 0; k < 2; ++k) {
-            int rc = pl_vdist_create(&p, &o->vd[k], err);
-            if (rc) return rc;
-        }
-        o->vs_n = nf > c->n ? nf : c->n;
-        for (int d = 0; d < 3; ++d)
-            if (!(o->vs[d] = malloc(o->vs_n * sizeof(double))))
-                return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the velocity-distribution observer");
+        int rc = vdist_alloc(o, sim, err);
+        if (rc) return rc;
     }
     const double kT = pl_scene_kT(&sim->scene);
     if (nf > 1) {
@@ -588,22 +607,33 @@ static double slice_volume(double zc, double R, double a, double b)
     return PL_PI * (R * R * (hi - lo) - (hi * hi * hi - lo * lo * lo) / 3.0);
 }
 
+/* The sedimentation series with room for cap samples of `bins` bins (at
+ * the first sample or a restart); s_vel zeroed: no velocity at the first
+ * sample (a defined checkpoint byte). */
+static int sediment_alloc(pl_observe_t *o, size_t cap, size_t bins, pl_err_t *err)
+{
+    o->s_cap = cap;
+    o->s_bins = bins;
+    o->s_step = malloc(cap * sizeof *o->s_step);
+    o->s_phi = calloc(cap * bins, sizeof(double));
+    o->s_height = malloc(cap * sizeof(double));
+    o->s_vel = calloc(cap, sizeof(double));
+    o->s_vz = malloc(cap * sizeof(double));
+    if (!o->s_step || !o->s_phi || !o->s_height || !o->s_vel || !o->s_vz)
+        return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the sedimentation observer");
+    return 0;
+}
+
 static int sample_sediment(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
 {
     const pl_scene_t *sc = &sim->scene;
     const pl_colloid_t *c = sim->colloids;
     const double Lz = c->box[2];
     if (!o->s_step) {
-        o->s_bins = sc->observe.sediment_bins > 0 ? (size_t)sc->observe.sediment_bins : (size_t)Lz;
-        o->s_cap = expected_samples(o, sc->observe.sediment_start, sc->observe.sediment_interval);
-        o->s_step = malloc(o->s_cap * sizeof *o->s_step);
-        o->s_phi = calloc(o->s_cap * o->s_bins, sizeof(double));
-        o->s_height = malloc(o->s_cap * sizeof(double));
-        o->s_vel = malloc(o->s_cap * sizeof(double));
-        o->s_vz = malloc(o->s_cap * sizeof(double));
-        if (!o->s_step || !o->s_phi || !o->s_height || !o->s_vel || !o->s_vz)
-            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the sedimentation observer");
-        o->s_vel[0] = 0.0; /* no velocity at the first sample (a defined checkpoint byte) */
+        const size_t cap = expected_samples(o, sc->observe.sediment_start, sc->observe.sediment_interval);
+        int rc = sediment_alloc(o, cap, sc->observe.sediment_bins > 0 ? (size_t)sc->observe.sediment_bins : (size_t)Lz,
+                                err);
+        if (rc) return rc;
     }
     if (o->s_n >= o->s_cap) return 0;
     double *phi = o->s_phi + o->s_n * o->s_bins;
@@ -1344,13 +1374,7 @@ static int observe_ckpt_read_group(hid_t g, pl_sim_t *sim, pl_observe_t *o, cons
         if (m[OCK_MSD + k] && (rc = pl_mtobs_ckpt_read(g, &o->mt[k], m[OCK_MSD + k], sim, path, err))) return rc;
     if (m[OCK_CN] >= 0) {
         o->c_n = (size_t)m[OCK_CN];
-        o->c_cap = o->c_n ? o->c_n : 1;
-        o->c_step = malloc(o->c_cap * sizeof *o->c_step);
-        int oom = !o->c_step;
-        for (int k = 0; k < NCV; ++k) oom |= !(o->c_val[k] = malloc(o->c_cap * sizeof(double)));
-        o->c_hist_len = c->n + 1;
-        o->c_hist = calloc(o->c_hist_len, sizeof *o->c_hist);
-        if (oom || !o->c_hist) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cluster observer");
+        if ((rc = clusters_alloc(o, o->c_n ? o->c_n : 1, c->n, err))) return rc;
         if ((rc = pl_ckpt_read_1d(g, "clusters_step", H5T_NATIVE_LLONG, o->c_step, o->c_n, path, err))) return rc;
         for (int k = 0; k < NCV; ++k)
             if ((rc = pl_ckpt_read_1d(g, cv_names[k], H5T_NATIVE_DOUBLE, o->c_val[k], o->c_n, path, err))) return rc;
@@ -1359,29 +1383,16 @@ static int observe_ckpt_read_group(hid_t g, pl_sim_t *sim, pl_observe_t *o, cons
         if ((rc = clusters_ready(sim, o, err))) return rc;
     }
     if (m[OCK_VD]) {
-        pl_vdist_params_t p = {.nbins = VD_BINS, .vmax = 4.0};
         static const char *const vn[2] = {"vdist_fluid", "vdist_colloid"};
+        if ((rc = vdist_alloc(o, sim, err))) return rc;
         for (int k = 0; k < 2; ++k) {
-            if ((rc = pl_vdist_create(&p, &o->vd[k], err))) return rc;
             pl_vdist_state_t st = pl_vdist_state(o->vd[k]);
             if ((rc = pl_ckpt_read_1d(g, vn[k], H5T_NATIVE_UINT64, st.counts, st.ncounts, path, err))) return rc;
         }
-        o->vs_n = sim->fluid.n > c->n ? sim->fluid.n : c->n;
-        for (int d = 0; d < 3; ++d)
-            if (!(o->vs[d] = malloc(o->vs_n * sizeof(double))))
-                return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the velocity-distribution observer");
     }
     if (m[OCK_SN] >= 0) {
         o->s_n = (size_t)m[OCK_SN];
-        o->s_bins = (size_t)m[OCK_SBINS];
-        o->s_cap = o->s_n ? o->s_n : 1;
-        o->s_step = malloc(o->s_cap * sizeof *o->s_step);
-        o->s_phi = calloc(o->s_cap * o->s_bins, sizeof(double));
-        o->s_height = malloc(o->s_cap * sizeof(double));
-        o->s_vel = calloc(o->s_cap, sizeof(double));
-        o->s_vz = malloc(o->s_cap * sizeof(double));
-        if (!o->s_step || !o->s_phi || !o->s_height || !o->s_vel || !o->s_vz)
-            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the sedimentation observer");
+        if ((rc = sediment_alloc(o, o->s_n ? o->s_n : 1, (size_t)m[OCK_SBINS], err))) return rc;
         if ((rc = pl_ckpt_read_1d(g, "sediment_step", H5T_NATIVE_LLONG, o->s_step, o->s_n, path, err)) ||
             (rc = pl_ckpt_read_1d(g, "sediment_phi", H5T_NATIVE_DOUBLE, o->s_phi, o->s_n * o->s_bins, path, err)) ||
             (rc = pl_ckpt_read_1d(g, "sediment_height", H5T_NATIVE_DOUBLE, o->s_height, o->s_n, path, err)) ||
