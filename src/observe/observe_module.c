@@ -9,12 +9,10 @@
  *             size class (radius rank, equal counts: partial g_ab).
  *   S(q)      colloid centres, direct sum over the box's wave vectors
  *             (peloid/sq.h), mean and SE per |q| bin.
- *   MSD, D    unwrapped colloid positions, multiple-tau correlator
- *             (peloid/mtau.h, every-m-th coarse-graining: unbiased at every
- *             lag); D = slope / 6 of the summed-axis MSD, least squares over
- *             the lags in [T/40, T/4] of the sampled span T (the long-time
- *             regime with at least 4 independent origins per lag; Hecht
- *             Eq. 36, PL Sec. VI.C), its SE over colloids.
+ *   MSD, D    the multiple-tau correlator observers (mtau_observers.c):
+ *   VACF      MSD and D (Hecht Eq. 36), VACF and the Green-Kubo D (Hecht
+ *   C_FF      Eq. 35), C_FF of the fluid force and the Green-Kubo friction
+ *             (PL Eq. B2).
  *   velocity  fluid and colloid velocity components, scaled by sqrt(M / kT)
  *   distr.    about their mean, histogrammed (peloid/vdist.h): chi^2 against
  *             the unit Gaussian of Maxwell-Boltzmann (Hecht Figs. 2, 8).
@@ -24,12 +22,6 @@
  *             mean velocity, whose blocking average is the (hindered)
  *             settling velocity of Hecht Eq. 37 (Richardson-Zaki) in a
  *             homogeneous suspension.
- *   VACF      <v(0).v(t)> of the colloid velocities (multiple-tau, AUTO) and
- *             the Green-Kubo D = (1/3) of its integral to T/4 (Hecht Eq. 35).
- *   C_FF      <F(0).F(t)> of the fluid force on the colloids, averaged over
- *             each collision step (potential coupling:
- *             pl_coupling_mean_force), and the Green-Kubo friction (1/3kT)
- *             of its integral to its first zero.
  *   clusters  bond = surface gap below observe.clusters_gap, or pair energy
  *             below -observe.clusters_energy (primary / secondary minimum by
  *             the DLVO barrier gap), union-find over linked cells
@@ -69,13 +61,13 @@
 #include "peloid/io.h"
 #include "peloid/mapping.h"
 #include "peloid/module.h"
-#include "peloid/mtau.h"
 #include "peloid/rdf.h"
 #include "peloid/sq.h"
 #include "peloid/vdist.h"
 #include "checkpoint_h5.h"
+#include "mtau_observers.h"
 
-enum { NFRAC = PL_OBS_NFRAC, MSD_P = 16, MSD_M = 2, VD_BINS = 60 };
+enum { NFRAC = PL_OBS_NFRAC, VD_BINS = 60 };
 #define fractions pl_obs_fractions
 
 /* Observables of the error-against-time report. */
@@ -101,13 +93,23 @@ typedef struct {
 
 typedef pl_obs_point_t ept_t; /* an estimate at a run fraction (observables_out.h) */
 
+/* The sampling observers besides the correlators, in plan order (the
+ * correlators' stages come between S(q) and the clusters): table
+ * `samplers`, before observe_stages. */
+enum { SMP_RDF, SMP_SQ, SMP_CLUSTERS, SMP_VDIST, SMP_SEDIMENT, NSMP };
+
+/* A sampling stage's context: the observers and the stage's row. */
+typedef struct {
+    struct pl_observe *o;
+    int k;
+} obs_stage_t;
+
 typedef struct pl_observe {
     long long first, last; /* the run's steps */
     double t_start;        /* wall clock at the run's start */
     /* g(r) */
     pl_rdf_t *rdf;
     pl_rdf_params_t rdf_par;
-    double rdf_wall;
     /* g(r) per size class: ncls classes, npair = ncls (ncls + 1) / 2 partials */
     size_t ncls, npair;
     pl_rdf_t **rdfc;   /* npair, pair (a, b), a <= b, in row order */
@@ -116,17 +118,8 @@ typedef struct pl_observe {
     size_t *cls_n;     /* ncls: colloids per class */
     /* S(q) */
     pl_sq_t *sq;
-    double sq_wall;
-    /* MSD */
-    pl_mtau_t *msd;
-    double *u[3]; /* unwrapped positions */
-    double msd_dt, msd_wall;
-    /* VACF */
-    pl_mtau_t *vacf;
-    double vacf_dt, vacf_wall;
-    /* C_FF: the mean fluid force over each step (potential coupling) */
-    pl_mtau_t *cff;
-    double cff_dt, cff_wall;
+    /* MSD, VACF, C_FF (mtau_observers.h) */
+    pl_mtobs_t mt[PL_MTOBS_N];
     /* clusters */
     pl_cluster_t *cl;
     pl_blocking_t cb[NCV]; /* cv_names */
@@ -139,18 +132,18 @@ typedef struct pl_observe {
     size_t c_n, c_cap;
     uint64_t *c_hist; /* size distribution summed over samples */
     size_t c_hist_len;
-    double cl_wall;
     /* velocity distributions: 0 fluid, 1 colloids */
     pl_vdist_t *vd[2];
     double *vs[3]; /* scaled components, fluid count (>= colloid count) */
     size_t vs_n;
-    double vd_wall;
     /* sedimentation: phi(z) per sample, mean height, settling velocity */
     size_t s_bins, s_n, s_cap;
     long long *s_step;
     double *s_phi, *s_height, *s_vz, *s_vel; /* s_vel[k]: from heights k-1, k (k >= 1) */
     pl_blocking_t s_vb; /* settling velocity */
-    double s_wall;
+    /* the samplers' wall seconds and the stages' contexts */
+    double wall[NSMP];
+    obs_stage_t smp_ctx[NSMP], mt_ctx[PL_MTOBS_N];
     /* error against run time */
     ept_t ept[OB_N][NFRAC];
     int next_frac;
@@ -292,6 +285,11 @@ static int observe_create(pl_sim_t *sim, pl_err_t *err)
     o->ids_step = -1;
     o->resume_step = -1;
     pl_blocking_init(&o->s_vb);
+    for (int k = 0; k < NSMP; ++k) o->smp_ctx[k] = (obs_stage_t){o, k};
+    for (int k = 0; k < PL_MTOBS_N; ++k) {
+        o->mt[k].which = k;
+        o->mt_ctx[k] = (obs_stage_t){o, k};
+    }
     sim->observe = o;
     if (sim->scene.observe.cff_interval > 0 && sim->coupling)
         return pl_coupling_mean_force_on(sim->coupling, sim->colloids->n, err);
@@ -308,17 +306,12 @@ static void observe_destroy(pl_sim_t *sim)
     free(o->cls);
     free(o->cls_rad);
     free(o->cls_n);
-    pl_mtau_free(o->msd);
     pl_sq_free(o->sq);
-    pl_mtau_free(o->vacf);
-    pl_mtau_free(o->cff);
+    for (int k = 0; k < PL_MTOBS_N; ++k) pl_mtobs_free(&o->mt[k]);
     pl_cluster_free(o->cl);
     pl_vdist_free(o->vd[0]);
     pl_vdist_free(o->vd[1]);
-    for (int d = 0; d < 3; ++d) {
-        free(o->vs[d]);
-        free(o->u[d]);
-    }
+    for (int d = 0; d < 3; ++d) free(o->vs[d]);
     for (int k = 0; k < NCV; ++k) free(o->c_val[k]);
     free(o->c_step);
     free(o->c_hist);
@@ -417,13 +410,9 @@ static int rdf_ready(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
     return pl_rdf_create(p, sim->nthreads, &o->rdf, err);
 }
 
-static int stage_rdf(pl_sim_t *sim, void *ctx, pl_err_t *err)
+static int sample_rdf(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
 {
-    pl_observe_t *o = ctx;
-    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
     const pl_scene_t *sc = &sim->scene;
-    if (sim->step < sc->observe.rdf_start) return 0;
-    const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
     if (!o->rdf) {
         int rc = rdf_ready(sim, o, err);
@@ -435,7 +424,6 @@ static int stage_rdf(pl_sim_t *sim, void *ctx, pl_err_t *err)
         if (rc) return rc;
     }
     for (size_t k = 0; k < o->npair; ++k) pl_rdf_sample(o->rdfc[k], c->n, c->x, c->y, c->z, o->cls);
-    o->rdf_wall += omp_get_wtime() - t0;
     return 0;
 }
 
@@ -450,139 +438,26 @@ static int sq_ready(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
     return rc;
 }
 
-static int stage_sq(pl_sim_t *sim, void *ctx, pl_err_t *err)
+static int sample_sq(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
 {
-    pl_observe_t *o = ctx;
-    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
-    const pl_scene_t *sc = &sim->scene;
-    if (sim->step < sc->observe.sq_start) return 0;
-    const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
     if (!o->sq) {
         int rc = sq_ready(sim, o, err);
         if (rc) return rc;
     }
     pl_sq_sample(o->sq, c->n, c->x, c->y, c->z);
-    o->sq_wall += omp_get_wtime() - t0;
     return 0;
 }
 
-static int stage_msd(pl_sim_t *sim, void *ctx, pl_err_t *err)
+/* A multiple-tau observer's stage (ctx: its o->mt_ctx). */
+static int stage_mtau(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    pl_observe_t *o = ctx;
+    const obs_stage_t *s = ctx;
+    pl_observe_t *o = s->o;
     if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
-    const pl_scene_t *sc = &sim->scene;
-    if (sim->step < sc->observe.msd_start) return 0;
-    const double t0 = omp_get_wtime();
-    const pl_colloid_t *c = sim->colloids;
-    if (!o->msd) {
-        const uint64_t ns = expected_samples(o, sc->observe.msd_start, sc->observe.msd_interval);
-        o->msd_dt = (double)sc->observe.msd_interval * sc->srd.dt;
-        pl_mtau_params_t p = {.n = c->n, .p = MSD_P, .m = MSD_M, .levels = pl_mtau_levels_for(ns, MSD_P, MSD_M),
-                              .kind = PL_MTAU_MSD, .average = 0, .dt = o->msd_dt};
-        int rc = pl_mtau_create(&p, &o->msd, err);
-        if (rc) return rc;
-        for (int d = 0; d < 3; ++d)
-            if (!(o->u[d] = malloc(c->n * sizeof(double))))
-                return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the MSD observer");
-    }
-    const double *x[3] = {c->x, c->y, c->z};
-    const int32_t *im[3] = {c->ix, c->iy, c->iz};
-    for (int d = 0; d < 3; ++d)
-        for (size_t i = 0; i < c->n; ++i) o->u[d][i] = x[d][i] + (double)im[d][i] * c->box[d];
-    pl_mtau_add(o->msd, o->u[0], o->u[1], o->u[2], sim->nthreads);
-    o->msd_wall += omp_get_wtime() - t0;
-    return 0;
-}
-
-static int stage_vacf(pl_sim_t *sim, void *ctx, pl_err_t *err)
-{
-    pl_observe_t *o = ctx;
-    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
-    const pl_scene_t *sc = &sim->scene;
-    if (sim->step < sc->observe.vacf_start) return 0;
-    const double t0 = omp_get_wtime();
-    const pl_colloid_t *c = sim->colloids;
-    if (!o->vacf) {
-        const uint64_t ns = expected_samples(o, sc->observe.vacf_start, sc->observe.vacf_interval);
-        o->vacf_dt = (double)sc->observe.vacf_interval * sc->srd.dt;
-        pl_mtau_params_t p = {.n = c->n, .p = MSD_P, .m = MSD_M, .levels = pl_mtau_levels_for(ns, MSD_P, MSD_M),
-                              .kind = PL_MTAU_AUTO, .average = 0, .dt = o->vacf_dt};
-        int rc = pl_mtau_create(&p, &o->vacf, err);
-        if (rc) return rc;
-    }
-    pl_mtau_add(o->vacf, c->vx, c->vy, c->vz, sim->nthreads);
-    o->vacf_wall += omp_get_wtime() - t0;
-    return 0;
-}
-
-/* C_FF of the step-mean fluid force (pl_coupling_mean_force, the potential
- * coupling): from the end of the run's first step on (the start state has
- * no step). */
-static int stage_cff(pl_sim_t *sim, void *ctx, pl_err_t *err)
-{
-    pl_observe_t *o = ctx;
-    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
-    const pl_scene_t *sc = &sim->scene;
-    if (sim->step < sc->observe.cff_start || sim->step <= o->first || !pl_coupling_mean_force(sim->coupling))
-        return 0;
-    const double t0 = omp_get_wtime();
-    const pl_colloid_t *c = sim->colloids;
-    if (!o->cff) {
-        const uint64_t ns = expected_samples(o, sc->observe.cff_start, sc->observe.cff_interval);
-        o->cff_dt = (double)sc->observe.cff_interval * sc->srd.dt;
-        pl_mtau_params_t p = {.n = c->n, .p = MSD_P, .m = MSD_M, .levels = pl_mtau_levels_for(ns, MSD_P, MSD_M),
-                              .kind = PL_MTAU_AUTO, .average = 0, .dt = o->cff_dt};
-        int rc = pl_mtau_create(&p, &o->cff, err);
-        if (rc) return rc;
-    }
-    const double *f = pl_coupling_mean_force(sim->coupling);
-    pl_mtau_add(o->cff, f, f + c->n, f + 2 * c->n, sim->nthreads);
-    o->cff_wall += omp_get_wtime() - t0;
-    return 0;
-}
-
-/* Green-Kubo friction xi = (1/3kT) int_0^{t1} <F(0).F(t)> dt (PL Eq. B2; the
- * Kirkwood formula of a fixed colloid), t1 the first lag where the summed
- * C_FF is <= 0 (its decay: PL Fig. 10; beyond it the integral of a finite
- * run only adds noise, and for a free colloid it tends to 0), else a quarter
- * of the sampled span.  Also <F.F>(0). */
-static int friction(const pl_observe_t *o, double kT, double *xi, double *se, double *t1, double *f2)
-{
-    if (!o->cff || pl_mtau_samples(o->cff) < 8) return 0;
-    const size_t nl = pl_mtau_nlags(o->cff);
-    double *lag = malloc(nl * (1 + PL_MTAU_COLS) * sizeof(double));
-    if (!lag) return 0;
-    double *val = lag + nl;
-    pl_mtau_result(o->cff, lag, NULL, val, NULL);
-    *f2 = val[3];
-    *t1 = 0.25 * (double)(pl_mtau_samples(o->cff) - 1) * o->cff_dt;
-    for (size_t k = 1; k < nl && lag[k] <= *t1; ++k)
-        if (isfinite(val[PL_MTAU_COLS * k + 3]) && val[PL_MTAU_COLS * k + 3] <= 0.0) {
-            *t1 = lag[k];
-            break;
-        }
-    free(lag);
-    double s[PL_MTAU_COLS], e[PL_MTAU_COLS];
-    pl_err_t ignore = {0, ""};
-    if (pl_mtau_integral(o->cff, *t1, s, e, &ignore)) return 0;
-    *xi = s[3] / (3.0 * kT);
-    *se = e[3] / (3.0 * kT);
-    return isfinite(*xi) && isfinite(*se);
-}
-
-/* Green-Kubo D = (1/3) int_0^{T/4} <v(0).v(t)> dt (Hecht Eq. 35); 0 when
- * too few lags. */
-static int green_kubo(const pl_observe_t *o, double *D, double *se, double *tmax)
-{
-    if (!o->vacf || pl_mtau_samples(o->vacf) < 8) return 0;
-    *tmax = 0.25 * (double)(pl_mtau_samples(o->vacf) - 1) * o->vacf_dt;
-    double s[PL_MTAU_COLS], e[PL_MTAU_COLS];
-    pl_err_t ignore = {0, ""};
-    if (pl_mtau_integral(o->vacf, *tmax, s, e, &ignore)) return 0;
-    *D = s[3] / 3.0;
-    *se = e[3] / 3.0;
-    return isfinite(*D) && isfinite(*se);
+    const pl_scene_observe_t *so = &sim->scene.observe;
+    const uint64_t ns = expected_samples(o, pl_mtobs_start(so, s->k), pl_mtobs_interval(so, s->k));
+    return pl_mtobs_sample(&o->mt[s->k], sim, o->first, ns, err);
 }
 
 /* Energy bond (observe.clusters_bond = "energy"): kind 1 (primary minimum)
@@ -631,22 +506,28 @@ static int clusters_now(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
     return rc;
 }
 
-static int stage_clusters(pl_sim_t *sim, void *ctx, pl_err_t *err)
+/* The cluster series with room for cap samples and the size distribution
+ * of n colloids (at the first sample or a restart). */
+static int clusters_alloc(pl_observe_t *o, size_t cap, size_t n, pl_err_t *err)
 {
-    pl_observe_t *o = ctx;
-    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
+    o->c_cap = cap;
+    o->c_step = malloc(cap * sizeof *o->c_step);
+    int oom = !o->c_step;
+    for (int k = 0; k < NCV; ++k) oom |= !(o->c_val[k] = malloc(cap * sizeof(double)));
+    o->c_hist_len = n + 1;
+    o->c_hist = calloc(o->c_hist_len, sizeof *o->c_hist);
+    if (oom || !o->c_hist) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cluster observer");
+    return 0;
+}
+
+static int sample_clusters(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
+{
     const pl_scene_t *sc = &sim->scene;
-    if (sim->step < sc->observe.clusters_start) return 0;
-    const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
     if (!o->c_step) {
-        o->c_cap = expected_samples(o, sc->observe.clusters_start, sc->observe.clusters_interval);
-        o->c_step = malloc(o->c_cap * sizeof *o->c_step);
-        int oom = !o->c_step;
-        for (int k = 0; k < NCV; ++k) oom |= !(o->c_val[k] = malloc(o->c_cap * sizeof(double)));
-        o->c_hist_len = c->n + 1;
-        o->c_hist = calloc(o->c_hist_len, sizeof *o->c_hist);
-        if (oom || !o->c_hist) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cluster observer");
+        const size_t cap = expected_samples(o, sc->observe.clusters_start, sc->observe.clusters_interval);
+        int rc = clusters_alloc(o, cap, c->n, err);
+        if (rc) return rc;
     }
     int rc = clusters_now(sim, o, err);
     if (rc) return rc;
@@ -663,7 +544,6 @@ static int stage_clusters(pl_sim_t *sim, void *ctx, pl_err_t *err)
     size_t len;
     const uint64_t *h = pl_cluster_size_hist(o->cl, &len);
     for (size_t s = 0; s < len && s < o->c_hist_len; ++s) o->c_hist[s] += h[s];
-    o->cl_wall += omp_get_wtime() - t0;
     return 0;
 }
 
@@ -679,24 +559,29 @@ static void scale_components(double *const out[3], size_t n, const double *const
     }
 }
 
-static int stage_vdist(pl_sim_t *sim, void *ctx, pl_err_t *err)
+/* The two histograms and the scaled components' buffers (at the first
+ * sample or a restart). */
+static int vdist_alloc(pl_observe_t *o, const pl_sim_t *sim, pl_err_t *err)
 {
-    pl_observe_t *o = ctx;
-    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
-    if (sim->step < sim->scene.observe.vdist_start) return 0;
-    const double t0 = omp_get_wtime();
+    pl_vdist_params_t p = {.nbins = VD_BINS, .vmax = 4.0}; /* unit Gaussian: 4 sigma, the tails apart */
+    for (int k = 0; k < 2; ++k) {
+        int rc = pl_vdist_create(&p, &o->vd[k], err);
+        if (rc) return rc;
+    }
+    o->vs_n = sim->fluid.n > sim->colloids->n ? sim->fluid.n : sim->colloids->n;
+    for (int d = 0; d < 3; ++d)
+        if (!(o->vs[d] = malloc(o->vs_n * sizeof(double))))
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the velocity-distribution observer");
+    return 0;
+}
+
+static int sample_vdist(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
+{
     const pl_colloid_t *c = sim->colloids;
     const size_t nf = sim->fluid.n;
     if (!o->vd[1]) {
-        pl_vdist_params_t p = {.nbins = VD_BINS, .vmax = 4.0}; /* unit Gaussian: 4 sigma, the tails apart */
-        for (int k = 0; k < 2; ++k) {
-            int rc = pl_vdist_create(&p, &o->vd[k], err);
-            if (rc) return rc;
-        }
-        o->vs_n = nf > c->n ? nf : c->n;
-        for (int d = 0; d < 3; ++d)
-            if (!(o->vs[d] = malloc(o->vs_n * sizeof(double))))
-                return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the velocity-distribution observer");
+        int rc = vdist_alloc(o, sim, err);
+        if (rc) return rc;
     }
     const double kT = pl_scene_kT(&sim->scene);
     if (nf > 1) {
@@ -711,7 +596,6 @@ static int stage_vdist(pl_sim_t *sim, void *ctx, pl_err_t *err)
         scale_components(o->vs, c->n, v, c->mass, kT);
         pl_vdist_sample(o->vd[1], c->n, o->vs[0], o->vs[1], o->vs[2]);
     }
-    o->vd_wall += omp_get_wtime() - t0;
     return 0;
 }
 
@@ -723,26 +607,33 @@ static double slice_volume(double zc, double R, double a, double b)
     return PL_PI * (R * R * (hi - lo) - (hi * hi * hi - lo * lo * lo) / 3.0);
 }
 
-static int stage_sediment(pl_sim_t *sim, void *ctx, pl_err_t *err)
+/* The sedimentation series with room for cap samples of `bins` bins (at
+ * the first sample or a restart); s_vel zeroed: no velocity at the first
+ * sample (a defined checkpoint byte). */
+static int sediment_alloc(pl_observe_t *o, size_t cap, size_t bins, pl_err_t *err)
 {
-    pl_observe_t *o = ctx;
-    if (sim->step == o->resume_step) return 0; /* sampled before the checkpoint */
+    o->s_cap = cap;
+    o->s_bins = bins;
+    o->s_step = malloc(cap * sizeof *o->s_step);
+    o->s_phi = calloc(cap * bins, sizeof(double));
+    o->s_height = malloc(cap * sizeof(double));
+    o->s_vel = calloc(cap, sizeof(double));
+    o->s_vz = malloc(cap * sizeof(double));
+    if (!o->s_step || !o->s_phi || !o->s_height || !o->s_vel || !o->s_vz)
+        return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the sedimentation observer");
+    return 0;
+}
+
+static int sample_sediment(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
+{
     const pl_scene_t *sc = &sim->scene;
-    if (sim->step < sc->observe.sediment_start) return 0;
-    const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
     const double Lz = c->box[2];
     if (!o->s_step) {
-        o->s_bins = sc->observe.sediment_bins > 0 ? (size_t)sc->observe.sediment_bins : (size_t)Lz;
-        o->s_cap = expected_samples(o, sc->observe.sediment_start, sc->observe.sediment_interval);
-        o->s_step = malloc(o->s_cap * sizeof *o->s_step);
-        o->s_phi = calloc(o->s_cap * o->s_bins, sizeof(double));
-        o->s_height = malloc(o->s_cap * sizeof(double));
-        o->s_vel = malloc(o->s_cap * sizeof(double));
-        o->s_vz = malloc(o->s_cap * sizeof(double));
-        if (!o->s_step || !o->s_phi || !o->s_height || !o->s_vel || !o->s_vz)
-            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the sedimentation observer");
-        o->s_vel[0] = 0.0; /* no velocity at the first sample (a defined checkpoint byte) */
+        const size_t cap = expected_samples(o, sc->observe.sediment_start, sc->observe.sediment_interval);
+        int rc = sediment_alloc(o, cap, sc->observe.sediment_bins > 0 ? (size_t)sc->observe.sediment_bins : (size_t)Lz,
+                                err);
+        if (rc) return rc;
     }
     if (o->s_n >= o->s_cap) return 0;
     double *phi = o->s_phi + o->s_n * o->s_bins;
@@ -778,24 +669,7 @@ static int stage_sediment(pl_sim_t *sim, void *ctx, pl_err_t *err)
         pl_blocking_add(&o->s_vb, o->s_vel[k]);
     }
     o->s_n++;
-    o->s_wall += omp_get_wtime() - t0;
     return 0;
-}
-
-/* D = slope / 6 of the summed MSD over [T/40, T/4] (file header); 0 when
- * too few lags. */
-static int diffusion(const pl_observe_t *o, double *D, double *se, double *tmin, double *tmax)
-{
-    if (!o->msd || pl_mtau_samples(o->msd) < 8) return 0;
-    const double T = (double)(pl_mtau_samples(o->msd) - 1) * o->msd_dt;
-    *tmax = 0.25 * T;
-    *tmin = 0.1 * *tmax;
-    double s[PL_MTAU_COLS], e[PL_MTAU_COLS];
-    pl_err_t ignore = {0, ""};
-    if (pl_mtau_slope(o->msd, *tmin, *tmax, s, e, &ignore)) return 0;
-    *D = s[3] / 6.0;
-    *se = e[3] / 6.0;
-    return isfinite(*D) && isfinite(*se);
 }
 
 /* The bin of the highest g(r) (the first coordination shell) and its SE. */
@@ -843,7 +717,7 @@ int pl_observe_estimate(const pl_sim_t *sim, int ob, double *value, double *se)
     const pl_observe_t *o = sim->observe;
     double a, b;
     if (!o || ob < 0 || ob >= OB_N) return 0;
-    if (ob == OB_D) return diffusion(o, value, se, &a, &b);
+    if (ob == OB_D) return pl_mtobs_diffusion(&o->mt[PL_MTOBS_MSD], value, se, &a, &b);
     if (ob == OB_RDF_PEAK) return rdf_peak(o, &a, value, se);
     const pl_blocking_t *bl = ob_blocking(o, ob);
     if (!bl || bl->n < 2) return 0;
@@ -873,7 +747,7 @@ static int stage_error_time(pl_sim_t *sim, void *ctx, pl_err_t *err)
             e[k]->wall_s = wall;
         }
         double a, b, c;
-        e[OB_D]->valid = diffusion(o, &e[OB_D]->value, &e[OB_D]->se, &a, &b);
+        e[OB_D]->valid = pl_mtobs_diffusion(&o->mt[PL_MTOBS_MSD], &e[OB_D]->value, &e[OB_D]->se, &a, &b);
         e[OB_D]->plateau = 1;
         e[OB_RDF_PEAK]->valid = rdf_peak(o, &a, &e[OB_RDF_PEAK]->value, &e[OB_RDF_PEAK]->se);
         e[OB_RDF_PEAK]->plateau = 1;
@@ -936,6 +810,38 @@ static int stage_begin(pl_sim_t *sim, void *ctx, pl_err_t *err)
     return 0;
 }
 
+#define OFFS(m) offsetof(pl_scene_observe_t, m)
+static const struct {
+    const char *stage;
+    int (*sample)(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err);
+    size_t interval, start; /* in pl_scene_observe_t */
+} samplers[NSMP] = {
+    [SMP_RDF] = {"observe-rdf", sample_rdf, OFFS(rdf_interval), OFFS(rdf_start)},
+    [SMP_SQ] = {"observe-sq", sample_sq, OFFS(sq_interval), OFFS(sq_start)},
+    [SMP_CLUSTERS] = {"observe-clusters", sample_clusters, OFFS(clusters_interval), OFFS(clusters_start)},
+    [SMP_VDIST] = {"observe-vdist", sample_vdist, OFFS(vdist_interval), OFFS(vdist_start)},
+    [SMP_SEDIMENT] = {"observe-sediment", sample_sediment, OFFS(sediment_interval), OFFS(sediment_start)},
+};
+
+static long long scene_ll(const pl_scene_observe_t *so, size_t off)
+{
+    return *(const long long *)((const char *)so + off);
+}
+
+/* A sampler's stage (ctx: its o->smp_ctx): not at the checkpoint's step
+ * (sampled before it) nor before the sampler's start step; its wall time
+ * to o->wall. */
+static int stage_sample(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    const obs_stage_t *s = ctx;
+    pl_observe_t *o = s->o;
+    if (sim->step == o->resume_step || sim->step < scene_ll(&sim->scene.observe, samplers[s->k].start)) return 0;
+    const double t0 = omp_get_wtime();
+    const int rc = samplers[s->k].sample(sim, o, err);
+    o->wall[s->k] += omp_get_wtime() - t0;
+    return rc;
+}
+
 static void observe_stages(pl_sim_t *sim)
 {
     pl_observe_t *o = sim->observe;
@@ -944,46 +850,19 @@ static void observe_stages(pl_sim_t *sim)
     pl_stage_t b = {.name = "observe-begin", .fn = stage_begin, .ctx = o, .interval = 1,
                     .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
     pl_sim_add_stage(sim, &b, NULL);
-    if (so->rdf_interval > 0) {
-        pl_stage_t s = {.name = "observe-rdf", .fn = stage_rdf, .ctx = o, .interval = so->rdf_interval,
-                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
-        pl_sim_add_stage(sim, &s, NULL);
-    }
-    if (so->sq_interval > 0) {
-        pl_stage_t s = {.name = "observe-sq", .fn = stage_sq, .ctx = o, .interval = so->sq_interval,
-                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
-        pl_sim_add_stage(sim, &s, NULL);
-    }
-    if (so->msd_interval > 0) {
-        pl_stage_t s = {.name = "observe-msd", .fn = stage_msd, .ctx = o, .interval = so->msd_interval,
-                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
-        pl_sim_add_stage(sim, &s, NULL);
-    }
-    if (so->vacf_interval > 0) {
-        pl_stage_t s = {.name = "observe-vacf", .fn = stage_vacf, .ctx = o, .interval = so->vacf_interval,
-                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
-        pl_sim_add_stage(sim, &s, NULL);
-    }
-    if (so->cff_interval > 0) {
-        pl_stage_t s = {.name = "observe-cff", .fn = stage_cff, .ctx = o, .interval = so->cff_interval,
-                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE};
-        pl_sim_add_stage(sim, &s, NULL);
-    }
-    if (so->clusters_interval > 0) {
-        pl_stage_t s = {.name = "observe-clusters", .fn = stage_clusters, .ctx = o,
-                        .interval = so->clusters_interval, .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE,
-                        .at_start = 1};
-        pl_sim_add_stage(sim, &s, NULL);
-    }
-    if (so->vdist_interval > 0) {
-        pl_stage_t s = {.name = "observe-vdist", .fn = stage_vdist, .ctx = o, .interval = so->vdist_interval,
-                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
-        pl_sim_add_stage(sim, &s, NULL);
-    }
-    if (so->sediment_interval > 0) {
-        pl_stage_t s = {.name = "observe-sediment", .fn = stage_sediment, .ctx = o,
-                        .interval = so->sediment_interval, .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE,
-                        .at_start = 1};
+    for (int k = 0; k < NSMP; ++k) {
+        if (k == SMP_CLUSTERS) /* the correlators between S(q) and the clusters */
+            for (int q = 0; q < PL_MTOBS_N; ++q) {
+                if (pl_mtobs_interval(so, q) <= 0) continue;
+                pl_stage_t s = pl_mtobs_stage(so, q);
+                s.fn = stage_mtau;
+                s.ctx = &o->mt_ctx[q];
+                pl_sim_add_stage(sim, &s, NULL);
+            }
+        if (scene_ll(so, samplers[k].interval) <= 0) continue;
+        pl_stage_t s = {.name = samplers[k].stage, .fn = stage_sample, .ctx = &o->smp_ctx[k],
+                        .interval = scene_ll(so, samplers[k].interval), .phase = PL_PHASE_AFTER,
+                        .slot = PL_SLOT_OBSERVE, .at_start = 1};
         pl_sim_add_stage(sim, &s, NULL);
     }
     pl_stage_t e = {.name = "observe-error-time", .fn = stage_error_time, .ctx = o, .interval = 1,
@@ -994,35 +873,6 @@ static void observe_stages(pl_sim_t *sim)
 /* ---- outputs ----------------------------------------------------------- */
 
 
-
-/* /observables/<name>/{lag, origins, value, value_se} of a multiple-tau
- * correlator, the lags with at least one origin; 0 or -1. */
-static int write_mtau(hid_t obs, const char *name, const pl_mtau_t *c, const char *unit)
-{
-    const size_t nl = pl_mtau_nlags(c);
-    double *lag = malloc(nl * (1 + 2 * PL_MTAU_COLS) * sizeof(double));
-    uint64_t *org = malloc(nl * sizeof(uint64_t));
-    hid_t g = pl_h5_group(obs, name);
-    int bad = !lag || !org || g < 0;
-    if (!bad) {
-        double *val = lag + nl, *se = val + nl * PL_MTAU_COLS;
-        pl_mtau_result(c, lag, org, val, se);
-        size_t n = 0; /* the lags with an origin */
-        while (n < nl && org[n] > 0) ++n;
-        for (size_t k = 0; k < n * PL_MTAU_COLS; ++k)
-            if (!isfinite(se[k])) se[k] = 0.0; /* one colloid: no spread */
-        hsize_t d1[1] = {n}, d2[2] = {n, PL_MTAU_COLS};
-        bad |= pl_obs_put(g, "lag", H5T_NATIVE_DOUBLE, 1, d1, lag, "t0") != 0;
-        bad |= pl_obs_put(g, "origins", H5T_NATIVE_UINT64, 1, d1, org, NULL) != 0;
-        bad |= pl_obs_put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, val, unit) != 0;
-        bad |= pl_obs_put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, se, unit) != 0;
-        bad |= pl_h5_attr_str(g, "columns", "x y z sum") != 0;
-    }
-    if (g >= 0 && H5Gclose(g) < 0) bad = 1;
-    free(lag);
-    free(org);
-    return bad ? -1 : 0;
-}
 
 /* /observables/<name>/{r, r_over_R, [r_um], value (1 x np x nbins; 1 x nbins
  * for one), value_se, step, time, samples}: the run's average of np g(r)
@@ -1147,11 +997,7 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
         if (g >= 0 && H5Gclose(g) < 0) bad = 1;
     }
     if (!bad && o->sq && pl_sq_samples(o->sq) > 0) bad |= write_sq(obs, sim, o) != 0;
-    if (!bad && o->msd && pl_mtau_samples(o->msd) > 1) bad |= write_mtau(obs, "colloid_msd", o->msd, "a0^2") != 0;
-    if (!bad && o->vacf && pl_mtau_samples(o->vacf) > 1)
-        bad |= write_mtau(obs, "colloid_vacf", o->vacf, "a0^2/t0^2") != 0;
-    if (!bad && o->cff && pl_mtau_samples(o->cff) > 1)
-        bad |= write_mtau(obs, "colloid_cff", o->cff, "(kT/a0)^2") != 0;
+    for (int k = 0; !bad && k < PL_MTOBS_N; ++k) bad |= pl_mtobs_write(obs, &o->mt[k]) != 0;
     if (!bad && o->cl && o->c_n > 0) {
         /* the bond kinds with energy bonds; the primary fraction (undefined
          * in samples without a bond) only in the summary */
@@ -1239,8 +1085,9 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
     json_t *all = pl_obs_summary_section(&b, doc, sim, o->first);
     if (!all) return err->code;
     double D, se, tmin, tmax;
-    if (o->msd && diffusion(o, &D, &se, &tmin, &tmax)) {
-        json_t *e = entry(&b, o, OB_D, D, se, (double)sim->colloids->n, 0.0, 1, o->msd_wall, target, "a0^2/t0");
+    const pl_mtobs_t *msd = &o->mt[PL_MTOBS_MSD];
+    if (pl_mtobs_diffusion(msd, &D, &se, &tmin, &tmax)) {
+        json_t *e = entry(&b, o, OB_D, D, se, (double)sim->colloids->n, 0.0, 1, msd->wall, target, "a0^2/t0");
         const double fit[2] = {tmin, tmax};
         pl_json_reals(&b, e, "fit_window_t0", fit, 2);
         if (sim->scene.mapping.enabled) { /* a0^2 / t0 -> m^2/s */
@@ -1250,16 +1097,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
         }
         pl_json_set(&b, all, "colloid_D", e);
     }
-    if (o->vacf && green_kubo(o, &D, &se, &tmax)) {
-        json_t *e = json_object();
-        pl_json_real(&b, e, "value", D);
-        pl_json_real(&b, e, "stderr", se);
-        pl_json_real(&b, e, "n_independent", (double)sim->colloids->n);
-        pl_json_real(&b, e, "integrated_to_t0", tmax);
-        pl_json_real(&b, e, "wall_s", o->vacf_wall);
-        pl_json_str(&b, e, "unit", "a0^2/t0");
-        pl_json_set(&b, all, "colloid_D_green_kubo", e);
-    }
+    pl_mtobs_summary(&b, all, &o->mt[PL_MTOBS_VACF], sim);
     if (o->sq && pl_sq_samples(o->sq) >= 2) { /* the highest bin of S(q) */
         size_t nb = (size_t)sim->scene.observe.sq_bins, best = nb;
         double *buf = malloc(3 * nb * sizeof(double));
@@ -1276,32 +1114,18 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
                 pl_json_real(&b, e, "q", qm[best]);
                 pl_json_real(&b, e, "q_R", qm[best] * sim->scene.colloids.radius);
                 pl_json_int(&b, e, "wave_vectors", (long long)pl_sq_vectors(o->sq));
-                pl_json_real(&b, e, "wall_s", o->sq_wall);
+                pl_json_real(&b, e, "wall_s", o->wall[SMP_SQ]);
                 pl_json_str(&b, e, "unit", "1");
                 pl_json_set(&b, all, "sq_peak", e);
             }
             free(buf);
         }
     }
-    double xi, f2, t1;
-    if (o->cff && friction(o, pl_scene_kT(&sim->scene), &xi, &se, &t1, &f2)) {
-        json_t *e = json_object();
-        pl_json_real(&b, e, "value", xi);
-        pl_json_real(&b, e, "stderr", se);
-        pl_json_real(&b, e, "n_independent", (double)sim->colloids->n);
-        pl_json_real(&b, e, "integrated_to_t0", t1);
-        pl_json_real(&b, e, "force_variance", f2);
-        pl_json_str(&b, e, "force_variance_unit", "(kT/a0)^2");
-        pl_json_real(&b, e, "wall_s", o->cff_wall);
-        pl_json_str(&b, e, "unit", "m_f/t0");
-        pl_json_str(&b, e, "definition", "(1/3kT) int_0^t1 <F(0).F(t)> dt, F the fluid force averaged over each "
-                                         "collision step, t1 the first zero of C_FF");
-        pl_json_set(&b, all, "colloid_friction_green_kubo", e);
-    }
+    pl_mtobs_summary(&b, all, &o->mt[PL_MTOBS_CFF], sim);
     double r, g, gse;
     if (o->rdf && rdf_peak(o, &r, &g, &gse)) {
-        json_t *e = entry(&b, o, OB_RDF_PEAK, g, gse, (double)pl_rdf_samples(o->rdf), 0.0, 1, o->rdf_wall, target,
-                          "1");
+        json_t *e = entry(&b, o, OB_RDF_PEAK, g, gse, (double)pl_rdf_samples(o->rdf), 0.0, 1, o->wall[SMP_RDF],
+                          target, "1");
         pl_json_real(&b, e, "r", r);
         rdf_r_units(&b, e, &sim->scene, r);
         pl_json_int(&b, e, "samples", (long long)pl_rdf_samples(o->rdf));
@@ -1325,7 +1149,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
                 pl_json_real(&b, e, "value", g);
                 pl_json_real(&b, e, "stderr", gse);
                 pl_json_real(&b, e, "n_independent", (double)pl_rdf_samples(o->rdfc[q]));
-                pl_json_real(&b, e, "wall_s", o->rdf_wall);
+                pl_json_real(&b, e, "wall_s", o->wall[SMP_RDF]);
                 pl_json_str(&b, e, "unit", "1");
                 pl_json_real(&b, e, "r", r);
                 rdf_r_units(&b, e, &sim->scene, r);
@@ -1339,8 +1163,8 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
         if (ob == OB_SETTLING || !bl || bl->n < 2 || (ob > OB_BONDS && !energy_bonds)) continue;
         pl_blocking_result_t res = pl_blocking_result(bl);
         if (!isfinite(res.mean) || !isfinite(res.se)) continue;
-        json_t *e = entry(&b, o, ob, res.mean, res.se, res.n_indep, res.inefficiency, res.plateau, o->cl_wall,
-                          target, "1");
+        json_t *e = entry(&b, o, ob, res.mean, res.se, res.n_indep, res.inefficiency, res.plateau,
+                          o->wall[SMP_CLUSTERS], target, "1");
         pl_json_int(&b, e, "samples", (long long)bl->n);
         if (ob == OB_PRIMARY_FRACTION) pl_json_str(&b, e, "over", "samples with at least one bond");
         if (ob >= OB_BONDS && energy_bonds) {
@@ -1353,7 +1177,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
         pl_blocking_result_t res = pl_blocking_result(&o->s_vb);
         if (isfinite(res.mean) && isfinite(res.se)) {
             json_t *e = entry(&b, o, OB_SETTLING, res.mean, res.se, res.n_indep, res.inefficiency, res.plateau,
-                              o->s_wall, target, "a0/t0");
+                              o->wall[SMP_SEDIMENT], target, "a0/t0");
             pl_json_int(&b, e, "samples", (long long)o->s_vb.n);
             if (sim->scene.mapping.enabled) { /* a0/t0 -> m/s */
                 const pl_mapping_t *m = &sim->scene.mapping.map;
@@ -1373,7 +1197,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
         pl_json_real(&b, e, "chi2", chi2);
         pl_json_int(&b, e, "dof", dof);
         pl_json_real(&b, e, "p_value", p);
-        pl_json_real(&b, e, "wall_s", o->vd_wall);
+        pl_json_real(&b, e, "wall_s", o->wall[SMP_VDIST]);
         pl_json_str(&b, e, "against", "unit Gaussian of (v - <v>) sqrt(M/kT), all axes (Maxwell-Boltzmann)");
         pl_json_set(&b, all, vkey[k], e);
     }
@@ -1397,16 +1221,6 @@ enum { OCK_FIRST, OCK_NEXT_FRAC, OCK_MSD, OCK_VACF, OCK_CFF, OCK_RDF, OCK_NCLS, 
        OCK_VD, OCK_SN, OCK_SBINS, OCK_STEP, OCK_N };
 enum { NEPT = OB_N * NFRAC };
 
-static int ck_mtau_write(hid_t g, const char *name, pl_mtau_t *c)
-{
-    char a[64], b[64];
-    snprintf(a, sizeof a, "%s_values", name);
-    snprintf(b, sizeof b, "%s_counters", name);
-    pl_mtau_state_t st = pl_mtau_state(c);
-    return pl_ckpt_write_1d(g, a, H5T_NATIVE_DOUBLE, st.values, st.nvalues) |
-           pl_ckpt_write_1d(g, b, H5T_NATIVE_UINT64, st.counters, st.ncounters);
-}
-
 static int observe_ckpt_write(int64_t file, const pl_sim_t *sim)
 {
     pl_observe_t *o = sim->observe;
@@ -1414,8 +1228,8 @@ static int observe_ckpt_write(int64_t file, const pl_sim_t *sim)
     hid_t g = pl_ckpt_observe_group_write((hid_t)file, "observe", &sim->scene);
     if (g < 0) return -1;
     long long meta[OCK_N] = {o->begun ? o->first : sim->step, o->next_frac,
-                             o->msd ? pl_mtau_levels(o->msd) : 0, o->vacf ? pl_mtau_levels(o->vacf) : 0,
-                             o->cff ? pl_mtau_levels(o->cff) : 0, o->rdf != NULL, (long long)o->ncls, o->sq != NULL,
+                             pl_mtobs_levels(&o->mt[PL_MTOBS_MSD]), pl_mtobs_levels(&o->mt[PL_MTOBS_VACF]),
+                             pl_mtobs_levels(&o->mt[PL_MTOBS_CFF]), o->rdf != NULL, (long long)o->ncls, o->sq != NULL,
                              o->c_step ? (long long)o->c_n : -1, (long long)o->c_hist_len, o->vd[1] != NULL,
                              o->s_step ? (long long)o->s_n : -1, (long long)o->s_bins, sim->step};
     long long est[NEPT], eflag[2 * NEPT];
@@ -1449,9 +1263,8 @@ static int observe_ckpt_write(int64_t file, const pl_sim_t *sim)
         bad |= pl_ckpt_write_1d(g, "sq_blocking", H5T_NATIVE_UCHAR, st.blocking, st.nblocking * sizeof(pl_blocking_t));
         bad |= pl_ckpt_write_1d(g, "sq_samples", H5T_NATIVE_UINT64, st.samples, 1);
     }
-    if (o->msd) bad |= ck_mtau_write(g, "msd", o->msd);
-    if (o->vacf) bad |= ck_mtau_write(g, "vacf", o->vacf);
-    if (o->cff) bad |= ck_mtau_write(g, "cff", o->cff);
+    for (int k = 0; k < PL_MTOBS_N; ++k)
+        if (o->mt[k].c) bad |= pl_mtobs_ckpt_write(g, &o->mt[k]);
     if (o->c_step) {
         bad |= pl_ckpt_write_1d(g, "clusters_step", H5T_NATIVE_LLONG, o->c_step, o->c_n);
         for (int k = 0; k < NCV; ++k) bad |= pl_ckpt_write_1d(g, cv_names[k], H5T_NATIVE_DOUBLE, o->c_val[k], o->c_n);
@@ -1493,25 +1306,6 @@ static int ck_blocking_read(hid_t g, const char *name, pl_blocking_t *b, size_t 
     return rc;
 }
 
-static int ck_mtau_read(hid_t g, const char *name, long long levels, const pl_mtau_params_t *base, pl_mtau_t **c,
-                        const char *path, pl_err_t *err)
-{
-    if (levels < 1 || levels > PL_MTAU_MAX_LEVELS)
-        return pl_err_set(err, PL_ERR_INPUT, "%s: /observe/meta: %s correlator with %lld levels; allowed 1..%d "
-                                             "(corrupt checkpoint)", path, name, levels, PL_MTAU_MAX_LEVELS);
-    pl_mtau_params_t p = *base;
-    p.levels = (int)levels;
-    int rc = pl_mtau_create(&p, c, err);
-    if (rc) return rc;
-    char a[64], b[64];
-    snprintf(a, sizeof a, "%s_values", name);
-    snprintf(b, sizeof b, "%s_counters", name);
-    pl_mtau_state_t st = pl_mtau_state(*c);
-    rc = pl_ckpt_read_1d(g, a, H5T_NATIVE_DOUBLE, st.values, st.nvalues, path, err);
-    if (!rc) rc = pl_ckpt_read_1d(g, b, H5T_NATIVE_UINT64, st.counters, st.ncounters, path, err);
-    return rc;
-}
-
 static int observe_ckpt_read_group(hid_t g, pl_sim_t *sim, pl_observe_t *o, const char *path, pl_err_t *err)
 {
     const pl_scene_t *sc = &sim->scene;
@@ -1524,13 +1318,14 @@ static int observe_ckpt_read_group(hid_t g, pl_sim_t *sim, pl_observe_t *o, cons
     if (!rc) rc = pl_ckpt_read_1d(g, "ept_flags", H5T_NATIVE_LLONG, eflag, 2 * NEPT, path, err);
     if (!rc) rc = pl_ckpt_read_1d(g, "ept_values", H5T_NATIVE_DOUBLE, eval, 2 * NEPT, path, err);
     if (rc) return rc;
+    int mt_off = 0; /* a correlator whose observer is off */
+    for (int k = 0; k < PL_MTOBS_N; ++k) mt_off |= m[OCK_MSD + k] && pl_mtobs_interval(so, k) <= 0;
     /* what the observe section allows (the fingerprint matched, so only a
      * corrupt file has more) */
     const char *why = m[OCK_STEP] != sim->step ? "step differs from the checkpoint's"
                       : m[OCK_FIRST] < 0 || m[OCK_FIRST] > sim->step ? "first step out of range"
                       : m[OCK_NEXT_FRAC] < 0 || m[OCK_NEXT_FRAC] > NFRAC ? "next_frac out of range"
-                      : (m[OCK_MSD] && so->msd_interval <= 0) || (m[OCK_VACF] && so->vacf_interval <= 0) ||
-                                (m[OCK_CFF] && so->cff_interval <= 0) || (m[OCK_RDF] && so->rdf_interval <= 0) ||
+                      : mt_off || (m[OCK_RDF] && so->rdf_interval <= 0) ||
                                 (m[OCK_SQ] && so->sq_interval <= 0) || (m[OCK_VD] && so->vdist_interval <= 0) ||
                                 (m[OCK_CN] >= 0 && so->clusters_interval <= 0) ||
                                 (m[OCK_SN] >= 0 && so->sediment_interval <= 0)
@@ -1575,32 +1370,11 @@ static int observe_ckpt_read_group(hid_t g, pl_sim_t *sim, pl_observe_t *o, cons
         if ((rc = ck_blocking_read(g, "sq_blocking", st.blocking, st.nblocking, path, err))) return rc;
         if ((rc = pl_ckpt_read_1d(g, "sq_samples", H5T_NATIVE_UINT64, st.samples, 1, path, err))) return rc;
     }
-    pl_mtau_params_t base = {.n = c->n, .p = MSD_P, .m = MSD_M, .kind = PL_MTAU_MSD, .average = 0};
-    if (m[OCK_MSD]) {
-        o->msd_dt = base.dt = (double)so->msd_interval * sc->srd.dt;
-        if ((rc = ck_mtau_read(g, "msd", m[OCK_MSD], &base, &o->msd, path, err))) return rc;
-        for (int d = 0; d < 3; ++d)
-            if (!(o->u[d] = malloc(c->n * sizeof(double))))
-                return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the MSD observer");
-    }
-    base.kind = PL_MTAU_AUTO;
-    if (m[OCK_VACF]) {
-        o->vacf_dt = base.dt = (double)so->vacf_interval * sc->srd.dt;
-        if ((rc = ck_mtau_read(g, "vacf", m[OCK_VACF], &base, &o->vacf, path, err))) return rc;
-    }
-    if (m[OCK_CFF]) {
-        o->cff_dt = base.dt = (double)so->cff_interval * sc->srd.dt;
-        if ((rc = ck_mtau_read(g, "cff", m[OCK_CFF], &base, &o->cff, path, err))) return rc;
-    }
+    for (int k = 0; k < PL_MTOBS_N; ++k)
+        if (m[OCK_MSD + k] && (rc = pl_mtobs_ckpt_read(g, &o->mt[k], m[OCK_MSD + k], sim, path, err))) return rc;
     if (m[OCK_CN] >= 0) {
         o->c_n = (size_t)m[OCK_CN];
-        o->c_cap = o->c_n ? o->c_n : 1;
-        o->c_step = malloc(o->c_cap * sizeof *o->c_step);
-        int oom = !o->c_step;
-        for (int k = 0; k < NCV; ++k) oom |= !(o->c_val[k] = malloc(o->c_cap * sizeof(double)));
-        o->c_hist_len = c->n + 1;
-        o->c_hist = calloc(o->c_hist_len, sizeof *o->c_hist);
-        if (oom || !o->c_hist) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cluster observer");
+        if ((rc = clusters_alloc(o, o->c_n ? o->c_n : 1, c->n, err))) return rc;
         if ((rc = pl_ckpt_read_1d(g, "clusters_step", H5T_NATIVE_LLONG, o->c_step, o->c_n, path, err))) return rc;
         for (int k = 0; k < NCV; ++k)
             if ((rc = pl_ckpt_read_1d(g, cv_names[k], H5T_NATIVE_DOUBLE, o->c_val[k], o->c_n, path, err))) return rc;
@@ -1609,29 +1383,16 @@ static int observe_ckpt_read_group(hid_t g, pl_sim_t *sim, pl_observe_t *o, cons
         if ((rc = clusters_ready(sim, o, err))) return rc;
     }
     if (m[OCK_VD]) {
-        pl_vdist_params_t p = {.nbins = VD_BINS, .vmax = 4.0};
         static const char *const vn[2] = {"vdist_fluid", "vdist_colloid"};
+        if ((rc = vdist_alloc(o, sim, err))) return rc;
         for (int k = 0; k < 2; ++k) {
-            if ((rc = pl_vdist_create(&p, &o->vd[k], err))) return rc;
             pl_vdist_state_t st = pl_vdist_state(o->vd[k]);
             if ((rc = pl_ckpt_read_1d(g, vn[k], H5T_NATIVE_UINT64, st.counts, st.ncounts, path, err))) return rc;
         }
-        o->vs_n = sim->fluid.n > c->n ? sim->fluid.n : c->n;
-        for (int d = 0; d < 3; ++d)
-            if (!(o->vs[d] = malloc(o->vs_n * sizeof(double))))
-                return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the velocity-distribution observer");
     }
     if (m[OCK_SN] >= 0) {
         o->s_n = (size_t)m[OCK_SN];
-        o->s_bins = (size_t)m[OCK_SBINS];
-        o->s_cap = o->s_n ? o->s_n : 1;
-        o->s_step = malloc(o->s_cap * sizeof *o->s_step);
-        o->s_phi = calloc(o->s_cap * o->s_bins, sizeof(double));
-        o->s_height = malloc(o->s_cap * sizeof(double));
-        o->s_vel = calloc(o->s_cap, sizeof(double));
-        o->s_vz = malloc(o->s_cap * sizeof(double));
-        if (!o->s_step || !o->s_phi || !o->s_height || !o->s_vel || !o->s_vz)
-            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the sedimentation observer");
+        if ((rc = sediment_alloc(o, o->s_n ? o->s_n : 1, (size_t)m[OCK_SBINS], err))) return rc;
         if ((rc = pl_ckpt_read_1d(g, "sediment_step", H5T_NATIVE_LLONG, o->s_step, o->s_n, path, err)) ||
             (rc = pl_ckpt_read_1d(g, "sediment_phi", H5T_NATIVE_DOUBLE, o->s_phi, o->s_n * o->s_bins, path, err)) ||
             (rc = pl_ckpt_read_1d(g, "sediment_height", H5T_NATIVE_DOUBLE, o->s_height, o->s_n, path, err)) ||
@@ -1677,18 +1438,10 @@ static int grow_buf(void **p, size_t n, size_t cap, size_t sz)
 static int observe_resume(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
 {
     const pl_scene_observe_t *so = &sim->scene.observe;
-    pl_mtau_t **cs[3] = {&o->msd, &o->vacf, &o->cff};
-    const long long st[3] = {so->msd_start, so->vacf_start, so->cff_start};
-    const long long iv[3] = {so->msd_interval, so->vacf_interval, so->cff_interval};
-    for (int k = 0; k < 3; ++k) {
-        if (!*cs[k]) continue;
-        const int need = pl_mtau_levels_for(expected_samples(o, st[k], iv[k]), MSD_P, MSD_M);
-        if (need <= pl_mtau_levels(*cs[k])) continue;
-        pl_mtau_t *g;
-        int rc = pl_mtau_grow(*cs[k], need, &g, err);
+    for (int k = 0; k < PL_MTOBS_N; ++k) {
+        if (!o->mt[k].c) continue; /* not sampled yet (its interval may be 0) */
+        int rc = pl_mtobs_grow(&o->mt[k], expected_samples(o, pl_mtobs_start(so, k), pl_mtobs_interval(so, k)), err);
         if (rc) return rc;
-        pl_mtau_free(*cs[k]);
-        *cs[k] = g;
     }
     if (o->c_step) {
         const size_t cap = expected_samples(o, so->clusters_start, so->clusters_interval);
