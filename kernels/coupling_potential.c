@@ -301,6 +301,28 @@ void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
     }
 }
 
+/* The second step of the detection (pl_coupling_find_binned,
+ * pl_coupling_find_block): of the particles out[s0 .. s1) (in cells with
+ * candidates), those a candidate's sphere holds are kept in order, in place,
+ * from out[*in] on; *in and the pair count *np advance. */
+static inline void keep_inside(const image_box_t *q, const pl_coupling_colloids_t *c, const int32_t *clist,
+                               const uint32_t *restrict cstart, const pl_fluid_t *f, uint32_t *out, size_t s0,
+                               size_t s1, size_t *in, size_t *np)
+{
+    const uint32_t *restrict cell = f->cell;
+    size_t kept = *in, pairs = *np;
+    for (size_t s = s0; s < s1; ++s) {
+        const size_t i = out[s], cl = cell[i];
+        const int k = near_count(q, c, clist, (int32_t)cstart[cl], (int32_t)cstart[cl + 1], f->r[0][i],
+                                 f->r[1][i], f->r[2][i]);
+        out[kept] = (uint32_t)i;
+        kept += (size_t)(k > 0);
+        pairs += (size_t)k;
+    }
+    *in = kept;
+    *np = pairs;
+}
+
 void pl_coupling_find_binned(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
                              const uint32_t *cstart, const int32_t *clist, int nthreads, uint32_t *found,
                              uint64_t *counts)
@@ -318,14 +340,7 @@ void pl_coupling_find_binned(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
             m += (size_t)(cstart[cell[i]] != cstart[cell[i] + 1]);
         }
         /* ... then those a candidate's sphere holds, in place */
-        for (size_t s = 0; s < m; ++s) {
-            const size_t i = found[lo + s], cl = cell[i];
-            const int k = near_count(&q, c, clist, (int32_t)cstart[cl], (int32_t)cstart[cl + 1], f->r[0][i],
-                                     f->r[1][i], f->r[2][i]);
-            found[lo + in] = (uint32_t)i;
-            in += (size_t)(k > 0);
-            np += (size_t)k;
-        }
+        keep_inside(&q, c, clist, cstart, f, found + lo, 0, m, &in, &np);
         counts[(size_t)t * 8 + 2] = in;
         counts[(size_t)t * 8 + 3] = np;
     }
@@ -353,14 +368,7 @@ void pl_coupling_find_block(void *ctx, int t, size_t lo, size_t hi)
         out[m] = (uint32_t)i;
         m += (size_t)((mask[cl >> 6] >> (cl & 63)) & 1u);
     }
-    for (size_t s = m0; s < m; ++s) {
-        const size_t i = out[s], cl = cell[i];
-        const int k = near_count(&q, &x->c, x->clist, (int32_t)cstart[cl], (int32_t)cstart[cl + 1], f->r[0][i],
-                                 f->r[1][i], f->r[2][i]);
-        out[in] = (uint32_t)i;
-        in += (size_t)(k > 0);
-        np += (size_t)k;
-    }
+    keep_inside(&q, &x->c, x->clist, cstart, f, out, m0, m, &in, &np);
     cnt[2] = in;
     cnt[3] = np;
 }
