@@ -1,8 +1,10 @@
 /* Scene struct of the observers (section `observe`; schema in
- * src/scene/scene_keys_observe.c).  Included by scene.h; plain data only.  An
- * interval of 0 leaves the observer out of the plan. */
+ * src/scene/scene_keys_observe.c).  Included by scene.h; plain data and one
+ * accessor.  An interval of 0 leaves the observer out of the plan. */
 #ifndef PELOID_OBSERVE_SCENE_H
 #define PELOID_OBSERVE_SCENE_H
+
+#include <stddef.h>
 
 enum { PL_BOND_GAP = 0, PL_BOND_ENERGY = 1 }; /* observe.clusters_bond */
 
@@ -25,6 +27,13 @@ typedef struct {
     long long stress_interval, stress_start, stress_gk_steps; /* fluid stress, Green-Kubo viscosity */
     double target_rel_error;           /* the error-against-time report's target */
 } pl_scene_observe_t;
+
+/* The long long key at byte offset off (offsetof(pl_scene_observe_t, ...)):
+ * for the observers' tables of interval and start keys. */
+static inline long long pl_scene_observe_ll(const pl_scene_observe_t *so, size_t off)
+{
+    return *(const long long *)((const char *)so + off);
+}
 
 /* Section `stop`: end the run when an observable's relative SE reaches
  * rel_error (checked every check_interval steps, from the state only: the

@@ -52,13 +52,14 @@ static const struct {
     {"cff", "observe-cff", "colloid_cff", "(kT/a0)^2", PL_MTAU_AUTO, OFFO(cff_interval), OFFO(cff_start), 0},
 };
 
-static long long scene_ll(const pl_scene_observe_t *so, size_t off)
+long long pl_mtobs_interval(const pl_scene_observe_t *so, int which)
 {
-    return *(const long long *)((const char *)so + off);
+    return pl_scene_observe_ll(so, rows[which].interval);
 }
-
-long long pl_mtobs_interval(const pl_scene_observe_t *so, int which) { return scene_ll(so, rows[which].interval); }
-long long pl_mtobs_start(const pl_scene_observe_t *so, int which) { return scene_ll(so, rows[which].start); }
+long long pl_mtobs_start(const pl_scene_observe_t *so, int which)
+{
+    return pl_scene_observe_ll(so, rows[which].start);
+}
 
 pl_stage_t pl_mtobs_stage(const pl_scene_observe_t *so, int which)
 {

@@ -823,11 +823,6 @@ static const struct {
     [SMP_SEDIMENT] = {"observe-sediment", sample_sediment, OFFS(sediment_interval), OFFS(sediment_start)},
 };
 
-static long long scene_ll(const pl_scene_observe_t *so, size_t off)
-{
-    return *(const long long *)((const char *)so + off);
-}
-
 /* A sampler's stage (ctx: its o->smp_ctx): not at the checkpoint's step
  * (sampled before it) nor before the sampler's start step; its wall time
  * to o->wall. */
@@ -835,7 +830,8 @@ static int stage_sample(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     const obs_stage_t *s = ctx;
     pl_observe_t *o = s->o;
-    if (sim->step == o->resume_step || sim->step < scene_ll(&sim->scene.observe, samplers[s->k].start)) return 0;
+    if (sim->step == o->resume_step || sim->step < pl_scene_observe_ll(&sim->scene.observe, samplers[s->k].start))
+        return 0;
     const double t0 = omp_get_wtime();
     const int rc = samplers[s->k].sample(sim, o, err);
     o->wall[s->k] += omp_get_wtime() - t0;
@@ -859,9 +855,9 @@ static void observe_stages(pl_sim_t *sim)
                 s.ctx = &o->mt_ctx[q];
                 pl_sim_add_stage(sim, &s, NULL);
             }
-        if (scene_ll(so, samplers[k].interval) <= 0) continue;
+        if (pl_scene_observe_ll(so, samplers[k].interval) <= 0) continue;
         pl_stage_t s = {.name = samplers[k].stage, .fn = stage_sample, .ctx = &o->smp_ctx[k],
-                        .interval = scene_ll(so, samplers[k].interval), .phase = PL_PHASE_AFTER,
+                        .interval = pl_scene_observe_ll(so, samplers[k].interval), .phase = PL_PHASE_AFTER,
                         .slot = PL_SLOT_OBSERVE, .at_start = 1};
         pl_sim_add_stage(sim, &s, NULL);
     }
