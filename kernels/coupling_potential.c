@@ -51,13 +51,19 @@ static inline double min_image(double d, double h, int L) { return d > h ? d - L
  * The same selections as pl_coupling_inside (checkpoints of periodic, z-wall
  * and capillary scenes bitwise equal); select stage 14 -> 10 ns/particle at
  * 1 thread, 7.5 -> 5.5 at 2 (bench_coupling's potential case). */
-static inline int hit(const image_box_t *q, const pl_coupling_colloids_t *c, int32_t k, double x, double y,
-                      double z)
+static inline double dist2(const image_box_t *q, const pl_coupling_colloids_t *c, int32_t k, double x, double y,
+                           double z)
 {
     const double dx = min_image(x - c->x[k], q->h[0], q->L[0]);
     const double dy = min_image(y - c->y[k], q->h[1], q->L[1]);
     const double dz = min_image(z - c->z[k], q->h[2], q->L[2]);
-    return dx * dx + dy * dy + dz * dz < c->rad[k] * c->rad[k];
+    return dx * dx + dy * dy + dz * dz;
+}
+
+static inline int hit(const image_box_t *q, const pl_coupling_colloids_t *c, int32_t k, double x, double y,
+                      double z)
+{
+    return dist2(q, c, k, x, y, z) < c->rad[k] * c->rad[k];
 }
 
 /* The unit cell of a position (the lookup's). */
@@ -566,6 +572,23 @@ static void pair_block(const pl_coupling_wca_t *w, const pl_coupling_near_t *nb,
     rb[3 * nc] = epot;
 }
 
+/* The force blocks of nb: nb->blk's, else pl_coupling_wca_blocks'. */
+static size_t force_blocks(const pl_coupling_near_t *nb, size_t nc)
+{
+    return nb->blk ? nb->nblk : pl_coupling_wca_blocks(nb->n, nc);
+}
+
+static inline void block_range(const pl_coupling_near_t *nb, size_t nblk, size_t b, size_t *lo, size_t *hi)
+{
+    if (nb->blk) {
+        *lo = nb->blk[2 * b];
+        *hi = nb->blk[2 * b + 1];
+    } else {
+        *lo = nb->n * b / nblk;
+        *hi = nb->n * (b + 1) / nblk;
+    }
+}
+
 /* The reactions of the blocks' rows added in block order, and their energy. */
 static double rows_sum(size_t nc, size_t nblk, const double *partial, double *cfx, double *cfy, double *cfz)
 {
@@ -582,11 +605,14 @@ double pl_coupling_wca_pair_forces(const pl_coupling_wca_t *w, const pl_coupling
                                    const pl_coupling_colloids_t *c, double *cfx, double *cfy, double *cfz,
                                    int nthreads, double *partial, double *pair_buf, size_t pair_cap)
 {
-    const size_t nn = nb->n, nc = c->n, row = 3 * nc + 1, nblk = pl_coupling_wca_blocks(nn, nc);
+    const size_t nc = c->n, row = 3 * nc + 1, nblk = force_blocks(nb, nc);
     double *gx = pair_buf, *gy = pair_buf + pair_cap, *gz = pair_buf + 2 * pair_cap, *ge = pair_buf + 3 * pair_cap;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads)
-    for (size_t b = 0; b < nblk; ++b)
-        pair_block(w, nb, c, nn * b / nblk, nn * (b + 1) / nblk, partial + b * row, gx, gy, gz, ge);
+    for (size_t b = 0; b < nblk; ++b) {
+        size_t lo, hi;
+        block_range(nb, nblk, b, &lo, &hi);
+        pair_block(w, nb, c, lo, hi, partial + b * row, gx, gy, gz, ge);
+    }
     return rows_sum(nc, nblk, partial, cfx, cfy, cfz);
 }
 
@@ -622,7 +648,7 @@ double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_cou
                                         double *partial, double *pair_buf, size_t pair_cap,
                                         int64_t acc[PL_WALL_ACC_N], double *far2)
 {
-    const size_t nn = nb->n, nc = c->n, row = 3 * nc + 1, nblk = pl_coupling_wca_blocks(nn, nc);
+    const size_t nc = c->n, row = 3 * nc + 1, nblk = force_blocks(nb, nc);
     double *gx = pair_buf, *gy = pair_buf + pair_cap, *gz = pair_buf + 2 * pair_cap, *ge = pair_buf + 3 * pair_cap;
     double *const *v = nb->v, *const *F = nb->f;
     const double g0 = ga[0], g1 = ga[1], g2 = ga[2];
@@ -631,7 +657,8 @@ double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_cou
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads) reduction(+ : acc[:PL_WALL_ACC_N]) \
     reduction(max : far)
     for (size_t b = 0; b < nblk; ++b) {
-        const size_t lo = nn * b / nblk, hi = nn * (b + 1) / nblk;
+        size_t lo, hi;
+        block_range(nb, nblk, b, &lo, &hi);
         pair_block(w, nb, c, lo, hi, partial + b * row, gx, gy, gz, ge);
         /* per particle, as pl_coupling_potential_kick (kicks times), then
          * pl_coupling_potential_drift */
@@ -740,12 +767,16 @@ void pl_coupling_potential_gather(const pl_fluid_t *f, const pl_grid_t *g, const
             const uint32_t cl = found_cell[lo + s];
             if (cstart[cl + 1] - cstart[cl] == 1) { /* a listed particle with one candidate: its only pair */
                 nb->k0[j] = clist[cstart[cl]];
+                if (nb->d2min) nb->d2min[j] = dist2(&q, c, nb->k0[j], nb->r[0][j], nb->r[1][j], nb->r[2][j]);
                 continue;
             }
             int first = 1;
+            double d2min = INFINITY;
             for (uint32_t e = cstart[cl]; e < cstart[cl + 1]; ++e) {
                 const int32_t k = clist[e];
                 if (!hit(&q, c, k, nb->r[0][j], nb->r[1][j], nb->r[2][j])) continue;
+                const double d2 = dist2(&q, c, k, nb->r[0][j], nb->r[1][j], nb->r[2][j]);
+                d2min = d2 < d2min ? d2 : d2min;
                 if (first) {
                     nb->k0[j] = k;
                     first = 0;
@@ -755,6 +786,7 @@ void pl_coupling_potential_gather(const pl_fluid_t *f, const pl_grid_t *g, const
                 nb->pj[p] = (uint32_t)j;
                 p++;
             }
+            if (nb->d2min) nb->d2min[j] = d2min;
         }
         if (t == nthreads - 1) nb->pstart[j] = (uint32_t)p;
     }

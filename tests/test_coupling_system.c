@@ -287,6 +287,52 @@ Test(coupling_system, potential_counts_margin_exceeded, .timeout = 120)
     pl_sim_free(b);
 }
 
+/* The potential coupling's MD step over the near particles only, the far
+ * ones in free flight (kernels/coupling_far.c), gives the bits of the step
+ * over all of them: fluid and colloids after 6 collision steps with the
+ * split off (budget 0), on (the default budget) and on with a budget the
+ * colloids exceed within the first MD step (every step resumed over all
+ * the particles after its first evaluation); with and without gravity
+ * (the free flights then accelerate: the fluid carries the compensating
+ * acceleration). */
+Test(coupling_system, potential_free_flight_equals_all_particles, .timeout = 120)
+{
+    const char *cpl = "method = \"potential\"; sigma_cf = 2.0; epsilon_cf = 2.5;";
+    const char *extras[2] = {"", "gravity = [0.0, 0.0, -0.02];"};
+    for (int x = 0; x < 2; ++x) {
+        pl_sim_t *sim[3];
+        const double budget[3] = {0.0, -1.0, 1e-12}; /* -1: the default */
+        for (int v = 0; v < 3; ++v) {
+            sim[v] = make(extras[x], cpl, "", 2);
+            if (budget[v] >= 0.0) sim[v]->coupling->pot->far_budget = budget[v];
+            pl_test_steps(sim[v], 6);
+        }
+        const pl_coupling_potential_state_t *off = sim[0]->coupling->pot, *on = sim[1]->coupling->pot,
+                                            *tight = sim[2]->coupling->pot;
+        cr_expect_eq(off->far_total, 0, "budget 0: %llu free flights", off->far_total);
+        cr_expect_gt(on->far_total, on->near_total / 4, "default budget: %llu of %llu selected particle-steps free",
+                     on->far_total, on->near_total);
+        cr_expect_eq(on->far_resumed, 0, "default budget: %llu resumed", on->far_resumed);
+        cr_expect_eq(tight->far_resumed, 6, "tight budget: %llu of 6 MD steps resumed", tight->far_resumed);
+        for (int v = 1; v < 3; ++v) {
+            const size_t n = sim[0]->fluid.n * sizeof(pl_real), m = sim[0]->colloids->n * sizeof(double);
+            for (int d = 0; d < 3; ++d) {
+                cr_expect(same(sim[0]->fluid.r[d], sim[v]->fluid.r[d], n), "%s variant %d: fluid r[%d] differs",
+                          extras[x], v, d);
+                cr_expect(same(sim[0]->fluid.v[d], sim[v]->fluid.v[d], n), "%s variant %d: fluid v[%d] differs",
+                          extras[x], v, d);
+            }
+            const pl_colloid_t *ca = sim[0]->colloids, *cb = sim[v]->colloids;
+            cr_expect(same(ca->x, cb->x, m) && same(ca->y, cb->y, m) && same(ca->z, cb->z, m) &&
+                          same(ca->vx, cb->vx, m) && same(ca->vy, cb->vy, m) && same(ca->vz, cb->vz, m),
+                      "%s variant %d: colloids differ", extras[x], v);
+            cr_expect(sim[0]->coupling->pot->epot_cf == sim[v]->coupling->pot->epot_cf,
+                      "%s variant %d: coupling energy differs", extras[x], v);
+        }
+        for (int v = 0; v < 3; ++v) pl_sim_free(sim[v]);
+    }
+}
+
 /* Coupling I's events in parallel over blocks of colloids (more than one
  * thread, periodic box) give the serial loop's bits: fluid and colloids
  * after 8 steps at 1, 2 and 3 threads, on a lattice (the parallel pass runs

@@ -237,7 +237,13 @@ double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const doubl
  * it) that the MD step integrates, the position at the selection
  * (r0); and their pairs: particle j's candidate colloids (those whose
  * selection sphere held it, in index order) are k0[j], then pk[pstart[j]
- * .. pstart[j + 1]), pj the particle of each of these further pairs. */
+ * .. pstart[j + 1]), pj the particle of each of these further pairs.
+ * d2min (NULL: not kept): the squared distance at the selection to the
+ * nearest of its pair colloids.  blk (NULL: the blocks of
+ * pl_coupling_wca_blocks(n, colloids), block b = [n b / nblk, n (b + 1) /
+ * nblk)): the forces' blocks given instead, block b = [blk[2 b], blk[2 b +
+ * 1]) of nblk (pl_coupling_far_split's near particles, in the blocks of
+ * all the selected ones). */
 typedef struct {
     size_t n;
     uint32_t *idx;
@@ -246,6 +252,9 @@ typedef struct {
     int32_t *k0;
     uint32_t *pstart, *pj;
     int32_t *pk;
+    double *d2min;
+    const size_t *blk;
+    size_t nblk;
 } pl_coupling_near_t;
 
 /* PL Eq. 17 forces as pl_coupling_wca_forces, over the pairs of nb instead
@@ -275,7 +284,7 @@ double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_cou
  * pl_coupling_find(_sorted): idx, owner, r, r0, v, disp (0 when the fluid
  * is not tracked), and the pairs, tested again against the candidates of
  * the particle's found_cell in (cstart, clist) (the lists the selection
- * used); f is not touched. */
+ * used), with d2min when kept; f is not touched. */
 void pl_coupling_potential_gather(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
                                   const uint32_t *found, const uint32_t *found_cell, const uint64_t *counts,
                                   const uint32_t *cstart, const int32_t *clist, int nthreads,
@@ -301,5 +310,49 @@ double pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t
  * to its new cell in its owner's row of hist (nthreads x g->ncells). */
 void pl_coupling_potential_scatter(const pl_coupling_near_t *nb, pl_fluid_t *f, const pl_grid_t *g,
                                    uint32_t *hist, int nthreads);
+
+/* ---- particles that stay beyond the cut-off (kernels/coupling_far.c) ---- */
+/* The MD step of the selected particles (S >= 1 velocity Verlet steps of
+ * dtm, h = dtm / 2, fluid acceleration g) as the force evaluations see it:
+ * evaluation e = 0 .. S kicks once (e = 0, S) or twice and drifts (e < S). */
+typedef struct {
+    int S;
+    double dtm, h, g[3];
+} pl_coupling_md_plan_t;
+
+/* Splits the selected particles of nb (no walls, no displacement kept)
+ * into far ones, which cannot reach the cut-off rc of a pair colloid in
+ * the MD step while every colloid stays within `budget` of its position at
+ * the selection (the distance at the selection, sqrt(d2min), less the
+ * longest free flight |v| T + |g| T^2 (T = S dtm), less rc, exceeds the
+ * budget), and near ones.  A far particle's force is exactly +0 at every
+ * evaluation (each pair's term is +-0, the reactions and energy gain
+ * nothing), so its whole MD step is done here, as the evaluations would do
+ * it: the velocity at the start kept in its f row (for
+ * pl_coupling_far_resume), position and velocity after the last
+ * evaluation in r and v, and in d2call[e] (S + 1 doubles) the largest
+ * |r - r0|^2 of the far particles after evaluation e's drift (0 for e =
+ * S).  The near ones are copied (r, v, r0, k0, pairs) to sub, in order,
+ * block b of nb's force blocks (nblk of them) from the block's own first
+ * slot on (sub->blk its range; map: nb's index of each sub slot), so that
+ * the forces over sub sum each block's reactions over the same particles
+ * in the same order, without the far ones' zeros: the same bits.  far:
+ * nb->n flags (1 far); scratch: nthreads x (S + 1) doubles.  Returns the
+ * number of far particles.  Deterministic: per particle, or exact (max,
+ * integer counts) over the blocks. */
+size_t pl_coupling_far_split(const pl_coupling_near_t *nb, const pl_coupling_md_plan_t *plan, double rc,
+                             double budget, size_t nblk, int nthreads, pl_coupling_near_t *sub, size_t *blk,
+                             uint32_t *map, uint8_t *far, double *d2call, double *scratch);
+/* The near particles' r and v from sub back into nb (their slots map). */
+void pl_coupling_far_join(const pl_coupling_near_t *sub, const uint32_t *map, const pl_coupling_near_t *nb,
+                          int nthreads);
+/* Puts every selected particle of nb at its state after evaluations 0 ..
+ * done - 1 (done <= S): the far ones replayed from r0 and the velocity at
+ * the start (f row) by the same operations, the near ones joined from sub;
+ * then nb holds them all as the evaluations over all of them would have
+ * left them (for a colloid that moved beyond the budget, or the lookup's
+ * fall-back). */
+void pl_coupling_far_resume(const pl_coupling_near_t *sub, const uint32_t *map, const uint8_t *far,
+                            const pl_coupling_md_plan_t *plan, int done, const pl_coupling_near_t *nb, int nthreads);
 
 #endif
