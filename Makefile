@@ -94,9 +94,10 @@ $(BUILD)/%.o: %.c $(BUILD)/flags.stamp | deps $(BUILD)/gen/peloid_build.h
 # far-pair selects into SIMD blends (no code reads the floating-point
 # exception flags).  Neither changes a computed value.
 $(BUILD)/kernels/colloid_forces.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
-# The free flights' split takes square roots of sums of squares (never
-# negative): without errno they vectorise; sqrt is correctly rounded either way.
-$(BUILD)/kernels/coupling_far.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
+# The potential coupling's selection takes the speed of each particle near a
+# colloid (a square root of a sum of squares, never negative): without errno
+# it vectorises; sqrt is correctly rounded either way.
+$(BUILD)/kernels/coupling_potential.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 
 $(LIB): $(LIB_OBJ)
 	@rm -f $@

@@ -86,9 +86,18 @@ static inline int near_count(const image_box_t *q, const pl_coupling_colloids_t 
     return in;
 }
 
+/* The squared reach of a particle of velocity (vx, vy, vz) (INFINITY
+ * without a reach: the radii alone decide).  The same expression in the
+ * scalar and the vectorised selection: the same bits. */
+static inline double reach2(const pl_coupling_reach_t *r, double vx, double vy, double vz)
+{
+    const double R = r->rc + r->budget + r->tail + r->T * sqrt(vx * vx + vy * vy + vz * vz);
+    return R * R;
+}
+
 void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
-                      const int32_t *lk_start, const int32_t *lk_list, int nthreads,
-                      uint32_t *found, uint32_t *found_cell, uint64_t *counts)
+                      const pl_coupling_reach_t *reach, const int32_t *lk_start, const int32_t *lk_list,
+                      int nthreads, uint32_t *found, uint32_t *found_cell, uint64_t *counts)
 {
     const image_box_t q = image_box(g->L, g->walls);
 #pragma omp parallel num_threads(nthreads)
@@ -99,11 +108,19 @@ void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
         for (size_t i = lo; i < hi; ++i) {
             const double x = f->r[0][i], y = f->r[1][i], z = f->r[2][i];
             const size_t cell = unit_cell(&q, x, y, z);
-            const int in = near_count(&q, c, lk_list, lk_start[cell], lk_start[cell + 1], x, y, z);
+            const double R2 = reach ? reach2(reach, f->v[0][i], f->v[1][i], f->v[2][i]) : INFINITY;
+            int in = 0, sel = 0;
+            for (int32_t p = lk_start[cell]; p < lk_start[cell + 1]; ++p) {
+                const int32_t k = lk_list[p];
+                const double d2 = dist2(&q, c, k, x, y, z);
+                const int h = d2 < c->rad[k] * c->rad[k];
+                in += h;
+                sel |= h & (d2 < R2);
+            }
             found[lo + m] = (uint32_t)i;
             if (found_cell) found_cell[lo + m] = (uint32_t)cell;
-            m += (size_t)(in > 0);
-            np += (size_t)in;
+            m += (size_t)sel;
+            np += sel ? (size_t)in : 0;
         }
         counts[(size_t)t * 8 + 2] = m;
         counts[(size_t)t * 8 + 3] = np;
@@ -241,8 +258,9 @@ static inline int same_candidates(const uint32_t *cstart, const int32_t *clist, 
 }
 
 void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
-                             const uint32_t *cstart, const int32_t *clist, const uint32_t *cell_start,
-                             int nthreads, uint32_t *found, uint32_t *found_cell, uint64_t *counts)
+                             const pl_coupling_reach_t *reach, const uint32_t *cstart, const int32_t *clist,
+                             const uint32_t *cell_start, int nthreads, uint32_t *found, uint32_t *found_cell,
+                             uint64_t *counts)
 {
     const image_box_t q = image_box(g->L, g->walls);
     const size_t ncells = g->ncells;
@@ -253,7 +271,9 @@ void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
         size_t lo, hi, m = 0, np = 0;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
         const pl_real *restrict x = f->r[0], *restrict y = f->r[1], *restrict z = f->r[2];
-        int in[RUN];
+        const pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
+        int in[RUN], sel[RUN];
+        double R2[RUN];
         /* first cell ending after lo */
         size_t a = 0, b = ncells;
         while (a < b) {
@@ -278,7 +298,12 @@ void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
             const size_t i1 = cell_start[ce] < hi ? cell_start[ce] : hi;
             for (size_t s = i0; s < i1; s += RUN) {
                 const size_t len = i1 - s < RUN ? i1 - s : RUN;
-                for (size_t u = 0; u < len; ++u) in[u] = 0;
+                for (size_t u = 0; u < len; ++u) in[u] = sel[u] = 0;
+                if (reach) {
+#pragma omp simd
+                    for (size_t u = 0; u < len; ++u) R2[u] = reach2(reach, vx[s + u], vy[s + u], vz[s + u]);
+                } else
+                    for (size_t u = 0; u < len; ++u) R2[u] = INFINITY;
                 for (uint32_t e = kb; e < ke; ++e) { /* hit(), with its operands in registers */
                     const int32_t k = clist[e];
                     const double cx = c->x[k], cy = c->y[k], cz = c->z[k], r2 = c->rad[k] * c->rad[k];
@@ -290,14 +315,17 @@ void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
                         dx = dx > h0 ? dx - L0 : (dx < -h0 ? dx + L0 : dx);
                         dy = dy > h1 ? dy - L1 : (dy < -h1 ? dy + L1 : dy);
                         dz = dz > h2 ? dz - L2 : (dz < -h2 ? dz + L2 : dz);
-                        in[u] += dx * dx + dy * dy + dz * dz < r2;
+                        const double d2 = dx * dx + dy * dy + dz * dz;
+                        const int h = d2 < r2;
+                        in[u] += h;
+                        sel[u] |= h & (d2 < R2[u]);
                     }
                 }
                 for (size_t u = 0; u < len; ++u) { /* branch-free append */
                     found[lo + m] = (uint32_t)(s + u);
                     found_cell[lo + m] = (uint32_t)cl;
-                    m += (size_t)(in[u] > 0);
-                    np += (size_t)in[u];
+                    m += (size_t)sel[u];
+                    np += sel[u] ? (size_t)in[u] : 0;
                 }
             }
             cl = ce;
@@ -572,23 +600,6 @@ static void pair_block(const pl_coupling_wca_t *w, const pl_coupling_near_t *nb,
     rb[3 * nc] = epot;
 }
 
-/* The force blocks of nb: nb->blk's, else pl_coupling_wca_blocks'. */
-static size_t force_blocks(const pl_coupling_near_t *nb, size_t nc)
-{
-    return nb->blk ? nb->nblk : pl_coupling_wca_blocks(nb->n, nc);
-}
-
-static inline void block_range(const pl_coupling_near_t *nb, size_t nblk, size_t b, size_t *lo, size_t *hi)
-{
-    if (nb->blk) {
-        *lo = nb->blk[2 * b];
-        *hi = nb->blk[2 * b + 1];
-    } else {
-        *lo = nb->n * b / nblk;
-        *hi = nb->n * (b + 1) / nblk;
-    }
-}
-
 /* The reactions of the blocks' rows added in block order, and their energy. */
 static double rows_sum(size_t nc, size_t nblk, const double *partial, double *cfx, double *cfy, double *cfz)
 {
@@ -605,14 +616,11 @@ double pl_coupling_wca_pair_forces(const pl_coupling_wca_t *w, const pl_coupling
                                    const pl_coupling_colloids_t *c, double *cfx, double *cfy, double *cfz,
                                    int nthreads, double *partial, double *pair_buf, size_t pair_cap)
 {
-    const size_t nc = c->n, row = 3 * nc + 1, nblk = force_blocks(nb, nc);
+    const size_t nn = nb->n, nc = c->n, row = 3 * nc + 1, nblk = pl_coupling_wca_blocks(nn, nc);
     double *gx = pair_buf, *gy = pair_buf + pair_cap, *gz = pair_buf + 2 * pair_cap, *ge = pair_buf + 3 * pair_cap;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads)
-    for (size_t b = 0; b < nblk; ++b) {
-        size_t lo, hi;
-        block_range(nb, nblk, b, &lo, &hi);
-        pair_block(w, nb, c, lo, hi, partial + b * row, gx, gy, gz, ge);
-    }
+    for (size_t b = 0; b < nblk; ++b)
+        pair_block(w, nb, c, nn * b / nblk, nn * (b + 1) / nblk, partial + b * row, gx, gy, gz, ge);
     return rows_sum(nc, nblk, partial, cfx, cfy, cfz);
 }
 
@@ -648,7 +656,7 @@ double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_cou
                                         double *partial, double *pair_buf, size_t pair_cap,
                                         int64_t acc[PL_WALL_ACC_N], double *far2)
 {
-    const size_t nc = c->n, row = 3 * nc + 1, nblk = force_blocks(nb, nc);
+    const size_t nn = nb->n, nc = c->n, row = 3 * nc + 1, nblk = pl_coupling_wca_blocks(nn, nc);
     double *gx = pair_buf, *gy = pair_buf + pair_cap, *gz = pair_buf + 2 * pair_cap, *ge = pair_buf + 3 * pair_cap;
     double *const *v = nb->v, *const *F = nb->f;
     const double g0 = ga[0], g1 = ga[1], g2 = ga[2];
@@ -657,8 +665,7 @@ double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_cou
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads) reduction(+ : acc[:PL_WALL_ACC_N]) \
     reduction(max : far)
     for (size_t b = 0; b < nblk; ++b) {
-        size_t lo, hi;
-        block_range(nb, nblk, b, &lo, &hi);
+        const size_t lo = nn * b / nblk, hi = nn * (b + 1) / nblk;
         pair_block(w, nb, c, lo, hi, partial + b * row, gx, gy, gz, ge);
         /* per particle, as pl_coupling_potential_kick (kicks times), then
          * pl_coupling_potential_drift */
@@ -767,16 +774,12 @@ void pl_coupling_potential_gather(const pl_fluid_t *f, const pl_grid_t *g, const
             const uint32_t cl = found_cell[lo + s];
             if (cstart[cl + 1] - cstart[cl] == 1) { /* a listed particle with one candidate: its only pair */
                 nb->k0[j] = clist[cstart[cl]];
-                if (nb->d2min) nb->d2min[j] = dist2(&q, c, nb->k0[j], nb->r[0][j], nb->r[1][j], nb->r[2][j]);
                 continue;
             }
             int first = 1;
-            double d2min = INFINITY;
             for (uint32_t e = cstart[cl]; e < cstart[cl + 1]; ++e) {
                 const int32_t k = clist[e];
                 if (!hit(&q, c, k, nb->r[0][j], nb->r[1][j], nb->r[2][j])) continue;
-                const double d2 = dist2(&q, c, k, nb->r[0][j], nb->r[1][j], nb->r[2][j]);
-                d2min = d2 < d2min ? d2 : d2min;
                 if (first) {
                     nb->k0[j] = k;
                     first = 0;
@@ -786,7 +789,6 @@ void pl_coupling_potential_gather(const pl_fluid_t *f, const pl_grid_t *g, const
                 nb->pj[p] = (uint32_t)j;
                 p++;
             }
-            if (nb->d2min) nb->d2min[j] = d2min;
         }
         if (t == nthreads - 1) nb->pstart[j] = (uint32_t)p;
     }

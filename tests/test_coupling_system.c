@@ -73,9 +73,11 @@ Test(coupling_system, bitwise_threads_hecht2, .timeout = 120)
     check_threads("method = \"hecht2\";");
 }
 
+/* sigma_cf 2.8 (> the radius 2): enough particles within reach of the
+ * colloids for more than one block of the force sums */
 Test(coupling_system, bitwise_threads_potential, .timeout = 120)
 {
-    check_threads("method = \"potential\"; sigma_cf = 2.0;");
+    check_threads("method = \"potential\"; sigma_cf = 2.8;");
 }
 
 /* |P| / sqrt(M kT) after each step; the colloids' weight per step is
@@ -157,8 +159,8 @@ Test(coupling_system, drift_removal_without_compensation, .timeout = 120)
  * (pl_coupling_find_sorted, used while the fluid is as the last sort left
  * it) lists exactly the particles of the full scan, in the same order and
  * thread chunks: periodic, z-wall and capillary boxes, selection radii from
- * PL's (cut-off + margin) up to more than the box, 1 and 3 threads, after
- * every step of a run. */
+ * PL's (cut-off + margin) up to more than the box, with and without each
+ * particle's own reach, 1 and 3 threads, after every step of a run. */
 Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
 {
     const char *walls[3] = {"", "walls_z = \"noslip\";", "walls_xy = \"noslip\";"};
@@ -211,9 +213,14 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
                                   same(clist, clist2, need * sizeof *clist),
                               "box %d, R %g, %d threads: candidate lists differ", b, radii[r], nt);
                 }
-                for (int nt = 1; nt <= 3; nt += 2) {
-                    pl_coupling_find(f, &sim->grid, &v, start, list, nt, fa, ga, ca);
-                    pl_coupling_find_sorted(f, &sim->grid, &v, cstart, clist, sim->cell_start, nt, fb, gb, cb);
+                /* the radii alone, and each particle's own reach (the
+                 * potential coupling's: rc 2^{1/6} sigma_cf) */
+                const pl_coupling_reach_t reach = {2.0 * pow(2.0, 1.0 / 6.0), 0.1, 1e-3, 0.1};
+                for (int run = 0; run < 4; ++run) { /* 1 and 3 threads, without and with */
+                    const int nt = run < 2 ? 1 : 3;
+                    const pl_coupling_reach_t *rp = run % 2 ? &reach : NULL;
+                    pl_coupling_find(f, &sim->grid, &v, rp, start, list, nt, fa, ga, ca);
+                    pl_coupling_find_sorted(f, &sim->grid, &v, rp, cstart, clist, sim->cell_start, nt, fb, gb, cb);
                     for (int t = 0; t < nt; ++t) {
                         size_t lo, hi;
                         pl_chunk(f->n, t, nt, &lo, &hi);
@@ -285,52 +292,6 @@ Test(coupling_system, potential_counts_margin_exceeded, .timeout = 120)
                  b->coupling->pot->force_calls);
     cr_expect_gt(b->coupling->pot->force_calls, 0);
     pl_sim_free(b);
-}
-
-/* The potential coupling's MD step over the near particles only, the far
- * ones in free flight (kernels/coupling_far.c), gives the bits of the step
- * over all of them: fluid and colloids after 6 collision steps with the
- * split off (budget 0), on (the default budget) and on with a budget the
- * colloids exceed within the first MD step (every step resumed over all
- * the particles after its first evaluation); with and without gravity
- * (the free flights then accelerate: the fluid carries the compensating
- * acceleration). */
-Test(coupling_system, potential_free_flight_equals_all_particles, .timeout = 120)
-{
-    const char *cpl = "method = \"potential\"; sigma_cf = 2.0; epsilon_cf = 2.5;";
-    const char *extras[2] = {"", "gravity = [0.0, 0.0, -0.02];"};
-    for (int x = 0; x < 2; ++x) {
-        pl_sim_t *sim[3];
-        const double budget[3] = {0.0, -1.0, 1e-12}; /* -1: the default */
-        for (int v = 0; v < 3; ++v) {
-            sim[v] = make(extras[x], cpl, "", 2);
-            if (budget[v] >= 0.0) sim[v]->coupling->pot->far_budget = budget[v];
-            pl_test_steps(sim[v], 6);
-        }
-        const pl_coupling_potential_state_t *off = sim[0]->coupling->pot, *on = sim[1]->coupling->pot,
-                                            *tight = sim[2]->coupling->pot;
-        cr_expect_eq(off->far_total, 0, "budget 0: %llu free flights", off->far_total);
-        cr_expect_gt(on->far_total, on->near_total / 4, "default budget: %llu of %llu selected particle-steps free",
-                     on->far_total, on->near_total);
-        cr_expect_eq(on->far_resumed, 0, "default budget: %llu resumed", on->far_resumed);
-        cr_expect_eq(tight->far_resumed, 6, "tight budget: %llu of 6 MD steps resumed", tight->far_resumed);
-        for (int v = 1; v < 3; ++v) {
-            const size_t n = sim[0]->fluid.n * sizeof(pl_real), m = sim[0]->colloids->n * sizeof(double);
-            for (int d = 0; d < 3; ++d) {
-                cr_expect(same(sim[0]->fluid.r[d], sim[v]->fluid.r[d], n), "%s variant %d: fluid r[%d] differs",
-                          extras[x], v, d);
-                cr_expect(same(sim[0]->fluid.v[d], sim[v]->fluid.v[d], n), "%s variant %d: fluid v[%d] differs",
-                          extras[x], v, d);
-            }
-            const pl_colloid_t *ca = sim[0]->colloids, *cb = sim[v]->colloids;
-            cr_expect(same(ca->x, cb->x, m) && same(ca->y, cb->y, m) && same(ca->z, cb->z, m) &&
-                          same(ca->vx, cb->vx, m) && same(ca->vy, cb->vy, m) && same(ca->vz, cb->vz, m),
-                      "%s variant %d: colloids differ", extras[x], v);
-            cr_expect(sim[0]->coupling->pot->epot_cf == sim[v]->coupling->pot->epot_cf,
-                      "%s variant %d: coupling energy differs", extras[x], v);
-        }
-        for (int v = 0; v < 3; ++v) pl_sim_free(sim[v]);
-    }
 }
 
 /* Coupling I's events in parallel over blocks of colloids (more than one

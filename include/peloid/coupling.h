@@ -73,7 +73,9 @@ typedef struct pl_coupling2_state {
 /* ---- potential coupling (src/coupling/coupling_potential.c) -------------- */
 typedef struct pl_coupling_potential_state {
     pl_coupling_wca_t wca;
-    double margin;       /* selection shell beyond the cut-off */
+    double margin;       /* selection shell beyond the cut-off (the pairs' radius; a
+                          * particle's own reach may be less) */
+    double budget;       /* this step's: how far the colloids may move (pl_coupling_reach_t) */
     double *rad_big;     /* ncolloids: cut-off + margin (lookup radii) */
     pl_coupling_lookup_t lk; /* the colloids with the radii rad_big */
     int lk_valid;        /* lk built for the colloids at this step's selection */
@@ -100,37 +102,16 @@ typedef struct pl_coupling_potential_state {
     double *cf;          /* 3 x ncolloids: fluid force on the colloids */
     double *cf_mean;     /* 3 x ncolloids: its mean over the last collision step (trapezoid over
                           * the MD steps), NULL unless asked for (pl_coupling_mean_force_on) */
-    /* the MD step over the near particles only (kernels/coupling_far.c):
-     * the near ones' copy and its slots, the far flags, the far ones'
-     * largest displacement after each evaluation */
-    double *d2min;       /* near_cap: squared distance at the selection to the nearest pair colloid */
-    double *sub_buf;     /* 12 x near_cap: r, v, f, r0 of the near ones */
-    int32_t *sub_k0;     /* near_cap */
-    uint32_t *sub_pstart; /* near_cap + 1 */
-    uint32_t *sub_map;   /* near_cap: slot of each near one in near_buf */
-    uint8_t *far;        /* near_cap */
-    size_t *sub_blk;     /* 2 x blocks */
-    uint32_t *sub_pj;    /* pair_cap each */
-    int32_t *sub_pk;
-    double *d2call;      /* (substeps + 1) x (nthreads + 1): per evaluation, and scratch */
-    size_t d2call_cap;   /* doubles */
-    pl_coupling_near_t sub; /* the near ones as the kernels see them (while far_on) */
-    int far_on;          /* this MD step runs over the near ones */
-    double far_budget;   /* how far the colloids may move before a resume (<= 0: no split) */
-    double far_moved;    /* the colloids' largest move in this MD step */
     double *wca_partial; /* per-block partial reactions (pl_coupling_wca_forces) */
     size_t wca_partial_cap; /* doubles */
     double epot_cf;      /* PL Eq. 17 energy after the last MD step */
     unsigned long long near_total; /* selected particle-steps (cost counter) */
     /* force evaluations in this run, and those at which the selection margin
      * was used up (a selected particle's move plus the largest colloid move
-     * since the selection reached it): a fluid particle that was not
-     * selected may then have entered the cut-off unseen until the next
-     * selection (summary.json "coupling") */
+     * since the selection reached it) or a colloid moved beyond the budget:
+     * a fluid particle that was not selected may then have entered the
+     * cut-off unseen until the next selection (summary.json "coupling") */
     unsigned long long force_calls, margin_exceeded;
-    /* selected particles whose MD step was free flight (the far ones,
-     * particle-steps), and the MD steps resumed over all of them */
-    unsigned long long far_total, far_resumed;
 } pl_coupling_potential_state_t;
 
 /* ---- common part (src/coupling/coupling.c) ------------------------------- */

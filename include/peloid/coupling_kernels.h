@@ -154,14 +154,25 @@ void pl_coupling2_collide_heyes(const pl_coupling2_params_t *p, const pl_couplin
                           const double *cmass, double *cvx, double *cvy, double *cvz, int nthreads);
 
 /* ---- potential coupling (kernels/coupling_potential.c) ---------------- */
+/* How far a fluid particle can get from where it is within one collision
+ * step: T |v| + tail (T the step, tail >= T^2 |g| + 2 T |wall speed|: the
+ * streaming's kick and the walls' bounce-back), so it can come within rc of
+ * a colloid that moves less than `budget` only if it is within rc + budget
+ * + tail + T |v| of it now. */
+typedef struct {
+    double rc, budget, tail, T;
+} pl_coupling_reach_t;
+
 /* Lists in found[lo .. lo + counts[t * 8 + 2]) the particles of thread t's
  * static chunk (as in the streaming) that lie inside a colloid of c (whose
- * rad may be enlarged radii), with (found_cell, unless NULL) the lookup cell
- * whose list was tested; counts[t * 8 + 3]: the number of (particle,
- * colloid) pairs found.  Parallel, no atomics. */
+ * rad may be enlarged radii) and, unless reach is NULL, also within their
+ * reach of it (rc + budget + tail + T |v|), with (found_cell, unless NULL)
+ * the lookup cell whose list was tested; counts[t * 8 + 3]: the number of
+ * (particle, colloid) pairs of the listed particles (every colloid of c
+ * whose sphere holds the particle).  Parallel, no atomics. */
 void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
-                      const int32_t *lk_start, const int32_t *lk_list, int nthreads,
-                      uint32_t *found, uint32_t *found_cell, uint64_t *counts);
+                      const pl_coupling_reach_t *reach, const int32_t *lk_start, const int32_t *lk_list,
+                      int nthreads, uint32_t *found, uint32_t *found_cell, uint64_t *counts);
 /* CSR lists (cstart[0 .. ncells], clist), in index order, of the colloids
  * whose sphere (radius c->rad + 1e-6 a0) can reach each collision cell
  * under g->shift.  cstart: g->ncells + 2 entries, axis_buf: nthreads x
@@ -178,8 +189,9 @@ size_t pl_coupling_cell_candidates(const pl_grid_t *g, const pl_coupling_colloid
  * the same candidates: the same list).  Cost ~ the particles near colloids
  * plus one offset per cell, instead of every particle. */
 void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
-                             const uint32_t *cstart, const int32_t *clist, const uint32_t *cell_start,
-                             int nthreads, uint32_t *found, uint32_t *found_cell, uint64_t *counts);
+                             const pl_coupling_reach_t *reach, const uint32_t *cstart, const int32_t *clist,
+                             const uint32_t *cell_start, int nthreads, uint32_t *found, uint32_t *found_cell,
+                             uint64_t *counts);
 
 /* The list of pl_coupling_find from the cells the binning left in f->cell
  * (under g->shift, after the streaming): the particles of the cells with
@@ -237,13 +249,7 @@ double pl_coupling_wca_forces(const pl_coupling_wca_t *w, size_t nn, const doubl
  * it) that the MD step integrates, the position at the selection
  * (r0); and their pairs: particle j's candidate colloids (those whose
  * selection sphere held it, in index order) are k0[j], then pk[pstart[j]
- * .. pstart[j + 1]), pj the particle of each of these further pairs.
- * d2min (NULL: not kept): the squared distance at the selection to the
- * nearest of its pair colloids.  blk (NULL: the blocks of
- * pl_coupling_wca_blocks(n, colloids), block b = [n b / nblk, n (b + 1) /
- * nblk)): the forces' blocks given instead, block b = [blk[2 b], blk[2 b +
- * 1]) of nblk (pl_coupling_far_split's near particles, in the blocks of
- * all the selected ones). */
+ * .. pstart[j + 1]), pj the particle of each of these further pairs. */
 typedef struct {
     size_t n;
     uint32_t *idx;
@@ -252,9 +258,6 @@ typedef struct {
     int32_t *k0;
     uint32_t *pstart, *pj;
     int32_t *pk;
-    double *d2min;
-    const size_t *blk;
-    size_t nblk;
 } pl_coupling_near_t;
 
 /* PL Eq. 17 forces as pl_coupling_wca_forces, over the pairs of nb instead
@@ -284,7 +287,7 @@ double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_cou
  * pl_coupling_find(_sorted): idx, owner, r, r0, v, disp (0 when the fluid
  * is not tracked), and the pairs, tested again against the candidates of
  * the particle's found_cell in (cstart, clist) (the lists the selection
- * used), with d2min when kept; f is not touched. */
+ * used); f is not touched. */
 void pl_coupling_potential_gather(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
                                   const uint32_t *found, const uint32_t *found_cell, const uint64_t *counts,
                                   const uint32_t *cstart, const int32_t *clist, int nthreads,
@@ -310,49 +313,5 @@ double pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t
  * to its new cell in its owner's row of hist (nthreads x g->ncells). */
 void pl_coupling_potential_scatter(const pl_coupling_near_t *nb, pl_fluid_t *f, const pl_grid_t *g,
                                    uint32_t *hist, int nthreads);
-
-/* ---- particles that stay beyond the cut-off (kernels/coupling_far.c) ---- */
-/* The MD step of the selected particles (S >= 1 velocity Verlet steps of
- * dtm, h = dtm / 2, fluid acceleration g) as the force evaluations see it:
- * evaluation e = 0 .. S kicks once (e = 0, S) or twice and drifts (e < S). */
-typedef struct {
-    int S;
-    double dtm, h, g[3];
-} pl_coupling_md_plan_t;
-
-/* Splits the selected particles of nb (no walls, no displacement kept)
- * into far ones, which cannot reach the cut-off rc of a pair colloid in
- * the MD step while every colloid stays within `budget` of its position at
- * the selection (the distance at the selection, sqrt(d2min), less the
- * longest free flight |v| T + |g| T^2 (T = S dtm), less rc, exceeds the
- * budget), and near ones.  A far particle's force is exactly +0 at every
- * evaluation (each pair's term is +-0, the reactions and energy gain
- * nothing), so its whole MD step is done here, as the evaluations would do
- * it: the velocity at the start kept in its f row (for
- * pl_coupling_far_resume), position and velocity after the last
- * evaluation in r and v, and in d2call[e] (S + 1 doubles) the largest
- * |r - r0|^2 of the far particles after evaluation e's drift (0 for e =
- * S).  The near ones are copied (r, v, r0, k0, pairs) to sub, in order,
- * block b of nb's force blocks (nblk of them) from the block's own first
- * slot on (sub->blk its range; map: nb's index of each sub slot), so that
- * the forces over sub sum each block's reactions over the same particles
- * in the same order, without the far ones' zeros: the same bits.  far:
- * nb->n flags (1 far); scratch: nthreads x (S + 1) doubles.  Returns the
- * number of far particles.  Deterministic: per particle, or exact (max,
- * integer counts) over the blocks. */
-size_t pl_coupling_far_split(const pl_coupling_near_t *nb, const pl_coupling_md_plan_t *plan, double rc,
-                             double budget, size_t nblk, int nthreads, pl_coupling_near_t *sub, size_t *blk,
-                             uint32_t *map, uint8_t *far, double *d2call, double *scratch);
-/* The near particles' r and v from sub back into nb (their slots map). */
-void pl_coupling_far_join(const pl_coupling_near_t *sub, const uint32_t *map, const pl_coupling_near_t *nb,
-                          int nthreads);
-/* Puts every selected particle of nb at its state after evaluations 0 ..
- * done - 1 (done <= S): the far ones replayed from r0 and the velocity at
- * the start (f row) by the same operations, the near ones joined from sub;
- * then nb holds them all as the evaluations over all of them would have
- * left them (for a colloid that moved beyond the budget, or the lookup's
- * fall-back). */
-void pl_coupling_far_resume(const pl_coupling_near_t *sub, const uint32_t *map, const uint8_t *far,
-                            const pl_coupling_md_plan_t *plan, int done, const pl_coupling_near_t *nb, int nthreads);
 
 #endif

@@ -105,8 +105,7 @@ static int coupling_ckpt_read(int64_t f, pl_sim_t *sim, const char *path, pl_err
 }
 
 /* summary.json "coupling" (potential coupling): how often the selection
- * margin was used up in this run, and the selection's cost counters (not
- * checkpointed: counts of this run). */
+ * margin was used up in this run (not checkpointed: counts of this run). */
 static int coupling_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
 {
     (void)dir;
@@ -116,12 +115,7 @@ static int coupling_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t
     json_t *o = json_object();
     pl_json_int(&b, o, "potential_force_evaluations", (long long)ps->force_calls);
     pl_json_int(&b, o, "selection_margin_exceeded", (long long)ps->margin_exceeded);
-    /* the cost: selected particle-steps, those that were free flight
-     * beyond the cut-off, the MD steps resumed over all (a colloid moved
-     * beyond the budget) */
-    pl_json_int(&b, o, "selected_particle_steps", (long long)ps->near_total);
-    pl_json_int(&b, o, "free_flight_particle_steps", (long long)ps->far_total);
-    pl_json_int(&b, o, "free_flight_resumed", (long long)ps->far_resumed);
+    pl_json_int(&b, o, "selected_particle_steps", (long long)ps->near_total); /* the cost */
     pl_json_set(&b, doc, "coupling", o);
     return b.failed ? err->code : 0;
 }

@@ -1,15 +1,18 @@
-/* Potential coupling (PL Sec. III.A, Eq. 17): the fluid particles within the
- * cut-off 2^{1/6} sigma_cf + margin of a colloid at the start of a collision
- * step are selected; streaming moves every particle as usual, then the
- * selected ones are put back and integrated together with the colloids by
- * velocity Verlet at the MD step (PL Eqs. 18-19), feeling PL Eq. 17 (and the
- * fluid body force); the rest of the fluid never sees the MD step.  The
- * margin (8 thermal speeds x dt + 0.1) makes it very unlikely that an
- * unselected particle reaches the cut-off within the step.  About two thirds
- * of the selected particles cannot reach the cut-off either (their flight is
- * shorter than their distance to it): their MD step is free flight, done
- * once (kernels/coupling_far.c), and the force evaluations run over the
- * others, with the same bits.
+/* Potential coupling (PL Sec. III.A, Eq. 17): the fluid particles that can
+ * reach the cut-off rc = 2^{1/6} sigma_cf of a colloid within a collision
+ * step are selected at its start; streaming moves every particle as usual,
+ * then the selected ones are put back and integrated together with the
+ * colloids by velocity Verlet at the MD step (PL Eqs. 18-19), feeling PL
+ * Eq. 17 (and the fluid body force); the rest of the fluid never sees the
+ * MD step.  "Can reach": within rc + the particle's own flight over the
+ * step (dt |v|, and the body force's and moving walls' share) + a budget
+ * for the colloids' moves (0.1 a0 and twice the fastest colloid's flight),
+ * capped at rc + margin (8 thermal speeds x dt + 0.1: the pairs' radius).
+ * A particle not selected then cannot reach the cut-off unless a colloid
+ * outruns its budget (counted; not seen in ordinary runs).  The selection
+ * by each particle's own flight holds a third of the particles the margin
+ * alone held, for the same physics: the others streamed instead of moved
+ * by the MD step's free kicks and drifts, the same motion to rounding.
  *
  * This file keeps the bookkeeping (its state pl_coupling_potential_state_t:
  * buffers, built only for a scene with this coupling; the order of the
@@ -42,7 +45,6 @@ int pl_coupling_potential_create(const pl_coupling_t *cp, const pl_sim_t *sim,
     for (int d = 0; d < 3; ++d) ps->wca.walls[d] = sim->grid.walls[d];
     double kT = pl_scene_kT_max(sc);
     ps->margin = 8.0 * sqrt(kT) * sc->srd.dt + 0.1;
-    ps->far_budget = ps->margin / 8.0;
     ps->rad_big = malloc((c->n + 1) * sizeof(double));
     ps->cf = malloc(3 * (c->n + 1) * sizeof(double));
     ps->found = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t), cp->nthreads);
@@ -85,16 +87,6 @@ void pl_coupling_potential_free(pl_coupling_potential_state_t *ps)
     free(ps->pair_j);
     free(ps->pair_k);
     free(ps->pair_buf);
-    free(ps->d2min);
-    free(ps->sub_buf);
-    free(ps->sub_k0);
-    free(ps->sub_pstart);
-    free(ps->sub_map);
-    free(ps->far);
-    free(ps->sub_blk);
-    free(ps->sub_pj);
-    free(ps->sub_pk);
-    free(ps->d2call);
     free(ps->cf);
     free(ps->cf_mean);
     free(ps->wca_partial);
@@ -148,7 +140,6 @@ static pl_coupling_near_t near_view(const pl_coupling_potential_state_t *ps, con
         .pstart = ps->pair_start,
         .pj = ps->pair_j,
         .pk = ps->pair_k,
-        .d2min = ps->d2min,
     };
     if (!f->tracked)
         for (int d = 0; d < 3; ++d) nb.disp[d] = NULL;
@@ -163,6 +154,35 @@ static int grow(void **buf, size_t *cap, size_t n, size_t sz)
     *cap = n + n / 2 + 256;
     *buf = malloc(*cap * sz);
     return *buf ? 0 : -1;
+}
+
+/* How far a fluid particle can get within the collision step
+ * (pl_coupling_reach_t): the streaming's kick by the fluid acceleration and
+ * the moving walls' bounce-back in the tail; the colloids' budget 0.1 a0
+ * (the margin's share for them) plus twice the flight of the fastest
+ * colloid at its present speed.  A function of the state: the same
+ * selection after a restart. */
+static pl_coupling_reach_t particle_reach(const pl_sim_t *sim, double rc)
+{
+    const pl_scene_t *sc = &sim->scene;
+    const pl_colloid_t *c = sim->colloids;
+    const double T = sc->srd.dt;
+    double g2 = 0.0, u = 0.0, cv2 = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        const double a = sc->fluid.body_force[d] + sim->coupling->fluid_accel[d]; /* the streaming's */
+        g2 += a * a;
+    }
+    for (int w = 0; w < 2; ++w)
+        u = fmax(u, sqrt(sim->wall_u[w][0] * sim->wall_u[w][0] + sim->wall_u[w][1] * sim->wall_u[w][1] +
+                         sim->wall_u[w][2] * sim->wall_u[w][2]));
+    for (size_t k = 0; k < c->n; ++k) cv2 = fmax(cv2, c->vx[k] * c->vx[k] + c->vy[k] * c->vy[k] + c->vz[k] * c->vz[k]);
+    pl_coupling_reach_t r = {
+        .rc = rc,
+        .budget = 0.1 + 2.0 * T * sqrt(cv2),
+        .tail = T * T * sqrt(g2) + 2.0 * T * u,
+        .T = T,
+    };
+    return r;
 }
 
 int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
@@ -181,6 +201,8 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
     }
     ps->lk_valid = 0;
     ps->far2 = 0.0;
+    const pl_coupling_reach_t reach = particle_reach(sim, rc);
+    ps->budget = reach.budget;
     pl_coupling_colloids_t v = sel_view(ps, c);
     const uint32_t *cs;
     const int32_t *cl;
@@ -192,15 +214,15 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
             if (grow((void **)&ps->clist, &ps->clist_cap, need, sizeof *ps->clist))
                 return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloids near each cell");
         }
-        pl_coupling_find_sorted(f, &sim->grid, &v, ps->cstart, ps->clist, sim->cell_start, cp->nthreads,
+        pl_coupling_find_sorted(f, &sim->grid, &v, &reach, ps->cstart, ps->clist, sim->cell_start, cp->nthreads,
                                 ps->found, ps->found_cell, ps->counts);
         cs = ps->cstart;
         cl = ps->clist;
     } else {
         int rc2 = lookup_big(ps, sim, err);
         if (rc2) return rc2;
-        pl_coupling_find(f, &sim->grid, &v, ps->lk.start, ps->lk.list, cp->nthreads, ps->found, ps->found_cell,
-                         ps->counts);
+        pl_coupling_find(f, &sim->grid, &v, &reach, ps->lk.start, ps->lk.list, cp->nthreads, ps->found,
+                         ps->found_cell, ps->counts);
         cs = (const uint32_t *)ps->lk.start; /* offsets >= 0 */
         cl = ps->lk.list;
     }
@@ -218,48 +240,24 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
         free(ps->near_buf);
         free(ps->pair_start);
         free(ps->near_k0);
-        free(ps->d2min);
-        free(ps->sub_buf);
-        free(ps->sub_k0);
-        free(ps->sub_pstart);
-        free(ps->sub_map);
-        free(ps->far);
-        free(ps->sub_blk);
-        const size_t cap = nn + nn / 2 + 256;
-        ps->near_cap = cap;
-        ps->near_idx = malloc(cap * sizeof *ps->near_idx);
-        ps->near_owner = malloc(cap * sizeof *ps->near_owner);
-        ps->near_buf = malloc(15 * cap * sizeof *ps->near_buf);
-        ps->pair_start = malloc((cap + 1) * sizeof *ps->pair_start);
-        ps->near_k0 = malloc(cap * sizeof *ps->near_k0);
-        ps->d2min = malloc(cap * sizeof *ps->d2min);
-        ps->sub_buf = malloc(12 * cap * sizeof *ps->sub_buf);
-        ps->sub_k0 = malloc(cap * sizeof *ps->sub_k0);
-        ps->sub_pstart = malloc((cap + 1) * sizeof *ps->sub_pstart);
-        ps->sub_map = malloc(cap * sizeof *ps->sub_map);
-        ps->far = malloc(cap * sizeof *ps->far);
-        ps->sub_blk = malloc(2 * pl_coupling_wca_blocks(cap, c->n) * sizeof *ps->sub_blk);
-        if (!ps->near_idx || !ps->near_owner || !ps->near_buf || !ps->pair_start || !ps->near_k0 || !ps->d2min ||
-            !ps->sub_buf || !ps->sub_k0 || !ps->sub_pstart || !ps->sub_map || !ps->far || !ps->sub_blk) {
-            ps->near_cap = 0; /* all again at the next selection */
+        ps->near_cap = nn + nn / 2 + 256;
+        ps->near_idx = malloc(ps->near_cap * sizeof *ps->near_idx);
+        ps->near_owner = malloc(ps->near_cap * sizeof *ps->near_owner);
+        ps->near_buf = malloc(15 * ps->near_cap * sizeof *ps->near_buf);
+        ps->pair_start = malloc((ps->near_cap + 1) * sizeof *ps->pair_start);
+        ps->near_k0 = malloc(ps->near_cap * sizeof *ps->near_k0);
+        if (!ps->near_idx || !ps->near_owner || !ps->near_buf || !ps->pair_start || !ps->near_k0)
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for %zu near-colloid particles", nn);
-        }
     }
     if (np > ps->pair_cap || !ps->pair_buf) {
-        const size_t need = np ? np : 1, cap = need + need / 2 + 256;
+        size_t cap = ps->pair_cap, need = np ? np : 1;
         free(ps->pair_buf);
-        free(ps->pair_j);
-        free(ps->pair_k);
-        free(ps->sub_pj);
-        free(ps->sub_pk);
-        ps->pair_buf = malloc(4 * cap * sizeof *ps->pair_buf);
-        ps->pair_j = malloc(cap * sizeof *ps->pair_j);
-        ps->pair_k = malloc(cap * sizeof *ps->pair_k);
-        ps->sub_pj = malloc(cap * sizeof *ps->sub_pj);
-        ps->sub_pk = malloc(cap * sizeof *ps->sub_pk);
-        ps->pair_cap = cap;
-        if (!ps->pair_buf || !ps->pair_j || !ps->pair_k || !ps->sub_pj || !ps->sub_pk)
+        ps->pair_buf = NULL;
+        if (grow((void **)&ps->pair_j, &cap, need, sizeof *ps->pair_j) ||
+            (cap = ps->pair_cap, grow((void **)&ps->pair_k, &cap, need, sizeof *ps->pair_k)) ||
+            !(ps->pair_buf = malloc(4 * cap * sizeof *ps->pair_buf)))
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for %zu near-colloid pairs", np);
+        ps->pair_cap = cap;
     }
     pl_coupling_near_t nb = near_view(ps, &sim->fluid);
     nb.n = nn;
@@ -287,6 +285,17 @@ static double min_image(double d, double L, int periodic)
     return periodic ? d - L * nearbyint(d / L) : d;
 }
 
+/* Whether every pair within the cut-off is a pair of the selection: a
+ * particle within rc of a colloid now was within rc + |its move| + |the
+ * colloid's move| of it at the selection, so a pair if the largest moves
+ * add up to less than the margin (1e-9 a0 against rounding); then the
+ * pairs' sums are the lookup's, bit for bit.  Otherwise (never seen: 8
+ * thermal speeds) the forces go over the lookup. */
+static int pairs_hold(const pl_coupling_potential_state_t *ps, double moved)
+{
+    return sqrt(ps->far2) + moved < ps->margin - 1e-9;
+}
+
 /* The largest move of a colloid since the selection. */
 static double colloids_moved(const pl_coupling_potential_state_t *ps, const pl_colloid_t *c)
 {
@@ -301,105 +310,30 @@ static double colloids_moved(const pl_coupling_potential_state_t *ps, const pl_c
     return moved;
 }
 
-/* Whether every pair within the cut-off is a pair of the selection: a
- * particle within rc of a colloid now was within rc + |its move| + |the
- * colloid's move| of it at the selection, so a pair if the largest moves
- * add up to less than the margin (1e-9 a0 against rounding); then the
- * pairs' sums are the lookup's, bit for bit.  Otherwise (never seen: 8
- * thermal speeds) the forces go over the lookup. */
-static int pairs_hold(const pl_coupling_potential_state_t *ps, double moved)
-{
-    return sqrt(ps->far2) + moved < ps->margin - 1e-9;
-}
-
-/* The near particles as the kernels see them (rows of sub_buf). */
-static pl_coupling_near_t sub_view(const pl_coupling_potential_state_t *ps)
-{
-    double *b = ps->sub_buf;
-    const size_t cap = ps->near_cap;
-    pl_coupling_near_t s = {
-        .n = ps->nnear,
-        .r = {b, b + cap, b + 2 * cap},
-        .v = {b + 3 * cap, b + 4 * cap, b + 5 * cap},
-        .f = {b + 6 * cap, b + 7 * cap, b + 8 * cap},
-        .r0 = {b + 9 * cap, b + 10 * cap, b + 11 * cap},
-        .k0 = ps->sub_k0,
-        .pstart = ps->sub_pstart,
-        .pj = ps->sub_pj,
-        .pk = ps->sub_pk,
-    };
-    return s;
-}
-
-/* Splits the selected particles into near and far ones
- * (pl_coupling_far_split) for an MD step without walls and displacements
- * (the forces' fused path); ps->far_on when some are far. */
-static int far_split(pl_coupling_t *cp, const pl_sim_t *sim, const pl_coupling_md_plan_t *plan, pl_err_t *err)
-{
-    pl_coupling_potential_state_t *ps = cp->pot;
-    const pl_colloid_t *c = sim->colloids;
-    ps->far_on = 0;
-    ps->far_moved = 0.0;
-    if (plan->S < 1 || sim->grid.any_walls || sim->fluid.tracked || !ps->nnear || !(ps->far_budget > 0.0))
-        return 0;
-    const size_t need = ((size_t)plan->S + 1) * ((size_t)cp->nthreads + 1);
-    if (need > ps->d2call_cap) {
-        free(ps->d2call);
-        ps->d2call_cap = 0;
-        if (!(ps->d2call = malloc(need * sizeof *ps->d2call)))
-            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the free flights of the MD step");
-        ps->d2call_cap = need;
-    }
-    const pl_coupling_near_t nb = near_view(ps, &sim->fluid);
-    pl_coupling_near_t sub = sub_view(ps);
-    const double rc = ps->wca.sigma * pow(2.0, 1.0 / 6.0);
-    const size_t nfar = pl_coupling_far_split(&nb, plan, rc, ps->far_budget, pl_coupling_wca_blocks(nb.n, c->n),
-                                              cp->nthreads, &sub, ps->sub_blk, ps->sub_map, ps->far, ps->d2call,
-                                              ps->d2call + plan->S + 1);
-    ps->sub = sub;
-    ps->far_on = nfar > 0;
-    ps->far_total += nfar;
-    return 0;
-}
-
 /* Fluid forces on the selected particles and the colloids (the colloids'
  * own forces recomputed first), fused with the particles' moves after
  * them (pl_coupling_potential_force_step: `kicks` half kicks, the drift
- * when dt > 0), at evaluation e of the plan.  Over the near particles
- * while the split holds (the colloids within the budget, the pairs those
- * of the selection), else over all of them (resumed first). */
-static int forces(pl_coupling_t *cp, const pl_sim_t *sim, pl_colloid_t *c, const pl_coupling_md_plan_t *plan,
-                  int e, int kicks, double dt, int64_t wacc[PL_WALL_ACC_N], pl_err_t *err)
+ * when dt > 0). */
+static int forces(pl_coupling_t *cp, const pl_sim_t *sim, pl_colloid_t *c, const double g[3], double h,
+                  int kicks, double dt, int64_t wacc[PL_WALL_ACC_N], pl_err_t *err)
 {
     pl_coupling_potential_state_t *ps = cp->pot;
-    const double h = plan->h, *g = plan->g;
     if (!cp->pinned && pl_colloid_forces(c, err)) return err->code;
     memset(ps->cf, 0, 3 * c->n * sizeof(double));
     pl_coupling_colloids_t v = big_view(ps, c);
-    pl_coupling_near_t nb = near_view(ps, &sim->fluid);
+    const pl_coupling_near_t nb = near_view(ps, &sim->fluid);
     double *cf[3] = {ps->cf, ps->cf + c->n, ps->cf + 2 * c->n};
     ps->force_calls++;
     const double moved = colloids_moved(ps, c);
     const int hold = pairs_hold(ps, moved);
-    ps->far_moved = moved > ps->far_moved ? moved : ps->far_moved;
-    if (ps->far_on && (!hold || !(moved < ps->far_budget))) {
-        pl_coupling_far_resume(&ps->sub, ps->sub_map, ps->far, plan, e, &nb, cp->nthreads);
-        ps->far_on = 0;
-        ps->far_resumed++;
-        if (ps->far_budget < ps->margin / 2.0) ps->far_budget *= 2.0; /* the speed only: the bits are the same */
-    }
-    if (hold && ps->far_on) {
-        double far2;
-        ps->epot_cf = pl_coupling_potential_force_step(&ps->wca, &ps->sub, &v, &sim->grid, sim->wall_u, h, g, kicks,
-                                                       dt, cf[0], cf[1], cf[2], cp->nthreads, ps->wca_partial,
-                                                       ps->pair_buf, ps->pair_cap, wacc, &far2);
-        ps->far2 = far2 > ps->d2call[e] ? far2 : ps->d2call[e];
-    } else if (hold) {
+    /* a colloid beyond its budget: an unselected particle may have come
+     * within the cut-off unseen (counted; the margin's breach the same) */
+    if (!hold || !(moved < ps->budget)) ps->margin_exceeded++;
+    if (hold) {
         ps->epot_cf = pl_coupling_potential_force_step(&ps->wca, &nb, &v, &sim->grid, sim->wall_u, h, g, kicks, dt,
                                                        cf[0], cf[1], cf[2], cp->nthreads, ps->wca_partial,
                                                        ps->pair_buf, ps->pair_cap, wacc, &ps->far2);
     } else {
-        ps->margin_exceeded++;
         int rc = lookup_big(ps, sim, err);
         if (rc) return rc;
         ps->epot_cf = pl_coupling_wca_forces(&ps->wca, nb.n, nb.r[0], nb.r[1], nb.r[2], nb.f[0], nb.f[1], nb.f[2],
@@ -457,14 +391,12 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
     const pl_coupling_near_t nb = near_view(ps, &sim->fluid);
     pl_coupling_potential_unstream(&nb, f, &sim->grid, sim->wall_acc ? &sp : NULL, cp->nthreads, sacc);
     const double dtm = c->dt, h = 0.5 * dtm;
-    const pl_coupling_md_plan_t plan = {c->substeps, dtm, h, {g[0], g[1], g[2]}};
-    if (far_split(cp, sim, &plan, err)) return err->code;
     /* PL Eqs. 18-19, velocity Verlet; the particles' kick - drift - forces -
      * kick of each MD step regrouped as forces - kick (- kick - drift of the
      * next MD step) in one pass: each particle's operations and each
      * colloid's in the same order as in separate passes */
     const int S = c->substeps;
-    if (forces(cp, sim, c, &plan, 0, S > 0, S > 0 ? dtm : 0.0, wacc, err)) return err->code;
+    if (forces(cp, sim, c, g, h, S > 0, S > 0 ? dtm : 0.0, wacc, err)) return err->code;
     if (ps->cf_mean) memset(ps->cf_mean, 0, 3 * c->n * sizeof(double));
     for (int s = 0; s < S; ++s) {
         if (!cp->pinned) {
@@ -478,7 +410,7 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
                 for (int d = 0; d < 3; ++d) cp->impulse[d] += h * ps->cf[(size_t)d * c->n + k];
         mean_force_add(ps, c->n, h);
         const int more = s + 1 < S;
-        if (forces(cp, sim, c, &plan, s + 1, more ? 2 : 1, more ? dtm : 0.0, wacc, err)) return err->code;
+        if (forces(cp, sim, c, g, h, more ? 2 : 1, more ? dtm : 0.0, wacc, err)) return err->code;
         mean_force_add(ps, c->n, h);
         if (cp->pinned)
             for (size_t k = 0; k < c->n; ++k)
@@ -490,10 +422,6 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
             int rc = pl_colloid_guard(c, 0, err);
             if (rc) return rc;
         }
-    }
-    if (ps->far_on) { /* the near ones back among all */
-        pl_coupling_far_join(&ps->sub, ps->sub_map, &nb, cp->nthreads);
-        ps->far_on = 0;
     }
     if (cp->pinned) cp->pinned_time += sc->srd.dt;
     if (ps->cf_mean)
