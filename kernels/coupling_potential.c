@@ -525,9 +525,14 @@ static inline void wca_pair(double dx, double dy, double dz, double s2, double r
 
 /* Block of particles [lo, hi): forces into nb->f, reactions and energy into
  * its row rb (3 nc + 1).  The first pair of each particle (its first
- * candidate, index j of the scratch g*) vectorised over the particles, the
- * further ones (scratch nb->n + p) over their list; then the sums of
- * wca_block, in particle order, each particle's pairs in colloid order. */
+ * candidate) vectorised over the particles, its force written straight into
+ * f as the sum's first term (0 + g) and its energy into ge[j]; the further
+ * ones (scratch g*[nb->n + p]) over their list; then the sums of wca_block,
+ * in particle order, each particle's pairs in colloid order.  A particle
+ * with one pair (nearly all) takes its reaction from f: -(0 + g) subtracts
+ * the same as -g (they differ only for g = -0, and no row holds -0: it
+ * starts at +0 and a sum is -0 only when both terms are); one with further
+ * pairs has its first pair evaluated again (the same bits) for the sum. */
 static void pair_block(const pl_coupling_wca_t *w, const pl_coupling_near_t *nb, const pl_coupling_colloids_t *c,
                        size_t lo, size_t hi, double *rb, double *restrict gx, double *restrict gy,
                        double *restrict gz, double *restrict ge)
@@ -542,10 +547,15 @@ static void pair_block(const pl_coupling_wca_t *w, const pl_coupling_near_t *nb,
     const double *restrict cx = c->x, *restrict cy = c->y, *restrict cz = c->z;
     const int32_t *restrict k0 = nb->k0, *restrict pk = nb->pk;
     const uint32_t *restrict pj = nb->pj, *restrict ps = nb->pstart;
+    double *restrict fx = nb->f[0], *restrict fy = nb->f[1], *restrict fz = nb->f[2];
 #pragma omp simd
     for (size_t j = lo; j < hi; ++j) {
         const int32_t k = k0[j];
-        wca_pair(x[j] - cx[k], y[j] - cy[k], z[j] - cz[k], s2, rc2, e24, e4, h, L, gx + j, gy + j, gz + j, ge + j);
+        double a, b, d;
+        wca_pair(x[j] - cx[k], y[j] - cy[k], z[j] - cz[k], s2, rc2, e24, e4, h, L, &a, &b, &d, ge + j);
+        fx[j] = 0.0 + a;
+        fy[j] = 0.0 + b;
+        fz[j] = 0.0 + d;
     }
     for (uint32_t p = ps[lo]; p < ps[hi]; ++p) {
         const uint32_t j = pj[p];
@@ -558,7 +568,6 @@ static void pair_block(const pl_coupling_wca_t *w, const pl_coupling_near_t *nb,
      * memory per particle); the same subtractions in the same order */
     double epot = 0.0;
     double *rx = rb, *ry = rb + nc, *rz = rb + 2 * nc;
-    double *restrict fx = nb->f[0], *restrict fy = nb->f[1], *restrict fz = nb->f[2];
     int32_t kc = lo < hi ? k0[lo] : 0;
     double ax = 0.0, ay = 0.0, az = 0.0; /* = row of kc, all 0 at the start */
     for (size_t j = lo; j < hi; ++j) {
@@ -573,10 +582,18 @@ static void pair_block(const pl_coupling_wca_t *w, const pl_coupling_near_t *nb,
             az = rz[k];
         }
         epot += ge[j];
-        double F0 = 0.0 + gx[j], F1 = 0.0 + gy[j], F2 = 0.0 + gz[j];
-        ax -= gx[j];
-        ay -= gy[j];
-        az -= gz[j];
+        if (ps[j] == ps[j + 1]) { /* one pair: f = 0 + g */
+            ax -= fx[j];
+            ay -= fy[j];
+            az -= fz[j];
+            continue;
+        }
+        double g0, g1, g2, e0;
+        wca_pair(x[j] - cx[k], y[j] - cy[k], z[j] - cz[k], s2, rc2, e24, e4, h, L, &g0, &g1, &g2, &e0);
+        double F0 = 0.0 + g0, F1 = 0.0 + g1, F2 = 0.0 + g2;
+        ax -= g0;
+        ay -= g1;
+        az -= g2;
         for (uint32_t p = ps[j]; p < ps[j + 1]; ++p) {
             const int32_t kp = pk[p];
             const size_t e = nn + p;
