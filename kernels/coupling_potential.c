@@ -678,8 +678,11 @@ double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_cou
     double *const *v = nb->v, *const *F = nb->f;
     const double g0 = ga[0], g1 = ga[1], g2 = ga[2];
     double far = 0.0;
-    /* integer impulses: the sum is exact in any order; max is exact */
-#pragma omp parallel for schedule(dynamic, 1) num_threads(nthreads) reduction(+ : acc[:PL_WALL_ACC_N]) \
+    /* integer impulses: the sum is exact in any order; max is exact.
+     * Static blocks: a thread keeps its blocks, and their particles in its
+     * L2, over the MD steps of a collision step (the gather filled them in
+     * the same halves); the bits do not depend on which thread runs a block */
+#pragma omp parallel for schedule(static) num_threads(nthreads) reduction(+ : acc[:PL_WALL_ACC_N]) \
     reduction(max : far)
     for (size_t b = 0; b < nblk; ++b) {
         const size_t lo = nn * b / nblk, hi = nn * (b + 1) / nblk;
@@ -850,7 +853,10 @@ double pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t
 {
     const size_t nn = nb->n;
     double far = 0.0;
-    /* integer impulses: the sum is exact in any order; max is exact */
+    /* integer impulses: the sum is exact in any order; max is exact.
+     * Static blocks: a thread keeps its blocks, and their particles in its
+     * L2, over the MD steps of a collision step (the gather filled them in
+     * the same halves); the bits do not depend on which thread runs a block */
 #pragma omp parallel for schedule(static) num_threads(nthreads) reduction(+ : acc[:PL_WALL_ACC_N]) \
     reduction(max : far)
     for (size_t j = 0; j < nn; ++j) {
