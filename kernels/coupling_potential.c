@@ -298,19 +298,24 @@ void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
             const size_t i1 = cell_start[ce] < hi ? cell_start[ce] : hi;
             for (size_t s = i0; s < i1; s += RUN) {
                 const size_t len = i1 - s < RUN ? i1 - s : RUN;
-                for (size_t u = 0; u < len; ++u) in[u] = sel[u] = 0;
+                /* the vector loops run over whole vectors (the runs are
+                 * short: no scalar remainder), reading past the run into
+                 * the next particles where the array goes on; only the
+                 * run's len are appended */
+                const size_t whole = (len + 7) & ~(size_t)7, lenv = s + whole <= f->n ? whole : len;
+                for (size_t u = 0; u < lenv; ++u) in[u] = sel[u] = 0;
                 if (reach) {
 #pragma omp simd
-                    for (size_t u = 0; u < len; ++u) R2[u] = reach2(reach, vx[s + u], vy[s + u], vz[s + u]);
+                    for (size_t u = 0; u < lenv; ++u) R2[u] = reach2(reach, vx[s + u], vy[s + u], vz[s + u]);
                 } else
-                    for (size_t u = 0; u < len; ++u) R2[u] = INFINITY;
+                    for (size_t u = 0; u < lenv; ++u) R2[u] = INFINITY;
                 for (uint32_t e = kb; e < ke; ++e) { /* hit(), with its operands in registers */
                     const int32_t k = clist[e];
                     const double cx = c->x[k], cy = c->y[k], cz = c->z[k], r2 = c->rad[k] * c->rad[k];
                     const double h0 = q.h[0], h1 = q.h[1], h2 = q.h[2];
                     const double L0 = q.L[0], L1 = q.L[1], L2 = q.L[2];
 #pragma omp simd
-                    for (size_t u = 0; u < len; ++u) {
+                    for (size_t u = 0; u < lenv; ++u) {
                         double dx = x[s + u] - cx, dy = y[s + u] - cy, dz = z[s + u] - cz;
                         dx = dx > h0 ? dx - L0 : (dx < -h0 ? dx + L0 : dx);
                         dy = dy > h1 ? dy - L1 : (dy < -h1 ? dy + L1 : dy);
