@@ -858,10 +858,7 @@ double pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t
 {
     const size_t nn = nb->n;
     double far = 0.0;
-    /* integer impulses: the sum is exact in any order; max is exact.
-     * Static blocks: a thread keeps its blocks, and their particles in its
-     * L2, over the MD steps of a collision step (the gather filled them in
-     * the same halves); the bits do not depend on which thread runs a block */
+    /* integer impulses: the sum is exact in any order; max is exact */
 #pragma omp parallel for schedule(static) num_threads(nthreads) reduction(+ : acc[:PL_WALL_ACC_N]) \
     reduction(max : far)
     for (size_t j = 0; j < nn; ++j) {
