@@ -20,16 +20,14 @@ Each difference is printed in units of the combined SE (|z| < 3 is agreement).
 usage: tools/compare_coupling_statistics.py OLD_PELOID NEW_PELOID [SEEDS] [STEPS]
 """
 import json
-import math
 import os
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import h5md_colloids  # noqa: E402
+import statistics_compare  # noqa: E402
 
 SCENE = """name = "coupling_compare";
 seed = {seed};
@@ -48,13 +46,7 @@ N = 64
 
 
 def run(binary, tag, seed, steps, tmp):
-    cfg = os.path.join(tmp, "s%d.cfg" % seed)
-    with open(cfg, "w") as f:
-        f.write(SCENE.format(seed=seed, steps=steps))
-    out = os.path.join(tmp, "%s_%d" % (tag, seed))
-    subprocess.run([binary, "run", cfg, "--out", out, "--force", "--threads", "2"], check=True,
-                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    return out
+    return statistics_compare.run(binary, SCENE.format(seed=seed, steps=steps), tag, seed, tmp, 2)
 
 
 def observables(out, steps):
@@ -63,25 +55,8 @@ def observables(out, steps):
     res = {"kT_colloid": np.mean(th["c_kin_trans"][half:]) / (1.5 * N),
            "u_wca": np.mean(th["c_wca"][half:]) / N,
            "T_fluid": np.mean(th["temperature"][half:])}
-    c = h5md_colloids.load(os.path.join(out, "colloids.h5"))
-    pos, img, t, L = c["pos"], c["img"], c["t"], c["edges"]
-    edges = np.linspace(3.5, 12.0, 69)
-    hist = np.zeros(len(edges) - 1)
-    frames = range(len(t) // 2, len(t))
-    for k in frames:
-        d = pos[k][:, None, :] - pos[k][None, :, :]
-        d -= L * np.rint(d / L)
-        r = np.sqrt((d * d).sum(-1))[np.triu_indices(N, 1)]
-        hist += np.histogram(r, edges)[0]
-    shell = 4.0 / 3.0 * math.pi * (edges[1:] ** 3 - edges[:-1] ** 3)
-    gr = hist / (len(frames) * N * (N - 1) / 2 / np.prod(L) * shell)
+    gr, _, _, res["D"] = statistics_compare.colloid_structure(out, N, np.linspace(3.5, 12.0, 69))
     res["g_peak"] = np.max(gr)
-    xu = pos + img * L
-    lags = np.arange(1, len(t) // 2)
-    msd = np.array([np.mean(np.sum((xu[l:] - xu[:-l]) ** 2, axis=-1)) for l in lags])
-    dt = t[1] - t[0]
-    sel = lags >= len(lags) // 2
-    res["D"] = np.polyfit(lags[sel] * dt, msd[sel], 1)[0] / 6.0
     with open(os.path.join(out, "summary.json")) as f:
         cpl = json.load(f).get("coupling", {})
     res["selected_per_step"] = cpl.get("selected_particle_steps", float("nan")) / steps
@@ -102,18 +77,8 @@ def main():
             rows["new"].append(observables(run(new, "new", s, steps, tmp), steps))
     print("# %d seeds x %d collision steps, 64 WCA colloids in 32^3 cells of SRD fluid, potential coupling"
           % (len(seeds), steps))
-    print("| quantity | old (mean +- SE) | new (mean +- SE) | z |")
-    print("|---|---|---|---|")
-    worst = 0.0
-    for q in ["kT_colloid", "u_wca", "T_fluid", "D", "g_peak", "selected_per_step"]:
-        a = np.array([r[q] for r in rows["old"]])
-        b = np.array([r[q] for r in rows["new"]])
-        sa, sb = a.std(ddof=1) / math.sqrt(len(a)), b.std(ddof=1) / math.sqrt(len(b))
-        z = (b.mean() - a.mean()) / math.hypot(sa, sb) if sa + sb > 0 else 0.0
-        if q != "selected_per_step":
-            worst = max(worst, abs(z))
-        print("| %s | %.5g +- %.2g | %.5g +- %.2g | %+.2f |" % (q, a.mean(), sa, b.mean(), sb, z))
-    print("# largest |z| (physics rows) = %.2f" % worst)
+    statistics_compare.table(rows, ["kT_colloid", "u_wca", "T_fluid", "D", "g_peak", "selected_per_step"],
+                             not_physics=("selected_per_step",))
     return 0
 
 

@@ -15,17 +15,14 @@ Each difference is printed in units of the combined SE (|z| < 3 is agreement).
 
 usage: tools/compare_md_statistics.py OLD_PELOID NEW_PELOID [SEEDS] [STEPS]
 """
-import json
-import math
 import os
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import h5md_colloids  # noqa: E402
+import statistics_compare  # noqa: E402
 
 SCENE = """name = "md_compare";
 seed = {seed};
@@ -36,20 +33,15 @@ srd: {{ dt = 0.1; }};
 colloids: {{ count = 256; radius = 2.0; temperature = 1.0; init = "random";
   pairs = "dlvo, hertz"; substeps = 12; max_energy_drift = 0.0;
   trajectory_interval = 20; }};
-dlvo: {{ psi0 = 20.0; kappa = 1.4e8; length_unit = 1.25e-7; primary_depth = 6.0; }};
+dlvo: {{ psi0 = 20.0; kappa = 1.4e8; hamaker = 4.76e-20; length_unit = 1.25e-7; primary_depth = 6.0; }};
 hertz: {{ K = 1000.0; }};
 output: {{ thermo_interval = 20; }};
 """
 
 
 def run(binary, seed, steps, tmp):
-    cfg = os.path.join(tmp, "s%d.cfg" % seed)
-    with open(cfg, "w") as f:
-        f.write(SCENE.format(seed=seed, steps=steps))
-    out = os.path.join(tmp, "%s_%d" % (os.path.basename(os.path.dirname(os.path.abspath(binary))), seed))
-    subprocess.run([binary, "run", cfg, "--out", out, "--force", "--threads", "1"], check=True,
-                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    return out
+    tag = os.path.basename(os.path.dirname(os.path.abspath(binary)))
+    return statistics_compare.run(binary, SCENE.format(seed=seed, steps=steps), tag, seed, tmp, 1)
 
 
 def observables(out):
@@ -60,28 +52,10 @@ def observables(out):
     res = {"drift": np.max(np.abs(e - e[0])) / n,
            "kT": np.mean(th["c_kin_trans"][half:]) / (1.5 * n),
            "u_dlvo": np.mean(th["c_dlvo"][half:]) / n}
-    c = h5md_colloids.load(os.path.join(out, "colloids.h5"))
-    pos, img, t, L = c["pos"], c["img"], c["t"], c["edges"]
-    # g(r) over the second half, minimum image
     edges = np.linspace(3.5, 12.0, 69)
-    hist = np.zeros(len(edges) - 1)
-    frames = range(len(t) // 2, len(t))
-    for k in frames:
-        d = pos[k][:, None, :] - pos[k][None, :, :]
-        d -= L * np.rint(d / L)
-        r = np.sqrt((d * d).sum(-1))[np.triu_indices(n, 1)]
-        hist += np.histogram(r, edges)[0]
-    shell = 4.0 / 3.0 * math.pi * (edges[1:] ** 3 - edges[:-1] ** 3)
-    gr = hist / (len(frames) * n * (n - 1) / 2 / np.prod(L) * shell)
+    gr, shell, volume, res["D"] = statistics_compare.colloid_structure(out, n, edges)
     res["g_peak"] = np.max(gr)
-    res["g_int"] = np.sum(gr[edges[1:] <= 6.0] * shell[edges[1:] <= 6.0]) * n / np.prod(L)
-    # MSD slope over the second half of the lag range
-    xu = pos + img * L
-    lags = np.arange(1, len(t) // 2)
-    msd = np.array([np.mean(np.sum((xu[l:] - xu[:-l]) ** 2, axis=-1)) for l in lags])
-    dt = t[1] - t[0]
-    sel = lags >= len(lags) // 2
-    res["D"] = np.polyfit(lags[sel] * dt, msd[sel], 1)[0] / 6.0
+    res["g_int"] = np.sum(gr[edges[1:] <= 6.0] * shell[edges[1:] <= 6.0]) * n / volume
     return res
 
 
@@ -98,17 +72,7 @@ def main():
             rows["old"].append(observables(run(old, s, steps, tmp)))
             rows["new"].append(observables(run(new, s, steps, tmp)))
     print("# %d seeds x %d collision steps (x12 MD steps), 256 DLVO + Hertz colloids, NVE" % (len(seeds), steps))
-    print("| quantity | old (mean +- SE) | new (mean +- SE) | z |")
-    print("|---|---|---|---|")
-    worst = 0.0
-    for q in ["drift", "kT", "u_dlvo", "g_peak", "g_int", "D"]:
-        a = np.array([r[q] for r in rows["old"]])
-        b = np.array([r[q] for r in rows["new"]])
-        sa, sb = a.std(ddof=1) / math.sqrt(len(a)), b.std(ddof=1) / math.sqrt(len(b))
-        z = (b.mean() - a.mean()) / math.hypot(sa, sb) if sa + sb > 0 else 0.0
-        worst = max(worst, abs(z)) if q != "drift" else worst
-        print("| %s | %.5g +- %.2g | %.5g +- %.2g | %+.2f |" % (q, a.mean(), sa, b.mean(), sb, z))
-    print("# largest |z| (physics rows) = %.2f" % worst)
+    statistics_compare.table(rows, ["drift", "kT", "u_dlvo", "g_peak", "g_int", "D"], not_physics=("drift",))
     return 0
 
 

@@ -1,0 +1,64 @@
+"""Shared parts of the statistical comparisons of two peloid builds
+(tools/compare_md_statistics.py, tools/compare_coupling_statistics.py): run
+a scene with a binary, the colloids' g(r) and diffusion coefficient from
+colloids.h5, and the table of differences in units of the combined SE."""
+import math
+import os
+import subprocess
+
+import numpy as np
+
+import h5md_colloids
+
+
+def run(binary, scene_text, tag, seed, tmp, threads):
+    """Runs scene_text (seed set) with binary in tmp/TAG_SEED; returns that directory."""
+    cfg = os.path.join(tmp, "s%d.cfg" % seed)
+    with open(cfg, "w") as f:
+        f.write(scene_text)
+    out = os.path.join(tmp, "%s_%d" % (tag, seed))
+    subprocess.run([binary, "run", cfg, "--out", out, "--force", "--threads", str(threads)], check=True,
+                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    return out
+
+
+def colloid_structure(out, n, edges):
+    """g(r) of the n colloids over the second half of the frames (minimum
+    image, bins `edges`) with the bins' shell volumes, and D from the MSD
+    slope over the second half of the lags (unwrapped positions)."""
+    c = h5md_colloids.load(os.path.join(out, "colloids.h5"))
+    pos, img, t, L = c["pos"], c["img"], c["t"], c["edges"]
+    hist = np.zeros(len(edges) - 1)
+    frames = range(len(t) // 2, len(t))
+    for k in frames:
+        d = pos[k][:, None, :] - pos[k][None, :, :]
+        d -= L * np.rint(d / L)
+        r = np.sqrt((d * d).sum(-1))[np.triu_indices(n, 1)]
+        hist += np.histogram(r, edges)[0]
+    shell = 4.0 / 3.0 * math.pi * (edges[1:] ** 3 - edges[:-1] ** 3)
+    gr = hist / (len(frames) * n * (n - 1) / 2 / np.prod(L) * shell)
+    xu = pos + img * L
+    lags = np.arange(1, len(t) // 2)
+    msd = np.array([np.mean(np.sum((xu[l:] - xu[:-l]) ** 2, axis=-1)) for l in lags])
+    sel = lags >= len(lags) // 2
+    D = np.polyfit(lags[sel] * (t[1] - t[0]), msd[sel], 1)[0] / 6.0
+    return gr, shell, np.prod(L), D
+
+
+def table(rows, quantities, not_physics=()):
+    """Prints old and new (mean +- SE over seeds) and z = their difference
+    over the combined SE per quantity; returns the largest |z| of the
+    quantities not in not_physics."""
+    print("| quantity | old (mean +- SE) | new (mean +- SE) | z |")
+    print("|---|---|---|---|")
+    worst = 0.0
+    for q in quantities:
+        a = np.array([r[q] for r in rows["old"]])
+        b = np.array([r[q] for r in rows["new"]])
+        sa, sb = a.std(ddof=1) / math.sqrt(len(a)), b.std(ddof=1) / math.sqrt(len(b))
+        z = (b.mean() - a.mean()) / math.hypot(sa, sb) if sa + sb > 0 else 0.0
+        if q not in not_physics:
+            worst = max(worst, abs(z))
+        print("| %s | %.5g +- %.2g | %.5g +- %.2g | %+.2f |" % (q, a.mean(), sa, b.mean(), sb, z))
+    print("# largest |z| (physics rows) = %.2f" % worst)
+    return worst
