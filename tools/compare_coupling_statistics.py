@@ -22,7 +22,6 @@ usage: tools/compare_coupling_statistics.py OLD_PELOID NEW_PELOID [SEEDS] [STEPS
 import json
 import os
 import sys
-import tempfile
 
 import numpy as np
 
@@ -45,10 +44,6 @@ output: {{ thermo_interval = 20; }};
 N = 64
 
 
-def run(binary, tag, seed, steps, tmp):
-    return statistics_compare.run(binary, SCENE.format(seed=seed, steps=steps), tag, seed, tmp, 2)
-
-
 def observables(out, steps):
     th = np.genfromtxt(os.path.join(out, "thermo.tsv"), names=True, delimiter="\t")
     half = len(th) // 2
@@ -64,22 +59,11 @@ def observables(out, steps):
 
 
 def main():
-    if len(sys.argv) < 3:
-        print(__doc__)
-        return 2
-    old, new = sys.argv[1], sys.argv[2]
-    seeds = range(1, 1 + (int(sys.argv[3]) if len(sys.argv) > 3 else 6))
-    steps = int(sys.argv[4]) if len(sys.argv) > 4 else 3000
-    with tempfile.TemporaryDirectory() as tmp:
-        rows = {"old": [], "new": []}
-        for s in seeds:  # interleaved
-            rows["old"].append(observables(run(old, "old", s, steps, tmp), steps))
-            rows["new"].append(observables(run(new, "new", s, steps, tmp), steps))
-    print("# %d seeds x %d collision steps, 64 WCA colloids in 32^3 cells of SRD fluid, potential coupling"
-          % (len(seeds), steps))
-    statistics_compare.table(rows, ["kT_colloid", "u_wca", "T_fluid", "D", "g_peak", "selected_per_step"],
-                             not_physics=("selected_per_step",))
-    return 0
+    return statistics_compare.main(
+        __doc__, SCENE, 2, observables,
+        "# %d seeds x %d collision steps, 64 WCA colloids in 32^3 cells of SRD fluid, potential coupling",
+        ["kT_colloid", "u_wca", "T_fluid", "D", "g_peak", "selected_per_step"], not_physics=("selected_per_step",),
+        seeds=6, steps=3000)
 
 
 if __name__ == "__main__":

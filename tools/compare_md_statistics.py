@@ -17,7 +17,6 @@ usage: tools/compare_md_statistics.py OLD_PELOID NEW_PELOID [SEEDS] [STEPS]
 """
 import os
 import sys
-import tempfile
 
 import numpy as np
 
@@ -39,12 +38,7 @@ output: {{ thermo_interval = 20; }};
 """
 
 
-def run(binary, seed, steps, tmp):
-    tag = os.path.basename(os.path.dirname(os.path.abspath(binary)))
-    return statistics_compare.run(binary, SCENE.format(seed=seed, steps=steps), tag, seed, tmp, 1)
-
-
-def observables(out):
+def observables(out, steps):
     th = np.genfromtxt(os.path.join(out, "thermo.tsv"), names=True, delimiter="\t")
     n = 256
     e = th["c_total"]
@@ -60,20 +54,10 @@ def observables(out):
 
 
 def main():
-    if len(sys.argv) < 3:
-        print(__doc__)
-        return 2
-    old, new = sys.argv[1], sys.argv[2]
-    seeds = range(1, 1 + (int(sys.argv[3]) if len(sys.argv) > 3 else 4))
-    steps = int(sys.argv[4]) if len(sys.argv) > 4 else 4000
-    with tempfile.TemporaryDirectory() as tmp:
-        rows = {"old": [], "new": []}
-        for s in seeds:  # interleaved
-            rows["old"].append(observables(run(old, s, steps, tmp)))
-            rows["new"].append(observables(run(new, s, steps, tmp)))
-    print("# %d seeds x %d collision steps (x12 MD steps), 256 DLVO + Hertz colloids, NVE" % (len(seeds), steps))
-    statistics_compare.table(rows, ["drift", "kT", "u_dlvo", "g_peak", "g_int", "D"], not_physics=("drift",))
-    return 0
+    return statistics_compare.main(__doc__, SCENE, 1, observables,
+                                   "# %d seeds x %d collision steps (x12 MD steps), 256 DLVO + Hertz colloids, NVE",
+                                   ["drift", "kT", "u_dlvo", "g_peak", "g_int", "D"], not_physics=("drift",),
+                                   seeds=4, steps=4000)
 
 
 if __name__ == "__main__":

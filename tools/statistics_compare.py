@@ -1,10 +1,13 @@
 """Shared parts of the statistical comparisons of two peloid builds
-(tools/compare_md_statistics.py, tools/compare_coupling_statistics.py): run
-a scene with a binary, the colloids' g(r) and diffusion coefficient from
-colloids.h5, and the table of differences in units of the combined SE."""
+(tools/compare_md_statistics.py, tools/compare_coupling_statistics.py): the
+command line and the seed loop, running a scene with a binary, the colloids'
+g(r) and diffusion coefficient from colloids.h5, and the table of
+differences in units of the combined SE."""
 import math
 import os
 import subprocess
+import sys
+import tempfile
 
 import numpy as np
 
@@ -62,3 +65,25 @@ def table(rows, quantities, not_physics=()):
         print("| %s | %.5g +- %.2g | %.5g +- %.2g | %+.2f |" % (q, a.mean(), sa, b.mean(), sb, z))
     print("# largest |z| (physics rows) = %.2f" % worst)
     return worst
+
+
+def main(doc, scene, threads, observables, title, quantities, not_physics=(), seeds=4, steps=4000):
+    """usage: OLD_PELOID NEW_PELOID [SEEDS] [STEPS] (doc printed otherwise).
+    Runs scene (a format string with {seed} and {steps}) with both binaries,
+    seed by seed, interleaved; observables(out, steps) gives a dict per run;
+    prints title % (seeds, steps) and the table of quantities.  Exit code."""
+    if len(sys.argv) < 3:
+        print(doc)
+        return 2
+    binaries = {"old": sys.argv[1], "new": sys.argv[2]}
+    seed_range = range(1, 1 + (int(sys.argv[3]) if len(sys.argv) > 3 else seeds))
+    steps = int(sys.argv[4]) if len(sys.argv) > 4 else steps
+    rows = {"old": [], "new": []}
+    with tempfile.TemporaryDirectory() as tmp:
+        for s in seed_range:  # interleaved
+            for tag in ("old", "new"):
+                out = run(binaries[tag], scene.format(seed=s, steps=steps), tag, s, tmp, threads)
+                rows[tag].append(observables(out, steps))
+    print(title % (len(seed_range), steps))
+    table(rows, quantities, not_physics)
+    return 0
