@@ -94,6 +94,7 @@ $(BUILD)/%.o: %.c $(BUILD)/flags.stamp | deps $(BUILD)/gen/peloid_build.h
 # far-pair selects into SIMD blends (no code reads the floating-point
 # exception flags).  Neither changes a computed value.
 $(BUILD)/kernels/colloid_forces.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
+$(BUILD)/kernels/colloid_slow.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 # The potential coupling's selection takes the speed of each particle near a
 # colloid (a square root of a sum of squares, never negative): without errno
 # it vectorises; sqrt is correctly rounded either way.

@@ -49,8 +49,8 @@ typedef struct {
  * cut-off).  T: term mask; E: energies wanted. */
 static inline __attribute__((always_inline)) void pair_eval(
     const pl_colloid_pair_params_t *p, const pl_colloid_view_t *v, size_t i, size_t j, double dx,
-    double dy, double dz, double r2, const unsigned T, const int E, acc_t *a, double fo[3],
-    double tj[3])
+    double dy, double dz, double r2, const unsigned T, const int E, const int M, acc_t *a,
+    double fo[3], double tj[3])
 {
     fo[0] = fo[1] = fo[2] = 0.0;
     tj[0] = tj[1] = tj[2] = 0.0;
@@ -78,8 +78,14 @@ static inline __attribute__((always_inline)) void pair_eval(
                 s = pl_pair_dlvo(r, d, p->coul_C, p->kappa, p->hamaker, p->prim_hm, p->prim_h0,
                                  p->dlvo_shift);
             }
-            fr += s.f;
-            k2 += s.k2;
+            if (M) { /* the fast share (multiple time stepping) */
+                const double keep = 1.0 - pl_pair_slow_share(r2, d, p->mts_hin, p->mts_hout);
+                fr += keep * s.f;
+                k2 += keep * s.k2;
+            } else {
+                fr += s.f;
+                k2 += s.k2;
+            }
             if (E) a->e[PL_CE_DLVO] += s.u;
         }
     }
@@ -165,11 +171,13 @@ static inline __attribute__((always_inline)) void pair_eval(
 }
 
 /* The pairs colloid i owns: pass 1 (E = 0: forces, torques, guard maxima,
- * pair slots) or the energy pass (E = 1: only the owner's pair energies). */
+ * pair slots) or the energy pass (E = 1: only the owner's pair energies).
+ * M: only the fast share of the DLVO force (multiple time stepping). */
 static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_pair_params_t *p,
                                                               const pl_colloid_nlist_t *nl,
                                                               const pl_colloid_view_t *v, size_t i,
-                                                              const unsigned T, const int E)
+                                                              const unsigned T, const int E,
+                                                              const int M)
 {
     acc_t a = {{0}, {0}, {0}, 0.0, 0.0, 0.0, -1, -1, -1};
     const double L[3] = {p->box[0], p->box[1], p->box[2]};
@@ -210,7 +218,10 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
                 dy -= pL[1] * rint(dy * iL[1]);
                 dz -= pL[2] * rint(dz * iL[2]);
                 double r2 = dx * dx + dy * dy + dz * dz;
-                double d = ri + gr[k], rc = d + p->gap_cut, rf = d + far_gap;
+                /* fast share (M): from the gap mts_hout on the DLVO force is
+                 * all slow, so those pairs take this path too (zeroed) */
+                double d = ri + gr[k], rc = d + p->gap_cut,
+                       rf = d + (M && p->mts_hout < far_gap ? p->mts_hout : far_gap);
                 if (T & PL_CT_WCA) {
                     double wrc = (p->wca_sigma > 0.0 ? p->wca_sigma : d) * p->wca_rfac;
                     rc = rc > wrc ? rc : wrc;
@@ -228,6 +239,7 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
                 double ir2 = 1.0 / r2f, is = 1.0 / sf;
                 double fc = -(p->hamaker * d2 * d2 * d2 / 6.0) * (ir2 * ir2) * (is * is);
                 double fm = far ? 1.0 : 0.0;
+                if (M) fm *= 1.0 - pl_pair_slow_share(r2, d, p->mts_hin, p->mts_hout);
                 bfx[k] = fm * (fc * dx);
                 bfy[k] = fm * (fc * dy);
                 bfz[k] = fm * (fc * dz);
@@ -249,7 +261,7 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
                 if (per[0]) dx -= L[0] * rint(dx * iL[0]);
                 if (per[1]) dy -= L[1] * rint(dy * iL[1]);
                 if (per[2]) dz -= L[2] * rint(dz * iL[2]);
-                pair_eval(p, v, i, j, dx, dy, dz, dx * dx + dy * dy + dz * dz, T, E, &a, fo, tj);
+                pair_eval(p, v, i, j, dx, dy, dz, dx * dx + dy * dy + dz * dz, T, E, M, &a, fo, tj);
             }
             if (!E) {
                 size_t q = 3 * (size_t)nl->rpos[s];
@@ -291,8 +303,13 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
  * owners; the owner rule spreads the pairs evenly over indices. */
 #define CASE(m)                                                                            \
     case m:                                                                                \
-        _Pragma("omp for schedule(static)") for (size_t i = 0; i < v->n; ++i)              \
-            owner_pairs(p, nl, v, i, m, E);                                                \
+        if (((m) & PL_CT_DLVO) && !E && p->mts) {                                          \
+            _Pragma("omp for schedule(static)") for (size_t i = 0; i < v->n; ++i)          \
+                owner_pairs(p, nl, v, i, m, E, 1);                                         \
+        } else {                                                                           \
+            _Pragma("omp for schedule(static)") for (size_t i = 0; i < v->n; ++i)          \
+                owner_pairs(p, nl, v, i, m, E, 0);                                         \
+        }                                                                                  \
         break;
 /* Every mask 0..PL_CT_ALL, by doubling (a new term bit adds one level). */
 #define CASES2(b) CASE((b)) CASE((b) + 1)
@@ -345,6 +362,6 @@ double pl_colloid_pair_energy(const pl_colloid_pair_params_t *p, double r, doubl
                                  .vz = zero, .wx = zero, .wy = zero, .wz = zero, .rad = rad, .mass = one};
     acc_t a = {{0}, {0}, {0}, 0.0, 0.0, 0.0, -1, -1, -1};
     double fo[3], tj[3];
-    pair_eval(p, &v, 0, 1, r, 0.0, 0.0, r * r, p->terms & PL_CT_ALL, 1, &a, fo, tj);
+    pair_eval(p, &v, 0, 1, r, 0.0, 0.0, r * r, p->terms & PL_CT_ALL, 1, 0, &a, fo, tj);
     return a.e[PL_CE_DLVO] + a.e[PL_CE_HERTZ] + a.e[PL_CE_WCA] + a.e[PL_CE_DEPL];
 }

@@ -29,6 +29,19 @@ static inline void pl_colloid_kick_one(size_t i, double h, const double *restric
     wz[i] += b * tz[i];
 }
 
+/* v += H Fs/m: the slow forces' kick of multiple time stepping (H = k dt / 2
+ * at each end of an outer step of k MD steps; no torque). */
+static inline void pl_colloid_slow_kick_one(size_t i, double H, const double *restrict mass,
+                                            const double *restrict fsx, const double *restrict fsy,
+                                            const double *restrict fsz, double *restrict vx,
+                                            double *restrict vy, double *restrict vz)
+{
+    double a = H / mass[i];
+    vx[i] += a * fsx[i];
+    vy[i] += a * fsy[i];
+    vz[i] += a * fsz[i];
+}
+
 /* Wraps x into [0, L) and counts the crossing in img. */
 static inline void pl_colloid_wrap(double *x, int32_t *img, double L)
 {

@@ -80,6 +80,24 @@ static size_t scan_cells(const pl_colloid_cells_t *c, const double box[3], const
     return m;
 }
 
+/* Reverse entries (counting transpose, owners in ascending order) and the
+ * slot count, from start and nbr. */
+static void reverse_entries(pl_colloid_nlist_t *nl)
+{
+    const size_t n = nl->n;
+    nl->npairs = (size_t)nl->start[n];
+    int32_t *rs = nl->rstart;
+    for (size_t i = 0; i <= n; ++i) rs[i] = 0;
+    for (size_t p = 0; p < nl->npairs; ++p) rs[nl->nbr[p] + 1]++;
+    for (size_t i = 0; i < n; ++i) rs[i + 1] += rs[i];
+    for (size_t i = 0; i < n; ++i)
+        for (int32_t p = nl->start[i]; p < nl->start[i + 1]; ++p)
+            nl->rpos[p] = rs[nl->nbr[p]]++;
+    for (size_t i = n; i > 0; --i) rs[i] = rs[i - 1];
+    rs[0] = 0;
+    nl->builds++;
+}
+
 double pl_colloid_nlist_max_disp2(const pl_colloid_nlist_t *nl, const double box[3],
                                   const int periodic[3], const double *x, const double *y,
                                   const double *z, int nthreads)
@@ -121,16 +139,60 @@ void pl_colloid_nlist_fill(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cel
         nl->y0[i] = y[i];
         nl->z0[i] = z[i];
     }
-    nl->npairs = (size_t)nl->start[n];
-    /* reverse list: counting transpose, owners in ascending order */
-    int32_t *rs = nl->rstart;
-    for (size_t i = 0; i <= n; ++i) rs[i] = 0;
-    for (size_t p = 0; p < nl->npairs; ++p) rs[nl->nbr[p] + 1]++;
-    for (size_t i = 0; i < n; ++i) rs[i + 1] += rs[i];
-    for (size_t i = 0; i < n; ++i)
-        for (int32_t p = nl->start[i]; p < nl->start[i + 1]; ++p)
-            nl->rpos[p] = rs[nl->nbr[p]]++;
-    for (size_t i = n; i > 0; --i) rs[i] = rs[i - 1];
-    rs[0] = 0;
-    nl->builds++;
+    reverse_entries(nl);
+}
+
+/* The near list of multiple time stepping: the pairs of the full list
+ * (same owners, same ascending order) that may feel a fast force before the
+ * next build, i.e. closer than fast_cut + skin (the full list's skin, so the
+ * full list's displacement check keeps both valid). */
+static double fast_cut(const pl_colloid_pair_params_t *p, double d)
+{
+    double rc = d + p->mts_hout;
+    if ((p->terms & PL_CT_LUB) && d + p->lub_hcut > rc) rc = d + p->lub_hcut;
+    if (p->terms & PL_CT_WCA) {
+        double wrc = (p->wca_sigma > 0.0 ? p->wca_sigma : d) * p->wca_rfac;
+        if (wrc > rc) rc = wrc;
+    }
+    if ((p->terms & PL_CT_DEPL) && p->dep_rc > rc) rc = p->dep_rc;
+    return rc;
+}
+
+static size_t near_scan(pl_colloid_nlist_t *near, const pl_colloid_nlist_t *full,
+                        const pl_colloid_pair_params_t *p, const double *x, const double *y,
+                        const double *z, const double *rad, size_t i, int fill)
+{
+    size_t m = 0;
+    for (int32_t s = full->start[i]; s < full->start[i + 1]; ++s) {
+        size_t j = (size_t)full->nbr[s];
+        double dx = pl_min_image(x[i] - x[j], p->box[0], p->periodic[0]);
+        double dy = pl_min_image(y[i] - y[j], p->box[1], p->periodic[1]);
+        double dz = pl_min_image(z[i] - z[j], p->box[2], p->periodic[2]);
+        double rl = fast_cut(p, rad[i] + rad[j]) + full->skin;
+        if (dx * dx + dy * dy + dz * dz >= rl * rl) continue;
+        if (fill) near->nbr[near->start[i] + (int32_t)m] = (int32_t)j;
+        ++m;
+    }
+    return m;
+}
+
+void pl_colloid_nlist_near_count(pl_colloid_nlist_t *near, const pl_colloid_nlist_t *full,
+                                 const pl_colloid_pair_params_t *p, const double *x,
+                                 const double *y, const double *z, const double *rad, int nthreads)
+{
+    size_t n = full->n;
+    near->start[0] = 0;
+#pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
+    for (size_t i = 0; i < n; ++i) near->start[i + 1] = (int32_t)near_scan(near, full, p, x, y, z, rad, i, 0);
+}
+
+void pl_colloid_nlist_near_fill(pl_colloid_nlist_t *near, const pl_colloid_nlist_t *full,
+                                const pl_colloid_pair_params_t *p, const double *x,
+                                const double *y, const double *z, const double *rad, int nthreads)
+{
+    size_t n = full->n;
+#pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
+    for (size_t i = 0; i < n; ++i) near_scan(near, full, p, x, y, z, rad, i, 1);
+    near->skin = full->skin;
+    reverse_entries(near);
 }

@@ -12,6 +12,14 @@
  *          (reverse entries), unwrapped z, external forces, half kick and the
  *          guard's per-colloid tests and maxima (reduced).
  *
+ * Multiple time stepping (r-RESPA, colloids.slow_interval = k > 1): the pair
+ * pass covers the near list with the fast share of the forces; the slow
+ * share's half kick of k dt / 2 comes first in the open of an outer step's
+ * first MD step and last in the close of its last one, whose close also
+ * evaluates the slow forces (kernels/colloid_slow.c; owner pass after the
+ * fast one, reverse entries per colloid after the barrier).  A non-finite
+ * slow force makes the velocity non-finite before the guard's test.
+ *
  * Each colloid's operations are the ones of the separate passes
  * (kernels/colloid_integrate.h, pl_colloid_pair_reverse_one), in the same
  * order on the same operands, so the state is bitwise the same; the static
@@ -23,14 +31,15 @@
 
 #include "colloid_integrate.h"
 
-double pl_colloid_verlet_open(const pl_colloid_dyn_t *s, double dt, const pl_colloid_nlist_t *nl,
-                              int nthreads)
+double pl_colloid_verlet_open(const pl_colloid_dyn_t *s, double dt, double slow_h,
+                              const pl_colloid_nlist_t *nl, int nthreads)
 {
     const size_t n = s->n;
     const double h = 0.5 * dt;
     double m = 0.0;
 #pragma omp parallel for schedule(static) num_threads(nthreads) reduction(max : m) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i) {
+        if (slow_h != 0.0) pl_colloid_slow_kick_one(i, slow_h, s->mass, s->fsx, s->fsy, s->fsz, s->vx, s->vy, s->vz);
         pl_colloid_kick_one(i, h, s->mass, s->inertia, s->fx, s->fy, s->fz, s->tx, s->ty, s->tz,
                             s->vx, s->vy, s->vz, s->wx, s->wy, s->wz);
         pl_colloid_drift_one(i, dt, s->box, s->periodic, s->x, s->y, s->z, s->ix, s->iy, s->iz,
@@ -42,10 +51,11 @@ double pl_colloid_verlet_open(const pl_colloid_dyn_t *s, double dt, const pl_col
     return m;
 }
 
-void pl_colloid_verlet_close(const pl_colloid_dyn_t *s, double dt,
+void pl_colloid_verlet_close(const pl_colloid_dyn_t *s, double dt, double slow_h,
                              const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
-                             const pl_colloid_view_t *v, const pl_colloid_ext_params_t *ext,
-                             double *epot, pl_colloid_guard_max_t *g, int nthreads)
+                             const pl_colloid_nlist_t *full, const pl_colloid_view_t *v,
+                             const pl_colloid_ext_params_t *ext, double *epot,
+                             pl_colloid_guard_max_t *g, int nthreads)
 {
     const size_t n = s->n;
     const double h = 0.5 * dt, rf = pow(2.0, 1.0 / ext->wall_n), Lz = s->box[2];
@@ -54,6 +64,8 @@ void pl_colloid_verlet_close(const pl_colloid_dyn_t *s, double dt,
 #pragma omp parallel num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
     {
         pl_colloid_pair_owner_pass(p, nl, v);
+        if (slow_h != 0.0)
+            pl_colloid_slow_owner_pass(p, full, s->x, s->y, s->z, s->rad, s->fsx, s->fsy, s->fsz);
 #pragma omp for schedule(static) reduction(pl_guard_max : gm)
         for (size_t i = 0; i < n; ++i) {
             pl_colloid_pair_reverse_one(nl, v, i, torques);
@@ -62,6 +74,11 @@ void pl_colloid_verlet_close(const pl_colloid_dyn_t *s, double dt,
                                s->fy, s->fz, epot);
             pl_colloid_kick_one(i, h, s->mass, s->inertia, s->fx, s->fy, s->fz, s->tx, s->ty,
                                 s->tz, s->vx, s->vy, s->vz, s->wx, s->wy, s->wz);
+            if (slow_h != 0.0) {
+                pl_colloid_slow_reverse_one(full, i, s->fsx, s->fsy, s->fsz);
+                pl_colloid_slow_kick_one(i, slow_h, s->mass, s->fsx, s->fsy, s->fsz, s->vx, s->vy,
+                                         s->vz);
+            }
             const int ok = pl_colloid_state_finite(s->x[i], s->y[i], s->z[i], s->vx[i], s->vy[i],
                                                    s->vz[i], s->fx[i], s->fy[i], s->fz[i],
                                                    s->wx[i], s->wy[i], s->wz[i]) &&

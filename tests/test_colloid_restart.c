@@ -4,7 +4,8 @@
  * Verlet with rotation (Hertz tangential friction gives torques), Hertz
  * damping, DLVO, WCA, walls + gravity (images, unwrapped heights), the
  * drift guard's reference energy (NVE scene), the Brownian integrator (noise
- * keyed by the MD step), polydisperse radii; with and without fluid.  Two
+ * keyed by the MD step), polydisperse radii, multiple time stepping (slow
+ * forces recomputed from the restored positions); with and without fluid.  Two
  * scenes have >= PL_COLLOID_OMP_MIN colloids so the kernels really thread. */
 #include <criterion/criterion.h>
 #include <stdio.h>
@@ -41,6 +42,12 @@ static const char *scenes[] = {
     "colloids: { count = 80; init = \"random\"; radius = 1.5; integrator = \"brownian\";\n"
     "  gravity = [0.0, 0.0, -0.05]; temperature = 1.0; substeps = 10; pairs = \"dlvo, hertz, wca\";\n"
     "  min_contact_steps = 0.0; };\n" DLVO,
+    /* multiple time stepping (outer steps of 5 MD steps), Hecht Fig. 14 DLVO, coupling II */
+    "seed = 15;\nbox: { cells = [10, 10, 10]; };\nfluid: { density = 5.0; };\nsrd: { dt = 0.1; };\n"
+    "colloids: { count = 300; radius = 0.62; mass_density = 39.0; temperature = 1.0; substeps = 10;\n"
+    "  slow_interval = 5; pairs = \"dlvo, hertz\"; min_contact_steps = 0.0; };\n"
+    "coupling: { method = \"hecht2\"; };\nhertz: { K = 1000.0; };\n"
+    "dlvo: { psi0 = 50.0; kappa = 3.0e8; hamaker = 4.76e-20; length_unit = 4.03e-7; };\n",
 };
 enum { NSCENES = sizeof scenes / sizeof *scenes };
 
@@ -68,6 +75,10 @@ static void assert_same(const pl_sim_t *sa, const pl_sim_t *sb, const char *what
     SAME(fx, n, what); SAME(fy, n, what); SAME(fz, n, what);
     SAME(tx, n, what); SAME(ty, n, what); SAME(tz, n, what);
     SAME(zu, n, what);
+    cr_assert_eq(!a->fsx, !b->fsx, "%s: slow forces in one run only", what);
+    if (a->fsx) { /* multiple time stepping: recomputed at a restart, not stored */
+        SAME(fsx, n, what); SAME(fsy, n, what); SAME(fsz, n, what);
+    }
     /* epot: the rows the force evaluation writes (the pair rows are filled
      * on demand by pl_colloid_energy, whose result e0 is compared above) */
     for (int k = 0; k < PL_CE_NTERMS; ++k)
@@ -118,6 +129,9 @@ static void poison(pl_sim_t *sim)
     double *d[] = {c->x,  c->y,  c->z,  c->vx, c->vy,  c->vz,   c->wx,      c->wy, c->wz, c->q0, c->q1,
                    c->q2, c->q3, c->rad, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz};
     for (size_t k = 0; k < sizeof d / sizeof *d; ++k) memset(d[k], 0xA5, n * sizeof(double));
+    double *fs[] = {c->fsx, c->fsy, c->fsz};
+    for (int k = 0; k < 3; ++k)
+        if (fs[k]) memset(fs[k], 0xA5, n * sizeof(double));
     int32_t *img[] = {c->ix, c->iy, c->iz};
     for (int k = 0; k < 3; ++k) memset(img[k], 0xA5, n * sizeof(int32_t));
     c->md_step = -1;

@@ -65,6 +65,12 @@ typedef struct pl_colloid {
     int32_t *g_partner;
     pl_colloid_cells_t cells;
     pl_colloid_nlist_t nlist; /* rebuilt when the skin is used up */
+    /* multiple time stepping (slow_interval > 1): the near list (built with
+     * nlist) and the slow forces, functions of the positions at the end of
+     * the last outer step, recomputed bitwise at a restart (not stored) */
+    int slow_interval;
+    pl_colloid_nlist_t near;
+    double *fsx, *fsy, *fsz;
     /* parameters derived from the scene */
     pl_colloid_pair_params_t pair;
     pl_colloid_ext_params_t ext;

@@ -58,6 +58,12 @@ typedef struct {
     const double *dep_u, *dep_du;
     double dep_inv_h, dep_rc;
     double gap_cut; /* largest surface-gap cut-off of the DLVO/Hertz/lub terms */
+    /* multiple time stepping (colloids.slow_interval > 1): the force pass
+     * over the near list gives each pair's DLVO force times 1 - w, w =
+     * pl_pair_slow_share(r^2, d, mts_hin, mts_hout); the slow pass
+     * (kernels/colloid_slow.c) gives the rest, w times it */
+    int mts;
+    double mts_hin, mts_hout;
 } pl_colloid_pair_params_t;
 
 /* Raw arrays the force kernel reads and writes (all length n). */
@@ -147,6 +153,30 @@ void pl_colloid_nlist_count(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *ce
 void pl_colloid_nlist_fill(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
                            const double box[3], const int periodic[3], const double *x,
                            const double *y, const double *z, int nthreads);
+
+/* The near list of multiple time stepping (kernels/colloid_neighbors.c):
+ * the pairs of the built full list that may feel a fast force before its
+ * next build (count into start[1..n], not summed; then fill after the
+ * prefix sum and the slot reservation). */
+void pl_colloid_nlist_near_count(pl_colloid_nlist_t *near, const pl_colloid_nlist_t *full,
+                                 const pl_colloid_pair_params_t *p, const double *x,
+                                 const double *y, const double *z, const double *rad, int nthreads);
+void pl_colloid_nlist_near_fill(pl_colloid_nlist_t *near, const pl_colloid_nlist_t *full,
+                                const pl_colloid_pair_params_t *p, const double *x,
+                                const double *y, const double *z, const double *rad, int nthreads);
+
+/* The slow share of the DLVO forces (multiple time stepping,
+ * kernels/colloid_slow.c) over the full list into fs (overwritten): the
+ * owner pass as an orphaned worksharing loop, then per colloid after its
+ * barrier the reverse entries; or both in one call. */
+void pl_colloid_slow_owner_pass(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
+                                const double *x, const double *y, const double *z,
+                                const double *rad, double *fsx, double *fsy, double *fsz);
+void pl_colloid_slow_reverse_one(const pl_colloid_nlist_t *nl, size_t i, double *fsx, double *fsy,
+                                 double *fsz);
+void pl_colloid_slow_forces(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
+                            const double *x, const double *y, const double *z, const double *rad,
+                            double *fsx, double *fsy, double *fsz, int nthreads);
 
 /* Pair forces, torques and guard quantities over the neighbour list;
  * overwrites f, t.  `terms` of p must be a subset of PL_CT_ALL.  The guard
@@ -274,6 +304,7 @@ typedef struct {
     double *vx, *vy, *vz, *wx, *wy, *wz;
     double *q0, *q1, *q2, *q3;
     double *fx, *fy, *fz, *tx, *ty, *tz;
+    double *fsx, *fsy, *fsz; /* slow forces (multiple time stepping), else NULL */
 } pl_colloid_dyn_t;
 
 /* Velocity-Verlet MD step of time step dt in two parallel regions
@@ -283,13 +314,19 @@ typedef struct {
  * Open: the half kick and the drift; returns the largest squared
  * displacement since the list build (+inf for a non-finite one).  The caller
  * rebuilds the list when needed, then Close: pair forces (v: the same arrays
- * as s), external forces, the second half kick and the guard maxima into g. */
-double pl_colloid_verlet_open(const pl_colloid_dyn_t *s, double dt, const pl_colloid_nlist_t *nl,
-                              int nthreads);
-void pl_colloid_verlet_close(const pl_colloid_dyn_t *s, double dt,
+ * as s), external forces, the second half kick and the guard maxima into g.
+ * Multiple time stepping: open with slow_h > 0 first kicks by slow_h s->fs
+ * (the start of an outer step); the pair pass runs over nl, the near list;
+ * close with slow_h > 0 (the end of an outer step) also evaluates the slow
+ * forces over full into s->fs and kicks by slow_h with them after the fast
+ * kick.  slow_h = 0: one time step (full unused; may be NULL). */
+double pl_colloid_verlet_open(const pl_colloid_dyn_t *s, double dt, double slow_h,
+                              const pl_colloid_nlist_t *nl, int nthreads);
+void pl_colloid_verlet_close(const pl_colloid_dyn_t *s, double dt, double slow_h,
                              const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
-                             const pl_colloid_view_t *v, const pl_colloid_ext_params_t *ext,
-                             double *epot, pl_colloid_guard_max_t *g, int nthreads);
+                             const pl_colloid_nlist_t *full, const pl_colloid_view_t *v,
+                             const pl_colloid_ext_params_t *ext, double *epot,
+                             pl_colloid_guard_max_t *g, int nthreads);
 
 /* Velocity Verlet half kick (PL Eq. 19 / Hecht Eq. 8 and the rotational
  * analogue of Hecht Eq. 9): v += h F/m, w += h T/I. */

@@ -80,6 +80,21 @@ static inline pl_pair_val_t pl_pair_dlvo(double r, double d, double C, double ka
     return v;
 }
 
+/* Multiple time stepping: the share w of a pair's DLVO force carried by the
+ * outer (slow) steps, for contact distance d and squared centre distance r2:
+ * 0 up to the gap hin, 1 from the gap hout on, and between them the cubic
+ * smoothstep x^2 (3 - 2x) of x = (r2 - (d+hin)^2) / ((d+hout)^2 - (d+hin)^2)
+ * (continuous slope: the slow force has no kink for the outer step to jump).
+ * The force split F = (1 - w) F + w F is the r-RESPA force splitting of
+ * Tuckerman, Berne and Martyna (J. Chem. Phys. 97, 1990 (1992)). */
+static inline double pl_pair_slow_share(double r2, double d, double hin, double hout)
+{
+    double a = d + hin, b = d + hout;
+    double x = (r2 - a * a) / (b * b - a * a);
+    x = x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x);
+    return x * x * (3.0 - 2.0 * x);
+}
+
 /* Hecht Eq. 3, delta = d - r > 0 the overlap. */
 static inline pl_pair_val_t pl_pair_hertz(double delta, double K)
 {

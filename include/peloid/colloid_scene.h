@@ -37,6 +37,8 @@ typedef struct {
                               depletion_comp */
     int integrator;        /* PL_CINT_* */
     long long substeps;    /* MD steps per collision step */
+    long long slow_interval; /* MD steps per outer step of the slow DLVO share (1: one time step) */
+    double slow_gap;       /* a0: surface gap where the slow share starts (full at 2x) */
     double gravity[3];
     double bd_viscosity;
     double wall_epsilon, wall_n;

@@ -101,6 +101,10 @@ void pl_colloid_free(pl_colloid_t *c)
     free(c->cells.cell);
     free(c->cells.start);
     nlist_free(&c->nlist);
+    nlist_free(&c->near);
+    free(c->fsx);
+    free(c->fsy);
+    free(c->fsz);
     free(c->dep_table);
     free(c);
 }
@@ -136,6 +140,12 @@ static int nlist_build(pl_colloid_t *c, pl_err_t *err)
     for (size_t i = 0; i < c->n; ++i) nl->start[i + 1] += nl->start[i];
     if (nlist_reserve(nl, (size_t)nl->start[c->n], err)) return err->code;
     pl_colloid_nlist_fill(nl, &c->cells, c->box, c->periodic, c->x, c->y, c->z, c->nthreads);
+    if (c->slow_interval <= 1) return 0;
+    pl_colloid_nlist_t *nr = &c->near;
+    pl_colloid_nlist_near_count(nr, nl, &c->pair, c->x, c->y, c->z, c->rad, c->nthreads);
+    for (size_t i = 0; i < c->n; ++i) nr->start[i + 1] += nr->start[i];
+    if (nlist_reserve(nr, (size_t)nr->start[c->n], err)) return err->code;
+    pl_colloid_nlist_near_fill(nr, nl, &c->pair, c->x, c->y, c->z, c->rad, c->nthreads);
     return 0;
 }
 
@@ -175,17 +185,26 @@ static pl_colloid_dyn_t colloid_dyn(pl_colloid_t *c)
                           .vx = c->vx, .vy = c->vy, .vz = c->vz, .wx = c->wx, .wy = c->wy,
                           .wz = c->wz, .q0 = c->q0, .q1 = c->q1, .q2 = c->q2, .q3 = c->q3,
                           .fx = c->fx, .fy = c->fy, .fz = c->fz, .tx = c->tx, .ty = c->ty,
-                          .tz = c->tz};
+                          .tz = c->tz, .fsx = c->fsx, .fsy = c->fsy, .fsz = c->fsz};
     return s;
 }
 
 int pl_colloid_verlet_step(pl_colloid_t *c, pl_colloid_guard_max_t *g, pl_err_t *err)
 {
     const pl_colloid_dyn_t s = colloid_dyn(c);
-    const double disp2 = pl_colloid_verlet_open(&s, c->dt, &c->nlist, c->nthreads);
+    /* multiple time stepping: the slow kicks of k dt / 2 open the first and
+     * close the last MD step of each outer step of k (md_step counts from a
+     * multiple of k: k divides the substeps of a collision step) */
+    const int k = c->slow_interval;
+    const long long phase = k > 1 ? c->md_step % k : 0;
+    const double slow_h = 0.5 * (double)k * c->dt;
+    const double open_h = k > 1 && phase == 0 ? slow_h : 0.0;
+    const double close_h = k > 1 && phase == k - 1 ? slow_h : 0.0;
+    const double disp2 = pl_colloid_verlet_open(&s, c->dt, open_h, &c->nlist, c->nthreads);
     if (nlist_ensure(c, disp2, err)) return err->code;
     const pl_colloid_view_t v = colloid_view(c);
-    pl_colloid_verlet_close(&s, c->dt, &c->pair, &c->nlist, &v, &c->ext, c->epot, g, c->nthreads);
+    pl_colloid_verlet_close(&s, c->dt, close_h, &c->pair, k > 1 ? &c->near : &c->nlist, &c->nlist,
+                            &v, &c->ext, c->epot, g, c->nthreads);
     return 0;
 }
 
@@ -196,7 +215,9 @@ int pl_colloid_forces(pl_colloid_t *c, pl_err_t *err)
                               : INFINITY;
     if (nlist_ensure(c, disp2, err)) return err->code;
     pl_colloid_view_t v = colloid_view(c);
-    pl_colloid_pair_forces(&c->pair, nl, &v, c->nthreads);
+    pl_colloid_pair_forces(&c->pair, c->slow_interval > 1 ? &c->near : nl, &v, c->nthreads);
+    if (c->slow_interval > 1)
+        pl_colloid_slow_forces(&c->pair, nl, c->x, c->y, c->z, c->rad, c->fsx, c->fsy, c->fsz, c->nthreads);
     for (size_t i = 0; i < c->n; ++i) c->zu[i] = c->z[i] + (double)c->iz[i] * c->box[2];
     pl_colloid_ext_forces(&c->ext, c->n, c->x, c->y, c->z, c->zu, c->rad, c->mass, c->fx, c->fy, c->fz, c->epot, c->nthreads);
     return 0;
@@ -235,6 +256,98 @@ static int depletion_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *e
     return 0;
 }
 
+/* Multiple time stepping (colloids.slow_interval = k > 1, r-RESPA): checks
+ * what it needs, sets the force split of the pair parameters, allocates the
+ * near list and the slow forces.  Refused where the slow share itself is too
+ * stiff for the outer step: its largest |dF_slow/dr| over the pair diameters
+ * of the run gives a collision time pi sqrt(m_red / k) that must span
+ * colloids.min_contact_steps outer steps (the contact guard's rule applied
+ * to the outer step). */
+static int mts_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
+{
+    const pl_scene_colloids_t *cs = &scene->colloids;
+    const long long k = cs->slow_interval;
+    c->slow_interval = (int)k;
+    c->pair.mts = 0;
+    if (k <= 1) return 0;
+    const size_t K = OFF(colloids.slow_interval);
+    if (c->integrator != PL_CINT_VERLET)
+        return pl_scene_fail(scene, err, K, "colloids.slow_interval",
+                             "%lld: multiple time stepping needs colloids.integrator = \"verlet\"; allowed here: 1 (off)", k);
+    if (scene->coupling.method == PL_COUPLE_POTENTIAL)
+        return pl_scene_fail(scene, err, K, "colloids.slow_interval",
+                             "%lld: the potential coupling integrates the colloids with the fluid forces "
+                             "itself; multiple time stepping needs coupling.method none, hecht1 or hecht2; "
+                             "allowed here: 1 (off)", k);
+    if (!(c->pair.terms & PL_CT_DLVO))
+        return pl_scene_fail(scene, err, K, "colloids.slow_interval",
+                             "%lld: the slow share is the DLVO force, and colloids.pairs has no dlvo; allowed here: 1 (off)", k);
+    if (cs->substeps % k != 0)
+        return pl_scene_fail(scene, err, K, "colloids.slow_interval",
+                             "%lld does not divide colloids.substeps = %lld (an outer step must end with "
+                             "the collision step); allowed: 1 or a divisor of the substeps", k, cs->substeps);
+    const double hin = cs->slow_gap, hout = 2.0 * cs->slow_gap;
+    if (!(hin > c->pair.prim_hm))
+        return pl_scene_fail(scene, err, OFF(colloids.slow_gap), "colloids.slow_gap",
+                             "%g a0 is not beyond the primary minimum's match gap %.4g a0 (the slow share "
+                             "is Hecht Eqs. 1-2 alone); allowed: > %.4g", hin, c->pair.prim_hm, c->pair.prim_hm);
+    c->pair.mts = 1;
+    c->pair.mts_hin = hin;
+    c->pair.mts_hout = hout;
+    double rmin = INFINITY, rmax = 0.0, mmin = INFINITY;
+    for (size_t i = 0; i < c->n; ++i) {
+        rmin = fmin(rmin, c->rad[i]);
+        rmax = fmax(rmax, c->rad[i]);
+        mmin = fmin(mmin, c->mass[i]);
+    }
+    double kmax = 0.0, h_at = hin;
+    const double ds[3] = {2.0 * rmin, rmin + rmax, 2.0 * rmax};
+    enum { NS = 4000 };
+    for (int a = 0; a < (c->n ? 3 : 0); ++a) {
+        const double d = ds[a], hc = c->pair.dlvo_hcut;
+        for (int q = 0; q <= NS && hc > hin; ++q) {
+            /* denser near hin, where the force is largest */
+            double t = (double)q / NS, h = hin + (hc - hin) * t * t, eps = 1e-6 * (hout - hin);
+            double f[2];
+            for (int b = 0; b < 2; ++b) {
+                double r = d + h + (b ? eps : -eps);
+                f[b] = pl_pair_slow_share(r * r, d, hin, hout) *
+                       pl_pair_dlvo_raw(r, d, c->pair.coul_C, c->pair.kappa, c->pair.hamaker).f;
+            }
+            double kk = fabs(f[1] - f[0]) / (2.0 * eps);
+            if (kk > kmax) {
+                kmax = kk;
+                h_at = h;
+            }
+        }
+    }
+    const double outer = (double)k * c->dt;
+    if (c->min_contact_steps > 0.0 && kmax > 0.0 && mmin > 0.0) {
+        double tc = PL_PI * sqrt(0.5 * mmin / kmax), steps = tc / outer;
+        if (steps < c->min_contact_steps) {
+            long long kok = (long long)floor(tc / (c->min_contact_steps * c->dt));
+            return pl_scene_fail(scene, err, K, "colloids.slow_interval",
+                                 "%lld: the slow DLVO share (stiffness up to %.4g kT/a0^2 at gap %.4g a0) "
+                                 "would last %.3g outer steps of %lld MD steps, fewer than "
+                                 "colloids.min_contact_steps = %g; allowed: <= %lld here (or raise "
+                                 "colloids.slow_gap)", k, kmax, h_at, steps, k, c->min_contact_steps,
+                                 kok < 1 ? 1 : kok);
+        }
+    }
+    const size_t n = c->n;
+    if (!c->fsx) {
+        c->fsx = zalloc(n * sizeof(double));
+        c->fsy = zalloc(n * sizeof(double));
+        c->fsz = zalloc(n * sizeof(double));
+        c->near.n = n;
+        c->near.start = zalloc((n + 1) * sizeof(int32_t));
+        c->near.rstart = zalloc((n + 1) * sizeof(int32_t));
+        if (!c->fsx || !c->fsy || !c->fsz || !c->near.start || !c->near.rstart)
+            return pl_err_set(err, PL_ERR_NOMEM, "colloids: out of memory (multiple time stepping)");
+    }
+    return 0;
+}
+
 int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
 {
     const pl_scene_colloids_t *cs = &scene->colloids;
@@ -254,11 +367,12 @@ int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
     c->integrator = cs->integrator;
     c->substeps = (int)cs->substeps;
     c->dt = scene->srd.dt / (double)cs->substeps;
+    c->min_contact_steps = cs->min_contact_steps;
+    if (mts_setup(c, scene, err)) return err->code;
     c->kT = cs->temperature;
     c->bd_eta = cs->bd_viscosity;
     c->seed = (uint64_t)scene->run.seed;
     c->max_overlap = cs->max_overlap;
-    c->min_contact_steps = cs->min_contact_steps;
     c->max_energy_drift = cs->max_energy_drift;
     c->guard_interval = cs->guard_interval;
     unsigned t = c->pair.terms;

@@ -201,6 +201,11 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
                         "and the Hertz contact are not resolved by the MD step; a pair started or pushed "
                         "there trips the contact guard (raise reach_energy to resolve them)",
                         h_reach, e_reach);
+    if (cs->slow_interval > 1 && n % cs->slow_interval) { /* an outer step ends with the collision step */
+        n = (n / cs->slow_interval + 1) * cs->slow_interval;
+        snprintf(c->substeps_reason + strlen(c->substeps_reason), sizeof c->substeps_reason - strlen(c->substeps_reason),
+                 "; rounded up to %lld, a multiple of colloids.slow_interval", n);
+    }
     if (refuse(s, err, OFF(colloids.substeps), "colloids.substeps",
                "physical{} and coarse_graining{} (MD step, stiffest contact)", (double)cs->substeps, (double)n,
                NULL))

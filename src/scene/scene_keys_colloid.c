@@ -39,6 +39,17 @@ static const pl_key_t colloid_keys[] = {
           "Langevin with Stokes friction (reference for colloid-only scenes)"},
     {"substeps", PL_KEY_INT, OFF(substeps), 1, 1e6, 0, NULL, 4, NULL,
      "-", "MD steps per collision step: dt_MD = srd.dt / substeps (physical{} scenes: derived, see peloid params)"},
+    {"slow_interval", PL_KEY_INT, OFF(slow_interval), 1, 1e4, 0, NULL, 1, NULL,
+     "MD steps", "multiple time stepping (verlet, couplings none/hecht1/hecht2): the DLVO force "
+                 "of pairs beyond colloids.slow_gap is applied as a kick every slow_interval MD "
+                 "steps (r-RESPA), the rest every MD step; must divide colloids.substeps "
+                 "(physical{} scenes: substeps rounded up to a multiple); refused when the slow "
+                 "force's stiffness would leave a collision fewer than min_contact_steps outer "
+                 "steps (1: off, every force every step)"},
+    {"slow_gap", PL_KEY_REAL, OFF(slow_gap), 0, 100, PL_KEY_MIN_OPEN, NULL, 0.1, NULL,
+     "a0", "slow_interval > 1: surface gap h_s beyond which the DLVO force starts to move to the "
+           "outer steps; its share rises smoothly (cubic in r^2) to all of it at gap 2 h_s; must "
+           "exceed the primary minimum's match gap"},
     {"gravity", PL_KEY_REAL3, OFF(gravity), -1e6, 1e6, 0, NULL, 0, NULL,
      "a0 / t0^2", "acceleration on every colloid (gravity minus buoyancy) (physical{} scenes: derived, see peloid params)"},
     {"bd_viscosity", PL_KEY_REAL, OFF(bd_viscosity), 0, 1e9, PL_KEY_MIN_OPEN, NULL, 2.5, NULL,
