@@ -69,6 +69,7 @@ typedef struct pl_colloid {
      * nlist) and the slow forces, functions of the positions at the end of
      * the last outer step, recomputed bitwise at a restart (not stored) */
     int slow_interval;
+    int slow_phase; /* MD steps done of the current outer step */
     pl_colloid_nlist_t near;
     double *fsx, *fsy, *fsz;
     /* parameters derived from the scene */

@@ -193,10 +193,12 @@ int pl_colloid_verlet_step(pl_colloid_t *c, pl_colloid_guard_max_t *g, pl_err_t 
 {
     const pl_colloid_dyn_t s = colloid_dyn(c);
     /* multiple time stepping: the slow kicks of k dt / 2 open the first and
-     * close the last MD step of each outer step of k (md_step counts from a
-     * multiple of k: k divides the substeps of a collision step) */
+     * close the last MD step of each outer step of k; slow_phase counts the
+     * MD steps of the outer step, reset by pl_colloid_advance at each
+     * collision step (k divides the substeps, so outer steps end with it) */
     const int k = c->slow_interval;
-    const long long phase = k > 1 ? c->md_step % k : 0;
+    const int phase = k > 1 ? c->slow_phase : 0;
+    if (k > 1) c->slow_phase = (phase + 1) % k;
     const double slow_h = 0.5 * (double)k * c->dt;
     const double open_h = k > 1 && phase == 0 ? slow_h : 0.0;
     const double close_h = k > 1 && phase == k - 1 ? slow_h : 0.0;

@@ -28,6 +28,7 @@ int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err)
 int pl_colloid_advance(pl_colloid_t *c, long long collision_step, pl_err_t *err)
 {
     (void)collision_step;
+    c->slow_phase = 0; /* an outer step of multiple time stepping starts here */
     for (int s = 0; s < c->substeps; ++s) {
         int rc = pl_colloid_md_step(c, err);
         if (rc) return rc;
