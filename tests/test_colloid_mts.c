@@ -102,3 +102,30 @@ Test(colloid_mts, outer_step_of_five_conserves_energy_like_one_step, .timeout = 
     cr_log_info("energy drift per colloid: %g (slow_interval 1), %g (5)", d1, d5);
     cr_assert_leq(d5, 3.0 * d1, "energy drift %g kT per colloid with slow_interval 5, %g with 1", d5, d1);
 }
+
+/* A physical scene derives its substeps; with slow_interval they are rounded
+ * up to a multiple of it (an outer step ends with the collision step).
+ * scenes/hecht_fig14.cfg derives 127 (the contact guard): 130 with k = 5. */
+Test(colloid_mts, physical_scene_rounds_the_substeps_up_to_a_multiple)
+{
+    FILE *f = fopen("scenes/hecht_fig14.cfg", "r");
+    cr_assert(f, "scenes/hecht_fig14.cfg (run from the repository root)");
+    static char text[16384];
+    size_t len = fread(text, 1, sizeof text - 64, f);
+    fclose(f);
+    text[len] = '\0';
+    static pl_scene_t one, split;
+    pl_err_t err = {0, ""};
+    cr_assert_eq(pl_scene_load_string(text, "hecht_fig14.cfg", &one, &err), 0, "%s", err.msg);
+    const char *old = "pairs = \"dlvo, hertz\"; };";
+    char *at = strstr(text, old);
+    cr_assert(at, "the scene's colloids{} line changed");
+    memmove(at + strlen(old) - 2 + strlen(" slow_interval = 5;"), at + strlen(old) - 2, strlen(at + strlen(old) - 2) + 1);
+    memcpy(at + strlen(old) - 2, " slow_interval = 5;", strlen(" slow_interval = 5;"));
+    cr_assert_eq(pl_scene_load_string(text, "hecht_fig14.cfg", &split, &err), 0, "%s", err.msg);
+    cr_assert_eq(split.colloids.slow_interval, 5);
+    cr_assert_eq(one.colloids.substeps % 5 == 0, 0, "the test needs a derived count that is not a multiple: %lld",
+                 one.colloids.substeps);
+    cr_assert_eq(split.colloids.substeps, (one.colloids.substeps / 5 + 1) * 5, "%lld from %lld",
+                 split.colloids.substeps, one.colloids.substeps);
+}
