@@ -79,7 +79,8 @@ static inline __attribute__((always_inline)) void pair_eval(
                                  p->dlvo_shift);
             }
             if (M) { /* the fast share (multiple time stepping) */
-                const double keep = 1.0 - pl_pair_slow_share(r2, d, p->mts_hin, p->mts_hout);
+                const double ai = d + p->mts_hin; /* inside: all fast, no division */
+                const double keep = r2 <= ai * ai ? 1.0 : 1.0 - pl_pair_slow_share(r2, d, p->mts_hin, p->mts_hout);
                 fr += keep * s.f;
                 k2 += keep * s.k2;
             } else {
@@ -194,6 +195,9 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
     const int FAR = !E && (T & PL_CT_DLVO);
     double bfx[BLK], bfy[BLK], bfz[BLK], bcls[BLK]; /* bcls: 0 out of range, 1 far, 2 other */
     const double far_gap = (T & PL_CT_LUB) && p->lub_hcut > p->coul_hcut ? p->lub_hcut : p->coul_hcut;
+    /* fast share (M): from the gap mts_hout on the DLVO force is all slow,
+     * so only lubrication keeps those pairs off the van der Waals path */
+    const double far_gap_m = fmax(fmin(p->mts_hout, p->coul_hcut), (T & PL_CT_LUB) ? p->lub_hcut : 0.0);
     const double ri = v->rad[i];
     for (int32_t s0 = nl->start[i]; s0 < nl->start[i + 1]; s0 += BLK) {
         const int m = nl->start[i + 1] - s0 < BLK ? nl->start[i + 1] - s0 : BLK;
@@ -218,10 +222,7 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
                 dy -= pL[1] * rint(dy * iL[1]);
                 dz -= pL[2] * rint(dz * iL[2]);
                 double r2 = dx * dx + dy * dy + dz * dz;
-                /* fast share (M): from the gap mts_hout on the DLVO force is
-                 * all slow, so those pairs take this path too (zeroed) */
-                double d = ri + gr[k], rc = d + p->gap_cut,
-                       rf = d + (M && p->mts_hout < far_gap ? p->mts_hout : far_gap);
+                double d = ri + gr[k], rc = d + p->gap_cut, rf = d + (M ? far_gap_m : far_gap);
                 if (T & PL_CT_WCA) {
                     double wrc = (p->wca_sigma > 0.0 ? p->wca_sigma : d) * p->wca_rfac;
                     rc = rc > wrc ? rc : wrc;
