@@ -25,6 +25,10 @@
  * pair (48 with torques), which stay in cache for the colloid numbers of
  * interest.
  *
+ * Multiple time stepping (p->mts, colloids.slow_interval > 1): the pass over
+ * the near list gives each pair's DLVO force times 1 - w (pl_pair_slow_share;
+ * the rest, w times it, is kernels/colloid_slow.c's); every other term whole.
+ *
  * The term mask is a compile-time constant inside each specialised loop
  * (owner_pairs is force-inlined into one case per mask), so a term that is off
  * costs nothing in the inner loop (DESIGN.md "Scene -> plan").  Energies are
