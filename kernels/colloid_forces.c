@@ -83,8 +83,7 @@ static inline __attribute__((always_inline)) void pair_eval(
                                  p->dlvo_shift);
             }
             if (M) { /* the fast share (multiple time stepping) */
-                const double ai = d + p->mts_hin; /* inside: all fast, no division */
-                const double keep = r2 <= ai * ai ? 1.0 : 1.0 - pl_pair_slow_share(r2, d, p->mts_hin, p->mts_hout);
+                const double keep = 1.0 - pl_pair_slow_share(r2, d, p->mts_hin, p->mts_hout);
                 fr += keep * s.f;
                 k2 += keep * s.k2;
             } else {
