@@ -19,7 +19,10 @@ error of the seed-to-seed scatter:
   - the wall seconds per collision step (the cost; not physics).
 Each difference is printed in units of the combined SE (|z| < 3 is agreement).
 
-usage: tools/compare_mts_statistics.py PELOID [SEEDS] [STEPS] [K] [THREADS]
+usage: tools/compare_mts_statistics.py PELOID [SEEDS] [STEPS] [K] [THREADS] [FIRST_SEED]
+
+Each run's values are also appended to bench/out/mts_statistics.tsv (tag,
+seed, steps, k, quantities), so that runs of other seeds can be pooled.
 """
 import json
 import math
@@ -80,12 +83,19 @@ def main():
     steps = int(sys.argv[3]) if len(sys.argv) > 3 else 300
     k = int(sys.argv[4]) if len(sys.argv) > 4 else 5
     threads = int(sys.argv[5]) if len(sys.argv) > 5 else 2
+    first = int(sys.argv[6]) if len(sys.argv) > 6 else 1
     rows = {"old": [], "new": []}
+    tsv = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "bench", "out",
+                       "mts_statistics.tsv")
+    os.makedirs(os.path.dirname(tsv), exist_ok=True)
     with tempfile.TemporaryDirectory() as tmp:
-        for s in range(1, seeds + 1):  # interleaved
+        for s in range(first, first + seeds):  # interleaved
             for tag, kk in (("old", 1), ("new", k)):
                 out = statistics_compare.run(binary, SCENE.format(seed=s, steps=steps, k=kk), tag, s, tmp, threads)
                 rows[tag].append(observables(out, steps))
+                with open(tsv, "a") as f:
+                    f.write("\t".join([tag, str(s), str(steps), str(kk)] +
+                                       ["%s=%.10g" % kv for kv in sorted(rows[tag][-1].items())]) + "\n")
     print("# Fig. 14 model suspension, %d seeds x %d collision steps: old = slow_interval 1, new = %d"
           % (seeds, steps, k))
     statistics_compare.table(rows, ["kT_colloid", "u_dlvo", "bonds_per_colloid", "g_peak", "msd_end",
