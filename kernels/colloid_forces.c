@@ -37,6 +37,7 @@
  * the compiler drops the logarithm of the unused van der Waals energy). */
 #include <math.h>
 
+#include "colloid_block.h"
 #include "peloid/colloid_kernels.h"
 #include "peloid/colloid_pair.h"
 #include "peloid/depletion.h"
@@ -209,13 +210,7 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
              * contiguous block arrays, which the SIMD loop reads with plain
              * vector loads (faster than the loop's own gathers, 4 per 4 pairs) */
             double gx[BLK], gy[BLK], gz[BLK], gr[BLK];
-            for (int k = 0; k < m; ++k) {
-                size_t j = (size_t)nl->nbr[s0 + k];
-                gx[k] = v->x[j];
-                gy[k] = v->y[j];
-                gz[k] = v->z[j];
-                gr[k] = v->rad[j];
-            }
+            pl_colloid_gather_block(nl, s0, m, v->x, v->y, v->z, v->rad, gx, gy, gz, gr);
 #pragma omp simd
             for (int k = 0; k < m; ++k) {
                 double dx = xi - gx[k], dy = yi - gy[k], dz = zi - gz[k];

@@ -12,11 +12,13 @@
  *
  * Accumulation as in the force kernel: the owner sums its pairs in slot
  * order and writes each pair's force into the partner's reverse entry;
- * pl_colloid_slow_reverse_one adds those after the barrier, in owner order.
+ * the force kernel's pass 2 (pl_colloid_pair_reverse_one over
+ * pl_colloid_slow_view) adds those after the barrier, in owner order.
  * A listed pair outside (hin, dlvo_hcut) adds exactly +-0, so any valid list
  * gives the same bits (a restart recomputes the slow forces bitwise). */
 #include <math.h>
 
+#include "colloid_block.h"
 #include "peloid/colloid_kernels.h"
 #include "peloid/colloid_pair.h"
 
@@ -39,13 +41,7 @@ void pl_colloid_slow_owner_pass(const pl_colloid_pair_params_t *p, const pl_coll
             double gx[BLK], gy[BLK], gz[BLK], gr[BLK];
             double bfx[BLK], bfy[BLK], bfz[BLK], bw[BLK], br2[BLK];
             double bcl[BLK]; /* 1: the screened Coulomb term of Eq. 1 is not negligible */
-            for (int k = 0; k < m; ++k) {
-                size_t j = (size_t)nl->nbr[s0 + k];
-                gx[k] = x[j];
-                gy[k] = y[j];
-                gz[k] = z[j];
-                gr[k] = rad[j];
-            }
+            pl_colloid_gather_block(nl, s0, m, x, y, z, rad, gx, gy, gz, gr);
 #pragma omp simd
             for (int k = 0; k < m; ++k) {
                 double dx = xi - gx[k], dy = yi - gy[k], dz = zi - gz[k];
@@ -99,29 +95,15 @@ void pl_colloid_slow_owner_pass(const pl_colloid_pair_params_t *p, const pl_coll
     }
 }
 
-void pl_colloid_slow_reverse_one(const pl_colloid_nlist_t *nl, size_t i, double *fsx, double *fsy,
-                                 double *fsz)
-{
-    const size_t q0 = 3 * (size_t)nl->rstart[i], q1 = 3 * (size_t)nl->rstart[i + 1];
-    double fx = fsx[i], fy = fsy[i], fz = fsz[i];
-    for (size_t q = q0; q < q1; q += 3) {
-        fx -= nl->pf[q];
-        fy -= nl->pf[q + 1];
-        fz -= nl->pf[q + 2];
-    }
-    fsx[i] = fx;
-    fsy[i] = fy;
-    fsz[i] = fz;
-}
-
 void pl_colloid_slow_forces(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
                             const double *x, const double *y, const double *z, const double *rad,
                             double *fsx, double *fsy, double *fsz, int nthreads)
 {
 #pragma omp parallel num_threads(nthreads) if (nl->n >= PL_COLLOID_OMP_MIN)
     {
+        const pl_colloid_view_t vs = pl_colloid_slow_view(nl->n, fsx, fsy, fsz);
         pl_colloid_slow_owner_pass(p, nl, x, y, z, rad, fsx, fsy, fsz);
 #pragma omp for schedule(static)
-        for (size_t i = 0; i < nl->n; ++i) pl_colloid_slow_reverse_one(nl, i, fsx, fsy, fsz);
+        for (size_t i = 0; i < nl->n; ++i) pl_colloid_pair_reverse_one(nl, &vs, i, 0);
     }
 }

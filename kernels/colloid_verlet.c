@@ -60,6 +60,7 @@ void pl_colloid_verlet_close(const pl_colloid_dyn_t *s, double dt, double slow_h
     const size_t n = s->n;
     const double h = 0.5 * dt, rf = pow(2.0, 1.0 / ext->wall_n), Lz = s->box[2];
     const int torques = pl_colloid_pair_torques(p);
+    const pl_colloid_view_t vs = pl_colloid_slow_view(n, s->fsx, s->fsy, s->fsz);
     pl_colloid_guard_max_t gm = {0.0, 0.0, 0.0, 0};
 #pragma omp parallel num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
     {
@@ -75,7 +76,7 @@ void pl_colloid_verlet_close(const pl_colloid_dyn_t *s, double dt, double slow_h
             pl_colloid_kick_one(i, h, s->mass, s->inertia, s->fx, s->fy, s->fz, s->tx, s->ty,
                                 s->tz, s->vx, s->vy, s->vz, s->wx, s->wy, s->wz);
             if (slow_h != 0.0) {
-                pl_colloid_slow_reverse_one(full, i, s->fsx, s->fsy, s->fsz);
+                pl_colloid_pair_reverse_one(full, &vs, i, 0);
                 pl_colloid_slow_kick_one(i, slow_h, s->mass, s->fsx, s->fsy, s->fsz, s->vx, s->vy,
                                          s->vz);
             }

@@ -168,12 +168,19 @@ void pl_colloid_nlist_near_fill(pl_colloid_nlist_t *near, const pl_colloid_nlist
 /* The slow share of the DLVO forces (multiple time stepping,
  * kernels/colloid_slow.c) over the full list into fs (overwritten): the
  * owner pass as an orphaned worksharing loop, then per colloid after its
- * barrier the reverse entries; or both in one call. */
+ * barrier the reverse entries (pl_colloid_pair_reverse_one over
+ * pl_colloid_slow_view); or both in one call. */
 void pl_colloid_slow_owner_pass(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
                                 const double *x, const double *y, const double *z,
                                 const double *rad, double *fsx, double *fsy, double *fsz);
-void pl_colloid_slow_reverse_one(const pl_colloid_nlist_t *nl, size_t i, double *fsx, double *fsy,
-                                 double *fsz);
+/* The view of the slow forces for pl_colloid_pair_reverse_one (no torques):
+ * the reverse entries of the slow pass are added by the pair kernel's own
+ * pass 2. */
+static inline pl_colloid_view_t pl_colloid_slow_view(size_t n, double *fsx, double *fsy, double *fsz)
+{
+    pl_colloid_view_t v = {.n = n, .fx = fsx, .fy = fsy, .fz = fsz};
+    return v;
+}
 void pl_colloid_slow_forces(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
                             const double *x, const double *y, const double *z, const double *rad,
                             double *fsx, double *fsy, double *fsz, int nthreads);

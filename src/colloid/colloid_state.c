@@ -189,6 +189,13 @@ static pl_colloid_dyn_t colloid_dyn(pl_colloid_t *c)
     return s;
 }
 
+/* The list of the pair pass: the near list under multiple time stepping
+ * (the slow share runs over the full list), else the full list. */
+static const pl_colloid_nlist_t *pair_list(const pl_colloid_t *c)
+{
+    return c->slow_interval > 1 ? &c->near : &c->nlist;
+}
+
 int pl_colloid_verlet_step(pl_colloid_t *c, pl_colloid_guard_max_t *g, pl_err_t *err)
 {
     const pl_colloid_dyn_t s = colloid_dyn(c);
@@ -205,8 +212,8 @@ int pl_colloid_verlet_step(pl_colloid_t *c, pl_colloid_guard_max_t *g, pl_err_t 
     const double disp2 = pl_colloid_verlet_open(&s, c->dt, open_h, &c->nlist, c->nthreads);
     if (nlist_ensure(c, disp2, err)) return err->code;
     const pl_colloid_view_t v = colloid_view(c);
-    pl_colloid_verlet_close(&s, c->dt, close_h, &c->pair, k > 1 ? &c->near : &c->nlist, &c->nlist,
-                            &v, &c->ext, c->epot, g, c->nthreads);
+    pl_colloid_verlet_close(&s, c->dt, close_h, &c->pair, pair_list(c), &c->nlist, &v, &c->ext,
+                            c->epot, g, c->nthreads);
     return 0;
 }
 
@@ -217,7 +224,7 @@ int pl_colloid_forces(pl_colloid_t *c, pl_err_t *err)
                               : INFINITY;
     if (nlist_ensure(c, disp2, err)) return err->code;
     pl_colloid_view_t v = colloid_view(c);
-    pl_colloid_pair_forces(&c->pair, c->slow_interval > 1 ? &c->near : nl, &v, c->nthreads);
+    pl_colloid_pair_forces(&c->pair, pair_list(c), &v, c->nthreads);
     if (c->slow_interval > 1)
         pl_colloid_slow_forces(&c->pair, nl, c->x, c->y, c->z, c->rad, c->fsx, c->fsy, c->fsz, c->nthreads);
     for (size_t i = 0; i < c->n; ++i) c->zu[i] = c->z[i] + (double)c->iz[i] * c->box[2];
