@@ -5,7 +5,8 @@
  * colloid are integrated at the MD step (the order of the step:
  * src/coupling/coupling_potential.c).  This file finds them (parallel over the
  * streaming's static chunks; from the colloids near each collision cell
- * while the fluid is sorted), gathers them with their (particle, colloid)
+ * while the fluid is sorted, then inside the streaming, on each block it
+ * has read and not yet stored), gathers them with their (particle, colloid)
  * pairs, takes back their free streaming, kicks and drifts them (PL Eqs.
  * 18-19, per particle) and writes them back, and evaluates the forces in
  * parallel over fixed blocks of particles: each block sums its reactions on
@@ -257,87 +258,198 @@ static inline int same_candidates(const uint32_t *cstart, const int32_t *clist, 
     return 1;
 }
 
+/* The first collision cell that ends after particle lo (cell c holds
+ * [cell_start[c], cell_start[c + 1])). */
+static size_t first_cell_after(const uint32_t *cell_start, size_t ncells, size_t lo)
+{
+    size_t a = 0, b = ncells;
+    while (a < b) {
+        const size_t mid = a + (b - a) / 2;
+        if (cell_start[mid + 1] <= lo) a = mid + 1;
+        else b = mid;
+    }
+    return a;
+}
+
+/* What the sorted selection reads and writes, for one thread's chunk
+ * [clo, chi) of the streaming's static partition. */
+typedef struct {
+    image_box_t q;
+    const pl_coupling_colloids_t *c;
+    const pl_coupling_reach_t *reach;
+    const pl_fluid_t *f;
+    const uint32_t *cstart, *cell_start;
+    const int32_t *clist;
+    size_t ncells, clo, readable; /* vector loops may read particles below `readable` */
+    uint32_t *found, *found_cell;
+    pl_coupling_stage_t *stage; /* NULL, or where the state of each listed particle goes */
+    size_t m, np, overflow;
+} select_run_t;
+
+/* sel[u] for particles b + u, u < lenv, against the one candidate k: hit()
+ * and, with_reach, within the particle's reach (the expressions of the
+ * general case below, the same bits). */
+static inline __attribute__((always_inline)) void test_one(const select_run_t *s, int32_t k, size_t b, size_t lenv,
+                                                           int with_reach, int *restrict sel)
+{
+    const pl_real *restrict x = s->f->r[0], *restrict y = s->f->r[1], *restrict z = s->f->r[2];
+    const pl_real *restrict vx = s->f->v[0], *restrict vy = s->f->v[1], *restrict vz = s->f->v[2];
+    const pl_coupling_colloids_t *c = s->c;
+    const double cx = c->x[k], cy = c->y[k], cz = c->z[k], r2 = c->rad[k] * c->rad[k];
+    const double h0 = s->q.h[0], h1 = s->q.h[1], h2 = s->q.h[2];
+    const double L0 = s->q.L[0], L1 = s->q.L[1], L2 = s->q.L[2];
+#pragma omp simd
+    for (size_t u = 0; u < lenv; ++u) {
+        const double R2 = with_reach ? reach2(s->reach, vx[b + u], vy[b + u], vz[b + u]) : INFINITY;
+        double dx = x[b + u] - cx, dy = y[b + u] - cy, dz = z[b + u] - cz;
+        dx = dx > h0 ? dx - L0 : (dx < -h0 ? dx + L0 : dx);
+        dy = dy > h1 ? dy - L1 : (dy < -h1 ? dy + L1 : dy);
+        dz = dz > h2 ? dz - L2 : (dz < -h2 ? dz + L2 : dz);
+        const double d2 = dx * dx + dy * dy + dz * dz;
+        sel[u] = (d2 < r2) & (d2 < R2);
+    }
+}
+
+/* Tests particles [i0, i1) against the candidates [kb, ke) of clist (those
+ * of cell cl and of every cell of its run), appending the selected ones to
+ * found (with cl in found_cell) and, with a stage, copying their state.
+ * Most runs have one candidate: its test in one vector loop, and each
+ * selected particle one pair. */
+static inline __attribute__((always_inline)) void test_range(select_run_t *s, uint32_t kb, uint32_t ke, size_t cl,
+                                                             size_t i0, size_t i1)
+{
+    enum { RUN = 256 }; /* particles tested at a time */
+    const pl_real *restrict x = s->f->r[0], *restrict y = s->f->r[1], *restrict z = s->f->r[2];
+    const pl_real *restrict vx = s->f->v[0], *restrict vy = s->f->v[1], *restrict vz = s->f->v[2];
+    const pl_coupling_colloids_t *c = s->c;
+    int in[RUN], sel[RUN];
+    double R2[RUN];
+    for (size_t b = i0; b < i1; b += RUN) {
+        const size_t len = i1 - b < RUN ? i1 - b : RUN;
+        /* the vector loops run over whole vectors (the runs are short: no
+         * scalar remainder), reading past the run into the next particles
+         * where that is allowed; only the run's len are appended */
+        const size_t whole = (len + 7) & ~(size_t)7, lenv = b + whole <= s->readable ? whole : len;
+        const int one = ke - kb == 1;
+        if (one && s->reach) test_one(s, s->clist[kb], b, lenv, 1, sel);
+        else if (one) test_one(s, s->clist[kb], b, lenv, 0, sel);
+        else {
+            for (size_t u = 0; u < lenv; ++u) in[u] = sel[u] = 0;
+            if (s->reach) {
+#pragma omp simd
+                for (size_t u = 0; u < lenv; ++u) R2[u] = reach2(s->reach, vx[b + u], vy[b + u], vz[b + u]);
+            } else
+                for (size_t u = 0; u < lenv; ++u) R2[u] = INFINITY;
+            for (uint32_t e = kb; e < ke; ++e) { /* hit(), with its operands in registers */
+                const int32_t k = s->clist[e];
+                const double cx = c->x[k], cy = c->y[k], cz = c->z[k], r2 = c->rad[k] * c->rad[k];
+                const double h0 = s->q.h[0], h1 = s->q.h[1], h2 = s->q.h[2];
+                const double L0 = s->q.L[0], L1 = s->q.L[1], L2 = s->q.L[2];
+#pragma omp simd
+                for (size_t u = 0; u < lenv; ++u) {
+                    double dx = x[b + u] - cx, dy = y[b + u] - cy, dz = z[b + u] - cz;
+                    dx = dx > h0 ? dx - L0 : (dx < -h0 ? dx + L0 : dx);
+                    dy = dy > h1 ? dy - L1 : (dy < -h1 ? dy + L1 : dy);
+                    dz = dz > h2 ? dz - L2 : (dz < -h2 ? dz + L2 : dz);
+                    const double d2 = dx * dx + dy * dy + dz * dz;
+                    const int h = d2 < r2;
+                    in[u] += h;
+                    sel[u] |= h & (d2 < R2[u]);
+                }
+            }
+        }
+        const size_t m0 = s->m;
+        size_t m = m0, np = s->np;
+        uint32_t *restrict found = s->found + s->clo, *restrict found_cell = s->found_cell + s->clo;
+        for (size_t u = 0; u < len; ++u) { /* branch-free append */
+            found[m] = (uint32_t)(b + u);
+            m += (size_t)sel[u];
+        }
+        for (size_t j = m0; j < m; ++j) found_cell[j] = (uint32_t)cl;
+        if (one) np += m - m0; /* a selected particle is inside its one candidate */
+        else
+            for (size_t u = 0; u < len; ++u) np += sel[u] ? (size_t)in[u] : 0;
+        if (s->stage) /* the state before the streaming, in list order */
+            for (size_t j = m0; j < m; ++j) {
+                if (j >= s->stage->cap) {
+                    s->overflow++;
+                    continue;
+                }
+                const size_t i = found[j];
+                double *w = s->stage->buf + j * (size_t)s->stage->width;
+                w[0] = x[i], w[1] = y[i], w[2] = z[i];
+                w[3] = vx[i], w[4] = vy[i], w[5] = vz[i];
+                if (s->stage->width > 6)
+                    for (int d = 0; d < 3; ++d) w[6 + d] = s->f->disp[d][i];
+            }
+        s->m = m;
+        s->np = np;
+    }
+}
+
+/* Tests the particles [lo, hi) of the sorted fluid, walking the cells from
+ * cl (the cell that holds lo, or a later one when those between hold no
+ * candidates) in runs of consecutive cells with the same candidates: one
+ * contiguous range of particles, tested candidate by candidate (vectorised
+ * over the particles), each listed with the run's first cell.  Returns the
+ * cell to go on from at hi. */
+static inline __attribute__((always_inline)) size_t test_cells(select_run_t *s, size_t cl, size_t lo, size_t hi)
+{
+    const uint32_t *cell_start = s->cell_start, *cstart = s->cstart;
+    while (cl < s->ncells && cell_start[cl] < hi) {
+        const uint32_t kb = cstart[cl], ke = cstart[cl + 1];
+        if (kb == ke) {
+            ++cl;
+            continue;
+        }
+        size_t ce = cl + 1;
+        while (ce < s->ncells && cell_start[ce] < hi && same_candidates(cstart, s->clist, cl, ce)) ++ce;
+        const size_t i0 = cell_start[cl] > lo ? cell_start[cl] : lo;
+        const size_t i1 = cell_start[ce] < hi ? cell_start[ce] : hi;
+        test_range(s, kb, ke, cl, i0, i1);
+        if (cell_start[ce] > hi) return cl; /* the run goes on beyond hi */
+        cl = ce;
+    }
+    return cl;
+}
+
 void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
                              const pl_coupling_reach_t *reach, const uint32_t *cstart, const int32_t *clist,
                              const uint32_t *cell_start, int nthreads, uint32_t *found, uint32_t *found_cell,
                              uint64_t *counts)
 {
-    const image_box_t q = image_box(g->L, g->walls);
-    const size_t ncells = g->ncells;
-    enum { RUN = 256 }; /* particles tested at a time */
 #pragma omp parallel num_threads(nthreads)
     {
-        int t = omp_get_thread_num();
-        size_t lo, hi, m = 0, np = 0;
+        const int t = omp_get_thread_num();
+        size_t lo, hi;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
-        const pl_real *restrict x = f->r[0], *restrict y = f->r[1], *restrict z = f->r[2];
-        const pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
-        int in[RUN], sel[RUN];
-        double R2[RUN];
-        /* first cell ending after lo */
-        size_t a = 0, b = ncells;
-        while (a < b) {
-            size_t mid = a + (b - a) / 2;
-            if (cell_start[mid + 1] <= lo) a = mid + 1;
-            else b = mid;
-        }
-        /* runs of consecutive cells with the same candidates: one
-         * contiguous range of particles, tested candidate by candidate
-         * (vectorised over the particles), each listed with the run's
-         * first cell (the same candidates as its own) */
-        size_t cl = a;
-        while (cl < ncells && cell_start[cl] < hi) {
-            const uint32_t kb = cstart[cl], ke = cstart[cl + 1];
-            if (kb == ke) {
-                ++cl;
-                continue;
-            }
-            size_t ce = cl + 1;
-            while (ce < ncells && cell_start[ce] < hi && same_candidates(cstart, clist, cl, ce)) ++ce;
-            const size_t i0 = cell_start[cl] > lo ? cell_start[cl] : lo;
-            const size_t i1 = cell_start[ce] < hi ? cell_start[ce] : hi;
-            for (size_t s = i0; s < i1; s += RUN) {
-                const size_t len = i1 - s < RUN ? i1 - s : RUN;
-                /* the vector loops run over whole vectors (the runs are
-                 * short: no scalar remainder), reading past the run into
-                 * the next particles where the array goes on; only the
-                 * run's len are appended */
-                const size_t whole = (len + 7) & ~(size_t)7, lenv = s + whole <= f->n ? whole : len;
-                for (size_t u = 0; u < lenv; ++u) in[u] = sel[u] = 0;
-                if (reach) {
-#pragma omp simd
-                    for (size_t u = 0; u < lenv; ++u) R2[u] = reach2(reach, vx[s + u], vy[s + u], vz[s + u]);
-                } else
-                    for (size_t u = 0; u < lenv; ++u) R2[u] = INFINITY;
-                for (uint32_t e = kb; e < ke; ++e) { /* hit(), with its operands in registers */
-                    const int32_t k = clist[e];
-                    const double cx = c->x[k], cy = c->y[k], cz = c->z[k], r2 = c->rad[k] * c->rad[k];
-                    const double h0 = q.h[0], h1 = q.h[1], h2 = q.h[2];
-                    const double L0 = q.L[0], L1 = q.L[1], L2 = q.L[2];
-#pragma omp simd
-                    for (size_t u = 0; u < lenv; ++u) {
-                        double dx = x[s + u] - cx, dy = y[s + u] - cy, dz = z[s + u] - cz;
-                        dx = dx > h0 ? dx - L0 : (dx < -h0 ? dx + L0 : dx);
-                        dy = dy > h1 ? dy - L1 : (dy < -h1 ? dy + L1 : dy);
-                        dz = dz > h2 ? dz - L2 : (dz < -h2 ? dz + L2 : dz);
-                        const double d2 = dx * dx + dy * dy + dz * dz;
-                        const int h = d2 < r2;
-                        in[u] += h;
-                        sel[u] |= h & (d2 < R2[u]);
-                    }
-                }
-                for (size_t u = 0; u < len; ++u) { /* branch-free append */
-                    found[lo + m] = (uint32_t)(s + u);
-                    found_cell[lo + m] = (uint32_t)cl;
-                    m += (size_t)sel[u];
-                    np += sel[u] ? (size_t)in[u] : 0;
-                }
-            }
-            cl = ce;
-        }
-        counts[(size_t)t * 8 + 2] = m;
-        counts[(size_t)t * 8 + 3] = np;
+        select_run_t s = {.q = image_box(g->L, g->walls), .c = c, .reach = reach, .f = f, .cstart = cstart,
+                          .cell_start = cell_start, .clist = clist, .ncells = g->ncells, .clo = lo,
+                          .readable = f->n, .found = found, .found_cell = found_cell};
+        (void)test_cells(&s, first_cell_after(cell_start, g->ncells, lo), lo, hi);
+        counts[(size_t)t * 8 + 2] = s.m;
+        counts[(size_t)t * 8 + 3] = s.np;
     }
+}
+
+void pl_coupling_select_block(void *ctx, int t, size_t lo, size_t hi)
+{
+    pl_coupling_select_ctx_t *x = ctx;
+    uint64_t *cnt = x->counts + (size_t)t * 8;
+    size_t clo, chi;
+    pl_chunk(x->f->n, t, x->nthreads, &clo, &chi);
+    /* slot 4: the cell to go on from + 1 (0 before the chunk's first block) */
+    const size_t cl = cnt[4] ? cnt[4] - 1 : first_cell_after(x->cell_start, x->g->ncells, lo);
+    select_run_t s = {.q = image_box(x->g->L, x->g->walls), .c = &x->c, .reach = &x->reach, .f = x->f,
+                      .cstart = x->cstart, .cell_start = x->cell_start, .clist = x->clist,
+                      .ncells = x->g->ncells, .clo = clo,
+                      .readable = chi, /* the next chunk is another thread's, streaming now */
+                      .found = x->found, .found_cell = x->found_cell, .stage = &x->stage[t],
+                      .m = cnt[2], .np = cnt[3]};
+    cnt[4] = test_cells(&s, cl, lo, hi) + 1;
+    cnt[2] = s.m;
+    cnt[3] = s.np;
+    cnt[5] += s.overflow;
 }
 
 /* The second step of the detection (pl_coupling_find_binned,
@@ -771,8 +883,8 @@ double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_cou
 
 void pl_coupling_potential_gather(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
                                   const uint32_t *found, const uint32_t *found_cell, const uint64_t *counts,
-                                  const uint32_t *cstart, const int32_t *clist, int nthreads,
-                                  const pl_coupling_near_t *nb)
+                                  const uint32_t *cstart, const int32_t *clist,
+                                  const pl_coupling_stage_t *stage, int nthreads, const pl_coupling_near_t *nb)
 {
     const image_box_t q = image_box(g->L, g->walls);
     /* thread t's chunk goes after those of 0..t-1: particle order */
@@ -788,11 +900,19 @@ void pl_coupling_potential_gather(const pl_fluid_t *f, const pl_grid_t *g, const
             size_t i = found[lo + s];
             nb->idx[j] = (uint32_t)i;
             nb->owner[j] = t;
-            for (int d = 0; d < 3; ++d) {
-                nb->r[d][j] = nb->r0[d][j] = f->r[d][i];
-                nb->v[d][j] = f->v[d][i];
-                if (nb->disp[0]) nb->disp[d][j] = f->tracked ? f->disp[d][i] : 0.0;
-            }
+            if (stage) { /* the state the selection saw, before the streaming */
+                const double *w = stage[t].buf + s * (size_t)stage[t].width;
+                for (int d = 0; d < 3; ++d) {
+                    nb->r[d][j] = nb->r0[d][j] = w[d];
+                    nb->v[d][j] = w[3 + d];
+                    if (nb->disp[0]) nb->disp[d][j] = stage[t].width > 6 ? w[6 + d] : 0.0;
+                }
+            } else
+                for (int d = 0; d < 3; ++d) {
+                    nb->r[d][j] = nb->r0[d][j] = f->r[d][i];
+                    nb->v[d][j] = f->v[d][i];
+                    if (nb->disp[0]) nb->disp[d][j] = f->tracked ? f->disp[d][i] : 0.0;
+                }
             /* its pairs: the colloids of the selection's test, in order:
              * the first, then the further ones */
             nb->pstart[j] = (uint32_t)p;

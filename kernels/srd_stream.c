@@ -7,7 +7,9 @@
  * owning thread's histogram row (no atomics; STYLE.md 6).  An optional hook
  * (pl_stream_params_t.hook) sees each block right after it was stored:
  * coupling I finds the particles inside colloids there, while the block is
- * in L1, instead of in a pass of its own. */
+ * in L1, instead of in a pass of its own.  A pre-hook sees each block after
+ * it was read and before it is stored: the potential coupling selects its
+ * particles there from the state before the streaming. */
 #include <omp.h>
 #include <string.h>
 
@@ -47,14 +49,16 @@ static inline int same_bits(pl_real a, pl_real b) { return !memcmp(&a, &b, sizeo
 static inline __attribute__((always_inline)) void periodic_blocks(
     const pl_drift_t *c, pl_real *restrict x, pl_real *restrict y, pl_real *restrict z,
     pl_real *restrict vx, pl_real *restrict vy, pl_real *restrict vz, uint32_t *restrict cell,
-    uint32_t *restrict h, size_t lo, size_t hi, const int kick_free, pl_stream_hook_fn hook, void *hook_ctx, int t)
+    uint32_t *restrict h, size_t lo, size_t hi, const int kick_free, const pl_stream_params_t *p, int t)
 {
+    const pl_stream_hook_fn hook = p->hook, pre_hook = p->pre_hook;
     double rb[3][PL_DRIFT_BLOCK], vb[3][PL_DRIFT_BLOCK];
     uint32_t cb[PL_DRIFT_BLOCK];
     pl_real *const v[3] = {vx, vy, vz};
     for (size_t i = lo; i < hi; i += PL_DRIFT_BLOCK) {
         const size_t m = hi - i < PL_DRIFT_BLOCK ? hi - i : PL_DRIFT_BLOCK;
         pl_drift_block_periodic(c, x + i, y + i, z + i, vx + i, vy + i, vz + i, m, rb, vb, cb);
+        if (pre_hook) pre_hook(p->pre_hook_ctx, t, i, i + m); /* the block as it was, still in L1 */
         for (size_t k = 0; k < m; ++k) {
             x[i + k] = (pl_real)rb[0][k]; y[i + k] = (pl_real)rb[1][k]; z[i + k] = (pl_real)rb[2][k];
             for (int d = 0; d < 3; ++d)
@@ -62,7 +66,7 @@ static inline __attribute__((always_inline)) void periodic_blocks(
             cell[i + k] = cb[k];
             h[cb[k]]++;
         }
-        if (hook) hook(hook_ctx, t, i, i + m); /* the block still in L1 */
+        if (hook) hook(p->hook_ctx, t, i, i + m); /* the block still in L1 */
     }
 }
 
@@ -92,24 +96,31 @@ static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict 
         return;
     }
     const int tracked = f->tracked && mode == 1;
-    const pl_stream_hook_fn hook = mode == 1 ? p->hook : NULL;
+    pl_stream_params_t hooks = *p; /* the hooks run only where the particles are stored */
+    if (mode != 1) hooks.hook = hooks.pre_hook = NULL;
     if (!tracked && !c->walls) {
         /* No body force: the kick v + 0 leaves every velocity as it is
          * except -0.0 (which becomes +0.0), so v is stored only where its
          * bits change: the velocity arrays are read, not written back
          * (24 B per particle less, and no dirty lines to write back). */
         if (c->a[0] == 0.0 && c->a[1] == 0.0 && c->a[2] == 0.0)
-            periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 1, hook, p->hook_ctx, t);
+            periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 1, &hooks, t);
         else
-            periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 0, hook, p->hook_ctx, t);
+            periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 0, &hooks, t);
         return;
     }
     /* the common wall layouts with their closed axes as constants */
     const int *w = c->wall;
-    if (!w[0] && !w[1] && w[2]) moved_range(f, c, (const int[3]){0, 0, 1}, h, lo, hi, tracked, wall_acc);
-    else if (w[0] && w[1] && !w[2]) moved_range(f, c, (const int[3]){1, 1, 0}, h, lo, hi, tracked, wall_acc);
-    else moved_range(f, c, w, h, lo, hi, tracked, wall_acc);
-    if (hook) hook(p->hook_ctx, t, lo, hi);
+    /* with a pre-hook, in blocks: each block seen before it is stored */
+    const size_t step = hooks.pre_hook ? PL_DRIFT_BLOCK : (hi > lo ? hi - lo : 1);
+    for (size_t i = lo; i < hi; i += step) {
+        const size_t e = hi - i < step ? hi : i + step;
+        if (hooks.pre_hook) hooks.pre_hook(hooks.pre_hook_ctx, t, i, e);
+        if (!w[0] && !w[1] && w[2]) moved_range(f, c, (const int[3]){0, 0, 1}, h, i, e, tracked, wall_acc);
+        else if (w[0] && w[1] && !w[2]) moved_range(f, c, (const int[3]){1, 1, 0}, h, i, e, tracked, wall_acc);
+        else moved_range(f, c, w, h, i, e, tracked, wall_acc);
+    }
+    if (hooks.hook) hooks.hook(hooks.hook_ctx, t, lo, hi);
 }
 
 static void run(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params_t *p, uint32_t *hist,

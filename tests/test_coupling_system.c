@@ -182,6 +182,9 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
         int32_t *list = malloc(cap * sizeof *list);
         uint32_t *fa = malloc(f->n * sizeof *fa), *fb = malloc(f->n * sizeof *fb);
         uint32_t *ga = malloc(f->n * sizeof *ga), *gb = malloc(f->n * sizeof *gb);
+        uint32_t *fc = malloc(f->n * sizeof *fc), *gc = malloc(f->n * sizeof *gc);
+        double *sbuf = malloc(6 * f->n * sizeof *sbuf);
+        cr_assert(fc && gc && sbuf);
         uint64_t ca[3 * 8], cb[3 * 8];
         uint32_t *cstart = malloc((sim->grid.ncells + 2) * sizeof *cstart);
         const size_t ccap = 8 * sim->grid.ncells; /* every colloid in every cell */
@@ -234,6 +237,52 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
                                      (unsigned long long)cb[t * 8 + 3]);
                         listed += ca[t * 8 + 2];
                     }
+                    /* the same lists from inside the streaming
+                     * (pl_coupling_select_block on each block of each
+                     * chunk, in order), for blocks of the streaming's size
+                     * and of odd sizes that cut runs of cells, with the
+                     * state of each listed particle saved */
+                    if (!rp) continue;
+                    const size_t blocks[3] = {256, 37, 1}; /* 256: PL_DRIFT_BLOCK */
+                    for (int bs = 0; bs < 3; ++bs) {
+                        uint64_t cc[3 * 8] = {0};
+                        pl_coupling_stage_t stage[3];
+                        for (int t = 0; t < nt; ++t) {
+                            size_t lo, hi;
+                            pl_chunk(f->n, t, nt, &lo, &hi);
+                            stage[t] = (pl_coupling_stage_t){.buf = sbuf + 6 * lo, .cap = hi - lo, .width = 6};
+                        }
+                        pl_coupling_select_ctx_t x = {.f = f, .g = &sim->grid, .c = v, .reach = reach, .cstart = cstart,
+                                                      .clist = clist, .cell_start = sim->cell_start, .nthreads = nt,
+                                                      .found = fc, .found_cell = gc, .counts = cc, .stage = stage};
+                        for (int t = 0; t < nt; ++t) {
+                            size_t lo, hi;
+                            pl_chunk(f->n, t, nt, &lo, &hi);
+                            for (size_t i = lo; i < hi; i += blocks[bs])
+                                pl_coupling_select_block(&x, t, i, hi - i < blocks[bs] ? hi : i + blocks[bs]);
+                            cr_assert_eq(cc[t * 8 + 2], ca[t * 8 + 2], "box %d, R %g, %d threads, blocks of %zu: lists %llu vs %llu",
+                                         b, radii[r], nt, blocks[bs], (unsigned long long)cc[t * 8 + 2],
+                                         (unsigned long long)ca[t * 8 + 2]);
+                            cr_assert_eq(cc[t * 8 + 3], ca[t * 8 + 3], "box %d, R %g, blocks of %zu: pairs differ", b,
+                                         radii[r], blocks[bs]);
+                            cr_assert_eq(cc[t * 8 + 5], 0, "no room for %llu", (unsigned long long)cc[t * 8 + 5]);
+                            cr_assert(same(fa + lo, fc + lo, ca[t * 8 + 2] * sizeof *fa),
+                                      "box %d, R %g, blocks of %zu: lists differ", b, radii[r], blocks[bs]);
+                            for (size_t j = 0; j < cc[t * 8 + 2]; ++j) {
+                                const size_t i = fc[lo + j];
+                                const double *w = stage[t].buf + 6 * j;
+                                const double want[6] = {f->r[0][i], f->r[1][i], f->r[2][i],
+                                                        f->v[0][i], f->v[1][i], f->v[2][i]};
+                                cr_assert(same(w, want, sizeof want), "particle %zu: saved state differs", i);
+                                /* the cell named has the particle's candidates */
+                                const uint32_t own = gb[lo + j], got = gc[lo + j];
+                                cr_assert(cstart[own + 1] - cstart[own] == cstart[got + 1] - cstart[got] &&
+                                              same(clist + cstart[own], clist + cstart[got],
+                                                   (cstart[own + 1] - cstart[own]) * sizeof *clist),
+                                          "particle %zu: cell %u named, candidates differ from cell %u", i, got, own);
+                            }
+                        }
+                    }
                 }
             }
         }
@@ -244,6 +293,9 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
         free(fb);
         free(ga);
         free(gb);
+        free(fc);
+        free(gc);
+        free(sbuf);
         free(cstart);
         free(clist);
         free(cstart2);

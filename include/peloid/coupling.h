@@ -81,6 +81,15 @@ typedef struct pl_coupling_potential_state {
     int lk_valid;        /* lk built for the colloids at this step's selection */
     uint32_t *found;     /* fluid n: particles selected (scratch) */
     uint32_t *found_cell; /* fluid n: the cell whose candidates each was tested against */
+    /* the selection inside the streaming (pl_coupling_select_block) while
+     * the fluid is sorted: its context, the state it saved (fluid n x
+     * width doubles, reserved; each thread writes from its chunk's start
+     * only what it lists), and the step it was armed for (-1: none, the
+     * selection's stage gathered itself) */
+    pl_coupling_select_ctx_t sel_ctx;
+    pl_coupling_stage_t *stage; /* nthreads */
+    double *stage_buf;
+    long long armed_step;
     uint64_t *counts;    /* nthreads x 8 */
     uint32_t *cstart;    /* grid ncells + 2: candidates of each collision cell */
     int32_t *clist;      /* (pl_coupling_cell_candidates) */

@@ -193,6 +193,40 @@ void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
                              const uint32_t *cell_start, int nthreads, uint32_t *found, uint32_t *found_cell,
                              uint64_t *counts);
 
+/* The state before the streaming of the particles a thread listed
+ * (pl_coupling_select_block), in list order: per particle `width` doubles,
+ * r[3], v[3] and, for a tracked fluid (width 9), disp[3]; room for cap
+ * particles. */
+typedef struct {
+    double *buf;
+    size_t cap;
+    int width;
+} pl_coupling_stage_t;
+
+/* pl_coupling_find_sorted from inside the streaming (a pl_stream_hook_fn
+ * for pl_stream_params_t.pre_hook, ctx a pl_coupling_select_ctx_t): each
+ * block of thread t's chunk, read by the streaming and not yet stored (in
+ * L1), is tested as pl_coupling_find_sorted tests it, the selected
+ * particles appended to found and found_cell from the chunk's start and
+ * their state before the streaming to stage[t].  counts[t * 8 + 2 .. 5]
+ * must be 0 before the streaming; after it, [2] and [3] hold what
+ * pl_coupling_find_sorted leaves there (the same lists), [5] the particles
+ * stage[t] had no room for (none when its cap is the chunk's size). */
+typedef struct {
+    const pl_fluid_t *f;
+    const pl_grid_t *g; /* only L, walls and ncells are read: the streaming draws the shift */
+    pl_coupling_colloids_t c;
+    pl_coupling_reach_t reach;
+    const uint32_t *cstart;
+    const int32_t *clist;
+    const uint32_t *cell_start;
+    int nthreads;
+    uint32_t *found, *found_cell;
+    uint64_t *counts;
+    pl_coupling_stage_t *stage; /* nthreads */
+} pl_coupling_select_ctx_t;
+void pl_coupling_select_block(void *ctx, int t, size_t lo, size_t hi);
+
 /* The list of pl_coupling_find from the cells the binning left in f->cell
  * (under g->shift, after the streaming): the particles of the cells with
  * candidates (cstart, clist of pl_coupling_cell_candidates), then each
@@ -284,14 +318,15 @@ double pl_coupling_potential_force_step(const pl_coupling_wca_t *w, const pl_cou
                                         int64_t acc[PL_WALL_ACC_N], double *far2);
 
 /* Fills nb (nb->n = the sum of counts[t * 8 + 2]) from the lists of
- * pl_coupling_find(_sorted): idx, owner, r, r0, v, disp (0 when the fluid
- * is not tracked), and the pairs, tested again against the candidates of
- * the particle's found_cell in (cstart, clist) (the lists the selection
- * used); f is not touched. */
+ * pl_coupling_find(_sorted) or pl_coupling_select_block: idx, owner, r, r0,
+ * v, disp (0 when the fluid is not tracked) from f, or from stage (NULL:
+ * from f) when the selection ran inside the streaming, and the pairs,
+ * tested again against the candidates of the particle's found_cell in
+ * (cstart, clist) (the lists the selection used); f is not touched. */
 void pl_coupling_potential_gather(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling_colloids_t *c,
                                   const uint32_t *found, const uint32_t *found_cell, const uint64_t *counts,
-                                  const uint32_t *cstart, const int32_t *clist, int nthreads,
-                                  const pl_coupling_near_t *nb);
+                                  const uint32_t *cstart, const int32_t *clist,
+                                  const pl_coupling_stage_t *stage, int nthreads, const pl_coupling_near_t *nb);
 /* Takes back the free streaming of the selected particles (nb holding
  * their state before it): the saved displacements into f (tracked fluids),
  * and, when sp is not NULL, adds to acc the wall impulses the streaming

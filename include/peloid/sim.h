@@ -91,6 +91,11 @@ struct pl_sim {
     pl_stream_hook_fn stream_hook;
     void *stream_hook_ctx;
     long long stream_hook_step;
+    /* the same for a pass on what the streaming is about to store
+     * (pl_stream_params_t.pre_hook: the potential coupling's selection) */
+    pl_stream_hook_fn stream_pre_hook;
+    void *stream_pre_hook_ctx;
+    long long stream_pre_hook_step;
     double *wall_dp;      /* PL_WALL_ACC_N x blocks (virtual particles of the collision) */
     int wall_acc_overflow; /* a fixed-point wall impulse sum overflowed (guard) */
     /* fluid guard bounds (pl_fluid_guard_setup, src/fluid/fluid_guard.c) */

@@ -28,7 +28,10 @@ static inline int pl_wall_slot(int axis, int top) { return axis == 2 ? top : 2; 
  * hi) of its static chunk (pl_chunk), in order, each right after the range
  * was stored (blocks of PL_DRIFT_BLOCK on the periodic path, so the range
  * is still in L1; the whole chunk on the others).  Coupling I's detection
- * (pl_coupling_find_block) saves its own pass over the particle arrays. */
+ * (pl_coupling_find_block) saves its own pass over the particle arrays.
+ * As a pre-hook, it sees each block before it is stored, in blocks of
+ * PL_DRIFT_BLOCK on every path (the potential coupling's selection,
+ * pl_coupling_select_block). */
 typedef void (*pl_stream_hook_fn)(void *ctx, int t, size_t lo, size_t hi);
 
 typedef struct {
@@ -39,6 +42,11 @@ typedef struct {
                          * writes the impulse the walls gave each thread's chunk */
     pl_stream_hook_fn hook; /* NULL, or run on what pl_srd_stream_bin streamed */
     void *hook_ctx;
+    /* NULL, or run on each block of the same ranges before it is stored:
+     * the state before the streaming (on the periodic path after the
+     * block was read, so in L1); the potential coupling's selection */
+    pl_stream_hook_fn pre_hook;
+    void *pre_hook_ctx;
 } pl_stream_params_t;
 
 /* r += v dt (after v += accel dt) with periodic wrap or wall reflection,

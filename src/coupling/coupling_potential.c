@@ -18,7 +18,8 @@
  * buffers, built only for a scene with this coupling; the order of the
  * steps); the loops over the particles are the kernels of
  * kernels/coupling_potential.c.
- * Determinism: selection is parallel over the streaming's static chunks and
+ * Determinism: selection is parallel over the streaming's static chunks (in
+ * the streaming itself while the fluid is sorted: the same lists) and
  * gathered in particle order; the forces are summed over fixed blocks, the
  * kicks and drifts are per particle and the wall impulses are integers: no
  * result depends on the thread count.
@@ -51,11 +52,23 @@ int pl_coupling_potential_create(const pl_coupling_t *cp, const pl_sim_t *sim,
     ps->found_cell = pl_alloc((sim->fluid.n + 1) * sizeof(uint32_t), cp->nthreads);
     ps->c0 = malloc(3 * (c->n + 1) * sizeof(double));
     ps->counts = pl_alloc((size_t)cp->nthreads * 8 * sizeof(uint64_t), cp->nthreads);
+    /* reserved, not touched: each thread writes only what it selects, from
+     * its chunk's start (malloc maps a large block lazily) */
+    const int width = sim->fluid.tracked ? 9 : 6;
+    ps->stage = calloc((size_t)cp->nthreads, sizeof *ps->stage);
+    ps->stage_buf = malloc((sim->fluid.n + 1) * (size_t)width * sizeof(double));
+    ps->armed_step = -1;
+    for (int t = 0; ps->stage && t < cp->nthreads; ++t) {
+        size_t lo, hi;
+        pl_chunk(sim->fluid.n, t, cp->nthreads, &lo, &hi);
+        ps->stage[t] = (pl_coupling_stage_t){.buf = ps->stage_buf + lo * (size_t)width, .cap = hi - lo, .width = width};
+    }
     int rc = pl_coupling_lookup_init(&ps->lk, sim->grid.L, cp->nthreads, err);
     ps->cstart = pl_alloc((sim->grid.ncells + 2) * sizeof(uint32_t), cp->nthreads);
     ps->axis_buf = malloc((size_t)cp->nthreads * (size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(int));
     ps->gap_buf = malloc((size_t)cp->nthreads * (size_t)(sim->grid.n[0] + sim->grid.n[1] + sim->grid.n[2]) * sizeof(double));
     if (!rc && (!ps->rad_big || !ps->cf || !ps->found || !ps->found_cell || !ps->c0 || !ps->counts ||
+                !ps->stage || !ps->stage_buf ||
                 !ps->cstart || !ps->axis_buf || !ps->gap_buf))
         rc = pl_err_set(err, PL_ERR_NOMEM, "out of memory for the potential coupling");
     if (rc) {
@@ -74,6 +87,8 @@ void pl_coupling_potential_free(pl_coupling_potential_state_t *ps)
     pl_free(ps->found);
     pl_free(ps->found_cell);
     pl_free(ps->counts);
+    free(ps->stage);
+    free(ps->stage_buf);
     pl_free(ps->cstart);
     free(ps->clist);
     free(ps->axis_buf);
@@ -185,47 +200,17 @@ static pl_coupling_reach_t particle_reach(const pl_sim_t *sim, double rc)
     return r;
 }
 
-int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
+/* The selected particles (the lists the selection left in found,
+ * found_cell and counts, tested against the candidates cs, cl) gathered
+ * with their pairs into the buffers of the MD step, grown as needed; their
+ * state from stage when the selection ran inside the streaming, else from
+ * the fluid. */
+static int gather_selection(pl_sim_t *sim, pl_coupling_potential_state_t *ps, const uint32_t *cs,
+                            const int32_t *cl, const pl_coupling_stage_t *stage, pl_err_t *err)
 {
-    (void)ctx;
     const pl_coupling_t *cp = sim->coupling;
-    pl_coupling_potential_state_t *ps = cp->pot;
-    pl_fluid_t *f = &sim->fluid;
     const pl_colloid_t *c = sim->colloids;
-    const double rc = ps->wca.sigma * pow(2.0, 1.0 / 6.0);
-    for (size_t k = 0; k < c->n; ++k) {
-        ps->rad_big[k] = rc + ps->margin;
-        ps->c0[k] = c->x[k];
-        ps->c0[c->n + k] = c->y[k];
-        ps->c0[2 * c->n + k] = c->z[k];
-    }
-    ps->lk_valid = 0;
-    ps->far2 = 0.0;
-    const pl_coupling_reach_t reach = particle_reach(sim, rc);
-    ps->budget = reach.budget;
-    pl_coupling_colloids_t v = sel_view(ps, c);
-    const uint32_t *cs;
-    const int32_t *cl;
-    if (sim->fluid_sorted) { /* the same list, from the cells near colloids */
-        for (;;) {
-            size_t need = pl_coupling_cell_candidates(&sim->grid, &v, ps->axis_buf, ps->gap_buf, ps->cstart, ps->clist,
-                                                      ps->clist_cap, cp->nthreads);
-            if (need <= ps->clist_cap) break;
-            if (grow((void **)&ps->clist, &ps->clist_cap, need, sizeof *ps->clist))
-                return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloids near each cell");
-        }
-        pl_coupling_find_sorted(f, &sim->grid, &v, &reach, ps->cstart, ps->clist, sim->cell_start, cp->nthreads,
-                                ps->found, ps->found_cell, ps->counts);
-        cs = ps->cstart;
-        cl = ps->clist;
-    } else {
-        int rc2 = lookup_big(ps, sim, err);
-        if (rc2) return rc2;
-        pl_coupling_find(f, &sim->grid, &v, &reach, ps->lk.start, ps->lk.list, cp->nthreads, ps->found,
-                         ps->found_cell, ps->counts);
-        cs = (const uint32_t *)ps->lk.start; /* offsets >= 0 */
-        cl = ps->lk.list;
-    }
+    const pl_coupling_colloids_t v = sel_view(ps, c);
     size_t nn = 0, np = 0;
     for (int t = 0; t < cp->nthreads; ++t) {
         nn += ps->counts[(size_t)t * 8 + 2];
@@ -262,8 +247,8 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_coupling_near_t nb = near_view(ps, &sim->fluid);
     nb.n = nn;
     nb.pstart[0] = 0;
-    pl_coupling_potential_gather(f, &sim->grid, &v, ps->found, ps->found_cell, ps->counts, cs, cl, cp->nthreads,
-                                 &nb);
+    pl_coupling_potential_gather(&sim->fluid, &sim->grid, &v, ps->found, ps->found_cell, ps->counts, cs, cl, stage,
+                                 cp->nthreads, &nb);
     const size_t partial = pl_coupling_wca_blocks(nn, c->n) * (3 * c->n + 1);
     if (partial > ps->wca_partial_cap) {
         free(ps->wca_partial);
@@ -276,6 +261,75 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
     ps->npair = np;
     ps->near_total += nn;
     return 0;
+}
+
+/* While the fluid is as the last sort left it, the selection runs inside
+ * the streaming that follows (pl_coupling_select_block, on each block the
+ * streaming has read and not yet stored: no pass of its own over the
+ * particles near colloids, ~70 % of the selection's time before), the same
+ * lists as pl_coupling_find_sorted; the MD step gathers them.  Otherwise
+ * (the first step, after a restart) the full scan here. */
+int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)ctx;
+    const pl_coupling_t *cp = sim->coupling;
+    pl_coupling_potential_state_t *ps = cp->pot;
+    pl_fluid_t *f = &sim->fluid;
+    const pl_colloid_t *c = sim->colloids;
+    const double rc = ps->wca.sigma * pow(2.0, 1.0 / 6.0);
+    for (size_t k = 0; k < c->n; ++k) {
+        ps->rad_big[k] = rc + ps->margin;
+        ps->c0[k] = c->x[k];
+        ps->c0[c->n + k] = c->y[k];
+        ps->c0[2 * c->n + k] = c->z[k];
+    }
+    ps->lk_valid = 0;
+    ps->far2 = 0.0;
+    ps->armed_step = -1;
+    const pl_coupling_reach_t reach = particle_reach(sim, rc);
+    ps->budget = reach.budget;
+    pl_coupling_colloids_t v = sel_view(ps, c);
+    if (sim->fluid_sorted) { /* the same list, from the cells near colloids */
+        for (;;) {
+            size_t need = pl_coupling_cell_candidates(&sim->grid, &v, ps->axis_buf, ps->gap_buf, ps->cstart, ps->clist,
+                                                      ps->clist_cap, cp->nthreads);
+            if (need <= ps->clist_cap) break;
+            if (grow((void **)&ps->clist, &ps->clist_cap, need, sizeof *ps->clist))
+                return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloids near each cell");
+        }
+        memset(ps->counts, 0, (size_t)cp->nthreads * 8 * sizeof *ps->counts);
+        ps->sel_ctx = (pl_coupling_select_ctx_t){.f = f, .g = &sim->grid, .c = v, .reach = reach,
+                                                 .cstart = ps->cstart, .clist = ps->clist,
+                                                 .cell_start = sim->cell_start, .nthreads = cp->nthreads,
+                                                 .found = ps->found, .found_cell = ps->found_cell,
+                                                 .counts = ps->counts, .stage = ps->stage};
+        sim->stream_pre_hook = pl_coupling_select_block;
+        sim->stream_pre_hook_ctx = &ps->sel_ctx;
+        sim->stream_pre_hook_step = sim->step;
+        ps->armed_step = sim->step;
+        return 0;
+    }
+    int rc2 = lookup_big(ps, sim, err);
+    if (rc2) return rc2;
+    pl_coupling_find(f, &sim->grid, &v, &reach, ps->lk.start, ps->lk.list, cp->nthreads, ps->found, ps->found_cell,
+                     ps->counts);
+    return gather_selection(sim, ps, (const uint32_t *)ps->lk.start /* offsets >= 0 */, ps->lk.list, NULL, err);
+}
+
+/* The MD step's start: the selection the streaming ran, gathered. */
+static int gather_armed(pl_sim_t *sim, pl_coupling_potential_state_t *ps, pl_err_t *err)
+{
+    const int nthreads = sim->coupling->nthreads;
+    if (ps->armed_step != sim->step || sim->stream_pre_hook)
+        return pl_err_set(err, PL_ERR_INTERNAL, "the potential coupling's selection did not run in the streaming of step %lld",
+                          sim->step);
+    ps->armed_step = -1;
+    uint64_t missed = 0;
+    for (int t = 0; t < nthreads; ++t) missed += ps->counts[(size_t)t * 8 + 5];
+    if (missed)
+        return pl_err_set(err, PL_ERR_INTERNAL, "the potential coupling's selection had no room for %llu particles",
+                          (unsigned long long)missed);
+    return gather_selection(sim, ps, ps->cstart, ps->clist, ps->stage, err);
 }
 
 /* Fluid forces on the selected particles and the colloids (the colloids'
@@ -381,6 +435,7 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_colloid_t *c = sim->colloids;
     pl_fluid_t *f = &sim->fluid;
     const pl_scene_t *sc = &sim->scene;
+    if (ps->armed_step >= 0 && gather_armed(sim, ps, err)) return err->code;
     double g[3];
     for (int d = 0; d < 3; ++d) g[d] = sc->fluid.body_force[d] + cp->fluid_accel[d];
     /* undo the free streaming of the selected particles, and the wall

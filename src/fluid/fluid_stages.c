@@ -38,8 +38,12 @@ static int stage_stream(pl_sim_t *sim, void *ctx, pl_err_t *err)
         p.hook = sim->stream_hook;
         p.hook_ctx = sim->stream_hook_ctx;
     }
+    if (sim->stream_pre_hook && sim->stream_pre_hook_step == sim->step) {
+        p.pre_hook = sim->stream_pre_hook;
+        p.pre_hook_ctx = sim->stream_pre_hook_ctx;
+    }
     pl_srd_stream_bin(&sim->fluid, &sim->grid, &p, sim->hist, sim->nthreads);
-    sim->stream_hook = NULL; /* ran (or stale) */
+    sim->stream_hook = sim->stream_pre_hook = NULL; /* ran (or stale) */
     if (sim->wall_acc) { /* integer sums: the same for any thread count */
         int64_t acc[PL_WALL_ACC_N] = {0};
         for (int t = 0; t < sim->nthreads; ++t)
