@@ -13,7 +13,10 @@
  *
  * Per case and thread count: median (min..max) over `reps` repetitions of the
  * wall time per step per fluid particle, fluid particle-updates/s (per core),
- * the ratio to the bare fluid of the same thread count, the effective GB/s
+ * the ratio to the bare fluid of the same thread count (median (min..max)
+ * over the rounds of each rep's time against the fluid's rep of the same
+ * round: the cases' simulations exist together and each round runs one rep
+ * of every case, so that host noise of seconds moves both), the effective GB/s
  * of the bare step's byte model (248 B per particle in double, see
  * bench_srd.c: the couplings move more, so this is the bandwidth-equivalent
  * rate), and the share of the time each coupling stage takes.
@@ -86,61 +89,80 @@ static int make_sim(const case_t *c, int L, int ncolloids, int nt, pl_sim_t **si
     return 0;
 }
 
-/* Median ns per fluid particle and step of the whole step, and the share of
- * the coupling stages (any stage not in the bare fluid plan). */
-static int run_case(const case_t *c, int L, int ncolloids, int nt, int reps, double rep_seconds,
-                    double *ns, double *coupling_share, double *nfluid, char *stages, size_t ssz,
-                    char *stage_ns, size_t nsz)
-{
+enum { MAX_STAGES = 64 };
+
+/* One case's simulation and its timings, rep by rep. */
+typedef struct {
     pl_scene_t sc;
     pl_sim_t *sim;
-    if (make_sim(c, L, ncolloids, nt, &sim, &sc)) return 1;
+    long steps;                        /* per rep: ~rep_seconds */
+    double ns[MAX_REPS];               /* whole step, per fluid particle */
+    double share[MAX_REPS];            /* of the coupling stages */
+    double st_ns[MAX_STAGES][MAX_REPS];
+} timed_case_t;
+
+/* Creates the case's simulation, settles the first sorts and sizes a rep. */
+static int case_setup(const case_t *c, int L, int ncolloids, int nt, double rep_seconds, timed_case_t *tc)
+{
+    if (make_sim(c, L, ncolloids, nt, &tc->sim, &tc->sc)) return 1;
     pl_err_t err;
     memset(&err, 0, sizeof err);
     int rc = 0;
-    for (int s = 0; s < 20 && !rc; ++s) rc = pl_sim_step(sim, &err); /* settle the first sorts */
+    for (int s = 0; s < 20 && !rc; ++s) rc = pl_sim_step(tc->sim, &err);
     double t0 = omp_get_wtime();
-    for (int s = 0; s < 3 && !rc; ++s) rc = pl_sim_step(sim, &err);
+    for (int s = 0; s < 3 && !rc; ++s) rc = pl_sim_step(tc->sim, &err);
     const double per_step = (omp_get_wtime() - t0) / 3.0;
-    long steps = (long)ceil(rep_seconds / (per_step > 1e-7 ? per_step : 1e-7));
-    if (steps < 3) steps = 3;
-    const double n = (double)sim->fluid.n;
-    double share[MAX_REPS];
-    enum { MAX_STAGES = 64 };
-    static double st_ns[MAX_STAGES][MAX_REPS];
-    const int nst = sim->nstages < MAX_STAGES ? sim->nstages : MAX_STAGES;
-    for (int r = 0; r < reps && !rc; ++r) {
-        for (int k = 0; k < sim->nstages; ++k) sim->stages[k].seconds = 0.0;
-        t0 = omp_get_wtime();
-        for (long s = 0; s < steps && !rc; ++s) rc = pl_sim_step(sim, &err);
-        const double wall = omp_get_wtime() - t0;
-        double cs = 0.0;
-        for (int k = 0; k < sim->nstages; ++k) {
-            const char *nm = sim->stages[k].name;
-            if (strcmp(nm, "stream+bin") && strcmp(nm, "sort") && strcmp(nm, "collide")) cs += sim->stages[k].seconds;
-            if (k < nst) st_ns[k][r] = 1e9 * sim->stages[k].seconds / (double)steps / n;
-        }
-        ns[r] = 1e9 * wall / (double)steps / n;
-        share[r] = cs / wall;
-    }
+    tc->steps = (long)ceil(rep_seconds / (per_step > 1e-7 ? per_step : 1e-7));
+    if (tc->steps < 3) tc->steps = 3;
     if (rc) fprintf(stderr, "bench_coupling: %s: %s\n", c->name, err.msg);
-    double lo, hi;
-    bench_stats(share, reps, coupling_share, &lo, &hi);
-    *nfluid = n;
+    return rc;
+}
+
+/* Rep r of a case: ns per fluid particle and step of the whole step, the
+ * share of the coupling stages (any stage not in the bare fluid plan), and
+ * each stage's ns. */
+static int case_rep(const case_t *c, timed_case_t *tc, int r)
+{
+    pl_sim_t *sim = tc->sim;
+    pl_err_t err;
+    memset(&err, 0, sizeof err);
+    int rc = 0;
+    const double n = (double)sim->fluid.n;
+    const int nst = sim->nstages < MAX_STAGES ? sim->nstages : MAX_STAGES;
+    for (int k = 0; k < sim->nstages; ++k) sim->stages[k].seconds = 0.0;
+    const double t0 = omp_get_wtime();
+    for (long s = 0; s < tc->steps && !rc; ++s) rc = pl_sim_step(sim, &err);
+    const double wall = omp_get_wtime() - t0;
+    double cs = 0.0;
+    for (int k = 0; k < sim->nstages; ++k) {
+        const char *nm = sim->stages[k].name;
+        if (strcmp(nm, "stream+bin") && strcmp(nm, "sort") && strcmp(nm, "collide")) cs += sim->stages[k].seconds;
+        if (k < nst) tc->st_ns[k][r] = 1e9 * sim->stages[k].seconds / (double)tc->steps / n;
+    }
+    tc->ns[r] = 1e9 * wall / (double)tc->steps / n;
+    tc->share[r] = cs / wall;
+    if (rc) fprintf(stderr, "bench_coupling: %s: %s\n", c->name, err.msg);
+    return rc;
+}
+
+/* The case's stage names and median stage ns, as "name=ns,..." lists. */
+static void case_stages(const timed_case_t *tc, int reps, char *stages, size_t ssz, char *stage_ns, size_t nsz)
+{
+    const pl_sim_t *sim = tc->sim;
+    const int nst = sim->nstages < MAX_STAGES ? sim->nstages : MAX_STAGES;
     stages[0] = 0;
     for (int k = 0; k < sim->nstages; ++k) {
         size_t used = strlen(stages);
         snprintf(stages + used, ssz - used, "%s%s", k ? "," : "", sim->stages[k].name);
     }
     stage_ns[0] = 0;
-    for (int k = 0; k < nst && !rc; ++k) {
-        double med, smin, smax;
-        bench_stats(st_ns[k], reps, &med, &smin, &smax);
+    for (int k = 0; k < nst; ++k) {
+        double v[MAX_REPS], med, smin, smax;
+        memcpy(v, tc->st_ns[k], (size_t)reps * sizeof *v);
+        bench_stats(v, reps, &med, &smin, &smax);
         size_t used = strlen(stage_ns);
         snprintf(stage_ns + used, nsz - used, "%s%s=%.2f", k ? "," : "", sim->stages[k].name, med);
     }
-    pl_sim_free(sim);
-    return rc;
 }
 
 /* Whether name is an item of the comma-separated list. */
@@ -194,35 +216,57 @@ int main(int argc, char **argv)
            PL_REAL_NAME, L, ncolloids);
     bench_print_topology(stdout);
     const char *hdr = "case\tL\tthreads\tfluid_particles\tcolloids\tns_per_particle\tns_min\tns_max"
-                      "\tupdates_per_s\tupdates_per_s_per_core\tratio_to_fluid\tcoupling_stage_share"
+                      "\tupdates_per_s\tupdates_per_s_per_core\tratio_to_fluid\tratio_min\tratio_max\tcoupling_stage_share"
                       "\teff_GBps\tstream_GBps\tpct_of_stream_bound\treps\tstages\tstage_ns\n";
     printf("%s", hdr);
     fputs(hdr, tsv);
     int rc = 0;
+    /* Per thread count, every case's simulation exists at once and the reps
+     * go round the cases (fluid, case 1, case 2, ..., fluid, ...): each
+     * case's ratio to the bare fluid is the median over reps of its rep
+     * against the fluid's rep of the same round, seconds apart, so that a
+     * noisy host moves both. */
+    static timed_case_t tcs[NCASES];
     for (int t = 1; t <= max_threads && !rc; ++t) {
         double slo, shi;
         const double stream = bench_stream_triad((size_t)1 << 25, t, 3, &slo, &shi);
-        double fluid_ns = NAN;
+        int used[NCASES] = {0};
         for (int k = 0; k < NCASES && !rc; ++k) {
-            double ns[MAX_REPS], share, nf, med, lo, hi;
-            char stages[512], stage_ns[1024];
-            const int nc = CASES[k].colloids < 0 ? ncolloids : CASES[k].colloids;
             if (k > 0 && only && !listed(only, CASES[k].name)) continue;
-            rc = run_case(&CASES[k], L, nc, t, reps, rep_seconds, ns, &share, &nf, stages, sizeof stages,
-                          stage_ns, sizeof stage_ns);
-            if (rc) break;
+            const int nc = CASES[k].colloids < 0 ? ncolloids : CASES[k].colloids;
+            memset(&tcs[k], 0, sizeof tcs[k]);
+            rc = case_setup(&CASES[k], L, nc, t, rep_seconds, &tcs[k]);
+            used[k] = !rc;
+        }
+        for (int r = 0; r < reps && !rc; ++r)
+            for (int k = 0; k < NCASES && !rc; ++k)
+                if (used[k]) rc = case_rep(&CASES[k], &tcs[k], r);
+        for (int k = 0; k < NCASES && !rc; ++k) {
+            if (!used[k]) continue;
+            double ns[MAX_REPS], ratio[MAX_REPS], med, lo, hi, rmed, rlo, rhi, share, slo2, shi2;
+            for (int r = 0; r < reps; ++r) ratio[r] = tcs[k].ns[r] / tcs[0].ns[r];
+            memcpy(ns, tcs[k].ns, (size_t)reps * sizeof *ns);
             bench_stats(ns, reps, &med, &lo, &hi);
-            if (k == 0) fluid_ns = med;
+            bench_stats(ratio, reps, &rmed, &rlo, &rhi);
+            bench_stats(tcs[k].share, reps, &share, &slo2, &shi2);
+            char stages[512], stage_ns[1024];
+            case_stages(&tcs[k], reps, stages, sizeof stages, stage_ns, sizeof stage_ns);
             const double ups = 1e9 / med, gbs = step_bytes / med;
+            const int nc = CASES[k].colloids < 0 ? ncolloids : CASES[k].colloids;
             char line[2048];
             snprintf(line, sizeof line,
-                     "%s\t%d\t%d\t%.0f\t%d\t%.3f\t%.3f\t%.3f\t%.4g\t%.4g\t%.3f\t%.3f\t%.2f\t%.2f\t%.1f\t%d\t%s\t%s\n",
-                     CASES[k].name, L, t, nf, nc, med, lo, hi, ups, ups / t, med / fluid_ns,
-                     share, gbs, stream, 100.0 * gbs / stream, reps, stages, stage_ns);
+                     "%s\t%d\t%d\t%.0f\t%d\t%.3f\t%.3f\t%.3f\t%.4g\t%.4g\t%.3f\t%.3f\t%.3f\t%.3f\t%.2f\t%.2f\t%.1f\t%d\t%s\t%s\n",
+                     CASES[k].name, L, t, (double)tcs[k].sim->fluid.n, k ? nc : 0, med, lo, hi, ups, ups / t, rmed,
+                     rlo, rhi, share, gbs, stream, 100.0 * gbs / stream, reps, stages, stage_ns);
             fputs(line, stdout);
             fputs(line, tsv);
             fflush(stdout);
         }
+        for (int k = 0; k < NCASES; ++k)
+            if (tcs[k].sim) {
+                pl_sim_free(tcs[k].sim);
+                tcs[k].sim = NULL;
+            }
     }
     fclose(tsv);
     return rc;
