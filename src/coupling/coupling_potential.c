@@ -439,12 +439,15 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
     double g[3];
     for (int d = 0; d < 3; ++d) g[d] = sc->fluid.body_force[d] + cp->fluid_accel[d];
     /* undo the free streaming of the selected particles, and the wall
-     * impulses it counted for them (recomputed bitwise, in fixed point) */
+     * impulses it counted for them (recomputed bitwise, in fixed point):
+     * their displacements and wall impulses, so nothing to undo for an
+     * untracked fluid without walls (the scatter overwrites the rest) */
     int64_t wacc[PL_WALL_ACC_N] = {0}, sacc[PL_WALL_ACC_N] = {0};
     pl_stream_params_t sp;
     pl_sim_stream_params(sim, &sp);
     const pl_coupling_near_t nb = near_view(ps, &sim->fluid);
-    pl_coupling_potential_unstream(&nb, f, &sim->grid, sim->wall_acc ? &sp : NULL, cp->nthreads, sacc);
+    if (f->tracked || sim->wall_acc)
+        pl_coupling_potential_unstream(&nb, f, &sim->grid, sim->wall_acc ? &sp : NULL, cp->nthreads, sacc);
     const double dtm = c->dt, h = 0.5 * dtm;
     /* PL Eqs. 18-19, velocity Verlet; the particles' kick - drift - forces -
      * kick of each MD step regrouped as forces - kick (- kick - drift of the
