@@ -99,6 +99,11 @@ $(BUILD)/kernels/colloid_slow.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-mat
 # colloid (a square root of a sum of squares, never negative): without errno
 # it vectorises; sqrt is correctly rounded either way.
 $(BUILD)/kernels/coupling_potential.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
+# The colloids' orientation update (kernels/colloid_integrate.h, in both the
+# fused step and the separate drift) normalises by a square root of a sum of
+# squares in vector lanes: the same.
+$(BUILD)/kernels/colloid_verlet.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
+$(BUILD)/kernels/colloid_integrate.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 
 $(LIB): $(LIB_OBJ)
 	@rm -f $@

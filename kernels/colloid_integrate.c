@@ -58,9 +58,13 @@ void pl_colloid_drift(size_t n, double dt, const double box[3], const int period
                       const double *restrict wy, const double *restrict wz, double *restrict q0,
                       double *restrict q1, double *restrict q2, double *restrict q3, int nthreads)
 {
+    const size_t nblk = (n + PL_COLLOID_ROT_BLOCK - 1) / PL_COLLOID_ROT_BLOCK;
 #pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
-    for (size_t i = 0; i < n; ++i)
-        pl_colloid_drift_one(i, dt, box, periodic, x, y, z, ix, iy, iz, vx, vy, vz, wx, wy, wz, q0, q1, q2, q3);
+    for (size_t bk = 0; bk < nblk; ++bk) {
+        const size_t b = bk * PL_COLLOID_ROT_BLOCK, e = b + PL_COLLOID_ROT_BLOCK < n ? b + PL_COLLOID_ROT_BLOCK : n;
+        for (size_t i = b; i < e; ++i) pl_colloid_move_one(i, dt, box, periodic, x, y, z, ix, iy, iz, vx, vy, vz);
+        pl_colloid_rotate_block(b, e, dt, wx, wy, wz, q0, q1, q2, q3);
+    }
 }
 
 void pl_colloid_ext_forces(const pl_colloid_ext_params_t *p, size_t n, const double *restrict x,

@@ -5,8 +5,9 @@
  * colloids on 2 cores), so each fork/join (several us on a VM) and each pass
  * over the arrays counts.
  *
- *   open:  per colloid, half kick + drift + its displacement since the list
- *          build (max-reduced);
+ *   open:  per block of PL_COLLOID_ROT_BLOCK colloids, half kick + drift of
+ *          each, the block's rotations in vector lanes, and each one's
+ *          displacement since the list build (max-reduced);
  *   (the caller rebuilds the neighbour list when the displacement asks)
  *   close: pair pass 1 (owners' pairs), barrier, then per colloid: pass 2
  *          (reverse entries), unwrapped z, external forces, half kick and the
@@ -37,16 +38,24 @@ double pl_colloid_verlet_open(const pl_colloid_dyn_t *s, double dt, double slow_
     const size_t n = s->n;
     const double h = 0.5 * dt;
     double m = 0.0;
+    const size_t nblk = (n + PL_COLLOID_ROT_BLOCK - 1) / PL_COLLOID_ROT_BLOCK;
 #pragma omp parallel for schedule(static) num_threads(nthreads) reduction(max : m) if (n >= PL_COLLOID_OMP_MIN)
-    for (size_t i = 0; i < n; ++i) {
-        if (slow_h != 0.0) pl_colloid_slow_kick_one(i, slow_h, s->mass, s->fsx, s->fsy, s->fsz, s->vx, s->vy, s->vz);
-        pl_colloid_kick_one(i, h, s->mass, s->inertia, s->fx, s->fy, s->fz, s->tx, s->ty, s->tz,
-                            s->vx, s->vy, s->vz, s->wx, s->wy, s->wz);
-        pl_colloid_drift_one(i, dt, s->box, s->periodic, s->x, s->y, s->z, s->ix, s->iy, s->iz,
-                             s->vx, s->vy, s->vz, s->wx, s->wy, s->wz, s->q0, s->q1, s->q2, s->q3);
-        double d2 = pl_colloid_nlist_disp2(nl, s->box, s->periodic, s->x, s->y, s->z, i);
-        /* a non-finite position forces a rebuild; the NaN guard reports it */
-        if (!(d2 <= m)) m = isnan(d2) ? INFINITY : d2;
+    for (size_t bk = 0; bk < nblk; ++bk) {
+        const size_t b = bk * PL_COLLOID_ROT_BLOCK, e = b + PL_COLLOID_ROT_BLOCK < n ? b + PL_COLLOID_ROT_BLOCK : n;
+        for (size_t i = b; i < e; ++i) {
+            if (slow_h != 0.0)
+                pl_colloid_slow_kick_one(i, slow_h, s->mass, s->fsx, s->fsy, s->fsz, s->vx, s->vy, s->vz);
+            pl_colloid_kick_one(i, h, s->mass, s->inertia, s->fx, s->fy, s->fz, s->tx, s->ty, s->tz,
+                                s->vx, s->vy, s->vz, s->wx, s->wy, s->wz);
+            pl_colloid_move_one(i, dt, s->box, s->periodic, s->x, s->y, s->z, s->ix, s->iy, s->iz, s->vx,
+                                s->vy, s->vz);
+        }
+        pl_colloid_rotate_block(b, e, dt, s->wx, s->wy, s->wz, s->q0, s->q1, s->q2, s->q3);
+        for (size_t i = b; i < e; ++i) {
+            double d2 = pl_colloid_nlist_disp2(nl, s->box, s->periodic, s->x, s->y, s->z, i);
+            /* a non-finite position forces a rebuild; the NaN guard reports it */
+            if (!(d2 <= m)) m = isnan(d2) ? INFINITY : d2;
+        }
     }
     return m;
 }
