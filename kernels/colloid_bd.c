@@ -11,7 +11,7 @@
 #include <math.h>
 
 #include "peloid/real.h" /* PL_PI */
-#include "colloid_integrate.h" /* pl_colloid_wrap */
+#include "colloid_integrate.h" /* pl_colloid_wrap, pl_colloid_quat_rotate_at */
 #include "peloid/rng.h"
 
 void pl_colloid_bd_step(const pl_colloid_bd_params_t *p, size_t n, const double box[3],
@@ -55,11 +55,6 @@ void pl_colloid_bd_step(const pl_colloid_bd_params_t *p, size_t n, const double 
         wx[i] = tx[i] / zr;
         wy[i] = ty[i] / zr;
         wz[i] = tz[i] / zr;
-        double q[4] = {q0[i], q1[i], q2[i], q3[i]};
-        pl_colloid_quat_rotate(px, py, pz, q);
-        q0[i] = q[0];
-        q1[i] = q[1];
-        q2[i] = q[2];
-        q3[i] = q[3];
+        pl_colloid_quat_rotate_at(i, px, py, pz, q0, q1, q2, q3);
     }
 }

@@ -73,6 +73,18 @@ static inline void pl_colloid_move_one(size_t i, double dt, const double box[3],
     if (periodic[2]) pl_colloid_wrap(&z[i], &iz[i], box[2]);
 }
 
+/* Colloid i's orientation (q0..q3)[i] rotated by phi (pl_colloid_quat_rotate). */
+static inline void pl_colloid_quat_rotate_at(size_t i, double px, double py, double pz, double *restrict q0,
+                                             double *restrict q1, double *restrict q2, double *restrict q3)
+{
+    double q[4] = {q0[i], q1[i], q2[i], q3[i]};
+    pl_colloid_quat_rotate(px, py, pz, q);
+    q0[i] = q[0];
+    q1[i] = q[1];
+    q2[i] = q[2];
+    q3[i] = q[3];
+}
+
 /* Colloids go through the orientation update in blocks of this many,
  * counted from colloid 0, on every path (the lanes of a block's vector loop
  * and its remainder are the same for any thread count). */
@@ -114,12 +126,7 @@ static inline void pl_colloid_rotate_block(size_t b, size_t e, double dt, const 
         for (size_t i = b; i < e; ++i) {
             const double px = dt * wx[i], py = dt * wy[i], pz = dt * wz[i];
             if (px * px + py * py + pz * pz < 1e-4) continue;
-            double q[4] = {q0[i], q1[i], q2[i], q3[i]};
-            pl_colloid_quat_rotate(px, py, pz, q);
-            q0[i] = q[0];
-            q1[i] = q[1];
-            q2[i] = q[2];
-            q3[i] = q[3];
+            pl_colloid_quat_rotate_at(i, px, py, pz, q0, q1, q2, q3);
         }
 }
 
