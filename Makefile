@@ -104,6 +104,9 @@ $(BUILD)/kernels/coupling_potential.o: CFLAGS_ALL += -fno-math-errno -fno-trappi
 # squares in vector lanes: the same.
 $(BUILD)/kernels/colloid_verlet.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 $(BUILD)/kernels/colloid_integrate.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
+# The collision draws its random axes in vector lanes (a square root of
+# 1 - s, s < 1, per cell): the same.
+$(BUILD)/kernels/srd_collide.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 
 $(LIB): $(LIB_OBJ)
 	@rm -f $@

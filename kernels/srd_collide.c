@@ -36,18 +36,11 @@
 #include "peloid/srd_kernels.h"
 #include "peloid/srd_rules.h"
 
-static void rotation_matrix(const pl_collide_params_t *p, uint64_t cell, double R[3][3])
-{
-    pl_srd_rotation(p->rule, p->cos_a, p->sin_a, p->seed, PL_RNG_COLLIDE, p->step, cell, R);
-}
-
 static double heyes_zeta(const pl_collide_params_t *p, uint64_t cell, size_t M, double K)
 {
     pl_rand4_t r = pl_rng_uniform4(p->seed, PL_RNG_THERMOSTAT, p->step, cell, 0);
     return pl_heyes_zeta(p->heyes_eps, p->kT_target, (double)M, K, r.u[0], r.u[1], r.u[2]);
 }
-
-enum { ROT_BATCH = 32 };
 
 /* One block of PL_CELL_BLOCK cells.  HEYES is a constant at each call
  * site, so each entry point below compiles its own loop (the thermostat
@@ -67,20 +60,20 @@ static inline __attribute__((always_inline)) void collide_block(pl_real *restric
     const double vmax2 = p->guard_vmax2;
     int bad = 0; /* GUARD: some particle of the block may fail the speed test of srd_guard.c */
     size_t c_hi = (b + 1) * PL_CELL_BLOCK < ncells ? (b + 1) * PL_CELL_BLOCK : ncells;
-    /* The rotations of ROT_BATCH cells are drawn first, in a loop without
-     * data-dependent branches, so that the out-of-order core overlaps the
-     * Philox rounds and sincos of neighbouring cells; they depend on
-     * (seed, step, cell) only, so the result is unchanged. */
-    double Rb[ROT_BATCH][3][3];
+    /* The rotations of PL_RNG_LANES cells are drawn first, in vector lanes
+     * (pl_srd_rotations: the Philox rounds of 32 cells side by side, not
+     * one dependency chain after another); they depend on (seed, step,
+     * cell) only and have the bits of pl_srd_rotation, so the result is
+     * unchanged.  (Lanes past the block's last cell are drawn and unused.) */
+    double Rb[9][PL_RNG_LANES];
     size_t c_base = b * PL_CELL_BLOCK, c_rot = c_base;
     for (size_t c = b * PL_CELL_BLOCK; c < c_hi; ++c) {
         if (c == c_rot) {
-            const size_t nr = c_hi - c < ROT_BATCH ? c_hi - c : ROT_BATCH;
-            for (size_t k = 0; k < nr; ++k) rotation_matrix(p, c + k, Rb[k]);
+            pl_srd_rotations(p->rule, p->cos_a, p->sin_a, p->seed, PL_RNG_COLLIDE, p->step, c, Rb);
             c_base = c;
-            c_rot = c + nr;
+            c_rot = c + PL_RNG_LANES;
         }
-        double (*const Rc)[3] = Rb[c - c_base];
+        const size_t lane = c - c_base;
         const size_t s = cell_start[c], e = cell_start[c + 1], M = e - s;
         int wall = 0, ng = 0;
         if (p->wall_ghosts && M >= 1) ng = pl_srd_ghost_count(g, p->ghost_density, c, M, &wall);
@@ -118,7 +111,7 @@ static inline __attribute__((always_inline)) void collide_block(pl_real *restric
         if (HEYES && ng == 0 && M >= 2) zeta = heyes_zeta(p, c, M, 0.5 * K2);
         double R[3][3];
         for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) R[i][j] = Rc[i][j] * zeta;
+            for (int j = 0; j < 3; ++j) R[i][j] = Rb[3 * i + j][lane] * zeta;
         for (size_t i = s; i < e; ++i) {
             double a = vx[i] - u[0], bb = vy[i] - u[1], cc = vz[i] - u[2];
             vx[i] = (pl_real)(u[0] + R[0][0] * a + R[0][1] * bb + R[0][2] * cc);

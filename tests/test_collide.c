@@ -3,6 +3,7 @@
  * (Hecht Eq. 33), and the rotation statistics match the rule. */
 #include <criterion/criterion.h>
 #include <math.h>
+#include <string.h>
 
 #include "peloid/rng.h"
 #include "peloid/scene.h"
@@ -203,4 +204,73 @@ Test(collide, random_axis_uniform_on_sphere)
     for (int k = 0; k < NBIN_R; ++k) chi_r += ((double)hr[k] - er) * ((double)hr[k] - er) / er;
     cr_assert_gt(redraw, 5000, "only %ld cells on the rejection path", redraw);
     cr_assert(chi_r < 33.0, "chi2(n_z) of the %ld redrawn axes = %.1f", redraw, chi_r);
+}
+
+/* The collision draws its rotations 32 cells at a time in vector lanes
+ * (pl_srd_rotations, PL_RNG_VECTOR_LANES); the trajectories keep their bits
+ * only if every lane equals the scalar draw.  Checked bitwise: the Philox
+ * lanes (compiled in every build, used with AVX-512) against Random123's
+ * philox4x64 over counters and keys with all-ones and carry-prone words;
+ * pl_rng_uniform4_lanes against pl_rng_uniform4; and the lane rotations of
+ * both rules against pl_srd_rotation, over 640 batches of 32 cells, in
+ * which ~470 random-axis cells draw again (both disc points of the first
+ * draw outside). */
+Test(collide, lane_draws_equal_scalar_draws)
+{
+    const uint64_t words[] = {0, 1, 17, 0xffffffffull, 0x100000000ull, 0x9E3779B97F4A7C15ull,
+                              0xffffffffffffffe0ull, 0xffffffffffffffffull};
+    enum { NW = sizeof words / sizeof words[0] };
+    long lanes = 0;
+    for (int a = 0; a < NW; ++a)
+        for (int b = 0; b < NW; b += 3)
+            for (int d = 0; d < 2; ++d) {
+                const uint64_t seed = words[a], purpose = words[(a + b) % NW], step = words[b];
+                const uint64_t index0 = words[(a + 5 * b + d) % NW], draw = (uint64_t)d;
+                uint64_t c[4][PL_RNG_LANES];
+                double u[4][PL_RNG_LANES];
+                pl_rng_philox_lanes(seed, purpose, step, index0, draw, c);
+                pl_rng_uniform4_lanes(seed, purpose, step, index0, draw, u);
+                for (uint64_t l = 0; l < PL_RNG_LANES; ++l, ++lanes) {
+                    philox4x64_ctr_t ctr = {{step, index0 + l, draw, 0}};
+                    philox4x64_key_t key = {{seed, purpose}};
+                    philox4x64_ctr_t r = philox4x64(ctr, key);
+                    pl_rand4_t q = pl_rng_uniform4(seed, purpose, step, index0 + l, draw);
+                    for (int k = 0; k < 4; ++k) {
+                        cr_assert_eq(c[k][l], r.v[k], "Philox lane %lu word %d: %016lx, scalar %016lx", (unsigned long)l,
+                                     k, (unsigned long)c[k][l], (unsigned long)r.v[k]);
+                        cr_assert(memcmp(&u[k][l], &q.u[k], sizeof(double)) == 0, "uniform lane %lu word %d",
+                                  (unsigned long)l, k);
+                    }
+                }
+            }
+    cr_assert_eq(lanes, NW * 3 * 2 * PL_RNG_LANES);
+}
+
+Test(collide, lane_rotations_equal_scalar_rotations)
+{
+    const double alpha = 130.0 * M_PI / 180.0;
+    long redrawn = 0;
+    for (int rule = 0; rule < 2; ++rule)
+        for (uint64_t step = 0; step < 20; ++step)
+            for (uint64_t batch = 0; batch < 16; ++batch) {
+                const int r = rule ? PL_RULE_HECHT_AXES : PL_RULE_RANDOM_AXIS;
+                const uint64_t cell0 = batch * 1000 + step; /* not only multiples of 32 */
+                double R[9][PL_RNG_LANES];
+                pl_srd_rotations(r, cos(alpha), sin(alpha), 23, PL_RNG_COLLIDE, step, cell0, R);
+                for (uint64_t l = 0; l < PL_RNG_LANES; ++l) {
+                    double S[3][3];
+                    pl_srd_rotation(r, cos(alpha), sin(alpha), 23, PL_RNG_COLLIDE, step, cell0 + l, S);
+                    for (int e = 0; e < 9; ++e)
+                        cr_assert(memcmp(&R[e][l], &S[e / 3][e % 3], sizeof(double)) == 0,
+                                  "rule %d step %lu cell %lu element %d: %.17g, scalar %.17g", r, (unsigned long)step,
+                                  (unsigned long)(cell0 + l), e, R[e][l], S[e / 3][e % 3]);
+                    if (r == PL_RULE_RANDOM_AXIS) {
+                        pl_rand4_t q = pl_rng_uniform4(23, PL_RNG_COLLIDE, step, cell0 + l, 0);
+                        double a, b;
+                        redrawn += !(pl_srd_disc_point(q.u[0], q.u[1], q.u[2], q.u[3], &a, &b) < 1.0);
+                    }
+                }
+            }
+    /* 20 x 16 x 32 = 10240 random-axis cells, 4.6 % of them: ~470, sd ~21 */
+    cr_assert(redrawn > 350 && redrawn < 600, "%ld cells drew again", redrawn);
 }

@@ -7,6 +7,7 @@
 #ifndef PELOID_RNG_H
 #define PELOID_RNG_H
 
+#include <stddef.h>
 #include <stdint.h>
 #include <math.h>
 #include <Random123/philox.h>
@@ -47,6 +48,85 @@ static inline pl_rand4_t pl_rng_uniform4(uint64_t seed, uint64_t purpose, uint64
     for (int k = 0; k < 4; ++k)
         out.u[k] = ((double)(r.v[k] >> 11) + 0.5) * 0x1.0p-53;
     return out;
+}
+
+/* pl_rng_uniform4 for PL_RNG_LANES consecutive entities at once:
+ * u[k][l] = pl_rng_uniform4(seed, purpose, step, index0 + l, draw).u[k],
+ * bit for bit.  With AVX-512 (64-bit lanes that multiply and convert to
+ * double in one instruction each) Philox4x64-10 runs written out over lanes
+ * (Random123's round and key schedule, the 64 x 64 -> 128-bit products from
+ * 32-bit halves) in vector registers, where the scalar pl_rng_uniform4 is
+ * one dependency chain per draw.  Without AVX-512 the lanes cost more than
+ * the scalar draws, so they are drawn one by one (bench/RESULTS.md, "the
+ * collision's random axes in vector lanes"). */
+enum { PL_RNG_LANES = 32 };
+#if defined(__AVX512F__) && defined(__AVX512DQ__)
+#define PL_RNG_VECTOR_LANES 1
+#else
+#define PL_RNG_VECTOR_LANES 0
+#endif
+
+/* a * b = hi 2^64 + lo (returns hi), from the four 32 x 32 -> 64-bit
+ * products of the halves (vpmuludq in vector lanes):
+ * lo = (aL bL mod 2^32) | w << 32. */
+static inline uint64_t pl_rng_mulhilo64(uint64_t a, uint64_t b, uint64_t *lo)
+{
+    const uint32_t aL = (uint32_t)a, aH = (uint32_t)(a >> 32), bL = (uint32_t)b, bH = (uint32_t)(b >> 32);
+    const uint64_t t = (uint64_t)aL * bL;
+    const uint64_t u = (uint64_t)aH * bL + (t >> 32);   /* < 2^64 */
+    const uint64_t w = (uint64_t)aL * bH + (uint32_t)u; /* < 2^64 */
+    *lo = (uint64_t)(uint32_t)t | w << 32;
+    return (uint64_t)aH * bH + (u >> 32) + (w >> 32);
+}
+
+/* The Philox4x64-10 outputs c0..c3 of the lanes' counters (step, index0 +
+ * l, draw, 0) under the key (seed, purpose), in loops the compiler
+ * vectorises. */
+static inline void pl_rng_philox_lanes(uint64_t seed, uint64_t purpose, uint64_t step, uint64_t index0,
+                                       uint64_t draw, uint64_t c[4][PL_RNG_LANES])
+{
+    uint64_t *restrict c0 = c[0], *restrict c1 = c[1], *restrict c2 = c[2], *restrict c3 = c[3];
+    for (size_t l = 0; l < PL_RNG_LANES; ++l) {
+        c0[l] = step;
+        c1[l] = index0 + l;
+        c2[l] = draw;
+        c3[l] = 0;
+    }
+    uint64_t k0 = seed, k1 = purpose;
+    for (int round = 0; round < 10; ++round) {
+        if (round > 0) { /* Random123's key bump */
+            k0 += PHILOX_W64_0;
+            k1 += PHILOX_W64_1;
+        }
+#pragma omp simd
+        for (size_t l = 0; l < PL_RNG_LANES; ++l) {
+            const uint64_t a = c0[l], b = c2[l];
+            uint64_t lo0, lo1;
+            const uint64_t hi0 = pl_rng_mulhilo64(PHILOX_M4x64_0, a, &lo0);
+            const uint64_t hi1 = pl_rng_mulhilo64(PHILOX_M4x64_1, b, &lo1);
+            c0[l] = hi1 ^ c1[l] ^ k0;
+            c1[l] = lo1;
+            c2[l] = hi0 ^ c3[l] ^ k1;
+            c3[l] = lo0;
+        }
+    }
+}
+
+static inline void pl_rng_uniform4_lanes(uint64_t seed, uint64_t purpose, uint64_t step, uint64_t index0,
+                                         uint64_t draw, double u[4][PL_RNG_LANES])
+{
+#if PL_RNG_VECTOR_LANES
+    uint64_t c[4][PL_RNG_LANES];
+    pl_rng_philox_lanes(seed, purpose, step, index0, draw, c);
+#pragma omp simd
+    for (size_t l = 0; l < PL_RNG_LANES; ++l) /* as pl_rng_uniform4 */
+        for (int k = 0; k < 4; ++k) u[k][l] = ((double)(c[k][l] >> 11) + 0.5) * 0x1.0p-53;
+#else
+    for (size_t l = 0; l < PL_RNG_LANES; ++l) {
+        const pl_rand4_t r = pl_rng_uniform4(seed, purpose, step, index0 + l, draw);
+        for (int k = 0; k < 4; ++k) u[k][l] = r.u[k];
+    }
+#endif
 }
 
 /* Two independent standard normal deviates from two uniforms (Box–Muller). */

@@ -11,17 +11,64 @@
 #include "peloid/kernel_enums.h" /* PL_RULE_*, PL_WALLS_* */
 #include "peloid/rng.h"
 
+/* Marsaglia's method (Ann. Math. Stat. 43, 645 (1972)) on one draw of four
+ * uniforms: two points (a, b) uniform in [-1, 1]^2; returns s = a^2 + b^2
+ * of the first inside the unit disc, with its (a, b) (s >= 1: neither is,
+ * probability (1 - pi/4)^2 = 0.046, and the caller draws again). */
+static inline double pl_srd_disc_point(double u0, double u1, double u2, double u3, double *a, double *b)
+{
+    const double a0 = 2.0 * u0 - 1.0, b0 = 2.0 * u1 - 1.0;
+    const double a1 = 2.0 * u2 - 1.0, b1 = 2.0 * u3 - 1.0;
+    const double s0 = a0 * a0 + b0 * b0, s1 = a1 * a1 + b1 * b1;
+    const int first = s0 < 1.0; /* selects, not branches: the usual case is cheap */
+    *a = first ? a0 : a1;
+    *b = first ? b0 : b1;
+    return first ? s0 : s1;
+}
+
+/* Rotation by alpha (cos_a, sin_a) about the axis n = (2a sqrt(1-s),
+ * 2b sqrt(1-s), 1-2s) of a disc point (uniform on the sphere; PL Eq. 3,
+ * Rodrigues' formula): element (i, j) in R[(3 i + j) * stride]. */
+static inline void pl_srd_rodrigues(double a, double b, double s, double cos_a, double sin_a, double *R,
+                                    size_t stride)
+{
+    const double q = 2.0 * sqrt(1.0 - s);
+    const double n0 = a * q, n1 = b * q, n2 = 1.0 - 2.0 * s;
+    const double ca = cos_a, sa = sin_a, oc = 1.0 - ca;
+    R[0 * stride] = ca + n0 * n0 * oc;
+    R[1 * stride] = n0 * n1 * oc - n2 * sa;
+    R[2 * stride] = n0 * n2 * oc + n1 * sa;
+    R[3 * stride] = n1 * n0 * oc + n2 * sa;
+    R[4 * stride] = ca + n1 * n1 * oc;
+    R[5 * stride] = n1 * n2 * oc - n0 * sa;
+    R[6 * stride] = n2 * n0 * oc - n1 * sa;
+    R[7 * stride] = n2 * n1 * oc + n0 * sa;
+    R[8 * stride] = ca + n2 * n2 * oc;
+}
+
+/* The random axis of a cell whose first draw (s0 >= 1) had no disc point:
+ * draws 1, 2, ... of its stream until one has. */
+static inline double pl_srd_disc_redraw(uint64_t seed, uint64_t purpose, uint64_t step, uint64_t cell, double *a,
+                                        double *b)
+{
+    double s = 1.0;
+    for (uint64_t draw = 1; !(s < 1.0); ++draw) {
+        const pl_rand4_t r = pl_rng_uniform4(seed, purpose, step, cell, draw);
+        s = pl_srd_disc_point(r.u[0], r.u[1], r.u[2], r.u[3], a, b);
+    }
+    return s;
+}
+
 /* Rotation matrix of one cell's collision, from the caller's counter-based
  * stream (seed, purpose, step, cell) (draw 0, and draw 1, 2, ... only when
  * needed).  PL_RULE_RANDOM_AXIS: rotation by alpha (cos_a, sin_a) about an
  * axis uniform on the sphere (PL Eq. 3, Rodrigues' formula); the axis by
- * Marsaglia's method (Ann. Math. Stat. 43, 645 (1972)): (a, b) uniform in the
- * unit disc, s = a^2 + b^2, n = (2a sqrt(1-s), 2b sqrt(1-s), 1-2s), which
- * needs no trigonometric function.  One draw gives two (a, b) pairs; the
- * first inside the disc is used (the second only when the first is not:
- * probability 1 - pi/4), a further draw when neither is (0.046).
- * PL_RULE_HECHT_AXES: +-90 deg about one of the three coordinate axes, each
- * of the 6 with probability 1/6 (Hecht Sec. III), from the first uniform. */
+ * Marsaglia's method, which needs no trigonometric function.  One draw
+ * gives two (a, b) pairs; the first inside the disc is used (the second
+ * only when the first is not: probability 1 - pi/4), a further draw when
+ * neither is (0.046).  PL_RULE_HECHT_AXES: +-90 deg about one of the three
+ * coordinate axes, each of the 6 with probability 1/6 (Hecht Sec. III),
+ * from the first uniform. */
 static inline void pl_srd_rotation(int rule, double cos_a, double sin_a, uint64_t seed,
                                    uint64_t purpose, uint64_t step, uint64_t cell, double R[3][3])
 {
@@ -40,30 +87,45 @@ static inline void pl_srd_rotation(int rule, double cos_a, double sin_a, uint64_
         R[b][c] = -s;
         return;
     }
-    double a, b, s;
-    for (uint64_t draw = 1;; ++draw) {
-        const double a0 = 2.0 * r.u[0] - 1.0, b0 = 2.0 * r.u[1] - 1.0;
-        const double a1 = 2.0 * r.u[2] - 1.0, b1 = 2.0 * r.u[3] - 1.0;
-        const double s0 = a0 * a0 + b0 * b0, s1 = a1 * a1 + b1 * b1;
-        const int first = s0 < 1.0; /* selects, not branches: the usual case is cheap */
-        a = first ? a0 : a1;
-        b = first ? b0 : b1;
-        s = first ? s0 : s1;
-        if (s < 1.0) break;
-        r = pl_rng_uniform4(seed, purpose, step, cell, draw);
+    double a, b, s = pl_srd_disc_point(r.u[0], r.u[1], r.u[2], r.u[3], &a, &b);
+    if (!(s < 1.0)) s = pl_srd_disc_redraw(seed, purpose, step, cell, &a, &b);
+    pl_srd_rodrigues(a, b, s, cos_a, sin_a, &R[0][0], 1);
+}
+
+/* pl_srd_rotation of the PL_RNG_LANES cells cell0, cell0 + 1, ..., bit for
+ * bit, element (i, j) of cell cell0 + l in R[3 i + j][l].  PL_RULE_RANDOM_AXIS
+ * runs the first draw, the disc test and Rodrigues' formula in vector lanes
+ * (the same operations in the same order); a cell whose first draw has no
+ * disc point (0.046) draws again alone.  The Hecht rule goes cell by cell. */
+static inline void pl_srd_rotations(int rule, double cos_a, double sin_a, uint64_t seed, uint64_t purpose,
+                                    uint64_t step, uint64_t cell0, double R[9][PL_RNG_LANES])
+{
+    enum { NL = PL_RNG_LANES };
+    if (rule == PL_RULE_HECHT_AXES) {
+        for (size_t l = 0; l < NL; ++l) {
+            double Rl[3][3];
+            pl_srd_rotation(rule, cos_a, sin_a, seed, purpose, step, cell0 + l, Rl);
+            for (int e = 0; e < 9; ++e) R[e][l] = Rl[e / 3][e % 3];
+        }
+        return;
     }
-    const double q = 2.0 * sqrt(1.0 - s);
-    double n[3] = {a * q, b * q, 1.0 - 2.0 * s};
-    double ca = cos_a, sa = sin_a, oc = 1.0 - ca;
-    R[0][0] = ca + n[0] * n[0] * oc;
-    R[0][1] = n[0] * n[1] * oc - n[2] * sa;
-    R[0][2] = n[0] * n[2] * oc + n[1] * sa;
-    R[1][0] = n[1] * n[0] * oc + n[2] * sa;
-    R[1][1] = ca + n[1] * n[1] * oc;
-    R[1][2] = n[1] * n[2] * oc - n[0] * sa;
-    R[2][0] = n[2] * n[0] * oc - n[1] * sa;
-    R[2][1] = n[2] * n[1] * oc + n[0] * sa;
-    R[2][2] = ca + n[2] * n[2] * oc;
+    _Static_assert(PL_RNG_LANES <= 32, "one bit per lane in a uint32_t");
+    double u[4][NL];
+    pl_rng_uniform4_lanes(seed, purpose, step, cell0, 0, u);
+    uint32_t redo = 0; /* bit l: lane l draws again */
+#pragma omp simd reduction(| : redo)
+    for (size_t l = 0; l < NL; ++l) {
+        double a, b;
+        const double s = pl_srd_disc_point(u[0][l], u[1][l], u[2][l], u[3][l], &a, &b);
+        redo |= (uint32_t)!(s < 1.0) << l;
+        pl_srd_rodrigues(a, b, s < 1.0 ? s : 0.0, cos_a, sin_a, &R[0][l], NL); /* s >= 1: redone below */
+    }
+    for (; redo; redo &= redo - 1) { /* ~1.5 lanes of 32 */
+        const size_t l = (size_t)__builtin_ctz(redo);
+        double a, b;
+        const double s = pl_srd_disc_redraw(seed, purpose, step, cell0 + l, &a, &b);
+        pl_srd_rodrigues(a, b, s, cos_a, sin_a, &R[0][l], NL);
+    }
 }
 
 /* Virtual wall particles of collision cell c holding M >= 1 real bodies of
