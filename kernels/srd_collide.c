@@ -36,10 +36,11 @@
 #include "peloid/srd_kernels.h"
 #include "peloid/srd_rules.h"
 
-static double heyes_zeta(const pl_collide_params_t *p, uint64_t cell, size_t M, double K)
+/* Heyes's factor of a cell from its draw (seed, PL_RNG_THERMOSTAT, step,
+ * cell, 0), lane `lane` of u. */
+static double heyes_zeta(const pl_collide_params_t *p, size_t M, double K, double u[4][PL_RNG_LANES], size_t lane)
 {
-    pl_rand4_t r = pl_rng_uniform4(p->seed, PL_RNG_THERMOSTAT, p->step, cell, 0);
-    return pl_heyes_zeta(p->heyes_eps, p->kT_target, (double)M, K, r.u[0], r.u[1], r.u[2]);
+    return pl_heyes_zeta(p->heyes_eps, p->kT_target, (double)M, K, u[0][lane], u[1][lane], u[2][lane]);
 }
 
 /* One block of PL_CELL_BLOCK cells.  HEYES is a constant at each call
@@ -64,12 +65,14 @@ static inline __attribute__((always_inline)) void collide_block(pl_real *restric
      * (pl_srd_rotations: the Philox rounds of 32 cells side by side, not
      * one dependency chain after another); they depend on (seed, step,
      * cell) only and have the bits of pl_srd_rotation, so the result is
-     * unchanged.  (Lanes past the block's last cell are drawn and unused.) */
-    double Rb[9][PL_RNG_LANES];
+     * unchanged; so are the Heyes thermostat's draws.  (Lanes past the
+     * block's last cell are drawn and unused.) */
+    double Rb[9][PL_RNG_LANES], Hu[4][PL_RNG_LANES]; /* Hu: the thermostat's draws (HEYES) */
     size_t c_base = b * PL_CELL_BLOCK, c_rot = c_base;
     for (size_t c = b * PL_CELL_BLOCK; c < c_hi; ++c) {
         if (c == c_rot) {
             pl_srd_rotations(p->rule, p->cos_a, p->sin_a, p->seed, PL_RNG_COLLIDE, p->step, c, Rb);
+            if (HEYES) pl_rng_uniform4_lanes(p->seed, PL_RNG_THERMOSTAT, p->step, c, 0, Hu);
             c_base = c;
             c_rot = c + PL_RNG_LANES;
         }
@@ -108,7 +111,7 @@ static inline __attribute__((always_inline)) void collide_block(pl_real *restric
         const double K2 = S - 2.0 * (u[0] * P[0] + u[1] * P[1] + u[2] * P[2]) +
                           (double)M * (u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
         double zeta = 1.0;
-        if (HEYES && ng == 0 && M >= 2) zeta = heyes_zeta(p, c, M, 0.5 * K2);
+        if (HEYES && ng == 0 && M >= 2) zeta = heyes_zeta(p, M, 0.5 * K2, Hu, lane);
         double R[3][3];
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j) R[i][j] = Rb[3 * i + j][lane] * zeta;

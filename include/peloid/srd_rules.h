@@ -96,22 +96,29 @@ static inline void pl_srd_rotation(int rule, double cos_a, double sin_a, uint64_
  * bit, element (i, j) of cell cell0 + l in R[3 i + j][l].  PL_RULE_RANDOM_AXIS
  * runs the first draw, the disc test and Rodrigues' formula in vector lanes
  * (the same operations in the same order); a cell whose first draw has no
- * disc point (0.046) draws again alone.  The Hecht rule goes cell by cell. */
+ * disc point (0.046) draws again alone.  PL_RULE_HECHT_AXES: the axis and
+ * sign from the first uniform, in lanes too. */
 static inline void pl_srd_rotations(int rule, double cos_a, double sin_a, uint64_t seed, uint64_t purpose,
                                     uint64_t step, uint64_t cell0, double R[9][PL_RNG_LANES])
 {
     enum { NL = PL_RNG_LANES };
-    if (rule == PL_RULE_HECHT_AXES) {
-        for (size_t l = 0; l < NL; ++l) {
-            double Rl[3][3];
-            pl_srd_rotation(rule, cos_a, sin_a, seed, purpose, step, cell0 + l, Rl);
-            for (int e = 0; e < 9; ++e) R[e][l] = Rl[e / 3][e % 3];
-        }
-        return;
-    }
     _Static_assert(PL_RNG_LANES <= 32, "one bit per lane in a uint32_t");
     double u[4][NL];
     pl_rng_uniform4_lanes(seed, purpose, step, cell0, 0, u);
+    if (rule == PL_RULE_HECHT_AXES) { /* pl_srd_rotation's matrix, element by element */
+#pragma omp simd
+        for (size_t l = 0; l < NL; ++l) {
+            int k = (int)(u[0][l] * 6.0);
+            k = k > 5 ? 5 : k;
+            const int a = k >> 1, b = (a + 1) % 3, c = (a + 2) % 3;
+            const double sg = (k & 1) ? -1.0 : 1.0;
+            for (int e = 0; e < 9; ++e) {
+                const int i = e / 3, j = e % 3;
+                R[e][l] = i == a && j == a ? 1.0 : i == c && j == b ? sg : i == b && j == c ? -sg : 0.0;
+            }
+        }
+        return;
+    }
     uint32_t redo = 0; /* bit l: lane l draws again */
 #pragma omp simd reduction(| : redo)
     for (size_t l = 0; l < NL; ++l) {
