@@ -274,3 +274,74 @@ Test(collide, lane_rotations_equal_scalar_rotations)
     /* 20 x 16 x 32 = 10240 random-axis cells, 4.6 % of them: ~470, sd ~21 */
     cr_assert(redrawn > 350 && redrawn < 600, "%ld cells drew again", redrawn);
 }
+
+/* pl_heyes_zeta settles most decisions from intervals around the two
+ * logarithms (pl_log1p_bracket, [1 - 1/u, u - 1]); its result must be that
+ * of the logarithms themselves (the code before the intervals, below) bit
+ * for bit.  Checked over 3e6 draws across eps_max, cell sizes,
+ * temperatures and K from 0 to 4x its mean, and over draws whose u2 lies
+ * within 4 ulp of the exact boundary exp(log_acc) (where the intervals
+ * cannot decide), over K within 4 ulp of where log_acc crosses 0, and K =
+ * NaN, +-Inf, eps_max = 0. */
+static double heyes_zeta_logs(double eps_max, double kT, double nbody, double K, double u0, double u1, double u2)
+{
+    double eps = eps_max * u0;
+    double zeta = u1 < 0.5 ? 1.0 + eps : 1.0 / (1.0 + eps);
+    double dof = 3.0 * (nbody - 1.0);
+    double log_acc = dof * log(zeta) - (zeta * zeta - 1.0) * K / kT;
+    return (log_acc >= 0.0 || log(u2) < log_acc) ? zeta : 1.0;
+}
+
+Test(collide, heyes_decision_equals_the_logarithms)
+{
+    const double eps_max[] = {0.0, 0.01, 0.1, 0.3, 1.0, 2.0};
+    const double kTs[] = {0.5, 1.0, 2.0};
+    long n = 0, accepted = 0, boundary = 0;
+    for (uint64_t i = 0; i < 3000000; ++i) {
+        pl_rand4_t r = pl_rng_uniform4(5, 77, 0, i, 0), q = pl_rng_uniform4(5, 78, 0, i, 0);
+        const double em = eps_max[i % 6], kT = kTs[(i / 6) % 3], nbody = (double)(2 + (i / 18) % 29);
+        const double K = kT * 1.5 * (nbody - 1.0) * 4.0 * q.u[0];
+        const double a = pl_heyes_zeta(em, kT, nbody, K, r.u[0], r.u[1], r.u[2]);
+        const double b = heyes_zeta_logs(em, kT, nbody, K, r.u[0], r.u[1], r.u[2]);
+        cr_assert(memcmp(&a, &b, sizeof a) == 0, "draw %lu: %.17g, with the logarithms %.17g", (unsigned long)i, a, b);
+        accepted += a != 1.0;
+        n++;
+        /* K where log_acc crosses 0, and its neighbours */
+        if (i % 10 == 5 && em > 0.0) {
+            const double eps = em * r.u[0], zeta = r.u[1] < 0.5 ? 1.0 + eps : 1.0 / (1.0 + eps);
+            if (zeta == 1.0) continue;
+            double K0 = 3.0 * (nbody - 1.0) * log(zeta) * kT / (zeta * zeta - 1.0);
+            for (int k = 0; k < 4; ++k) K0 = nextafter(K0, 0.0);
+            for (int k = 0; k < 9; ++k, K0 = nextafter(K0, INFINITY)) {
+                const double x = pl_heyes_zeta(em, kT, nbody, K0, r.u[0], r.u[1], r.u[2]);
+                const double y = heyes_zeta_logs(em, kT, nbody, K0, r.u[0], r.u[1], r.u[2]);
+                cr_assert(memcmp(&x, &y, sizeof x) == 0, "log_acc = 0 draw %lu step %d", (unsigned long)i, k);
+                boundary++;
+            }
+        }
+        /* u2 at the boundary: exp(log_acc) and its neighbours */
+        if (i % 10 == 0 && em > 0.0) {
+            double eps = em * r.u[0], zeta = r.u[1] < 0.5 ? 1.0 + eps : 1.0 / (1.0 + eps);
+            double log_acc = 3.0 * (nbody - 1.0) * log(zeta) - (zeta * zeta - 1.0) * K / kT;
+            if (log_acc >= 0.0) continue;
+            double u2 = exp(log_acc);
+            for (int k = 0; k < 4; ++k) u2 = nextafter(u2, 0.0);
+            for (int k = 0; k < 9; ++k, u2 = nextafter(u2, 1.0)) {
+                if (!(u2 > 0.0 && u2 < 1.0)) continue;
+                const double x = pl_heyes_zeta(em, kT, nbody, K, r.u[0], r.u[1], u2);
+                const double y = heyes_zeta_logs(em, kT, nbody, K, r.u[0], r.u[1], u2);
+                cr_assert(memcmp(&x, &y, sizeof x) == 0, "boundary draw %lu step %d", (unsigned long)i, k);
+                boundary++;
+            }
+        }
+    }
+    const double odd[] = {NAN, INFINITY, -INFINITY, 0.0, 1e300};
+    for (int k = 0; k < 5; ++k)
+        for (int s = 0; s < 2; ++s) {
+            const double a = pl_heyes_zeta(0.1, 1.0, 10.0, odd[k], 0.5, s ? 0.7 : 0.2, 0.3);
+            const double b = heyes_zeta_logs(0.1, 1.0, 10.0, odd[k], 0.5, s ? 0.7 : 0.2, 0.3);
+            cr_assert(memcmp(&a, &b, sizeof a) == 0, "K = %g", odd[k]);
+        }
+    cr_assert(accepted > n / 10 && accepted < n, "%ld of %ld accepted", accepted, n);
+    cr_assert(boundary > 100000, "%ld boundary draws", boundary);
+}
