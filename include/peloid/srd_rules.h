@@ -125,7 +125,11 @@ static inline void pl_srd_rotations(int rule, double cos_a, double sin_a, uint64
         return;
     }
     uint32_t redo = 0; /* bit l: lane l draws again */
+    /* gcc vectorises this loop only when asked; clang unasked, where sqrt
+     * sets no errno (srd_collide.o), and asked it warns where it does */
+#if !defined(__clang__)
 #pragma omp simd reduction(| : redo)
+#endif
     for (size_t l = 0; l < NL; ++l) {
         double a, b;
         const double s = pl_srd_disc_point(u[0][l], u[1][l], u[2][l], u[3][l], &a, &b);
