@@ -183,17 +183,16 @@ static inline void pl_srd_ghost_noise(uint64_t seed, uint64_t step, uint64_t c, 
 
 /* An interval [*lo, *hi] that holds log(1 + e) for |e| <= 1/4 (e exact),
  * and the value libm's log returns for it (within 1e-13 relative): the
- * alternating series to e^12 (its tail below |e|^13 / (13 (1 - |e|))).
+ * alternating series to e^5 (its tail below |e|^6 / (6 (1 - |e|))).
  * Returns 0 for larger |e| (or a NaN). */
 static inline int pl_log1p_bracket(double e, double *lo, double *hi)
 {
     const double ae = fabs(e);
     if (!(ae <= 0.25)) return 0;
-    double s = 1.0 / 12.0; /* log(1 + e) = e (1 - e (1/2 - e (1/3 - ...))) */
-    for (int k = 11; k >= 1; --k) s = 1.0 / k - e * s;
-    s *= e;
-    const double e2 = ae * ae, e4 = e2 * e2, e8 = e4 * e4, e13 = e8 * e4 * ae;
-    const double w = e13 / (13.0 * (1.0 - ae)) * 1.001 + 1e-13 * fabs(s) + 1e-300;
+    /* log(1 + e) = e (1 - e (1/2 - e (1/3 - e (1/4 - e / 5)))) + tail */
+    const double s = e * (1.0 - e * (0.5 - e * (1.0 / 3.0 - e * (0.25 - e * 0.2))));
+    const double e2 = ae * ae, e6 = e2 * e2 * e2;
+    const double w = e6 * (1.0 / 6.0) * (1.0 / 0.75) * 1.001 + 1e-13 * fabs(s) + 1e-300;
     *lo = s - w;
     *hi = s + w;
     return 1;
@@ -225,12 +224,12 @@ static inline double pl_heyes_zeta(double eps_max, double kT_target, double nbod
     double Llo, Lhi;
     if (dof >= 0.0 && pl_log1p_bracket(zeta - 1.0, &Llo, &Lhi)) { /* zeta - 1: exact (Sterbenz) */
         const double acc_lo = dof * Llo - B, acc_hi = dof * Lhi - B;
-        if (acc_lo >= 0.0) return zeta;
-        if (acc_hi < 0.0) {
-            const double ulo = 1.0 - 1.0 / u2, uhi = u2 - 1.0;
-            if (uhi + 1e-13 * fabs(uhi) + 1e-15 < acc_lo) return zeta;
-            if (ulo - 1e-13 * fabs(ulo) - 1e-15 >= acc_hi) return 1.0;
-        }
+        const double ulo = 1.0 - 1.0 / u2, uhi = u2 - 1.0;
+        /* flags, not branches: one branch, taken in most cells */
+        const int neg = acc_hi < 0.0;
+        const int accept = (acc_lo >= 0.0) | (neg & (uhi + 1e-13 * fabs(uhi) + 1e-15 < acc_lo));
+        const int reject = neg & (ulo - 1e-13 * fabs(ulo) - 1e-15 >= acc_hi);
+        if (accept | reject) return accept ? zeta : 1.0;
     }
     double log_acc = dof * log(zeta) - B;
     return (log_acc >= 0.0 || log(u2) < log_acc) ? zeta : 1.0;
