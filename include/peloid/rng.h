@@ -58,7 +58,7 @@ static inline pl_rand4_t pl_rng_uniform4(uint64_t seed, uint64_t purpose, uint64
  * 32-bit halves) in vector registers, where the scalar pl_rng_uniform4 is
  * one dependency chain per draw.  Without AVX-512 the lanes cost more than
  * the scalar draws, so they are drawn one by one (bench/RESULTS.md, "the
- * collision's random axes in vector lanes"). */
+ * collision's random draws in vector lanes"). */
 enum { PL_RNG_LANES = 32 };
 #if defined(__AVX512F__) && defined(__AVX512DQ__)
 #define PL_RNG_VECTOR_LANES 1

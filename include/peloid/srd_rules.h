@@ -206,9 +206,10 @@ static inline int pl_log1p_bracket(double e, double *lo, double *hi)
  * Returns 1 when rejected.
  *
  * The decision is that of log_acc = dof log(zeta) - (zeta^2 - 1) K / kT*
- * >= 0 or log(u2) < log_acc, with libm's log.  The two logarithms took a
- * fifth of the thermostat's collision; the decision is taken without them
- * where intervals settle it: log(zeta) within pl_log1p_bracket (rounding is
+ * >= 0 or log(u2) < log_acc, with libm's log.  The two logarithms were a
+ * large share of the thermostat's collision (bench/RESULTS.md); the
+ * decision is taken without them where intervals settle it (most cells):
+ * log(zeta) within pl_log1p_bracket (rounding is
  * monotone, so dof lo - B <= log_acc <= dof hi - B for the computed
  * log_acc), log(u2) within [1 - 1/u2, u2 - 1] widened by 1e-13 relative
  * and 1e-15.  Where they do not (near a boundary), both logarithms as
