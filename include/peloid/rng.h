@@ -37,7 +37,11 @@ typedef struct {
     double u[4];
 } pl_rand4_t;
 
-/* Four uniform doubles in (0, 1) (never exactly 0 or 1: safe for log). */
+/* A Philox word as a uniform double in (0, 1): its top 53 bits, centred
+ * (never exactly 0 or 1: safe for log). */
+static inline double pl_rng_u01(uint64_t word) { return ((double)(word >> 11) + 0.5) * 0x1.0p-53; }
+
+/* Four uniform doubles in (0, 1) (pl_rng_u01 of the four words). */
 static inline pl_rand4_t pl_rng_uniform4(uint64_t seed, uint64_t purpose, uint64_t step,
                                          uint64_t index, uint64_t draw)
 {
@@ -45,8 +49,7 @@ static inline pl_rand4_t pl_rng_uniform4(uint64_t seed, uint64_t purpose, uint64
     philox4x64_key_t key = {{seed, purpose}};
     philox4x64_ctr_t r = philox4x64(ctr, key);
     pl_rand4_t out;
-    for (int k = 0; k < 4; ++k)
-        out.u[k] = ((double)(r.v[k] >> 11) + 0.5) * 0x1.0p-53;
+    for (int k = 0; k < 4; ++k) out.u[k] = pl_rng_u01(r.v[k]);
     return out;
 }
 
@@ -120,7 +123,7 @@ static inline void pl_rng_uniform4_lanes(uint64_t seed, uint64_t purpose, uint64
     pl_rng_philox_lanes(seed, purpose, step, index0, draw, c);
 #pragma omp simd
     for (size_t l = 0; l < PL_RNG_LANES; ++l) /* as pl_rng_uniform4 */
-        for (int k = 0; k < 4; ++k) u[k][l] = ((double)(c[k][l] >> 11) + 0.5) * 0x1.0p-53;
+        for (int k = 0; k < 4; ++k) u[k][l] = pl_rng_u01(c[k][l]);
 #else
     for (size_t l = 0; l < PL_RNG_LANES; ++l) {
         const pl_rand4_t r = pl_rng_uniform4(seed, purpose, step, index0 + l, draw);

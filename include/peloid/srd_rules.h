@@ -46,6 +46,28 @@ static inline void pl_srd_rodrigues(double a, double b, double s, double cos_a, 
     R[8 * stride] = ca + n2 * n2 * oc;
 }
 
+/* Hecht's rotation (Hecht Sec. III) from a uniform u: +-90 deg about
+ * coordinate axis a, k = floor(6 u) = 2 a + (sign < 0): e_b -> s e_c,
+ * e_c -> -s e_b (b = a + 1, c = a + 2 mod 3), element (i, j) in R[(3 i + j)
+ * * stride]; written out for a = 0, 1, 2 so that it vectorises (64-bit
+ * integers: the lanes of the doubles). */
+static inline void pl_srd_hecht_matrix(double u, double *R, size_t stride)
+{
+    int64_t k = (int64_t)(u * 6.0);
+    k = k > 5 ? 5 : k;
+    const int64_t a = k >> 1;
+    const double sg = (k & 1) ? -1.0 : 1.0;
+    R[0 * stride] = a == 0 ? 1.0 : 0.0; /* R[a][a] = 1 */
+    R[4 * stride] = a == 1 ? 1.0 : 0.0;
+    R[8 * stride] = a == 2 ? 1.0 : 0.0;
+    R[7 * stride] = a == 0 ? sg : 0.0; /* R[c][b] = s, R[b][c] = -s */
+    R[5 * stride] = a == 0 ? -sg : 0.0;
+    R[2 * stride] = a == 1 ? sg : 0.0;
+    R[6 * stride] = a == 1 ? -sg : 0.0;
+    R[3 * stride] = a == 2 ? sg : 0.0;
+    R[1 * stride] = a == 2 ? -sg : 0.0;
+}
+
 /* The random axis of a cell whose first draw (s0 >= 1) had no disc point:
  * draws 1, 2, ... of its stream until one has. */
 static inline double pl_srd_disc_redraw(uint64_t seed, uint64_t purpose, uint64_t step, uint64_t cell, double *a,
@@ -74,17 +96,7 @@ static inline void pl_srd_rotation(int rule, double cos_a, double sin_a, uint64_
 {
     pl_rand4_t r = pl_rng_uniform4(seed, purpose, step, cell, 0);
     if (rule == PL_RULE_HECHT_AXES) {
-        int k = (int)(r.u[0] * 6.0); /* 0..5: axis k/2, sign by parity */
-        if (k > 5) k = 5;
-        int a = k >> 1;
-        double s = (k & 1) ? -1.0 : 1.0;
-        int b = (a + 1) % 3, c = (a + 2) % 3;
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) R[i][j] = 0.0;
-        /* rotation by s*90 deg about axis a: e_b -> s e_c, e_c -> -s e_b */
-        R[a][a] = 1.0;
-        R[c][b] = s;
-        R[b][c] = -s;
+        pl_srd_hecht_matrix(r.u[0], &R[0][0], 1);
         return;
     }
     double a, b, s = pl_srd_disc_point(r.u[0], r.u[1], r.u[2], r.u[3], &a, &b);
@@ -107,21 +119,7 @@ static inline void pl_srd_rotations(int rule, double cos_a, double sin_a, uint64
     pl_rng_uniform4_lanes(seed, purpose, step, cell0, 0, u);
     if (rule == PL_RULE_HECHT_AXES) { /* pl_srd_rotation's matrix, written out for a = 0, 1, 2 */
 #pragma omp simd
-        for (size_t l = 0; l < NL; ++l) {
-            int64_t k = (int64_t)(u[0][l] * 6.0); /* 64-bit: the lanes of the doubles */
-            k = k > 5 ? 5 : k;
-            const int64_t a = k >> 1;
-            const double sg = (k & 1) ? -1.0 : 1.0;
-            R[0][l] = a == 0 ? 1.0 : 0.0; /* R[a][a] = 1, R[c][b] = s, R[b][c] = -s */
-            R[4][l] = a == 1 ? 1.0 : 0.0; /* with b = a + 1, c = a + 2 (mod 3) */
-            R[8][l] = a == 2 ? 1.0 : 0.0;
-            R[7][l] = a == 0 ? sg : 0.0;
-            R[5][l] = a == 0 ? -sg : 0.0;
-            R[2][l] = a == 1 ? sg : 0.0;
-            R[6][l] = a == 1 ? -sg : 0.0;
-            R[3][l] = a == 2 ? sg : 0.0;
-            R[1][l] = a == 2 ? -sg : 0.0;
-        }
+        for (size_t l = 0; l < NL; ++l) pl_srd_hecht_matrix(u[0][l], &R[0][l], NL);
         return;
     }
     uint32_t redo = 0; /* bit l: lane l draws again */
