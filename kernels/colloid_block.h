@@ -1,7 +1,8 @@
 /* A block of a colloid's neighbour-list partners copied into contiguous
  * arrays (private to kernels/): the SIMD loops of the pair kernels
  * (kernels/colloid_forces.c, kernels/colloid_slow.c) then read them with
- * plain vector loads, faster than the loops' own gathers. */
+ * plain vector loads.  gcc turns this copy into gathers with AVX-512; kept
+ * scalar it was slower on a Zen 4 machine (bench/RESULTS_colloid.md). */
 #ifndef PELOID_COLLOID_BLOCK_H
 #define PELOID_COLLOID_BLOCK_H
 

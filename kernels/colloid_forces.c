@@ -14,16 +14,18 @@
  * evaluated once by its owner.  Pass 1 (parallel over owners, static blocks)
  * evaluates the owner's pairs in ascending partner index, sums them into the
  * owner's force and torque and stores each pair's force (and the partner's
- * torque) in the partner's reverse entry.  Pass 2 (parallel over colloids)
- * adds to each colloid its reverse entries, contiguous and in ascending
- * owner index.  Every entry is written by the thread of the pair's owner
- * and read after the barrier, so there are no races and no atomics; each sum is formed in an order fixed
+ * torque) in the pair's slot, in slot order (sequential stores).  Pass 2
+ * (parallel over colloids) adds to each colloid its reverse entries, the
+ * slots of its pairs with other owners (rslot), in ascending owner index.
+ * Every slot is written by the thread of the pair's owner and read after
+ * the barrier, so there are no races and no atomics; each sum is formed in an order fixed
  * by the indices alone, so the forces are bitwise identical for any thread
  * count and for any valid list (see colloid_neighbors.c).  Chosen over
  * per-thread force buffers because their reduction order would follow the
- * thread count (and their size grows with it); the entries cost 24 bytes per
- * pair (48 with torques), which stay in cache for the colloid numbers of
- * interest.
+ * thread count (and their size grows with it); the slots cost 24 bytes per
+ * pair (48 with torques).  Stored by slot and read through rslot rather than
+ * the other way round: scattered stores that miss the cache stall the owner
+ * pass, scattered loads in pass 2 overlap (bench/RESULTS_colloid.md).
  *
  * Multiple time stepping (p->mts, colloids.slow_interval > 1): the pass over
  * the near list gives each pair's DLVO force times 1 - w (pl_pair_slow_share;
@@ -48,10 +50,10 @@ typedef struct {
     int32_t jov, jom, jdamp;
 } acc_t;
 
-/* One pair, i the owner: adds the force on i and i's torque (and, when E,
- * the pair's whole energy) to a, its guard maxima to a's, and returns in
- * tj the torque on j.  Returns the force on i in fo (zero beyond the
- * cut-off).  T: term mask; E: energies wanted. */
+/* One pair, i the owner: adds i's torque (and, when E, the pair's whole
+ * energy) to a, its guard maxima to a's, and returns in tj the torque on j
+ * and in fo the force on i (zero beyond the cut-off), which the caller adds
+ * to a->f in slot order.  T: term mask; E: energies wanted. */
 static inline __attribute__((always_inline)) void pair_eval(
     const pl_colloid_pair_params_t *p, const pl_colloid_view_t *v, size_t i, size_t j, double dx,
     double dy, double dz, double r2, const unsigned T, const int E, const int M, acc_t *a,
@@ -79,6 +81,8 @@ static inline __attribute__((always_inline)) void pair_eval(
             if (h >= p->coul_hcut) { /* Eq. 1 below 1e-15 there: its exp skipped */
                 s = pl_pair_vdw(r, d, p->hamaker);
                 s.u -= p->dlvo_shift;
+            } else if (h < p->prim_hm && d == p->prim_d) { /* the match point kept */
+                s = pl_pair_parabola(h, p->prim_hm, p->prim_mu, p->prim_vp, p->prim_c, p->dlvo_shift);
             } else {
                 s = pl_pair_dlvo(r, d, p->coul_C, p->kappa, p->hamaker, p->prim_hm, p->prim_h0,
                                  p->dlvo_shift);
@@ -161,9 +165,6 @@ static inline __attribute__((always_inline)) void pair_eval(
     fo[0] += fr * ex;
     fo[1] += fr * ey;
     fo[2] += fr * ez;
-    a->f[0] += fo[0];
-    a->f[1] += fo[1];
-    a->f[2] += fo[2];
     if (delta > 0.0) { /* the maximum starts at 0: only overlaps can raise it */
         double ov = delta / d;
         if (ov > a->ov) { a->ov = ov; a->jov = (int32_t)j; }
@@ -198,6 +199,8 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
     enum { BLK = 32 };
     const int FAR = !E && (T & PL_CT_DLVO);
     double bfx[BLK], bfy[BLK], bfz[BLK], bcls[BLK]; /* bcls: 0 out of range, 1 far, 2 other */
+    const int TQ = (T & PL_CT_HERTZ) && p->hertz_gamma_t > 0.0; /* torques on the partners */
+    double btx[BLK], bty[BLK], btz[BLK];
     const double far_gap = (T & PL_CT_LUB) && p->lub_hcut > p->coul_hcut ? p->lub_hcut : p->coul_hcut;
     /* fast share (M): from the gap mts_hout on the DLVO force is all slow,
      * so only lubrication keeps those pairs off the van der Waals path */
@@ -206,9 +209,8 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
     for (int32_t s0 = nl->start[i]; s0 < nl->start[i + 1]; s0 += BLK) {
         const int m = nl->start[i + 1] - s0 < BLK ? nl->start[i + 1] - s0 : BLK;
         if (FAR) {
-            /* the partners' coordinates first copied by scalar loads into
-             * contiguous block arrays, which the SIMD loop reads with plain
-             * vector loads (faster than the loop's own gathers, 4 per 4 pairs) */
+            /* the partners' coordinates first copied into contiguous block
+             * arrays, which the SIMD loop reads with plain vector loads */
             double gx[BLK], gy[BLK], gz[BLK], gr[BLK];
             pl_colloid_gather_block(nl, s0, m, v->x, v->y, v->z, v->rad, gx, gy, gz, gr);
 #pragma omp simd
@@ -245,29 +247,73 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
                 bcls[k] = in ? (far ? 1.0 : 2.0) : 0.0;
             }
         }
-        for (int k = 0; k < m; ++k) {
-            const int32_t s = s0 + k;
-            double fo[3], tj[3];
-            if (FAR && bcls[k] != 2.0) {
-                fo[0] = bfx[k], fo[1] = bfy[k], fo[2] = bfz[k];
-                a.f[0] += fo[0];
-                a.f[1] += fo[1];
-                a.f[2] += fo[2];
-                tj[0] = tj[1] = tj[2] = 0.0; /* van der Waals tail: no torque, k2 < 0, no contact */
-            } else {
-                size_t j = (size_t)nl->nbr[s];
+        if (FAR) {
+            /* the other pairs (class 2) one by one in slot order, their
+             * forces into the block arrays; then the sums in slot order and
+             * the reverse entries, each in a loop of its own (the same sums
+             * in the same order as one loop over the slots, in registers) */
+            for (int k = 0; k < m; ++k) {
+                if (bcls[k] != 2.0) continue;
+                const size_t j = (size_t)nl->nbr[s0 + k];
                 double dx = xi - v->x[j], dy = yi - v->y[j], dz = zi - v->z[j];
                 if (per[0]) dx -= L[0] * rint(dx * iL[0]);
                 if (per[1]) dy -= L[1] * rint(dy * iL[1]);
                 if (per[2]) dz -= L[2] * rint(dz * iL[2]);
+                double fo[3], tj[3];
                 pair_eval(p, v, i, j, dx, dy, dz, dx * dx + dy * dy + dz * dz, T, E, M, &a, fo, tj);
+                bfx[k] = fo[0];
+                bfy[k] = fo[1];
+                bfz[k] = fo[2];
+                if (TQ) {
+                    btx[k] = tj[0];
+                    bty[k] = tj[1];
+                    btz[k] = tj[2];
+                }
             }
+            double sx = a.f[0], sy = a.f[1], sz = a.f[2];
+            for (int k = 0; k < m; ++k) {
+                sx += bfx[k];
+                sy += bfy[k];
+                sz += bfz[k];
+            }
+            a.f[0] = sx;
+            a.f[1] = sy;
+            a.f[2] = sz;
+            for (int k = 0; k < m; ++k) {
+                const size_t q = 3 * (size_t)(s0 + k);
+                nl->pf[q] = bfx[k];
+                nl->pf[q + 1] = bfy[k];
+                nl->pf[q + 2] = bfz[k];
+            }
+            if (TQ)
+                for (int k = 0; k < m; ++k) {
+                    /* van der Waals tail and out of range: no torque */
+                    const int other = bcls[k] == 2.0;
+                    const size_t q = 3 * (size_t)(s0 + k);
+                    nl->pt[q] = other ? btx[k] : 0.0;
+                    nl->pt[q + 1] = other ? bty[k] : 0.0;
+                    nl->pt[q + 2] = other ? btz[k] : 0.0;
+                }
+            continue;
+        }
+        for (int k = 0; k < m; ++k) {
+            const int32_t s = s0 + k;
+            double fo[3], tj[3];
+            size_t j = (size_t)nl->nbr[s];
+            double dx = xi - v->x[j], dy = yi - v->y[j], dz = zi - v->z[j];
+            if (per[0]) dx -= L[0] * rint(dx * iL[0]);
+            if (per[1]) dy -= L[1] * rint(dy * iL[1]);
+            if (per[2]) dz -= L[2] * rint(dz * iL[2]);
+            pair_eval(p, v, i, j, dx, dy, dz, dx * dx + dy * dy + dz * dz, T, E, M, &a, fo, tj);
+            a.f[0] += fo[0];
+            a.f[1] += fo[1];
+            a.f[2] += fo[2];
             if (!E) {
-                size_t q = 3 * (size_t)nl->rpos[s];
+                size_t q = 3 * (size_t)s;
                 nl->pf[q] = fo[0];
                 nl->pf[q + 1] = fo[1];
                 nl->pf[q + 2] = fo[2];
-                if ((T & PL_CT_HERTZ) && p->hertz_gamma_t > 0.0) {
+                if (TQ) {
                     nl->pt[q] = tj[0];
                     nl->pt[q + 1] = tj[1];
                     nl->pt[q + 2] = tj[2];

@@ -92,7 +92,7 @@ static void reverse_entries(pl_colloid_nlist_t *nl)
     for (size_t i = 0; i < n; ++i) rs[i + 1] += rs[i];
     for (size_t i = 0; i < n; ++i)
         for (int32_t p = nl->start[i]; p < nl->start[i + 1]; ++p)
-            nl->rpos[p] = rs[nl->nbr[p]]++;
+            nl->rslot[rs[nl->nbr[p]]++] = p;
     for (size_t i = n; i > 0; --i) rs[i] = rs[i - 1];
     rs[0] = 0;
     nl->builds++;

@@ -11,7 +11,7 @@
  * holds no dissipative term, so it is a function of the positions only.
  *
  * Accumulation as in the force kernel: the owner sums its pairs in slot
- * order and writes each pair's force into the partner's reverse entry;
+ * order and writes each pair's force into the pair's slot;
  * the force kernel's pass 2 (pl_colloid_pair_reverse_one over
  * pl_colloid_slow_view) adds those after the barrier, in owner order.
  * A listed pair outside (hin, dlvo_hcut) adds exactly +-0, so any valid list
@@ -83,7 +83,7 @@ void pl_colloid_slow_owner_pass(const pl_colloid_pair_params_t *p, const pl_coll
                 sx += bfx[k];
                 sy += bfy[k];
                 sz += bfz[k];
-                size_t q = 3 * (size_t)nl->rpos[s];
+                size_t q = 3 * (size_t)s;
                 nl->pf[q] = bfx[k];
                 nl->pf[q + 1] = bfy[k];
                 nl->pf[q + 2] = bfz[k];

@@ -305,3 +305,54 @@ Test(colloid_forces, pair_energy_is_the_sum_of_the_terms)
     cr_expect(fabs(pl_colloid_pair_energy(&p, 4.0 + info.secmin_h, 2.0, 2.0) + p.dlvo_shift - info.secmin_u) <
               1e-12);
 }
+
+/* The kernel keeps the parabola's match point of the reference diameter
+ * (prim_mu, prim_vp, prim_c) instead of evaluating Eqs. 1-2 there for every
+ * pair in the primary minimum: for two colloids of the reference diameter
+ * at gaps across the parabola (and beyond its match gap) the kernel's force
+ * and energy equal pl_pair_dlvo's bit for bit; for a pair of another
+ * diameter (no kept point) too. */
+Test(colloid_forces, kept_match_point_gives_the_same_bits)
+{
+    pl_scene_dlvo_t s = {81, 50, 1, 300, 3.0e8, 4.76e-20, 4.03e-7, 6.0, 0.0, 1e-3};
+    const double d_ref = 1.24;
+    for (int other = 0; other < 2; ++other) {
+        const double ri = 0.62, rj = other ? 0.7 : 0.62, d = ri + rj;
+        long parabola = 0;
+        /* 40 gaps from an overlap of 0.01 to twice the match gap (~0.014 a0
+         * here), then 20 more out to 0.3 a0 */
+        for (int g = 0; g < 60; ++g) {
+            const double h = g < 40 ? -0.01 + 0.024 * g / 40.0 : 0.014 + 0.286 * (g - 40) / 20.0;
+            pl_colloid_t *c;
+            pl_err_t err;
+            cr_assert_eq(pl_colloid_alloc(2, 1, &c, &err), 0);
+            pl_colloid_pair_params_t *p = &c->pair;
+            pl_colloid_dlvo_info_t info;
+            cr_assert_eq(pl_colloid_dlvo_setup(&s, d_ref, p, &info, &err), 0, "%s", err.msg);
+            cr_assert(p->prim_d == d_ref);
+            p->terms = PL_CT_DLVO;
+            p->gap_cut = p->dlvo_hcut;
+            for (int k = 0; k < 3; ++k) p->box[k] = c->box[k] = 20.0, p->periodic[k] = c->periodic[k] = 1;
+            const double r = d + h;
+            c->x[0] = 5.0, c->x[1] = 5.0 + r;
+            c->y[0] = c->y[1] = c->z[0] = c->z[1] = 5.0;
+            c->rad[0] = ri, c->rad[1] = rj;
+            c->mass[0] = c->mass[1] = c->inertia[0] = c->inertia[1] = 1.0;
+            cr_assert_eq(pl_colloid_neighbors_init(c, d + p->gap_cut, 0.1, &err), 0);
+            cr_assert_eq(pl_colloid_forces(c, &err), 0, "%s", err.msg);
+            /* the kernel's own operations: r from the squared distance, the
+             * unit vector by the reciprocal */
+            const double dx = c->x[0] - c->x[1], rk = sqrt(dx * dx), ex = dx * (1.0 / rk);
+            pl_pair_val_t v = pl_pair_dlvo(rk, d, p->coul_C, p->kappa, p->hamaker, p->prim_hm,
+                                           p->prim_h0, p->dlvo_shift);
+            const double want = 0.0 + v.f * ex;
+            cr_expect(memcmp(&c->fx[0], &want, sizeof want) == 0, "d %g gap %g: force %.17g, want %.17g",
+                      d, h, c->fx[0], want);
+            const double e = pl_colloid_pair_energy(p, rk, ri, rj);
+            cr_expect(memcmp(&e, &v.u, sizeof e) == 0, "d %g gap %g: energy %.17g, want %.17g", d, h, e, v.u);
+            parabola += rk - d < p->prim_hm;
+            pl_colloid_free(c);
+        }
+        cr_expect(parabola > 10, "only %ld gaps inside the parabola", parabola);
+    }
+}

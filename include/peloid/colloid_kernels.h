@@ -43,6 +43,10 @@ typedef struct {
     int periodic[3]; /* minimum image along this axis */
     /* DLVO, Hecht Eqs. 1-2 + parabolic primary minimum (see colloid_pair.h) */
     double coul_C, kappa, hamaker, prim_hm, prim_h0, dlvo_shift, dlvo_hcut;
+    /* the parabola's match point for the pairs of diameter prim_d (the
+     * reference diameter): value, slope dU/dr and curvature, as
+     * pl_pair_dlvo computes them (a pair of another diameter computes its own) */
+    double prim_d, prim_mu, prim_vp, prim_c;
     /* gap beyond which the screened Coulomb term of Eq. 1 is below 1e-15 kT
      * and kT/a0 (the kernel skips its exponential there) */
     double coul_hcut;
@@ -102,8 +106,9 @@ void pl_colloid_cells_build(pl_colloid_cells_t *cells, size_t n, const double *x
  * thread three quarters of the work).  A colloid's own partners are listed in
  * ascending index; the reverse entries of a colloid are the pairs other
  * colloids own with it, in ascending owner index: the force kernel writes a
- * pair's result into its partner's reverse entry (rpos) and each colloid then
- * reads its own entries contiguously. */
+ * pair's result into the pair's own slot (in slot order, so its stores are
+ * sequential) and each colloid then reads its reverse entries' slots
+ * (rslot). */
 typedef struct {
     size_t n, cap;       /* colloids; capacity of the slot arrays */
     size_t npairs;       /* listed pairs (slots in use) */
@@ -112,9 +117,9 @@ typedef struct {
     int32_t *start;      /* n + 1: the own slots of i are start[i] .. start[i+1]-1 */
     int32_t *nbr;        /* cap: partner of each slot */
     int32_t *rstart;     /* n + 1: the reverse entries of i are rstart[i] .. rstart[i+1]-1 */
-    int32_t *rpos;       /* cap: reverse entry of each slot */
-    double *pf;          /* 3 cap: per reverse entry, the force on the owner from i */
-    double *pt;          /* 3 cap: per reverse entry, the torque on i (tangential friction) */
+    int32_t *rslot;      /* cap: the owner's slot of each reverse entry */
+    double *pf;          /* 3 cap: per slot, the force on the owner from its partner */
+    double *pt;          /* 3 cap: per slot, the torque on the partner (tangential friction) */
     double *x0, *y0, *z0;    /* n: positions at the last build */
     long long builds;        /* list builds so far (diagnostic, not state) */
 } pl_colloid_nlist_t;
@@ -209,9 +214,10 @@ static inline int pl_colloid_pair_torques(const pl_colloid_pair_params_t *p)
 static inline void pl_colloid_pair_reverse_one(const pl_colloid_nlist_t *nl,
                                                const pl_colloid_view_t *v, size_t i, int torques)
 {
-    const size_t q0 = 3 * (size_t)nl->rstart[i], q1 = 3 * (size_t)nl->rstart[i + 1];
+    const int32_t r0 = nl->rstart[i], r1 = nl->rstart[i + 1];
     double fx = v->fx[i], fy = v->fy[i], fz = v->fz[i];
-    for (size_t q = q0; q < q1; q += 3) {
+    for (int32_t r = r0; r < r1; ++r) {
+        const size_t q = 3 * (size_t)nl->rslot[r];
         fx -= nl->pf[q];
         fy -= nl->pf[q + 1];
         fz -= nl->pf[q + 2];
@@ -221,7 +227,8 @@ static inline void pl_colloid_pair_reverse_one(const pl_colloid_nlist_t *nl,
     v->fz[i] = fz;
     if (!torques) return;
     double tx = v->tx[i], ty = v->ty[i], tz = v->tz[i];
-    for (size_t q = q0; q < q1; q += 3) {
+    for (int32_t r = r0; r < r1; ++r) {
+        const size_t q = 3 * (size_t)nl->rslot[r];
         tx += nl->pt[q];
         ty += nl->pt[q + 1];
         tz += nl->pt[q + 2];

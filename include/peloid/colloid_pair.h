@@ -26,7 +26,7 @@ typedef struct {
 
 /* Hecht Eq. 1: C is the prefactor pi eps_r eps_0 [4kT/(ze) tanh(ze Psi0/4kT)]^2
  * in kT / a0 (src/colloid/colloid_params.c converts it). */
-static inline pl_pair_val_t pl_pair_coulomb(double r, double d, double C, double kappa)
+static inline __attribute__((always_inline)) pl_pair_val_t pl_pair_coulomb(double r, double d, double C, double kappa)
 {
     double ir = 1.0 / r;
     double u = C * d * d * ir * exp(-kappa * (r - d));
@@ -37,7 +37,7 @@ static inline pl_pair_val_t pl_pair_coulomb(double r, double d, double C, double
 
 /* Hecht Eq. 2 (r > d); F = -A d^6 / (6 r^3 (r^2-d^2)^2).  Two reciprocals
  * (1/r, shared with the caller's, and 1/(r^2-d^2)) instead of five divisions. */
-static inline pl_pair_val_t pl_pair_vdw(double r, double d, double A)
+static inline __attribute__((always_inline)) pl_pair_val_t pl_pair_vdw(double r, double d, double A)
 {
     double d2 = d * d, r2 = r * r, s = r2 - d2;
     double ir = 1.0 / r, ir2 = ir * ir, is = 1.0 / s;
@@ -49,7 +49,7 @@ static inline pl_pair_val_t pl_pair_vdw(double r, double d, double A)
 }
 
 /* Hecht Eqs. 1 + 2, no primary-minimum model (diverges at contact). */
-static inline pl_pair_val_t pl_pair_dlvo_raw(double r, double d, double C, double kappa, double A)
+static inline __attribute__((always_inline)) pl_pair_val_t pl_pair_dlvo_raw(double r, double d, double C, double kappa, double A)
 {
     pl_pair_val_t a = pl_pair_coulomb(r, d, C, kappa), b = pl_pair_vdw(r, d, A);
     pl_pair_val_t v = {a.u + b.u, a.f + b.f, a.k2 + b.k2};
@@ -63,7 +63,24 @@ static inline pl_pair_val_t pl_pair_dlvo_raw(double r, double d, double C, doubl
  * the gap h0; for the reference diameter hm is chosen so that the minimum is
  * exactly `depth` deep (src/colloid/colloid_params.c).  `shift` is subtracted so that
  * U is continuous at the cut-off. */
-static inline pl_pair_val_t pl_pair_dlvo(double r, double d, double C, double kappa, double A,
+static inline double pl_pair_parabola_curvature(double vp, double hm, double h0)
+{
+    return vp / (2.0 * (hm - h0));
+}
+
+/* The parabola of the primary minimum at gap h < hm, from the value mu and
+ * the slope vp = dU/dr of Eqs. 1-2 at the match gap hm and its curvature c
+ * (pl_pair_parabola_curvature); the force kernel keeps mu, vp and c of the
+ * reference diameter (pl_colloid_pair_params_t prim_*), the same numbers. */
+static inline pl_pair_val_t pl_pair_parabola(double h, double hm, double mu, double vp, double c,
+                                             double shift)
+{
+    double x = h - hm;
+    pl_pair_val_t v = {mu - shift + vp * x + c * x * x, -(vp + 2.0 * c * x), 2.0 * c};
+    return v;
+}
+
+static inline __attribute__((always_inline)) pl_pair_val_t pl_pair_dlvo(double r, double d, double C, double kappa, double A,
                                          double hm, double h0, double shift)
 {
     double h = r - d;
@@ -74,10 +91,7 @@ static inline pl_pair_val_t pl_pair_dlvo(double r, double d, double C, double ka
     }
     pl_pair_val_t m = pl_pair_dlvo_raw(d + hm, d, C, kappa, A);
     double vp = -m.f; /* dU/dr at the match point, > 0 (attractive) */
-    double c = vp / (2.0 * (hm - h0));
-    double x = h - hm;
-    pl_pair_val_t v = {m.u - shift + vp * x + c * x * x, -(vp + 2.0 * c * x), 2.0 * c};
-    return v;
+    return pl_pair_parabola(h, hm, m.u, vp, pl_pair_parabola_curvature(vp, hm, h0), shift);
 }
 
 /* Multiple time stepping: the share w of a pair's DLVO force carried by the

@@ -109,8 +109,12 @@ int pl_colloid_dlvo_setup(const pl_scene_dlvo_t *s, double d, pl_colloid_pair_pa
     pl_pair_val_t vm = pl_pair_dlvo_raw(d + hm, d, p->coul_C, p->kappa, p->hamaker);
     p->prim_hm = hm;
     p->prim_h0 = h0;
+    p->prim_d = d;
+    p->prim_mu = vm.u;
+    p->prim_vp = -vm.f;
+    p->prim_c = pl_pair_parabola_curvature(p->prim_vp, hm, h0);
     info->hm = hm;
-    info->curvature = -vm.f / (2.0 * (hm - h0));
+    info->curvature = p->prim_c;
     /* cut-off: beyond the last gap where |V| >= cutoff_energy */
     double tol = s->cutoff_energy, hc = NAN;
     for (int k = ng; k >= 0; --k) {
