@@ -22,32 +22,30 @@ void pl_colloid_kick(size_t n, double h, const double *restrict mass,
     for (size_t i = 0; i < n; ++i) pl_colloid_kick_one(i, h, mass, inertia, fx, fy, fz, tx, ty, tz, vx, vy, vz, wx, wy, wz);
 }
 
-void pl_colloid_quat_rotate(double px, double py, double pz, double q[4])
+/* gcc's SLP vectoriser fused this function's quaternion product (the pairs
+ * a b - c, a b + c) into vfmaddsub despite -ffp-contract=off, one rounding
+ * fewer than the source; without SLP it rounds as written, as the vector
+ * lanes of pl_colloid_rotate_block do (tests/test_colloid_md.c). */
+#if defined(__GNUC__) && !defined(__clang__)
+#define PL_ROUND_AS_WRITTEN __attribute__((optimize("no-tree-slp-vectorize")))
+#else
+#define PL_ROUND_AS_WRITTEN
+#endif
+
+PL_ROUND_AS_WRITTEN void pl_colloid_quat_rotate(double px, double py, double pz, double q[4])
 {
-    /* Hecht Eq. 10: q <- exp(phi/2) q, phi = omega dt in the space frame */
+    /* Hecht Eq. 10 (kernels/colloid_integrate.h) */
     double th2 = px * px + py * py + pz * pz;
     double c, s;
     if (th2 < 1e-4) {
-        /* |phi| < 0.01 (the usual MD step): Taylor series of cos(th/2) and
-         * sin(th/2)/th to x^4, x = th^2/4; the next terms are below 1e-22 */
-        double x = 0.25 * th2;
-        c = 1.0 - x * (1.0 / 2 - x * (1.0 / 24 - x * (1.0 / 720 - x * (1.0 / 40320))));
-        s = 0.5 * (1.0 - x * (1.0 / 6 - x * (1.0 / 120 - x * (1.0 / 5040 - x * (1.0 / 362880)))));
+        pl_colloid_half_angle_small(th2, &c, &s);
     } else {
         double th = sqrt(th2);
         c = cos(0.5 * th);
         s = sin(0.5 * th) / th;
     }
-    double a0 = c, a1 = s * px, a2 = s * py, a3 = s * pz;
-    double r0 = a0 * q[0] - a1 * q[1] - a2 * q[2] - a3 * q[3];
-    double r1 = a0 * q[1] + a1 * q[0] + a2 * q[3] - a3 * q[2];
-    double r2 = a0 * q[2] - a1 * q[3] + a2 * q[0] + a3 * q[1];
-    double r3 = a0 * q[3] + a1 * q[2] - a2 * q[1] + a3 * q[0];
-    double nrm = 1.0 / sqrt(r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3);
-    q[0] = r0 * nrm;
-    q[1] = r1 * nrm;
-    q[2] = r2 * nrm;
-    q[3] = r3 * nrm;
+    const pl_colloid_quat_t r = pl_colloid_quat_apply(c, s, px, py, pz, q[0], q[1], q[2], q[3]);
+    for (int k = 0; k < 4; ++k) q[k] = r.q[k];
 }
 
 void pl_colloid_drift(size_t n, double dt, const double box[3], const int periodic[3],

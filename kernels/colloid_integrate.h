@@ -73,6 +73,37 @@ static inline void pl_colloid_move_one(size_t i, double dt, const double box[3],
     if (periodic[2]) pl_colloid_wrap(&z[i], &iz[i], box[2]);
 }
 
+/* Hecht Eq. 10, q <- exp(phi/2) q with phi = omega dt in the space frame,
+ * in two parts shared by pl_colloid_quat_rotate (kernels/colloid_integrate.c)
+ * and the vector lanes of pl_colloid_rotate_block, so both round the same.
+ * The factors of exp(phi/2) = (c, s phi) for a small angle, th2 = |phi|^2
+ * < 1e-4 (|phi| < 0.01, the usual MD step): cos(th/2) and sin(th/2)/th by
+ * their Taylor series to x^4, x = th2/4 (the next terms are below 1e-22). */
+static inline __attribute__((always_inline)) void pl_colloid_half_angle_small(double th2, double *c, double *s)
+{
+    const double x = 0.25 * th2;
+    *c = 1.0 - x * (1.0 / 2 - x * (1.0 / 24 - x * (1.0 / 720 - x * (1.0 / 40320))));
+    *s = 0.5 * (1.0 - x * (1.0 / 6 - x * (1.0 / 120 - x * (1.0 / 5040 - x * (1.0 / 362880)))));
+}
+
+typedef struct {
+    double q[4];
+} pl_colloid_quat_t;
+
+/* (c, s phi) q, normalised. */
+static inline __attribute__((always_inline)) pl_colloid_quat_t pl_colloid_quat_apply(
+    double c, double s, double px, double py, double pz, double Q0, double Q1, double Q2, double Q3)
+{
+    const double a0 = c, a1 = s * px, a2 = s * py, a3 = s * pz;
+    const double r0 = a0 * Q0 - a1 * Q1 - a2 * Q2 - a3 * Q3;
+    const double r1 = a0 * Q1 + a1 * Q0 + a2 * Q3 - a3 * Q2;
+    const double r2 = a0 * Q2 - a1 * Q3 + a2 * Q0 + a3 * Q1;
+    const double r3 = a0 * Q3 + a1 * Q2 - a2 * Q1 + a3 * Q0;
+    const double nrm = 1.0 / sqrt(r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3);
+    const pl_colloid_quat_t r = {{r0 * nrm, r1 * nrm, r2 * nrm, r3 * nrm}};
+    return r;
+}
+
 /* Colloid i's orientation (q0..q3)[i] rotated by phi (pl_colloid_quat_rotate). */
 static inline void pl_colloid_quat_rotate_at(size_t i, double px, double py, double pz, double *restrict q0,
                                              double *restrict q1, double *restrict q2, double *restrict q3)
@@ -106,20 +137,14 @@ static inline void pl_colloid_rotate_block(size_t b, size_t e, double dt, const 
         const double px = dt * wx[i], py = dt * wy[i], pz = dt * wz[i];
         const double th2 = px * px + py * py + pz * pz;
         const int small = th2 < 1e-4;
-        const double x = 0.25 * th2; /* cos(th/2), sin(th/2)/th to x^4; next terms < 1e-22 */
-        const double c = 1.0 - x * (1.0 / 2 - x * (1.0 / 24 - x * (1.0 / 720 - x * (1.0 / 40320))));
-        const double sn = 0.5 * (1.0 - x * (1.0 / 6 - x * (1.0 / 120 - x * (1.0 / 5040 - x * (1.0 / 362880)))));
-        const double a0 = c, a1 = sn * px, a2 = sn * py, a3 = sn * pz;
+        double c, sn;
+        pl_colloid_half_angle_small(th2, &c, &sn);
         const double Q0 = q0[i], Q1 = q1[i], Q2 = q2[i], Q3 = q3[i];
-        const double r0 = a0 * Q0 - a1 * Q1 - a2 * Q2 - a3 * Q3;
-        const double r1 = a0 * Q1 + a1 * Q0 + a2 * Q3 - a3 * Q2;
-        const double r2 = a0 * Q2 - a1 * Q3 + a2 * Q0 + a3 * Q1;
-        const double r3 = a0 * Q3 + a1 * Q2 - a2 * Q1 + a3 * Q0;
-        const double nrm = 1.0 / sqrt(r0 * r0 + r1 * r1 + r2 * r2 + r3 * r3);
-        q0[i] = small ? r0 * nrm : Q0;
-        q1[i] = small ? r1 * nrm : Q1;
-        q2[i] = small ? r2 * nrm : Q2;
-        q3[i] = small ? r3 * nrm : Q3;
+        const pl_colloid_quat_t r = pl_colloid_quat_apply(c, sn, px, py, pz, Q0, Q1, Q2, Q3);
+        q0[i] = small ? r.q[0] : Q0;
+        q1[i] = small ? r.q[1] : Q1;
+        q2[i] = small ? r.q[2] : Q2;
+        q3[i] = small ? r.q[3] : Q3;
         big += !small;
     }
     if (big)
