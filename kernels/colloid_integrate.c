@@ -9,6 +9,7 @@
 #include <math.h>
 
 #include "colloid_integrate.h"
+#include "peloid/real.h" /* PL_ROUND_AS_WRITTEN */
 
 void pl_colloid_kick(size_t n, double h, const double *restrict mass,
                      const double *restrict inertia, const double *restrict fx,
@@ -22,15 +23,9 @@ void pl_colloid_kick(size_t n, double h, const double *restrict mass,
     for (size_t i = 0; i < n; ++i) pl_colloid_kick_one(i, h, mass, inertia, fx, fy, fz, tx, ty, tz, vx, vy, vz, wx, wy, wz);
 }
 
-/* gcc's SLP vectoriser fused this function's quaternion product (the pairs
- * a b - c, a b + c) into vfmaddsub despite -ffp-contract=off, one rounding
- * fewer than the source; without SLP it rounds as written, as the vector
- * lanes of pl_colloid_rotate_block do (tests/test_colloid_md.c). */
-#if defined(__GNUC__) && !defined(__clang__)
-#define PL_ROUND_AS_WRITTEN __attribute__((optimize("no-tree-slp-vectorize")))
-#else
-#define PL_ROUND_AS_WRITTEN
-#endif
+/* Rounds as written (PL_ROUND_AS_WRITTEN, peloid/real.h: gcc had fused the
+ * quaternion product into vfmaddsub), as the vector lanes of
+ * pl_colloid_rotate_block do (tests/test_colloid_md.c). */
 
 PL_ROUND_AS_WRITTEN void pl_colloid_quat_rotate(double px, double py, double pz, double q[4])
 {

@@ -17,4 +17,15 @@ typedef double pl_real;
 /* The one spelling of pi. */
 #define PL_PI 3.14159265358979323846
 
+/* For a function whose products gcc's SLP vectoriser fuses into vfmaddsub
+ * (pairs a b - c, a b + c, as in a quaternion product) despite
+ * -ffp-contract=off, one rounding fewer than the source: without SLP the
+ * function rounds as written.  (Functions outlined by OpenMP do not inherit
+ * it, and the loop vectoriser's fusions are not affected.) */
+#if defined(__GNUC__) && !defined(__clang__)
+#define PL_ROUND_AS_WRITTEN __attribute__((optimize("no-tree-slp-vectorize")))
+#else
+#define PL_ROUND_AS_WRITTEN
+#endif
+
 #endif
