@@ -251,7 +251,10 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
             /* the other pairs (class 2) one by one in slot order, their
              * forces into the block arrays; then the sums in slot order and
              * the reverse entries, each in a loop of its own (the same sums
-             * in the same order as one loop over the slots, in registers) */
+             * in the same order as one loop over the slots, in registers);
+             * the van der Waals tail and out of range: no torque */
+            if (TQ)
+                for (int k = 0; k < m; ++k) btx[k] = bty[k] = btz[k] = 0.0;
             for (int k = 0; k < m; ++k) {
                 if (bcls[k] != 2.0) continue;
                 const size_t j = (size_t)nl->nbr[s0 + k];
@@ -287,12 +290,10 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
             }
             if (TQ)
                 for (int k = 0; k < m; ++k) {
-                    /* van der Waals tail and out of range: no torque */
-                    const int other = bcls[k] == 2.0;
                     const size_t q = 3 * (size_t)(s0 + k);
-                    nl->pt[q] = other ? btx[k] : 0.0;
-                    nl->pt[q + 1] = other ? bty[k] : 0.0;
-                    nl->pt[q + 2] = other ? btz[k] : 0.0;
+                    nl->pt[q] = btx[k];
+                    nl->pt[q + 1] = bty[k];
+                    nl->pt[q + 2] = btz[k];
                 }
             continue;
         }
