@@ -250,7 +250,7 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
         if (FAR) {
             /* the other pairs (class 2) one by one in slot order, their
              * forces into the block arrays; then the sums in slot order and
-             * the reverse entries, each in a loop of its own (the same sums
+             * the pair slots, each in a loop of its own (the same sums
              * in the same order as one loop over the slots, in registers);
              * the van der Waals tail and out of range: no torque */
             if (TQ)

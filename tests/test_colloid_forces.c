@@ -361,13 +361,14 @@ Test(colloid_forces, kept_match_point_gives_the_same_bits)
  * the kernel's block path): two equal colloids in contact, sliding and
  * spinning; each torque is -R e x F_t with the same lever arm, so the two
  * are equal bit for bit, and not zero (the partner's comes through its
- * reverse entry). */
+ * reverse entry).  A third colloid in the van der Waals tail of both (a far
+ * pair of the same blocks, spinning too) gets no torque at all. */
 Test(colloid_forces, partner_friction_torque_with_dlvo)
 {
     pl_scene_dlvo_t s = {81, 50, 1, 300, 3.0e8, 4.76e-20, 4.03e-7, 6.0, 0.0, 1e-3};
     pl_colloid_t *c;
     pl_err_t err;
-    cr_assert_eq(pl_colloid_alloc(2, 1, &c, &err), 0);
+    cr_assert_eq(pl_colloid_alloc(3, 1, &c, &err), 0);
     pl_colloid_pair_params_t *p = &c->pair;
     pl_colloid_dlvo_info_t info;
     cr_assert_eq(pl_colloid_dlvo_setup(&s, 1.24, p, &info, &err), 0, "%s", err.msg);
@@ -377,13 +378,17 @@ Test(colloid_forces, partner_friction_torque_with_dlvo)
     for (int k = 0; k < 3; ++k) p->box[k] = c->box[k] = 20.0, p->periodic[k] = c->periodic[k] = 1;
     c->x[0] = 5.0, c->y[0] = 5.0, c->z[0] = 5.0;
     c->x[1] = 5.0 + 1.2, c->y[1] = 5.0 + 0.2, c->z[1] = 5.0 - 0.1; /* overlap ~0.02 */
-    c->vy[0] = 0.3, c->vz[1] = -0.2, c->wx[0] = 0.1, c->wz[1] = 0.4;
-    for (int i = 0; i < 2; ++i) c->rad[i] = 0.62, c->mass[i] = c->inertia[i] = 1.0;
+    c->x[2] = 5.6, c->y[2] = 5.0 + 1.9, c->z[2] = 5.0; /* gap ~0.7 to both: the tail */
+    c->vy[0] = 0.3, c->vz[1] = -0.2, c->wx[0] = 0.1, c->wz[1] = 0.4, c->wy[2] = -0.3, c->vx[2] = 0.2;
+    for (int i = 0; i < 3; ++i) c->rad[i] = 0.62, c->mass[i] = c->inertia[i] = 1.0;
     cr_assert_eq(pl_colloid_neighbors_init(c, 1.24 + p->gap_cut, 0.1, &err), 0);
     cr_assert_eq(pl_colloid_forces(c, &err), 0, "%s", err.msg);
     const double t0[3] = {c->tx[0], c->ty[0], c->tz[0]}, t1[3] = {c->tx[1], c->ty[1], c->tz[1]};
     cr_expect(memcmp(t0, t1, sizeof t0) == 0, "torques (%g %g %g) and (%g %g %g)", t0[0], t0[1], t0[2], t1[0],
               t1[1], t1[2]);
     cr_expect(fabs(t0[0]) + fabs(t0[1]) + fabs(t0[2]) > 1e-3, "no friction torque: (%g %g %g)", t0[0], t0[1], t0[2]);
+    cr_expect(c->tx[2] == 0.0 && c->ty[2] == 0.0 && c->tz[2] == 0.0, "torque on the far colloid: (%g %g %g)",
+              c->tx[2], c->ty[2], c->tz[2]);
+    cr_expect(c->fy[2] != 0.0, "the third colloid feels no van der Waals tail: put it nearer");
     pl_colloid_free(c);
 }

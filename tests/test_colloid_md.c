@@ -277,10 +277,11 @@ Test(colloid_md, fused_step_equals_separate_passes)
 }
 
 /* The orientation update: the vector lanes of the drift (blocks of 64
- * colloids, small angles) and the scalar pl_colloid_quat_rotate (large
- * angles, BD) round the same, bit for bit, for small and large angles
- * mixed in one block.  (gcc's SLP vectoriser had fused the scalar
- * function's product into vfmaddsub: one rounding fewer, other bits.) */
+ * colloids, small angles) and the scalar pl_colloid_quat_rotate (what BD
+ * uses) round the same, bit for bit.  (gcc's SLP vectoriser had fused the
+ * scalar function's product into vfmaddsub: one rounding fewer, other
+ * bits.)  The large angles mixed into the blocks check that the drift
+ * leaves them to the scalar function. */
 Test(colloid_md, orientation_lanes_equal_scalar_rotation)
 {
     enum { N = 200 };

@@ -45,7 +45,9 @@ typedef struct {
     double coul_C, kappa, hamaker, prim_hm, prim_h0, dlvo_shift, dlvo_hcut;
     /* the parabola's match point for the pairs of diameter prim_d (the
      * reference diameter): value, slope dU/dr and curvature, as
-     * pl_pair_dlvo computes them (a pair of another diameter computes its own) */
+     * pl_pair_dlvo computes them (a pair of another diameter computes its
+     * own); set with prim_hm by pl_colloid_dlvo_setup, from the constants
+     * above: a change of any of them must set these again */
     double prim_d, prim_mu, prim_vp, prim_c;
     /* gap beyond which the screened Coulomb term of Eq. 1 is below 1e-15 kT
      * and kT/a0 (the kernel skips its exponential there) */

@@ -56,13 +56,7 @@ static inline __attribute__((always_inline)) pl_pair_val_t pl_pair_dlvo_raw(doub
     return v;
 }
 
-/* DLVO with the parabolic primary minimum (Hecht Sec. II): for a surface gap
- * h = r - d below the match gap hm the potential is the parabola
- *   U = V(hm) + V'(hm) (h - hm) + c (h - hm)^2,  c = V'(hm) / (2 (hm - h0)),
- * which joins Eqs. 1-2 with continuous value and slope and has its minimum at
- * the gap h0; for the reference diameter hm is chosen so that the minimum is
- * exactly `depth` deep (src/colloid/colloid_params.c).  `shift` is subtracted so that
- * U is continuous at the cut-off. */
+/* The parabola's curvature c (pl_pair_dlvo). */
 static inline double pl_pair_parabola_curvature(double vp, double hm, double h0)
 {
     return vp / (2.0 * (hm - h0));
@@ -80,6 +74,13 @@ static inline pl_pair_val_t pl_pair_parabola(double h, double hm, double mu, dou
     return v;
 }
 
+/* DLVO with the parabolic primary minimum (Hecht Sec. II): for a surface gap
+ * h = r - d below the match gap hm the potential is the parabola
+ *   U = V(hm) + V'(hm) (h - hm) + c (h - hm)^2,  c = V'(hm) / (2 (hm - h0)),
+ * which joins Eqs. 1-2 with continuous value and slope and has its minimum at
+ * the gap h0; for the reference diameter hm is chosen so that the minimum is
+ * exactly `depth` deep (src/colloid/colloid_params.c).  `shift` is subtracted so that
+ * U is continuous at the cut-off. */
 static inline __attribute__((always_inline)) pl_pair_val_t pl_pair_dlvo(double r, double d, double C, double kappa, double A,
                                          double hm, double h0, double shift)
 {
