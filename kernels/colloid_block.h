@@ -6,6 +6,8 @@
 #ifndef PELOID_COLLOID_BLOCK_H
 #define PELOID_COLLOID_BLOCK_H
 
+#include <math.h>
+
 #include "peloid/colloid_kernels.h"
 
 /* Positions and radii of the partners in slots s0 .. s0 + m - 1 of nl. */
@@ -22,6 +24,25 @@ static inline void pl_colloid_gather_block(const pl_colloid_nlist_t *nl, int32_t
         gz[k] = z[j];
         gr[k] = rad[j];
     }
+}
+
+/* The minimum image of a separation on the periodic axes (per[d] != 0). */
+static inline void pl_colloid_min_image(const int per[3], const double L[3], const double iL[3], double *dx,
+                                        double *dy, double *dz)
+{
+    if (per[0]) *dx -= L[0] * rint(*dx * iL[0]);
+    if (per[1]) *dy -= L[1] * rint(*dy * iL[1]);
+    if (per[2]) *dz -= L[2] * rint(*dz * iL[2]);
+}
+
+/* A pair's three components into its slot s of a per-slot array (nl->pf,
+ * nl->pt). */
+static inline void pl_colloid_slot_store(double *a, int32_t s, double x, double y, double z)
+{
+    const size_t q = 3 * (size_t)s;
+    a[q] = x;
+    a[q + 1] = y;
+    a[q + 2] = z;
 }
 
 #endif

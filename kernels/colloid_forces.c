@@ -259,9 +259,7 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
                 if (bcls[k] != 2.0) continue;
                 const size_t j = (size_t)nl->nbr[s0 + k];
                 double dx = xi - v->x[j], dy = yi - v->y[j], dz = zi - v->z[j];
-                if (per[0]) dx -= L[0] * rint(dx * iL[0]);
-                if (per[1]) dy -= L[1] * rint(dy * iL[1]);
-                if (per[2]) dz -= L[2] * rint(dz * iL[2]);
+                pl_colloid_min_image(per, L, iL, &dx, &dy, &dz);
                 double fo[3], tj[3];
                 pair_eval(p, v, i, j, dx, dy, dz, dx * dx + dy * dy + dz * dz, T, E, M, &a, fo, tj);
                 bfx[k] = fo[0];
@@ -282,19 +280,9 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
             a.f[0] = sx;
             a.f[1] = sy;
             a.f[2] = sz;
-            for (int k = 0; k < m; ++k) {
-                const size_t q = 3 * (size_t)(s0 + k);
-                nl->pf[q] = bfx[k];
-                nl->pf[q + 1] = bfy[k];
-                nl->pf[q + 2] = bfz[k];
-            }
+            for (int k = 0; k < m; ++k) pl_colloid_slot_store(nl->pf, s0 + k, bfx[k], bfy[k], bfz[k]);
             if (TQ)
-                for (int k = 0; k < m; ++k) {
-                    const size_t q = 3 * (size_t)(s0 + k);
-                    nl->pt[q] = btx[k];
-                    nl->pt[q + 1] = bty[k];
-                    nl->pt[q + 2] = btz[k];
-                }
+                for (int k = 0; k < m; ++k) pl_colloid_slot_store(nl->pt, s0 + k, btx[k], bty[k], btz[k]);
             continue;
         }
         for (int k = 0; k < m; ++k) {
@@ -302,23 +290,14 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
             double fo[3], tj[3];
             size_t j = (size_t)nl->nbr[s];
             double dx = xi - v->x[j], dy = yi - v->y[j], dz = zi - v->z[j];
-            if (per[0]) dx -= L[0] * rint(dx * iL[0]);
-            if (per[1]) dy -= L[1] * rint(dy * iL[1]);
-            if (per[2]) dz -= L[2] * rint(dz * iL[2]);
+            pl_colloid_min_image(per, L, iL, &dx, &dy, &dz);
             pair_eval(p, v, i, j, dx, dy, dz, dx * dx + dy * dy + dz * dz, T, E, M, &a, fo, tj);
             a.f[0] += fo[0];
             a.f[1] += fo[1];
             a.f[2] += fo[2];
             if (!E) {
-                size_t q = 3 * (size_t)s;
-                nl->pf[q] = fo[0];
-                nl->pf[q + 1] = fo[1];
-                nl->pf[q + 2] = fo[2];
-                if (TQ) {
-                    nl->pt[q] = tj[0];
-                    nl->pt[q + 1] = tj[1];
-                    nl->pt[q + 2] = tj[2];
-                }
+                pl_colloid_slot_store(nl->pf, s, fo[0], fo[1], fo[2]);
+                if (TQ) pl_colloid_slot_store(nl->pt, s, tj[0], tj[1], tj[2]);
             }
         }
     }

@@ -70,9 +70,7 @@ void pl_colloid_slow_owner_pass(const pl_colloid_pair_params_t *p, const pl_coll
                 if (bcl[k] != 0.0) { /* Eqs. 1 + 2 with the exponential (scalar) */
                     size_t j = (size_t)nl->nbr[s];
                     double dx = xi - x[j], dy = yi - y[j], dz = zi - z[j];
-                    if (per[0]) dx -= L[0] * rint(dx * iL[0]);
-                    if (per[1]) dy -= L[1] * rint(dy * iL[1]);
-                    if (per[2]) dz -= L[2] * rint(dz * iL[2]);
+                    pl_colloid_min_image(per, L, iL, &dx, &dy, &dz);
                     double r = sqrt(br2[k]), d = ri + rad[j];
                     pl_pair_val_t v = pl_pair_dlvo_raw(r, d, p->coul_C, p->kappa, p->hamaker);
                     double fr = bw[k] * v.f / r;
@@ -83,10 +81,7 @@ void pl_colloid_slow_owner_pass(const pl_colloid_pair_params_t *p, const pl_coll
                 sx += bfx[k];
                 sy += bfy[k];
                 sz += bfz[k];
-                size_t q = 3 * (size_t)s;
-                nl->pf[q] = bfx[k];
-                nl->pf[q + 1] = bfy[k];
-                nl->pf[q + 2] = bfz[k];
+                pl_colloid_slot_store(nl->pf, s, bfx[k], bfy[k], bfz[k]);
             }
         }
         fsx[i] = sx;
