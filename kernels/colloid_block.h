@@ -35,11 +35,12 @@ static inline void pl_colloid_min_image(const int per[3], const double L[3], con
     if (per[2]) *dz -= L[2] * rint(*dz * iL[2]);
 }
 
-/* A pair's three components into its slot s of a per-slot array (nl->pf,
- * nl->pt). */
-static inline void pl_colloid_slot_store(double *a, int32_t s, double x, double y, double z)
+/* Slot s's three components into a per-pair array (nl->pf, nl->pt), at
+ * the place of nl's layout (pl_colloid_pair_at). */
+static inline void pl_colloid_pair_store(const pl_colloid_nlist_t *nl, double *a, int32_t s, double x,
+                                         double y, double z)
 {
-    const size_t q = 3 * (size_t)s;
+    const size_t q = pl_colloid_pair_at(nl, s);
     a[q] = x;
     a[q + 1] = y;
     a[q + 2] = z;

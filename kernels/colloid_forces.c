@@ -14,18 +14,21 @@
  * evaluated once by its owner.  Pass 1 (parallel over owners, static blocks)
  * evaluates the owner's pairs in ascending partner index, sums them into the
  * owner's force and torque and stores each pair's force (and the partner's
- * torque) in the pair's slot, in slot order (sequential stores).  Pass 2
- * (parallel over colloids) adds to each colloid its reverse entries, the
- * slots of its pairs with other owners (rslot), in ascending owner index.
- * Every slot is written by the thread of the pair's owner and read after
+ * torque) for the partner.  Pass 2 (parallel over colloids) adds to each
+ * colloid its reverse entries, the results of its pairs with other owners,
+ * in ascending owner index.  Where the results lie (by slot or by reverse
+ * entry) is the list's layout, chosen by the thread count
+ * (pl_colloid_nlist_t); the values and the order of the sums are the same.
+ * Every result is written by the thread of the pair's owner and read after
  * the barrier, so there are no races and no atomics; each sum is formed in an order fixed
  * by the indices alone, so the forces are bitwise identical for any thread
  * count and for any valid list (see colloid_neighbors.c).  Chosen over
  * per-thread force buffers because their reduction order would follow the
  * thread count (and their size grows with it); the slots cost 24 bytes per
- * pair (48 with torques).  Stored by slot and read through rslot rather than
- * the other way round: scattered stores that miss the cache stall the owner
- * pass, scattered loads in pass 2 overlap (bench/RESULTS_colloid.md).
+ * pair (48 with torques).  One thread stores by slot and reads through
+ * rslot: scattered stores that miss L1 slowed its owner pass more than
+ * pass 2's scattered loads cost; with more threads, loads of lines another
+ * core wrote cost more than stores (bench/RESULTS_colloid.md).
  *
  * Multiple time stepping (p->mts, colloids.slow_interval > 1): the pass over
  * the near list gives each pair's DLVO force times 1 - w (pl_pair_slow_share;
@@ -280,9 +283,9 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
             a.f[0] = sx;
             a.f[1] = sy;
             a.f[2] = sz;
-            for (int k = 0; k < m; ++k) pl_colloid_slot_store(nl->pf, s0 + k, bfx[k], bfy[k], bfz[k]);
+            for (int k = 0; k < m; ++k) pl_colloid_pair_store(nl, nl->pf, s0 + k, bfx[k], bfy[k], bfz[k]);
             if (TQ)
-                for (int k = 0; k < m; ++k) pl_colloid_slot_store(nl->pt, s0 + k, btx[k], bty[k], btz[k]);
+                for (int k = 0; k < m; ++k) pl_colloid_pair_store(nl, nl->pt, s0 + k, btx[k], bty[k], btz[k]);
             continue;
         }
         for (int k = 0; k < m; ++k) {
@@ -296,8 +299,8 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
             a.f[1] += fo[1];
             a.f[2] += fo[2];
             if (!E) {
-                pl_colloid_slot_store(nl->pf, s, fo[0], fo[1], fo[2]);
-                if (TQ) pl_colloid_slot_store(nl->pt, s, tj[0], tj[1], tj[2]);
+                pl_colloid_pair_store(nl, nl->pf, s, fo[0], fo[1], fo[2]);
+                if (TQ) pl_colloid_pair_store(nl, nl->pt, s, tj[0], tj[1], tj[2]);
             }
         }
     }

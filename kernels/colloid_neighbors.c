@@ -82,7 +82,7 @@ static size_t scan_cells(const pl_colloid_cells_t *c, const double box[3], const
 
 /* Reverse entries (counting transpose, owners in ascending order) and the
  * slot count, from start and nbr. */
-static void reverse_entries(pl_colloid_nlist_t *nl)
+static void reverse_entries(pl_colloid_nlist_t *nl, int nthreads)
 {
     const size_t n = nl->n;
     nl->npairs = (size_t)nl->start[n];
@@ -91,10 +91,16 @@ static void reverse_entries(pl_colloid_nlist_t *nl)
     for (size_t p = 0; p < nl->npairs; ++p) rs[nl->nbr[p] + 1]++;
     for (size_t i = 0; i < n; ++i) rs[i + 1] += rs[i];
     for (size_t i = 0; i < n; ++i)
-        for (int32_t p = nl->start[i]; p < nl->start[i + 1]; ++p)
-            nl->rslot[rs[nl->nbr[p]]++] = p;
+        for (int32_t p = nl->start[i]; p < nl->start[i + 1]; ++p) {
+            const int32_t r = rs[nl->nbr[p]]++;
+            nl->rslot[r] = p;
+            nl->spos[p] = r;
+        }
     for (size_t i = n; i > 0; --i) rs[i] = rs[i - 1];
     rs[0] = 0;
+    /* the layout of the pair results (pl_colloid_nlist_t): by reverse entry
+     * where the kernels' regions run on several threads */
+    nl->by_entry = nthreads > 1 && n >= PL_COLLOID_OMP_MIN;
     nl->builds++;
 }
 
@@ -139,7 +145,7 @@ void pl_colloid_nlist_fill(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cel
         nl->y0[i] = y[i];
         nl->z0[i] = z[i];
     }
-    reverse_entries(nl);
+    reverse_entries(nl, nthreads);
 }
 
 /* The near list of multiple time stepping: the pairs of the full list
@@ -194,5 +200,5 @@ void pl_colloid_nlist_near_fill(pl_colloid_nlist_t *near, const pl_colloid_nlist
 #pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i) near_scan(near, full, p, x, y, z, rad, i, 1);
     near->skin = full->skin;
-    reverse_entries(near);
+    reverse_entries(near, nthreads);
 }

@@ -81,7 +81,7 @@ void pl_colloid_slow_owner_pass(const pl_colloid_pair_params_t *p, const pl_coll
                 sx += bfx[k];
                 sy += bfy[k];
                 sz += bfz[k];
-                pl_colloid_slot_store(nl->pf, s, bfx[k], bfy[k], bfz[k]);
+                pl_colloid_pair_store(nl, nl->pf, s, bfx[k], bfy[k], bfz[k]);
             }
         }
         fsx[i] = sx;

@@ -167,12 +167,13 @@ static long direct_sum_check(const pl_colloid_t *c, const char *what)
     return inside;
 }
 
-/* 300 polydisperse colloids with DLVO + Hertz + WCA in a periodic 40^3 box. */
-static pl_colloid_t *random_colloids(size_t n, double skin_fraction)
+/* 300 polydisperse colloids with DLVO + Hertz + WCA in a periodic 40^3 box,
+ * for nthreads threads. */
+static pl_colloid_t *random_colloids_threads(size_t n, double skin_fraction, int nthreads)
 {
     pl_colloid_t *c;
     pl_err_t err;
-    cr_assert_eq(pl_colloid_alloc(n, omp_get_max_threads(), &c, &err), 0);
+    cr_assert_eq(pl_colloid_alloc(n, nthreads, &c, &err), 0);
     pl_colloid_pair_params_t *p = &c->pair;
     pl_scene_dlvo_t s = {81, 20, 1, 300, 1.4e8, 4.76e-20, 1.25e-7, 6.0, 0.0, 1e-3};
     pl_colloid_dlvo_info_t info;
@@ -191,6 +192,11 @@ static pl_colloid_t *random_colloids(size_t n, double skin_fraction)
     cr_assert_eq(pl_colloid_neighbors_init(c, 4.4 + p->gap_cut, skin_fraction, &err), 0);
     cr_assert(c->nlist.skin == skin_fraction * (4.4 + p->gap_cut), "skin not capped");
     return c;
+}
+
+static pl_colloid_t *random_colloids(size_t n, double skin_fraction)
+{
+    return random_colloids_threads(n, skin_fraction, omp_get_max_threads());
 }
 
 /* The neighbour-list kernel against the direct sum on a fresh list. */
@@ -250,6 +256,35 @@ Test(colloid_forces, forces_do_not_depend_on_the_list)
     cr_expect_eq(memcmp(a->fz, b->fz, n * sizeof *a->fz), 0);
     pl_colloid_free(a);
     pl_colloid_free(b);
+}
+
+/* The two layouts of the pair results (pl_colloid_nlist_t): a list built for
+ * one thread stores them by slot, one for two threads by reverse entry; the
+ * forces and the partners' friction torques are the same bits.  Contacts,
+ * Hertz tangential friction and spinning colloids, so that pass 2 carries
+ * torques too. */
+Test(colloid_forces, both_result_layouts_give_the_same_bits)
+{
+    pl_colloid_t *c[2] = {random_colloids_threads(300, 0.1, 1), random_colloids_threads(300, 0.1, 2)};
+    pl_err_t err;
+    for (int k = 0; k < 2; ++k) {
+        c[k]->pair.hertz_beta = 2.0, c[k]->pair.hertz_gamma_t = 5.0;
+        for (size_t i = 0; i < c[k]->n; ++i) {
+            c[k]->vx[i] = 0.01 * (double)(i % 7), c[k]->vy[i] = -0.02 * (double)(i % 5);
+            c[k]->wx[i] = 0.03 * (double)(i % 3), c[k]->wz[i] = -0.01 * (double)(i % 11);
+        }
+        cr_assert_eq(pl_colloid_forces(c[k], &err), 0, "%s", err.msg);
+    }
+    cr_assert(c[0]->nlist.by_entry == 0 && c[1]->nlist.by_entry == 1, "layouts %d and %d", c[0]->nlist.by_entry,
+              c[1]->nlist.by_entry);
+    size_t contacts = 0, n = c[0]->n;
+    for (size_t i = 0; i < n; ++i) contacts += c[0]->tx[i] != 0.0 || c[0]->ty[i] != 0.0 || c[0]->tz[i] != 0.0;
+    cr_expect(contacts >= 10, "only %zu colloids with a friction torque: the test wants contacts", contacts);
+    const double *a[6] = {c[0]->fx, c[0]->fy, c[0]->fz, c[0]->tx, c[0]->ty, c[0]->tz};
+    const double *b[6] = {c[1]->fx, c[1]->fy, c[1]->fz, c[1]->tx, c[1]->ty, c[1]->tz};
+    for (int k = 0; k < 6; ++k) cr_expect_eq(memcmp(a[k], b[k], n * sizeof *a[k]), 0, "array %d differs", k);
+    pl_colloid_free(c[0]);
+    pl_colloid_free(c[1]);
 }
 
 /* The kernel drops Eq. 1 beyond coul_hcut: there its energy and force are

@@ -107,10 +107,20 @@ void pl_colloid_cells_build(pl_colloid_cells_t *cells, size_t n, const double *x
  * its pairs whatever its index (a plain i < j rule would give the first
  * thread three quarters of the work).  A colloid's own partners are listed in
  * ascending index; the reverse entries of a colloid are the pairs other
- * colloids own with it, in ascending owner index: the force kernel writes a
- * pair's result into the pair's own slot (in slot order, so its stores are
- * sequential) and each colloid then reads its reverse entries' slots
- * (rslot). */
+ * colloids own with it, in ascending owner index.  The force kernel stores
+ * each pair's result for the partner in one of two layouts, the same values
+ * summed in the same order in both (pl_colloid_pair_store,
+ * pl_colloid_pair_reverse_one):
+ *   - by slot (one thread): in the pair's own slot, in slot order, so the
+ *     owner pass stores sequentially; each colloid then reads its reverse
+ *     entries' slots (rslot), scattered loads from L1/L2;
+ *   - by reverse entry (a list built for two or more threads): at the pair's
+ *     reverse entry (spos), scattered stores; each colloid then reads its
+ *     own entries in sequence.  About half of a thread's partners belong to
+ *     another thread in a small box, and a scattered load of a line another
+ *     core wrote stalls for the round trip between the cores (the pingpong
+ *     of bench/bench_omp_overhead.c; bench/RESULTS_colloid.md), where a
+ *     store does not stall the core. */
 typedef struct {
     size_t n, cap;       /* colloids; capacity of the slot arrays */
     size_t npairs;       /* listed pairs (slots in use) */
@@ -120,8 +130,10 @@ typedef struct {
     int32_t *nbr;        /* cap: partner of each slot */
     int32_t *rstart;     /* n + 1: the reverse entries of i are rstart[i] .. rstart[i+1]-1 */
     int32_t *rslot;      /* cap: the owner's slot of each reverse entry */
-    double *pf;          /* 3 cap: per slot, the force on the owner from its partner */
-    double *pt;          /* 3 cap: per slot, the torque on the partner (tangential friction) */
+    int32_t *spos;       /* cap: the reverse entry of each slot */
+    int by_entry;        /* layout of pf, pt: 0 by slot, 1 by reverse entry */
+    double *pf;          /* 3 cap: per pair (slot or reverse entry), the force on the owner from its partner */
+    double *pt;          /* 3 cap: per pair, the torque on the partner (tangential friction) */
     double *x0, *y0, *z0;    /* n: positions at the last build */
     long long builds;        /* list builds so far (diagnostic, not state) */
 } pl_colloid_nlist_t;
@@ -213,31 +225,57 @@ static inline int pl_colloid_pair_torques(const pl_colloid_pair_params_t *p)
 {
     return (p->terms & PL_CT_HERTZ) && p->hertz_gamma_t > 0.0;
 }
+/* Where pass 1 stores slot s's pair result (nl->by_entry: the layouts). */
+static inline size_t pl_colloid_pair_at(const pl_colloid_nlist_t *nl, int32_t s)
+{
+    return 3 * (size_t)(nl->by_entry ? nl->spos[s] : s);
+}
+/* s minus (or plus, add) the results in a (nl->pf, nl->pt) of the reverse
+ * entries r0 .. r1-1, in entry order; E: the list's layout (by_entry), a
+ * constant at each call so that neither loop tests it per entry. */
+static inline __attribute__((always_inline)) void pl_colloid_reverse_sum(const pl_colloid_nlist_t *nl,
+                                                                         const double *a, int32_t r0,
+                                                                         int32_t r1, const int E,
+                                                                         const int add, double s[3])
+{
+    double x = s[0], y = s[1], z = s[2];
+    for (int32_t r = r0; r < r1; ++r) {
+        const size_t q = 3 * (size_t)(E ? r : nl->rslot[r]);
+        if (add) {
+            x += a[q];
+            y += a[q + 1];
+            z += a[q + 2];
+        } else {
+            x -= a[q];
+            y -= a[q + 1];
+            z -= a[q + 2];
+        }
+    }
+    s[0] = x;
+    s[1] = y;
+    s[2] = z;
+}
 static inline void pl_colloid_pair_reverse_one(const pl_colloid_nlist_t *nl,
                                                const pl_colloid_view_t *v, size_t i, int torques)
 {
     const int32_t r0 = nl->rstart[i], r1 = nl->rstart[i + 1];
-    double fx = v->fx[i], fy = v->fy[i], fz = v->fz[i];
-    for (int32_t r = r0; r < r1; ++r) {
-        const size_t q = 3 * (size_t)nl->rslot[r];
-        fx -= nl->pf[q];
-        fy -= nl->pf[q + 1];
-        fz -= nl->pf[q + 2];
-    }
-    v->fx[i] = fx;
-    v->fy[i] = fy;
-    v->fz[i] = fz;
+    double f[3] = {v->fx[i], v->fy[i], v->fz[i]};
+    if (nl->by_entry)
+        pl_colloid_reverse_sum(nl, nl->pf, r0, r1, 1, 0, f);
+    else
+        pl_colloid_reverse_sum(nl, nl->pf, r0, r1, 0, 0, f);
+    v->fx[i] = f[0];
+    v->fy[i] = f[1];
+    v->fz[i] = f[2];
     if (!torques) return;
-    double tx = v->tx[i], ty = v->ty[i], tz = v->tz[i];
-    for (int32_t r = r0; r < r1; ++r) {
-        const size_t q = 3 * (size_t)nl->rslot[r];
-        tx += nl->pt[q];
-        ty += nl->pt[q + 1];
-        tz += nl->pt[q + 2];
-    }
-    v->tx[i] = tx;
-    v->ty[i] = ty;
-    v->tz[i] = tz;
+    double t[3] = {v->tx[i], v->ty[i], v->tz[i]};
+    if (nl->by_entry)
+        pl_colloid_reverse_sum(nl, nl->pt, r0, r1, 1, 1, t);
+    else
+        pl_colloid_reverse_sum(nl, nl->pt, r0, r1, 0, 1, t);
+    v->tx[i] = t[0];
+    v->ty[i] = t[1];
+    v->tz[i] = t[2];
 }
 
 /* Pair energies of the present positions: rows PL_CE_DLVO, _HERTZ, _WCA,

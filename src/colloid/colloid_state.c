@@ -40,7 +40,7 @@ static pl_colloid_view_t colloid_view(pl_colloid_t *c)
 
 static void nlist_free(pl_colloid_nlist_t *nl)
 {
-    void *a[] = {nl->start, nl->nbr, nl->rstart, nl->rslot, nl->pf, nl->pt, nl->x0, nl->y0, nl->z0};
+    void *a[] = {nl->start, nl->nbr, nl->rstart, nl->rslot, nl->spos, nl->pf, nl->pt, nl->x0, nl->y0, nl->z0};
     for (size_t k = 0; k < sizeof a / sizeof *a; ++k) free(a[k]);
     memset(nl, 0, sizeof *nl);
 }
@@ -117,13 +117,15 @@ static int nlist_reserve(pl_colloid_nlist_t *nl, size_t need, pl_err_t *err)
     size_t cap = need + need / 4 + 64;
     free(nl->nbr);
     free(nl->rslot);
+    free(nl->spos);
     free(nl->pf);
     free(nl->pt);
     nl->nbr = zalloc(cap * sizeof(int32_t));
     nl->rslot = zalloc(cap * sizeof(int32_t));
+    nl->spos = zalloc(cap * sizeof(int32_t));
     nl->pf = zalloc(3 * cap * sizeof(double));
     nl->pt = zalloc(3 * cap * sizeof(double));
-    int fail = !nl->nbr || !nl->rslot || !nl->pf || !nl->pt;
+    int fail = !nl->nbr || !nl->rslot || !nl->spos || !nl->pf || !nl->pt;
     nl->cap = fail ? 0 : cap;
     if (fail)
         return pl_err_set(err, PL_ERR_NOMEM, "colloids: out of memory for a neighbour list of %zu pairs",
