@@ -255,27 +255,27 @@ static inline __attribute__((always_inline)) void pl_colloid_reverse_sum(const p
     s[1] = y;
     s[2] = z;
 }
+/* x, y, z[i] minus (plus: add) colloid i's reverse entries in a. */
+static inline __attribute__((always_inline)) void pl_colloid_reverse_into(const pl_colloid_nlist_t *nl,
+                                                                          const double *a, size_t i,
+                                                                          const int add, double *x,
+                                                                          double *y, double *z)
+{
+    const int32_t r0 = nl->rstart[i], r1 = nl->rstart[i + 1];
+    double s[3] = {x[i], y[i], z[i]};
+    if (nl->by_entry)
+        pl_colloid_reverse_sum(nl, a, r0, r1, 1, add, s);
+    else
+        pl_colloid_reverse_sum(nl, a, r0, r1, 0, add, s);
+    x[i] = s[0];
+    y[i] = s[1];
+    z[i] = s[2];
+}
 static inline void pl_colloid_pair_reverse_one(const pl_colloid_nlist_t *nl,
                                                const pl_colloid_view_t *v, size_t i, int torques)
 {
-    const int32_t r0 = nl->rstart[i], r1 = nl->rstart[i + 1];
-    double f[3] = {v->fx[i], v->fy[i], v->fz[i]};
-    if (nl->by_entry)
-        pl_colloid_reverse_sum(nl, nl->pf, r0, r1, 1, 0, f);
-    else
-        pl_colloid_reverse_sum(nl, nl->pf, r0, r1, 0, 0, f);
-    v->fx[i] = f[0];
-    v->fy[i] = f[1];
-    v->fz[i] = f[2];
-    if (!torques) return;
-    double t[3] = {v->tx[i], v->ty[i], v->tz[i]};
-    if (nl->by_entry)
-        pl_colloid_reverse_sum(nl, nl->pt, r0, r1, 1, 1, t);
-    else
-        pl_colloid_reverse_sum(nl, nl->pt, r0, r1, 0, 1, t);
-    v->tx[i] = t[0];
-    v->ty[i] = t[1];
-    v->tz[i] = t[2];
+    pl_colloid_reverse_into(nl, nl->pf, i, 0, v->fx, v->fy, v->fz);
+    if (torques) pl_colloid_reverse_into(nl, nl->pt, i, 1, v->tx, v->ty, v->tz);
 }
 
 /* Pair energies of the present positions: rows PL_CE_DLVO, _HERTZ, _WCA,
