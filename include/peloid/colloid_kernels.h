@@ -111,10 +111,12 @@ void pl_colloid_cells_build(pl_colloid_cells_t *cells, size_t n, const double *x
  * each pair's result for the partner in one of two layouts, the same values
  * summed in the same order in both (pl_colloid_pair_store,
  * pl_colloid_pair_reverse_one):
- *   - by slot (one thread): in the pair's own slot, in slot order, so the
- *     owner pass stores sequentially; each colloid then reads its reverse
- *     entries' slots (rslot), scattered loads from L1/L2;
- *   - by reverse entry (a list built for two or more threads): at the pair's
+ *   - by slot (the kernels' regions on one thread): in the pair's own slot,
+ *     in slot order, so the owner pass stores sequentially; each colloid
+ *     then reads its reverse entries' slots (rslot), scattered loads from
+ *     L1/L2;
+ *   - by reverse entry (a list built for two or more threads and at least
+ *     PL_COLLOID_OMP_MIN colloids, so its regions run parallel): at the pair's
  *     reverse entry (spos), scattered stores; each colloid then reads its
  *     own entries in sequence.  About half of a thread's partners belong to
  *     another thread in a small box, and a scattered load of a line another
