@@ -53,7 +53,7 @@ int main(int argc, char **argv)
     const int Lxy = quick ? 8 : 16, Lz = 32;
     const double A = 0.2, dt = 0.1, alpha = 130.0, gamma = 10.0;
     pl_srd_theory_t th;
-    pl_srd_theory(gamma, alpha * PI / 180.0, dt, 1.0, &th);
+    pl_srd_theory(gamma, PL_RULE_RANDOM_AXIS, alpha * PI / 180.0, dt, 1.0, &th);
     const double k = 2.0 * PI / Lz;
     /* fit window: the first e-fold of the theoretical decay */
     const int steps = (int)ceil(1.0 / (th.nu * k * k * dt));

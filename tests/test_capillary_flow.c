@@ -87,7 +87,7 @@ Test(capillary, poiseuille_in_a_square_duct, .timeout = 300)
     const int W = 10, Lz = 8;
     const double gamma = 5, lambda = 0.1, g = 0.025, b_planar = 0.14;
     pl_srd_theory_t th;
-    pl_srd_theory(gamma, M_PI / 2, lambda, 1.0, &th);
+    pl_srd_theory(gamma, PL_RULE_RANDOM_AXIS, M_PI / 2, lambda, 1.0, &th);
     char scene[512];
     snprintf(scene, sizeof scene,
              "seed = 91;\nbox: { cells = [%d, %d, %d]; walls_xy = \"noslip\"; };\n"

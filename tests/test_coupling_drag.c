@@ -79,7 +79,7 @@ static double pinned_friction(double sigma, double v0, long long burn_steps, dou
     return mean / v0;
 }
 
-static void srd_theory(pl_srd_theory_t *th) { pl_srd_theory(5.0, 0.5 * PI, 0.1, 1.0, th); }
+static void srd_theory(pl_srd_theory_t *th) { pl_srd_theory(5.0, PL_RULE_RANDOM_AXIS, 0.5 * PI, 0.1, 1.0, th); }
 
 /* PL's friction of a pinned slip sphere: PL Eqs. 40-43. */
 static double xi_pl(double eta, double sigma, double L)

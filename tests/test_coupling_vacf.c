@@ -211,7 +211,7 @@ Test(coupling_vacf, potential_diffusion, .timeout = 900)
     double Dm, Dse;
     mean_se(D, NBD, &Dm, &Dse);
     pl_srd_theory_t th;
-    pl_srd_theory(GAMMA, 0.5 * PI, DT, 1.0, &th);
+    pl_srd_theory(GAMMA, PL_RULE_RANDOM_AXIS, 0.5 * PI, DT, 1.0, &th);
     double xi_E = pl_srd_xi_enskog(GAMMA, 1.0, SIGMA, M);                          /* PL Eq. 40 */
     double xi_pl = pl_srd_xi_parallel(pl_srd_xi_stokes_pl(th.eta, SIGMA, L), xi_E); /* PL Eqs. 41-43 */
     double xi_pf = pl_srd_xi_hasimoto(pl_srd_xi_parallel(4.0 * PI * th.eta * SIGMA, xi_E), th.eta, L);

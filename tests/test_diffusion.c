@@ -54,7 +54,7 @@ static void check_diffusion(double gamma, double alpha_deg)
     }
     double D = sum / NGROUP, sem = sqrt((sum2 / NGROUP - D * D) / (NGROUP - 1));
     pl_srd_theory_t th;
-    pl_srd_theory(gamma, alpha_deg * M_PI / 180.0, lambda, 1.0, &th);
+    pl_srd_theory(gamma, PL_RULE_RANDOM_AXIS, alpha_deg * M_PI / 180.0, lambda, 1.0, &th);
     double rel = D / th.D_f - 1.0;
     printf("diffusion lambda=1 gamma=%g alpha=%g: D = %.4f +- %.4f, PL Eq. 6: %.4f, deviation %+.2f%% +- %.2f%%\n",
            gamma, alpha_deg, D, sem, th.D_f, 100 * rel, 100 * sem / th.D_f);

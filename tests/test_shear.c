@@ -73,7 +73,7 @@ static void run_couette(const char *thermostat, double u, double *eta_out)
     const int L = 8;
     const double gamma = 5, lambda = 0.1;
     pl_srd_theory_t th;
-    pl_srd_theory(gamma, M_PI / 2, lambda, 1.0, &th);
+    pl_srd_theory(gamma, PL_RULE_RANDOM_AXIS, M_PI / 2, lambda, 1.0, &th);
     char scene[768];
     snprintf(scene, sizeof scene,
              "seed = 21;\nbox: { cells = [%d, %d, %d]; walls_z = \"noslip\";\n"

@@ -46,7 +46,7 @@ Test(walls, poiseuille_between_noslip_walls, .timeout = 300)
     const int L = 12, Lz = 12;
     const double gamma = 5, lambda = 0.1, g = 0.012; /* v_max ~ 0.43: Ma ~ 0.3, uniform along x */
     pl_srd_theory_t th;
-    pl_srd_theory(gamma, M_PI / 2, lambda, 1.0, &th);
+    pl_srd_theory(gamma, PL_RULE_RANDOM_AXIS, M_PI / 2, lambda, 1.0, &th);
     char scene[512];
     snprintf(scene, sizeof scene,
              "seed = 77;\nbox: { cells = [%d, %d, %d]; walls_z = \"noslip\"; };\n"

@@ -254,7 +254,7 @@ def plot_viscosity(f, obs, outdir, lines):
     if e:
         ax.axhspan(e["value"] - e["stderr"], e["value"] + e["stderr"], color="C0", alpha=0.2,
                    label=f"eta = {e['value']:.4g} +- {e['stderr']:.2g}")
-        ax.axhline(e["theory_PL_Eq15"], color="k", ls="--", label=f"PL Eqs. 9-15: {e['theory_PL_Eq15']:.4g}")
+        ax.axhline(e["theory"], color="k", ls="--", label=f"{e.get('theory_source', 'theory')}: {e['theory']:.4g}")
     ax.set_xlabel("truncation lag [t0]")
     ax.set_ylabel("eta [m_f/(a0 t0)]")
     ax.legend(fontsize=8)
@@ -263,8 +263,8 @@ def plot_viscosity(f, obs, outdir, lines):
     plt.close(fig)
     lines += ["## Fluid shear viscosity (Green-Kubo)", "", "![viscosity](viscosity.png)", ""]
     if e:
-        lines += [f"eta = {e['value']:.5g} +- {e['stderr']:.2g} m_f/(a0 t0) (PL Eqs. 9-15: "
-                  f"{e['theory_PL_Eq15']:.5g}), over {e['samples']} steps", ""]
+        lines += [f"eta = {e['value']:.5g} +- {e['stderr']:.2g} m_f/(a0 t0) ({e.get('theory_source', 'theory')}: "
+                  f"{e['theory']:.5g}), over {e['samples']} steps", ""]
     p = obs.get("fluid_pressure")
     if p:
         lines += [f"pressure {p['value']:.6g} +- {p['stderr']:.2g} kT/a0^3 (ideal gas {p['ideal_gas']:.6g})", ""]

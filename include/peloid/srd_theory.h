@@ -3,6 +3,8 @@
 #ifndef PELOID_SRD_THEORY_H
 #define PELOID_SRD_THEORY_H
 
+#include "peloid/kernel_enums.h" /* PL_RULE_* */
+
 typedef struct {
     double lambda;   /* mean free path / a0 (PL Eq. 4) */
     double f_kin, f_col; /* PL Eqs. 11-12 */
@@ -14,8 +16,10 @@ typedef struct {
     double c_s;      /* ideal-gas speed of sound sqrt(5 kT / 3 m) */
 } pl_srd_theory_t;
 
-/* gamma: particles per cell, alpha in radians, dt: collision step, kT. */
-void pl_srd_theory(double gamma, double alpha, double dt, double kT, pl_srd_theory_t *out);
+/* gamma: particles per cell, rule: PL_RULE_*, alpha in radians (the
+ * random-axis rule's angle; PL_RULE_HECHT_AXES rotates by 90 deg and uses
+ * Hecht Eq. 28 for the viscosity), dt: collision step, kT. */
+void pl_srd_theory(double gamma, int rule, double alpha, double dt, double kT, pl_srd_theory_t *out);
 
 double pl_srd_f_kin(double gamma, double alpha);
 double pl_srd_f_col(double gamma, double alpha);

@@ -14,26 +14,21 @@
 
 /* PL Eqs. 6 and 9-12 live in src/mapping/srd_theory.c; these evaluate them in the
  * mapping's units (kT = 1, dt = lambda). */
-static pl_srd_theory_t srd(double lambda, double gamma, double alpha)
+static pl_srd_theory_t srd(double lambda, double gamma, int rule, double alpha)
 {
     pl_srd_theory_t t;
-    pl_srd_theory(gamma, alpha, lambda, 1.0, &t);
+    pl_srd_theory(gamma, rule, alpha, lambda, 1.0, &t);
     return t;
 }
 
-double pl_mapping_nu_kin(double lambda, double gamma, double alpha) { return srd(lambda, gamma, alpha).nu_kin; }
-double pl_mapping_nu_col(double lambda, double gamma, double alpha) { return srd(lambda, gamma, alpha).nu_col; }
-double pl_mapping_d_fluid(double lambda, double gamma, double alpha) { return srd(lambda, gamma, alpha).D_f; }
+double pl_mapping_nu_kin(double lambda, double gamma, double alpha) { return srd(lambda, gamma, PL_RULE_RANDOM_AXIS, alpha).nu_kin; }
+double pl_mapping_nu_col(double lambda, double gamma, double alpha) { return srd(lambda, gamma, PL_RULE_RANDOM_AXIS, alpha).nu_col; }
+double pl_mapping_d_fluid(double lambda, double gamma, double alpha) { return srd(lambda, gamma, PL_RULE_RANDOM_AXIS, alpha).D_f; }
 
 double pl_mapping_nu_hecht(double lambda, double gamma)
 {
-    /* Hecht Eq. 28 in units of nu0 = a0^2/t0 with dt = lambda t0 and
-     * kT dt / m_f = lambda a0^2/t0:
-     *   nu = a^2/(18 dt) (1 - (1 - e^-M)/M) + kT dt/(4 m_f) (M + 2)/(M - 1).
-     * (The paper typesets the second term garbled; this reading gives its
-     * Eq. 29, 0.3052 a^2/dt for M = 2.5, lambda = 0.6.) */
-    double M = gamma;
-    return (1.0 - (1.0 - exp(-M)) / M) / (18.0 * lambda) + lambda / 4.0 * (M + 2.0) / (M - 1.0);
+    pl_srd_theory_t t = srd(lambda, gamma, PL_RULE_HECHT_AXES, 0.5 * PL_PI); /* Hecht Eq. 28 */
+    return t.nu_col + t.nu_kin;
 }
 
 double pl_mapping_nu(int formula, double lambda, double gamma, double alpha)

@@ -17,7 +17,7 @@ int pl_params_json(const pl_scene_t *sc, struct json_t **out, pl_err_t *err)
 {
     const double kT = pl_scene_kT(sc);
     pl_srd_theory_t t;
-    pl_srd_theory(sc->fluid.density, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, kT, &t);
+    pl_srd_theory(sc->fluid.density, sc->srd.rule, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, kT, &t);
     pl_json_t b = {err, sc->path, "derived", 0};
     json_t *o = json_object();
     const struct { const char *key; double v; } v[] = {
@@ -102,7 +102,7 @@ void pl_params_print(const pl_scene_t *sc, FILE *out)
 {
     const double kT = pl_scene_kT(sc);
     pl_srd_theory_t t;
-    pl_srd_theory(sc->fluid.density, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, kT, &t);
+    pl_srd_theory(sc->fluid.density, sc->srd.rule, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, kT, &t);
     const int hecht = sc->srd.rule == PL_RULE_HECHT_AXES;
     /* moving no-slip walls: nominal shear rate (u_top - u_bottom) / Lz (Hecht Sec. VIII.C) */
     const int sheared = sc->box.walls_z == PL_WALLS_NOSLIP;
@@ -111,15 +111,15 @@ void pl_params_print(const pl_scene_t *sc, FILE *out)
         shear[d] = (sc->box.wall_velocity[1][d] - sc->box.wall_velocity[0][d]) / sc->box.cells[2];
     fprintf(out, "SRD fluid of scene %s (units: a0 = 1, m_f = 1, kT_ref = 1)\n", sc->path);
     fprintf(out, "  gamma = %g particles/cell, dt = %g, alpha = %g deg (%s), kT = %g\n", sc->fluid.density,
-            sc->srd.dt, sc->srd.alpha_deg, hecht ? "hecht_axes: 90 deg" : "random_axis", kT);
+            sc->srd.dt, hecht ? 90.0 : sc->srd.alpha_deg, hecht ? "hecht_axes" : "random_axis", kT);
     if (hecht)
-        fprintf(out, "  note: the formulas below are for a random rotation axis (PL Eqs. 6-15); "
-                     "evaluated here at alpha = 90 deg\n");
+        fprintf(out, "  note: hecht_axes rotates by 90 deg whatever srd.alpha says: viscosity from "
+                     "Hecht Eq. 28, f_kin and f_col as PL Eqs. 9-10 would need them\n");
     fprintf(out, "  lambda   = %-12.6g mean free path / a0            (PL Eq. 4)\n", t.lambda);
-    fprintf(out, "  f_kin    = %-12.6g                                 (PL Eq. 11)\n", t.f_kin);
-    fprintf(out, "  f_col    = %-12.6g                                 (PL Eq. 12)\n", t.f_col);
-    fprintf(out, "  nu_kin   = %-12.6g a0^2/t0 kinetic viscosity      (PL Eq. 9)\n", t.nu_kin);
-    fprintf(out, "  nu_col   = %-12.6g a0^2/t0 collisional viscosity  (PL Eq. 10)\n", t.nu_col);
+    fprintf(out, "  f_kin    = %-12.6g                                 (%s)\n", t.f_kin, hecht ? "Hecht Eq. 28" : "PL Eq. 11");
+    fprintf(out, "  f_col    = %-12.6g                                 (%s)\n", t.f_col, hecht ? "Hecht Eq. 28" : "PL Eq. 12");
+    fprintf(out, "  nu_kin   = %-12.6g a0^2/t0 kinetic viscosity      (%s)\n", t.nu_kin, hecht ? "Hecht Eq. 28" : "PL Eq. 9");
+    fprintf(out, "  nu_col   = %-12.6g a0^2/t0 collisional viscosity  (%s)\n", t.nu_col, hecht ? "Hecht Eq. 28" : "PL Eq. 10");
     fprintf(out, "  nu       = %-12.6g a0^2/t0 kinematic viscosity\n", t.nu);
     fprintf(out, "  eta      = %-12.6g sqrt(m kT)/a0^2 shear viscosity (PL Eqs. 14-15)\n", t.eta);
     fprintf(out, "  D_f      = %-12.6g a0^2/t0 fluid self-diffusion   (PL Eq. 6)\n", t.D_f);

@@ -167,7 +167,7 @@ static int gk_lags(const pl_scene_t *sc)
     if (sc->observe.stress_gk_steps > 0) return (int)sc->observe.stress_gk_steps;
     pl_srd_theory_t th;
     const double kT = pl_scene_kT(sc);
-    pl_srd_theory(sc->fluid.density, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, kT, &th);
+    pl_srd_theory(sc->fluid.density, sc->srd.rule, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, kT, &th);
     const double tau = 0.5 * (2.0 * th.nu_kin / (kT * sc->srd.dt) + 1.0);
     const double k = ceil(10.0 * tau);
     return k < 10 ? 10 : k > 1e5 ? 100000 : (int)k;
@@ -589,7 +589,9 @@ static json_t *viscosity_entry(pl_json_t *b, const pl_stress_t *o, const pl_sim_
     pl_json_real(b, e, "wall_s", o->wall);
     pl_json_str(b, e, "unit", "m_f/(a0 t0)");
     pl_json_int(b, e, "samples", (long long)(o->couette ? o->sigma.n : o->eta.n));
-    pl_json_real(b, e, "theory_PL_Eq15", theory);
+    pl_json_real(b, e, "theory", theory);
+    pl_json_str(b, e, "theory_source",
+                sc->srd.rule == PL_RULE_HECHT_AXES ? "Hecht Eq. 28" : "PL Eqs. 9-15");
     pl_json_real(b, e, "kinematic_value", v / sc->fluid.density);
     pl_json_real(b, e, "kinematic_stderr", se / sc->fluid.density);
     if (sc->mapping.enabled) { /* m_f / (a0 t0) -> Pa s */
@@ -614,7 +616,7 @@ static int stress_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *
     if (!all) return err->code;
     const pl_scene_t *sc = &sim->scene;
     pl_srd_theory_t th;
-    pl_srd_theory(sc->fluid.density, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, o->kT, &th);
+    pl_srd_theory(sc->fluid.density, sc->srd.rule, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, o->kT, &th);
     double v, se;
     pl_blocking_result_t r, rr;
     if (o->couette && couette_estimate(o, &v, &se, &r, &rr)) {

@@ -21,7 +21,7 @@ def accuracy_viscosity(sw):
         if not s:
             continue
         e = s["observables"]["fluid_viscosity"]
-        th = e["theory_PL_Eq15"]
+        th = e["theory"]
         key = (p["params"]["fluid.density"], p["params"]["srd.dt"])
         runs.setdefault(key, []).append({"steps": p["params"]["steps"], "dev": e["value"] / th - 1.0,
                                          "se": e["stderr"] / th, "cpu": s.get("cpu_seconds", s["wall_seconds"]),
@@ -332,9 +332,9 @@ def reduced_accuracy_viscosity(sw):
         lam, steps = p["params"]["srd.dt"], p["params"]["steps"]
         se[(lam, steps)] = e["stderr"]
         if steps == 12000:
-            dev = (e["value"] - e["theory_PL_Eq15"]) / e["stderr"]
+            dev = (e["value"] - e["theory"]) / e["stderr"]
             good &= abs(dev) <= 3
-            msg.append(f"lambda {lam:g}: eta {e['value']:.3f} +- {e['stderr']:.3f} vs PL {e['theory_PL_Eq15']:.3f} ({dev:+.1f} SE)")
+            msg.append(f"lambda {lam:g}: eta {e['value']:.3f} +- {e['stderr']:.3f} vs PL {e['theory']:.3f} ({dev:+.1f} SE)")
     lams = sorted({k[0] for k in se})
     ratio = math.exp(sum(math.log(se[(l, 12000)] / se[(l, 3000)]) for l in lams) / len(lams))
     good &= 0.3 <= ratio <= 0.8
