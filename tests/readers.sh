@@ -81,6 +81,36 @@ assert np.isfinite(r.results.rdf).all() and r.results.rdf.max() > 0
 print("    quickstart g(r), 0.1..3 um in 20 bins:", np.round(r.results.rdf, 2))
 PYEOF
 
+# A user's kinetic temperature: MDAnalysis velocities (A/ps) with the masses
+# of colloids.h5 give the scene's 300 K (before: the real masses with the
+# model's velocities gave 0.004 K); and MDAnalysis's frame step is the
+# trajectory interval, not its "1 ps" fallback.  Bound: over F frames of N
+# colloids the mean of 2 KE / (3 N k) has the relative SE sqrt(2 / (3 N F))
+# for independent frames (30 SRD steps apart here, ~10 colloid velocity
+# relaxation times); 4 SE: a 6e-5 chance of failing by chance.
+$PY - <<'PYEOF' && ok "MDAnalysis: kinetic temperature from colloids.h5 = the scene's 300 K; trajectory.dt = the frame interval" || bad "kinetic temperature / dt from colloids.h5"
+import h5py, numpy as np, MDAnalysis as mda
+with h5py.File("q/colloids.h5") as f:
+    g = f["particles/colloids"]
+    mass, t = g["mass"][()], g["position/time"][()]
+    es = f["parameters"].attrs["energy_scale"]
+    assert np.allclose(g["mass"].attrs["real_mass_kg"] * es, mass, rtol=1e-12)
+u = mda.Universe.empty(len(mass), trajectory=True)
+u.load_new("q/colloids.h5", format="H5MD")
+u.add_TopologyAttr("masses", mass / 1.66053906660e-27)  # kg -> u
+kB, T = 1.380649e-23, []
+for ts in u.trajectory:
+    v = ts.velocities * 100.0  # A/ps -> m/s
+    T.append((u.atoms.masses * 1.66053906660e-27 * (v * v).sum(1)).sum() / (3 * len(mass) * kB))
+T = np.array(T)
+se = 300.0 * np.sqrt(2.0 / (3 * len(mass) * len(T)))
+dt = u.trajectory.dt
+print(f"    T from MDAnalysis: {T.mean():.1f} K (frames {np.round(T, 1)}), 4 SE = {4 * se:.1f} K; dt {dt:.6g} ps, "
+      f"frame times {t[1] - t[0]:.6g} ps apart")
+assert abs(T.mean() - 300.0) <= 4 * se, T
+assert abs(dt - (t[1] - t[0])) <= 1e-9 * dt, (dt, t[:2])
+PYEOF
+
 # g(r) of a physical scene also in units of R and in micrometres (the mapping's a0)
 $PY - <<'PYEOF' && ok "quickstart g(r): r in a0, R and um consistent with colloids.h5 (a0, radius)" || bad "g(r) units"
 import json, h5py, numpy as np

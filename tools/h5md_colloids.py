@@ -20,7 +20,10 @@ def load(path):
         e = g["box/edges"]
         edges = e["value"][0] if isinstance(e, h5py.Group) else e[()]
         edges = np.diag(edges) if np.ndim(edges) == 2 else np.asarray(edges)
-        mass = g["mass"][()] / mf
+        # a physical scene writes kinetic masses (the model mass times
+        # /parameters/energy_scale) and the real ones as an attribute
+        m = g["mass"]
+        mass = (np.asarray(m.attrs["real_mass_kg"]) if "real_mass_kg" in m.attrs else m[()]) / mf
         return {"pos": g["position/value"][()] / a0, "vel": g["velocity/value"][()] * t0 / a0,
                 "img": g["image/value"][()], "t": g["position/time"][()] / t0,
                 "step": g["position/step"][()], "edges": edges / a0, "mass": mass,

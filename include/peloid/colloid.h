@@ -167,6 +167,11 @@ void pl_colloid_momentum(const pl_colloid_t *c, double p[3], double l[3]);
 typedef struct pl_colloid_traj pl_colloid_traj_t;
 typedef struct {
     double a0_m, t0_s, m_f_kg; /* all > 0: physical scene, written in nm, ps, kg */
+    /* physical scene: kg per model mass unit of the written (kinetic) masses,
+     * kT_real / (kT_model (a0/t0)^2), so that 1/2 m v^2 of the written
+     * velocities gives the scene's temperature */
+    double mass_kg;
+    double frame_dt;           /* nominal time between frames, t0 */
     const char *xyz_path;      /* colloids.xyz beside, or NULL */
     int overwrite;             /* replace an existing file */
 } pl_colloid_traj_params_t;

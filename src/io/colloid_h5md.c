@@ -6,7 +6,14 @@
  *        matrix (rows = edge vectors, diagonal here), the form MDAnalysis reads
  *   /particles/colloids/{position, velocity, orientation, angular_velocity, image}
  *        /step (T), /time (T), /value (T x N x 3; orientation T x N x 4)
- *   /particles/colloids/{radius, mass, species, id}  (time independent, N)
+ *   /particles/colloids/{radius, mass, species, id}  (time independent, N);
+ *        a physical scene's mass is the kinetic mass (below)
+ *   /observables/dt/{step, time, value (T)}  the nominal time between frames
+ *        (colloids.trajectory_interval SRD steps), read by MDAnalysis as the
+ *        frame step (its H5MD reader takes ts.dt from an observable "dt"
+ *        and has no other source; without it every frame is "1 ps" apart);
+ *        a last frame off the interval is closer to its predecessor: the
+ *        exact times are in position/time
  *   /particles/colloids/cluster_id/{step, time, value (T x N, int32)}  with the
  *        cluster observer (pl_colloid_traj_cluster_ids): the smallest member
  *        index of each colloid's cluster, -1 where the frame has none
@@ -17,7 +24,16 @@
  * no physical scale: its values are in a0, t0, a0 t0-1, t0-1, m_f, stated in
  * `model_unit` attributes instead, because MDAnalysis refuses a file whose
  * `unit` it does not know even with convert_units=False (open model files
- * with convert_units=False).  The unit attributes are variable-length
+ * with convert_units=False).  Kinetic mass: the model realises the
+ * suspension at a model temperature kT_model = m_f a0^2 / t0^2 (Hecht Sec.
+ * VII.B), energy_scale = kT / kT_model times below the real one; velocities
+ * are the model's (d position / d time in the mapped time), so with the
+ * real colloid mass 1/2 m v^2 would give a temperature energy_scale times
+ * too low.  The mass written is the colloid's model mass times the energy
+ * scale, so that every combination of these datasets (kinetic temperature,
+ * momentum balance over time) gives the scene's values; the real particle
+ * mass is stated in the dataset's attribute `real_mass_kg` and in
+ * /parameters.  The unit attributes are variable-length
  * strings: MDAnalysis 2.4 looks them up as str, which h5py gives only for
  * those.  With PATH.xyz beside (colloids.xyz, src/io/colloid_xyz.c) every frame
  * goes to both.  Written to PATH.tmp and renamed to PATH on close (DESIGN.md:
@@ -51,13 +67,14 @@ struct pl_colloid_traj {
     size_t n;
     double box[3];
     int periodic[3];
-    double len, tim, mass;
+    double len, tim, mass, kin_mass, frame_dt;
     char len_unit[8], time_unit[8];
     const char *unit_attr; /* "unit" (physical scene) or "model_unit" */
     char path[PATH_MAX], tmp[PATH_MAX + 8];
     double *buf;
     int *ibuf;
     pl_xyz_t *xyz;
+    hid_t dt_val, dt_step, dt_time; /* /observables/dt */
     /* cluster ids (pl_colloid_traj_cluster_ids); val 0: none */
     hid_t cid_val, cid_step, cid_time;
     hsize_t cid_frames;
@@ -111,6 +128,9 @@ static int traj_release(pl_colloid_traj_t *t)
         if (t->step[k] > 0 && H5Dclose(t->step[k]) < 0) bad = 1;
         if (t->time[k] > 0 && H5Dclose(t->time[k]) < 0) bad = 1;
     }
+    if (t->dt_val > 0 && H5Dclose(t->dt_val) < 0) bad = 1;
+    if (t->dt_step > 0 && H5Dclose(t->dt_step) < 0) bad = 1;
+    if (t->dt_time > 0 && H5Dclose(t->dt_time) < 0) bad = 1;
     if (t->cid_val > 0 && H5Dclose(t->cid_val) < 0) bad = 1;
     if (t->cid_step > 0 && H5Dclose(t->cid_step) < 0) bad = 1;
     if (t->cid_time > 0 && H5Dclose(t->cid_time) < 0) bad = 1;
@@ -165,6 +185,44 @@ static int element(pl_colloid_traj_t *t, hid_t g, int k, const char *unit)
     return bad ? -1 : 0;
 }
 
+/* The real mass of each colloid (the kinetic mass over the energy scale) as
+ * an attribute of /particles/colloids/mass, with what the dataset means. */
+static int mass_attrs(hid_t col, const pl_colloid_t *c, const pl_colloid_traj_t *t)
+{
+    hid_t d = H5Dopen2(col, "mass", H5P_DEFAULT);
+    if (d < 0) return -1;
+    double *real = malloc((t->n ? t->n : 1) * sizeof *real);
+    int bad = !real;
+    for (size_t i = 0; real && i < t->n; ++i) real[i] = c->mass[i] * t->mass;
+    if (!bad && t->n) bad = pl_h5_attr_doubles(d, "real_mass_kg", real, t->n);
+    if (!bad) bad = pl_h5_attr_vlstr(d, "meaning",
+                                     "kinetic mass: the model colloid mass times the mapping's energy scale "
+                                     "kT/kT_model (/parameters/energy_scale), so that 1/2 m v^2 of velocity/value "
+                                     "gives the scene's temperature; the real particle mass is real_mass_kg");
+    free(real);
+    if (H5Dclose(d) < 0) bad = 1;
+    return bad ? -1 : 0;
+}
+
+/* /observables/dt: the nominal time between frames, one value per frame. */
+static int dt_observable(pl_colloid_traj_t *t)
+{
+    hid_t obs = pl_h5_group(t->file, "observables");
+    hid_t g = obs >= 0 ? H5Gcreate2(obs, "dt", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT) : -1;
+    int bad = g < 0;
+    if (!bad) {
+        t->dt_val = ext_dataset(g, "value", H5T_NATIVE_DOUBLE, 1, 0, 0);
+        t->dt_step = ext_dataset(g, "step", H5T_NATIVE_LLONG, 1, 0, 0);
+        t->dt_time = ext_dataset(g, "time", H5T_NATIVE_DOUBLE, 1, 0, 0);
+        bad = t->dt_val < 0 || t->dt_step < 0 || t->dt_time < 0 ||
+              pl_h5_attr_vlstr(t->dt_val, t->unit_attr, t->time_unit) ||
+              pl_h5_attr_vlstr(t->dt_time, t->unit_attr, t->time_unit);
+    }
+    if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+    if (obs >= 0 && H5Gclose(obs) < 0) bad = 1;
+    return bad ? -1 : 0;
+}
+
 static int write_header(pl_colloid_traj_t *t, const pl_colloid_t *c)
 {
     char vunit[24], wunit[16];
@@ -182,7 +240,8 @@ static int write_header(pl_colloid_traj_t *t, const pl_colloid_t *c)
     for (size_t i = 0; ids && i < t->n; ++i) ids[i] = (int32_t)i;
     if (!bad && col >= 0) {
         bad |= fixed_1d(col, "radius", H5T_NATIVE_DOUBLE, c->rad, t->n, t->len, t->unit_attr, t->len_unit, tmp);
-        bad |= fixed_1d(col, "mass", H5T_NATIVE_DOUBLE, c->mass, t->n, t->mass, t->unit_attr, phys ? "kg" : "m_f", tmp);
+        bad |= fixed_1d(col, "mass", H5T_NATIVE_DOUBLE, c->mass, t->n, t->kin_mass, t->unit_attr, phys ? "kg" : "m_f", tmp);
+        if (!bad && phys) bad |= mass_attrs(col, c, t);
         bad |= fixed_1d(col, "species", H5T_NATIVE_INT32, species, t->n, 1.0, NULL, NULL, tmp);
         bad |= fixed_1d(col, "id", H5T_NATIVE_INT32, ids, t->n, 1.0, NULL, NULL, tmp);
         const char *units[5] = {t->len_unit, vunit, NULL, wunit, NULL};
@@ -191,10 +250,18 @@ static int write_header(pl_colloid_traj_t *t, const pl_colloid_t *c)
     free(tmp);
     free(ids);
     free(species);
+    bad |= dt_observable(t);
     hid_t par = pl_h5_group(t->file, "parameters");
     bad |= par < 0 || pl_h5_attr_doubles(par, "a0", &t->len, 1) || pl_h5_attr_vlstr(par, "a0_unit", t->len_unit) ||
            pl_h5_attr_doubles(par, "t0", &t->tim, 1) || pl_h5_attr_vlstr(par, "t0_unit", t->time_unit) ||
            pl_h5_attr_doubles(par, "m_f", &t->mass, 1) || pl_h5_attr_vlstr(par, "m_f_unit", phys ? "kg" : "m_f");
+    if (phys) {
+        double es = t->kin_mass / t->mass;
+        bad |= par < 0 || pl_h5_attr_doubles(par, "energy_scale", &es, 1) ||
+               pl_h5_attr_vlstr(par, "energy_scale_meaning",
+                                "kT / kT_model: the written colloid masses are the model masses times this "
+                                "(kinetic masses, 1/2 m v^2 = the scene's kT)");
+    }
     if (par >= 0 && H5Gclose(par) < 0) bad = 1;
     if (box >= 0) H5Gclose(box);
     if (col >= 0) H5Gclose(col);
@@ -221,6 +288,8 @@ int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, const pl_collo
     t->len = phys ? p->a0_m * 1e9 : 1.0;
     t->tim = phys ? p->t0_s * 1e12 : 1.0;
     t->mass = phys ? p->m_f_kg : 1.0;
+    t->kin_mass = phys && p->mass_kg > 0.0 ? p->mass_kg : t->mass;
+    t->frame_dt = p->frame_dt;
     snprintf(t->len_unit, sizeof t->len_unit, "%s", phys ? "nm" : "a0");
     snprintf(t->time_unit, sizeof t->time_unit, "%s", phys ? "ps" : "t0");
     t->unit_attr = phys ? "unit" : "model_unit";
@@ -295,6 +364,10 @@ static int write_frame(pl_colloid_traj_t *t, const pl_traj_frame_t *f, pl_err_t 
         bad |= append(t->step[k], H5T_NATIVE_LLONG, 1, t->nframes, 1, 1, &f->step);
         bad |= append(t->time[k], H5T_NATIVE_DOUBLE, 1, t->nframes, 1, 1, &time);
     }
+    const double frame_dt = t->frame_dt * t->tim;
+    bad |= append(t->dt_val, H5T_NATIVE_DOUBLE, 1, t->nframes, 1, 1, &frame_dt);
+    bad |= append(t->dt_step, H5T_NATIVE_LLONG, 1, t->nframes, 1, 1, &f->step);
+    bad |= append(t->dt_time, H5T_NATIVE_DOUBLE, 1, t->nframes, 1, 1, &time);
     if (t->cid_val > 0) {
         for (size_t i = 0; i < t->n; ++i) t->cid_buf[i] = f->cluster_id ? f->cluster_id[i] : -1;
         bad |= append(t->cid_val, H5T_NATIVE_INT32, 2, t->cid_frames, t->n, 1, t->cid_buf);

@@ -298,6 +298,10 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         pl_colloid_traj_params_t tp = {.a0_m = scene->mapping.enabled ? m->a0 : 0.0,
                                        .t0_s = scene->mapping.enabled ? m->t0 : 0.0,
                                        .m_f_kg = scene->mapping.enabled ? m->m_f : 0.0,
+                                       .mass_kg = scene->mapping.enabled
+                                                      ? m->real.kT / (pl_scene_kT(scene) * m->a0 * m->a0 / (m->t0 * m->t0))
+                                                      : 0.0,
+                                       .frame_dt = (double)scene->colloids.trajectory_interval * scene->srd.dt,
                                        .xyz_path = scene->output.colloids_xyz ? xyz : NULL, .overwrite = 1};
         if ((rc = pl_colloid_traj_open(path, sim->colloids, &tp, &sim->colloid_traj, err))) goto done;
     }
