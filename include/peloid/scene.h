@@ -175,6 +175,15 @@ extern const pl_section_t pl_scene_section_observe, pl_scene_section_stop;
 int pl_observe_validate_scene(const pl_scene_t *scene, pl_err_t *err);
 /* ... and of observe.stress_* (src/observe/stress_module.c). */
 int pl_stress_validate_scene(const pl_scene_t *scene, pl_err_t *err);
+/* Whether every observer can measure something in the scene's run
+ * (src/observe/observe_span.c): samples in its window, a g(r) range beyond
+ * contact, inertial velocities for the VACF. */
+int pl_observe_validate_measurable(const pl_scene_t *scene, pl_err_t *err);
+/* The samplers' part of it for a run ending at step `last` (a --steps
+ * override): 1 with the key to blame (its offset in pl_scene_t) and why,
+ * 0 when every window holds enough samples. */
+int pl_observe_span_problem(const pl_scene_t *scene, long long last, size_t *off, const char **key, char *why,
+                            size_t n);
 
 /* Cross-key checks of the coupling section (src/coupling_scene.c). */
 int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err);

@@ -270,7 +270,7 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
                                  "%g a0 is beyond half the periodic box edge; allowed: <= %g a0 (minimum image)",
                                  o->rdf_rmax, half);
     }
-    return 0;
+    return pl_observe_validate_measurable(sc, err);
 }
 
 /* ---- lifetime ---------------------------------------------------------- */

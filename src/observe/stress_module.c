@@ -130,6 +130,8 @@ static int is_couette(const pl_scene_t *sc)
            (t[0] != b[0] || t[1] != b[1]);
 }
 
+static int gk_lags(const pl_scene_t *sc);
+
 int pl_stress_validate_scene(const pl_scene_t *sc, pl_err_t *err)
 {
     const long long s = sc->observe.stress_interval;
@@ -154,6 +156,23 @@ int pl_stress_validate_scene(const pl_scene_t *sc, pl_err_t *err)
     if (sc->fluid.density <= 0)
         return pl_scene_fail(sc, err, OFFO(stress_interval), "observe.stress_interval",
                              "%lld without fluid; allowed: 0 without fluid", s);
+    const long long start = sc->observe.stress_start, last = sc->run.steps;
+    if (start > last)
+        return pl_scene_fail(sc, err, OFFO(stress_start), "observe.stress_start",
+                             "%lld is after the run's last step %lld: the stress observer would accumulate "
+                             "nothing; allowed: a start <= %lld", start, last, last);
+    if (!is_couette(sc)) {
+        /* Green-Kubo: the sum over K lags needs a window several times K long
+         * to average the lag products; with fewer steps than lags it is absent */
+        const long long lags = gk_lags(sc);
+        if (last - start <= lags)
+            return pl_scene_fail(sc, err, sc->observe.stress_gk_steps > 0 ? OFFO(stress_gk_steps) : OFFO(stress_start),
+                                 sc->observe.stress_gk_steps > 0 ? "observe.stress_gk_steps" : "observe.stress_start",
+                                 "the Green-Kubo sum over %lld lags needs more than %lld steps after "
+                                 "observe.stress_start = %lld; the run ends at step %lld; allowed: fewer lags "
+                                 "(observe.stress_gk_steps), an earlier start, or a longer run (steps)",
+                                 lags, lags, start, last);
+    }
     return 0;
 }
 

@@ -262,6 +262,13 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                         (long long)scene->colloids.substeps, (long long)PL_RUN_MAX_STEP);
         goto done;
     }
+    if (o->steps >= 0 && o->log) { /* the scene's own steps passed check; an override is the user's call */
+        size_t off;
+        const char *key;
+        char why[400];
+        if (pl_observe_span_problem(scene, last, &off, &key, why, sizeof why))
+            fprintf(o->log, "peloid: warning: with --steps %lld, %s = %s\n", nsteps, key, why);
+    }
     /* a restarted state must pass the fluid guard before anything is written */
     if (o->restart && pl_fluid_guard_check(sim, first, 1, err)) {
         char why[sizeof err->msg];
