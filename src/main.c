@@ -19,7 +19,7 @@ static const char *const usage =
     "\n"
     "commands:\n"
     "  run SCENE [--out DIR] [--steps N] [--threads N] [--restart CHECKPOINT]\n"
-    "            [--restart-changed KEY[,KEY...]] [--force] [--allow-include-anywhere]\n"
+    "            [--restart-changed KEY[,KEY...]] [--force] [--strict] [--allow-include-anywhere]\n"
     "        run a scene; writes DIR/{thermo.tsv, summary.json, checkpoint.h5, scene.cfg\n"
     "        [, fields.h5 + fields.xdmf] [, colloids.h5 [+ colloids.xyz]]}.  DIR\n"
     "        defaults to out/<scene name>; an existing DIR is\n"
@@ -32,8 +32,11 @@ static const char *const usage =
     "        --threads N sets the OpenMP thread count (results do not depend on it).\n"
     "        A scene's @include files are resolved relative to the including file and\n"
     "        must lie in the scene's directory tree unless --allow-include-anywhere.\n"
-    "  check SCENE [--allow-include-anywhere]\n"
-    "        validate a scene without running it\n"
+    "  check SCENE [--strict] [--allow-include-anywhere]\n"
+    "        validate a scene without running it; a physical scene's audit warnings\n"
+    "        (a dimensionless number out of the papers' range, an implausible input\n"
+    "        with its likely unit mistake) are printed, and refused with --strict\n"
+    "        (also for run and params)\n"
     "  params SCENE [--json] [--strict] [--allow-include-anywhere]\n"
     "        print the derived SRD parameters: lambda, nu_kin, nu_col, nu, eta, D_f,\n"
     "        Sc, tau_f (Padding & Louis 2006, Eqs. 4, 6, 9-15)\n"
@@ -92,6 +95,7 @@ static int cmd_run(int argc, char **argv)
     pl_run_opts_t o = {.out_dir = NULL, .steps = -1, .threads = 0, .restart = NULL, .force = 0,
                        .progress = isatty(2), .log = stderr, .restart_changed = NULL};
     unsigned flags = 0;
+    int strict = 0;
     const char *scene_path = NULL;
     char msg[256];
     for (int i = 0; i < argc; ++i) {
@@ -99,6 +103,7 @@ static int cmd_run(int argc, char **argv)
         int has = i + 1 < argc;
         long long v;
         if (!strcmp(a, "--force")) o.force = 1;
+        else if (!strcmp(a, "--strict")) strict = 1;
         else if (!strcmp(a, "--allow-include-anywhere")) flags |= PL_SCENE_INCLUDE_ANYWHERE;
         else if (!strcmp(a, "--out") && has) o.out_dir = argv[++i];
         else if (!strcmp(a, "--restart") && has) o.restart = argv[++i];
@@ -128,6 +133,8 @@ static int cmd_run(int argc, char **argv)
     pl_scene_t *scene = malloc(sizeof *scene);
     pl_err_t err = {0, ""};
     int rc = scene ? pl_scene_load_flags(scene_path, flags, scene, &err) : PL_ERR_NOMEM;
+    if (!rc) rc = pl_mapping_report_strict(scene, strict, &err); /* --strict: the audit's warnings refused */
+    if (!rc) pl_mapping_warnings_print(scene, stderr);
     if (!rc) rc = pl_run(scene, &o, &err);
     free(scene);
     return rc ? fail(&err) : 0;
@@ -141,7 +148,7 @@ static int cmd_scene(int argc, char **argv, int params)
     for (int i = 0; i < argc; ++i) {
         if (!strcmp(argv[i], "--allow-include-anywhere")) flags |= PL_SCENE_INCLUDE_ANYWHERE;
         else if (params && !strcmp(argv[i], "--json")) json = 1;
-        else if (params && !strcmp(argv[i], "--strict")) strict = 1;
+        else if (!strcmp(argv[i], "--strict")) strict = 1;
         else if (argv[i][0] != '-' && !path) path = argv[i];
         else {
             char msg[256];
@@ -162,6 +169,8 @@ static int cmd_scene(int argc, char **argv, int params)
         rc = pl_mapping_report(scene, stdout, 0, strict, &err);
     } else if (!rc) { /* check: run's validation, including the derived values summary.json gets */
         rc = pl_run_check(scene, &err);
+        if (!rc) rc = pl_mapping_report_strict(scene, strict, &err);
+        if (!rc) pl_mapping_warnings_print(scene, stderr);
         if (!rc) printf("%s: ok\n", path);
     }
     free(scene);

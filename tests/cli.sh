@@ -235,6 +235,31 @@ printf 'srd: { dt = 1e-320; };\n' > denormal.cfg
 [ $rc -eq 2 ] && [ ! -e denormal ] && grep -q "derived.nu_col" err.txt && ok "srd.dt = 1e-320: non-finite derived value refused before JSON, nothing written" || bad "denormal dt: rc $rc $(cat err.txt)"
 "$PELOID" check denormal.cfg 2> /dev/null; [ $? -eq 2 ] && ok "check refuses it too" || bad "check denormal dt"
 
+# Plausible physical inputs: a likely unit mistake is a warning naming it
+# (check exits 0 and says ok), refused by --strict with file, line and key;
+# every shipped scene passes `check --strict` or its comment says why not.
+sed 's/viscosity = 1.0e-6;/viscosity = 0.89e-3;/' "$ROOT/scenes/quickstart.cfg" > visc.cfg
+sed 's/ionic_strength = 0.01;/ionic_strength = 10;/' "$ROOT/scenes/hecht_table1.cfg" > ion.cfg
+"$PELOID" check visc.cfg > out.txt 2> err.txt; rc=$?
+[ $rc -eq 0 ] && grep -q "ok" out.txt && grep -q "IMPLAUSIBLE: physical.viscosity = 0.00089" err.txt \
+  && grep -q "looks like a dynamic viscosity" err.txt && ok "viscosity 0.89e-3 m^2/s: check warns (a dynamic viscosity?)" \
+  || bad "viscosity 0.89e-3: rc $rc $(cat err.txt)"
+"$PELOID" check visc.cfg --strict 2> err.txt; rc=$?
+[ $rc -eq 2 ] && [ "$(wc -l < err.txt)" -eq 1 ] && grep -q "visc.cfg:[0-9]*: key 'physical.viscosity'" err.txt \
+  && ok "... and check --strict refuses it naming file, line and key" || bad "viscosity --strict: rc $rc $(cat err.txt)"
+"$PELOID" run visc.cfg --strict --out visc_out 2> err.txt; rc=$?
+[ $rc -eq 2 ] && [ ! -e visc_out ] && ok "run --strict refuses it, nothing written" || bad "run --strict: rc $rc"
+"$PELOID" check ion.cfg 2> err.txt > /dev/null; rc=$?
+[ $rc -eq 0 ] && grep -q "physical.ionic_strength = 10 mol/L" err.txt && grep -q "millimolar" err.txt \
+  && ok "ionic strength 10 mol/L: check warns (millimolar?)" || bad "ionic strength 10: rc $rc $(cat err.txt)"
+nstrict=0; why=""
+for f in "$ROOT"/scenes/*.cfg; do
+  if "$PELOID" check --strict "$f" > /dev/null 2> err.txt; then nstrict=$((nstrict+1));
+  elif ! grep -q "does not pass .check --strict." "$f"; then why="$why $(basename "$f")"; fi
+done
+[ -z "$why" ] && ok "$nstrict shipped scenes pass check --strict, the others say why in their comment" \
+  || bad "shipped scenes failing --strict without a reason in their comment:$why"
+
 # the adversarial scene set (issue 18): each refused with exit 2, one line
 # naming file, line and key, nothing written (tests/bad_scenes.sh)
 bash "$ROOT/tests/bad_scenes.sh" "$PELOID" > bad.txt 2>&1 && ok "$(tail -1 bad.txt)" || bad "bad scenes: $(cat bad.txt)"

@@ -122,6 +122,10 @@ typedef struct {
     int severity;    /* PL_SEV_* */
     double value;
     char text[400];  /* number, value, recommended range, source, input to change */
+    /* the input key it is about (empty: a derived number) and its offset in
+     * pl_scene_t, so that a refusal names file, line and key */
+    char key[40];
+    size_t key_off;
 } pl_mapping_warning_t;
 
 /* Full result of the mapping. */
@@ -274,6 +278,14 @@ int pl_mapping_scene_apply(struct pl_scene *scene, pl_err_t *err);
  * (naming it and the physical keys it comes from) and a pair term without
  * its material constants. */
 int pl_mapping_colloids_apply(struct pl_scene *scene, pl_err_t *err);
+
+/* Warnings (IMPLAUSIBLE) for physical{} values outside the plausible range
+ * of a liquid suspension, each naming the likely unit mistake
+ * (src/mapping/mapping_plausible.c). */
+void pl_mapping_plausible(const struct pl_scene *scene, pl_mapping_t *m);
+/* The audit's warnings (not its notes) of a physical scene, one line each
+ * ("peloid: warning: SCENE: NAME: text"); nothing for a model scene. */
+void pl_mapping_warnings_print(const struct pl_scene *scene, FILE *out);
 
 /* Relative permittivity of water at T (K), Malmberg & Maryott 1956 fit,
  * valid 273.15-373.15 K (NaN outside). */

@@ -56,7 +56,14 @@ static void audit_numbers(pl_mapping_t *m)
                         "Re = %.3g > %.2g (PL Sec. IV.C, Eq. 29): inertial effects; reduce "
                         "coarse_graining.mean_free_path (raises nu, PL Eq. 33) or coarse_graining.cell_size",
                         n->Re, RE_MAX);
-    if (n->Kn > KN_MAX)
+    /* Kn compares the mean free path with a resolved colloid surface
+     * (couplings I and potential); a coupling II colloid is a point in its
+     * cell, which resolves nothing smaller (Hecht Sec. VII.C): a note */
+    if (n->Kn > KN_MAX && m->cg.coupling == PL_COUPLING_II)
+        pl_mapping_warn(m, PL_SEV_NOTE, "KNUDSEN", n->Kn,
+                        "Kn = %.3g > %.2g (PL Sec. IV.D, Eq. 34), as always with coupling II: the colloid is a "
+                        "point in its cell, the flow around it is not resolved (Hecht Sec. VII.C)", n->Kn, KN_MAX);
+    else if (n->Kn > KN_MAX)
         pl_mapping_warn(m, PL_SEV_WARNING, "KNUDSEN", n->Kn,
                         "Kn = %.3g > %.2g (PL Sec. IV.D, Eq. 34): rarefaction lowers the friction; reduce "
                         "coarse_graining.mean_free_path or coarse_graining.cell_size (more cells per radius)",

@@ -204,6 +204,7 @@ int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
     c->md_dt = m->md_dt / m->t0;
     c->md_substeps = m->md_substeps;
     if (pl_mapping_colloids_apply(s, err)) return PL_ERR_INPUT;
+    pl_mapping_plausible(s, &mp->map);
     if (mp->cg.strict && pl_mapping_nwarnings(m) > 0) {
         for (int i = 0; i < m->nwarn; ++i)
             if (m->warn[i].severity == PL_SEV_WARNING)
@@ -227,12 +228,26 @@ int pl_mapping_report_strict(const struct pl_scene *scene, int strict, pl_err_t 
 {
     const pl_scene_mapping_t *mp = &scene->mapping;
     if (mp->enabled && (strict || mp->cg.strict)) {
-        for (int i = 0; i < mp->map.nwarn; ++i)
-            if (mp->map.warn[i].severity == PL_SEV_WARNING)
-                return pl_err_set(err, PL_ERR_INPUT, "%s: strict mapping audit: %s: %s", scene->path,
-                                  mp->map.warn[i].name, mp->map.warn[i].text);
+        for (int i = 0; i < mp->map.nwarn; ++i) {
+            const pl_mapping_warning_t *w = &mp->map.warn[i];
+            if (w->severity != PL_SEV_WARNING) continue;
+            if (w->key[0]) /* an input: its file, line and key */
+                return pl_scene_fail(scene, err, w->key_off, w->key, "strict mapping audit: %s: %s", w->name,
+                                     w->text);
+            return pl_err_set(err, PL_ERR_INPUT, "%s: strict mapping audit: %s: %s", scene->path, w->name,
+                              w->text);
+        }
     }
     return 0;
+}
+
+void pl_mapping_warnings_print(const struct pl_scene *scene, FILE *out)
+{
+    const pl_scene_mapping_t *mp = &scene->mapping;
+    if (!mp->enabled) return;
+    for (int i = 0; i < mp->map.nwarn; ++i)
+        if (mp->map.warn[i].severity == PL_SEV_WARNING)
+            fprintf(out, "peloid: warning: %s: %s: %s\n", scene->path, mp->map.warn[i].name, mp->map.warn[i].text);
 }
 
 /* The physical{} and coarse_graining{} inputs, each marked given (with its
