@@ -9,7 +9,7 @@
 #include <unistd.h>
 
 #include "peloid/h5.h"
-#include "peloid_build.h" /* PL_TOOLS_DIR (generated) */
+#include "peloid_build.h" /* PL_TOOLS_DIR, PL_CALIBRATION_DIR (generated) */
 #include "peloid/run.h"
 #include "peloid/scene.h"
 #include "peloid/sweep.h"
@@ -132,7 +132,8 @@ static int cmd_run(int argc, char **argv)
     if (!scene_path) return bad_usage("run: missing SCENE");
     pl_scene_t *scene = malloc(sizeof *scene);
     pl_err_t err = {0, ""};
-    int rc = scene ? pl_scene_load_flags(scene_path, flags, scene, &err) : PL_ERR_NOMEM;
+    int rc = scene ? pl_scene_load_coupling_true(scene_path, flags, PL_CALIBRATION_DIR, o.threads, stderr, scene, &err)
+                   : PL_ERR_NOMEM;
     if (!rc) rc = pl_mapping_report_strict(scene, strict, &err); /* --strict: the audit's warnings refused */
     if (!rc) pl_mapping_warnings_print(scene, stderr);
     if (!rc) rc = pl_run(scene, &o, &err);
@@ -160,7 +161,7 @@ static int cmd_scene(int argc, char **argv, int params)
     pl_scene_t *scene = malloc(sizeof *scene);
     pl_err_t err = {0, ""};
     if (!scene) return PL_ERR_NOMEM;
-    int rc = pl_scene_load_flags(path, flags, scene, &err);
+    int rc = pl_scene_load_coupling_true(path, flags, PL_CALIBRATION_DIR, 0, stderr, scene, &err);
     if (!rc && params && json) {
         rc = pl_params_write_json(scene, stdout, strict, &err);
     } else if (!rc && params) {

@@ -78,6 +78,25 @@ typedef struct {
 
 void pl_mapping_hecht_times(const pl_mapping_system_t *s, pl_mapping_hecht_times_t *t);
 
+/* ---- the colloid diffusion a coupling realises ------------------------- */
+/* A calibration run of the model (src/plan/calibrate.c): n_colloids free
+ * colloids in a periodic cube of `box` cells, `steps` collision steps; the
+ * MSD slope gives d_box +- d_box_se (a0^2/t0, kT = 1), and the periodic
+ * images' correction (Hasimoto 1959: + 2.837 kT / (6 pi eta L)) the
+ * unbounded d_inf, which sets t0 when time is matched on diffusion.
+ * d_inf = 0: none (the theory of the coupling is used, unverified). */
+typedef struct {
+    double d_inf, d_inf_se;   /* a0^2/t0 */
+    double d_box, d_box_se;   /* as measured in the calibration box */
+    double hasimoto;          /* the correction added, a0^2/t0 */
+    double d_theory;          /* the coupling's theory it replaces, a0^2/t0 */
+    double phi;               /* colloid volume fraction of the calibration box */
+    long long steps;
+    int n_colloids, box;
+    double cpu_s;             /* CPU time of the run (0: from the cache) */
+    char cache[640];          /* the cache file it was read from or written to */
+} pl_mapping_calibration_t;
+
 /* ---- coarse-graining choices ------------------------------------------ */
 typedef struct {
     int coupling;       /* PL_COUPLING_* */
@@ -93,6 +112,7 @@ typedef struct {
     double srd_dt;      /* SRD step in s; 0: derived (Hecht Eq. 30) */
     double md_dt;       /* MD step in s; 0: derived */
     double md_resolution; /* MD steps per shortest MD time scale (Hecht Sec. II: ~20) */
+    double d_col_calibrated; /* measured unbounded colloid D, a0^2/t0 (0: theory) */
 } pl_mapping_cg_t;
 
 /* Extra properties of the real system the audit needs. */
@@ -146,7 +166,15 @@ typedef struct {
     double sigma;         /* R / a0 */
     double mass_sim;      /* colloid mass / m_f */
     double xi_stokes_sim, xi_enskog_sim, xi_sim; /* m_f / t0 (PL Eqs. 39-41) */
-    double d_col_sim;     /* a0^2 / t0 */
+    double d_col_sim;     /* a0^2 / t0: unbounded colloid D, calibrated or 1 / xi_sim */
+    double d_col_theory;  /* 1 / xi_sim, the coupling's theory */
+    pl_mapping_calibration_t calib; /* where d_col_sim was measured (calib.d_inf > 0) */
+    /* the colloid D the scene's own box lets it reach: d_col_sim less the
+     * periodic images' 2.837 kT / (6 pi eta L) (cubic-lattice sum, L = the
+     * box volume's cube root) when every axis is periodic; box_periodic 0:
+     * walls, no correction stated */
+    double d_col_box, box_L;
+    int box_periodic;
     double g_sim;         /* gravity on the colloid, a0 / t0^2 */
     double v_sim;         /* flow / Stokes velocity, a0 / t0 */
     /* MD */
@@ -260,6 +288,7 @@ typedef struct {
     pl_scene_physical_t physical;
     pl_scene_cg_t cg;
     double kappa;                  /* 1/m, given or Debye-Hueckel */
+    pl_mapping_calibration_t calib; /* set by the loader before the mapping (d_inf 0: none) */
     pl_mapping_t map;              /* filled by pl_mapping_scene_apply */
     pl_mapping_colloid_t colloid;
 } pl_scene_mapping_t;
@@ -283,6 +312,13 @@ int pl_mapping_colloids_apply(struct pl_scene *scene, pl_err_t *err);
  * of a liquid suspension, each naming the likely unit mistake
  * (src/mapping/mapping_plausible.c). */
 void pl_mapping_plausible(const struct pl_scene *scene, pl_mapping_t *m);
+/* The colloid diffusion the mapping matched (src/mapping/mapping_diffusion.c):
+ * d_col_box from the scene's box (after the mapping set box.cells), and
+ * its lines in the text report and its object in the JSON one. */
+void pl_mapping_diffusion_box(struct pl_scene *scene);
+void pl_mapping_diffusion_print(const pl_mapping_t *m, FILE *out);
+struct json_t *pl_mapping_diffusion_json(const pl_mapping_t *m);
+
 /* The audit's warnings (not its notes) of a physical scene, one line each
  * ("peloid: warning: SCENE: NAME: text"); nothing for a model scene. */
 void pl_mapping_warnings_print(const struct pl_scene *scene, FILE *out);

@@ -44,4 +44,17 @@ int pl_run_check(const pl_scene_t *scene, pl_err_t *err);
  * for a scene with physical{} (strict: audit warnings are errors). */
 int pl_params_write_json(const pl_scene_t *scene, FILE *out, int strict, pl_err_t *err);
 
+/* Coupling-true time (src/plan/calibrate.c).  Whether a scene's mapping
+ * needs the measured colloid D: a physical scene with coupling I or II. */
+int pl_calibration_needed(const pl_scene_t *scene);
+/* The colloid D of the scene's model fluid and colloid, from
+ * shipped_dir/calibration-<key>.json, else the user's cache, else a
+ * calibration run (nthreads; a line on log, which may be NULL), cached. */
+int pl_calibrate(const pl_scene_t *scene, const char *shipped_dir, int nthreads, FILE *log,
+                 pl_mapping_calibration_t *cal, pl_err_t *err);
+/* pl_scene_load_flags, then, where needed, pl_calibrate and the scene
+ * loaded again with the calibrated D (pl_scene_load_calibrated). */
+int pl_scene_load_coupling_true(const char *path, unsigned flags, const char *shipped_dir, int nthreads, FILE *log,
+                                pl_scene_t *scene, pl_err_t *err);
+
 #endif

@@ -208,6 +208,12 @@ int pl_scene_load(const char *path, pl_scene_t *scene, pl_err_t *err);
 enum { PL_SCENE_INCLUDE_ANYWHERE = 1u };
 int pl_scene_load_flags(const char *path, unsigned flags, pl_scene_t *scene, pl_err_t *err);
 
+/* Same, with the colloid diffusion a calibration run measured for the
+ * scene's coupling and resolution (src/plan/calibrate.c), which the unit
+ * mapping then matches instead of the coupling's theory (NULL: theory). */
+int pl_scene_load_calibrated(const char *path, unsigned flags, const pl_mapping_calibration_t *calib,
+                             pl_scene_t *scene, pl_err_t *err);
+
 /* Same, from a string (tests); `label` stands in for the file name. */
 int pl_scene_load_string(const char *text, const char *label, pl_scene_t *scene,
                          pl_err_t *err);

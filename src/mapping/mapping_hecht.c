@@ -128,16 +128,34 @@ int pl_mapping_derive(const pl_mapping_system_t *real, const pl_mapping_solvent_
     *mo = *real;
     mo->nu = m->nu_sim * m->a0 * m->a0 / t0;
     mo->kT = m->kT_model;
-    if (cg->fluid_gravity) {
-        mo->g = real->g * mo->nu / real->nu; /* same v_S with buoyancy */
-        mo->buoyancy = 1;
+    /* Gravity: the model colloid settles at the real Stokes velocity (Hecht
+     * Eq. 16) with the friction the coupling realises, xi = kT / D (the
+     * calibrated D, else the theory's 1 / xi_sim), not 6 pi eta_model R:
+     * g_model = v_S xi / M_eff.  Hecht Eq. 31: no gravity on the fluid, hence
+     * no buoyancy, M_eff = M; with gravity on the fluid M_eff = M - M_f. */
+    mo->buoyancy = cg->fluid_gravity ? 1 : 0;
+    if (real->g > 0 && isfinite(m->hecht_real.v_s)) {
+        const double xi = m->kT_model / (m->d_col_sim * m->a0 * m->a0 / t0); /* kg/s */
+        const double mass = m->mass_sim * m->m_f * (cg->fluid_gravity ? 1.0 - real->rho_f / real->rho_p : 1.0);
+        mo->g = m->hecht_real.v_s * xi / mass;
     } else {
-        /* Hecht Eq. 31: no gravity on the fluid, hence no buoyancy. */
-        mo->g = real->g * mo->nu / real->nu * (1.0 - real->rho_f / real->rho_p);
-        mo->buoyancy = 0;
+        mo->g = 0.0;
     }
     mo->hamaker = real->hamaker / m->energy_scale; /* A_H / kT kept (Sec. VII.B) */
     pl_mapping_hecht_times(mo, &m->hecht_model);
+    /* The model colloid's friction is the coupling's (kT / D), not Stokes'
+     * with the model viscosity: its D, relaxation and settling follow from
+     * it (Hecht Eqs. 16-23 with xi = kT / D). */
+    pl_mapping_hecht_times_t *h = &m->hecht_model;
+    h->D = m->d_col_sim * m->a0 * m->a0 / t0;
+    h->tau_D = 2.0 * R * R / h->D;                          /* Hecht Eq. 20 */
+    h->tau_G = h->tau_D / 16.0;
+    h->tau_P = m->mass_sim * m->m_f * h->D / m->kT_model;  /* M / xi (Hecht Eq. 23 with xi = kT / D) */
+    if (mo->g > 0) {
+        h->v_s = m->hecht_real.v_s;                         /* by the choice of g above */
+        h->tau_S = 2.0 * R / h->v_s;                        /* Hecht Eq. 17 */
+    }
+    h->Pe = h->tau_D / h->tau_S;
     m->g_sim = mo->g * t0 * t0 / m->a0;
 
     double v_model = isfinite(m->hecht_model.tau_S) ? m->hecht_model.v_s : solvent->flow_velocity;

@@ -28,7 +28,9 @@ void pl_mapping_pl_colloid(double sigma, double rho_ratio, double v_sim, const p
     m->xi_enskog_sim = pl_mapping_xi_enskog(sigma, m->mass_sim, gamma, cg->boundary);
     m->xi_sim = cg->enskog ? 1.0 / (1.0 / m->xi_stokes_sim + 1.0 / m->xi_enskog_sim) /* PL Eq. 41 */
                            : m->xi_stokes_sim;
-    m->d_col_sim = 1.0 / m->xi_sim; /* PL Eq. 54, kT = 1 */
+    m->d_col_theory = 1.0 / m->xi_sim; /* PL Eq. 54, kT = 1 */
+    /* what the coupling realises, where a calibration measured it */
+    m->d_col_sim = cg->d_col_calibrated > 0 ? cg->d_col_calibrated : m->d_col_theory;
 
     const double cs = sqrt(5.0 / 3.0); /* PL Sec. IV.B: c_s = sqrt(5 kT / 3 m_f) */
     pl_mapping_pl_times_t *t = &m->pl_model;

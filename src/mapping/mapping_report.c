@@ -75,6 +75,7 @@ void pl_mapping_print_text(const pl_mapping_t *m, const pl_mapping_colloid_t *c,
         fprintf(f, "           A_H = %.4g kT, Coulomb prefactor (Hecht Eq. 1) = %.4g kT/a0, kappa = %.4g /a0, "
                    "l = %.4g a0, colloids = %lld\n",
                 c->hamaker, c->coulomb, c->kappa, c->primary_minimum, c->n_colloids);
+    pl_mapping_diffusion_print(m, f);
     fprintf(f, "  MD: dt_MD = %.4g s = %.4g t0, %lld MD steps per SRD step\n", m->md_dt, m->md_dt / m->t0,
             m->md_substeps);
     if (c && c->nprov > 0) {
@@ -170,6 +171,7 @@ int pl_mapping_json(const pl_mapping_t *m, const pl_mapping_colloid_t *c, const 
     pl_json_real_or_null(&b, o, "md_dt_t0", m->md_dt / m->t0);
     pl_json_int(&b, o, "md_substeps", m->md_substeps);
     pl_json_set(&b, doc, "colloid", o);
+    pl_json_set(&b, doc, "colloid_diffusion", pl_mapping_diffusion_json(m));
     row_t rows[8];
     jrows(&b, doc, "hecht_times", rows, hecht_rows(m, rows), m->dt, m->md_dt);
     jrows(&b, doc, "pl_times", rows, pl_rows(m, rows), m->dt, m->md_dt);

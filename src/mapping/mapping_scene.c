@@ -58,6 +58,7 @@ static void fill_inputs(const pl_scene_t *s, pl_mapping_system_t *r, pl_mapping_
     sv->self_diffusion = p->self_diffusion;
     *cg = (pl_mapping_cg_t){0};
     cg->coupling = c->coupling;
+    cg->d_col_calibrated = s->mapping.calib.d_inf;
     cg->match = c->time_match;
     cg->boundary = c->boundary;
     cg->enskog = c->enskog;
@@ -194,6 +195,7 @@ int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
     s->fluid.density = cg.gamma;
     s->fluid.temperature = 1.0;         /* kT_model is the energy unit */
     if (electrostatics(s, err) || apply_box(s, err)) return PL_ERR_INPUT;
+    pl_mapping_diffusion_box(s);
 
     pl_mapping_colloid_t *c = &mp->colloid;
     c->radius = m->sigma;

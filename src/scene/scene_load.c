@@ -335,7 +335,8 @@ static int default_name(pl_scene_t *scene, const char *label, pl_err_t *err)
     return 0;
 }
 
-static int load_text(const pl_scene_text_t *text, const char *label, pl_scene_t *scene, pl_err_t *err)
+static int load_text(const pl_scene_text_t *text, const char *label, const pl_mapping_calibration_t *calib,
+                     pl_scene_t *scene, pl_err_t *err)
 {
     config_t cfg;
     config_init(&cfg);
@@ -359,6 +360,7 @@ static int load_text(const pl_scene_text_t *text, const char *label, pl_scene_t 
     if (!rc) {
         pl_scene_defaults(scene);
         snprintf(scene->path, sizeof scene->path, "%s", label);
+        if (calib) scene->mapping.calib = *calib; /* the mapping (in validate) reads it */
         for (int i = 1; i < text->nfiles && i < PL_SCENE_MAX_FILES; ++i)
             snprintf(scene->include_path[i - 1], sizeof scene->include_path[i - 1], "%s", text->files[i]);
         ctx_t c = {text, err};
@@ -368,16 +370,22 @@ static int load_text(const pl_scene_text_t *text, const char *label, pl_scene_t 
     return rc ? rc : pl_scene_validate(scene, err);
 }
 
-int pl_scene_load_flags(const char *path, unsigned flags, pl_scene_t *scene, pl_err_t *err)
+int pl_scene_load_calibrated(const char *path, unsigned flags, const pl_mapping_calibration_t *calib,
+                             pl_scene_t *scene, pl_err_t *err)
 {
     if (strlen(path) >= sizeof scene->path)
         return pl_err_set(err, PL_ERR_INPUT, "%.100s...: scene path longer than %zu characters", path,
                           sizeof scene->path - 1);
     pl_scene_text_t text;
     int rc = pl_scene_text_read(&text, path, (flags & PL_SCENE_INCLUDE_ANYWHERE) != 0, err);
-    if (!rc) rc = load_text(&text, path, scene, err);
+    if (!rc) rc = load_text(&text, path, calib, scene, err);
     pl_scene_text_free(&text);
     return rc;
+}
+
+int pl_scene_load_flags(const char *path, unsigned flags, pl_scene_t *scene, pl_err_t *err)
+{
+    return pl_scene_load_calibrated(path, flags, NULL, scene, err);
 }
 
 int pl_scene_load(const char *path, pl_scene_t *scene, pl_err_t *err)
@@ -389,7 +397,7 @@ int pl_scene_load_string(const char *text, const char *label, pl_scene_t *scene,
 {
     pl_scene_text_t t;
     int rc = pl_scene_text_string(&t, text, label, err);
-    if (!rc) rc = load_text(&t, label, scene, err);
+    if (!rc) rc = load_text(&t, label, NULL, scene, err);
     pl_scene_text_free(&t);
     return rc;
 }

@@ -1,0 +1,91 @@
+/* The colloid diffusion coefficient the unit mapping matches (DESIGN.md
+ * "Units and mapping": never claim a match that was not verified): where it
+ * comes from (a calibration run of the coupling, src/plan/calibrate.c, or
+ * the coupling's theory, PL Eqs. 39-41), its standard error, how far it is
+ * from that theory, and what the scene's own periodic box leaves of it
+ * (Hasimoto 1959, PL Eq. 43: D_L = D - 2.837 kT / (6 pi eta L)). */
+#include <jansson.h>
+#include <math.h>
+#include <stdio.h>
+
+#include "peloid/real.h" /* PL_PI */
+#include "peloid/scene.h"
+
+static const double HASIMOTO = 2.837297;
+
+void pl_mapping_diffusion_box(struct pl_scene *s)
+{
+    pl_mapping_t *m = &s->mapping.map;
+    m->calib = s->mapping.calib;
+    const int *n = s->box.cells;
+    m->box_L = cbrt((double)n[0] * n[1] * n[2]);
+    m->box_periodic = s->box.walls_z == PL_WALLS_NONE && s->box.walls_xy == PL_WALLS_NONE;
+    const double eta = m->cg.gamma * m->nu_sim; /* m_f / (a0 t0), kT = 1 */
+    m->d_col_box = m->box_periodic ? m->d_col_sim - HASIMOTO / (6.0 * PL_PI * eta * m->box_L) : NAN;
+}
+
+/* m^2/s per a0^2/t0 */
+static double si(const pl_mapping_t *m) { return m->a0 * m->a0 / m->t0; }
+
+static const char *source(const pl_mapping_t *m)
+{
+    return m->calib.d_inf > 0 ? "calibration" : "theory (PL Eqs. 39-41, not verified)";
+}
+
+void pl_mapping_diffusion_print(const pl_mapping_t *m, FILE *f)
+{
+    const pl_mapping_calibration_t *c = &m->calib;
+    const double d_real = m->hecht_real.D;
+    fprintf(f, "  colloid D: %.5g a0^2/t0 = %.4g m^2/s (%s)", m->d_col_sim, m->d_col_sim * si(m), source(m));
+    if (c->d_inf > 0)
+        fprintf(f, " +- %.2g (%.1f %%)", c->d_inf_se, 100.0 * c->d_inf_se / c->d_inf);
+    fprintf(f, "; real kT/(6 pi eta R) = %.4g m^2/s: model/real = %.4g%s\n", d_real, m->d_col_sim * si(m) / d_real,
+            m->cg.match == PL_MATCH_DIFFUSION && m->cg.srd_dt <= 0 ? " (time matched on it)" : "");
+    if (c->d_inf > 0)
+        fprintf(f, "    calibration: %d colloid(s) in %d^3 periodic cells (phi %.3g), %lld steps: D_box = %.5g +- %.2g, "
+                   "+ %.4g periodic images (Hasimoto); the coupling's theory 1/xi = %.5g (measured/theory %.3g); %s "
+                   "%s\n",
+                c->n_colloids, c->box, c->phi, c->steps, c->d_box, c->d_box_se, c->hasimoto, c->d_theory,
+                c->d_inf / c->d_theory, c->cpu_s > 0 ? "run now, cached in" : "read from", c->cache);
+    if (m->box_periodic)
+        fprintf(f, "    in this scene's periodic box (L = %.4g a0) a dilute colloid diffuses with D_L = %.5g a0^2/t0 "
+                   "= %.4g m^2/s, %.4g of the real D (periodic images, Hasimoto; compare D_L with a measured D)\n",
+                m->box_L, m->d_col_box, m->d_col_box * si(m), m->d_col_box / m->d_col_sim);
+    else
+        fprintf(f, "    the scene's box has walls: a measured D is also slowed by them (not corrected here)\n");
+}
+
+json_t *pl_mapping_diffusion_json(const pl_mapping_t *m)
+{
+    const pl_mapping_calibration_t *c = &m->calib;
+    json_t *o = json_object();
+    json_object_set_new(o, "source", json_string(c->d_inf > 0 ? "calibration" : "theory"));
+    json_object_set_new(o, "d_a0_2_t0", json_real(m->d_col_sim));
+    json_object_set_new(o, "d_m2_s", json_real(m->d_col_sim * si(m)));
+    json_object_set_new(o, "d_real_m2_s", json_real(m->hecht_real.D));
+    json_object_set_new(o, "model_over_real", json_real(m->d_col_sim * si(m) / m->hecht_real.D));
+    json_object_set_new(o, "d_theory_a0_2_t0", json_real(m->d_col_theory));
+    if (c->d_inf > 0) {
+        json_t *k = json_object();
+        json_object_set_new(k, "d_inf_a0_2_t0", json_real(c->d_inf));
+        json_object_set_new(k, "d_inf_se_a0_2_t0", json_real(c->d_inf_se));
+        json_object_set_new(k, "d_box_a0_2_t0", json_real(c->d_box));
+        json_object_set_new(k, "hasimoto_a0_2_t0", json_real(c->hasimoto));
+        json_object_set_new(k, "colloids", json_integer(c->n_colloids));
+        json_object_set_new(k, "box_cells", json_integer(c->box));
+        json_object_set_new(k, "steps", json_integer(c->steps));
+        json_object_set_new(k, "phi", json_real(c->phi));
+        json_object_set_new(k, "cpu_s", json_real(c->cpu_s));
+        json_object_set_new(k, "cache", json_string(c->cache));
+        json_object_set_new(o, "calibration", k);
+    }
+    if (m->box_periodic) {
+        json_object_set_new(o, "box_L_a0", json_real(m->box_L));
+        json_object_set_new(o, "d_box_a0_2_t0", json_real(m->d_col_box));
+        json_object_set_new(o, "d_box_m2_s", json_real(m->d_col_box * si(m)));
+        json_object_set_new(o, "box_factor", json_real(m->d_col_box / m->d_col_sim));
+    } else {
+        json_object_set_new(o, "box_note", json_string("walls: not corrected"));
+    }
+    return o;
+}

@@ -1,0 +1,413 @@
+/* Coupling-true time (DESIGN.md "Units and mapping"): the colloid diffusion
+ * coefficient that coupling I or II realises at the scene's resolution is
+ * measured by a short deterministic model run, and the unit mapping matches
+ * that, not the Stokes-Einstein value of the model viscosity, to the real
+ * colloid's D (Hecht Eq. 30).  Coupling II's friction is the cell
+ * collision's plus the hydrodynamic part, not 6 pi eta R (the colloids of a
+ * theory-mapped scene diffused ~1.9x faster than Stokes-Einstein); coupling
+ * I's stochastic surface is not exactly PL Eq. 39's either.
+ *
+ * The run: the scene's model fluid (gamma, lambda, rule, thermostat) and
+ * colloid (radius, mass, coupling keys) in a periodic cube, without walls,
+ * gravity or pair forces; coupling II: 32 colloids in one box (points in
+ * their cells; 0.8 % of the cells); coupling I: one colloid per box, in
+ * replicas (no overlaps, no concentration effect).  D from the slope of the
+ * mean-squared displacement between the lags t1 = 4 tau_v and t2 = 12 tau_v
+ * (tau_v = M D: the velocity relaxation, so the slope is 0.6 % below the
+ * long-time one), averaged over colloids, origins and replicas; its standard
+ * error from 8 blocks of time origins per replica.  The periodic images
+ * slow a colloid by 2.837 kT / (6 pi eta L) (Hasimoto 1959, PL Eq. 43; eta
+ * of the rule: PL Eqs. 9-15 or Hecht Eq. 28), which is added back for the
+ * unbounded D.
+ *
+ * The result depends only on the model parameters it hashes (not on t0, the
+ * salt, the colloid count or the seed of the scene), so it is cached: in
+ * PELOID_CACHE, else $XDG_CACHE_HOME/peloid, else ~/.cache/peloid, one JSON
+ * file per parameter set (written atomically, under a lock so that
+ * concurrent sweep points run it once), and read-only in the project's
+ * calibration/ directory for the shipped scenes (`make calibrations`; not
+ * read with PELOID_NO_SHIPPED_CALIBRATION set).  The
+ * run is bitwise deterministic, so a cached and a fresh calibration agree
+ * to the last bit (tests/calibration.sh). */
+#include <errno.h>
+#include <fcntl.h>
+#include <jansson.h>
+#include <math.h>
+#include <omp.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "peloid/colloid.h"
+#include "peloid/io.h"
+#include "peloid/real.h" /* PL_PI */
+#include "peloid/run.h"
+#include "peloid/sim.h"
+#include "peloid/srd_theory.h"
+
+enum { CAL_VERSION = 1, CAL_BLOCKS = 8, CAL_N2 = 32 };
+static const long long CAL_SEED = 20261204;
+static const double CAL_BUDGET = 6e8;       /* fluid particle-steps of one calibration */
+static const double CAL_TARGET = 15000.0;   /* colloid-time in units of tau_v: ~3 % SE */
+static const double HASIMOTO = 2.837297;
+
+/* ---- the model run ------------------------------------------------------ */
+
+typedef struct {
+    int n, L, replicas;
+    long long steps, stride, lag1, lag2; /* collision steps; lags in strides */
+} cal_plan_t;
+
+/* The calibration scene: the scene's model with the box, colloids and
+ * everything that does not set the friction replaced. */
+static void cal_scene(const pl_scene_t *sc, const cal_plan_t *p, int replica, pl_scene_t *c)
+{
+    *c = *sc;
+    c->mapping.enabled = 0;
+    c->run.seed = CAL_SEED + replica;
+    for (int d = 0; d < 3; ++d) c->box.cells[d] = p->L;
+    c->box.walls_z = c->box.walls_xy = PL_WALLS_NONE;
+    memset(c->box.wall_velocity, 0, sizeof c->box.wall_velocity);
+    memset(c->fluid.body_force, 0, sizeof c->fluid.body_force);
+    pl_scene_colloids_t *k = &c->colloids;
+    k->count = p->n;
+    k->init = PL_CINIT_RANDOM;
+    k->polydispersity = 0.0;
+    k->pairs[0] = '\0';
+    k->integrator = PL_CINT_VERLET;
+    k->substeps = 1; /* no force: free flight between the coupling's impulses */
+    k->max_overlap = 1.0; /* ideal colloids: overlaps are not contacts here */
+    k->slow_interval = 1;
+    memset(k->gravity, 0, sizeof k->gravity);
+    k->trajectory_interval = 0;
+    memset(&k->dlvo, 0, sizeof k->dlvo);
+    memset(&k->hertz, 0, sizeof k->hertz);
+    memset(&k->lub, 0, sizeof k->lub);
+    memset(&k->wca, 0, sizeof k->wca);
+    c->coupling.pinned = 0;
+    c->coupling.compensate_gravity = 0;
+    memset(c->coupling.flow_velocity, 0, sizeof c->coupling.flow_velocity);
+    pl_scene_observe_t *o = &c->observe; /* no observer: the run only steps */
+    o->rdf_interval = o->sq_interval = o->msd_interval = o->vacf_interval = o->cff_interval = 0;
+    o->clusters_interval = o->vdist_interval = o->sediment_interval = o->stress_interval = 0;
+    c->stop.observable = PL_STOP_NONE;
+}
+
+/* FNV-1a over the parts of the calibration scene that set its bits. */
+static uint64_t fnv(uint64_t h, const void *p, size_t n)
+{
+    const unsigned char *b = p;
+    for (size_t i = 0; i < n; ++i) h = (h ^ b[i]) * 1099511628211ull;
+    return h;
+}
+
+static uint64_t cal_key(const pl_scene_t *c, const cal_plan_t *p)
+{
+    uint64_t h = 1469598103934665603ull;
+    const int v = CAL_VERSION;
+    h = fnv(h, &v, sizeof v);
+    h = fnv(h, p, sizeof *p);
+    h = fnv(h, &c->fluid, sizeof c->fluid);
+    h = fnv(h, &c->srd, sizeof c->srd);
+    h = fnv(h, &c->thermostat, sizeof c->thermostat);
+    h = fnv(h, &c->coupling, sizeof c->coupling);
+    const pl_scene_colloids_t *k = &c->colloids;
+    const double cd[] = {k->radius, k->mass_density, k->temperature, k->max_overlap, k->neighbor_skin};
+    h = fnv(h, cd, sizeof cd);
+    return h;
+}
+
+/* Unbounded-box viscosity of the scene's fluid (PL Eqs. 9-15 / Hecht Eq. 28). */
+static double eta_of(const pl_scene_t *sc)
+{
+    pl_srd_theory_t th;
+    pl_srd_theory(sc->fluid.density, sc->srd.rule, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, pl_scene_kT(sc),
+                  &th);
+    return th.eta;
+}
+
+static int cal_plan(const pl_scene_t *sc, cal_plan_t *p)
+{
+    const pl_mapping_t *m = &sc->mapping.map;
+    const double sigma = sc->colloids.radius, M = m->mass_sim, dt = sc->srd.dt;
+    /* the theory's D sizes the run; coupling II colloids move ~2x faster */
+    const double tau_v = M * 2.0 * m->d_col_theory;
+    const int two = sc->coupling.method == PL_COUPLE_HECHT2;
+    p->L = (int)fmax(16.0, ceil(8.0 * sigma));
+    p->n = two ? CAL_N2 : 1;
+    p->stride = (long long)fmax(1.0, floor(tau_v / dt / 2.0));
+    const double sdt = (double)p->stride * dt;
+    p->lag1 = (long long)ceil(4.0 * tau_v / sdt);
+    p->lag2 = (long long)ceil(12.0 * tau_v / sdt);
+    if (p->lag2 < p->lag1 + 2) p->lag2 = p->lag1 + 2;
+    /* each block holds 5 times the longest lag; the colloid-time the target asks */
+    const double per_box = (double)p->L * p->L * p->L * sc->fluid.density;
+    double strides = fmax(5.0 * CAL_BLOCKS * (double)p->lag2, CAL_TARGET * tau_v / (p->n * sdt));
+    double replicas = 1.0;
+    if (!two) { /* replicas of one colloid: the target over whole replicas */
+        strides = 5.0 * CAL_BLOCKS * (double)p->lag2;
+        replicas = ceil(CAL_TARGET * tau_v / (strides * sdt));
+    }
+    double cost = per_box * strides * (double)p->stride * replicas;
+    if (cost > CAL_BUDGET) { /* within the budget; the SE says what it bought */
+        if (two) strides = fmax(5.0 * CAL_BLOCKS * (double)p->lag2, strides * CAL_BUDGET / cost);
+        else replicas = fmax(2.0, floor(replicas * CAL_BUDGET / cost));
+    }
+    p->replicas = (int)replicas;
+    p->steps = (long long)ceil(strides) * p->stride;
+    return M > 0 && tau_v > 0 ? 0 : -1;
+}
+
+/* Per replica: block means of the slope estimate, over colloids and origins. */
+static int cal_replica(const pl_scene_t *sc, const cal_plan_t *p, int replica, int nthreads, double *blocks,
+                       pl_err_t *err)
+{
+    pl_scene_t *c = malloc(sizeof *c);
+    if (!c) return pl_err_set(err, PL_ERR_NOMEM, "out of memory (calibration scene)");
+    cal_scene(sc, p, replica, c);
+    pl_sim_t *sim = NULL;
+    int rc = pl_sim_create(c, nthreads, &sim, err);
+    free(c);
+    if (rc) return rc;
+    const long long nrec = p->steps / p->stride + 1;
+    const size_t n = (size_t)p->n;
+    double *r = malloc((size_t)nrec * n * 3 * sizeof *r);
+    if (!r) {
+        pl_sim_free(sim);
+        return pl_err_set(err, PL_ERR_NOMEM, "out of memory (calibration positions)");
+    }
+    for (long long k = 0; k < nrec && !rc; ++k) {
+        if (k > 0)
+            for (long long s = 0; s < p->stride && !rc; ++s) rc = pl_sim_step(sim, err);
+        const pl_colloid_t *col = sim->colloids;
+        for (size_t i = 0; i < n; ++i) {
+            double *q = r + ((size_t)k * n + i) * 3;
+            q[0] = col->x[i] + col->ix[i] * col->box[0];
+            q[1] = col->y[i] + col->iy[i] * col->box[1];
+            q[2] = col->z[i] + col->iz[i] * col->box[2];
+        }
+    }
+    pl_sim_free(sim);
+    if (rc) {
+        free(r);
+        return rc;
+    }
+    /* origins k in block b: [b, b + 1) * nrec / blocks, with k + lag2 < nrec */
+    const long long last = nrec - 1 - p->lag2;
+    const double dl = (double)(p->lag2 - p->lag1) * (double)p->stride * sc->srd.dt;
+    for (int b = 0; b < CAL_BLOCKS; ++b) {
+        long long k0 = (last + 1) * b / CAL_BLOCKS, k1 = (last + 1) * (b + 1) / CAL_BLOCKS;
+        double sum = 0.0;
+        for (long long k = k0; k < k1; ++k)
+            for (size_t i = 0; i < n; ++i) {
+                const double *a = r + ((size_t)k * n + i) * 3, *b1 = r + ((size_t)(k + p->lag1) * n + i) * 3,
+                             *b2 = r + ((size_t)(k + p->lag2) * n + i) * 3;
+                double s1 = 0.0, s2 = 0.0;
+                for (int d = 0; d < 3; ++d) {
+                    s1 += (b1[d] - a[d]) * (b1[d] - a[d]);
+                    s2 += (b2[d] - a[d]) * (b2[d] - a[d]);
+                }
+                sum += (s2 - s1) / (6.0 * dl);
+            }
+        blocks[b] = sum / (double)((k1 - k0) * (long long)n);
+    }
+    free(r);
+    return 0;
+}
+
+static int cal_run(const pl_scene_t *sc, const cal_plan_t *p, int nthreads, pl_mapping_calibration_t *cal,
+                   pl_err_t *err)
+{
+    const int nb = p->replicas * CAL_BLOCKS;
+    double *blk = malloc((size_t)nb * sizeof *blk);
+    if (!blk) return pl_err_set(err, PL_ERR_NOMEM, "out of memory (calibration)");
+    const double t0 = omp_get_wtime();
+    int rc = 0;
+    for (int q = 0; q < p->replicas && !rc; ++q) rc = cal_replica(sc, p, q, nthreads, blk + q * CAL_BLOCKS, err);
+    if (rc) {
+        free(blk);
+        return rc;
+    }
+    double mean = 0.0, var = 0.0;
+    for (int b = 0; b < nb; ++b) mean += blk[b];
+    mean /= nb;
+    for (int b = 0; b < nb; ++b) var += (blk[b] - mean) * (blk[b] - mean);
+    free(blk);
+    const double L = p->L, kT = pl_scene_kT(sc);
+    cal->d_box = mean;
+    cal->d_box_se = sqrt(var / (nb - 1.0) / nb);
+    cal->hasimoto = HASIMOTO * kT / (6.0 * PL_PI * eta_of(sc) * L);
+    cal->d_inf = (mean + cal->hasimoto) / kT; /* a0^2/t0 at kT = 1, as the mapping uses it */
+    cal->d_inf_se = cal->d_box_se / kT;
+    cal->phi = p->n * 4.0 / 3.0 * PL_PI * pow(sc->colloids.radius, 3) / (L * L * L);
+    cal->n_colloids = p->n * p->replicas;
+    cal->box = p->L;
+    cal->steps = p->steps;
+    cal->cpu_s = omp_get_wtime() - t0;
+    if (!(isfinite(cal->d_inf) && cal->d_inf > 0))
+        return pl_err_set(err, PL_ERR_GUARD, "calibration: the measured colloid D is %g a0^2/t0 (not positive)",
+                          cal->d_inf);
+    return 0;
+}
+
+/* ---- the cache ------------------------------------------------------------ */
+
+static const char *const FIELDS[] = {"d_inf", "d_inf_se", "d_box", "d_box_se", "hasimoto", "phi", "cpu_s"};
+static double *field(pl_mapping_calibration_t *c, int k)
+{
+    double *f[] = {&c->d_inf, &c->d_inf_se, &c->d_box, &c->d_box_se, &c->hasimoto, &c->phi, &c->cpu_s};
+    return f[k];
+}
+enum { NFIELDS = sizeof FIELDS / sizeof FIELDS[0] };
+
+static int cache_read(const char *path, pl_mapping_calibration_t *c)
+{
+    json_t *j = json_load_file(path, 0, NULL);
+    if (!j) return -1;
+    int ok = json_integer_value(json_object_get(j, "version")) == CAL_VERSION;
+    for (int k = 0; ok && k < NFIELDS; ++k) {
+        json_t *v = json_object_get(j, FIELDS[k]);
+        ok = json_is_number(v) && isfinite(json_number_value(v));
+        if (ok) *field(c, k) = json_number_value(v);
+    }
+    if (ok) {
+        c->n_colloids = (int)json_integer_value(json_object_get(j, "n_colloids"));
+        c->box = (int)json_integer_value(json_object_get(j, "box"));
+        c->steps = json_integer_value(json_object_get(j, "steps"));
+        ok = c->d_inf > 0 && c->n_colloids > 0 && c->box > 0 && c->steps > 0;
+    }
+    json_decref(j);
+    return ok ? 0 : -1;
+}
+
+static int cache_write(const char *path, const pl_mapping_calibration_t *c, const char *about, pl_err_t *err)
+{
+    json_t *j = json_object();
+    int bad = !j || json_object_set_new(j, "version", json_integer(CAL_VERSION)) ||
+              json_object_set_new(j, "about", json_string(about));
+    pl_mapping_calibration_t cc = *c;
+    for (int k = 0; !bad && k < NFIELDS; ++k) bad = json_object_set_new(j, FIELDS[k], json_real(*field(&cc, k)));
+    bad = bad || json_object_set_new(j, "n_colloids", json_integer(c->n_colloids)) ||
+          json_object_set_new(j, "box", json_integer(c->box)) || json_object_set_new(j, "steps", json_integer(c->steps));
+    char tmp[600];
+    pl_atomic_tmp(path, tmp, sizeof tmp);
+    if (!bad) bad = json_dump_file(j, tmp, JSON_INDENT(2) | JSON_REAL_PRECISION(17)) != 0;
+    json_decref(j);
+    if (bad) {
+        unlink(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: cannot write the calibration", tmp);
+    }
+    return pl_atomic_commit(tmp, path, err);
+}
+
+/* mkdir -p; 0 or -1 */
+static int make_dirs(const char *dir)
+{
+    char b[512];
+    snprintf(b, sizeof b, "%s", dir);
+    for (char *s = b + 1; *s; ++s)
+        if (*s == '/') {
+            *s = '\0';
+            if (mkdir(b, 0755) && errno != EEXIST) return -1;
+            *s = '/';
+        }
+    return mkdir(b, 0755) && errno != EEXIST ? -1 : 0;
+}
+
+static void cache_dir(char *dir, size_t n)
+{
+    const char *e = getenv("PELOID_CACHE"), *x = getenv("XDG_CACHE_HOME"), *h = getenv("HOME");
+    if (e && *e) snprintf(dir, n, "%s", e);
+    else if (x && *x) snprintf(dir, n, "%s/peloid", x);
+    else snprintf(dir, n, "%s/.cache/peloid", h && *h ? h : "/tmp");
+}
+
+/* 1 with *cal read from path (and what it replaces), 0 when not there. */
+static int from_cache(const char *path, const pl_scene_t *sc, pl_mapping_calibration_t *cal)
+{
+    if (cache_read(path, cal)) return 0;
+    snprintf(cal->cache, sizeof cal->cache, "%s", path);
+    cal->cpu_s = 0.0; /* this run paid nothing */
+    cal->d_theory = sc->mapping.map.d_col_theory;
+    return 1;
+}
+
+/* ---- the entry point -------------------------------------------------------- */
+
+int pl_calibration_needed(const pl_scene_t *sc)
+{
+    const int m = sc->coupling.method;
+    return sc->mapping.enabled && (m == PL_COUPLE_HECHT1 || m == PL_COUPLE_HECHT2) && sc->colloids.count > 0 &&
+           sc->fluid.density > 0;
+}
+
+int pl_calibrate(const pl_scene_t *sc, const char *shipped_dir, int nthreads, FILE *log, pl_mapping_calibration_t *cal,
+                 pl_err_t *err)
+{
+    memset(cal, 0, sizeof *cal);
+    cal_plan_t p;
+    memset(&p, 0, sizeof p); /* hashed: no padding left undefined */
+    if (cal_plan(sc, &p)) return pl_err_set(err, PL_ERR_INPUT, "calibration: the colloid has no mass or friction");
+    pl_scene_t *c = malloc(sizeof *c);
+    if (!c) return pl_err_set(err, PL_ERR_NOMEM, "out of memory (calibration)");
+    cal_scene(sc, &p, 0, c);
+    const uint64_t key = cal_key(c, &p);
+    free(c);
+    cal->d_theory = sc->mapping.map.d_col_theory;
+    char name[64], path[600];
+    snprintf(name, sizeof name, "calibration-%016llx.json", (unsigned long long)key);
+    const char *no_shipped = getenv("PELOID_NO_SHIPPED_CALIBRATION"); /* make calibrations, tests */
+    if (shipped_dir && !(no_shipped && *no_shipped)) { /* the project's read-only set */
+        pl_path_join(path, sizeof path, shipped_dir, name);
+        if (from_cache(path, sc, cal)) return 0;
+    }
+    char dir[512];
+    cache_dir(dir, sizeof dir);
+    const int have_dir = make_dirs(dir) == 0;
+    pl_path_join(path, sizeof path, dir, name);
+    int lock = -1;
+    if (have_dir) {
+        char lp[620];
+        snprintf(lp, sizeof lp, "%s.lock", path);
+        lock = open(lp, O_CREAT | O_RDWR, 0644);
+        if (lock >= 0) flock(lock, LOCK_EX); /* another process may be measuring the same */
+        if (from_cache(path, sc, cal)) {
+            if (lock >= 0) close(lock);
+            return 0;
+        }
+    }
+    if (log)
+        fprintf(log, "peloid: calibrating the colloid diffusion of coupling %s at this resolution (once; cached "
+                     "in %s): %d x %d colloid(s) in %d^3 cells, %lld steps\n",
+                sc->coupling.method == PL_COUPLE_HECHT2 ? "II" : "I", have_dir ? dir : "nowhere: no cache directory",
+                p.replicas, p.n, p.L, p.steps);
+    int rc = cal_run(sc, &p, nthreads, cal, err);
+    cal->d_theory = sc->mapping.map.d_col_theory;
+    if (!rc && have_dir) {
+        char about[400];
+        snprintf(about, sizeof about,
+                 "peloid coupling-%s calibration: gamma %g, lambda %g, rule %d, alpha %g, radius %.17g a0, mass "
+                 "density %.17g m_f/a0^3; D in a0^2/t0 at kT = 1 (src/plan/calibrate.c)",
+                 sc->coupling.method == PL_COUPLE_HECHT2 ? "II" : "I", sc->fluid.density, sc->srd.dt, sc->srd.rule,
+                 sc->srd.alpha_deg, sc->colloids.radius, sc->colloids.mass_density);
+        rc = cache_write(path, cal, about, err);
+        if (!rc) snprintf(cal->cache, sizeof cal->cache, "%s", path);
+    }
+    if (lock >= 0) close(lock);
+    return rc;
+}
+
+int pl_scene_load_coupling_true(const char *path, unsigned flags, const char *shipped_dir, int nthreads, FILE *log,
+                                pl_scene_t *scene, pl_err_t *err)
+{
+    int rc = pl_scene_load_flags(path, flags, scene, err);
+    if (rc || !pl_calibration_needed(scene)) return rc;
+    pl_mapping_calibration_t cal;
+    if ((rc = pl_calibrate(scene, shipped_dir, nthreads > 0 ? nthreads : omp_get_max_threads(), log, &cal, err)))
+        return rc;
+    return pl_scene_load_calibrated(path, flags, &cal, scene, err);
+}

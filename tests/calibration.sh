@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# Coupling-true time (src/plan/calibrate.c, src/mapping/mapping_diffusion.c):
+#  - a calibration is bitwise the same at 1 and 2 threads, fresh or read
+#    back from the cache, and the shipped calibration/ file of the quickstart
+#    is what the code computes now;
+#  - a dilute physical suspension (coupling II, phi = 0.02, Hertz only, no
+#    gravity, periodic) diffuses as the mapping says: the lateral D measured
+#    from colloids.h5 with h5py alone (tools/h5md_lateral_diffusion.py, SI)
+#    equals the real Stokes-Einstein D times the periodic box's factor the
+#    mapping states (summary.json mapping.colloid_diffusion.d_box_m2_s)
+#    within the issue's 10 %.  Measured: 5.25e-13 +- 0.12e-13 m^2/s against
+#    5.20e-13 (+1.1 %, SE 2.2 %; the calibration's own SE 1.8 %); the SE
+#    must be below 3.3 % so that 10 % is 3 SE.  Shown to fail: with the
+#    theory's 6 pi eta R mapping (d8cc9c3) the same scene diffused 1.9-2.1x
+#    faster (9.8e-13 and 1.07e-12 m^2/s at lags of 4-12 tau_P) than the
+#    5.2e-13 it was mapped to.
+set -u
+PELOID=$(realpath "${1:-bin/peloid}")
+ROOT=$(realpath "$(dirname "$0")/..")
+PY=/usr/bin/python3
+T=$(mktemp -d /tmp/peloid-calib.XXXXXX)
+trap 'rm -rf "$T"' EXIT
+cd "$T"
+pass=0; fail=0
+ok()  { pass=$((pass+1)); echo "  ok   $1"; }
+bad() { fail=$((fail+1)); echo "  FAIL $1"; }
+echo "== coupling-true time: calibration and the diffusion it maps"
+
+cat > dilute.cfg <<'CFG'
+name = "dilute";
+seed = 7;
+steps = 1500;
+srd: { rule = "random_axis"; alpha = 130.0; grid_shift = true; };
+thermostat: { type = "heyes"; temperature = 1.0; };
+physical: {
+  radius = 0.4e-6;
+  particle_density = 3.9e3;
+  solvent_density = 1.0e3;
+  temperature = 300.0;
+  viscosity = 1.0e-6;
+  young_modulus = 3.7e11;
+  poisson_ratio = 0.22;
+  volume_fraction = 0.02;
+  box = [10.3e-6, 10.3e-6, 10.3e-6];
+};
+coarse_graining: { coupling = "II"; particles_per_cell = 10.0; mean_free_path = 0.25; hertz_K = 1000.0; };
+colloids: { init = "lattice"; pairs = "hertz"; trajectory_interval = 5; };
+CFG
+# the same model fluid and colloid as scenes/quickstart.cfg: one calibration
+calfield() { $PY -c "import json,sys; d=json.load(open(sys.argv[1]))['mapping']['colloid_diffusion']; print(repr(d.get('calibration', {}).get(sys.argv[2])) if sys.argv[2] != 'source' else d['source'])" "$@"; }
+
+# 1. fresh calibrations at 1 and 2 threads, and from the cache: the same bits
+sed 's/particles_per_cell = 10.0/particles_per_cell = 8.0/' dilute.cfg > other.cfg
+for th in 1 2; do
+  PELOID_CACHE=$T/c$th PELOID_NO_SHIPPED_CALIBRATION=1 "$PELOID" run other.cfg --steps 0 --threads $th --out o$th 2> e$th \
+    || bad "calibration at $th threads: $(tail -1 e$th)"
+done
+PELOID_CACHE=$T/c1 PELOID_NO_SHIPPED_CALIBRATION=1 "$PELOID" run other.cfg --steps 0 --out o3 2> e3
+a=$(calfield o1/summary.json d_inf_a0_2_t0); b=$(calfield o2/summary.json d_inf_a0_2_t0); c=$(calfield o3/summary.json d_inf_a0_2_t0)
+c1=$(calfield o1/summary.json cpu_s); c3=$(calfield o3/summary.json cpu_s)
+if [ -n "$a" ] && [ "$a" != None ] && [ "$a" = "$b" ] && [ "$a" = "$c" ] && [ "$c3" = "0.0" ] && [ "$c1" != "0.0" ] \
+   && grep -q "calibrating the colloid diffusion of coupling II" e1 && ! grep -q calibrating e3; then
+  ok "calibration bitwise equal at 1 and 2 threads and from the cache (D_inf = $a a0^2/t0, run once: $c1 s)"
+else bad "calibration bits: 1 thread $a, 2 threads $b, cached $c (cpu $c1 / $c3)"; fi
+
+# 2. the shipped calibration of the quickstart is what the code computes
+PELOID_CACHE=$T/cq PELOID_NO_SHIPPED_CALIBRATION=1 "$PELOID" params --json "$ROOT/scenes/quickstart.cfg" > q.json 2> /dev/null
+f=$(ls "$T"/cq/calibration-*.json 2>/dev/null | head -1)
+if [ -n "$f" ] && [ -f "$ROOT/calibration/$(basename "$f")" ] && $PY - "$f" "$ROOT/calibration/$(basename "$f")" <<'PY'
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:])
+keys = ["d_inf", "d_inf_se", "d_box", "d_box_se", "hasimoto", "n_colloids", "box", "steps"]
+sys.exit(0 if all(a[k] == b[k] for k in keys) else 1)
+PY
+then ok "calibration/$(basename "$f") (shipped) = a fresh calibration, bit for bit"
+else bad "shipped quickstart calibration differs from a fresh one or is missing ($f)"; fi
+
+# 3. the dilute suspension diffuses as mapped
+export PELOID_CACHE=$T/cache
+if ! "$PELOID" run dilute.cfg --out d --threads 2 2> ed; then bad "dilute run: $(tail -1 ed)"
+elif r=$($PY - d "$ROOT/tools" <<'PY'
+import json, sys
+sys.path.insert(0, sys.argv[2])
+from h5md_lateral_diffusion import lateral_d
+s = json.load(open(sys.argv[1] + "/summary.json"))["mapping"]
+cd, tauP = s["colloid_diffusion"], s["hecht_times"]["tau_P"]["model_s"]
+d, se, nf, t1, t2 = lateral_d(sys.argv[1] + "/colloids.h5", 4 * tauP, 12 * tauP)
+ref = cd["d_box_m2_s"]
+print(f"D = {d:.4g} +- {se:.2g} m^2/s from colloids.h5 ({nf} frames, lags {t1:.3g}..{t2:.3g} s) vs the mapping's "
+      f"{ref:.4g} (real {cd['d_real_m2_s']:.4g} x box factor {cd['box_factor']:.4f}; {cd['source']}): "
+      f"{100 * (d / ref - 1):+.1f} %, SE {100 * se / d:.1f} %")
+sys.exit(0 if cd["source"] == "calibration" and abs(d / ref - 1) <= 0.10 and se / d <= 0.033 else 1)
+PY
+); then ok "dilute coupling II suspension: $r"
+else bad "dilute coupling II suspension: $r"; fi
+
+echo "calibration: $pass passed, $fail failed"
+[ $fail -eq 0 ]

@@ -1,0 +1,47 @@
+"""Lateral colloid diffusion coefficient from a colloids.h5 (H5MD) as a user's
+analysis would compute it, with h5py alone and in SI: the unwrapped positions
+(position + image x box edge), the mean-squared displacement in x and y
+between two lags, D = [MSD(t2) - MSD(t1)] / (4 (t2 - t1)) (a slope: the
+ballistic start cancels), averaged over colloids and time origins; its SE
+from 8 blocks of origins.  Independent of peloid's own observers.
+
+    python3 tools/h5md_lateral_diffusion.py colloids.h5 T1 T2      (lags in s)
+
+prints "D SE" in m^2/s, then the frame count and the lags used."""
+import sys
+
+import h5py
+import numpy as np
+
+
+def lateral_d(path, tau1, tau2, blocks=8):
+    with h5py.File(path, "r") as f:
+        g = f["particles/colloids"]
+        u = {"nm": 1e-9, "um": 1e-6, "m": 1.0}
+        pu = g["position/value"].attrs["unit"]
+        pu = pu.decode() if isinstance(pu, bytes) else pu
+        tu = g["position/time"].attrs["unit"]
+        tu = tu.decode() if isinstance(tu, bytes) else tu
+        ls, ts = u[pu], {"ps": 1e-12, "ns": 1e-9, "s": 1.0}[tu]
+        x, img = g["position/value"][()] * ls, g["image/value"][()]
+        t = g["position/time"][()] * ts
+        L = np.diag(g["box/edges/value"][0]) * ls
+    r = x + img * L[None, None, :]
+    dt = t[1] - t[0]
+    k1, k2 = int(round(tau1 / dt)), int(round(tau2 / dt))
+    n = len(t) - k2
+    if k1 < 1 or k2 <= k1 or n < blocks:
+        raise SystemExit(f"lags {tau1}..{tau2} s do not fit {len(t)} frames {dt} s apart")
+    est = []
+    for b in range(blocks):
+        o = np.arange(n * b // blocks, n * (b + 1) // blocks)
+        m1 = ((r[o + k1, :, :2] - r[o, :, :2]) ** 2).sum(-1).mean()
+        m2 = ((r[o + k2, :, :2] - r[o, :, :2]) ** 2).sum(-1).mean()
+        est.append((m2 - m1) / (4 * (k2 - k1) * dt))
+    est = np.array(est)
+    return est.mean(), est.std(ddof=1) / np.sqrt(blocks), len(t), k1 * dt, k2 * dt
+
+
+if __name__ == "__main__":
+    d, se, nf, a, b = lateral_d(sys.argv[1], float(sys.argv[2]), float(sys.argv[3]))
+    print(f"{d:.6e} {se:.6e} {nf} frames, lags {a:.4g}..{b:.4g} s")
