@@ -68,6 +68,7 @@ static int stage_sort(pl_sim_t *sim, void *ctx, pl_err_t *err)
     (void)ctx;
     (void)err;
     pl_srd_sort(&sim->fluid, sim->hist, sim->cell_start, sim->grid.ncells, sim->nthreads);
+    pl_fluid_swap(&sim->fluid);
     sim->fluid_sorted = 1;
     return 0;
 }
