@@ -115,7 +115,6 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
             pl_sim_free(sim);
             return rc;
         }
-    pl_fluid_guard_setup(sim);
     /* the plan: every module's stages at their slots */
     sim->nstages = 0;
     for (int m = 0; pl_modules[m]; ++m)
