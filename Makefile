@@ -95,9 +95,14 @@ $(BUILD)/%.o: %.c $(BUILD)/flags.stamp | deps $(BUILD)/gen/peloid_build.h
 # exception flags).  Neither changes a computed value.
 $(BUILD)/kernels/colloid_forces.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 $(BUILD)/kernels/colloid_slow.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
-# The potential coupling's selection takes the speed of each particle near a
-# colloid (a square root of a sum of squares, never negative): without errno
-# it vectorises; sqrt is correctly rounded either way.
+# The potential coupling's selection (kernels/coupling_select.c) takes the
+# speed of each particle near a colloid (a square root of a sum of squares,
+# never negative): without errno it vectorises; sqrt is correctly rounded
+# either way.  Its WCA pair pass and its fused MD step (coupling_wca.c,
+# coupling_potential.c) also compile to more vector code with the two flags
+# (pl_coupling_wca_pair_block, the fused step's loop): the same values.
+$(BUILD)/kernels/coupling_select.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
+$(BUILD)/kernels/coupling_wca.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 $(BUILD)/kernels/coupling_potential.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 # The colloids' orientation update (kernels/colloid_integrate.h, in both the
 # fused step and the separate drift) normalises by a square root of a sum of

@@ -142,6 +142,7 @@ static int fused_step(pl_sim_t *sim, pl_err_t *err, double sec[3])
     pl_srd_stream_count(&sim->fluid, &sim->grid, &p, sim->hist, sim->nthreads);
     double t1 = omp_get_wtime();
     pl_srd_stream_sort(&sim->fluid, &sim->grid, &p, sim->hist, sim->cell_start, sim->nthreads);
+    pl_fluid_swap(&sim->fluid);
     double t2 = omp_get_wtime();
     int rc = 0;
     for (int k = 0; k < sim->nstages && !rc; ++k) /* the plan's other stages: collide, the guards */

@@ -6,7 +6,9 @@
  * pl_srd_stream_count).  A prefix sum over (cell, thread) gives every
  * (cell, thread) pair its first slot; each thread then scatters its own chunk
  * in order.  No atomics, and the result is the stable sort by cell, hence
- * independent of the thread count.
+ * independent of the thread count.  The sorted particles are left in the
+ * twin arrays (r_alt, v_alt, ...): the caller swaps them in (pl_fluid_swap),
+ * so that a kernel calls nothing of src/.
  *
  * The prefix sum is parallel: thread t sums its block of cells, the block
  * totals are added up (nthreads terms), then every thread writes the slots of
@@ -144,7 +146,6 @@ static void sort(pl_fluid_t *f, const pl_drift_t *drift, uint32_t *hist, uint32_
         pl_chunk(f->n, t, nthreads, &lo, &hi);
         scatter(f, drift, hist + (size_t)t * ncells, lo, hi);
     }
-    pl_fluid_swap(f);
 }
 
 void pl_srd_sort(pl_fluid_t *f, uint32_t *hist, uint32_t *cell_start, size_t ncells, int nthreads)

@@ -125,8 +125,10 @@ Test(capillary, stream_in_scatter_matches_stream_then_sort)
         uint32_t *sa = pl_alloc((g.ncells + 1) * sizeof(uint32_t), nt), *sb = pl_alloc((g.ncells + 1) * sizeof(uint32_t), nt);
         pl_srd_stream_bin(&a, &g, &p, ha, nt);
         pl_srd_sort(&a, ha, sa, g.ncells, nt);
+        pl_fluid_swap(&a);
         pl_srd_stream_count(&b, &g, &p, hb, nt);
         pl_srd_stream_sort(&b, &g, &p, hb, sb, nt);
+        pl_fluid_swap(&b);
         cr_assert_eq(memcmp(sa, sb, (g.ncells + 1) * sizeof(uint32_t)), 0, "layout %d: cell_start", k);
         for (int d = 0; d < 3; ++d) {
             cr_assert_eq(memcmp(a.r[d], b.r[d], n * sizeof(pl_real)), 0, "layout %d: r[%d]", k, d);

@@ -39,6 +39,7 @@ static void make_box(box_t *b, int L, double gamma, int nthreads)
     pl_grid_draw_shift(&b->g, 5, 0, 1);
     pl_srd_bin(&b->f, &b->g, b->hist, nthreads);
     pl_srd_sort(&b->f, b->hist, b->start, b->g.ncells, nthreads);
+    pl_fluid_swap(&b->f);
 }
 
 static void free_box(box_t *b)

@@ -31,6 +31,7 @@ static void sort_with(int nthreads, pl_fluid_t *f, pl_grid_t *g, uint32_t **star
     *start = pl_alloc((g->ncells + 1) * sizeof(uint32_t), nthreads);
     pl_srd_bin(f, g, hist, nthreads);
     pl_srd_sort(f, hist, *start, g->ncells, nthreads);
+    pl_fluid_swap(f);
     pl_free(hist);
 }
 

@@ -127,6 +127,14 @@ void pl_colloid_free(pl_colloid_t *c);
 int pl_colloid_alloc(size_t n, int nthreads, pl_colloid_t **out, pl_err_t *err);
 /* Derives parameters from the scene, builds cells, computes the forces. */
 int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
+/* Its parts on the pair terms (src/colloid/colloid_pair_setup.c), on c with
+ * its pair parameters set: c->depl (sigma_cc) and, with depletion_comp, the
+ * compensation table (PL Sec. III.C.1); multiple time stepping
+ * (colloids.slow_interval; reads the radii, masses, integrator, dt and
+ * min_contact_steps of c): c->slow_interval and the force split, or
+ * PL_ERR_INPUT where the scene cannot use it. */
+int pl_colloid_depletion_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
+int pl_colloid_mts_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
 /* Linked cells and neighbour list for pair cut-off rc (a0) with a skin of
  * skin_fraction rc (capped so that rc + skin <= L/2 on periodic axes); the
  * next pl_colloid_forces builds the list.  Called by pl_colloid_setup. */

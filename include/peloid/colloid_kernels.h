@@ -349,6 +349,20 @@ static inline void pl_colloid_guard_merge(pl_colloid_guard_max_t *out, const pl_
 #pragma omp declare reduction(pl_guard_max : pl_colloid_guard_max_t : pl_colloid_guard_merge(&omp_out, &omp_in)) \
     initializer(omp_priv = (pl_colloid_guard_max_t){0.0, 0.0, 0.0, 0})
 
+/* What the guard's pass reads (all length n): the state it tests and the
+ * pair kernel's guard quantities (pl_colloid_view_t). */
+typedef struct {
+    size_t n;
+    const double *x, *y, *z, *vx, *vy, *vz, *fx, *fy, *fz, *wx, *wy, *wz;
+    const int32_t *ix, *iy, *iz;
+    const double *g_overlap, *g_omega2, *g_damp;
+} pl_colloid_guard_view_t;
+
+/* The guard's pass over all colloids (kernels/colloid_guard_scan.c): the
+ * per-colloid tests and the maxima into g, exact, so independent of
+ * nthreads. */
+void pl_colloid_guard_scan(const pl_colloid_guard_view_t *v, pl_colloid_guard_max_t *g, int nthreads);
+
 /* The arrays of the colloids' dynamical state one MD step updates (n each). */
 typedef struct {
     size_t n;

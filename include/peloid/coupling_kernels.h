@@ -153,7 +153,7 @@ void pl_coupling2_collide_heyes(const pl_coupling2_params_t *p, const pl_couplin
                           const uint32_t *cell_start, const double *vsave, pl_fluid_t *f,
                           const double *cmass, double *cvx, double *cvy, double *cvz, int nthreads);
 
-/* ---- potential coupling (kernels/coupling_potential.c) ---------------- */
+/* ---- potential coupling: the selection (kernels/coupling_select.c) ---- */
 /* How far a fluid particle can get from where it is within one collision
  * step: T |v| + tail (T the step, tail >= T^2 |g| + 2 T |wall speed|: the
  * streaming's kick and the walls' bounce-back), so it can come within rc of
@@ -258,6 +258,7 @@ void pl_coupling_find_block(void *ctx, int t, size_t lo, size_t hi);
  * cstart[c]); mask: (ncells + 63) / 64 words. */
 void pl_coupling_cell_mask(const uint32_t *cstart, size_t ncells, uint64_t *mask);
 
+/* ---- potential coupling: the WCA forces (kernels/coupling_wca.c) ------ */
 typedef struct {
     double sigma, eps; /* PL Eq. 17 */
     int L[3], walls[3]; /* walls: PL_WALLS_* of each axis */
@@ -303,6 +304,7 @@ double pl_coupling_wca_pair_forces(const pl_coupling_wca_t *w, const pl_coupling
                                    const pl_coupling_colloids_t *c, double *cfx, double *cfy, double *cfz,
                                    int nthreads, double *partial, double *pair_buf, size_t pair_cap);
 
+/* ---- potential coupling: the MD step (kernels/coupling_potential.c) --- */
 /* One force evaluation of the MD step fused with the particle moves around
  * it: pl_coupling_wca_pair_forces, then per particle `kicks` half kicks
  * (pl_coupling_potential_kick: 1 at the last MD step, 2 when the next one

@@ -191,7 +191,8 @@ enum { PL_FLUID_GUARD_INTERVAL = 1, PL_FLUID_GUARD_SCAN_INTERVAL = 10 };
  * (PL Eq. A1) must stay within [min(T0, T*) / F, max(T0, T*) F], T0 the
  * initial and T* the target temperature, F = PL_FLUID_GUARD_KT_FACTOR. */
 #define PL_FLUID_GUARD_KT_FACTOR 10.0
-/* Computes the bounds into sim (after the coupling is created). */
+/* Computes the bounds into sim from sim->scene (the fluid module's create,
+ * src/fluid/fluid_stages.c). */
 void pl_fluid_guard_setup(pl_sim_t *sim);
 /* The stage: PL_ERR_GUARD naming step, particle, quantity, bound and the
  * parameter to change, for a position outside the box or non-finite, a speed

@@ -54,4 +54,18 @@ typedef struct {
 } pl_sq_state_t;
 pl_sq_state_t pl_sq_state(pl_sq_t *s);
 
+/* The sum of one sample (kernels/sq_modes.c): for the nvec kept vectors
+ * q = 2 pi (vec[3k] / box[0], vec[3k+1] / box[1], vec[3k+2] / box[2]),
+ * |vec[3k+d]| <= nm[d], sv[k] = |sum_j exp(i q . r_j)|^2 / n over the n
+ * particles at (x, y, z).  tab: scratch of 2 n sum_d (2 nm[d] + 1) doubles
+ * (the phase tables). */
+typedef struct {
+    double box[3];
+    int nm[3];
+    size_t nvec;
+    const int32_t *vec; /* 3 x nvec */
+} pl_sq_modes_params_t;
+void pl_sq_modes(const pl_sq_modes_params_t *p, size_t n, const double *x, const double *y, const double *z,
+                 double *tab, double *sv, int nthreads);
+
 #endif

@@ -84,9 +84,10 @@ void pl_srd_stream_count(const pl_fluid_t *fluid, const pl_grid_t *grid,
                          const pl_stream_params_t *p, uint32_t *hist, int nthreads);
 
 /* ---- counting sort (kernels/srd_sort.c) ------------------------------- */
-/* Prefix sum over (cell, thread), stable scatter into the twin arrays, swap.
- * Afterwards the particles of cell c are [cell_start[c], cell_start[c+1]).
- * The result is the stable sort by cell: independent of nthreads. */
+/* Prefix sum over (cell, thread), stable scatter into the twin arrays; the
+ * caller then swaps them in (pl_fluid_swap).  After the swap the particles
+ * of cell c are [cell_start[c], cell_start[c+1]).  The result is the stable
+ * sort by cell: independent of nthreads. */
 void pl_srd_sort(pl_fluid_t *fluid, uint32_t *hist, uint32_t *cell_start, size_t ncells,
                  int nthreads);
 
@@ -95,7 +96,8 @@ void pl_srd_sort(pl_fluid_t *fluid, uint32_t *hist, uint32_t *cell_start, size_t
  * way into the twin arrays.  hist: from pl_srd_stream_count with the same
  * grid (shift) and p.  pl_srd_stream_count + pl_srd_stream_sort leave the
  * same state as pl_srd_stream_bin + pl_srd_sort, with one pass less over the
- * particle arrays; fluid->cell is not written. */
+ * particle arrays; fluid->cell is not written.  The caller swaps, as after
+ * pl_srd_sort. */
 void pl_srd_stream_sort(pl_fluid_t *fluid, const pl_grid_t *grid, const pl_stream_params_t *p,
                         uint32_t *hist, uint32_t *cell_start, int nthreads);
 

@@ -14,7 +14,8 @@
  * Each message names step, particles, quantity, bound and the parameter to
  * change.  The per-particle maxima come from the force kernel.  Every MD step
  * runs one parallel pass (maxima and flags: exact, so independent of the
- * thread count); only when it finds a bound exceeded does the serial scan in
+ * thread count; kernels/colloid_guard_scan.c, or the fused step's close);
+ * only when it finds a bound exceeded does the serial scan in
  * index order run, which names the lowest-index offender, so the message is
  * the same for any thread count. */
 #include <math.h>
@@ -116,18 +117,16 @@ static int guard_report(const pl_colloid_t *c, pl_err_t *err)
     return 0;
 }
 
-/* One parallel pass: the maxima and flags of the guard (the same as the
- * close of the fused MD step computes). */
+/* The guard's pass (maxima and flags: the same as the close of the fused MD
+ * step computes). */
 static void guard_max(const pl_colloid_t *c, pl_colloid_guard_max_t *g)
 {
-    const size_t n = c->n;
-    pl_colloid_guard_max_t gm = {0.0, 0.0, 0.0, 0};
-#pragma omp parallel for schedule(static) num_threads(c->nthreads) reduction(pl_guard_max : gm) \
-    if (n >= PL_COLLOID_OMP_MIN)
-    for (size_t i = 0; i < n; ++i)
-        pl_colloid_guard_add(&gm, state_finite(c, i) && image_axis_out(c, i) < 0, c->g_overlap[i],
-                             c->g_omega2[i], c->g_damp[i]);
-    *g = gm;
+    const pl_colloid_guard_view_t v = {
+        .n = c->n, .x = c->x, .y = c->y, .z = c->z, .vx = c->vx, .vy = c->vy, .vz = c->vz,
+        .fx = c->fx, .fy = c->fy, .fz = c->fz, .wx = c->wx, .wy = c->wy, .wz = c->wz,
+        .ix = c->ix, .iy = c->iy, .iz = c->iz,
+        .g_overlap = c->g_overlap, .g_omega2 = c->g_omega2, .g_damp = c->g_damp};
+    pl_colloid_guard_scan(&v, g, c->nthreads);
 }
 
 int pl_colloid_guard_max(pl_colloid_t *c, const pl_colloid_guard_max_t *g, int check_energy,

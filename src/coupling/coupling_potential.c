@@ -17,7 +17,8 @@
  * This file keeps the bookkeeping (its state pl_coupling_potential_state_t:
  * buffers, built only for a scene with this coupling; the order of the
  * steps); the loops over the particles are the kernels of
- * kernels/coupling_potential.c.
+ * kernels/coupling_select.c (the selection), coupling_wca.c (the forces) and
+ * coupling_potential.c (the MD step).
  * Determinism: selection is parallel over the streaming's static chunks (in
  * the streaming itself while the fluid is sorted: the same lists) and
  * gathered in particle order; the forces are summed over fixed blocks, the

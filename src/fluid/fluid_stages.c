@@ -68,6 +68,7 @@ static int stage_sort(pl_sim_t *sim, void *ctx, pl_err_t *err)
     (void)ctx;
     (void)err;
     pl_srd_sort(&sim->fluid, sim->hist, sim->cell_start, sim->grid.ncells, sim->nthreads);
+    pl_fluid_swap(&sim->fluid);
     sim->fluid_sorted = 1;
     return 0;
 }
@@ -304,8 +305,19 @@ static void fluid_columns(const pl_sim_t *sim, pl_thermo_table_t *t)
         pl_thermo_add(t, side_wall_cols, NCOL(side_wall_cols));
 }
 
+/* The fluid's arrays and grid belong to every simulation (pl_sim_create
+ * makes them); the module's own state is the fluid guard's bounds, which
+ * depend on the scene alone. */
+static int fluid_create(pl_sim_t *sim, pl_err_t *err)
+{
+    (void)err;
+    pl_fluid_guard_setup(sim);
+    return 0;
+}
+
 const pl_module_t pl_fluid_module = {
     .name = "fluid",
+    .create = fluid_create,
     .add_stages = fluid_stages,
     .thermo_columns = fluid_columns,
 };

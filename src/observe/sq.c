@@ -99,40 +99,9 @@ void pl_sq_sample(pl_sq_t *s, size_t n, const double *x, const double *y, const 
 {
     if (n > s->par.nmax) n = s->par.nmax;
     if (n == 0) return;
-    const double *in[3] = {x, y, z};
-    double *tb[3];
-    size_t w[3];
-    tb[0] = s->tab;
-    for (int d = 0; d < 3; ++d) {
-        w[d] = (size_t)(2 * s->nm[d] + 1);
-        if (d < 2) tb[d + 1] = tb[d] + 2 * w[d] * n;
-    }
-    /* tables: tb[d][2 (j w + (m + nm))] = cos, sin of 2 pi m x_j / L */
-    for (int d = 0; d < 3; ++d) {
-        const double k0 = 2.0 * PL_PI / s->par.box[d];
-        const int nm = s->nm[d];
-#pragma omp parallel for num_threads(s->nthreads) schedule(static)
-        for (size_t j = 0; j < n; ++j)
-            for (int m = -nm; m <= nm; ++m) {
-                double ph = k0 * (double)m * in[d][j];
-                tb[d][2 * (j * w[d] + (size_t)(m + nm))] = cos(ph);
-                tb[d][2 * (j * w[d] + (size_t)(m + nm)) + 1] = sin(ph);
-            }
-    }
-#pragma omp parallel for num_threads(s->nthreads) schedule(static)
-    for (size_t k = 0; k < s->nvec; ++k) {
-        const size_t oa = 2 * (size_t)(s->vec[3 * k] + s->nm[0]), ob = 2 * (size_t)(s->vec[3 * k + 1] + s->nm[1]),
-                     oc = 2 * (size_t)(s->vec[3 * k + 2] + s->nm[2]);
-        double re = 0.0, im = 0.0;
-        for (size_t j = 0; j < n; ++j) {
-            const double *ta = tb[0] + 2 * j * w[0] + oa, *tbb = tb[1] + 2 * j * w[1] + ob,
-                         *tc = tb[2] + 2 * j * w[2] + oc;
-            double pr = ta[0] * tbb[0] - ta[1] * tbb[1], pi = ta[0] * tbb[1] + ta[1] * tbb[0];
-            re += pr * tc[0] - pi * tc[1];
-            im += pr * tc[1] + pi * tc[0];
-        }
-        s->sv[k] = (re * re + im * im) / (double)n;
-    }
+    const pl_sq_modes_params_t p = {.box = {s->par.box[0], s->par.box[1], s->par.box[2]},
+                                    .nm = {s->nm[0], s->nm[1], s->nm[2]}, .nvec = s->nvec, .vec = s->vec};
+    pl_sq_modes(&p, n, x, y, z, s->tab, s->sv, s->nthreads);
     const size_t nb = s->par.nbins;
     for (size_t b = 0; b < nb; ++b) s->acc[b] = 0.0;
     for (size_t k = 0; k < s->nvec; ++k) s->acc[s->bin[k]] += s->sv[k]; /* fixed order */

@@ -3,15 +3,14 @@
  * with its interval and slot; a stage the scene does not need is not in the
  * plan (DESIGN.md "Scene -> plan").  pl_sim_step walks it: the step stages,
  * step + 1, the after-step stages (observers, writers). */
-#include <hwloc.h>
-#include <limits.h>
 #include <math.h>
-#include <omp.h>
+#include <omp.h> /* omp_get_wtime: the stages' profile */
 #include <stdlib.h>
 #include <string.h>
 
 #include "peloid/module.h"
 #include "peloid/sim.h"
+#include "peloid/threads.h"
 
 int pl_sim_add_stage(pl_sim_t *sim, const pl_stage_t *stage, pl_err_t *err)
 {
@@ -34,49 +33,17 @@ int pl_sim_add_stage(pl_sim_t *sim, const pl_stage_t *stage, pl_err_t *err)
 
 /* ---- lifetime ---------------------------------------------------------- */
 
-/* Pins OpenMP thread t to the t-th of nthreads core sets spread over the
- * machine by hwloc_distrib (packages first), unless the user chose a binding
- * (OMP_PROC_BIND) or set PL_NO_BIND.  Done before the allocations, whose
- * first touch then places each thread's pages on its own NUMA node. */
-static void bind_threads(int nthreads)
-{
-    if (nthreads < 2 || omp_get_proc_bind() != omp_proc_bind_false || getenv("PL_NO_BIND")) return;
-    hwloc_topology_t topo;
-    if (hwloc_topology_init(&topo)) return;
-    if (hwloc_topology_load(topo)) {
-        hwloc_topology_destroy(topo);
-        return;
-    }
-    int ncores = hwloc_get_nbobjs_by_type(topo, HWLOC_OBJ_CORE);
-    if (ncores >= nthreads && nthreads <= 1024) {
-        hwloc_bitmap_t sets[1024];
-        hwloc_obj_t root = hwloc_get_root_obj(topo);
-        if (hwloc_distrib(topo, &root, 1, sets, (unsigned)nthreads, INT_MAX, 0) == 0) {
-            /* the one parallel region outside kernels/: topology set-up (each
-             * thread of the team binds itself), not a loop over data */
-#pragma omp parallel num_threads(nthreads)
-            {
-                hwloc_bitmap_t set = sets[omp_get_thread_num()];
-                hwloc_bitmap_singlify(set);
-                hwloc_set_cpubind(topo, set, HWLOC_CPUBIND_THREAD);
-            }
-            for (int t = 0; t < nthreads; ++t) hwloc_bitmap_free(sets[t]);
-        }
-    }
-    hwloc_topology_destroy(topo);
-}
-
 int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_t *err)
 {
     pl_sim_t *sim = calloc(1, sizeof *sim);
     if (sim) sim->observe_resumed = -1;
     if (!sim) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
     sim->scene = *scene;
-    sim->nthreads = nthreads > 0 ? nthreads : omp_get_max_threads();
+    sim->nthreads = nthreads > 0 ? nthreads : pl_threads_default();
     /* before any allocation: first touch (pl_alloc) runs on the bound
      * threads.  No process-wide thread count is set: every kernel and
      * pl_alloc are given sim->nthreads (num_threads clauses). */
-    bind_threads(sim->nthreads);
+    pl_threads_bind(sim->nthreads);
     int walls[3];
     pl_scene_box_walls(&scene->box, walls);
     pl_grid_init(&sim->grid, scene->box.cells, walls);
@@ -115,7 +82,6 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
             pl_sim_free(sim);
             return rc;
         }
-    pl_fluid_guard_setup(sim);
     /* the plan: every module's stages at their slots */
     sim->nstages = 0;
     for (int m = 0; pl_modules[m]; ++m)
