@@ -1,0 +1,107 @@
+#!/usr/bin/env bash
+# Issue 37, "nothing lost, nothing misread", through bin/peloid:
+#  - SIGINT, SIGTERM, SIGHUP end a run after the step in progress with its
+#    outputs complete at that step: checkpoint, summary.json ("interrupted":
+#    true, last_step), last thermo row and trajectory frame, no *.tmp left,
+#    one line naming the signal, the step and the resume command, exit
+#    128 + signal; a second signal exits at once;
+#  - resuming in place (--restart DIR/checkpoint.h5 --out DIR) appends to
+#    thermo.tsv and the trajectories: the folder then equals that of an
+#    uninterrupted run (thermo rows but the wall-clock rate, frames, and
+#    the checkpoint bitwise);
+#  - one run per folder: a second run into a folder a run is writing is
+#    refused (exit 2, one line) even with --force; --force removes what an
+#    earlier run wrote there, so a folder never mixes two runs.
+# Each signal is sent once the run has written a given thermo row (no blind
+# sleeps); every wait is bounded.
+set -u
+PELOID=$(realpath "${1:-bin/peloid}")
+PY=/usr/bin/python3
+T=$(mktemp -d /tmp/peloid-interrupt.XXXXXX)
+trap 'kill $(jobs -p) 2> /dev/null; rm -rf "$T"' EXIT
+cd "$T"
+set -m # background runs in their own process group: SIGINT is not ignored there
+pass=0; fail=0
+ok()  { pass=$((pass+1)); echo "  ok   $1"; }
+bad() { fail=$((fail+1)); echo "  FAIL $1"; }
+
+cat > tiny.cfg <<'EOF'
+name = "tiny";
+seed = 7;
+steps = 400;
+box: { cells = [6, 6, 6]; };
+fluid: { density = 5.0; temperature = 1.0; };
+srd: { dt = 0.1; rule = "hecht_axes"; };
+colloids: { count = 8; radius = 0.62; mass_density = 19.5; temperature = 1.0; init = "lattice";
+            pairs = ""; substeps = 1; max_overlap = 1.0; trajectory_interval = 5; };
+coupling: { method = "hecht2"; };
+output: { thermo_interval = 3; colloids_xyz = true; };
+EOF
+
+# wait_row FILE STEP: until FILE has a thermo row at a step >= STEP (10 s at most)
+wait_row() {
+  for _ in $(seq 1000); do
+    [ -f "$1" ] && awk -v s="$2" 'NR > 1 && $1 + 0 >= s { f = 1 } END { exit !f }' "$1" && return 0
+    sleep 0.01
+  done
+  return 1
+}
+# wait_pid PID: its exit status, or 124 when it runs on for 20 s (then killed)
+wait_pid() {
+  for _ in $(seq 2000); do
+    kill -0 "$1" 2> /dev/null || { wait "$1"; return $?; }
+    sleep 0.01
+  done
+  kill -KILL "$1"; wait "$1"; return 124
+}
+# step of a checkpoint, of the last colloids.h5 frame, of the last colloids.xyz frame
+ck_step() { $PY -c "import h5py,sys; print(h5py.File(sys.argv[1])['/'].attrs['peloid_checkpoint'][0])" "$1"; }
+h5_frames() { $PY -c "import h5py,sys; s=h5py.File(sys.argv[1])['particles/colloids/position/step'][:]; print(len(s), s[-1])" "$1"; }
+xyz_last() { grep -o 'step=[0-9]*' "$1" | tail -1 | cut -d= -f2; }
+
+echo "== interrupt / resume in place / one run per folder"
+
+# interrupted SIG CODE: a long run stopped by SIG once thermo.tsv passes step 30
+interrupted() {
+  local sig=$1 code=$2 d=o_$1
+  "$PELOID" run tiny.cfg --out "$d" --steps 1000000 2> "$d.err" &
+  local pid=$!
+  wait_row "$d/thermo.tsv" 30 || { bad "$sig: no thermo row at step 30"; kill -KILL $pid; return; }
+  kill -s "$sig" $pid
+  wait_pid $pid; local rc=$?
+  local last; last=$(tail -1 "$d.err")
+  local s; s=$(sed -n 's/^peloid: interrupted by SIG[A-Z]* at step \([0-9]*\) of 1000000; resume with: .*/\1/p' "$d.err")
+  local why=""
+  [ $rc -eq "$code" ] || why="$why exit $rc (want $code);"
+  [ -n "$s" ] && [ "$(grep -c '^peloid: interrupted' "$d.err")" -eq 1 ] || why="$why no interrupt line;"
+  case $last in "peloid: interrupted by SIG$sig at step $s of 1000000; resume with: peloid run tiny.cfg --restart $T/$d/checkpoint.h5 --out $T/$d --steps "*) ;;
+                 *) why="$why last line: $last;"; esac
+  grep -q 'error' "$d.err" && why="$why an error line;"
+  [ -z "$s" ] && s=-1
+  [ -f "$d/checkpoint.h5" ] && [ "$(ck_step "$d/checkpoint.h5" 2> /dev/null)" = "$s" ] || why="$why checkpoint not at step $s;"
+  $PY -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(not (d['interrupted'] is True and d['last_step'] == int(sys.argv[2])))" \
+      "$d/summary.json" "$s" 2> /dev/null || why="$why summary.json not interrupted at $s;"
+  [ "$(tail -1 "$d/thermo.tsv" | cut -f1)" = "$s" ] || why="$why last thermo row not step $s;"
+  [ -f "$d/colloids.h5" ] && [ "$(h5_frames "$d/colloids.h5" 2> /dev/null | cut -d' ' -f2)" = "$s" ] || why="$why colloids.h5 last frame not $s;"
+  [ -f "$d/colloids.xyz" ] && [ "$(xyz_last "$d/colloids.xyz")" = "$s" ] || why="$why colloids.xyz last frame not $s;"
+  ls "$d" | grep -q '\.tmp$' && why="$why *.tmp left: $(ls "$d" | tr '\n' ' ');"
+  if [ -z "$why" ]; then ok "SIG$sig: exit $rc at step $s, outputs complete: $last"; else bad "SIG$sig:$why"; fi
+}
+interrupted INT 130
+interrupted TERM 143
+interrupted HUP 129
+
+# a second signal exits at once: two signals pending together (the run is
+# stopped while they are sent), the second ends the process without summary
+"$PELOID" run tiny.cfg --out o_twice --steps 1000000 2> twice.err &
+pid=$!
+if wait_row o_twice/thermo.tsv 30; then
+  kill -STOP $pid; kill -TERM $pid; kill -INT $pid; kill -CONT $pid
+  wait_pid $pid; rc=$?
+  if { [ $rc -eq 143 ] || [ $rc -eq 130 ]; } && grep -q 'second signal: exiting at once' twice.err &&
+     [ ! -e o_twice/summary.json ]; then ok "second signal: exit $rc at once"
+  else bad "second signal: exit $rc: $(tail -2 twice.err | tr '\n' ' ')"; fi
+else bad "second signal: no thermo row at step 30"; kill -KILL $pid; fi
+
+echo "interrupt: $pass passed, $fail failed"
+[ $fail -eq 0 ]
