@@ -103,5 +103,35 @@ if wait_row o_twice/thermo.tsv 30; then
   else bad "second signal: exit $rc: $(tail -2 twice.err | tr '\n' ' ')"; fi
 else bad "second signal: no thermo row at step 30"; kill -KILL $pid; fi
 
+# one run per folder: a second run into a folder a run is writing is refused
+# (exit 2, one line) even with --force, and the first run's files stay its own
+"$PELOID" run tiny.cfg --out o_lock --steps 1000000 2> lock1.err &
+pid=$!
+if wait_row o_lock/thermo.tsv 30; then
+  "$PELOID" run tiny.cfg --out o_lock --force --steps 20 2> lock2.err; rc=$?
+  kill -TERM $pid; wait_pid $pid; rc1=$?
+  if [ $rc -eq 2 ] && [ "$(wc -l < lock2.err)" -eq 1 ] && grep -q 'another peloid run' lock2.err &&
+     [ $rc1 -eq 143 ] && [ "$(head -c 4 o_lock/thermo.tsv)" = step ] &&
+     awk 'NR > 2 && $1 + 0 <= p { exit 1 } NR > 1 { p = $1 + 0 }' o_lock/thermo.tsv &&
+     [ "$($PY -c "import json; print(json.load(open('o_lock/summary.json'))['last_step'])")" = \
+       "$(tail -1 o_lock/thermo.tsv | cut -f1)" ]; then
+    ok "second run into a locked folder refused: $(cat lock2.err)"
+  else bad "lock: second run exit $rc ($(head -c 300 lock2.err)), first exit $rc1"; fi
+else bad "lock: no thermo row at step 30"; kill -KILL $pid; fi
+# ... and the lock ends with the run
+"$PELOID" run tiny.cfg --out o_lock --force --steps 10 2> /dev/null && ok "the folder is free after the run" ||
+  bad "a run after the locked one was refused"
+
+# --force clears what an earlier run wrote: a fluid-only run after a colloid
+# run with a report leaves no colloid file, report or temporary file behind
+sed -e '/^colloids:/,/^coupling:/d' -e 's/colloids_xyz = true;/fields_interval = 5;/' tiny.cfg > fluid.cfg
+"$PELOID" run tiny.cfg --out o_force --steps 20 2> /dev/null
+touch o_force/report.md o_force/thermo.png o_force/msd.png o_force/checkpoint.h5.tmp o_force/notes.txt
+"$PELOID" run fluid.cfg --out o_force --force --steps 20 2> force.err; rc=$?
+left=$(cd o_force && ls | tr '\n' ' ')
+if [ $rc -eq 0 ] && [ "$left" = "checkpoint.h5 fields.h5 fields.xdmf notes.txt scene.cfg summary.json thermo.tsv " ]; then
+  ok "--force cleared the earlier run's files (left: $left)"
+else bad "--force: exit $rc, left: $left"; fi
+
 echo "interrupt: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
@@ -239,12 +240,24 @@ static int loop(pl_sim_t *sim, writer_t *w, pl_progress_t *pg, long long last,
     return rc;
 }
 
+/* Resume in place: the restart checkpoint lies in the output directory
+ * (an existing one).  The run then appends to that directory's thermo.tsv
+ * and trajectories (not cleared by --force). */
+static int restart_in_place(const char *restart, const char *out_dir)
+{
+    char ck[PATH_MAX], ck_dir[PATH_MAX], out[PATH_MAX];
+    if (!realpath(restart, ck) || !realpath(out_dir, out)) return 0;
+    char *slash = strrchr(ck, '/');
+    snprintf(ck_dir, sizeof ck_dir, "%.*s", slash == ck ? 1 : (int)(slash - ck), ck);
+    return strcmp(ck_dir, out) == 0;
+}
+
 int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
 {
     pl_sim_t *sim = NULL;
     json_t *summary = NULL;
     pl_progress_t *pg = NULL;
-    int traj_written = 0;
+    int traj_written = 0, lock_fd = -1;
     long long last = 0; /* the step the run ends at */
     writer_t w;
     memset(&w, 0, sizeof w);
@@ -291,7 +304,10 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     }
     if (o->out_dir) snprintf(given, sizeof given, "%s", o->out_dir);
     else snprintf(given, sizeof given, "out/%s", scene->run.name);
+    int in_place = o->restart && restart_in_place(o->restart, given);
     if ((rc = pl_outdir_prepare(given, o->force, scene->path, w.dir, sizeof w.dir, err))) goto done;
+    if ((rc = pl_outdir_lock(w.dir, &lock_fd, err))) goto done;
+    if (!in_place && (rc = pl_outdir_clean(w.dir, err))) goto done;
     if ((rc = write_scene_echo(&w, &sim->scene, err))) goto done;
     char path[PATH_MAX];
     pl_path_join(w.thermo_path, sizeof w.thermo_path, w.dir, "thermo.tsv");
@@ -399,6 +415,7 @@ done:
     pl_progress_free(pg);
     if (w.thermo) fclose(w.thermo);
     json_decref(summary);
-    pl_sim_free(sim);
+    pl_sim_free(sim);           /* closes a trajectory left open */
+    if (lock_fd >= 0) close(lock_fd); /* the directory is free when every output is closed */
     return rc;
 }
