@@ -49,10 +49,10 @@ wait_row() {
 # wait_pid PID: its exit status, or 124 when it runs on for 20 s (then killed)
 wait_pid() {
   for _ in $(seq 2000); do
-    kill -0 "$1" 2> /dev/null || { wait "$1"; return $?; }
+    kill -0 "$1" 2> /dev/null || { wait "$1" 2> /dev/null; return $?; }
     sleep 0.01
   done
-  kill -KILL "$1"; wait "$1"; return 124
+  kill -KILL "$1"; wait "$1" 2> /dev/null; return 124
 }
 # step of a checkpoint, of the last colloids.h5 frame, of the last colloids.xyz frame
 ck_step() { $PY -c "import h5py,sys; print(h5py.File(sys.argv[1])['/'].attrs['peloid_checkpoint'][0])" "$1"; }
@@ -102,6 +102,55 @@ if wait_row o_twice/thermo.tsv 30; then
      [ ! -e o_twice/summary.json ]; then ok "second signal: exit $rc at once"
   else bad "second signal: exit $rc: $(tail -2 twice.err | tr '\n' ' ')"; fi
 else bad "second signal: no thermo row at step 30"; kill -KILL $pid; fi
+
+# resume in place: a run interrupted and resumed in its own folder ends
+# with that folder equal to an uninterrupted run's (A)
+sed 's/output: { thermo_interval = 3;/output: { thermo_interval = 3; checkpoint_interval = 50;/' tiny.cfg > ck.cfg
+"$PELOID" run ck.cfg --out A --steps 3000 2> /dev/null || bad "uninterrupted run failed"
+same_as_A() { # DIR: what differs from A (thermo without its wall-clock rate column)
+  local d=$1 why=""
+  cmp -s A/checkpoint.h5 "$d/checkpoint.h5" || why="$why checkpoint.h5 differs;"
+  cmp -s <(awk -F'\t' -v OFS='\t' '{NF--; print}' A/thermo.tsv) <(awk -F'\t' -v OFS='\t' '{NF--; print}' "$d/thermo.tsv") ||
+    why="$why thermo.tsv: $(wc -l < "$d/thermo.tsv") rows, A $(wc -l < A/thermo.tsv);"
+  cmp -s A/colloids.xyz "$d/colloids.xyz" || why="$why colloids.xyz: $(grep -c step= "$d/colloids.xyz") frames, A $(grep -c step= A/colloids.xyz);"
+  $PY - A/colloids.h5 "$d/colloids.h5" <<'PYEOF' || why="$why colloids.h5 frames differ;"
+import sys, h5py, numpy as np
+a, b = (h5py.File(p, "r")["particles/colloids"] for p in sys.argv[1:3])
+for k in ("position", "velocity", "orientation", "angular_velocity", "image", "box/edges"):
+    for d in ("step", "time", "value"):
+        if not np.array_equal(a[k][d][()], b[k][d][()]): sys.exit(1)
+PYEOF
+  ls "$d" | grep -q '\.tmp$' && why="$why *.tmp left;"
+  echo "$why"
+}
+# SIGINT, then the command the interrupt line gives
+"$PELOID" run ck.cfg --out B --steps 3000 2> B.err &
+pid=$!
+if wait_row B/thermo.tsv 60; then
+  kill -INT $pid; wait_pid $pid; rc=$?
+  cmd=$(sed -n 's/^peloid: interrupted by SIGINT at step [0-9]* of 3000; resume with: peloid run //p' B.err)
+  s=$(sed -n 's/^peloid: interrupted by SIGINT at step \([0-9]*\) .*/\1/p' B.err)
+  if [ $rc -eq 130 ] && [ -n "$cmd" ]; then
+    # shellcheck disable=SC2086
+    "$PELOID" run $cmd 2> B2.err; rc=$?
+    why=$(same_as_A B)
+    if [ $rc -eq 0 ] && [ -z "$why" ]; then ok "interrupted at step $s, resumed in place with the printed command = uninterrupted ($(wc -l < B/thermo.tsv) rows, checkpoint bitwise)"
+    else bad "resume in place after SIGINT: exit $rc ($(tail -1 B2.err)):$why"; fi
+  else bad "resume in place: SIGINT exit $rc, line: $(tail -1 B.err)"; fi
+else bad "resume in place: no thermo row at step 60"; kill -KILL $pid; fi
+# SIGKILL (trajectories left as *.tmp, rows past the last checkpoint), then
+# --restart with --force into the same folder
+"$PELOID" run ck.cfg --out C --steps 3000 2> /dev/null &
+pid=$!
+if wait_row C/thermo.tsv 120; then
+  kill -KILL $pid; wait_pid $pid
+  s=$(ck_step C/checkpoint.h5 2> /dev/null || echo 0)
+  rows=$(wc -l < C/thermo.tsv)
+  "$PELOID" run ck.cfg --restart C/checkpoint.h5 --out C --force --steps $((3000 - s)) 2> C2.err; rc=$?
+  why=$(same_as_A C)
+  if [ $rc -eq 0 ] && [ -z "$why" ]; then ok "killed ($rows rows, checkpoint at step $s), resumed in place with --force = uninterrupted"
+  else bad "resume in place after SIGKILL (checkpoint at $s): exit $rc ($(tail -1 C2.err)):$why"; fi
+else bad "resume after SIGKILL: no thermo row at step 120"; kill -KILL $pid; fi
 
 # one run per folder: a second run into a folder a run is writing is refused
 # (exit 2, one line) even with --force, and the first run's files stay its own

@@ -42,6 +42,9 @@ int pl_atomic_commit(const char *tmp, const char *path, pl_err_t *err);
 /* Atomic text file: open "<path>.tmp"; pl_file_commit checks the stream,
  * closes it and commits it (pl_atomic_commit). */
 FILE *pl_file_begin(const char *path, char *tmp, size_t ntmp, pl_err_t *err);
+/* Copies the file src to dst (replaced); PL_ERR_IO naming the file, and no
+ * dst left, when it fails. */
+int pl_file_copy(const char *src, const char *dst, pl_err_t *err);
 int pl_file_commit(FILE *f, const char *tmp, const char *path, pl_err_t *err);
 
 /* HDF5 checkpoint of the complete dynamic state: fluid (src/io/checkpoint.c)

@@ -241,8 +241,10 @@ static int loop(pl_sim_t *sim, writer_t *w, pl_progress_t *pg, long long last,
 }
 
 /* Resume in place: the restart checkpoint lies in the output directory
- * (an existing one).  The run then appends to that directory's thermo.tsv
- * and trajectories (not cleared by --force). */
+ * (an existing one).  The run then continues that directory's thermo.tsv
+ * and trajectories after their rows and frames before the checkpoint's
+ * step, as if it had not been interrupted, instead of replacing them; the
+ * directory need not be --force'd and is not cleared. */
 static int restart_in_place(const char *restart, const char *out_dir)
 {
     char ck[PATH_MAX], ck_dir[PATH_MAX], out[PATH_MAX];
@@ -305,18 +307,14 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     if (o->out_dir) snprintf(given, sizeof given, "%s", o->out_dir);
     else snprintf(given, sizeof given, "out/%s", scene->run.name);
     int in_place = o->restart && restart_in_place(o->restart, given);
-    if ((rc = pl_outdir_prepare(given, o->force, scene->path, w.dir, sizeof w.dir, err))) goto done;
+    if ((rc = pl_outdir_prepare(given, o->force || in_place, scene->path, w.dir, sizeof w.dir, err))) goto done;
     if ((rc = pl_outdir_lock(w.dir, &lock_fd, err))) goto done;
     if (!in_place && (rc = pl_outdir_clean(w.dir, err))) goto done;
     if ((rc = write_scene_echo(&w, &sim->scene, err))) goto done;
     char path[PATH_MAX];
     pl_path_join(w.thermo_path, sizeof w.thermo_path, w.dir, "thermo.tsv");
-    if (!(w.thermo = fopen(w.thermo_path, "w"))) {
-        rc = pl_err_set(err, PL_ERR_IO, "%s: cannot write: %s", w.thermo_path, strerror(errno));
-        goto done;
-    }
     pl_thermo_table_build(sim, &w.columns);
-    pl_thermo_header(&w.columns, w.thermo);
+    if ((rc = pl_thermo_open(&w.columns, w.thermo_path, in_place ? first : -1, &w.thermo, err))) goto done;
     if ((rc = add_writers(sim, &w, err))) goto done;
     if (sim->colloids && scene->colloids.trajectory_interval > 0) {
         const pl_mapping_t *m = &scene->mapping.map;
@@ -326,7 +324,8 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         pl_colloid_traj_params_t tp = {.a0_m = scene->mapping.enabled ? m->a0 : 0.0,
                                        .t0_s = scene->mapping.enabled ? m->t0 : 0.0,
                                        .m_f_kg = scene->mapping.enabled ? m->m_f : 0.0,
-                                       .xyz_path = scene->output.colloids_xyz ? xyz : NULL, .overwrite = 1};
+                                       .xyz_path = scene->output.colloids_xyz ? xyz : NULL, .overwrite = 1,
+                                       .keep_before = in_place ? first : -1};
         if ((rc = pl_colloid_traj_open(path, sim->colloids, &tp, &sim->colloid_traj, err))) goto done;
     }
     FILE *log = o->log; /* the driver's stream; NULL: quiet */
