@@ -25,8 +25,8 @@ int pl_outdir_prepare(const char *dir, int force, const char *scene_path, char *
 int pl_outdir_lock(const char *dir, int *fd, pl_err_t *err);
 
 /* --force: removes from `dir` every file a peloid run (and `peloid report`)
- * writes there and their temporary "*.tmp" twins, so that a directory never
- * mixes two runs; other files and the lock file stay.  PL_ERR_IO naming a
+ * writes there and their temporary "*.tmp" twins (regular files only), so
+ * that a directory never mixes two runs; other files and the lock file stay.  PL_ERR_IO naming a
  * file that cannot be removed. */
 int pl_outdir_clean(const char *dir, pl_err_t *err);
 

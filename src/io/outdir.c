@@ -152,9 +152,13 @@ static const char *const outdir_names[] = {
 int pl_outdir_clean(const char *dir, pl_err_t *err)
 {
     char path[PATH_MAX + 32];
+    struct stat st;
     for (size_t k = 0; k < sizeof outdir_names / sizeof *outdir_names; ++k)
         for (int tmp = 0; tmp < 2; ++tmp) {
             snprintf(path, sizeof path, "%s/%s%s", dir, outdir_names[k], tmp ? ".tmp" : "");
+            /* a run writes regular files; a link or device placed under such
+             * a name is not an earlier run's */
+            if (lstat(path, &st) || !S_ISREG(st.st_mode)) continue;
             if (unlink(path) && errno != ENOENT)
                 return pl_err_set(err, PL_ERR_IO, "%s: cannot remove the earlier run's file (--force): %s", path,
                                   strerror(errno));
