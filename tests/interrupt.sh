@@ -182,5 +182,15 @@ if [ $rc -eq 0 ] && [ "$left" = "checkpoint.h5 fields.h5 fields.xdmf notes.txt s
   ok "--force cleared the earlier run's files (left: $left)"
 else bad "--force: exit $rc, left: $left"; fi
 
+# a sweep point whose run was interrupted is not finished: the next sweep runs it again
+sed 's/^steps = 400;/steps = 10;/' fluid.cfg > sweep_base.cfg
+printf 'name = "s";\nscene = "sweep_base.cfg";\nout = "o_sweep";\ngrid = ( { key = "seed"; values = [1, 2]; } );\n' > study.cfg
+"$PELOID" sweep study.cfg --jobs 1 2> /dev/null
+$PY -c "import json; p='o_sweep/p000/summary.json'; d=json.load(open(p)); d['interrupted']=True; json.dump(d, open(p, 'w'))"
+"$PELOID" sweep study.cfg --jobs 1 2> sweep.err; rc=$?
+if [ $rc -eq 0 ] && $PY -c "import json,sys; sys.exit(json.load(open('o_sweep/p000/summary.json'))['interrupted'] is not False)"; then
+  ok "sweep runs an interrupted point again: $(grep -o '[0-9]*/2 done ([0-9]* skipped)' sweep.err | tail -1)"
+else bad "sweep after an interrupted point: exit $rc, p000 not run again"; fi
+
 echo "interrupt: $pass passed, $fail failed"
 [ $fail -eq 0 ]
