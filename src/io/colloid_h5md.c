@@ -347,7 +347,8 @@ int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, const pl_collo
     t->file = -1;
     if (!oom && p->keep_before >= 0) {
         int rc = open_resumed(t, p->keep_before, err);
-        if (rc == 0 && p->xyz_path && pl_xyz_open_keep(p->xyz_path, p->keep_before, &t->xyz, err)) rc = err->code;
+        if (rc == 0 && p->xyz_path && pl_xyz_open_keep(p->xyz_path, p->keep_before, &t->xyz, err))
+            rc = err ? err->code : PL_ERR_IO;
         if (rc == 0) {
             *out = t;
             return 0;
