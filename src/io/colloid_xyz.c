@@ -73,9 +73,11 @@ int pl_xyz_open_keep(const char *path, long long keep, pl_xyz_t **out, pl_err_t 
     snprintf(x->path, sizeof x->path, "%s", path);
     snprintf(x->tmp, sizeof x->tmp, "%s", tmp);
     const char *src = from_tmp ? tmp : path;
+    errno = 0;
     FILE *in = fopen(src, from_tmp ? "r+" : "r");
+    int e = errno, opened = in != NULL;
     long end = in ? frames_end(in, keep) : -1;
-    int bad = end < 0, e = errno;
+    int bad = end < 0;
     if (!bad && from_tmp) { /* cut it there and append */
         bad = fflush(in) || ftruncate(fileno(in), end) || fseek(in, 0, SEEK_END);
         e = errno;
@@ -99,7 +101,8 @@ int pl_xyz_open_keep(const char *path, long long keep, pl_xyz_t **out, pl_err_t 
         if (x->f) fclose(x->f);
         free(x);
         return pl_err_set(err, PL_ERR_IO, "%s: cannot continue the frames before step %lld: %s", src, keep,
-                          end < 0 ? "not an extended XYZ file of frames" : e ? strerror(e) : "stream error");
+                          !opened ? strerror(e) : end < 0 ? "not an extended XYZ file of frames"
+                          : e ? strerror(e) : "stream error");
     }
     *out = x;
     return 0;

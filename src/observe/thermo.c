@@ -96,9 +96,11 @@ int pl_thermo_open(const pl_thermo_table_t *t, const char *path, long long keep,
     if (getline(&line, &cap, f) < 0 || strcmp(line, want) != 0) {
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: its columns are not this run's (another scene or other output "
                         "options); resume with another --out", path);
-    } else { /* the rows of steps < keep stay */
+    } else { /* the whole rows of steps < keep stay (a row cut short by a crash has no newline) */
         long at = ftell(f);
-        while (getline(&line, &cap, f) >= 0 && strtoll(line, NULL, 10) < keep) at = ftell(f);
+        ssize_t len;
+        while ((len = getline(&line, &cap, f)) > 0 && line[len - 1] == '\n' && strtoll(line, NULL, 10) < keep)
+            at = ftell(f);
         errno = 0;
         if (at < 0 || fflush(f) || ftruncate(fileno(f), at) || fseek(f, 0, SEEK_END))
             rc = pl_err_set(err, PL_ERR_IO, "%s: cannot cut it at step %lld: %s", path, keep,
