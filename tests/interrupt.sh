@@ -139,13 +139,14 @@ if wait_row B/thermo.tsv 60; then
   else bad "resume in place: SIGINT exit $rc, line: $(tail -1 B.err)"; fi
 else bad "resume in place: no thermo row at step 60"; kill -KILL $pid; fi
 # SIGKILL (trajectories left as *.tmp, rows past the last checkpoint), then
-# --restart with --force into the same folder (no job control: the shell
-# does not report the killed job)
-set +m
+# --restart with --force into the same folder (disowned: the shell does not
+# report the killed job)
 "$PELOID" run ck.cfg --out C --steps 3000 2> /dev/null &
 pid=$!
+disown $pid
 if wait_row C/thermo.tsv 120; then
-  kill -KILL $pid; wait_pid $pid
+  kill -KILL $pid
+  for _ in $(seq 1000); do kill -0 $pid 2> /dev/null || break; sleep 0.01; done
   s=$(ck_step C/checkpoint.h5 2> /dev/null || echo 0)
   rows=$(wc -l < C/thermo.tsv)
   "$PELOID" run ck.cfg --restart C/checkpoint.h5 --out C --force --steps $((3000 - s)) 2> C2.err; rc=$?
@@ -153,7 +154,6 @@ if wait_row C/thermo.tsv 120; then
   if [ $rc -eq 0 ] && [ -z "$why" ]; then ok "killed ($rows rows, checkpoint at step $s), resumed in place with --force = uninterrupted"
   else bad "resume in place after SIGKILL (checkpoint at $s): exit $rc ($(tail -1 C2.err)):$why"; fi
 else bad "resume after SIGKILL: no thermo row at step 120"; kill -KILL $pid; fi
-set -m
 
 # one run per folder: a second run into a folder a run is writing is refused
 # (exit 2, one line) even with --force, and the first run's files stay its own
