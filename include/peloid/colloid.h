@@ -169,9 +169,9 @@ typedef struct {
     double a0_m, t0_s, m_f_kg; /* all > 0: physical scene, written in nm, ps, kg */
     const char *xyz_path;      /* colloids.xyz beside, or NULL */
     int overwrite;             /* replace an existing file */
-    long long keep_before;     /* >= 0: resume in place: continue the existing file
-                                * (and colloids.xyz) with its frames of steps < this;
-                                * -1: a new file */
+    int resume;                /* resume in place: continue the existing file (and
+                                * colloids.xyz) with its frames of steps < keep_before */
+    long long keep_before;
 } pl_colloid_traj_params_t;
 int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, const pl_colloid_traj_params_t *p,
                          pl_colloid_traj_t **out, pl_err_t *err);

@@ -317,7 +317,7 @@ static int open_resumed(pl_colloid_traj_t *t, long long keep, pl_err_t *err)
 int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, const pl_colloid_traj_params_t *p,
                          pl_colloid_traj_t **out, pl_err_t *err)
 {
-    if (!p->overwrite && p->keep_before < 0 && access(path, F_OK) == 0)
+    if (!p->overwrite && !p->resume && access(path, F_OK) == 0)
         return pl_err_set(err, PL_ERR_IO, "%s exists; not overwritten without --force", path);
     char tmp[PATH_MAX + 8];
     pl_atomic_tmp(path, tmp, sizeof tmp);
@@ -345,7 +345,7 @@ int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, const pl_collo
     errno = 0;
     int oom = !t->buf || !t->ibuf || !t->hold || !t->ihold;
     t->file = -1;
-    if (!oom && p->keep_before >= 0) {
+    if (!oom && p->resume) {
         int rc = open_resumed(t, p->keep_before, err);
         if (rc == 0 && p->xyz_path && pl_xyz_open_keep(p->xyz_path, p->keep_before, &t->xyz, err))
             rc = err ? err->code : PL_ERR_IO;

@@ -326,7 +326,7 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                                        .t0_s = scene->mapping.enabled ? m->t0 : 0.0,
                                        .m_f_kg = scene->mapping.enabled ? m->m_f : 0.0,
                                        .xyz_path = scene->output.colloids_xyz ? xyz : NULL, .overwrite = 1,
-                                       .keep_before = in_place ? first : -1};
+                                       .resume = in_place, .keep_before = first};
         if ((rc = pl_colloid_traj_open(path, sim->colloids, &tp, &sim->colloid_traj, err))) goto done;
     }
     FILE *log = o->log; /* the driver's stream; NULL: quiet */
