@@ -1,8 +1,11 @@
 /* peloid command-line driver: parse arguments, load the scene, dispatch.
  * Exit codes: 0 ok, 2 bad input (nothing written), 3 stability guard,
- * 4 I/O failure, 5 out of memory. */
+ * 4 I/O failure, 5 out of memory, 6 internal limit, 128 + N a run ended
+ * by signal N (SIGHUP 129, SIGINT 130, SIGTERM 143) with its outputs
+ * complete. */
 #include <errno.h>
 #include <gsl/gsl_errno.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,6 +32,10 @@ static const char *const usage =
     "        colloids.neighbor_skin and the colloid guard bounds) must equal the\n"
     "        checkpoint's, unless named\n"
     "        in --restart-changed (e.g. --restart-changed srd.dt,thermostat.type).\n"
+    "        --restart DIR/checkpoint.h5 --out DIR resumes in place: thermo.tsv and the\n"
+    "        trajectories keep what precedes the checkpoint's step and continue after it.\n"
+    "        --force first removes the files an earlier run wrote into DIR; a DIR another\n"
+    "        run is writing (lock DIR/.peloid.lock) is refused even with --force.\n"
     "        --threads N sets the OpenMP thread count (results do not depend on it).\n"
     "        A scene's @include files are resolved relative to the including file and\n"
     "        must lie in the scene's directory tree unless --allow-include-anywhere.\n"
@@ -56,7 +63,11 @@ static const char *const usage =
     "  --help           this text\n"
     "\n"
     "exit codes: 0 ok, 2 bad input (nothing written), 3 stability guard tripped,\n"
-    "            4 I/O error, 5 out of memory, 6 internal limit\n";
+    "            4 I/O error, 5 out of memory, 6 internal limit,\n"
+    "            129 / 130 / 143 run interrupted by SIGHUP / SIGINT / SIGTERM: the step in\n"
+    "            progress is finished, then the checkpoint, summary.json (\"interrupted\":\n"
+    "            true) and every output are written as at a normal end; a second signal\n"
+    "            exits at once\n";
 
 /* One line: control characters a message quotes from the input (a newline
  * in a scene string) are shown escaped. */
@@ -90,10 +101,66 @@ static int parse_ll(const char *s, long long lo, long long hi, long long *out)
     return 0;
 }
 
+/* The signal that asked the run to stop (0: none).  The one mutable
+ * file-scope variable: a signal handler can reach the run only through a
+ * variable of static storage, and only a volatile sig_atomic_t may be
+ * written there (C11 7.14.1.1).  The run polls it between steps. */
+static volatile sig_atomic_t interrupt_signal;
+
+/* First signal: note it, the run ends after the present step.  Second: exit
+ * at once (_exit is async-signal-safe; the outputs of the step loop stay as
+ * they are, the last checkpoint included). */
+static void on_signal(int sig)
+{
+    if (interrupt_signal) {
+        static const char msg[] = "peloid: second signal: exiting at once\n";
+        ssize_t ignored = write(2, msg, sizeof msg - 1);
+        (void)ignored;
+        _exit(128 + sig);
+    }
+    interrupt_signal = sig;
+}
+
+/* SIGINT, SIGTERM, SIGHUP end a run cleanly (on_signal), unless the signal is
+ * ignored on entry (nohup, a background job of a shell without job control):
+ * then it stays ignored. */
+static void catch_signals(void)
+{
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sa.sa_flags = SA_RESTART;
+    sigemptyset(&sa.sa_mask);
+    for (size_t k = 0; k < sizeof sigs / sizeof *sigs; ++k) {
+        struct sigaction old;
+        if (sigaction(sigs[k], NULL, &old) == 0 && old.sa_handler != SIG_IGN) sigaction(sigs[k], &sa, NULL);
+    }
+}
+
+static const char *signal_name(int sig)
+{
+    return sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : sig == SIGHUP ? "SIGHUP" : "a signal";
+}
+
+/* One line: where the interrupted run stopped and the command that continues
+ * it in place to the step it was to reach. */
+static int interrupted(const char *scene_path, unsigned flags, const pl_run_end_t *end)
+{
+    int sig = (int)interrupt_signal;
+    fprintf(stderr, "peloid: interrupted by %s at step %lld of %lld; resume with: peloid run %s --restart "
+                    "%s/checkpoint.h5 --out %s --steps %lld%s\n",
+            signal_name(sig), end->step, end->last, scene_path, end->dir, end->dir, end->last - end->step,
+            flags & PL_SCENE_INCLUDE_ANYWHERE ? " --allow-include-anywhere" : "");
+    return 128 + sig;
+}
+
 static int cmd_run(int argc, char **argv)
 {
+    pl_run_end_t end = {0, 0, ""};
     pl_run_opts_t o = {.out_dir = NULL, .steps = -1, .threads = 0, .restart = NULL, .force = 0,
-                       .progress = isatty(2), .log = stderr, .restart_changed = NULL};
+                       .progress = isatty(2), .log = stderr, .restart_changed = NULL,
+                       .interrupt = &interrupt_signal, .end = &end};
     unsigned flags = 0;
     int strict = 0;
     const char *scene_path = NULL;
@@ -136,8 +203,12 @@ static int cmd_run(int argc, char **argv)
                    : PL_ERR_NOMEM;
     if (!rc) rc = pl_mapping_report_strict(scene, strict, &err); /* --strict: the audit's warnings refused */
     if (!rc) pl_mapping_warnings_print(scene, stderr);
-    if (!rc) rc = pl_run(scene, &o, &err);
+    if (!rc) {
+        catch_signals();
+        rc = pl_run(scene, &o, &err);
+    }
     free(scene);
+    if (rc == PL_ERR_INTERRUPTED) return interrupted(scene_path, flags, &end);
     return rc ? fail(&err) : 0;
 }
 

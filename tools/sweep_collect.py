@@ -51,7 +51,10 @@ def load_point(out, p):
             s = json.load(open(sp))
         except (OSError, ValueError):
             s = None
-        if s and "last_step" in s:
+        if s and "last_step" in s and s.get("interrupted"):  # a signal ended it early: not finished
+            row["status"] = "failed"
+            row["message"] = row["message"] or "interrupted at step %s" % s["last_step"]
+        elif s and "last_step" in s:
             row["status"], row["exit_code"] = "ok", 0
             if not row["message"]:
                 row["message"] = "ok"

@@ -182,6 +182,9 @@ typedef struct {
     double frame_dt;           /* nominal time between frames, t0 */
     const char *xyz_path;      /* colloids.xyz beside, or NULL */
     int overwrite;             /* replace an existing file */
+    int resume;                /* resume in place: continue the existing file (and
+                                * colloids.xyz) with its frames of steps < keep_before */
+    long long keep_before;
 } pl_colloid_traj_params_t;
 int pl_colloid_traj_open(const char *path, const pl_colloid_t *c, const pl_colloid_traj_params_t *p,
                          pl_colloid_traj_t **out, pl_err_t *err);

@@ -13,6 +13,9 @@ enum {
     PL_ERR_IO = 4,     /* file system / HDF5 failure                           */
     PL_ERR_NOMEM = 5,
     PL_ERR_INTERNAL = 6, /* a program limit or invariant (a bug to report)     */
+    /* a signal ended the run early: its outputs and checkpoint are complete
+     * at the step reached; the driver exits with 128 + the signal number */
+    PL_ERR_INTERRUPTED = 7,
 };
 
 typedef struct pl_err {

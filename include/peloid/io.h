@@ -18,6 +18,18 @@
 int pl_outdir_prepare(const char *dir, int force, const char *scene_path, char *resolved, size_t n,
                       pl_err_t *err);
 
+/* One run per output directory: an exclusive advisory lock (flock) on
+ * "<dir>/.peloid.lock", held until *fd is closed (at the end of the run).
+ * A directory another process holds locked is PL_ERR_INPUT naming it,
+ * with or without --force; PL_ERR_IO when the lock file cannot be made. */
+int pl_outdir_lock(const char *dir, int *fd, pl_err_t *err);
+
+/* --force: removes from `dir` every file a peloid run (and `peloid report`)
+ * writes there and their temporary "*.tmp" twins (regular files only), so
+ * that a directory never mixes two runs; other files and the lock file stay.  PL_ERR_IO naming a
+ * file that cannot be removed. */
+int pl_outdir_clean(const char *dir, pl_err_t *err);
+
 /* "<dir>/<name>" into buf. */
 void pl_path_join(char *buf, size_t n, const char *dir, const char *name);
 
@@ -30,6 +42,9 @@ int pl_atomic_commit(const char *tmp, const char *path, pl_err_t *err);
 /* Atomic text file: open "<path>.tmp"; pl_file_commit checks the stream,
  * closes it and commits it (pl_atomic_commit). */
 FILE *pl_file_begin(const char *path, char *tmp, size_t ntmp, pl_err_t *err);
+/* Copies the file src to dst (replaced); PL_ERR_IO naming the file, and no
+ * dst left, when it fails. */
+int pl_file_copy(const char *src, const char *dst, pl_err_t *err);
 int pl_file_commit(FILE *f, const char *tmp, const char *path, pl_err_t *err);
 
 /* HDF5 checkpoint of the complete dynamic state: fluid (src/io/checkpoint.c)

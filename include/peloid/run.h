@@ -5,10 +5,18 @@
 #ifndef PELOID_RUN_H
 #define PELOID_RUN_H
 
+#include <limits.h>
+#include <signal.h>
 #include <stdio.h>
 
 #include "peloid/error.h"
 #include "peloid/scene.h"
+
+/* Where a run ended (pl_run_opts_t.end): for the driver's resume hint. */
+typedef struct {
+    long long step, last;  /* the step reached, the step the run was to end at */
+    char dir[PATH_MAX];    /* the resolved output directory ("" before it is known) */
+} pl_run_end_t;
 
 typedef struct {
     const char *out_dir;     /* NULL: out/<scene name> */
@@ -20,6 +28,13 @@ typedef struct {
     FILE *log;               /* progress and notes (the driver's stderr), or NULL */
     const char *restart_changed; /* --restart-changed: comma-separated scene keys
                                   * allowed to differ from the checkpoint's, or NULL */
+    /* The driver's signal flag (the signal number, 0: none), or NULL: polled
+     * between steps; when set the run ends at the step reached as at its
+     * normal end (last thermo row and trajectory frame, checkpoint, fields,
+     * observables, summary.json with "interrupted": true) and returns
+     * PL_ERR_INTERRUPTED. */
+    const volatile sig_atomic_t *interrupt;
+    pl_run_end_t *end;           /* filled when not NULL */
 } pl_run_opts_t;
 
 /* Largest step a run may reach (steps and checkpoint steps above it are

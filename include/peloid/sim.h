@@ -147,6 +147,12 @@ int pl_sim_stage_due(const pl_sim_t *sim, const pl_stage_t *s, long long step);
  * state (at_start, interval dividing the first step) run on it. */
 int pl_sim_begin(pl_sim_t *sim, long long last, pl_err_t *err);
 
+/* Ends the run at the present step before its last (an interrupt): sets
+ * stop_requested with `reason`, then runs the after-step stages that want
+ * the last state (at_end) and did not run on it by their interval, after
+ * the output guard's scan (PL_SLOT_OUTPUT_GUARD), as a normal end does. */
+int pl_sim_end_here(pl_sim_t *sim, const char *reason, pl_err_t *err);
+
 /* One collision step: the step stages due at `step`, then step + 1, then
  * the after-step stages due at the new step. */
 int pl_sim_step(pl_sim_t *sim, pl_err_t *err);

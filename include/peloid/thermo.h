@@ -43,6 +43,11 @@ void pl_thermo_table_build(const pl_sim_t *sim, pl_thermo_table_t *t);
 /* Appends n columns (a module's thermo_columns). */
 void pl_thermo_add(pl_thermo_table_t *t, const pl_thermo_column_t *c, int n);
 void pl_thermo_header(const pl_thermo_table_t *t, FILE *f);
+/* Opens thermo.tsv for the rows of a run.  keep < 0: a new file with the
+ * header.  keep >= 0 (resume in place): the existing file's rows of steps
+ * < keep stay and the rows go after them (a file that is not there is made
+ * new); a header other than t's is PL_ERR_INPUT.  PL_ERR_IO naming the file. */
+int pl_thermo_open(const pl_thermo_table_t *t, const char *path, long long keep, FILE **out, pl_err_t *err);
 /* Samples the state (fluid observables, colloid energies) into s. */
 void pl_thermo_sample(const pl_sim_t *sim, double rate, pl_thermo_sample_t *s);
 /* One row; returns what fprintf returned last (< 0 on a write error). */

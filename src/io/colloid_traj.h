@@ -26,6 +26,10 @@ typedef struct {
 typedef struct pl_xyz pl_xyz_t;
 /* Opens "<path>.tmp" for writing; PL_ERR_IO naming it. */
 int pl_xyz_open(const char *path, pl_xyz_t **out, pl_err_t *err);
+/* Resume in place: continues the frames of steps < keep of PATH.tmp (a
+ * killed run's, the newest) or else of PATH in PATH.tmp; none there: as
+ * pl_xyz_open. */
+int pl_xyz_open_keep(const char *path, long long keep, pl_xyz_t **out, pl_err_t *err);
 /* Appends one frame and flushes it; PL_ERR_IO naming the file. */
 int pl_xyz_frame(pl_xyz_t *x, const pl_traj_frame_t *f, pl_err_t *err);
 /* Flushes, fsyncs and renames PATH.tmp to PATH (the frames written so far,

@@ -9,7 +9,8 @@
  * then one line per colloid.  Species is "X" (ASE's dummy element: every
  * reader accepts it; colloids have no chemical identity).  Positions are
  * wrapped into the box, in the same units as colloids.h5.  Written to
- * PATH.tmp, renamed to PATH on close. */
+ * PATH.tmp, renamed to PATH on close; a run resumed in place continues the
+ * file (pl_xyz_open_keep). */
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
@@ -33,6 +34,75 @@ int pl_xyz_open(const char *path, pl_xyz_t **out, pl_err_t *err)
     if (!(x->f = pl_file_begin(path, x->tmp, sizeof x->tmp, err))) {
         free(x);
         return PL_ERR_IO;
+    }
+    *out = x;
+    return 0;
+}
+
+/* Byte offset in f of the first frame of a step >= keep (the end when none);
+ * -1 when f is not an extended XYZ file of frames. */
+static long frames_end(FILE *f, long long keep)
+{
+    char *line = NULL;
+    size_t cap = 0;
+    long at = 0;
+    unsigned long long n;
+    for (;;) {
+        at = ftell(f);
+        if (getline(&line, &cap, f) < 0) break; /* the end */
+        const char *st = NULL;
+        int ok = sscanf(line, "%llu", &n) == 1 && getline(&line, &cap, f) >= 0 && (st = strstr(line, " step="));
+        long long step = ok ? strtoll(st + 6, NULL, 10) : -1;
+        if (!ok) at = -1;
+        if (!ok || step >= keep) break;
+        for (unsigned long long i = 0; i < n; ++i)
+            if (getline(&line, &cap, f) < 0) break; /* a frame cut short: its step is >= keep */
+    }
+    free(line);
+    return at;
+}
+
+int pl_xyz_open_keep(const char *path, long long keep, pl_xyz_t **out, pl_err_t *err)
+{
+    char tmp[PATH_MAX + 8];
+    pl_atomic_tmp(path, tmp, sizeof tmp);
+    int from_tmp = access(tmp, F_OK) == 0; /* a killed run's file: the newest */
+    if (!from_tmp && access(path, F_OK) != 0) return pl_xyz_open(path, out, err);
+    pl_xyz_t *x = calloc(1, sizeof *x);
+    if (!x) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
+    snprintf(x->path, sizeof x->path, "%s", path);
+    snprintf(x->tmp, sizeof x->tmp, "%s", tmp);
+    const char *src = from_tmp ? tmp : path;
+    errno = 0;
+    FILE *in = fopen(src, from_tmp ? "r+" : "r");
+    int e = errno, opened = in != NULL;
+    long end = in ? frames_end(in, keep) : -1;
+    int bad = end < 0;
+    if (!bad && from_tmp) { /* cut it there and append */
+        bad = fflush(in) || ftruncate(fileno(in), end) || fseek(in, 0, SEEK_END);
+        e = errno;
+        x->f = in;
+        in = NULL;
+    } else if (!bad) { /* the frames to keep into PATH.tmp */
+        x->f = fopen(tmp, "w");
+        bad = !x->f || fseek(in, 0, SEEK_SET);
+        char buf[1 << 16];
+        for (long left = end; !bad && left > 0;) {
+            size_t want = (size_t)(left < (long)sizeof buf ? left : (long)sizeof buf);
+            size_t got = fread(buf, 1, want, in);
+            bad = got != want || fwrite(buf, 1, got, x->f) != got;
+            left -= (long)got;
+        }
+        bad |= !x->f || fflush(x->f) != 0;
+        e = errno;
+    }
+    if (in) fclose(in);
+    if (bad) {
+        if (x->f) fclose(x->f);
+        free(x);
+        return pl_err_set(err, PL_ERR_IO, "%s: cannot continue the frames before step %lld: %s", src, keep,
+                          !opened ? strerror(e) : end < 0 ? "not an extended XYZ file of frames"
+                          : e ? strerror(e) : "stream error");
     }
     *out = x;
     return 0;

@@ -1,5 +1,8 @@
-/* Output directory creation and atomic file writes (DESIGN.md "Errors"). */
+/* Output directory: creation, the one-run lock, clearing what an earlier
+ * run wrote (DESIGN.md "Errors"). */
 #include <errno.h>
+#include <fcntl.h>
+#include <sys/file.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <stdio.h>
@@ -115,5 +118,50 @@ int pl_outdir_prepare(const char *dir, int force, const char *scene_path, char *
         resolved[i] = keep;
         if (bad) return pl_err_set(err, PL_ERR_IO, "%s: cannot create output directory: %s", resolved, strerror(e));
     }
+    return 0;
+}
+
+int pl_outdir_lock(const char *dir, int *fd, pl_err_t *err)
+{
+    char path[PATH_MAX + 16];
+    snprintf(path, sizeof path, "%s/.peloid.lock", dir);
+    int f = open(path, O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+    if (f < 0) return pl_err_set(err, PL_ERR_IO, "%s: cannot create the lock file: %s", path, strerror(errno));
+    if (flock(f, LOCK_EX | LOCK_NB)) {
+        int e = errno;
+        close(f);
+        if (e == EWOULDBLOCK)
+            return pl_err_set(err, PL_ERR_INPUT, "%s: another peloid run is writing into this output directory "
+                              "(%s is locked); refused even with --force: wait for it or use another --out",
+                              dir, path);
+        return pl_err_set(err, PL_ERR_IO, "%s: cannot lock: %s", path, strerror(e));
+    }
+    *fd = f;
+    return 0;
+}
+
+/* Every file peloid writes into an output directory: `peloid run`
+ * (src/plan/run.c, the observers' observables.h5) and `peloid report`
+ * (tools/report.py, tools/plot_sediment.py). */
+static const char *const outdir_names[] = {
+    "scene.cfg", "thermo.tsv", "summary.json", "checkpoint.h5", "colloids.h5", "colloids.xyz", "fields.h5",
+    "fields.xdmf", "observables.h5", "report.md", "rdf.png", "rdf_classes.png", "sq.png", "cff.png",
+    "bonds.png", "msd.png", "clusters.png", "vdist.png", "sediment_phi.png", "viscosity.png", "thermo.png",
+    "sediment.png"};
+
+int pl_outdir_clean(const char *dir, pl_err_t *err)
+{
+    char path[PATH_MAX + 32];
+    struct stat st;
+    for (size_t k = 0; k < sizeof outdir_names / sizeof *outdir_names; ++k)
+        for (int tmp = 0; tmp < 2; ++tmp) {
+            snprintf(path, sizeof path, "%s/%s%s", dir, outdir_names[k], tmp ? ".tmp" : "");
+            /* a run writes regular files; a link or device placed under such
+             * a name is not an earlier run's */
+            if (lstat(path, &st) || !S_ISREG(st.st_mode)) continue;
+            if (unlink(path) && errno != ENOENT)
+                return pl_err_set(err, PL_ERR_IO, "%s: cannot remove the earlier run's file (--force): %s", path,
+                                  strerror(errno));
+        }
     return 0;
 }

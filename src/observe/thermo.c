@@ -1,7 +1,11 @@
 /* thermo.tsv columns (include/peloid/thermo.h): step and time, then each
  * module's columns (its thermo_columns, peloid/module.h), then the wall-clock
  * rate. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "peloid/module.h"
 #include "peloid/thermo.h"
@@ -71,4 +75,39 @@ int pl_thermo_row(const pl_thermo_table_t *t, const pl_thermo_sample_t *s, FILE 
         else r = fprintf(f, "%.10g%c", c->value(s, c->arg), sep);
     }
     return r;
+}
+
+int pl_thermo_open(const pl_thermo_table_t *t, const char *path, long long keep, FILE **out, pl_err_t *err)
+{
+    FILE *f = keep >= 0 ? fopen(path, "r+") : NULL;
+    if (!f && keep >= 0 && errno != ENOENT)
+        return pl_err_set(err, PL_ERR_IO, "%s: cannot open to continue: %s", path, strerror(errno));
+    if (!f) { /* a new file */
+        if (!(f = fopen(path, "w"))) return pl_err_set(err, PL_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
+        pl_thermo_header(t, f);
+        *out = f;
+        return 0;
+    }
+    char want[PL_THERMO_MAX_COLUMNS * 32] = "", *line = NULL;
+    size_t cap = 0, used = 0;
+    for (int k = 0; k < t->n && used < sizeof want; ++k)
+        used += (size_t)snprintf(want + used, sizeof want - used, "%s%c", t->col[k].name, k + 1 < t->n ? '\t' : '\n');
+    int rc = 0;
+    if (getline(&line, &cap, f) < 0 || strcmp(line, want) != 0) {
+        rc = pl_err_set(err, PL_ERR_INPUT, "%s: its columns are not this run's (another scene or other output "
+                        "options); resume with another --out", path);
+    } else { /* the whole rows of steps < keep stay (a row cut short by a crash has no newline) */
+        long at = ftell(f);
+        ssize_t len;
+        while ((len = getline(&line, &cap, f)) > 0 && line[len - 1] == '\n' && strtoll(line, NULL, 10) < keep)
+            at = ftell(f);
+        errno = 0;
+        if (at < 0 || fflush(f) || ftruncate(fileno(f), at) || fseek(f, 0, SEEK_END))
+            rc = pl_err_set(err, PL_ERR_IO, "%s: cannot cut it at step %lld: %s", path, keep,
+                            errno ? strerror(errno) : "stream error");
+    }
+    free(line);
+    if (rc) fclose(f);
+    else *out = f;
+    return rc;
 }

@@ -8,6 +8,7 @@
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
@@ -31,6 +32,7 @@ typedef struct {
     pl_thermo_table_t columns;
     double t_last_row;
     long long step_last_row;
+    int interrupted; /* the signal that ended the run early (0: none) */
 } writer_t;
 
 /* Writer stage: one thermo.tsv row, flushed.  PL_ERR_IO naming the file and
@@ -148,6 +150,8 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
     pl_json_int(&b, doc, "fluid_particles", (long long)sim->fluid.n);
     pl_json_int(&b, doc, "first_step", first);
     pl_json_int(&b, doc, "last_step", sim->step);
+    pl_json_set(&b, doc, "interrupted", json_boolean(w->interrupted != 0)); /* by a signal, at last_step */
+    if (w->interrupted) pl_json_int(&b, doc, "interrupted_signal", w->interrupted);
     pl_json_real(&b, doc, "wall_seconds", wall);
     pl_json_real(&b, doc, "cpu_seconds", cpu); /* the step loop's process CPU time, all threads */
     pl_json_real(&b, doc, "particle_updates_per_second", wall > 0 ? updates / wall : 0.0);
@@ -211,14 +215,22 @@ static int add_writers(pl_sim_t *sim, writer_t *w, pl_err_t *err)
 /* Walks the plan from the present step to `last` (or to the step the
  * stopping rule ends it at).  Before each step the colloid trajectory holds
  * the state, so that a guard stop inside the step writes the last good
- * frame. */
-static int loop(pl_sim_t *sim, writer_t *w, pl_progress_t *pg, long long last, pl_err_t *err)
+ * frame.  The driver's signal flag is polled between steps: a signal during
+ * a step ends the run when that step is complete. */
+static int loop(pl_sim_t *sim, writer_t *w, pl_progress_t *pg, long long last,
+                const volatile sig_atomic_t *interrupt, pl_err_t *err)
 {
     const pl_scene_t *sc = &sim->scene;
     w->t_last_row = omp_get_wtime();
     w->step_last_row = sim->step;
     int rc = pl_sim_begin(sim, last, err);
     while (!rc && sim->step < last && !sim->stop_requested) {
+        if (interrupt && *interrupt) {
+            w->interrupted = (int)*interrupt;
+            char why[64];
+            snprintf(why, sizeof why, "interrupted by signal %d", w->interrupted);
+            return pl_sim_end_here(sim, why, err);
+        }
         if (sim->colloid_traj)
             pl_colloid_traj_hold(sim->colloid_traj, sim->colloids, sim->step, (double)sim->step * sc->srd.dt);
         rc = pl_sim_step(sim, err);
@@ -228,12 +240,27 @@ static int loop(pl_sim_t *sim, writer_t *w, pl_progress_t *pg, long long last, p
     return rc;
 }
 
+/* Resume in place: the restart checkpoint lies in the output directory
+ * (an existing one).  The run then continues that directory's thermo.tsv
+ * and trajectories after their rows and frames before the checkpoint's
+ * step, as if it had not been interrupted, instead of replacing them; the
+ * directory need not be --force'd and is not cleared. */
+static int restart_in_place(const char *restart, const char *out_dir)
+{
+    char ck[PATH_MAX], ck_dir[PATH_MAX], out[PATH_MAX];
+    if (!realpath(restart, ck) || !realpath(out_dir, out)) return 0;
+    char *slash = strrchr(ck, '/');
+    snprintf(ck_dir, sizeof ck_dir, "%.*s", slash == ck ? 1 : (int)(slash - ck), ck);
+    return strcmp(ck_dir, out) == 0;
+}
+
 int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
 {
     pl_sim_t *sim = NULL;
     json_t *summary = NULL;
     pl_progress_t *pg = NULL;
-    int traj_written = 0;
+    int traj_written = 0, lock_fd = -1;
+    long long last = 0; /* the step the run ends at */
     writer_t w;
     memset(&w, 0, sizeof w);
     int rc = pl_sim_create(scene, o->threads, &sim, err);
@@ -244,7 +271,7 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     }
     if (o->restart_changed && (rc = pl_checkpoint_changed_keys_valid(o->restart_changed, err))) goto done;
     if (o->restart && (rc = pl_checkpoint_restart(sim, o->restart, o->restart_changed, err))) goto done;
-    long long first = sim->step, nsteps = o->steps >= 0 ? o->steps : scene->run.steps, last;
+    long long first = sim->step, nsteps = o->steps >= 0 ? o->steps : scene->run.steps;
     if (__builtin_add_overflow(first, nsteps, &last) || last > PL_RUN_MAX_STEP) {
         rc = pl_err_set(err, PL_ERR_INPUT,
                         "%s: checkpoint step %lld + %lld steps passes the largest step %lld; allowed: a step "
@@ -286,16 +313,16 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     }
     if (o->out_dir) snprintf(given, sizeof given, "%s", o->out_dir);
     else snprintf(given, sizeof given, "out/%s", scene->run.name);
-    if ((rc = pl_outdir_prepare(given, o->force, scene->path, w.dir, sizeof w.dir, err))) goto done;
-    if ((rc = write_scene_echo(&w, &sim->scene, err))) goto done;
+    int in_place = o->restart && restart_in_place(o->restart, given);
+    if ((rc = pl_outdir_prepare(given, o->force || in_place, scene->path, w.dir, sizeof w.dir, err))) goto done;
+    if ((rc = pl_outdir_lock(w.dir, &lock_fd, err))) goto done;
+    if (!in_place && (rc = pl_outdir_clean(w.dir, err))) goto done;
     char path[PATH_MAX];
     pl_path_join(w.thermo_path, sizeof w.thermo_path, w.dir, "thermo.tsv");
-    if (!(w.thermo = fopen(w.thermo_path, "w"))) {
-        rc = pl_err_set(err, PL_ERR_IO, "%s: cannot write: %s", w.thermo_path, strerror(errno));
-        goto done;
-    }
     pl_thermo_table_build(sim, &w.columns);
-    pl_thermo_header(&w.columns, w.thermo);
+    /* first: a thermo.tsv to continue in place with other columns is refused before anything is written */
+    if ((rc = pl_thermo_open(&w.columns, w.thermo_path, in_place ? first : -1, &w.thermo, err))) goto done;
+    if ((rc = write_scene_echo(&w, &sim->scene, err))) goto done;
     if ((rc = add_writers(sim, &w, err))) goto done;
     if (sim->colloids && scene->colloids.trajectory_interval > 0) {
         const pl_mapping_t *m = &scene->mapping.map;
@@ -309,7 +336,8 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                                                       ? m->real.kT / (pl_scene_kT(scene) * m->a0 * m->a0 / (m->t0 * m->t0))
                                                       : 0.0,
                                        .frame_dt = (double)scene->colloids.trajectory_interval * scene->srd.dt,
-                                       .xyz_path = scene->output.colloids_xyz ? xyz : NULL, .overwrite = 1};
+                                       .xyz_path = scene->output.colloids_xyz ? xyz : NULL, .overwrite = 1,
+                                       .resume = in_place, .keep_before = first};
         if ((rc = pl_colloid_traj_open(path, sim->colloids, &tp, &sim->colloid_traj, err))) goto done;
     }
     FILE *log = o->log; /* the driver's stream; NULL: quiet */
@@ -343,7 +371,7 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                                .md_per_step = colloid_md_moves(sim) ? (double)scene->colloids.substeps : 0.0};
     pg = pl_progress_create(&pp);
     double t0 = omp_get_wtime(), c0 = process_cpu_seconds();
-    rc = loop(sim, &w, pg, last, err);
+    rc = loop(sim, &w, pg, last, o->interrupt, err);
     double wall = omp_get_wtime() - t0, cpu = process_cpu_seconds() - c0;
     errno = 0;
     int thermo_bad = fflush(w.thermo) != 0 || fsync(fileno(w.thermo)) != 0;
@@ -382,13 +410,23 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                              sim->observe != NULL, 1, 1};
         for (size_t k = 0; k < sizeof names / sizeof *names; ++k)
             if (wrote[k]) pl_progress_file(pg, w.dir, names[k]);
-        if (sim->stop_requested) pl_progress_note(pg, "stopped at step %lld: %s", sim->step, sim->stop_reason);
+        if (sim->stop_requested && !w.interrupted)
+            pl_progress_note(pg, "stopped at step %lld: %s", sim->step, sim->stop_reason);
         pl_progress_finish(pg, sim->step);
     }
+    if (!rc && w.interrupted)
+        rc = pl_err_set(err, PL_ERR_INTERRUPTED, "interrupted by signal %d at step %lld of %lld", w.interrupted,
+                        sim->step, last);
 done:
+    if (o->end && sim) {
+        o->end->step = sim->step;
+        o->end->last = last;
+        snprintf(o->end->dir, sizeof o->end->dir, "%s", w.dir);
+    }
     pl_progress_free(pg);
     if (w.thermo) fclose(w.thermo);
     json_decref(summary);
-    pl_sim_free(sim);
+    pl_sim_free(sim);           /* closes a trajectory left open */
+    if (lock_fd >= 0) close(lock_fd); /* the directory is free when every output is closed */
     return rc;
 }

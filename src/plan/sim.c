@@ -5,6 +5,7 @@
  * step + 1, the after-step stages (observers, writers). */
 #include <math.h>
 #include <omp.h> /* omp_get_wtime: the stages' profile */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -135,6 +136,20 @@ int pl_sim_begin(pl_sim_t *sim, long long last, pl_err_t *err)
         if (s->phase == PL_PHASE_AFTER && s->at_start && sim->step % s->interval == 0 &&
             (rc = run_stage(sim, s, err)))
             return rc;
+    }
+    return 0;
+}
+
+int pl_sim_end_here(pl_sim_t *sim, const char *reason, pl_err_t *err)
+{
+    sim->stop_requested = 1;
+    snprintf(sim->stop_reason, sizeof sim->stop_reason, "%s", reason);
+    for (int k = 0; k < sim->nstages; ++k) {
+        pl_stage_t *s = &sim->stages[k];
+        if (s->phase != PL_PHASE_AFTER) continue;
+        int ran = sim->step % s->interval == 0 && !(s->except > 0 && sim->step % s->except == 0);
+        int rc;
+        if (((s->at_end && !ran) || s->slot == PL_SLOT_OUTPUT_GUARD) && (rc = run_stage(sim, s, err))) return rc;
     }
     return 0;
 }

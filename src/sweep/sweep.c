@@ -100,10 +100,13 @@ static char *read_text(const char *path)
     return s ? s : calloc(1, 1);
 }
 
+/* A finished point's summary: complete, and not of a run a signal ended
+ * early (that point runs again). */
 static int summary_complete(const char *path)
 {
     json_t *j = json_load_file(path, 0, NULL);
-    int ok = j && json_is_integer(json_object_get(j, "last_step")) && json_object_get(j, "wall_seconds");
+    int ok = j && json_is_integer(json_object_get(j, "last_step")) && json_object_get(j, "wall_seconds") &&
+             !json_is_true(json_object_get(j, "interrupted"));
     json_decref(j);
     return ok;
 }
