@@ -235,6 +235,23 @@ printf 'srd: { dt = 1e-320; };\n' > denormal.cfg
 [ $rc -eq 2 ] && [ ! -e denormal ] && grep -q "derived.nu_col" err.txt && ok "srd.dt = 1e-320: non-finite derived value refused before JSON, nothing written" || bad "denormal dt: rc $rc $(cat err.txt)"
 "$PELOID" check denormal.cfg 2> /dev/null; [ $? -eq 2 ] && ok "check refuses it too" || bad "check denormal dt"
 
+# colloids.init_file: a comment line of any length is one comment (600
+# characters here; a fixed line buffer made its tail a colloid); the run
+# directory's scene.cfg loads back with the original file gone (it names the
+# directory's copy colloids_init.txt), and a restart from that directory
+# continues bitwise (10 steps == 5 + restart + 5)
+mkdir -p initsc
+printf 'name = "ini";\nsteps = 10;\nbox: { cells = [16, 16, 16]; };\nfluid: { density = 2.0; };\ncolloids: { count = 2; radius = 1.0; init = "file"; init_file = "pos.txt"; };\n' > initsc/ini.cfg
+{ printf '#'; head -c 600 /dev/zero | tr '\0' c; printf ' 8 8 8.5\n8 8 8\n12 8 8\n'; } > initsc/pos.txt
+"$PELOID" check initsc/ini.cfg > /dev/null 2> err.txt && ok "init_file: a 601-character comment line is one comment" || bad "init_file long comment: $(cat err.txt)"
+printf '8 8 8\n12 8 8\n' > initsc/pos.txt
+"$PELOID" run initsc/ini.cfg --out ini10 2> err.txt && "$PELOID" run initsc/ini.cfg --out ini5 --steps 5 2>> err.txt
+mv initsc/pos.txt initsc/gone.txt
+"$PELOID" check ini10/scene.cfg > /dev/null 2>> err.txt && cmp -s ini10/colloids_init.txt initsc/gone.txt \
+  && ok "init_file: the run directory's scene.cfg loads back (its own colloids_init.txt)" || bad "init_file scene.cfg echo: $(cat err.txt)"
+"$PELOID" run ini10/scene.cfg --out ini55 --steps 5 --restart ini5/checkpoint.h5 2>> err.txt && cmp -s ini10/checkpoint.h5 ini55/checkpoint.h5 \
+  && ok "init_file: restart from the run directory's scene.cfg, 10 == 5 + restart + 5 bitwise" || bad "init_file restart: $(cat err.txt)"
+
 # the adversarial scene set (issue 18): each refused with exit 2, one line
 # naming file, line and key, nothing written (tests/bad_scenes.sh)
 bash "$ROOT/tests/bad_scenes.sh" "$PELOID" > bad.txt 2>&1 && ok "$(tail -1 bad.txt)" || bad "bad scenes: $(cat bad.txt)"

@@ -66,3 +66,26 @@ int pl_file_commit(FILE *f, const char *tmp, const char *path, pl_err_t *err)
     }
     return pl_atomic_commit(tmp, path, err);
 }
+
+int pl_file_copy(const char *src, const char *path, pl_err_t *err)
+{
+    FILE *in = fopen(src, "rb");
+    if (!in) return pl_err_set(err, PL_ERR_IO, "%s: cannot read: %s", src, strerror(errno));
+    char tmp[PATH_MAX + 8], buf[65536];
+    FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
+    if (!f) {
+        fclose(in);
+        return PL_ERR_IO;
+    }
+    size_t n;
+    while ((n = fread(buf, 1, sizeof buf, in)) > 0)
+        if (fwrite(buf, 1, n, f) != n) break;
+    int bad = ferror(in);
+    fclose(in);
+    if (bad) {
+        fclose(f);
+        unlink(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: read failed", src);
+    }
+    return pl_file_commit(f, tmp, path, err);
+}
