@@ -29,7 +29,9 @@ static const char *const usage =
     "        colloids.neighbor_skin and the colloid guard bounds) must equal the\n"
     "        checkpoint's, unless named\n"
     "        in --restart-changed (e.g. --restart-changed srd.dt,thermostat.type).\n"
-    "        --threads N sets the OpenMP thread count (results do not depend on it).\n"
+    "        --threads N sets the OpenMP thread count (results do not depend on it;\n"
+    "        default OMP_NUM_THREADS, else the CPUs; at most 4096; a warning when it\n"
+    "        exceeds the cores).\n"
     "        A scene's @include files are resolved relative to the including file and\n"
     "        must lie in the scene's directory tree unless --allow-include-anywhere.\n"
     "  check SCENE [--allow-include-anywhere]\n"
@@ -110,8 +112,8 @@ static int cmd_run(int argc, char **argv)
                 return bad_usage(msg);
             }
         } else if (!strcmp(a, "--threads") && has) {
-            if (parse_ll(argv[++i], 1, 4096, &v)) {
-                snprintf(msg, sizeof msg, "--threads %.100s: expected an integer in 1..4096", argv[i]);
+            if (parse_ll(argv[++i], 1, PL_THREADS_MAX, &v)) {
+                snprintf(msg, sizeof msg, "--threads %.100s: expected an integer in 1..%d", argv[i], PL_THREADS_MAX);
                 return bad_usage(msg);
             }
             o.threads = (int)v;
@@ -125,8 +127,14 @@ static int cmd_run(int argc, char **argv)
         }
     }
     if (!scene_path) return bad_usage("run: missing SCENE");
-    pl_scene_t *scene = malloc(sizeof *scene);
     pl_err_t err = {0, ""};
+    if (pl_threads_resolve(o.threads, &o.threads, &err)) return fail(&err);
+    const int cores = pl_threads_cores();
+    if (cores > 0 && o.threads > cores)
+        fprintf(stderr, "peloid: warning: %d OpenMP threads on %d cores (hwloc): the threads beyond the cores "
+                        "slow the run down (its results do not depend on the count); --threads %d\n",
+                o.threads, cores, cores);
+    pl_scene_t *scene = malloc(sizeof *scene);
     int rc = scene ? pl_scene_load_flags(scene_path, flags, scene, &err) : PL_ERR_NOMEM;
     if (!rc) rc = pl_run(scene, &o, &err);
     free(scene);
@@ -195,7 +203,7 @@ static int cmd_sweep(int argc, char **argv)
         else if (!strcmp(a, "--collect")) o.collect_only = 1;
         else if (!strcmp(a, "--out") && has) o.out_dir = argv[++i];
         else if ((!strcmp(a, "--jobs") || !strcmp(a, "--threads") || !strcmp(a, "--point")) && has) {
-            long long hi = !strcmp(a, "--point") ? PL_STUDY_MAX_POINTS - 1 : 4096;
+            long long hi = !strcmp(a, "--point") ? PL_STUDY_MAX_POINTS - 1 : PL_THREADS_MAX;
             if (parse_ll(argv[++i], !strcmp(a, "--point") ? 0 : 1, hi, &v)) {
                 snprintf(msg, sizeof msg, "sweep: %s %.100s: expected an integer in %d..%lld", a, argv[i],
                          !strcmp(a, "--point") ? 0 : 1, hi);

@@ -235,6 +235,23 @@ printf 'srd: { dt = 1e-320; };\n' > denormal.cfg
 [ $rc -eq 2 ] && [ ! -e denormal ] && grep -q "derived.nu_col" err.txt && ok "srd.dt = 1e-320: non-finite derived value refused before JSON, nothing written" || bad "denormal dt: rc $rc $(cat err.txt)"
 "$PELOID" check denormal.cfg 2> /dev/null; [ $? -eq 2 ] && ok "check refuses it too" || bad "check denormal dt"
 
+# thread counts: OMP_NUM_THREADS above the 4096 limit is refused like
+# --threads (exit 2, one line naming it, nothing written; 100000 crashed in
+# libgomp, 4097 ran ~1000x slower); more threads than hwloc's cores run with
+# one warning line, bitwise equal to 1 thread
+printf 'name = "th";\nsteps = 5;\nbox: { cells = [8, 8, 8]; };\nfluid: { density = 2.0; };\n' > th.cfg
+for n in 4097 100000; do
+  OMP_NUM_THREADS=$n timeout 60 "$PELOID" run th.cfg --out th_$n > /dev/null 2> err.txt; rc=$?
+  [ $rc -eq 2 ] && [ "$(wc -l < err.txt)" -eq 1 ] && grep -q "OMP_NUM_THREADS=$n" err.txt && [ ! -e th_$n ] \
+    && ok "OMP_NUM_THREADS=$n refused: $(cat err.txt)" || bad "OMP_NUM_THREADS=$n: rc $rc $(head -c 300 err.txt)"
+  OMP_NUM_THREADS=$n timeout 60 "$PELOID" check th.cfg > /dev/null 2> err.txt; rc=$?
+  [ $rc -eq 2 ] && grep -q "OMP_NUM_THREADS=$n" err.txt && ok "check refuses OMP_NUM_THREADS=$n too" || bad "check OMP_NUM_THREADS=$n: rc $rc"
+done
+many=$(( 4 * $(nproc) + 1 ))
+"$PELOID" run th.cfg --out th_many --threads $many 2> err.txt && "$PELOID" run th.cfg --out th_one --threads 1 2> /dev/null
+[ "$(grep -c 'warning:' err.txt)" -eq 1 ] && grep -q "warning: $many OpenMP threads on" err.txt && cmp -s th_many/checkpoint.h5 th_one/checkpoint.h5 \
+  && ok "--threads $many: one warning line, bitwise equal to 1 thread: $(grep warning: err.txt)" || bad "--threads $many: $(cat err.txt)"
+
 # colloids.init_file: a comment line of any length is one comment (600
 # characters here; a fixed line buffer made its tail a colloid); the run
 # directory's scene.cfg loads back with the original file gone (it names the
