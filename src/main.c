@@ -129,11 +129,6 @@ static int cmd_run(int argc, char **argv)
     if (!scene_path) return bad_usage("run: missing SCENE");
     pl_err_t err = {0, ""};
     if (pl_threads_resolve(o.threads, &o.threads, &err)) return fail(&err);
-    const int cores = pl_threads_cores();
-    if (cores > 0 && o.threads > cores)
-        fprintf(stderr, "peloid: warning: %d OpenMP threads on %d cores (hwloc): the threads beyond the cores "
-                        "slow the run down (its results do not depend on the count); --threads %d\n",
-                o.threads, cores, cores);
     pl_scene_t *scene = malloc(sizeof *scene);
     int rc = scene ? pl_scene_load_flags(scene_path, flags, scene, &err) : PL_ERR_NOMEM;
     if (!rc) rc = pl_run(scene, &o, &err);

@@ -327,6 +327,11 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         if ((rc = pl_colloid_traj_open(path, sim->colloids, &tp, &sim->colloid_traj, err))) goto done;
     }
     FILE *log = o->log; /* the driver's stream; NULL: quiet */
+    const int cores = log ? pl_threads_cores() : 0;
+    if (cores > 0 && sim->nthreads > cores)
+        fprintf(log, "peloid: warning: %d OpenMP threads on %d cores (hwloc): the threads beyond the cores slow "
+                     "the run down (its results do not depend on the count); --threads %d\n",
+                sim->nthreads, cores, cores);
     if (log)
         fprintf(log, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/\n",
                 scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
