@@ -252,6 +252,17 @@ many=$(( 4 * $(nproc) + 1 ))
 [ "$(grep -c 'warning:' err.txt)" -eq 1 ] && grep -q "warning: $many OpenMP threads on" err.txt && cmp -s th_many/checkpoint.h5 th_one/checkpoint.h5 \
   && ok "--threads $many: one warning line, bitwise equal to 1 thread: $(grep warning: err.txt)" || bad "--threads $many: $(cat err.txt)"
 
+# memory: check and run estimate the cells' and the fluid's bytes at the
+# run's thread count (the sort's histograms are threads x cells) and refuse
+# beyond physical memory naming the key; 1e9 cells at 4096 threads need ~16 TB
+printf 'steps = 1;\nbox: { cells = [1000, 1000, 1000]; };\nfluid: { density = 0.0; };\n' > bigcells.cfg
+OMP_NUM_THREADS=4096 timeout 60 "$PELOID" check bigcells.cfg > /dev/null 2> err.txt; rc=$?
+[ $rc -eq 2 ] && grep -q "bigcells.cfg:2: key 'box.cells'" err.txt && grep -q "at 4096 thread" err.txt \
+  && ok "check: 1e9 cells at 4096 threads refused by the memory estimate: $(cat err.txt)" || bad "check bigcells: rc $rc $(cat err.txt)"
+timeout 60 "$PELOID" run bigcells.cfg --threads 4096 --out bigcells > /dev/null 2> err.txt; rc=$?
+[ $rc -eq 2 ] && [ "$(wc -l < err.txt)" -eq 1 ] && grep -q "key 'box.cells'" err.txt && [ ! -e bigcells ] \
+  && ok "run --threads 4096 refuses it too, nothing written" || bad "run bigcells: rc $rc $(head -c 300 err.txt)"
+
 # colloids.init_file: a comment line of any length is one comment (600
 # characters here; a fixed line buffer made its tail a colloid); the run
 # directory's scene.cfg loads back with the original file gone (it names the

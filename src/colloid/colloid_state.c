@@ -513,7 +513,7 @@ int pl_colloid_create(const pl_scene_t *scene, int nthreads, pl_colloid_t **out,
         c->vy[i] -= ptot[1] / mtot;
         c->vz[i] -= ptot[2] / mtot;
     }
-    if ((rc = pl_colloid_setup(c, scene, err))) {
+    if ((rc = pl_colloid_overlap_screen(c, scene, err)) || (rc = pl_colloid_setup(c, scene, err))) {
         pl_colloid_free(c);
         return rc;
     }

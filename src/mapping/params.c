@@ -60,6 +60,7 @@ int pl_run_check(const pl_scene_t *sc, pl_err_t *err)
     json_t *derived = NULL, *mapping = NULL;
     int nthreads = 1;
     int rc = pl_threads_resolve(0, &nthreads, err); /* as a run without --threads */
+    if (!rc) rc = pl_scene_memory_check(sc, nthreads, err);
     if (!rc) rc = pl_params_json(sc, &derived, err);
     if (!rc) rc = pl_mapping_report_json(sc, &mapping, err);
     json_decref(derived);
@@ -67,6 +68,7 @@ int pl_run_check(const pl_scene_t *sc, pl_err_t *err)
     if (!rc && sc->colloids.count > 0) { /* placement: init file, overlaps */
         pl_colloid_t *c = NULL;
         rc = pl_colloid_create(sc, nthreads, &c, err);
+        if (!rc) rc = pl_observe_check_colloids(sc, c, err);
         pl_colloid_free(c);
     }
     return rc;
