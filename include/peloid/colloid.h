@@ -131,12 +131,6 @@ int pl_colloid_read_init_file(const pl_scene_t *scene, pl_colloid_t *c, pl_err_t
  * directory unless absolute. */
 void pl_colloid_init_path(const pl_scene_t *scene, char *buf, size_t n);
 
-/* What the observers check on the colloids themselves (the cluster search's
- * bond range against the largest radius and the box): PL_ERR_INPUT naming
- * the observe key; run at `check` and when a run creates its observers
- * (src/observe/observe_module.c). */
-int pl_observe_check_colloids(const pl_scene_t *scene, const pl_colloid_t *c, pl_err_t *err);
-
 /* Two initial colloids closer than (1 - colloids.max_overlap)(R_i + R_j)
  * found in O(N log N) (cubes of edge 2 (1 - max_overlap) R_min / sqrt 3):
  * PL_ERR_INPUT naming colloids.init.  Run before the neighbour list, whose

@@ -8,6 +8,7 @@
 #include "peloid/real.h" /* PL_PI */
 #include "json_build.h"
 #include "peloid/colloid.h"
+#include "peloid/observe_check.h"
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"
 

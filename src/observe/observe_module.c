@@ -60,6 +60,7 @@
 #include "peloid/h5.h"
 #include "peloid/io.h"
 #include "peloid/mapping.h"
+#include "peloid/observe_check.h"
 #include "peloid/module.h"
 #include "peloid/rdf.h"
 #include "peloid/sq.h"
@@ -165,8 +166,6 @@ static int any_observer(const pl_scene_observe_t *o)
 /* ---- scene checks ------------------------------------------------------ */
 
 #define OFFO(m) offsetof(pl_scene_t, observe.m)
-/* The most terms |q| x colloid one S(q) sample may sum (about 10 s of one core). */
-#define PL_SQ_MAX_OPS 1e10
 
 /* Energy bonds need a pair minimum deeper than -clusters_energy: the
  * primary (gap primary_gap) or the secondary minimum of the DLVO potential
@@ -243,17 +242,9 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
         return pl_scene_fail(sc, err, OFFO(sq_interval), "observe.sq_interval",
                              "%lld with walls: S(q) sums over the wave vectors of a periodic box; allowed: 0 "
                              "with walls", o->sq_interval);
-    if (o->sq_interval > 0) { /* the direct sum's cost: N x the half ball of wave vectors, O(1) to estimate */
-        const double qmax = o->sq_qmax > 0 ? o->sq_qmax : 4.0 * PL_PI / sc->colloids.radius;
-        double nvec = 2.0 * PL_PI / 3.0; /* (1/2) (4 pi / 3) prod_d (qmax L_d / 2 pi) */
-        for (int d = 0; d < 3; ++d) nvec *= qmax * sc->box.cells[d] / (2.0 * PL_PI);
-        const double ops = nvec * (double)sc->colloids.count;
-        if (ops > PL_SQ_MAX_OPS)
-            return pl_scene_fail(sc, err, OFFO(sq_qmax), "observe.sq_qmax",
-                                 "%g%s: S(q) sums over %.3g wave vectors x %lld colloids = %.3g terms per sample; "
-                                 "allowed: <= %.0e terms per sample (a smaller sq_qmax, box or colloid count)",
-                                 qmax, o->sq_qmax > 0 ? "" : " (the default 4 pi / colloids.radius)", nvec,
-                                 sc->colloids.count, ops, PL_SQ_MAX_OPS);
+    if (o->sq_interval > 0) {
+        int rc = pl_observe_sq_cost_check(sc, err);
+        if (rc) return rc;
     }
     if (o->cff_interval > 0 && sc->coupling.method != PL_COUPLE_POTENTIAL)
         return pl_scene_fail(sc, err, OFFO(cff_interval), "observe.cff_interval",
@@ -487,48 +478,13 @@ static int energy_bond(const void *ctx, int32_t i, int32_t j, double r)
     return isnan(e->barrier) || r - ri - rj < e->barrier ? 1 : 2;
 }
 
-/* The cluster search's box, radius and bond range for colloids c (energy
- * bonds: candidates are every pair within the pair cut-off). */
-static pl_cluster_params_t cluster_params(const pl_scene_t *sc, const pl_colloid_t *c)
-{
-    pl_cluster_params_t p = {.gap = sc->observe.clusters_gap, .nmax = c->n};
-    for (int d = 0; d < 3; ++d) {
-        p.box[d] = c->box[d];
-        p.periodic[d] = c->periodic[d];
-    }
-    for (size_t i = 0; i < c->n; ++i) p.rad_max = fmax(p.rad_max, c->rad[i]);
-    if (sc->observe.clusters_bond == PL_BOND_ENERGY)
-        p.gap = pl_colloid_pair_cutoff(&c->pair, p.rad_max) - 2.0 * p.rad_max;
-    return p;
-}
-
-int pl_observe_check_colloids(const pl_scene_t *sc, const pl_colloid_t *c, pl_err_t *err)
-{
-    if (sc->observe.clusters_interval <= 0 || !c) return 0;
-    pl_cluster_params_t p = cluster_params(sc, c);
-    pl_cluster_t *cl = NULL;
-    int rc = pl_cluster_create(&p, &cl, err);
-    pl_cluster_free(cl);
-    if (rc != PL_ERR_INPUT) return rc;
-    char why[sizeof err->msg];
-    snprintf(why, sizeof why, "%s", err->msg);
-    if (sc->observe.clusters_bond == PL_BOND_ENERGY)
-        return pl_scene_fail(sc, err, OFFO(clusters_bond), "observe.clusters_bond",
-                             "\"energy\": bonds within the pair cut-off: %s; allowed: \"gap\", or a box whose "
-                             "periodic edges exceed twice the cut-off", why);
-    return pl_scene_fail(sc, err, OFFO(clusters_gap), "observe.clusters_gap",
-                         "%g: %s; allowed: -2 R_max < clusters_gap <= L/2 - 2 R_max on every periodic axis "
-                         "(R_max = %g, the largest colloid radius)",
-                         sc->observe.clusters_gap, why, p.rad_max);
-}
-
 /* The cluster search of the observer, created at its first use. */
 static int clusters_ready(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
 {
     if (o->cl) return 0;
     const pl_scene_t *sc = &sim->scene;
     const pl_colloid_t *c = sim->colloids;
-    pl_cluster_params_t p = cluster_params(sc, c);
+    pl_cluster_params_t p = pl_observe_cluster_params(sc, c);
     o->c_barrier = NAN;
     if (sc->observe.clusters_bond == PL_BOND_ENERGY) {
         o->c_barrier = c->dlvo.barrier_h;
