@@ -30,7 +30,7 @@ int pl_scene_memory_check(const pl_scene_t *scene, int nthreads, pl_err_t *err)
     }
     const double np = scene->fluid.density * vol;
     const double per_p = 12.0 * sizeof(pl_real) + 4.0 + (scene->output.track_fluid ? 56.0 : 0.0) +
-                         (pot ? 8.0 + 8.0 * 8.0 : 0.0);
+                         (pot ? 8.0 + 8.0 * (scene->output.track_fluid ? 9.0 : 6.0) : 0.0);
     const double per_c = 4.0 * nthreads + 4.0 + (cpl ? 4.125 : 0.0) + (scene->output.fields_interval > 0 ? 32.0 : 0.0);
     const double need = per_p * np + per_c * cells + 600.0 * (double)scene->colloids.count;
     long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
