@@ -36,7 +36,9 @@ static const char *const usage =
     "        trajectories keep what precedes the checkpoint's step and continue after it.\n"
     "        --force first removes the files an earlier run wrote into DIR; a DIR another\n"
     "        run is writing (lock DIR/.peloid.lock) is refused even with --force.\n"
-    "        --threads N sets the OpenMP thread count (results do not depend on it).\n"
+    "        --threads N sets the OpenMP thread count (results do not depend on it;\n"
+    "        default OMP_NUM_THREADS, else the CPUs; at most 4096; a warning when it\n"
+    "        exceeds the cores).\n"
     "        A scene's @include files are resolved relative to the including file and\n"
     "        must lie in the scene's directory tree unless --allow-include-anywhere.\n"
     "  check SCENE [--strict] [--allow-include-anywhere]\n"
@@ -182,8 +184,8 @@ static int cmd_run(int argc, char **argv)
                 return bad_usage(msg);
             }
         } else if (!strcmp(a, "--threads") && has) {
-            if (parse_ll(argv[++i], 1, 4096, &v)) {
-                snprintf(msg, sizeof msg, "--threads %.100s: expected an integer in 1..4096", argv[i]);
+            if (parse_ll(argv[++i], 1, PL_THREADS_MAX, &v)) {
+                snprintf(msg, sizeof msg, "--threads %.100s: expected an integer in 1..%d", argv[i], PL_THREADS_MAX);
                 return bad_usage(msg);
             }
             o.threads = (int)v;
@@ -197,8 +199,9 @@ static int cmd_run(int argc, char **argv)
         }
     }
     if (!scene_path) return bad_usage("run: missing SCENE");
-    pl_scene_t *scene = malloc(sizeof *scene);
     pl_err_t err = {0, ""};
+    if (pl_threads_resolve(o.threads, &o.threads, &err)) return fail(&err);
+    pl_scene_t *scene = malloc(sizeof *scene);
     int rc = scene ? pl_scene_load_coupling_true(scene_path, flags, PL_CALIBRATION_DIR, o.threads, stderr, scene, &err)
                    : PL_ERR_NOMEM;
     if (!rc) rc = pl_mapping_report_strict(scene, strict, &err); /* --strict: the audit's warnings refused */
@@ -229,10 +232,12 @@ static int cmd_scene(int argc, char **argv, int params)
         }
     }
     if (!path) return bad_usage("missing SCENE");
-    pl_scene_t *scene = malloc(sizeof *scene);
     pl_err_t err = {0, ""};
+    int nthreads; /* of a calibration run: OMP_NUM_THREADS, checked first */
+    if (pl_threads_resolve(0, &nthreads, &err)) return fail(&err);
+    pl_scene_t *scene = malloc(sizeof *scene);
     if (!scene) return PL_ERR_NOMEM;
-    int rc = pl_scene_load_coupling_true(path, flags, PL_CALIBRATION_DIR, 0, stderr, scene, &err);
+    int rc = pl_scene_load_coupling_true(path, flags, PL_CALIBRATION_DIR, nthreads, stderr, scene, &err);
     if (!rc && params && json) {
         rc = pl_params_write_json(scene, stdout, strict, &err);
     } else if (!rc && params) {
@@ -276,7 +281,7 @@ static int cmd_sweep(int argc, char **argv)
         else if (!strcmp(a, "--collect")) o.collect_only = 1;
         else if (!strcmp(a, "--out") && has) o.out_dir = argv[++i];
         else if ((!strcmp(a, "--jobs") || !strcmp(a, "--threads") || !strcmp(a, "--point")) && has) {
-            long long hi = !strcmp(a, "--point") ? PL_STUDY_MAX_POINTS - 1 : 4096;
+            long long hi = !strcmp(a, "--point") ? PL_STUDY_MAX_POINTS - 1 : PL_THREADS_MAX;
             if (parse_ll(argv[++i], !strcmp(a, "--point") ? 0 : 1, hi, &v)) {
                 snprintf(msg, sizeof msg, "sweep: %s %.100s: expected an integer in %d..%lld", a, argv[i],
                          !strcmp(a, "--point") ? 0 : 1, hi);

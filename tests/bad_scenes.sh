@@ -45,7 +45,7 @@ for f in *.cfg; do
   needles=()
   for x in "${raw[@]}"; do x=${x# }; x=${x% }; [ -n "$x" ] && needles+=("$x"); done
   [ "$MODE" = --table ] && needles=("${needles[0]}")
-  case "$exp" in *.inc:*) ;; *) needles+=("$n.cfg:");; esac  # the scene named, unless an @include file is
+  case "$exp" in *.inc:*|*.txt:*) ;; *) needles+=("$n.cfg:");; esac  # the scene named, unless an @include or init file is
   timeout -k 2 "$TMO" "$PELOID" check "$f" > /dev/null 2> "$T/check.err"; rc1=$?
   c1=$(classify $rc1 "$T/check.err" "" "${needles[@]}")
   timeout -k 2 "$TMO" "$PELOID" run "$f" --out "$T/out_$n" > /dev/null 2> "$T/run.err"; rc2=$?

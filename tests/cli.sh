@@ -259,6 +259,50 @@ for f in "$ROOT"/scenes/*.cfg; do
 done
 [ -z "$why" ] && ok "$nstrict shipped scenes pass check --strict, the others say why in their comment" \
   || bad "shipped scenes failing --strict without a reason in their comment:$why"
+# thread counts: OMP_NUM_THREADS above the 4096 limit is refused like
+# --threads (exit 2, one line naming it, nothing written; 100000 crashed in
+# libgomp, 4097 ran ~1000x slower); more threads than hwloc's cores run with
+# one warning line, bitwise equal to 1 thread
+printf 'name = "th";\nsteps = 5;\nbox: { cells = [8, 8, 8]; };\nfluid: { density = 2.0; };\n' > th.cfg
+for n in 4097 100000; do
+  OMP_NUM_THREADS=$n timeout 60 "$PELOID" run th.cfg --out th_$n > /dev/null 2> err.txt; rc=$?
+  [ $rc -eq 2 ] && [ "$(wc -l < err.txt)" -eq 1 ] && grep -q "OMP_NUM_THREADS=$n" err.txt && [ ! -e th_$n ] \
+    && ok "OMP_NUM_THREADS=$n refused: $(cat err.txt)" || bad "OMP_NUM_THREADS=$n: rc $rc $(head -c 300 err.txt)"
+  OMP_NUM_THREADS=$n timeout 60 "$PELOID" check th.cfg > /dev/null 2> err.txt; rc=$?
+  [ $rc -eq 2 ] && grep -q "OMP_NUM_THREADS=$n" err.txt && ok "check refuses OMP_NUM_THREADS=$n too" || bad "check OMP_NUM_THREADS=$n: rc $rc"
+done
+many=$(( 4 * $(nproc) + 1 ))
+"$PELOID" run th.cfg --out th_many --threads $many 2> err.txt && "$PELOID" run th.cfg --out th_one --threads 1 2> /dev/null
+[ "$(grep -c 'warning:' err.txt)" -eq 1 ] && grep -q "warning: $many OpenMP threads on" err.txt && cmp -s th_many/checkpoint.h5 th_one/checkpoint.h5 \
+  && ok "--threads $many: one warning line, bitwise equal to 1 thread: $(grep warning: err.txt)" || bad "--threads $many: $(cat err.txt)"
+
+# memory: check and run estimate the cells' and the fluid's bytes at the
+# run's thread count (the sort's histograms are threads x cells) and refuse
+# beyond physical memory naming the key; 1e9 cells at 4096 threads need ~16 TB
+printf 'steps = 1;\nbox: { cells = [1000, 1000, 1000]; };\nfluid: { density = 0.0; };\n' > bigcells.cfg
+OMP_NUM_THREADS=4096 timeout 60 "$PELOID" check bigcells.cfg > /dev/null 2> err.txt; rc=$?
+[ $rc -eq 2 ] && grep -q "bigcells.cfg:2: key 'box.cells'" err.txt && grep -q "at 4096 thread" err.txt \
+  && ok "check: 1e9 cells at 4096 threads refused by the memory estimate: $(cat err.txt)" || bad "check bigcells: rc $rc $(cat err.txt)"
+timeout 60 "$PELOID" run bigcells.cfg --threads 4096 --out bigcells > /dev/null 2> err.txt; rc=$?
+[ $rc -eq 2 ] && [ "$(wc -l < err.txt)" -eq 1 ] && grep -q "key 'box.cells'" err.txt && [ ! -e bigcells ] \
+  && ok "run --threads 4096 refuses it too, nothing written" || bad "run bigcells: rc $rc $(head -c 300 err.txt)"
+
+# colloids.init_file: a comment line of any length is one comment (600
+# characters here; a fixed line buffer made its tail a colloid); the run
+# directory's scene.cfg loads back with the original file gone (it names the
+# directory's copy colloids_init.txt), and a restart from that directory
+# continues bitwise (10 steps == 5 + restart + 5)
+mkdir -p initsc
+printf 'name = "ini";\nsteps = 10;\nbox: { cells = [16, 16, 16]; };\nfluid: { density = 2.0; };\ncolloids: { count = 2; radius = 1.0; init = "file"; init_file = "pos.txt"; };\n' > initsc/ini.cfg
+{ printf '#'; head -c 600 /dev/zero | tr '\0' c; printf ' 8 8 8.5\n8 8 8\n12 8 8\n'; } > initsc/pos.txt
+"$PELOID" check initsc/ini.cfg > /dev/null 2> err.txt && ok "init_file: a 601-character comment line is one comment" || bad "init_file long comment: $(cat err.txt)"
+printf '8 8 8\n12 8 8\n' > initsc/pos.txt
+"$PELOID" run initsc/ini.cfg --out ini10 2> err.txt && "$PELOID" run initsc/ini.cfg --out ini5 --steps 5 2>> err.txt
+mv initsc/pos.txt initsc/gone.txt
+"$PELOID" check ini10/scene.cfg > /dev/null 2>> err.txt && cmp -s ini10/colloids_init.txt initsc/gone.txt \
+  && ok "init_file: the run directory's scene.cfg loads back (its own colloids_init.txt)" || bad "init_file scene.cfg echo: $(cat err.txt)"
+"$PELOID" run ini10/scene.cfg --out ini55 --steps 5 --restart ini5/checkpoint.h5 2>> err.txt && cmp -s ini10/checkpoint.h5 ini55/checkpoint.h5 \
+  && ok "init_file: restart from the run directory's scene.cfg, 10 == 5 + restart + 5 bitwise" || bad "init_file restart: $(cat err.txt)"
 
 # the adversarial scene set (issue 18): each refused with exit 2, one line
 # naming file, line and key, nothing written (tests/bad_scenes.sh)

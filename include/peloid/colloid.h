@@ -117,9 +117,25 @@ double pl_colloid_pair_cutoff(const pl_colloid_pair_params_t *p, double rmax);
 
 /* State from a validated scene: radii, masses, positions (lattice / random /
  * file), velocities, forces at t = 0.  An initial overlap beyond
- * colloids.max_overlap is PL_ERR_INPUT.  `scene_dir` locates init_file. */
+ * colloids.max_overlap is PL_ERR_INPUT. */
 int pl_colloid_create(const pl_scene_t *scene, int nthreads, pl_colloid_t **out, pl_err_t *err);
 void pl_colloid_free(pl_colloid_t *c);
+
+/* colloids.init_file read strictly into c's positions (and radii, from a
+ * fourth column) for pl_colloid_create (src/colloid/colloid_init_file.c has
+ * the rules); c allocated for colloids.count with box, periodic and the
+ * scene's radii set.  Any malformed, missing, extra or out-of-range value
+ * is PL_ERR_INPUT "FILE:LINE: column N (name): value 'TOKEN': allowed: ...". */
+int pl_colloid_read_init_file(const pl_scene_t *scene, pl_colloid_t *c, pl_err_t *err);
+/* The path colloids.init_file is opened at: relative to the scene file's
+ * directory unless absolute. */
+void pl_colloid_init_path(const pl_scene_t *scene, char *buf, size_t n);
+
+/* Two initial colloids closer than (1 - colloids.max_overlap)(R_i + R_j)
+ * found in O(N log N) (cubes of edge 2 (1 - max_overlap) R_min / sqrt 3):
+ * PL_ERR_INPUT naming colloids.init.  Run before the neighbour list, whose
+ * cost it bounds to O(N) (src/colloid/colloid_overlap.c). */
+int pl_colloid_overlap_screen(const pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
 
 /* Allocation only (n colloids, zeroed; unit quaternions); for tests that set
  * positions by hand, followed by pl_colloid_setup().  nthreads: the thread

@@ -46,6 +46,8 @@ FILE *pl_file_begin(const char *path, char *tmp, size_t ntmp, pl_err_t *err);
  * dst left, when it fails. */
 int pl_file_copy(const char *src, const char *dst, pl_err_t *err);
 int pl_file_commit(FILE *f, const char *tmp, const char *path, pl_err_t *err);
+/* A byte copy of file src written atomically to path. */
+int pl_file_copy(const char *src, const char *path, pl_err_t *err);
 
 /* HDF5 checkpoint of the complete dynamic state: fluid (src/io/checkpoint.c)
  * and colloids (src/io/checkpoint_colloid.c). */

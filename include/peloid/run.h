@@ -43,6 +43,17 @@ typedef struct {
 
 int pl_run(const pl_scene_t *scene, const pl_run_opts_t *opts, pl_err_t *err);
 
+/* The most OpenMP threads a run or check uses (--threads, OMP_NUM_THREADS). */
+#define PL_THREADS_MAX 4096
+
+/* The thread count of a run: `requested` (--threads) when > 0, else the
+ * OpenMP default (OMP_NUM_THREADS, else the CPUs); above PL_THREADS_MAX
+ * PL_ERR_INPUT naming --threads or OMP_NUM_THREADS (src/plan/threads.c). */
+int pl_threads_resolve(int requested, int *nthreads, pl_err_t *err);
+/* The cores hwloc reports (0: unknown): more threads than cores only slow a
+ * run down (its results do not depend on the count). */
+int pl_threads_cores(void);
+
 /* `peloid params`: derived SRD parameters (PL Eqs. 4, 6, 9-15) as text. */
 void pl_params_print(const pl_scene_t *scene, FILE *out);
 
@@ -51,8 +62,9 @@ void pl_params_print(const pl_scene_t *scene, FILE *out);
 struct json_t;
 int pl_params_json(const pl_scene_t *scene, struct json_t **out, pl_err_t *err);
 
-/* `peloid check`: what `run` validates short of running: the derived values
- * (finite), the mapping report, the colloid placement (init file, overlaps). */
+/* `peloid check`: what `run` validates short of running: the thread count
+ * of a run without --threads (OMP_NUM_THREADS), the derived values (finite),
+ * the mapping report, the colloid placement (init file, overlaps). */
 int pl_run_check(const pl_scene_t *scene, pl_err_t *err);
 
 /* `peloid params --json`: the object above, or {"srd": ..., "mapping": ...}

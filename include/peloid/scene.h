@@ -222,6 +222,12 @@ int pl_scene_load_string(const char *text, const char *label, pl_scene_t *scene,
  * a physical{} section first gets its SRD parameters from the mapping
  * (pl_mapping_scene_apply), hence the non-const scene. */
 int pl_scene_validate(pl_scene_t *scene, pl_err_t *err);
+/* The memory a run of the scene at nthreads threads allocates (O(1)
+ * estimate: fluid, cells, colloids) against the machine's physical memory:
+ * PL_ERR_INPUT naming box.cells or fluid.density, the estimate and the
+ * memory (src/scene/scene_validate.c).  Called by the loader at 1 thread,
+ * by `check` and by a run at their thread counts. */
+int pl_scene_memory_check(const pl_scene_t *scene, int nthreads, pl_err_t *err);
 
 /* Line on which the key at `offset` (offsetof(pl_scene_t, ...)) was given,
  * or 0 when it took its default. */

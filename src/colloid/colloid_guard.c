@@ -72,12 +72,18 @@ static int guard_report(const pl_colloid_t *c, pl_err_t *err)
     size_t n = c->n;
     long long st = c->md_step;
     for (size_t i = 0; i < n; ++i) {
-        if (!state_finite(c, i))
+        if (!state_finite(c, i)) { /* name the first non-finite component */
+            static const char *const nm[12] = {"x", "y", "z", "vx", "vy", "vz", "fx", "fy", "fz", "wx", "wy", "wz"};
+            const double v[12] = {c->x[i],  c->y[i],  c->z[i],  c->vx[i], c->vy[i], c->vz[i],
+                                  c->fx[i], c->fy[i], c->fz[i], c->wx[i], c->wy[i], c->wz[i]};
+            int k = 0;
+            while (k < 11 && isfinite(v[k])) ++k;
             return pl_err_set(err, PL_ERR_GUARD,
                               "guard nan: MD step %lld: colloid %zu has a non-finite position, "
-                              "velocity or force (x=%g v=%g f=%g); bound: finite; reduce the time "
-                              "step (srd.dt or raise colloids.substeps)",
-                              st, i, c->x[i], c->vx[i], c->fx[i]);
+                              "velocity or force (%s = %g; r = (%g, %g, %g), v = (%g, %g, %g), f = (%g, %g, %g)); "
+                              "bound: finite; reduce the time step (srd.dt or raise colloids.substeps)",
+                              st, i, nm[k], v[k], v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
+        }
     }
     for (size_t i = 0; i < n; ++i) {
         const int d = image_axis_out(c, i);

@@ -347,53 +347,6 @@ static int place_random(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
     return 0;
 }
 
-static int place_file(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
-{
-    char path[1024];
-    const char *slash = strrchr(scene->path, '/');
-    int dl = slash ? (int)(slash - scene->path) + 1 : 0;
-    snprintf(path, sizeof path, "%.*s%s", dl, scene->path, scene->colloids.init_file);
-    FILE *f = fopen(path, "r");
-    if (!f)
-        return pl_scene_fail(scene, err, OFF(colloids.init_file), "colloids.init_file",
-                             "cannot open \"%s\"", path);
-    char line[512];
-    size_t i = 0;
-    int ln = 0, rc = 0;
-    while (fgets(line, sizeof line, f) && i < c->n) {
-        ++ln;
-        if (line[0] == '#' || line[strspn(line, " \t\r\n")] == '\0') continue;
-        double v[4];
-        int k = sscanf(line, "%lf %lf %lf %lf", &v[0], &v[1], &v[2], &v[3]);
-        if (k < 3 || (k == 4 && !(v[3] > 0.0))) {
-            rc = pl_err_set(err, PL_ERR_INPUT, "%s:%d: expected \"x y z [R]\" with R > 0", path, ln);
-            break;
-        }
-        c->x[i] = v[0];
-        c->y[i] = v[1];
-        c->z[i] = v[2];
-        if (k == 4) c->rad[i] = v[3];
-        ++i;
-    }
-    fclose(f);
-    if (!rc && i < c->n)
-        rc = pl_scene_fail(scene, err, OFF(colloids.count), "colloids.count",
-                           "%zu colloids asked for, \"%s\" lists %zu", c->n, path, i);
-    for (size_t j = 0; j < c->n && !rc; ++j) {
-        double *p[3] = {&c->x[j], &c->y[j], &c->z[j]};
-        for (int k = 0; k < 3; ++k) {
-            if (c->periodic[k]) {
-                double w = floor(*p[k] / c->box[k]);
-                *p[k] -= w * c->box[k];
-            } else if (*p[k] < 0.0 || *p[k] > c->box[k]) {
-                rc = pl_err_set(err, PL_ERR_INPUT, "%s: colloid %zu has %c = %g outside the walls [0, %g]",
-                                path, j, "xyz"[k], *p[k], c->box[k]);
-            }
-        }
-    }
-    return rc;
-}
-
 int pl_colloid_create(const pl_scene_t *scene, int nthreads, pl_colloid_t **out, pl_err_t *err)
 {
     const pl_scene_colloids_t *cs = &scene->colloids;
@@ -411,7 +364,7 @@ int pl_colloid_create(const pl_scene_t *scene, int nthreads, pl_colloid_t **out,
     int rc = 0;
     if (cs->init == PL_CINIT_LATTICE) place_lattice(c, c->box, !c->periodic[2]);
     else if (cs->init == PL_CINIT_RANDOM) rc = place_random(c, scene, err);
-    else rc = place_file(c, scene, err);
+    else rc = pl_colloid_read_init_file(scene, c, err);
     if (rc) {
         pl_colloid_free(c);
         return rc;
@@ -453,7 +406,7 @@ int pl_colloid_create(const pl_scene_t *scene, int nthreads, pl_colloid_t **out,
         c->vy[i] -= ptot[1] / mtot;
         c->vz[i] -= ptot[2] / mtot;
     }
-    if ((rc = pl_colloid_setup(c, scene, err))) {
+    if ((rc = pl_colloid_overlap_screen(c, scene, err)) || (rc = pl_colloid_setup(c, scene, err))) {
         pl_colloid_free(c);
         return rc;
     }

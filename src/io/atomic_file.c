@@ -67,28 +67,25 @@ int pl_file_commit(FILE *f, const char *tmp, const char *path, pl_err_t *err)
     return pl_atomic_commit(tmp, path, err);
 }
 
-int pl_file_copy(const char *src, const char *dst, pl_err_t *err)
+int pl_file_copy(const char *src, const char *path, pl_err_t *err)
 {
     FILE *in = fopen(src, "rb");
     if (!in) return pl_err_set(err, PL_ERR_IO, "%s: cannot read: %s", src, strerror(errno));
-    FILE *out = fopen(dst, "wb");
-    if (!out) {
-        int e = errno;
+    char tmp[PATH_MAX + 8], buf[65536];
+    FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
+    if (!f) {
         fclose(in);
-        return pl_err_set(err, PL_ERR_IO, "%s: cannot write: %s", dst, strerror(e));
+        return PL_ERR_IO;
     }
-    char buf[1 << 16];
     size_t n;
-    int bad = 0;
-    errno = 0;
-    while (!bad && (n = fread(buf, 1, sizeof buf, in)) > 0) bad = fwrite(buf, 1, n, out) != n;
-    int e = errno, rbad = ferror(in);
+    while ((n = fread(buf, 1, sizeof buf, in)) > 0)
+        if (fwrite(buf, 1, n, f) != n) break;
+    int bad = ferror(in);
     fclose(in);
-    bad |= fflush(out) != 0 || ferror(out);
-    if (!e) e = errno;
-    if (fclose(out) || bad || rbad) {
-        unlink(dst);
-        return pl_err_set(err, PL_ERR_IO, "%s: copying %s failed: %s", dst, src, e ? strerror(e) : "stream error");
+    if (bad) {
+        fclose(f);
+        unlink(tmp);
+        return pl_err_set(err, PL_ERR_IO, "%s: read failed", src);
     }
-    return 0;
+    return pl_file_commit(f, tmp, path, err);
 }

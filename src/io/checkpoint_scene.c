@@ -9,7 +9,12 @@
  * Not physics, so free to change on restart: the run's name and length, the
  * output intervals, the colloid trajectory interval, the guard bounds
  * (they stop a run, they do not change its trajectory) and the neighbour-list
- * skin (the forces are bitwise the same for any valid list). */
+ * skin (the forces are bitwise the same for any valid list).
+ *
+ * Not state either: colloids.init_file (the checkpoint holds the colloids'
+ * positions and radii, and a run directory's scene.cfg names its own copy
+ * of the file, colloids_init.txt): its line keeps its place with the value
+ * "" and is not compared on restart (older checkpoints hold a path there). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,6 +40,8 @@ static const char *const not_physics[] = {
     "colloids.neighbor_skin", /* the forces do not depend on the list's skin */
     "coarse_graining.strict",
 };
+
+static int not_compared(const char *name) { return !strcmp(name, "colloids.init_file"); }
 
 static void full_name(const pl_section_t *sec, const pl_key_t *k, char *buf, size_t n)
 {
@@ -98,7 +105,8 @@ static char *keys_text(const pl_scene_t *scene, int (*keep)(const char *name))
             char name[128], val[256];
             full_name(all[j], &all[j]->keys[i], name, sizeof name);
             if (!keep(name)) continue;
-            value_text(&all[j]->keys[i], scene, val, sizeof val);
+            if (not_compared(name)) snprintf(val, sizeof val, "\"\"");
+            else value_text(&all[j]->keys[i], scene, val, sizeof val);
             size_t need = strlen(name) + strlen(val) + 5;
             if (len + need >= cap) {
                 char *t = realloc(s, cap = 2 * cap + need);
@@ -198,6 +206,7 @@ int pl_ckpt_scene_check(hid_t f, const pl_scene_t *scene, const char *changed, c
             int has = lookup(other, name, b, sizeof b);
             p = e + 1;
             if (pass && has) continue; /* compared in the first pass */
+            if (not_compared(name)) continue;
             if (has && !strcmp(a, b)) continue;
             if (listed(changed, name)) continue;
             const char *vck = pass ? a : has ? b : "(absent)", *vsc = pass ? "(absent)" : a;

@@ -1,7 +1,6 @@
 /* `peloid params`: the SRD fluid's derived parameters from PL Sec. II.B,
  * as text or as JSON (jansson; also the "derived" object of summary.json). */
 #include <math.h>
-#include <omp.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
@@ -9,6 +8,7 @@
 #include "peloid/real.h" /* PL_PI */
 #include "json_build.h"
 #include "peloid/colloid.h"
+#include "peloid/observe_check.h"
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"
 
@@ -59,13 +59,17 @@ int pl_params_json(const pl_scene_t *sc, struct json_t **out, pl_err_t *err)
 int pl_run_check(const pl_scene_t *sc, pl_err_t *err)
 {
     json_t *derived = NULL, *mapping = NULL;
-    int rc = pl_params_json(sc, &derived, err);
+    int nthreads = 1;
+    int rc = pl_threads_resolve(0, &nthreads, err); /* as a run without --threads */
+    if (!rc) rc = pl_scene_memory_check(sc, nthreads, err);
+    if (!rc) rc = pl_params_json(sc, &derived, err);
     if (!rc) rc = pl_mapping_report_json(sc, &mapping, err);
     json_decref(derived);
     json_decref(mapping);
     if (!rc && sc->colloids.count > 0) { /* placement: init file, overlaps */
         pl_colloid_t *c = NULL;
-        rc = pl_colloid_create(sc, omp_get_max_threads(), &c, err); /* as a run without --threads */
+        rc = pl_colloid_create(sc, nthreads, &c, err);
+        if (!rc) rc = pl_observe_check_colloids(sc, c, err);
         pl_colloid_free(c);
     }
     return rc;

@@ -60,6 +60,7 @@
 #include "peloid/h5.h"
 #include "peloid/io.h"
 #include "peloid/mapping.h"
+#include "peloid/observe_check.h"
 #include "peloid/module.h"
 #include "peloid/rdf.h"
 #include "peloid/sq.h"
@@ -241,6 +242,10 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
         return pl_scene_fail(sc, err, OFFO(sq_interval), "observe.sq_interval",
                              "%lld with walls: S(q) sums over the wave vectors of a periodic box; allowed: 0 "
                              "with walls", o->sq_interval);
+    if (o->sq_interval > 0) {
+        int rc = pl_observe_sq_cost_check(sc, err);
+        if (rc) return rc;
+    }
     if (o->cff_interval > 0 && sc->coupling.method != PL_COUPLE_POTENTIAL)
         return pl_scene_fail(sc, err, OFFO(cff_interval), "observe.cff_interval",
                              "%lld: the fluid force on the colloids is a force only with coupling.method = "
@@ -291,6 +296,8 @@ static int observe_create(pl_sim_t *sim, pl_err_t *err)
         o->mt_ctx[k] = (obs_stage_t){o, k};
     }
     sim->observe = o;
+    int rc = pl_observe_check_colloids(&sim->scene, sim->colloids, err); /* before any output */
+    if (rc) return rc;
     if (sim->scene.observe.cff_interval > 0 && sim->coupling)
         return pl_coupling_mean_force_on(sim->coupling, sim->colloids->n, err);
     return 0;
@@ -477,16 +484,9 @@ static int clusters_ready(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
     if (o->cl) return 0;
     const pl_scene_t *sc = &sim->scene;
     const pl_colloid_t *c = sim->colloids;
-    pl_cluster_params_t p = {.gap = sc->observe.clusters_gap, .nmax = c->n};
-    for (int d = 0; d < 3; ++d) {
-        p.box[d] = c->box[d];
-        p.periodic[d] = c->periodic[d];
-    }
-    for (size_t i = 0; i < c->n; ++i) p.rad_max = fmax(p.rad_max, c->rad[i]);
+    pl_cluster_params_t p = pl_observe_cluster_params(sc, c);
     o->c_barrier = NAN;
     if (sc->observe.clusters_bond == PL_BOND_ENERGY) {
-        /* candidates: every pair within the pair cut-off */
-        p.gap = pl_colloid_pair_cutoff(&c->pair, p.rad_max) - 2.0 * p.rad_max;
         o->c_barrier = c->dlvo.barrier_h;
         o->eb = (ebond_t){c, sc->observe.clusters_energy, o->c_barrier};
         p.bond = energy_bond;

@@ -176,14 +176,38 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
     return pl_file_commit(f, tmp, path, err);
 }
 
+/* The copy of colloids.init_file in the run directory: the directory holds
+ * everything its scene.cfg needs, so that scene.cfg loads back (and a
+ * restart from the directory works) wherever the original file went. */
+#define INIT_COPY "colloids_init.txt"
+
+static int uses_init_file(const pl_scene_t *sc) { return sc->colloids.count > 0 && sc->colloids.init == PL_CINIT_FILE; }
+
+/* scene.cfg: the effective scene, every key; with an init file, that file
+ * copied as INIT_COPY and named by the echo's colloids.init_file. */
 static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *err)
 {
     char path[PATH_MAX], tmp[PATH_MAX + 8];
+    pl_scene_t *echo = NULL;
+    if (uses_init_file(sc)) {
+        char src[PATH_MAX];
+        pl_colloid_init_path(sc, src, sizeof src);
+        pl_path_join(path, sizeof path, w->dir, INIT_COPY);
+        if (pl_file_copy(src, path, err)) return err->code;
+        if (!(echo = malloc(sizeof *echo))) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
+        *echo = *sc;
+        snprintf(echo->colloids.init_file, sizeof echo->colloids.init_file, "%s", INIT_COPY);
+    }
     pl_path_join(path, sizeof path, w->dir, "scene.cfg");
     FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
-    if (!f) return PL_ERR_IO;
+    if (!f) {
+        free(echo);
+        return PL_ERR_IO;
+    }
     fprintf(f, "# effective scene of %s (every key, defaults filled in)\n", sc->path);
-    pl_scene_print(sc, f);
+    if (echo) fprintf(f, "# colloids.init_file: %s copied as " INIT_COPY "\n", sc->colloids.init_file);
+    pl_scene_print(echo ? echo : sc, f);
+    free(echo);
     errno = 0;
     if (fflush(f) || ferror(f) || fsync(fileno(f))) { /* name the system error */
         int e = errno;
@@ -341,6 +365,11 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         if ((rc = pl_colloid_traj_open(path, sim->colloids, &tp, &sim->colloid_traj, err))) goto done;
     }
     FILE *log = o->log; /* the driver's stream; NULL: quiet */
+    const int cores = log ? pl_threads_cores() : 0;
+    if (cores > 0 && sim->nthreads > cores)
+        fprintf(log, "peloid: warning: %d OpenMP threads on %d cores (hwloc): the threads beyond the cores slow "
+                     "the run down (its results do not depend on the count); --threads %d\n",
+                sim->nthreads, cores, cores);
     if (log)
         fprintf(log, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/\n",
                 scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
@@ -402,10 +431,10 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         if (pl_modules[m]->finish && (rc = pl_modules[m]->finish(sim, w.dir, summary, err))) goto done;
     rc = write_summary(&w, summary, sim, first, wall, cpu, err);
     if (!rc) {
-        static const char *const names[] = {"scene.cfg", "thermo.tsv", "colloids.h5", "colloids.xyz",
+        static const char *const names[] = {"scene.cfg", INIT_COPY, "thermo.tsv", "colloids.h5", "colloids.xyz",
                                             "fields.h5", "fields.xdmf", "observables.h5", "checkpoint.h5",
                                             "summary.json"};
-        const int wrote[] = {1, 1, traj_written, traj_written && scene->output.colloids_xyz,
+        const int wrote[] = {1, uses_init_file(scene), 1, traj_written, traj_written && scene->output.colloids_xyz,
                              sim->field_acc && sim->field_samples > 0, sim->field_acc && sim->field_samples > 0,
                              sim->observe != NULL, 1, 1};
         for (size_t k = 0; k < sizeof names / sizeof *names; ++k)

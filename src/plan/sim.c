@@ -36,6 +36,9 @@ int pl_sim_add_stage(pl_sim_t *sim, const pl_stage_t *stage, pl_err_t *err)
 
 int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_t *err)
 {
+    /* the memory at this thread count, before any allocation (bad input, not exit 5 minutes later) */
+    int rc = pl_scene_memory_check(scene, nthreads > 0 ? nthreads : omp_get_max_threads(), err);
+    if (rc) return rc;
     pl_sim_t *sim = calloc(1, sizeof *sim);
     if (sim) sim->observe_resumed = -1;
     if (!sim) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
@@ -50,7 +53,7 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
     pl_grid_init(&sim->grid, scene->box.cells, walls);
     double volume = (double)scene->box.cells[0] * scene->box.cells[1] * scene->box.cells[2];
     size_t n = (size_t)llround(scene->fluid.density * volume);
-    int rc = pl_fluid_create(n, scene->output.track_fluid, sim->nthreads, &sim->fluid, err);
+    rc = pl_fluid_create(n, scene->output.track_fluid, sim->nthreads, &sim->fluid, err);
     if (rc) {
         free(sim);
         return rc;

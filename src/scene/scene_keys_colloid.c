@@ -28,7 +28,8 @@ static const pl_key_t colloid_keys[] = {
      "-", "initial positions: lattice (simple cubic filling the box), random "
           "(sequential addition without overlap, seeded by run.seed), file"},
     {"init_file", PL_KEY_STRING, OFF(init_file), 0, 0, 0, NULL, 0, "",
-     "-", "init = \"file\": text file next to the scene, one colloid per line: x y z [R]"},
+     "-", "init = \"file\": text file (relative to the scene file), one colloid per line: x y z [R]; "
+          "read strictly (README \"Colloids, couplings and physical units\")"},
     {"pairs", PL_KEY_STRING, OFF(pairs), 0, 0, 0, NULL, 0, "hertz",
      "-", "pair terms switched on, comma separated: dlvo, hertz, lubrication, wca, depletion_comp "
           "(\"\": none); depletion_comp = -Phi_depl, the compensating potential of PL Sec. III.C.1 "

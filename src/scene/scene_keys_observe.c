@@ -29,7 +29,7 @@ static const pl_key_t observe_keys[] = {
      "colloid static structure factor S(q) = |sum_j exp(i q.r_j)|^2 / N every this many steps (0: off; all "
      "axes periodic), direct sum over the box's wave vectors q = 2 pi (n_x/L_x, n_y/L_y, n_z/L_z), 0 < |q| < "
      "sq_qmax, binned by |q|; mean and SE per bin by blocking over samples; costs N x (2 pi / 3) "
-     "(sq_qmax L / 2 pi)^3 per sample"},
+     "(sq_qmax L / 2 pi)^3 terms per sample, at most 1e10 (refused above)"},
     {"sq_start", PL_KEY_INT, OFF(sq_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "first step S(q) samples"},
     {"sq_bins", PL_KEY_INT, OFF(sq_bins), 1, 1e6, 0, NULL, 100, NULL, "-", "S(q) bins over [0, sq_qmax)"},

@@ -3,9 +3,47 @@
 #include <stdio.h>
 #include <unistd.h>
 
+#include "peloid/real.h"
 #include "peloid/scene.h"
 
 #define OFF(m) offsetof(pl_scene_t, m)
+
+/* Bytes a run allocates, by O(1) arithmetic on the scene (src/plan/sim.c,
+ * src/fluid/fluid.c, src/coupling/coupling_potential.c): per fluid particle
+ * the positions and velocities with their sort twins (12 reals), the cell
+ * index, with output.track_fluid ids and unwrapped displacements (twins),
+ * with the potential coupling its two selection indices and its staging row;
+ * per collision cell (closed axes add a layer each side) the per-thread
+ * histograms of the counting sort, the cell starts, a coupling's cell starts
+ * and mask and, with output.fields_interval, the field sums (4 x 8 B); per
+ * colloid ~600 B (state, scratch, neighbour list). */
+int pl_scene_memory_check(const pl_scene_t *scene, int nthreads, pl_err_t *err)
+{
+    const pl_scene_box_t *b = &scene->box;
+    const int cpl = scene->coupling.method != PL_COUPLE_NONE && scene->colloids.count > 0;
+    const int pot = cpl && scene->coupling.method == PL_COUPLE_POTENTIAL;
+    double cells = 1.0, vol = 1.0;
+    for (int d = 0; d < 3; ++d) {
+        int closed = d == 2 ? b->walls_z != PL_WALLS_NONE : b->walls_xy != PL_WALLS_NONE;
+        cells *= (double)b->cells[d] + (closed ? 2.0 : 0.0);
+        vol *= (double)b->cells[d];
+    }
+    const double np = scene->fluid.density * vol;
+    const double per_p = 12.0 * sizeof(pl_real) + 4.0 + (scene->output.track_fluid ? 56.0 : 0.0) +
+                         (pot ? 8.0 + 8.0 * (scene->output.track_fluid ? 9.0 : 6.0) : 0.0);
+    const double per_c = 4.0 * nthreads + 4.0 + (cpl ? 4.125 : 0.0) + (scene->output.fields_interval > 0 ? 32.0 : 0.0);
+    const double need = per_p * np + per_c * cells + 600.0 * (double)scene->colloids.count;
+    long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
+    double have = pages > 0 && psize > 0 ? (double)pages * (double)psize : 0.0;
+    if (!(have > 0.0 && need > have)) return 0;
+    const int fluid_big = per_p * np >= per_c * cells;
+    return pl_scene_fail(scene, err, fluid_big ? OFF(fluid.density) : OFF(box.cells),
+                         fluid_big ? "fluid.density" : "box.cells",
+                         "the run needs about %.3g GB: %.3g fluid particles (box.cells x fluid.density) x %.0f B "
+                         "+ %.3g cells x %.0f B (at %d thread(s)) + %lld colloids x 600 B; this machine has %.3g GB "
+                         "(physical memory); allowed: a smaller box, density or thread count",
+                         need / 1e9, np, per_p, cells, per_c, nthreads, scene->colloids.count, have / 1e9);
+}
 
 int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
 {
@@ -41,18 +79,7 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
     if (np > 4.0e9)
         return pl_scene_fail(scene, err, OFF(fluid.density), "fluid.density",
                              "%.3g fluid particles (density x cells); allowed: < 4e9", np);
-    /* memory: ~101 B per fluid particle (state, sort twin, cell index),
-     * ~24 B per cell (cell arrays), ~600 B per colloid (state, scratch,
-     * neighbour list); refused beyond the machine's physical memory */
-    double need = 101.0 * np + 24.0 * ncells + 600.0 * (double)scene->colloids.count;
-    long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
-    double have = pages > 0 && psize > 0 ? (double)pages * (double)psize : 0.0;
-    if (have > 0.0 && need > have)
-        return pl_scene_fail(scene, err, np > 0.0 ? OFF(fluid.density) : OFF(box.cells),
-                             np > 0.0 ? "fluid.density" : "box.cells",
-                             "the run needs about %.3g GB (%.3g fluid particles, %.3g cells, %lld "
-                             "colloids); this machine has %.3g GB; allowed: a smaller box or density",
-                             need / 1e9, np, ncells, scene->colloids.count, have / 1e9);
+    if (pl_scene_memory_check(scene, 1, err)) return PL_ERR_INPUT; /* at 1 thread: the least a run needs */
     if (scene->fluid.density > 0 && np < 2.0)
         return pl_scene_fail(scene, err, OFF(fluid.density), "fluid.density",
                              "%.3g fluid particles in the box; allowed: at least 2", np);
