@@ -230,15 +230,18 @@ int pl_mapping_report_strict(const struct pl_scene *scene, int strict, pl_err_t 
 {
     const pl_scene_mapping_t *mp = &scene->mapping;
     if (mp->enabled && (strict || mp->cg.strict)) {
-        for (int i = 0; i < mp->map.nwarn; ++i) {
-            const pl_mapping_warning_t *w = &mp->map.warn[i];
-            if (w->severity != PL_SEV_WARNING) continue;
-            if (w->key[0]) /* an input: its file, line and key */
-                return pl_scene_fail(scene, err, w->key_off, w->key, "strict mapping audit: %s: %s", w->name,
-                                     w->text);
-            return pl_err_set(err, PL_ERR_INPUT, "%s: strict mapping audit: %s: %s", scene->path, w->name,
-                              w->text);
-        }
+        /* an implausible input first (its file, line and key): it is most
+         * likely the cause of the other warnings */
+        for (int pass = 0; pass < 2; ++pass)
+            for (int i = 0; i < mp->map.nwarn; ++i) {
+                const pl_mapping_warning_t *w = &mp->map.warn[i];
+                if (w->severity != PL_SEV_WARNING || (pass == 0) != (w->key[0] != '\0')) continue;
+                if (pass == 0)
+                    return pl_scene_fail(scene, err, w->key_off, w->key, "strict mapping audit: %s: %s", w->name,
+                                         w->text);
+                return pl_err_set(err, PL_ERR_INPUT, "%s: strict mapping audit: %s: %s", scene->path, w->name,
+                                  w->text);
+            }
     }
     return 0;
 }
