@@ -8,7 +8,10 @@ OUTDIR (default out/quickstart) holds colloids.h5 (H5MD trajectory, needs
 colloids.trajectory_interval > 0) and summary.json.  Writes OUTDIR/sediment.png
 and prints the measured initial settling speed next to
 
-  Stokes (Hecht Eq. 16):  v_S  = M g / (6 pi eta R), eta = gamma nu (PL Eqs. 9-15)
+  Stokes (Hecht Eq. 16):  v_S  = M g / xi, the friction the mapping matched:
+                           xi = kT / D with the colloid D of summary.json's
+                           mapping.colloid_diffusion (calibrated for couplings
+                           I and II), else 6 pi eta R, eta = gamma nu (PL Eqs. 9-15)
   coupling II (one cell):  v_II = M g / xi_II, xi_II = 2/3 (1 - cos alpha) mu / dt,
                            mu = M gamma / (M + gamma) (src/coupling/coupling.c)
 
@@ -49,8 +52,12 @@ def predictions(summ, mass, rad):
     mu = M * gamma / (M + gamma)
     xi2 = 2.0 / 3.0 * (1.0 - cos_a) * mu / dt
     xis = 6.0 * math.pi * eta * R
+    cd = (summ.get("mapping") or {}).get("colloid_diffusion")
+    if cd:  # the mapping's friction kT / D (kT = 1): the real Stokes velocity, as mapped
+        xis = 1.0 / cd["d_a0_2_t0"]
     return {"M": M, "R": R, "g": g, "xi_stokes": xis, "xi_II": xi2,
-            "v_stokes": M * g / xis, "v_II": M * g / xi2}
+            "v_stokes": M * g / xis, "v_II": M * g / xi2,
+            "stokes_label": "Stokes (mapped, xi = kT/D)" if cd else "Stokes, xi = 6 pi eta R"}
 
 
 def measure(t, zcm):
@@ -84,8 +91,8 @@ def main():
           % (a.outdir, z.shape[1], pr["R"], pr["M"], pr["g"]))
     print("  measured initial settling speed  %.4g +- %.2g %s  (%.4g a0/t0, fit to t = %.4g %s)"
           % (v * vs, se * vs, vu, v, t_fit * ts, tu))
-    print("  Stokes, xi = 6 pi eta R = %-7.4g  %.4g %s  (measured / Stokes = %.2f)"
-          % (pr["xi_stokes"], pr["v_stokes"] * vs, vu, v / pr["v_stokes"]))
+    print("  %s = %-7.4g  %.4g %s  (measured / Stokes = %.2f)"
+          % (pr["stokes_label"], pr["xi_stokes"], pr["v_stokes"] * vs, vu, v / pr["v_stokes"]))
     print("  coupling II, xi_II = %-12.4g  %.4g %s  (measured / v_II = %.2f)"
           % (pr["xi_II"], pr["v_II"] * vs, vu, v / pr["v_II"]))
 
@@ -110,7 +117,7 @@ def main():
 
     ax2.plot(t * ts, zcm * ls, "k.", ms=3, label="centre of mass (run)")
     tt = np.linspace(0.0, t[-1], 200)
-    for key, style, lab in (("v_stokes", "C0--", "Stokes v = M g / 6 pi eta R"),
+    for key, style, lab in (("v_stokes", "C0--", "Stokes v = M g / xi (%s)" % pr["stokes_label"]),
                             ("v_II", "C1:", "coupling II v = M g / xi_II")):
         zz = zcm[0] - pr[key] * tt
         keep = zz >= zcm.min() - 0.05 * (zcm[0] - zcm.min())
