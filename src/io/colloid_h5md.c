@@ -311,6 +311,22 @@ static int cut_series(hid_t val, hid_t step, hid_t time, hsize_t nf)
     return H5Dset_extent(val, dims) < 0 || H5Dset_extent(step, &nf) < 0 || H5Dset_extent(time, &nf) < 0 ? -1 : 0;
 }
 
+/* /observables/dt of a continued trajectory, cut to its nf kept frames;
+ * -1 when the file has none (written before it existed: another layout). */
+static int dt_resume(pl_colloid_traj_t *t, hsize_t nf)
+{
+    if (H5Lexists(t->file, "observables", H5P_DEFAULT) <= 0 ||
+        H5Lexists(t->file, "observables/dt", H5P_DEFAULT) <= 0)
+        return -1;
+    hid_t g = H5Gopen2(t->file, "observables/dt", H5P_DEFAULT);
+    t->dt_val = g >= 0 ? H5Dopen2(g, "value", H5P_DEFAULT) : -1;
+    t->dt_step = g >= 0 ? H5Dopen2(g, "step", H5P_DEFAULT) : -1;
+    t->dt_time = g >= 0 ? H5Dopen2(g, "time", H5P_DEFAULT) : -1;
+    int bad = t->dt_val < 0 || t->dt_step < 0 || t->dt_time < 0 || cut_series(t->dt_val, t->dt_step, t->dt_time, nf);
+    if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+    return bad ? -1 : 0;
+}
+
 /* Continues the trajectory in t->tmp (opened in t->file): keeps the frames
  * of steps < keep, opens the datasets to append to; -1 when the file is not
  * one of this run's colloids. */
@@ -349,6 +365,7 @@ static int traj_resume(pl_colloid_traj_t *t, long long keep)
         t->cid_frames = bad ? 0 : (hsize_t)nc;
         if (cg >= 0 && H5Gclose(cg) < 0) bad = 1;
     }
+    if (!bad) bad = dt_resume(t, (hsize_t)nf);
     if (box >= 0 && H5Gclose(box) < 0) bad = 1;
     if (col >= 0 && H5Gclose(col) < 0) bad = 1;
     return bad || H5Fflush(t->file, H5F_SCOPE_GLOBAL) < 0 ? -1 : 0;
