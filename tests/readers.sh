@@ -265,6 +265,77 @@ for k, a in enumerate(fr):
     assert all(0 <= i <= j and cid[k][i] == i for j, i in enumerate(cid[k]))  # canonical: the smallest member
 PYEOF
 
+# SI beside the model units (src/io/observables_si.c): the shortened quickstart
+# (g(r), MSD, clusters, sedimentation) and a physical fluid with the stress
+# observer; every /observables dataset in a model unit has a twin X_si in an
+# SI unit with X_si = X * to_si, to_si following from a0, t0, m_f of
+# /parameters (= summary.json units_si); every summary entry with a unit has
+# unit_si and value_si/stderr_si; a model scene keeps its model units only.
+sed -e 's/^steps = 1000;/steps = 40;/' "$ROOT/scenes/pl_colloid_1um.cfg" > pls.cfg
+echo 'observe: { stress_interval = 5; };' >> pls.cfg
+"$PELOID" run pls.cfg --out pls --threads 2 2> pls.log || bad "physical stress run: $(tail -1 pls.log)"
+cat > ms.cfg <<'CFG'
+name = "model_stress";
+seed = 3;
+steps = 40;
+box: { cells = [8, 8, 8]; };
+observe: { stress_interval = 5; };
+CFG
+"$PELOID" run ms.cfg --out ms --threads 2 2> ms.log || bad "model stress run: $(tail -1 ms.log)"
+$PY - <<'PYEOF' && ok "observables.h5 + summary.json of physical scenes: SI twins (m, s, m^2, m/s, Pa, Pa s) = model x factor from a0, t0, m_f; model scene unchanged" || bad "SI observables"
+import h5py, json, math
+SI = {"m", "1/m", "m^2", "1/m^3", "s", "1/s", "m/s", "m^2/s", "m^2/s^2", "Pa", "Pa s", "kg/s", "N^2", "J", "kg"}
+DIMLESS = {"1", "R", "1/R", "um"}
+def s(x): return x.decode() if isinstance(x, bytes) else x
+def factor(unit, a0, t0, mf):
+    return eval(unit.replace("^", "**").replace(" ", "*"), {"a0": a0, "t0": t0, "m_f": mf, "kT": mf * a0**2 / t0**2})
+seen = set()
+for d in ("q", "pls"):
+    js = json.load(open(d + "/summary.json"))
+    u = js["units_si"]
+    with h5py.File(d + "/observables.h5") as f:
+        p = f["parameters"].attrs
+        a0, t0, mf = p["a0_m"], p["t0_s"], p["m_f_kg"]
+        assert math.isclose(a0, u["a0_m"], rel_tol=1e-12) and math.isclose(t0, u["t0_s"], rel_tol=1e-12)
+        assert math.isclose(p["kT_J"], mf * a0**2 / t0**2, rel_tol=1e-12)
+        ds = {}
+        f["observables"].visititems(lambda n, o: ds.__setitem__(n, o) if isinstance(o, h5py.Dataset) else None)
+        n = 0
+        for name, o in ds.items():
+            if name.endswith("_si") or "unit" not in o.attrs: continue
+            unit = s(o.attrs["unit"])
+            if unit in DIMLESS: continue
+            t = ds.get(name + "_si")
+            assert t is not None, f"{d}: {name} [{unit}] has no SI twin"
+            assert s(t.attrs["unit"]) in SI and s(t.attrs["model_unit"]) == unit, (name, t.attrs["unit"])
+            fac = factor(unit, a0, t0, mf)
+            assert math.isclose(t.attrs["to_si"], fac, rel_tol=1e-12), (name, t.attrs["to_si"], fac)
+            x, y = o[()], t[()]
+            assert y.shape == x.shape and (abs(y - x * fac) <= 1e-12 * abs(x * fac)).all(), name
+            seen.add(s(t.attrs["unit"])); n += 1
+        assert n >= 4, (d, n)
+    def walk(e):
+        if isinstance(e, list):
+            for v in e: walk(v)
+        if not isinstance(e, dict): return
+        if "unit" in e and "value" in e:
+            fac = 1.0 if e["unit"] in DIMLESS else factor(e["unit"], a0, t0, mf)
+            assert e["unit_si"] in SI | {"1"}, e["unit"]
+            for k in ("value", "stderr"):
+                assert math.isclose(e[k + "_si"], e[k] * fac, rel_tol=1e-12, abs_tol=1e-300), (k, e)
+        for v in e.values(): walk(v)
+    walk(js["observables"])
+assert {"s", "m", "m^2", "m/s", "Pa", "Pa s"} <= seen, seen
+assert json.load(open("q/summary.json"))["observables"]["settling_velocity"]["unit_si"] == "m/s"
+with h5py.File("ms/observables.h5") as f:
+    assert "parameters" not in f
+    names = []
+    f["observables"].visit(names.append)
+    assert names and not [n for n in names if n.endswith("_si")], names
+    assert s(f["observables/fluid_stress/value"].attrs["unit"]) == "kT/a0^3"
+assert "unit_si" not in json.dumps(json.load(open("ms/summary.json"))["observables"])
+PYEOF
+
 # progress without a terminal (stderr is a file here)
 n=$(grep -c "^peloid: step [0-9]*/100 .*t = .* t0 (.* s)  ETA .*Mupdates/s .*MD steps/s" q.log)
 grep -q "^peloid: done: steps 0..100 in .*Mupdates/s, .*MD steps/s; simulated time 25 t0 = " q.log && \
