@@ -335,6 +335,12 @@ with h5py.File("ms/observables.h5") as f:
     assert s(f["observables/fluid_stress/value"].attrs["unit"]) == "kT/a0^3"
 assert "unit_si" not in json.dumps(json.load(open("ms/summary.json"))["observables"])
 PYEOF
+"$PELOID" report q > /dev/null && "$PELOID" report pls > /dev/null && "$PELOID" report ms > /dev/null && \
+  grep -q "^| settling_velocity | .* a0/t0 = .* m/s |" q/report.md && grep -q "^| colloid_D | .* a0^2/t0 = .* m^2/s |" q/report.md && \
+  grep -q "^eta = .* Pa s " pls/report.md && grep -q "^pressure .* Pa " pls/report.md && \
+  grep -q "^eta = .* m_f/(a0 t0) " ms/report.md && ! grep -q "Pa" ms/report.md \
+  && ok "peloid report: a physical scene's values in SI beside the model ones (plots in um, s, um/s, K, Pa), a model scene's in model units" \
+  || bad "report in SI: $(grep -h "settling\|colloid_D\|^eta\|^pressure" q/report.md pls/report.md ms/report.md)"
 
 # progress without a terminal (stderr is a file here)
 n=$(grep -c "^peloid: step [0-9]*/100 .*t = .* t0 (.* s)  ETA .*Mupdates/s .*MD steps/s" q.log)
