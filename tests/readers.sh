@@ -191,9 +191,16 @@ r = np.sqrt((d * d).sum(-1))[np.triu_indices(400, 1)]
 assert (1.0 - r.min()) / 1.0 <= 0.1, r.min()  # within colloids.max_overlap
 PYEOF
 
-$PY - <<'PYEOF' && ok "fields.h5: H5MD time series value[t][z][y][x], step/time arrays, grid origin and spacing" || bad "fields.h5 layout"
+$PY - <<'PYEOF' && ok "fields.h5: H5MD time series value[t][z][y][x], step/time arrays, grid origin and spacing; value_si (um-3, um s-1), time_si (s), grid in um" || bad "fields.h5 layout"
 import h5py, numpy as np
 with h5py.File("q/fields.h5") as f:
+    a0, t0 = f["observables"].attrs["a0_m"], f["observables"].attrs["t0_s"]
+    for name, unit, fac in (("fluid_density", "um-3", (a0 * 1e6) ** -3), ("fluid_velocity", "um s-1", a0 * 1e6 / t0)):
+        g = f["observables/" + name]
+        assert g["value_si"].attrs["unit"] == unit and g["time_si"].attrs["unit"] == "s"
+        assert np.allclose(g["value_si"][()], g["value"][()] * fac, rtol=1e-12, atol=0)
+        assert abs(g["time_si"][0] - g["time"][0] * t0) <= 1e-12 * g["time_si"][0]
+        assert np.allclose(g.attrs["spacing_si"], [a0 * 1e6] * 3, rtol=1e-12) and list(g.attrs["origin_si"]) == [0, 0, 0]
     assert tuple(f["h5md"].attrs["version"]) == (1, 1)
     for name, shape in (("fluid_density", (1, 24, 12, 12)), ("fluid_velocity", (1, 24, 12, 12, 3))):
         g = f["observables/" + name]
@@ -214,18 +221,20 @@ r.UpdatePipeline()
 d = servermanager.Fetch(r)
 b = d.GetBlock(0) if d.IsA("vtkMultiBlockDataSet") else d
 assert b.GetClassName() == "vtkImageData", b.GetClassName()
-assert b.GetDimensions() == (13, 13, 25) and b.GetSpacing() == (1.0, 1.0, 1.0), (b.GetDimensions(), b.GetSpacing())
+h = float(sys.argv[2])  # a physical scene: the grid in um
+assert b.GetDimensions() == (13, 13, 25) and np.allclose(b.GetSpacing(), (h, h, h), rtol=1e-12), (b.GetDimensions(), b.GetSpacing())
 cd = b.GetCellData()
 np.save("pv_rho.npy", vtk_to_numpy(cd.GetArray("fluid_density")))
 np.save("pv_vel.npy", vtk_to_numpy(cd.GetArray("fluid_velocity")))
 print("    ParaView:", b.GetClassName(), b.GetDimensions(), "times", list(r.TimestepValues))
 PYEOF
-  timeout 300 pvpython --force-offscreen-rendering pv.py q/fields.xdmf > pv.log 2>&1
-  $PY - <<'PYEOF' && ok "ParaView (pvpython XDMFReader) opens fields.xdmf: image data, cell values = h5py's exactly" || bad "ParaView on fields.xdmf: $(tail -3 pv.log)"
+  h=$($PY -c 'import h5py; print(repr(h5py.File("q/fields.h5")["observables/fluid_density"].attrs["spacing_si"][0]))')
+  timeout 300 pvpython --force-offscreen-rendering pv.py q/fields.xdmf "$h" > pv.log 2>&1
+  $PY - <<'PYEOF' && ok "ParaView (pvpython XDMFReader) opens fields.xdmf of a physical scene: image data in um, cell values = h5py's value_si (um-3, um/s) exactly" || bad "ParaView on fields.xdmf: $(tail -3 pv.log)"
 import h5py, numpy as np
 with h5py.File("q/fields.h5") as f:
-    R = f["observables/fluid_density/value"][0]
-    V = f["observables/fluid_velocity/value"][0]
+    R = f["observables/fluid_density/value_si"][0]
+    V = f["observables/fluid_velocity/value_si"][0]
 assert np.array_equal(np.load("pv_rho.npy"), R.ravel())
 assert np.array_equal(np.load("pv_vel.npy"), V.reshape(-1, 3))
 PYEOF
