@@ -292,7 +292,7 @@ observe: { stress_interval = 5; };
 CFG
 "$PELOID" run ms.cfg --out ms --threads 2 2> ms.log || bad "model stress run: $(tail -1 ms.log)"
 $PY - <<'PYEOF' && ok "observables.h5 + summary.json of physical scenes: SI twins (m, s, m^2, m/s, Pa, Pa s) = model x factor from a0, t0, m_f; model scene unchanged" || bad "SI observables"
-import h5py, json, math
+import h5py, json, math, numpy as np
 SI = {"m", "1/m", "m^2", "1/m^3", "s", "1/s", "m/s", "m^2/s", "m^2/s^2", "Pa", "Pa s", "kg/s", "N^2", "J", "kg"}
 DIMLESS = {"1", "R", "1/R", "um"}
 def s(x): return x.decode() if isinstance(x, bytes) else x
@@ -332,10 +332,15 @@ for d in ("q", "pls"):
             assert e["unit_si"] in SI | {"1"}, e["unit"]
             for k in ("value", "stderr"):
                 assert math.isclose(e[k + "_si"], e[k] * fac, rel_tol=1e-12, abs_tol=1e-300), (k, e)
+        for k, v in e.items():  # times in t0 and lengths in a0 beside in s and m
+            for mu, su, fac in (("_t0", "_s", t0), ("_a0", "_m", a0)):
+                if k.endswith(mu) and isinstance(v, (float, list)):
+                    assert np.allclose(e[k[:-3] + su], np.array(v) * fac, rtol=1e-12, atol=0), k
         for v in e.values(): walk(v)
     walk(js["observables"])
 assert {"s", "m", "m^2", "m/s", "Pa", "Pa s"} <= seen, seen
-assert json.load(open("q/summary.json"))["observables"]["settling_velocity"]["unit_si"] == "m/s"
+q = json.load(open("q/summary.json"))["observables"]
+assert q["settling_velocity"]["unit_si"] == "m/s" and len(q["colloid_D"]["fit_window_s"]) == 2
 with h5py.File("ms/observables.h5") as f:
     assert "parameters" not in f
     names = []

@@ -189,6 +189,41 @@ static void convert(pl_json_t *b, json_t *e, double f)
     }
 }
 
+/* A number or array of numbers under key `stem`_t0 (`stem`_a0) gets its
+ * twin `stem`_s (`stem`_m), e.g. fit_window_t0, integrated_to_t0. */
+static void suffixed(pl_json_t *b, json_t *e, const pl_mapping_t *m)
+{
+    static const struct {
+        const char *model, *si;
+    } sfx[] = {{"_t0", "_s"}, {"_a0", "_m"}};
+    const char *key;
+    json_t *v;
+    json_t *add = json_object(); /* collected first: e is not changed while iterated */
+    if (!add) {
+        pl_json_set(b, e, "_si", NULL); /* reports out of memory */
+        return;
+    }
+    json_object_foreach(e, key, v) for (size_t k = 0; k < 2; ++k) {
+        size_t n = strlen(key);
+        if (n < 4 || strcmp(key + n - 3, sfx[k].model)) continue;
+        const double f = k ? m->a0 : m->t0;
+        char out[128];
+        snprintf(out, sizeof out, "%.*s%s", (int)(n - 3), key, sfx[k].si);
+        if (json_object_get(e, out)) continue;
+        if (json_is_number(v)) {
+            pl_json_real(b, add, out, json_number_value(v) * f);
+        } else if (json_is_array(v)) {
+            json_t *a = json_array();
+            size_t i;
+            json_t *x;
+            json_array_foreach(v, i, x) json_array_append_new(a, json_real(json_number_value(x) * f));
+            pl_json_set(b, add, out, a);
+        }
+    }
+    if (json_object_update(e, add)) pl_json_set(b, e, "_si", NULL);
+    json_decref(add);
+}
+
 void pl_obs_si_json(pl_json_t *b, json_t *all, const pl_mapping_t *m)
 {
     if (json_is_array(all)) {
@@ -209,6 +244,7 @@ void pl_obs_si_json(pl_json_t *b, json_t *all, const pl_mapping_t *m)
         if (strcmp(si, "1")) /* a dimensionless series is its own SI one */
             json_array_foreach(json_object_get(all, "se_vs_time"), i, p) convert(b, p, f);
     }
+    suffixed(b, all, m);
     const char *key;
     json_t *v;
     json_object_foreach(all, key, v) if (strcmp(key, "se_vs_time")) pl_obs_si_json(b, v, m);
