@@ -105,7 +105,8 @@ def plot_rdf(f, summary, u, outdir, lines):
 
 def plot_rdf_classes(f, u, outdir, lines):
     g = f["observables/colloid_rdf_classes"]
-    r, v, se, pairs, crad = u("len", g["r"][:]), g["value"][0], g["value_se"][0], g["pairs"][:], u("len", g["class_radius"][:])
+    r, v, se, pairs = u("len", g["r"][:]), g["value"][0], g["value_se"][0], g["pairs"][:]
+    crad = u("len", g["class_radius"][:])
     fig, ax = plt.subplots(figsize=(6, 4))
     for p, (a, b) in enumerate(pairs):
         ax.errorbar(r, v[p], yerr=se[p], fmt=".-", ms=2, lw=0.7, elinewidth=0.5, capsize=0,
