@@ -191,9 +191,16 @@ r = np.sqrt((d * d).sum(-1))[np.triu_indices(400, 1)]
 assert (1.0 - r.min()) / 1.0 <= 0.1, r.min()  # within colloids.max_overlap
 PYEOF
 
-$PY - <<'PYEOF' && ok "fields.h5: H5MD time series value[t][z][y][x], step/time arrays, grid origin and spacing" || bad "fields.h5 layout"
+$PY - <<'PYEOF' && ok "fields.h5: H5MD time series value[t][z][y][x], step/time arrays, grid origin and spacing; value_si (um-3, um s-1), time_si (s), grid in um" || bad "fields.h5 layout"
 import h5py, numpy as np
 with h5py.File("q/fields.h5") as f:
+    a0, t0 = f["observables"].attrs["a0_m"], f["observables"].attrs["t0_s"]
+    for name, unit, fac in (("fluid_density", "um-3", (a0 * 1e6) ** -3), ("fluid_velocity", "um s-1", a0 * 1e6 / t0)):
+        g = f["observables/" + name]
+        assert g["value_si"].attrs["unit"] == unit and g["time_si"].attrs["unit"] == "s"
+        assert np.allclose(g["value_si"][()], g["value"][()] * fac, rtol=1e-12, atol=0)
+        assert abs(g["time_si"][0] - g["time"][0] * t0) <= 1e-12 * g["time_si"][0]
+        assert np.allclose(g.attrs["spacing_si"], [a0 * 1e6] * 3, rtol=1e-12) and list(g.attrs["origin_si"]) == [0, 0, 0]
     assert tuple(f["h5md"].attrs["version"]) == (1, 1)
     for name, shape in (("fluid_density", (1, 24, 12, 12)), ("fluid_velocity", (1, 24, 12, 12, 3))):
         g = f["observables/" + name]
@@ -214,18 +221,20 @@ r.UpdatePipeline()
 d = servermanager.Fetch(r)
 b = d.GetBlock(0) if d.IsA("vtkMultiBlockDataSet") else d
 assert b.GetClassName() == "vtkImageData", b.GetClassName()
-assert b.GetDimensions() == (13, 13, 25) and b.GetSpacing() == (1.0, 1.0, 1.0), (b.GetDimensions(), b.GetSpacing())
+h = float(sys.argv[2])  # a physical scene: the grid in um
+assert b.GetDimensions() == (13, 13, 25) and np.allclose(b.GetSpacing(), (h, h, h), rtol=1e-12), (b.GetDimensions(), b.GetSpacing())
 cd = b.GetCellData()
 np.save("pv_rho.npy", vtk_to_numpy(cd.GetArray("fluid_density")))
 np.save("pv_vel.npy", vtk_to_numpy(cd.GetArray("fluid_velocity")))
 print("    ParaView:", b.GetClassName(), b.GetDimensions(), "times", list(r.TimestepValues))
 PYEOF
-  timeout 300 pvpython --force-offscreen-rendering pv.py q/fields.xdmf > pv.log 2>&1
-  $PY - <<'PYEOF' && ok "ParaView (pvpython XDMFReader) opens fields.xdmf: image data, cell values = h5py's exactly" || bad "ParaView on fields.xdmf: $(tail -3 pv.log)"
+  h=$($PY -c 'import h5py; print(repr(h5py.File("q/fields.h5")["observables/fluid_density"].attrs["spacing_si"][0]))')
+  timeout 300 pvpython --force-offscreen-rendering pv.py q/fields.xdmf "$h" > pv.log 2>&1
+  $PY - <<'PYEOF' && ok "ParaView (pvpython XDMFReader) opens fields.xdmf of a physical scene: image data in um, cell values = h5py's value_si (um-3, um/s) exactly" || bad "ParaView on fields.xdmf: $(tail -3 pv.log)"
 import h5py, numpy as np
 with h5py.File("q/fields.h5") as f:
-    R = f["observables/fluid_density/value"][0]
-    V = f["observables/fluid_velocity/value"][0]
+    R = f["observables/fluid_density/value_si"][0]
+    V = f["observables/fluid_velocity/value_si"][0]
 assert np.array_equal(np.load("pv_rho.npy"), R.ravel())
 assert np.array_equal(np.load("pv_vel.npy"), V.reshape(-1, 3))
 PYEOF
@@ -264,6 +273,88 @@ for k, a in enumerate(fr):
     assert list(a.arrays["cluster_id"]) == list(cid[k])
     assert all(0 <= i <= j and cid[k][i] == i for j, i in enumerate(cid[k]))  # canonical: the smallest member
 PYEOF
+
+# SI beside the model units (src/io/observables_si.c): the shortened quickstart
+# (g(r), MSD, clusters, sedimentation) and a physical fluid with the stress
+# observer; every /observables dataset in a model unit has a twin X_si in an
+# SI unit with X_si = X * to_si, to_si following from a0, t0, m_f of
+# /parameters (= summary.json units_si); every summary entry with a unit has
+# unit_si and value_si/stderr_si; a model scene keeps its model units only.
+sed -e 's/^steps = 1000;/steps = 40;/' "$ROOT/scenes/pl_colloid_1um.cfg" > pls.cfg
+echo 'observe: { stress_interval = 5; };' >> pls.cfg
+"$PELOID" run pls.cfg --out pls --threads 2 2> pls.log || bad "physical stress run: $(tail -1 pls.log)"
+cat > ms.cfg <<'CFG'
+name = "model_stress";
+seed = 3;
+steps = 40;
+box: { cells = [8, 8, 8]; };
+observe: { stress_interval = 5; };
+CFG
+"$PELOID" run ms.cfg --out ms --threads 2 2> ms.log || bad "model stress run: $(tail -1 ms.log)"
+$PY - <<'PYEOF' && ok "observables.h5 + summary.json of physical scenes: SI twins (m, s, m^2, m/s, Pa, Pa s) = model x factor from a0, t0, m_f; model scene unchanged" || bad "SI observables"
+import h5py, json, math, numpy as np
+SI = {"m", "1/m", "m^2", "1/m^3", "s", "1/s", "m/s", "m^2/s", "m^2/s^2", "Pa", "Pa s", "kg/s", "N^2", "J", "kg"}
+DIMLESS = {"1", "R", "1/R", "um"}
+def s(x): return x.decode() if isinstance(x, bytes) else x
+def factor(unit, a0, t0, mf):
+    return eval(unit.replace("^", "**").replace(" ", "*"), {"a0": a0, "t0": t0, "m_f": mf, "kT": mf * a0**2 / t0**2})
+seen = set()
+for d in ("q", "pls"):
+    js = json.load(open(d + "/summary.json"))
+    u = js["units_si"]
+    with h5py.File(d + "/observables.h5") as f:
+        p = f["parameters"].attrs
+        a0, t0, mf = p["a0_m"], p["t0_s"], p["m_f_kg"]
+        assert math.isclose(a0, u["a0_m"], rel_tol=1e-12) and math.isclose(t0, u["t0_s"], rel_tol=1e-12)
+        assert math.isclose(p["kT_J"], mf * a0**2 / t0**2, rel_tol=1e-12)
+        ds = {}
+        f["observables"].visititems(lambda n, o: ds.__setitem__(n, o) if isinstance(o, h5py.Dataset) else None)
+        n = 0
+        for name, o in ds.items():
+            if name.endswith("_si") or "unit" not in o.attrs: continue
+            unit = s(o.attrs["unit"])
+            if unit in DIMLESS: continue
+            t = ds.get(name + "_si")
+            assert t is not None, f"{d}: {name} [{unit}] has no SI twin"
+            assert s(t.attrs["unit"]) in SI and s(t.attrs["model_unit"]) == unit, (name, t.attrs["unit"])
+            fac = factor(unit, a0, t0, mf)
+            assert math.isclose(t.attrs["to_si"], fac, rel_tol=1e-12), (name, t.attrs["to_si"], fac)
+            x, y = o[()], t[()]
+            assert y.shape == x.shape and (abs(y - x * fac) <= 1e-12 * abs(x * fac)).all(), name
+            seen.add(s(t.attrs["unit"])); n += 1
+        assert n >= 4, (d, n)
+    def walk(e):
+        if isinstance(e, list):
+            for v in e: walk(v)
+        if not isinstance(e, dict): return
+        if "unit" in e and "value" in e:
+            fac = 1.0 if e["unit"] in DIMLESS else factor(e["unit"], a0, t0, mf)
+            assert e["unit_si"] in SI | {"1"}, e["unit"]
+            for k in ("value", "stderr"):
+                assert math.isclose(e[k + "_si"], e[k] * fac, rel_tol=1e-12, abs_tol=1e-300), (k, e)
+        for k, v in e.items():  # times in t0 and lengths in a0 beside in s and m
+            for mu, su, fac in (("_t0", "_s", t0), ("_a0", "_m", a0)):
+                if k.endswith(mu) and isinstance(v, (float, list)):
+                    assert np.allclose(e[k[:-3] + su], np.array(v) * fac, rtol=1e-12, atol=0), k
+        for v in e.values(): walk(v)
+    walk(js["observables"])
+assert {"s", "m", "m^2", "m/s", "Pa", "Pa s"} <= seen, seen
+q = json.load(open("q/summary.json"))["observables"]
+assert q["settling_velocity"]["unit_si"] == "m/s" and len(q["colloid_D"]["fit_window_s"]) == 2
+with h5py.File("ms/observables.h5") as f:
+    assert "parameters" not in f
+    names = []
+    f["observables"].visit(names.append)
+    assert names and not [n for n in names if n.endswith("_si")], names
+    assert s(f["observables/fluid_stress/value"].attrs["unit"]) == "kT/a0^3"
+assert "unit_si" not in json.dumps(json.load(open("ms/summary.json"))["observables"])
+PYEOF
+"$PELOID" report q > /dev/null && "$PELOID" report pls > /dev/null && "$PELOID" report ms > /dev/null && \
+  grep -q "^| settling_velocity | .* a0/t0 = .* m/s |" q/report.md && grep -q "^| colloid_D | .* a0^2/t0 = .* m^2/s |" q/report.md && \
+  grep -q "^eta = .* Pa s " pls/report.md && grep -q "^pressure .* Pa " pls/report.md && \
+  grep -q "^eta = .* m_f/(a0 t0) " ms/report.md && ! grep -q "Pa" ms/report.md \
+  && ok "peloid report: a physical scene's values in SI beside the model ones (plots in um, s, um/s, K, Pa), a model scene's in model units" \
+  || bad "report in SI: $(grep -h "settling\|colloid_D\|^eta\|^pressure" q/report.md pls/report.md ms/report.md)"
 
 # progress without a terminal (stderr is a file here)
 n=$(grep -c "^peloid: step [0-9]*/100 .*t = .* t0 (.* s)  ETA .*Mupdates/s .*MD steps/s" q.log)

@@ -24,6 +24,12 @@ by the observers of the scene's observe{} section) and OUTDIR/thermo.tsv.
              Boltzmann, with the chi^2 p-value.
   thermo     the temperature (and, with colloids, the colloid kinetic
              energy and centre-of-mass height) over time.
+
+A physical scene (summary.json "units_si") is plotted in the real system's
+units: lengths in um, times in s, velocities in um/s, D in um^2/s, MSD in
+um^2, q in 1/um, viscosity in Pa s, pressure in Pa, friction in kg/s,
+temperature in K (DESIGN.md "Units and mapping"); a model scene in a0, t0,
+m_f, kT.  Energies stay in kT (the same number in both systems).
 """
 import json
 import math
@@ -38,6 +44,34 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 
+class Units:
+    """Factors and names that turn the model values of observables.h5 into
+    the units a plot shows: SI-scaled (um, s, ...) for a physical scene, the
+    model units (factor 1) otherwise."""
+
+    def __init__(self, summary):
+        u = summary.get("units_si")
+        self.physical = bool(u)
+        if not u:
+            self.f = {k: (1.0, n) for k, n in MODEL.items()}
+            return
+        a0, t0, mf, kT = u["a0_m"] * 1e6, u["t0_s"], u["m_f_kg"], u["kT_J"]
+        a0m = u["a0_m"]
+        self.f = {"len": (a0, "µm"), "time": (t0, "s"), "area": (a0 * a0, "µm²"), "vel": (a0 / t0, "µm/s"),
+                  "D": (a0 * a0 / t0, "µm²/s"), "invlen": (1 / a0, "1/µm"), "visc": (mf / (a0m * t0), "Pa s"),
+                  "press": (kT / a0m**3, "Pa"), "fric": (mf / t0, "kg/s")}
+
+    def __call__(self, kind, x):
+        return np.asarray(x) * self.f[kind][0] if not np.isscalar(x) else x * self.f[kind][0]
+
+    def name(self, kind):
+        return self.f[kind][1]
+
+
+MODEL = {"len": "a0", "time": "t0", "area": "a0²", "vel": "a0/t0", "D": "a0²/t0", "invlen": "1/a0",
+         "visc": "m_f/(a0 t0)", "press": "kT/a0^3", "fric": "m_f/t0"}
+
+
 def radius(summary):
     try:
         return float(summary["scene"]["colloids"]["radius"])
@@ -45,20 +79,21 @@ def radius(summary):
         return None
 
 
-def plot_rdf(f, summary, outdir, lines):
+def plot_rdf(f, summary, u, outdir, lines):
     g = f["observables/colloid_rdf"]
-    r, v, se = g["r"][:], g["value"][0], g["value_se"][0]
+    r, v, se = u("len", g["r"][:]), g["value"][0], g["value_se"][0]
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.errorbar(r, v, yerr=se, fmt=".-", ms=3, lw=0.8, elinewidth=0.6, capsize=0, label="g(r) +- SE")
     R = radius(summary)
     if R:
+        R = u("len", R)
         for d, name in ((2 * R, "2R"), (4 / 3 * math.sqrt(6) * R, "(4/3)√6 R"), (2 * math.sqrt(3) * R, "2√3 R"),
                         (4 * R, "4R")):
             if d < r[-1]:
                 ax.axvline(d, color="grey", ls=":", lw=0.8)
                 ax.text(d, ax.get_ylim()[1] * 0.95, name, rotation=90, va="top", ha="right", fontsize=7)
     ax.axhline(1.0, color="k", lw=0.5)
-    ax.set_xlabel("r [a0]")
+    ax.set_xlabel(f"r [{u.name('len')}]")
     ax.set_ylabel("g(r)")
     ax.set_title(f"colloid g(r), {int(g['samples'][()])} samples")
     ax.legend(fontsize=8)
@@ -68,17 +103,18 @@ def plot_rdf(f, summary, outdir, lines):
     lines += ["## Colloid g(r)", "", "![g(r)](rdf.png)", ""]
 
 
-def plot_rdf_classes(f, outdir, lines):
+def plot_rdf_classes(f, u, outdir, lines):
     g = f["observables/colloid_rdf_classes"]
-    r, v, se, pairs, crad = g["r"][:], g["value"][0], g["value_se"][0], g["pairs"][:], g["class_radius"][:]
+    r, v, se, pairs = u("len", g["r"][:]), g["value"][0], g["value_se"][0], g["pairs"][:]
+    crad = u("len", g["class_radius"][:])
     fig, ax = plt.subplots(figsize=(6, 4))
     for p, (a, b) in enumerate(pairs):
         ax.errorbar(r, v[p], yerr=se[p], fmt=".-", ms=2, lw=0.7, elinewidth=0.5, capsize=0,
                     label=f"g_{a}{b}: R {crad[a][0]:.3g}-{crad[a][1]:.3g} with {crad[b][0]:.3g}-{crad[b][1]:.3g}")
     ax.axhline(1.0, color="k", lw=0.5)
-    ax.set_xlabel("r [a0]")
+    ax.set_xlabel(f"r [{u.name('len')}]")
     ax.set_ylabel("g_ab(r)")
-    ax.set_title(f"g(r) per size class (radius rank), {int(g['samples'][()])} samples")
+    ax.set_title(f"g(r) per size class (radius rank, R in {u.name('len')}), {int(g['samples'][()])} samples")
     ax.legend(fontsize=6)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "rdf_classes.png"), dpi=120)
@@ -86,18 +122,19 @@ def plot_rdf_classes(f, outdir, lines):
     lines += ["## Colloid g(r) per size class", "", "![g_ab(r)](rdf_classes.png)", ""]
 
 
-def plot_sq(f, obs, outdir, lines):
+def plot_sq(f, obs, u, outdir, lines):
     g = f["observables/colloid_sq"]
-    q, v, se, nv = g["q_mean"][:], g["value"][0], g["value_se"][0], g["vectors"][:]
+    q, v, se, nv = u("invlen", g["q_mean"][:]), g["value"][0], g["value_se"][0], g["vectors"][:]
     m = nv > 0
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.errorbar(q[m], v[m], yerr=se[m], fmt=".-", ms=3, lw=0.8, elinewidth=0.6, capsize=0, label="S(q) +- SE")
     ax.axhline(1.0, color="k", lw=0.5)
-    ax.set_xlabel("|q| [1/a0]")
+    ax.set_xlabel(f"|q| [{u.name('invlen')}]")
     ax.set_ylabel("S(q)")
     e = obs.get("sq_peak")
     ax.set_title(f"colloid S(q), {int(g['samples'][()])} samples"
-                 + (f"; peak {e['value']:.3g} ± {e['stderr']:.2g} at q = {e['q']:.3g}/a0" if e else ""), fontsize=9)
+                 + (f"; peak {e['value']:.3g} ± {e['stderr']:.2g} at q = {u('invlen', e['q']):.3g} {u.name('invlen')}"
+                    if e else ""), fontsize=9)
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "sq.png"), dpi=120)
@@ -105,20 +142,21 @@ def plot_sq(f, obs, outdir, lines):
     lines += ["## Colloid S(q)", "", "![S(q)](sq.png)", ""]
 
 
-def plot_cff(f, obs, outdir, lines):
+def plot_cff(f, obs, u, outdir, lines):
     g = f["observables/colloid_cff"]
-    lag, v, se = g["lag"][:], g["value"][:, 3], g["value_se"][:, 3]
+    lag, v, se = u("time", g["lag"][:]), g["value"][:, 3], g["value_se"][:, 3]
     e = obs.get("colloid_friction_green_kubo")
-    tmax = 20 * e["integrated_to_t0"] if e else lag[-1]
+    tmax = 20 * u("time", e["integrated_to_t0"]) if e else lag[-1]
     m = lag <= tmax
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.errorbar(lag[m], v[m] / v[0], yerr=se[m] / v[0], fmt=".-", ms=3, lw=0.8, elinewidth=0.6, capsize=0,
                 label="C_FF(t) / C_FF(0) +- SE")
     ax.axhline(0.0, color="k", lw=0.5)
     if e:
-        ax.axvline(e["integrated_to_t0"], color="r", ls=":", lw=0.8,
-                   label=f"ξ = {e['value']:.4g} ± {e['stderr']:.2g} m_f/t0 (integral to here)")
-    ax.set_xlabel("lag [t0]")
+        ax.axvline(u("time", e["integrated_to_t0"]), color="r", ls=":", lw=0.8,
+                   label=f"ξ = {u('fric', e['value']):.4g} ± {u('fric', e['stderr']):.2g} {u.name('fric')} "
+                         "(integral to here)")
+    ax.set_xlabel(f"lag [{u.name('time')}]")
     ax.set_ylabel("C_FF(t) / C_FF(0)")
     ax.set_title("fluid-force autocorrelation (step-mean force)", fontsize=9)
     ax.legend(fontsize=8)
@@ -128,7 +166,7 @@ def plot_cff(f, obs, outdir, lines):
     lines += ["## Fluid-force autocorrelation C_FF", "", "![C_FF](cff.png)", ""]
 
 
-def plot_bonds(f, obs, outdir, lines):
+def plot_bonds(f, obs, u, outdir, lines):
     fig, ax = plt.subplots(figsize=(6, 3.5))
     for name, col in (("cluster_bonds_primary", "C0"), ("cluster_bonds_secondary", "C1")):
         g = f["observables/" + name]
@@ -136,13 +174,13 @@ def plot_bonds(f, obs, outdir, lines):
         lab = name.replace("cluster_bonds_", "") + " minimum"
         if e:
             lab += f": mean {e['value']:.4g} ± {e['stderr']:.2g}"
-        ax.plot(g["time"][:], g["value"][:], lw=0.8, color=col, label=lab)
+        ax.plot(u("time", g["time"][:]), g["value"][:], lw=0.8, color=col, label=lab)
         if e:
             ax.axhspan(e["value"] - e["stderr"], e["value"] + e["stderr"], color=col, alpha=0.15)
     fr = obs.get("cluster_primary_fraction")
     ax.set_title("energy bonds" + (f"; primary fraction {fr['value']:.3g} ± {fr['stderr']:.2g}" if fr else ""),
                  fontsize=9)
-    ax.set_xlabel("time [t0]")
+    ax.set_xlabel(f"time [{u.name('time')}]")
     ax.set_ylabel("bonds")
     ax.legend(fontsize=7)
     fig.tight_layout()
@@ -151,22 +189,22 @@ def plot_bonds(f, obs, outdir, lines):
     lines += ["## Bonds by pair energy", "", "![bonds](bonds.png)", ""]
 
 
-def plot_msd(f, obs, outdir, lines):
+def plot_msd(f, obs, u, outdir, lines):
     g = f["observables/colloid_msd"]
-    lag, v, se = g["lag"][:], g["value"][:, 3], g["value_se"][:, 3]
+    lag, v, se = u("time", g["lag"][:]), u("area", g["value"][:, 3]), u("area", g["value_se"][:, 3])
     m = lag > 0
     fig, ax = plt.subplots(figsize=(6, 4))
     ax.errorbar(lag[m], v[m], yerr=se[m], fmt=".", ms=3, elinewidth=0.6, label="MSD (x+y+z) +- SE")
     d = obs.get("colloid_D")
     if d:
-        t = np.array(d["fit_window_t0"])
-        ax.plot(lag[m], 6 * d["value"] * lag[m], "r-", lw=0.8,
-                label=f"6 D t, D = {d['value']:.4g} ± {d['stderr']:.2g} a0²/t0")
+        t = u("time", np.array(d["fit_window_t0"]))
+        D, De = u("D", d["value"]), u("D", d["stderr"])
+        ax.plot(lag[m], 6 * D * lag[m], "r-", lw=0.8, label=f"6 D t, D = {D:.4g} ± {De:.2g} {u.name('D')}")
         ax.axvspan(t[0], t[1], color="r", alpha=0.08, label="fit window")
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel("lag [t0]")
-    ax.set_ylabel("MSD [a0²]")
+    ax.set_xlabel(f"lag [{u.name('time')}]")
+    ax.set_ylabel(f"MSD [{u.name('area')}]")
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "msd.png"), dpi=120)
@@ -174,11 +212,11 @@ def plot_msd(f, obs, outdir, lines):
     lines += ["## Colloid MSD and D", "", "![MSD](msd.png)", ""]
 
 
-def plot_clusters(f, obs, outdir, lines):
+def plot_clusters(f, obs, u, outdir, lines):
     fig, axs = plt.subplots(3, 1, figsize=(6, 6), sharex=True)
     for ax, name in zip(axs, ("cluster_number", "largest_cluster", "mean_cluster_size")):
         g = f["observables/" + name]
-        ax.plot(g["time"][:], g["value"][:], lw=0.8)
+        ax.plot(u("time", g["time"][:]), g["value"][:], lw=0.8)
         e = obs.get(name)
         if e:
             ax.axhline(e["value"], color="r", lw=0.6)
@@ -186,7 +224,7 @@ def plot_clusters(f, obs, outdir, lines):
                        label=f"mean {e['value']:.4g} ± {e['stderr']:.2g}" + ("" if e["plateau"] else " (no plateau)"))
             ax.legend(fontsize=7)
         ax.set_ylabel(name.replace("_", " "), fontsize=8)
-    axs[-1].set_xlabel("time [t0]")
+    axs[-1].set_xlabel(f"time [{u.name('time')}]")
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "clusters.png"), dpi=120)
     plt.close(fig)
@@ -220,24 +258,24 @@ def plot_vdist(f, obs, outdir, lines):
     lines += ["## Velocity distributions", "", "![velocity distributions](vdist.png)", ""]
 
 
-def plot_sediment(f, obs, outdir, lines):
+def plot_sediment(f, obs, u, outdir, lines):
     g = f["observables/colloid_phi_z"]
-    t, z, phi = g["time"][:], g["z"][:], g["value"][:]
+    t, z, phi = u("time", g["time"][:]), u("len", g["z"][:]), g["value"][:]
     fig, axs = plt.subplots(1, 2, figsize=(9, 3.8))
     im = axs[0].imshow(phi.T, origin="lower", aspect="auto", extent=[t[0], t[-1], 0, z[-1] + z[0]], cmap="viridis")
     fig.colorbar(im, ax=axs[0], label="phi")
-    axs[0].set_xlabel("time [t0]")
-    axs[0].set_ylabel("z [a0]")
+    axs[0].set_xlabel(f"time [{u.name('time')}]")
+    axs[0].set_ylabel(f"z [{u.name('len')}]")
     axs[0].set_title("colloid volume fraction phi(z, t)")
     h = f["observables/colloid_height"]
-    axs[1].plot(h["time"][:], h["value"][:], lw=0.8, label="mean height")
+    ht, hv = u("time", h["time"][:]), u("len", h["value"][:])
+    axs[1].plot(ht, hv, lw=0.8, label="mean height")
     e = obs.get("settling_velocity")
     if e:
-        t0, h0 = h["time"][0], h["value"][0]
-        axs[1].plot(t, h0 + e["value"] * (t - t0), "r--", lw=0.8,
-                    label=f"v = {e['value']:.4g} ± {e['stderr']:.2g} a0/t0")
-    axs[1].set_xlabel("time [t0]")
-    axs[1].set_ylabel("height [a0]")
+        vs, vse = u("vel", e["value"]), u("vel", e["stderr"])
+        axs[1].plot(t, hv[0] + vs * (t - ht[0]), "r--", lw=0.8, label=f"v = {vs:.4g} ± {vse:.2g} {u.name('vel')}")
+    axs[1].set_xlabel(f"time [{u.name('time')}]")
+    axs[1].set_ylabel(f"height [{u.name('len')}]")
     axs[1].legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "sediment_phi.png"), dpi=120)
@@ -245,44 +283,50 @@ def plot_sediment(f, obs, outdir, lines):
     lines += ["## Sedimentation", "", "![phi(z, t)](sediment_phi.png)", ""]
 
 
-def plot_viscosity(f, obs, outdir, lines):
+def plot_viscosity(f, obs, u, outdir, lines):
     g = f["observables/fluid_viscosity_gk"]
-    lag, eta = g["lag"][:], g["value"][:]
+    lag, eta = u("time", g["lag"][:]), u("visc", g["value"][:])
     e = obs.get("fluid_viscosity", {})
     fig, ax = plt.subplots(figsize=(5, 3.5))
     ax.plot(lag, eta, "o-", ms=3, label="running Green-Kubo sum")
     if e:
-        ax.axhspan(e["value"] - e["stderr"], e["value"] + e["stderr"], color="C0", alpha=0.2,
-                   label=f"eta = {e['value']:.4g} +- {e['stderr']:.2g}")
-        ax.axhline(e["theory"], color="k", ls="--", label=f"{e.get('theory_source', 'theory')}: {e['theory']:.4g}")
-    ax.set_xlabel("truncation lag [t0]")
-    ax.set_ylabel("eta [m_f/(a0 t0)]")
+        ev, es, et = u("visc", e["value"]), u("visc", e["stderr"]), u("visc", e["theory"])
+        ax.axhspan(ev - es, ev + es, color="C0", alpha=0.2, label=f"eta = {ev:.4g} +- {es:.2g}")
+        ax.axhline(et, color="k", ls="--", label=f"{e.get('theory_source', 'theory')}: {et:.4g}")
+    ax.set_xlabel(f"truncation lag [{u.name('time')}]")
+    ax.set_ylabel(f"eta [{u.name('visc')}]")
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "viscosity.png"), dpi=120)
     plt.close(fig)
     lines += ["## Fluid shear viscosity (Green-Kubo)", "", "![viscosity](viscosity.png)", ""]
     if e:
-        lines += [f"eta = {e['value']:.5g} +- {e['stderr']:.2g} m_f/(a0 t0) ({e.get('theory_source', 'theory')}: "
-                  f"{e['theory']:.5g}), over {e['samples']} steps", ""]
+        lines += [f"eta = {u('visc', e['value']):.5g} +- {u('visc', e['stderr']):.2g} {u.name('visc')} "
+                  f"({e.get('theory_source', 'theory')}: {u('visc', e['theory']):.5g}), over {e['samples']} steps", ""]
     p = obs.get("fluid_pressure")
     if p:
-        lines += [f"pressure {p['value']:.6g} +- {p['stderr']:.2g} kT/a0^3 (ideal gas {p['ideal_gas']:.6g})", ""]
+        lines += [f"pressure {u('press', p['value']):.6g} +- {u('press', p['stderr']):.2g} {u.name('press')} "
+                  f"(ideal gas {u('press', p['ideal_gas']):.6g})", ""]
 
 
-def plot_thermo(outdir, lines):
+def plot_thermo(outdir, u, lines):
     path = os.path.join(outdir, "thermo.tsv")
     if not os.path.exists(path):
         return
     data = np.genfromtxt(path, names=True, delimiter="\t")
     if data.size < 2:
         return
-    cols = [c for c in ("temperature", "c_kin_trans", "c_zcm") if c in data.dtype.names]
+    names = data.dtype.names
+    # a physical scene's thermo.tsv has time_s and temperature_K beside the model columns
+    si = u.physical and "time_s" in names and "temperature_K" in names
+    temp = ("temperature_K", "temperature [K]") if si else ("temperature", "temperature [kT]")
+    cols = [c for c in (temp, ("c_kin_trans", "c_kin_trans [kT]"), ("c_zcm", f"c_zcm [{u.name('len')}]"))
+            if c[0] in names]
     fig, axs = plt.subplots(len(cols), 1, figsize=(6, 1.8 * len(cols) + 0.6), sharex=True, squeeze=False)
-    for ax, c in zip(axs[:, 0], cols):
-        ax.plot(data["time"], data[c], lw=0.8)
-        ax.set_ylabel(c, fontsize=8)
-    axs[-1, 0].set_xlabel("time [t0]")
+    for ax, (c, label) in zip(axs[:, 0], cols):
+        ax.plot(data["time_s"] if si else data["time"], u("len", data[c]) if c == "c_zcm" else data[c], lw=0.8)
+        ax.set_ylabel(label, fontsize=8)
+    axs[-1, 0].set_xlabel("time [s]" if si else "time [t0]")
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "thermo.png"), dpi=120)
     plt.close(fig)
@@ -301,7 +345,10 @@ def error_table(obs, lines):
         need = v.get("wall_s_for_target")
         tgt = (f"{need:.3g} s for {100 * v['target_rel_error']:.3g} %"
                + ("" if v.get("extrapolation_reliable", True) else " (no plateau: a lower bound)")) if need else "-"
-        lines.append(f"| {k} | {v['value']:.5g} ± {v['stderr']:.2g} {v['unit']} | {pts} | {tgt} |")
+        val = f"{v['value']:.5g} ± {v['stderr']:.2g} {v['unit']}"
+        if "unit_si" in v and v["unit_si"] != "1":  # a physical scene: the SI value beside
+            val += f" = {v['value_si']:.5g} ± {v['stderr_si']:.2g} {v['unit_si']}"
+        lines.append(f"| {k} | {val} | {pts} | {tgt} |")
     lines.append("")
 
 
@@ -316,6 +363,7 @@ def main(argv):
         print(f"report: {outdir}/summary.json: {e.strerror}", file=sys.stderr)
         return 2
     obs = summary.get("observables", {})
+    u = Units(summary)
     lines = [f"# Report of {summary.get('scene_file', outdir)}", "",
              f"steps {summary.get('first_step')}..{summary.get('last_step')}, "
              f"{summary.get('wall_seconds', 0):.3g} s wall, {summary.get('threads')} thread(s)", ""]
@@ -324,26 +372,26 @@ def main(argv):
         with h5py.File(h5, "r") as f:
             have = f["observables"] if "observables" in f else {}
             if "colloid_rdf" in have:
-                plot_rdf(f, summary, outdir, lines)
+                plot_rdf(f, summary, u, outdir, lines)
             if "colloid_rdf_classes" in have:
-                plot_rdf_classes(f, outdir, lines)
+                plot_rdf_classes(f, u, outdir, lines)
             if "colloid_sq" in have:
-                plot_sq(f, obs, outdir, lines)
+                plot_sq(f, obs, u, outdir, lines)
             if "colloid_msd" in have:
-                plot_msd(f, obs, outdir, lines)
+                plot_msd(f, obs, u, outdir, lines)
             if "colloid_cff" in have:
-                plot_cff(f, obs, outdir, lines)
+                plot_cff(f, obs, u, outdir, lines)
             if "cluster_number" in have:
-                plot_clusters(f, obs, outdir, lines)
+                plot_clusters(f, obs, u, outdir, lines)
             if "cluster_bonds_primary" in have:
-                plot_bonds(f, obs, outdir, lines)
+                plot_bonds(f, obs, u, outdir, lines)
             if "colloid_phi_z" in have:
-                plot_sediment(f, obs, outdir, lines)
+                plot_sediment(f, obs, u, outdir, lines)
             if "fluid_velocity_distribution" in have or "colloid_velocity_distribution" in have:
                 plot_vdist(f, obs, outdir, lines)
             if "fluid_viscosity_gk" in have:
-                plot_viscosity(f, obs, outdir, lines)
-    plot_thermo(outdir, lines)
+                plot_viscosity(f, obs, u, outdir, lines)
+    plot_thermo(outdir, u, lines)
     error_table(obs, lines)
     with open(os.path.join(outdir, "report.md"), "w") as out:
         out.write("\n".join(lines))

@@ -10,11 +10,15 @@
  *   /observables attributes boundary_x/y/z (periodic, or noslip / slip walls
  *   at 0 and L: Hecht Sec. VIII.A), samples, average_start.
  * One frame (T = 1): the average over the run, stamped with its last step.
- * Model units throughout, stated in `model_unit` attributes (as in a model
- * colloids.h5; a physical scene adds a0_m and t0_s to /observables).
+ * Model units, stated in `model_unit` attributes (as in a model colloids.h5).
+ * A physical scene adds a0_m and t0_s to /observables and, in each group,
+ * the real system's values for ParaView's scale: value_si (um-3, um s-1),
+ * time_si (s), each with `unit` and `to_si` (x_si = x * to_si), and the
+ * attributes origin_si and spacing_si (um).
  * The XDMF file (fields.xdmf, next to fields.h5) describes a 3DCoRectMesh of
  * (Lz+1) x (Ly+1) x (Lx+1) nodes with cell-centred attributes read from
- * fields.h5 by hyperslab, one grid per frame in a temporal collection.
+ * fields.h5 by hyperslab, one grid per frame in a temporal collection: in
+ * um, s and value_si for a physical scene, else in a0, t0 and value.
  * Both are written to PATH.tmp and renamed. */
 #include <errno.h>
 #include <hdf5.h>
@@ -28,9 +32,33 @@
 
 #include "peloid/h5.h"
 #include "peloid/io.h"
+#include "peloid/mapping.h"
+
+/* Dataset `name` of g: d[0..n) * f with attributes unit and to_si. */
+static int put_si(hid_t g, const char *name, int rank, const hsize_t *dims, const double *d, size_t n, double f,
+                  const char *unit)
+{
+    double *x = malloc((n ? n : 1) * sizeof *x);
+    if (!x) return -1;
+    for (size_t k = 0; k < n; ++k) x[k] = d[k] * f;
+    int bad = pl_h5_write(g, name, H5T_NATIVE_DOUBLE, rank, dims, x);
+    free(x);
+    hid_t ds = bad ? -1 : H5Dopen2(g, name, H5P_DEFAULT);
+    bad |= ds < 0 || pl_h5_attr_vlstr(ds, "unit", unit) || pl_h5_attr_doubles(ds, "to_si", &f, 1);
+    if (ds >= 0 && H5Dclose(ds) < 0) bad = 1;
+    return bad ? -1 : 0;
+}
+
+/* The real system's side of a field for a physical scene (m: its mapping):
+ * the value times f in unit_si, time in s, the grid in um. */
+typedef struct {
+    const pl_mapping_t *m;
+    double f;
+    const char *unit_si;
+} field_si_t;
 
 static int observable(hid_t obs, const char *name, int rank, const hsize_t *dims, const double *d,
-                      long long step, double time, const char *unit)
+                      long long step, double time, const char *unit, const field_si_t *si)
 {
     hid_t g = pl_h5_group(obs, name);
     if (g < 0) return -1;
@@ -45,12 +73,24 @@ static int observable(hid_t obs, const char *name, int rank, const hsize_t *dims
     bad |= v < 0 || t < 0 || pl_h5_attr_vlstr(v, "model_unit", unit) || pl_h5_attr_vlstr(t, "model_unit", "t0");
     if (v >= 0 && H5Dclose(v) < 0) bad = 1;
     if (t >= 0 && H5Dclose(t) < 0) bad = 1;
+    if (si->m) {
+        size_t n = 1;
+        for (int k = 0; k < rank; ++k) n *= (size_t)dims[k];
+        const double um = si->m->a0 * 1e6, o_si[3] = {0.0, 0.0, 0.0}, s_si[3] = {um, um, um};
+        bad |= put_si(g, "value_si", rank, dims, d, n, si->f, si->unit_si) ||
+               put_si(g, "time_si", 1, &one, &time, 1, si->m->t0, "s") ||
+               pl_h5_attr_doubles(g, "origin_si", o_si, 3) || pl_h5_attr_doubles(g, "spacing_si", s_si, 3) ||
+               pl_h5_attr_vlstr(g, "grid_unit_si", "um");
+    }
     if (H5Gclose(g) < 0) bad = 1;
     return bad ? -1 : 0;
 }
 
-/* fields.xdmf beside fields.h5 (its name relative, so the pair can move) */
-static int write_xdmf(const char *h5path, const int *L, long long step, double time, pl_err_t *err)
+/* fields.xdmf beside fields.h5 (its name relative, so the pair can move);
+ * m: a physical scene's mapping (the grid in um, time in s, value_si), or
+ * NULL (model units). */
+static int write_xdmf(const char *h5path, const int *L, long long step, double time, const pl_mapping_t *m,
+                      pl_err_t *err)
 {
     char xpath[PATH_MAX], tmp[PATH_MAX + 8], base[PATH_MAX];
     snprintf(xpath, sizeof xpath, "%s", h5path);
@@ -64,13 +104,17 @@ static int write_xdmf(const char *h5path, const int *L, long long step, double t
     static const char *const names[2] = {"fluid_density", "fluid_velocity"};
     fprintf(f, "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n<Xdmf Version=\"2.0\">\n"
                " <Domain>\n  <Grid Name=\"fields\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
-    fprintf(f, "   <Grid Name=\"step %lld\" GridType=\"Uniform\">\n    <Time Value=\"%.17g\"/>\n", step, time);
+    const double h = m ? m->a0 * 1e6 : 1.0;
+    const char *value = m ? "value_si" : "value";
+    fprintf(f, "   <Grid Name=\"step %lld\" GridType=\"Uniform\">\n    <Time Value=\"%.17g\"/>\n", step,
+            m ? time * m->t0 : time);
     fprintf(f, "    <Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"%d %d %d\"/>\n", L[2] + 1, L[1] + 1,
             L[0] + 1);
     fprintf(f, "    <Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n"
                "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">0 0 0</DataItem>\n"
-               "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">1 1 1</DataItem>\n"
-               "    </Geometry>\n");
+               "     <DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" Format=\"XML\">%.17g %.17g "
+               "%.17g</DataItem>\n"
+               "    </Geometry>\n", h, h, h);
     for (int k = 0; k < 2; ++k) {
         const char *w = k ? " 3" : "", *s = k ? " 0" : "", *one = k ? " 1" : "";
         fprintf(f, "    <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"Cell\">\n", names[k],
@@ -80,7 +124,7 @@ static int write_xdmf(const char *h5path, const int *L, long long step, double t
         fprintf(f, "      <DataItem Dimensions=\"3 %d\" Format=\"XML\">0 0 0 0%s 1 1 1 1%s 1 %d %d %d%s</DataItem>\n",
                 k ? 5 : 4, s, one, L[2], L[1], L[0], w);
         fprintf(f, "      <DataItem Dimensions=\"1 %d %d %d%s\" NumberType=\"Float\" Precision=\"8\" "
-                   "Format=\"HDF\">%s:/observables/%s/value</DataItem>\n", L[2], L[1], L[0], w, h5name, names[k]);
+                   "Format=\"HDF\">%s:/observables/%s/%s</DataItem>\n", L[2], L[1], L[0], w, h5name, names[k], value);
         fprintf(f, "     </DataItem>\n    </Attribute>\n");
     }
     fprintf(f, "   </Grid>\n  </Grid>\n </Domain>\n</Xdmf>\n");
@@ -128,8 +172,11 @@ int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
         static const char *const bname[3] = {"boundary_x", "boundary_y", "boundary_z"};
         for (int d = 0; d < 3; ++d) bad |= pl_h5_attr_str(obs, bname[d], pl_scene_boundary_name(walls[d]));
         hsize_t dims[5] = {1, (hsize_t)L[2], (hsize_t)L[1], (hsize_t)L[0], 3};
-        bad |= observable(obs, "fluid_density", 4, dims, rho, sim->step, time, "a0-3");
-        bad |= observable(obs, "fluid_velocity", 5, dims, vel, sim->step, time, "a0 t0-1");
+        const pl_mapping_t *m = sc->mapping.enabled ? &sc->mapping.map : NULL;
+        const double um = m ? m->a0 * 1e6 : 1.0;
+        const field_si_t rho_si = {m, 1.0 / (um * um * um), "um-3"}, vel_si = {m, m ? um / m->t0 : 1.0, "um s-1"};
+        bad |= observable(obs, "fluid_density", 4, dims, rho, sim->step, time, "a0-3", &rho_si);
+        bad |= observable(obs, "fluid_velocity", 5, dims, vel, sim->step, time, "a0 t0-1", &vel_si);
         if (sc->mapping.enabled)
             bad |= pl_h5_attr_doubles(obs, "a0_m", &sc->mapping.map.a0, 1) ||
                    pl_h5_attr_doubles(obs, "t0_s", &sc->mapping.map.t0, 1);
@@ -152,5 +199,5 @@ int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
         return pl_err_set(err, PL_ERR_IO, "%s: writing fields failed: %s", tmp, why);
     }
     if (pl_atomic_commit(tmp, path, err)) return PL_ERR_IO;
-    return write_xdmf(path, L, sim->step, time, err);
+    return write_xdmf(path, L, sim->step, time, sc->mapping.enabled ? &sc->mapping.map : NULL, err);
 }

@@ -53,6 +53,7 @@
 #include "peloid/real.h" /* PL_PI */
 #include "json_build.h"
 #include "observables_out.h"
+#include "observables_si.h"
 #include "peloid/blocking.h"
 #include "peloid/cluster.h"
 #include "peloid/colloid.h"
@@ -1049,6 +1050,7 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
         if (g >= 0 && H5Gclose(g) < 0) bad = 1;
     }
     if (obs >= 0 && H5Gclose(obs) < 0) bad = 1;
+    if (!bad && sim->scene.mapping.enabled) bad = pl_obs_si_h5(f, &sim->scene.mapping.map) != 0;
     return pl_obs_h5_commit(f, bad, tmp, path, "observables", err);
 }
 

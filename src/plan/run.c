@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include "json_build.h"
+#include "observables_si.h"
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
 #include "peloid/io.h"
@@ -165,6 +166,9 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
     b.prefix = "thermo_units";
     for (int k = 0; k < w->columns.n; ++k) pl_json_str(&b, units, w->columns.col[k].name, w->columns.col[k].unit);
     pl_json_set(&b, doc, "thermo_units", units);
+    json_t *obs = json_object_get(doc, "observables"); /* every module's entries are in: their SI side */
+    b.prefix = "observables";
+    if (obs && sim->scene.mapping.enabled) pl_obs_si_json(&b, obs, &sim->scene.mapping.map);
     if (b.failed) return err->code;
     FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
     if (!f) return PL_ERR_IO;

@@ -1,0 +1,19 @@
+/* The initial (homogeneous-fall) settling velocity of the sedimentation
+ * observer (src/observe/sediment_fit.c). */
+#ifndef PELOID_SEDIMENT_FIT_H
+#define PELOID_SEDIMENT_FIT_H
+
+#include <stddef.h>
+
+typedef struct {
+    double value, se;  /* mean settling sample over the window and its SE */
+    size_t window;     /* samples from the first: the homogeneous fall (0: none found) */
+    double z_window;   /* |first half - second half| / SE inside the window (< 2) */
+    double z_whole;    /* the same over every sample: >= 2 says the run's mean mixes states */
+} pl_sediment_fit_t;
+
+/* v: the n settling samples in order; 0, or -1 when fewer than 16 samples
+ * or no prefix of 16 or more is homogeneous (out->z_whole is set either way). */
+int pl_sediment_initial(const double *v, size_t n, pl_sediment_fit_t *out);
+
+#endif
