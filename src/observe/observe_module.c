@@ -68,6 +68,7 @@
 #include "peloid/vdist.h"
 #include "checkpoint_h5.h"
 #include "mtau_observers.h"
+#include "sediment_fit.h"
 
 enum { NFRAC = PL_OBS_NFRAC, VD_BINS = 60 };
 #define fractions pl_obs_fractions
@@ -1185,6 +1186,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
             pl_json_set(&b, all, "settling_velocity", e);
         }
     }
+    if (o->s_n >= 2) pl_sediment_summary(&b, all, &sim->scene, o->s_vel + 1, o->s_step + 1, o->s_n - 1);
     static const char *const vkey[2] = {"fluid_velocity_chi2", "colloid_velocity_chi2"};
     for (int k = 0; k < 2; ++k) {
         double chi2, p;

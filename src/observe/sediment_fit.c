@@ -15,10 +15,15 @@
  * passes is kept, so its SE shrinks as the data allow and never mixes the
  * settled state in.  The SE is from blocking over the window (which also
  * covers correlated samples). */
+#include <jansson.h>
 #include <math.h>
 #include <stddef.h>
 
+#include "json_build.h"
 #include "peloid/blocking.h"
+#include "peloid/real.h" /* PL_PI */
+#include "peloid/scene.h"
+#include "peloid/srd_theory.h"
 #include "sediment_fit.h"
 
 /* mean and SE (blocking) of v[a, b) */
@@ -61,4 +66,80 @@ int pl_sediment_initial(const double *v, size_t n, pl_sediment_fit_t *out)
     out->z_window = zbest;
     mean_se(v, 0, best, &out->value, &out->se);
     return 0;
+}
+
+/* ---- summary.json ---------------------------------------------------------- */
+
+/* Stokes velocity of one colloid (Hecht Eq. 16) with the friction the scene
+ * gives it: kT / D of the mapping (the calibrated or theory colloid D) for
+ * a physical scene, else 6 pi eta R (eta of PL Eqs. 9-15 / Hecht Eq. 28; of
+ * colloids.bd_viscosity for Brownian dynamics; none without fluid);
+ * and the colloid volume fraction of the box.  Model units. */
+static void references(const pl_scene_t *sc, double *v_stokes, double *phi)
+{
+    const pl_scene_colloids_t *c = &sc->colloids;
+    const double R = c->radius, vol = 4.0 / 3.0 * PL_PI * R * R * R, M = c->mass_density * vol;
+    const double g = sqrt(c->gravity[0] * c->gravity[0] + c->gravity[1] * c->gravity[1] +
+                          c->gravity[2] * c->gravity[2]);
+    double xi;
+    if (c->integrator == PL_CINT_BROWNIAN) { /* the Stokes friction BD uses */
+        xi = 6.0 * PL_PI * c->bd_viscosity * R;
+    } else if (sc->mapping.enabled) {
+        xi = pl_scene_kT(sc) / sc->mapping.map.d_col_sim;
+    } else if (sc->fluid.density <= 0) {
+        xi = NAN; /* no solvent, no friction to compare with */
+    } else {
+        pl_srd_theory_t th;
+        pl_srd_theory(sc->fluid.density, sc->srd.rule, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt,
+                      pl_scene_kT(sc), &th);
+        xi = 6.0 * PL_PI * th.eta * R;
+    }
+    *v_stokes = M * g / xi;
+    const int *n = sc->box.cells;
+    *phi = (double)c->count * vol / ((double)n[0] * n[1] * n[2]);
+}
+
+void pl_sediment_summary(pl_json_t *b, json_t *all, const pl_scene_t *sc, const double *v, const long long *step,
+                         size_t n)
+{
+    pl_sediment_fit_t f;
+    const int found = pl_sediment_initial(v, n, &f) == 0;
+    json_t *whole = json_object_get(all, "settling_velocity");
+    if (whole) { /* what the run's mean is, honestly */
+        pl_json_str(b, whole, "over", "every sample: the fall and, in a closed vessel, the settled state");
+        pl_json_real_or_null(b, whole, "drift_z", f.z_whole);
+        if (!(f.z_whole < 2.0)) pl_json_set(b, whole, "plateau", json_false());
+    }
+    double vs, phi;
+    references(sc, &vs, &phi);
+    const double to_si = sc->mapping.enabled ? sc->mapping.map.a0 / sc->mapping.map.t0 : NAN;
+    json_t *e = json_object();
+    if (found) {
+        pl_json_real(b, e, "value", -f.value); /* falling: positive */
+        pl_json_real(b, e, "stderr", f.se);
+        pl_json_int(b, e, "samples", (long long)f.window);
+        pl_json_int(b, e, "first_step", step[0]);
+        pl_json_int(b, e, "last_step", step[f.window - 1]);
+        pl_json_real(b, e, "drift_z", f.z_window);
+    } else {
+        pl_json_set(b, e, "value", json_null());
+        pl_json_str(b, e, "why_none", n < 16 ? "fewer than 16 samples" : "no homogeneous first stretch of 16 samples");
+    }
+    pl_json_str(b, e, "unit", "a0/t0");
+    pl_json_str(b, e, "meaning", "initial settling speed (down positive) of the colloids' mean height relative to "
+                                 "the fluid, over the longest first stretch whose halves agree within 2 SE");
+    pl_json_real(b, e, "volume_fraction", phi);
+    pl_json_real_or_null(b, e, "stokes", vs);
+    /* Richardson & Zaki 1954 for Re < 0.2: (1 - phi)^4.65; Hecht Eq. 37 */
+    pl_json_real_or_null(b, e, "richardson_zaki_4.65", vs * pow(1.0 - phi, 4.65));
+    if (found) pl_json_real_or_null(b, e, "over_stokes", -f.value / vs);
+    if (sc->mapping.enabled) {
+        if (found) {
+            pl_json_real(b, e, "value_m_per_s", -f.value * to_si);
+            pl_json_real(b, e, "stderr_m_per_s", f.se * to_si);
+        }
+        pl_json_real_or_null(b, e, "stokes_m_per_s", vs * to_si);
+        pl_json_real_or_null(b, e, "richardson_zaki_4.65_m_per_s", vs * pow(1.0 - phi, 4.65) * to_si);
+    }
+    pl_json_set(b, all, "initial_settling_velocity", e);
 }
