@@ -57,7 +57,7 @@ def predictions(summ, mass, rad):
         xis = 1.0 / cd["d_a0_2_t0"]
     return {"M": M, "R": R, "g": g, "xi_stokes": xis, "xi_II": xi2,
             "v_stokes": M * g / xis, "v_II": M * g / xi2,
-            "stokes_label": "Stokes (mapped, xi = kT/D)" if cd else "Stokes, xi = 6 pi eta R"}
+            "stokes_label": "Stokes v = M g D / kT (mapped D)" if cd else "Stokes v = M g / 6 pi eta R"}
 
 
 def measure(t, zcm):
@@ -91,7 +91,7 @@ def main():
           % (a.outdir, z.shape[1], pr["R"], pr["M"], pr["g"]))
     print("  measured initial settling speed  %.4g +- %.2g %s  (%.4g a0/t0, fit to t = %.4g %s)"
           % (v * vs, se * vs, vu, v, t_fit * ts, tu))
-    print("  %s = %-7.4g  %.4g %s  (measured / Stokes = %.2f)"
+    print("  %s, xi = %-7.4g  %.4g %s  (measured / Stokes = %.2f)"
           % (pr["stokes_label"], pr["xi_stokes"], pr["v_stokes"] * vs, vu, v / pr["v_stokes"]))
     print("  coupling II, xi_II = %-12.4g  %.4g %s  (measured / v_II = %.2f)"
           % (pr["xi_II"], pr["v_II"] * vs, vu, v / pr["v_II"]))
@@ -117,7 +117,7 @@ def main():
 
     ax2.plot(t * ts, zcm * ls, "k.", ms=3, label="centre of mass (run)")
     tt = np.linspace(0.0, t[-1], 200)
-    for key, style, lab in (("v_stokes", "C0--", "Stokes v = M g / xi (%s)" % pr["stokes_label"]),
+    for key, style, lab in (("v_stokes", "C0--", pr["stokes_label"]),
                             ("v_II", "C1:", "coupling II v = M g / xi_II")):
         zz = zcm[0] - pr[key] * tt
         keep = zz >= zcm.min() - 0.05 * (zcm[0] - zcm.min())
