@@ -308,7 +308,7 @@ def fig9_diagram(sw):
                                                                       if key == "state" else " (g(r) peaks B–D beside)"),
                          fontsize=9)
         axes[0].set_ylabel("κ (10⁸ /m)")
-        fig.suptitle("Hecht Fig. 9: Al2O3, R = 0.25 µm, φ = 0.14 (472 colloids), 1140 steps = 0.34 s, seed 9", fontsize=10)
+        fig.suptitle("Hecht Fig. 9: Al2O3, R = 0.25 µm, φ = 0.14 (472 colloids), 1140 steps = 0.64 s, seed 9", fontsize=10)
         save_figure(plt, fig, path)
     return "<br>".join(value), "; ".join(counts) + "<br>" + "<br>".join(verdicts), details, plot
 
