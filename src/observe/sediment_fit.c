@@ -121,11 +121,11 @@ void pl_sediment_summary(pl_json_t *b, json_t *all, const pl_scene_t *sc, const 
         pl_json_int(b, e, "first_step", step[0]);
         pl_json_int(b, e, "last_step", step[f.window - 1]);
         pl_json_real(b, e, "drift_z", f.z_window);
-    } else {
-        pl_json_set(b, e, "value", json_null());
+        pl_json_str(b, e, "unit", "a0/t0");
+    } else { /* no value: the references alone, in a0/t0 (and m/s) */
         pl_json_str(b, e, "why_none", n < 16 ? "fewer than 16 samples" : "no homogeneous first stretch of 16 samples");
+        pl_json_str(b, e, "reference_unit", "a0/t0");
     }
-    pl_json_str(b, e, "unit", "a0/t0");
     pl_json_str(b, e, "meaning", "initial settling speed (down positive) of the colloids' mean height relative to "
                                  "the fluid, over the longest first stretch whose halves agree within 2 SE");
     pl_json_real(b, e, "volume_fraction", phi);
