@@ -55,7 +55,6 @@ static const char usage[] =
     "  --rep-seconds S   target duration of one repetition (default 0.4, quick 0.15; >= 2 steps)\n"
     "  --no-stream       skip the STREAM triad\n";
 
-
 typedef struct {
     int sizes[MAX_SIZES], nsizes;
     int max_threads, reps;
@@ -128,7 +127,7 @@ static void parse(int argc, char **argv, options_t *o)
     if (o->max_threads < 1) o->max_threads = 1;
     if (o->max_threads > MAX_THREADS) o->max_threads = MAX_THREADS;
     if (!(o->rep_seconds > 0.0)) o->rep_seconds = 0.01;
-    if (o->ntl == 0) /* the sweep 1..max_threads, every MAX_TLIST-th count beyond */
+    if (o->ntl == 0) /* 1..max_threads; beyond MAX_TLIST counts, a stride */
         for (int t = 1; t <= o->max_threads; t += 1 + (o->max_threads - 1) / MAX_TLIST) o->tlist[o->ntl++] = t;
     else
         for (int k = 0; k < o->ntl; ++k)
