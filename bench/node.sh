@@ -9,8 +9,9 @@
 #      fig9_model.cfg (`peloid run`, loop wall time from summary.json, as in
 #      bench/time_to_science.sh): seconds per collision step;
 #   4. sweep throughput: `peloid sweep` of an N-point study of the Fig. 9
-#      scene (seeds 1..N; the sweep picks its processes x threads and the
-#      table says what it picked) against one N-thread run, steps/s in total;
+#      scene (seeds 1..N) as N processes x 1 thread against one N-thread
+#      run, steps/s in total; with N = nproc the sweep runs with its own
+#      choice of processes x threads and the table quotes it;
 #   5. LAMMPS `fix srd` on bench/peers/in.srd_fluid_pure at 1 and N MPI
 #      ranks, interleaved with peloid on the same fluid and L (skipped, with
 #      a line saying so, when no LAMMPS with the SRD package is installed).
@@ -264,7 +265,7 @@ mkdir -p bench/out/node || die "cannot create bench/out/node"
 TSV=bench/out/node.tsv
 printf 'part\tcase\tthreads\tmedian\tmin\tmax\tunit\treps\n' > "$TSV"
 tsv() { printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$@" | tee -a "$TSV"; }
-PARTS=""; PT=$(date +%s)
+PARTS=""; PT=$T0
 part_done() { PARTS="$PARTS${PARTS:+, }$1 $(( $(date +%s) - PT )) s"; PT=$(date +%s); }
 part_done "build + probes"
 
@@ -336,14 +337,17 @@ if [ "$(calc "$SP > $sl * 1.5 ? 1 : 0")" = 1 ]; then
 else
   log "sweep: $NMAX points x $SS steps vs one $NMAX-thread run, $SR reps (predicted ${SP%.*} s of ${sl%.*})"
   seeds=$(seq -s, 1 "$NMAX")
-  PICK=""
+  PICK=""; SWOPT=""
+  # N = the CPUs: the sweep's own choice (its log line says it); otherwise N x 1 forced
+  [ "$NMAX" = "$NPROC" ] || SWOPT="--jobs $NMAX --threads 1"
   for r in $(seq "$SR"); do
     [ "$(left)" -gt 15 ] || break
     printf 'name = "node_sweep";\nscene = "%s/bench/scenes/fig9_model.cfg";\ngrid = ( { key = "steps"; values = [%d]; }, { key = "seed"; values = [%s]; } );\n' \
         "$PWD" "$SS" "$seeds" > "$TMP/study.cfg"
     rm -rf "$TMP/sw"
     s=$(date +%s.%N)
-    timeout 300 bin/peloid sweep "$TMP/study.cfg" --out "$TMP/sw" >"$TMP/sw.log" 2>&1
+    # shellcheck disable=SC2086
+    timeout 300 bin/peloid sweep "$TMP/study.cfg" --out "$TMP/sw" $SWOPT >"$TMP/sw.log" 2>&1
     src=$?; e=$(date +%s.%N)
     [ -n "$PICK" ] || PICK=$(sed -n 's/.*to run: \(.*\) -> .*/\1/p' "$TMP/sw.log" | head -1)
     ok=$(cat "$TMP"/sw/p*/summary.json 2>/dev/null | grep -c '"wall_seconds"')
@@ -360,12 +364,14 @@ else
     fi
   done
   emit ""
-  emit "**Sweep throughput** (Fig. 9 model scene, $SS collision steps per run; $SR repetitions, median (min..max)): \`peloid sweep\` of a $NMAX-point study (seeds 1..$NMAX; it picked ${PICK:-?}) against one \`peloid run --threads $NMAX\`. Loop: steps / the run loop's wall time (the slowest point for the sweep); end to end: steps / the command's wall time (process start, scene set-up, the sweep's collect and plot):"
+  if [ -n "$SWOPT" ]; then how="run with \`$SWOPT\` ($NMAX < the $NPROC CPUs; by itself it would take min(points, CPUs) processes x CPUs / processes threads)"
+  else how="its own choice: ${PICK:-?}"; fi
+  emit "**Sweep throughput** (Fig. 9 model scene, $SS collision steps per run; $SR repetitions, median (min..max)): \`peloid sweep\` of a $NMAX-point study (seeds 1..$NMAX; $how) against one \`peloid run --threads $NMAX\`. Loop: steps / the run loop's wall time (the slowest point for the sweep); end to end: steps / the command's wall time (process start, scene set-up, the sweep's collect and plot):"
   emit ""
   emit "| how | collision steps/s in total, loop | end to end |"
   emit "|---|---|---|"
   for k in sw one; do
-    name="peloid sweep, $NMAX points ($PICK)"; [ "$k" = one ] && name="1 run x $NMAX threads"
+    name="peloid sweep, $NMAX point(s): $PICK"; [ "$k" = one ] && name="1 run x $NMAX thread(s)"
     if [ -s "$TMP/$k.loop" ]; then
       read -r m lo hi < <(med < "$TMP/$k.loop"); read -r m2 lo2 hi2 < <(med < "$TMP/$k.e2e")
       emit "| $name | $m ($lo..$hi) | $m2 ($lo2..$hi2) |"
