@@ -155,6 +155,10 @@ TS9=$(calc "$L9 / 3"); SU9=$(calc "$W9 - $L9")
 TS14=$(calc "$L14 / 3"); SU14=$(calc "$W14 - $L14")
 COMPILER=$(sed -n 's/.*"compiler": "\([^"]*\)".*/\1/p' "$TMP/p9/summary.json" | head -1)
 CCV=$({ ${CC:-cc} --version 2>/dev/null || true; } | head -1)
+# the build's command line (the Makefile's build/flags.stamp) without warnings, includes, libraries
+FLAGS_ALL=""
+[ -f build/flags.stamp ] && FLAGS_ALL=$(tr ' ' '\n' < build/flags.stamp | awk 'NF && !/^-[WILl]/ && !seen[$0]++' | paste -sd' ' -)
+[ -n "$FLAGS_ALL" ] || FLAGS_ALL="${BUILD_FLAGS:-?} (optimisation flags only: no build/flags.stamp)"
 
 LMP=""; LSKIP=""
 for c in lmp lmp_serial lmp_mpi lmp_openmpi; do command -v "$c" >/dev/null && { LMP=$c; break; }; done
@@ -437,7 +441,7 @@ LOAD1=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null || echo "?")
   echo "| CPU | \`$CPU\` (lscpu / /proc/cpuinfo)${HYP:+, $HYP guest} |"
   echo "| topology | $TOPO |"
   echo "| memory | ${MEM:-?} |"
-  echo "| compiler | gcc/cc ${COMPILER:-?} (\`${CCV:-cc not found}\`), flags \`${BUILD_FLAGS:-?}\` + the Makefile's \`-std=c11 -fopenmp\` ...; bench_srd pinned OMP_PLACES=cores OMP_PROC_BIND=spread |"
+  echo "| compiler | gcc/cc ${COMPILER:-?} (\`${CCV:-cc not found}\`), flags \`$FLAGS_ALL\`; bench_srd pinned OMP_PLACES=cores OMP_PROC_BIND=spread |"
   echo "| peloid | binaries built from ${BUILD_REV:-?}; tree $TREE_REV |"
   echo "| run | \`bench/node.sh --budget $BUDGET$USER_T\`, $START_UTC .. $END_UTC, $WALL s; threads $TCSV; /proc/loadavg start $LOAD0, end $LOAD1 |"
   cat "$SEC"
