@@ -213,7 +213,7 @@ plan_fluid() { # SLICE -> "REPS REPSEC predicted" (first fit) or the smallest pl
 }
 plan_colloid() { # SLICE -> "STEPS REPS predicted"
   awk -v slice="$1" -v a="$TS9" -v b="$TS14" -v sa="$SU9" -v sb="$SU14" -v f="$SPEEDUPS" 'BEGIN{
-    nt = split(f, fr, " "); n = split("40 5 40 3 20 5 20 3 10 5 10 3 5 3 3 3", c, " ")
+    nt = split(f, fr, " "); n = split("200 5 100 5 60 5 40 5 40 3 20 5 20 3 10 5 10 3 5 3 3 3", c, " ")
     for (k = 1; k < n; k += 2) {
       S = c[k]; R = c[k+1]; tot = 0
       for (i = 1; i <= nt; ++i) tot += R * (sa + sb + S * (a + b) * fr[i])
@@ -223,7 +223,7 @@ plan_colloid() { # SLICE -> "STEPS REPS predicted"
 }
 plan_sweep() { # SLICE -> "STEPS REPS predicted": per rep the sweep (N x 1 thread, contention 1.5) and one N-thread run
   awk -v slice="$1" -v a="$TS9" -v sa="$SU9" -v N="$NMAX" 'BEGIN{
-    fN = (N > 2 ? 2 / N : 1); n = split("100 3 60 3 40 3 20 3 10 3 10 1 5 1", c, " ")
+    fN = (N > 2 ? 2 / N : 1); n = split("400 3 200 3 100 3 60 3 40 3 20 3 10 3 10 1 5 1", c, " ")
     for (k = 1; k < n; k += 2) {
       S = c[k]; R = c[k+1]
       tot = R * (sa + 2.0 + S * a * 1.5 + sa + S * a * fN)
