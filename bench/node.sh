@@ -37,7 +37,8 @@
 # set-up + steps x the probed time per step, thread speed-up assumed t/2).
 # Each part is planned again from the time really left when it starts, and
 # runs under `timeout`; a part that cannot fit its smallest plan is skipped
-# and the table says so.
+# and the table says so.  Every external run's time limit ends before the
+# budget does, so the budget holds even when a probe misjudged a part.
 #
 # Needs: bash, coreutils (timeout), awk, sed; bin/peloid and
 # build/bench/bench_srd (built here with `make -j$(nproc)` when missing:
@@ -47,7 +48,8 @@
 # mpirun (Debian: apt-get install lammps).
 # To run on another machine from a copy of the tree, carry at least
 #   bench/node.sh bench/common.sh bench/scenes/ bench/peers/ bin/peloid build/bench/
-# (binaries built for that CPU: -march=native; better copy the whole tree,
+# (binaries built for that CPU: -march=native, and linked against the shared
+# libraries of the build: hdf5, gsl, hwloc, libconfig, jansson; better copy the whole tree,
 # `git archive HEAD`, and let the script build there), then run
 #   bench/node.sh [--budget 480]
 # from anywhere; it works in the tree that holds it.
@@ -86,6 +88,8 @@ NMAX=$(echo "$THREADS" | tail -1)
 TCSV=$(echo "$THREADS" | paste -sd, -)
 
 left() { echo $((T0 + BUDGET - $(date +%s))); }
+# cap LIMIT: a time limit no later than the budget's end (5 s at least)
+cap() { local l; l=$(( $(left) - 3 )); [ "$l" -lt 5 ] && l=5; [ "$1" -lt "$l" ] && l=$1; echo "$l"; }
 now() { date -u +%H:%M:%S; }
 log() { echo "[$(now) | $(left) s left] $*" >&2; }
 calc() { awk "BEGIN{print ($*)}"; }
@@ -133,13 +137,13 @@ TREE_REV=$(git rev-parse --short HEAD 2>/dev/null || echo "no git")
 pl_run() {
   local s e
   s=$(date +%s.%N)
-  timeout "${5:-120}" bin/peloid run "$1" --steps "$2" --threads "$3" --out "$4" --force >"$4.log" 2>&1 || return 1
+  timeout "$(cap "${5:-120}")" bin/peloid run "$1" --steps "$2" --threads "$3" --out "$4" --force >"$4.log" 2>&1 || return 1
   e=$(date +%s.%N)
   sed -n 's/.*"wall_seconds": \([0-9.eE+-]*\).*/\1/p' "$4/summary.json" | head -1 | awk -v s="$s" -v e="$e" '{print $1, e - s}'
 }
 log "probing: bench_srd L = 64, 1 thread"
 s=$(date +%s.%N)
-timeout 120 build/bench/bench_srd --sizes 64 --thread-list 1 --reps 3 --rep-seconds 0.02 --out "$TMP/probe" >"$TMP/probe.txt" 2>&1 \
+timeout "$(cap 120)" build/bench/bench_srd --sizes 64 --thread-list 1 --reps 3 --rep-seconds 0.02 --out "$TMP/probe" >"$TMP/probe.txt" 2>&1 \
   || die "bench_srd probe failed: $(tail -2 "$TMP/probe.txt")"
 PW=$(calc "$(date +%s.%N) - $s")
 BUILD_REV=$(sed -n 's/^# bench_srd  peloid \([^ ]*\) .*/\1/p' "$TMP/probe.txt")
@@ -170,7 +174,7 @@ lmp_run() { # P L STEPS FILE -> loop seconds (LAMMPS "Loop time": the steps only
   local launch=""
   [ "$HAVE_MPI" = 1 ] && launch="$MPIRUN -np $1"
   # shellcheck disable=SC2086
-  OMP_NUM_THREADS=1 timeout "${5:-120}" $launch "$LMP" -in bench/peers/in.srd_fluid_pure -var L "$2" -var STEPS "$3" \
+  OMP_NUM_THREADS=1 timeout "$(cap "${5:-120}")" $launch "$LMP" -in bench/peers/in.srd_fluid_pure -var L "$2" -var STEPS "$3" \
       -log none -screen "$4" >/dev/null 2>&1 || return 1
   awk '/^Loop time of/ {print $4}' "$4"
 }
@@ -276,7 +280,7 @@ part_done "build + probes"
 # --- 1 + 2: STREAM triad and the fluid step ---------------------------------
 sl=$(share $W_F $((W_C + W_S + W_L))); read -r FR FRS FP < <(plan_fluid "$sl")
 log "fluid: bench_srd --sizes 64,120 --thread-list $TCSV --reps $FR --rep-seconds $FRS (predicted ${FP%.*} s of ${sl%.*})"
-FLIM=$(calc "int($FP * 1.5 + 20)")
+FLIM=$(cap "$(calc "int($FP * 1.5 + 20)")")
 timeout "$FLIM" build/bench/bench_srd --sizes 64,120 --thread-list "$TCSV" --reps "$FR" --rep-seconds "$FRS" \
     --out bench/out/node >"$TMP/srd.txt" 2>&1 || NOTES+=("bench_srd ended with status $? (limit $FLIM s): rows missing below were not measured")
 emit ""
@@ -351,7 +355,7 @@ else
     rm -rf "$TMP/sw"
     s=$(date +%s.%N)
     # shellcheck disable=SC2086
-    timeout 300 bin/peloid sweep "$TMP/study.cfg" --out "$TMP/sw" $SWOPT >"$TMP/sw.log" 2>&1
+    timeout "$(cap 300)" bin/peloid sweep "$TMP/study.cfg" --out "$TMP/sw" $SWOPT >"$TMP/sw.log" 2>&1
     src=$?; e=$(date +%s.%N)
     [ -n "$PICK" ] || PICK=$(sed -n 's/.*to run: \(.*\) -> .*/\1/p' "$TMP/sw.log" | head -1)
     ok=$(cat "$TMP"/sw/p*/summary.json 2>/dev/null | grep -c '"wall_seconds"')
