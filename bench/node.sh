@@ -396,7 +396,7 @@ if [ -n "$LSKIP" ]; then
   echo "LAMMPS: $LSKIP" >&2
   emit "**LAMMPS**: $LSKIP."
 else
-  sl=$(calc "$(left) - 8"); read -r LL LS LR LP < <(plan_lammps "$sl")
+  sl=$(calc "$(left) > 8 ? $(left) - 8 : 0"); read -r LL LS LR LP < <(plan_lammps "$sl")
   if [ "$(calc "$LP > $sl * 1.5 ? 1 : 0")" = 1 ]; then
     emit "**LAMMPS**: skipped (budget: the smallest plan, ${LP%.*} s, does not fit the ${sl%.*} s left)."
   else
