@@ -30,8 +30,9 @@
  * (bench/out/stream.tsv: the triad sweep).  Median of `reps` repetitions,
  * min and max as the spread.
  *
- * Usage: bench_srd [--quick] [--sizes 16,64,120] [--threads N] [--reps R]
- *                  [--out DIR] [--no-stream]     (PL_BENCH_QUICK=1 = --quick) */
+ * Usage: bench_srd [--quick] [--sizes 16,64,120] [--threads N | --thread-list 1,2,4]
+ *                  [--reps R] [--rep-seconds S] [--out DIR] [--no-stream]
+ *                  (PL_BENCH_QUICK=1 = --quick; --help prints this) */
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
@@ -43,11 +44,21 @@
 #include "peloid/sim.h"
 #include "peloid_build.h" /* PL_GIT_REV, PL_CFLAGS (generated) */
 
-enum { MAX_SIZES = 8, MAX_REPS = 32, MAX_KERN = PL_MAX_STAGES + 1 };
+enum { MAX_SIZES = 8, MAX_REPS = 32, MAX_KERN = PL_MAX_STAGES + 1, MAX_TLIST = 64, MAX_THREADS = 1024 };
+
+static const char usage[] =
+    "usage: bench_srd [--quick] [--sizes 16,64,120] [--threads N | --thread-list 1,2,4]\n"
+    "                 [--reps R] [--rep-seconds S] [--out DIR] [--no-stream]\n"
+    "  --threads N       thread sweep 1..N (default: the CPUs)\n"
+    "  --thread-list L   these thread counts only (comma-separated)\n"
+    "  --reps R          repetitions per case, median and min..max (3..32; default 5, quick 3)\n"
+    "  --rep-seconds S   target duration of one repetition (default 0.4, quick 0.15; >= 2 steps)\n"
+    "  --no-stream       skip the STREAM triad\n";
 
 typedef struct {
     int sizes[MAX_SIZES], nsizes;
     int max_threads, reps;
+    int tlist[MAX_TLIST], ntl; /* thread counts of the sweep */
     double rep_seconds; /* target duration of one repetition */
     const char *outdir;
     int no_stream; /* skip the triad (A/B runs of kernels only) */
@@ -86,13 +97,23 @@ static void parse(int argc, char **argv, options_t *o)
     o->rep_seconds = quick ? 0.15 : 0.4;
     o->outdir = "bench/out";
     o->no_stream = 0;
+    o->ntl = 0;
     for (int i = 1; i < argc; ++i) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            fputs(usage, stdout);
+            exit(0);
+        }
         if (!strcmp(argv[i], "--sizes") && i + 1 < argc) {
             o->nsizes = 0;
             for (char *s = strtok(argv[++i], ","); s && o->nsizes < MAX_SIZES; s = strtok(NULL, ","))
                 o->sizes[o->nsizes++] = atoi(s);
         } else if (!strcmp(argv[i], "--threads") && i + 1 < argc) {
             o->max_threads = atoi(argv[++i]);
+        } else if (!strcmp(argv[i], "--thread-list") && i + 1 < argc) {
+            for (char *s = strtok(argv[++i], ","); s && o->ntl < MAX_TLIST; s = strtok(NULL, ","))
+                if (atoi(s) >= 1 && atoi(s) <= MAX_THREADS) o->tlist[o->ntl++] = atoi(s);
+        } else if (!strcmp(argv[i], "--rep-seconds") && i + 1 < argc) {
+            o->rep_seconds = atof(argv[++i]);
         } else if (!strcmp(argv[i], "--reps") && i + 1 < argc) {
             o->reps = atoi(argv[++i]);
         } else if (!strcmp(argv[i], "--no-stream")) {
@@ -104,6 +125,13 @@ static void parse(int argc, char **argv, options_t *o)
     if (o->reps < 3) o->reps = 3;
     if (o->reps > MAX_REPS) o->reps = MAX_REPS;
     if (o->max_threads < 1) o->max_threads = 1;
+    if (o->max_threads > MAX_THREADS) o->max_threads = MAX_THREADS;
+    if (!(o->rep_seconds > 0.0)) o->rep_seconds = 0.01;
+    if (o->ntl == 0) /* 1..max_threads; beyond MAX_TLIST counts, a stride */
+        for (int t = 1; t <= o->max_threads; t += 1 + (o->max_threads - 1) / MAX_TLIST) o->tlist[o->ntl++] = t;
+    else
+        for (int k = 0; k < o->ntl; ++k)
+            if (o->tlist[k] > o->max_threads) o->max_threads = o->tlist[k];
 }
 
 static void hoomd_scene(pl_scene_t *sc, int L)
@@ -278,20 +306,23 @@ int main(int argc, char **argv)
     }
     printf("# bench_srd  peloid %s  cflags %s  real %s  max threads %d\n", PL_GIT_REV, PL_CFLAGS,
            PL_REAL_NAME, o.max_threads);
+    printf("# threads:");
+    for (int k = 0; k < o.ntl; ++k) printf(" %d", o.tlist[k]);
+    printf("  reps %d  rep seconds %g\n", o.reps, o.rep_seconds);
     bench_print_topology(stdout);
     print_loadavg("start");
 
     /* STREAM triad sweep: 3 arrays of 2^25 doubles (768 MiB, >> any L3). */
     const size_t n_stream = (size_t)1 << 25;
-    double stream[65];
     const char *shdr = "kernel\tthreads\tn\tGBps_median\tGBps_min\tGBps_max\n";
     printf("%s", shdr);
     fputs(shdr, stsv);
-    for (int t = 1; t <= o.max_threads && t <= 64; ++t) {
+    for (int k = 0; k < o.ntl; ++k) {
+        const int t = o.tlist[k];
         double lo = NAN, hi = NAN;
-        stream[t] = o.no_stream ? NAN : bench_stream_triad(n_stream, t, o.reps, &lo, &hi);
-        printf("triad\t%d\t%zu\t%.3f\t%.3f\t%.3f\n", t, n_stream, stream[t], lo, hi);
-        fprintf(stsv, "triad\t%d\t%zu\t%.3f\t%.3f\t%.3f\n", t, n_stream, stream[t], lo, hi);
+        const double g = o.no_stream ? NAN : bench_stream_triad(n_stream, t, o.reps, &lo, &hi);
+        printf("triad\t%d\t%zu\t%.3f\t%.3f\t%.3f\n", t, n_stream, g, lo, hi);
+        fprintf(stsv, "triad\t%d\t%zu\t%.3f\t%.3f\t%.3f\n", t, n_stream, g, lo, hi);
     }
     fclose(stsv);
 
@@ -304,10 +335,10 @@ int main(int argc, char **argv)
     /* The triad is measured again right before each case: on a shared
      * machine the bandwidth left to us changes during the run. */
     for (int s = 0; s < o.nsizes; ++s)
-        for (int t = 1; t <= o.max_threads && t <= 64; ++t) {
+        for (int k = 0; k < o.ntl; ++k) {
             double lo, hi;
-            double sg = o.no_stream ? NAN : bench_stream_triad(n_stream, t, 3, &lo, &hi);
-            rc |= run_case(&o, o.sizes[s], t, sg, tsv);
+            double sg = o.no_stream ? NAN : bench_stream_triad(n_stream, o.tlist[k], 3, &lo, &hi);
+            rc |= run_case(&o, o.sizes[s], o.tlist[k], sg, tsv);
         }
     fclose(tsv);
     print_loadavg("end");
