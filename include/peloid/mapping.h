@@ -93,7 +93,7 @@ typedef struct {
     double phi;               /* colloid volume fraction of the calibration box */
     long long steps;
     int n_colloids, box;
-    double cpu_s;             /* CPU time of the run (0: from the cache) */
+    double wall_s;            /* wall time of the run (0: read from a cache) */
     char cache[640];          /* the cache file it was read from or written to */
 } pl_mapping_calibration_t;
 

@@ -46,7 +46,7 @@ void pl_mapping_diffusion_print(const pl_mapping_t *m, FILE *f)
                    "+ %.4g periodic images (Hasimoto); the coupling's theory 1/xi = %.5g (measured/theory %.3g); %s "
                    "%s\n",
                 c->n_colloids, c->box, c->phi, c->steps, c->d_box, c->d_box_se, c->hasimoto, c->d_theory,
-                c->d_inf / c->d_theory, c->cpu_s > 0 ? "run now, cached in" : "read from", c->cache);
+                c->d_inf / c->d_theory, c->wall_s > 0 ? "run now, cached in" : "read from", c->cache);
     if (m->box_periodic)
         fprintf(f, "    in this scene's periodic box (L = %.4g a0) a dilute colloid diffuses with D_L = %.5g a0^2/t0 "
                    "= %.4g m^2/s, %.4g of the real D (periodic images, Hasimoto; compare D_L with a measured D)\n",
@@ -75,7 +75,7 @@ json_t *pl_mapping_diffusion_json(const pl_mapping_t *m)
         json_object_set_new(k, "box_cells", json_integer(c->box));
         json_object_set_new(k, "steps", json_integer(c->steps));
         json_object_set_new(k, "phi", json_real(c->phi));
-        json_object_set_new(k, "cpu_s", json_real(c->cpu_s));
+        json_object_set_new(k, "wall_s", json_real(c->wall_s));
         json_object_set_new(k, "cache", json_string(c->cache));
         json_object_set_new(o, "calibration", k);
     }

@@ -12,9 +12,11 @@
  * gravity or pair forces; coupling II: 32 colloids in one box (points in
  * their cells; 0.8 % of the cells); coupling I: one colloid per box, in
  * replicas (no overlaps, no concentration effect).  D from the slope of the
- * mean-squared displacement between the lags t1 = 4 tau_v and t2 = 12 tau_v
- * (tau_v = M D: the velocity relaxation, so the slope is 0.6 % below the
- * long-time one), averaged over colloids, origins and replicas; its standard
+ * mean-squared displacement between the lags t1 = 4 tau_v and t2 = 12 tau_v,
+ * tau_v = 2 M D_theory, a bound of the velocity relaxation time M D (coupling
+ * II colloids move ~2x faster than the theory's D): for an exponential
+ * relaxation the slope is then at most (e^-4 - e^-12) / 8 = 0.23 % below the
+ * long-time one; averaged over colloids, origins and replicas; its standard
  * error from 8 blocks of time origins per replica.  The periodic images
  * slow a colloid by 2.837 kT / (6 pi eta L) (Hasimoto 1959, PL Eq. 43; eta
  * of the rule: PL Eqs. 9-15 or Hecht Eq. 28), which is added back for the
@@ -247,7 +249,7 @@ static int cal_run(const pl_scene_t *sc, const cal_plan_t *p, int nthreads, pl_m
     cal->n_colloids = p->n * p->replicas;
     cal->box = p->L;
     cal->steps = p->steps;
-    cal->cpu_s = omp_get_wtime() - t0;
+    cal->wall_s = omp_get_wtime() - t0;
     if (!(isfinite(cal->d_inf) && cal->d_inf > 0))
         return pl_err_set(err, PL_ERR_GUARD, "calibration: the measured colloid D is %g a0^2/t0 (not positive)",
                           cal->d_inf);
@@ -256,10 +258,10 @@ static int cal_run(const pl_scene_t *sc, const cal_plan_t *p, int nthreads, pl_m
 
 /* ---- the cache ------------------------------------------------------------ */
 
-static const char *const FIELDS[] = {"d_inf", "d_inf_se", "d_box", "d_box_se", "hasimoto", "phi", "cpu_s"};
+static const char *const FIELDS[] = {"d_inf", "d_inf_se", "d_box", "d_box_se", "hasimoto", "phi", "wall_s"};
 static double *field(pl_mapping_calibration_t *c, int k)
 {
-    double *f[] = {&c->d_inf, &c->d_inf_se, &c->d_box, &c->d_box_se, &c->hasimoto, &c->phi, &c->cpu_s};
+    double *f[] = {&c->d_inf, &c->d_inf_se, &c->d_box, &c->d_box_se, &c->hasimoto, &c->phi, &c->wall_s};
     return f[k];
 }
 enum { NFIELDS = sizeof FIELDS / sizeof FIELDS[0] };
@@ -331,7 +333,7 @@ static int from_cache(const char *path, const pl_scene_t *sc, pl_mapping_calibra
 {
     if (cache_read(path, cal)) return 0;
     snprintf(cal->cache, sizeof cal->cache, "%s", path);
-    cal->cpu_s = 0.0; /* this run paid nothing */
+    cal->wall_s = 0.0; /* this run paid nothing */
     cal->d_theory = sc->mapping.map.d_col_theory;
     return 1;
 }
