@@ -271,16 +271,32 @@ def plot_sediment(f, obs, u, outdir, lines):
     ht, hv = u("time", h["time"][:]), u("len", h["value"][:])
     axs[1].plot(ht, hv, lw=0.8, label="mean height")
     e = obs.get("settling_velocity")
-    if e:
+    if e and e.get("plateau", True):  # the run's mean means something only when it is steady
         vs, vse = u("vel", e["value"]), u("vel", e["stderr"])
-        axs[1].plot(t, hv[0] + vs * (t - ht[0]), "r--", lw=0.8, label=f"v = {vs:.4g} ± {vse:.2g} {u.name('vel')}")
+        axs[1].plot(t, hv[0] + vs * (t - ht[0]), "r--", lw=0.8, label=f"run mean v = {vs:.4g} ± {vse:.2g} {u.name('vel')}")
+    ini, text = obs.get("initial_settling_velocity"), []
+    if ini and "value" in ini:  # the homogeneous fall: its window and the references
+        k = min(int(ini["samples"]), len(ht) - 1)
+        tw = ht[: k + 1]
+        vi, vie = u("vel", ini["value"]), u("vel", ini["stderr"])
+        axs[1].plot(tw, hv[0] - vi * (tw - ht[0]), "C3-", lw=2,
+                    label=f"initial v = {vi:.3g} ± {vie:.2g} {u.name('vel')}")
+        if ini.get("stokes") is not None:
+            st = u("vel", ini["stokes"])
+            axs[1].plot(tw, hv[0] - st * (tw - ht[0]), "k--", lw=0.8, label=f"Stokes {st:.3g} {u.name('vel')}")
+        lines_ini = (f"initial settling velocity {vi:.4g} ± {vie:.2g} {u.name('vel')} over the first {k} samples "
+                     f"(homogeneous: halves within {ini['drift_z']:.2f} SE)")
+        if ini.get("stokes") is not None:
+            lines_ini += (f"; Stokes {u('vel', ini['stokes']):.4g}, Richardson-Zaki (1 - phi)^4.65 at phi = "
+                          f"{ini['volume_fraction']:.3g}: {u('vel', ini['richardson_zaki_4.65']):.4g} {u.name('vel')}")
+        text = [lines_ini, ""]
     axs[1].set_xlabel(f"time [{u.name('time')}]")
     axs[1].set_ylabel(f"height [{u.name('len')}]")
     axs[1].legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "sediment_phi.png"), dpi=120)
     plt.close(fig)
-    lines += ["## Sedimentation", "", "![phi(z, t)](sediment_phi.png)", ""]
+    lines += ["## Sedimentation", "", "![phi(z, t)](sediment_phi.png)", ""] + text
 
 
 def plot_viscosity(f, obs, u, outdir, lines):
