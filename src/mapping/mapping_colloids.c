@@ -244,6 +244,11 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
              n, why, n_map, n_contact, k2, h_at, c->contact_time, cs->min_contact_steps, h_reach, e_reach,
              n_damp);
     c->reach_gap = h_reach;
+    if (mp->cg.md_dt > 0 && n > n_map) /* the user's MD step made finer: said, not silent */
+        pl_mapping_warn(&mp->map, PL_SEV_NOTE, "MD_DT_REFINED", mp->map.dt / (double)n,
+                        "coarse_graining.md_dt = %g s (%lld MD steps per SRD step) is refined to %.4g s (%lld "
+                        "steps) by the %s (its criterion: colloids.substeps in peloid params)",
+                        mp->cg.md_dt, n_map, mp->map.dt / (double)n, n, why);
     if (h_reach > 0.0 && (p.terms & PL_CT_DLVO))
         pl_mapping_warn(&mp->map, PL_SEV_NOTE, "CONTACT_SHIELDED", h_reach,
                         "the DLVO barrier keeps pairs out of gaps below %.4g a0 (more than "
