@@ -149,8 +149,9 @@ static int pair_range(const pl_scene_t *s, const pl_colloid_pair_params_t *p, pl
     for (int k = 0; k < 3; ++k) {
         if (!p->periodic[k] || rc <= 0.5 * s->box.cells[k]) continue;
         int debye = (p->terms & PL_CT_DLVO) && ph->surface_potential != 0;
-        size_t off = OFF(mapping.physical.box);
-        const char *key = "physical.box";
+        int box_given = given(s, OFF(mapping.physical.box)) || !given(s, OFF(box.cells));
+        size_t off = box_given ? OFF(mapping.physical.box) : OFF(box.cells);
+        const char *key = box_given ? "physical.box" : "box.cells";
         if (debye && given(s, OFF(mapping.physical.kappa))) {
             off = OFF(mapping.physical.kappa);
             key = "physical.kappa";
