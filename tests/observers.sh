@@ -495,5 +495,28 @@ if "$PELOID" report free1 > /dev/null && [ -s free1/report.md ] && [ -s free1/rd
    "$PELOID" report cff1 > /dev/null && [ -s cff1/cff.png ] && "$PELOID" report eb2.0 > /dev/null && [ -s eb2.0/bonds.png ]
 then ok "peloid report: report.md with g(r), g_ab(r), S(q), MSD, C_FF, cluster and bond plots and the error table"
 else bad "peloid report"; fi
+# unreadable inputs of peloid report (issue 37): one line naming the file,
+# exit non-zero, no Python traceback
+rep_bad() { # NAME DIR FILE: peloid report DIR must fail on FILE
+  "$PELOID" report "$2" > /dev/null 2> "$1.err"; local rc=$?
+  if [ $rc -ne 0 ] && [ "$(wc -l < "$1.err")" -eq 1 ] && grep -q "^peloid report: .*$3: " "$1.err" &&
+     ! grep -q Traceback "$1.err"
+  then ok "peloid report on $1: $(cat "$1.err")"
+  else bad "peloid report on $1: rc $rc $(head -c 600 "$1.err")"; fi
+}
+mkdir -p rep_h5 rep_json rep_nods
+cp free1/summary.json free1/thermo.tsv rep_h5/ && head -c 3000 free1/observables.h5 > rep_h5/observables.h5
+rep_bad truncated_h5 rep_h5 rep_h5/observables.h5
+cp free1/observables.h5 free1/thermo.tsv rep_json/ && printf '{' > rep_json/summary.json
+rep_bad bad_json rep_json rep_json/summary.json
+rep_bad missing_summary rep_missing rep_missing/summary.json
+cp free1/summary.json free1/observables.h5 rep_nods/
+$PY -c 'import h5py; f = h5py.File("rep_nods/observables.h5", "r+"); del f["observables/colloid_rdf/value"]' 2> /dev/null
+rep_bad missing_dataset rep_nods rep_nods/observables.h5
+mkdir -p sed_h5 && cp free1/summary.json sed_h5/ && head -c 3000 free1/observables.h5 > sed_h5/colloids.h5
+$PY "$TOOLS/plot_sediment.py" sed_h5 > /dev/null 2> sed_h5.err; rc=$?
+if [ $rc -ne 0 ] && [ "$(wc -l < sed_h5.err)" -eq 1 ] && grep -q "^plot_sediment: sed_h5/colloids.h5: " sed_h5.err
+then ok "plot_sediment.py on a truncated colloids.h5: $(cat sed_h5.err)"
+else bad "plot_sediment.py on a truncated colloids.h5: rc $rc $(head -c 600 sed_h5.err)"; fi
 echo "observers.sh: $pass passed, $fail failed"
 [ $fail -eq 0 ]

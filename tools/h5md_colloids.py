@@ -8,9 +8,24 @@ import h5py
 import numpy as np
 
 
+class InputError(Exception):
+    """A file that cannot be read as peloid's colloids.h5: "FILE: what is wrong"."""
+
+
 def load(path):
     """dict: pos, vel (T x N x 3), img (T x N x 3), t, step (T), edges (3),
-    mass, rad (N), all in a0, t0, m_f."""
+    mass, rad (N), all in a0, t0, m_f.  Raises InputError (one line naming
+    the file) on a missing, truncated or corrupt file or a missing dataset."""
+    try:
+        return _load(path)
+    except FileNotFoundError:
+        raise InputError(f"{path}: no such file (colloids.h5 needs colloids.trajectory_interval > 0)") from None
+    except (OSError, KeyError, ValueError, TypeError, IndexError) as e:
+        raise InputError(f"{path}: unreadable ({type(e).__name__}: {e}); allowed: the colloids.h5 "
+                         "peloid run writes") from None
+
+
+def _load(path):
     with h5py.File(path, "r") as f:
         g = f["particles/colloids"]
         a0, t0, mf = 1.0, 1.0, 1.0

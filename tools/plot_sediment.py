@@ -33,8 +33,14 @@ import h5md_colloids  # noqa: E402
 
 
 def load(outdir):
-    with open(os.path.join(outdir, "summary.json")) as f:
-        summ = json.load(f)
+    path = os.path.join(outdir, "summary.json")
+    try:
+        with open(path) as f:
+            summ = json.load(f)
+    except OSError as e:
+        raise h5md_colloids.InputError(f"{path}: {e.strerror}") from None
+    except (ValueError, UnicodeDecodeError) as e:
+        raise h5md_colloids.InputError(f"{path}: not valid JSON ({e})") from None
     c = h5md_colloids.load(os.path.join(outdir, "colloids.h5"))
     pos, img, t, edges, mass, rad = c["pos"], c["img"], c["t"], c["edges"], c["mass"], c["rad"]
     z = pos[:, :, 2] + img[:, :, 2] * edges[2]
@@ -76,10 +82,17 @@ def main():
     ap.add_argument("outdir", nargs="?", default="out/quickstart")
     ap.add_argument("--png", default=None)
     a = ap.parse_args()
-    summ, t, z, edges, mass, rad = load(a.outdir)
+    try:
+        summ, t, z, edges, mass, rad = load(a.outdir)
+    except h5md_colloids.InputError as e:  # one line naming the file, no traceback
+        sys.exit(f"plot_sediment: {e}")
     if len(t) < 4:
         sys.exit("plot_sediment: fewer than 4 trajectory frames in %s" % a.outdir)
-    pr = predictions(summ, mass, rad)
+    try:
+        pr = predictions(summ, mass, rad)
+    except (KeyError, TypeError, ValueError, AttributeError) as e:
+        sys.exit(f"plot_sediment: {a.outdir}/summary.json: a scene value is missing or malformed "
+                 f"({type(e).__name__}: {e})")
     zcm = (z * mass[None, :]).sum(1) / mass.sum()
     v, se, t_fit, p = measure(t, zcm)
 

@@ -368,50 +368,100 @@ def error_table(obs, lines):
     lines.append("")
 
 
-def main(argv):
-    if len(argv) != 2 or argv[1].startswith("-"):
-        print("usage: report.py OUTDIR", file=sys.stderr)
-        return 2
-    outdir = argv[1]
+class InputError(Exception):
+    """An input of the report (FILE: what is wrong) that cannot be read."""
+
+
+def read_summary(path):
     try:
-        summary = json.load(open(os.path.join(outdir, "summary.json")))
+        with open(path) as f:
+            summary = json.load(f)
     except OSError as e:
-        print(f"report: {outdir}/summary.json: {e.strerror}", file=sys.stderr)
-        return 2
+        raise InputError(f"{path}: {e.strerror}") from None
+    except (ValueError, UnicodeDecodeError) as e:  # json.JSONDecodeError is a ValueError
+        raise InputError(f"{path}: not valid JSON ({e}); allowed: the summary.json peloid run writes") from None
+    if not isinstance(summary, dict):
+        raise InputError(f"{path}: not a JSON object; allowed: the summary.json peloid run writes")
+    return summary
+
+
+def plot_observables(h5, summary, obs, u, outdir, lines):
+    with h5py.File(h5, "r") as f:
+        have = f["observables"] if "observables" in f else {}
+        if "colloid_rdf" in have:
+            plot_rdf(f, summary, u, outdir, lines)
+        if "colloid_rdf_classes" in have:
+            plot_rdf_classes(f, u, outdir, lines)
+        if "colloid_sq" in have:
+            plot_sq(f, obs, u, outdir, lines)
+        if "colloid_msd" in have:
+            plot_msd(f, obs, u, outdir, lines)
+        if "colloid_cff" in have:
+            plot_cff(f, obs, u, outdir, lines)
+        if "cluster_number" in have:
+            plot_clusters(f, obs, u, outdir, lines)
+        if "cluster_bonds_primary" in have:
+            plot_bonds(f, obs, u, outdir, lines)
+        if "colloid_phi_z" in have:
+            plot_sediment(f, obs, u, outdir, lines)
+        if "fluid_velocity_distribution" in have or "colloid_velocity_distribution" in have:
+            plot_vdist(f, obs, outdir, lines)
+        if "fluid_viscosity_gk" in have:
+            plot_viscosity(f, obs, u, outdir, lines)
+
+
+def report(outdir):
+    summary = read_summary(os.path.join(outdir, "summary.json"))
     obs = summary.get("observables", {})
-    u = Units(summary)
+    if not isinstance(obs, dict):
+        raise InputError(f"{outdir}/summary.json: \"observables\" is not a JSON object")
+    try:
+        u = Units(summary)
+    except (KeyError, TypeError, ValueError, ZeroDivisionError) as e:
+        raise InputError(f"{outdir}/summary.json: \"units_si\" unreadable ({type(e).__name__}: {e})") from None
     lines = [f"# Report of {summary.get('scene_file', outdir)}", "",
              f"steps {summary.get('first_step')}..{summary.get('last_step')}, "
              f"{summary.get('wall_seconds', 0):.3g} s wall, {summary.get('threads')} thread(s)", ""]
     h5 = os.path.join(outdir, "observables.h5")
     if os.path.exists(h5):
-        with h5py.File(h5, "r") as f:
-            have = f["observables"] if "observables" in f else {}
-            if "colloid_rdf" in have:
-                plot_rdf(f, summary, u, outdir, lines)
-            if "colloid_rdf_classes" in have:
-                plot_rdf_classes(f, u, outdir, lines)
-            if "colloid_sq" in have:
-                plot_sq(f, obs, u, outdir, lines)
-            if "colloid_msd" in have:
-                plot_msd(f, obs, u, outdir, lines)
-            if "colloid_cff" in have:
-                plot_cff(f, obs, u, outdir, lines)
-            if "cluster_number" in have:
-                plot_clusters(f, obs, u, outdir, lines)
-            if "cluster_bonds_primary" in have:
-                plot_bonds(f, obs, u, outdir, lines)
-            if "colloid_phi_z" in have:
-                plot_sediment(f, obs, u, outdir, lines)
-            if "fluid_velocity_distribution" in have or "colloid_velocity_distribution" in have:
-                plot_vdist(f, obs, outdir, lines)
-            if "fluid_viscosity_gk" in have:
-                plot_viscosity(f, obs, u, outdir, lines)
-    plot_thermo(outdir, u, lines)
-    error_table(obs, lines)
-    with open(os.path.join(outdir, "report.md"), "w") as out:
-        out.write("\n".join(lines))
-    print(f"report: {os.path.join(outdir, 'report.md')}")
+        # a truncated or corrupt file (OSError), a missing dataset or
+        # attribute (KeyError), or one of another shape than the observers
+        # write (ValueError, TypeError, IndexError): the file is to blame
+        try:
+            plot_observables(h5, summary, obs, u, outdir, lines)
+        except (OSError, KeyError, ValueError, TypeError, IndexError) as e:
+            raise InputError(f"{h5}: unreadable ({type(e).__name__}: {e}); allowed: the observables.h5 "
+                             "peloid run writes") from None
+    thermo = os.path.join(outdir, "thermo.tsv")
+    try:
+        plot_thermo(outdir, u, lines)
+    except (OSError, KeyError, ValueError, TypeError, IndexError) as e:
+        raise InputError(f"{thermo}: unreadable ({type(e).__name__}: {e}); allowed: the thermo.tsv "
+                         "peloid run writes") from None
+    try:
+        error_table(obs, lines)
+    except (KeyError, TypeError, ValueError) as e:
+        raise InputError(f"{outdir}/summary.json: an observable's error table unreadable "
+                         f"({type(e).__name__}: {e})") from None
+    out_path = os.path.join(outdir, "report.md")
+    try:
+        with open(out_path, "w") as out:
+            out.write("\n".join(lines))
+    except OSError as e:
+        raise InputError(f"{out_path}: cannot write: {e.strerror}") from None
+    print(f"report: {out_path}")
+
+
+def main(argv):
+    if len(argv) != 2 or argv[1].startswith("-"):
+        print("usage: report.py OUTDIR", file=sys.stderr)
+        return 2
+    try:
+        report(argv[1])
+    except InputError as e:
+        # one line, no traceback: the file and what is wrong with it
+        print(f"peloid report: {e}", file=sys.stderr)
+        return 2
     return 0
 
 

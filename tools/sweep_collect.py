@@ -41,8 +41,12 @@ def load_point(out, p):
            "message": "", "last_step": None, "wall_seconds": None, "observables": {}}
     st = os.path.join(out, "status", p["id"] + ".tsv")
     if os.path.exists(st):
-        code, _, msg = open(st).read().rstrip("\n").partition("\t")
-        row["exit_code"] = int(code)
+        try:
+            code, _, msg = open(st).read().rstrip("\n").partition("\t")
+            code = int(code)
+        except (OSError, ValueError, UnicodeDecodeError) as e:
+            sys.exit(f"peloid: error: {st}: {e}; allowed: EXIT_CODE<TAB>MESSAGE as peloid sweep writes it")
+        row["exit_code"] = code
         row["message"] = msg
         row["status"] = "ok" if int(code) == 0 else "failed"
     sp = os.path.join(out, p["id"], "summary.json")
@@ -124,6 +128,11 @@ def main():
         study = json.load(open(os.path.join(out, "points.json")))
     except (OSError, ValueError) as e:
         sys.exit(f"peloid: error: {out}/points.json: {e}; allowed: the output of peloid sweep")
+    ok_keys = isinstance(study, dict) and all(k in study for k in ("study", "study_file", "keys", "points"))
+    if not ok_keys or not all(isinstance(p, dict) and all(k in p for k in ("id", "index", "params"))
+                              for p in study["points"]):
+        sys.exit(f"peloid: error: {out}/points.json: not a study (needs study, study_file, keys and points "
+                 "with id, index, params); allowed: the output of peloid sweep")
     rows = [load_point(out, p) for p in study["points"]]
     names = []
     for r in rows:

@@ -20,6 +20,9 @@ typedef struct {
     double barrier_h, barrier_u;   /* primary maximum (NAN if none) */
     double secmin_h, secmin_u;     /* secondary minimum (NAN if none) */
     double hcut, trunc_u, trunc_f; /* cut-off gap, |V| and |F| cut off there */
+    /* on a set-up error: the dlvo{} key it is blamed on (scene offset, name) */
+    size_t fail_off;
+    const char *fail_key;
 } pl_colloid_dlvo_info_t;
 
 /* Colloid-colloid diameter and spurious depletion (PL Sec. III.C.1),

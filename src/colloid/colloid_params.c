@@ -79,6 +79,8 @@ int pl_colloid_dlvo_setup(const pl_scene_dlvo_t *s, double d, pl_colloid_pair_pa
     info->A = p->hamaker;
     info->d_ref = d;
     info->h0 = h0;
+    info->fail_off = offsetof(pl_scene_t, colloids.dlvo.primary_depth);
+    info->fail_key = "dlvo.primary_depth";
     /* match gap: first sign change of f from - to + on a fine grid above h0 */
     double hmax = fmax(60.0 / p->kappa, 5.0 * d);
     int ng = 200000;
@@ -120,10 +122,15 @@ int pl_colloid_dlvo_setup(const pl_scene_dlvo_t *s, double d, pl_colloid_pair_pa
     for (int k = ng; k >= 0; --k) {
         double h = hm + (hmax - hm) * (double)k / ng;
         if (fabs(v_of(p, d, h)) >= tol) {
-            if (k == ng)
+            if (k == ng) {
+                info->fail_off = offsetof(pl_scene_t, colloids.dlvo.cutoff_energy);
+                info->fail_key = "dlvo.cutoff_energy";
                 return pl_err_set(err, PL_ERR_INPUT,
-                                  "dlvo: |V| is still %.3g kT at gap %g a0; raise dlvo.cutoff_energy",
-                                  fabs(v_of(p, d, h)), h);
+                                  "dlvo: |V| is still %.3g kT at gap %g a0 (the largest gap scanned) "
+                                  "with dlvo.cutoff_energy = %g kT; allowed: a "
+                                  "cutoff_energy above %.3g kT",
+                                  fabs(v_of(p, d, h)), h, tol, fabs(v_of(p, d, h)));
+            }
             double lo = h, hi = hm + (hmax - hm) * (double)(k + 1) / ng;
             for (int it = 0; it < 200; ++it) {
                 double mid = 0.5 * (lo + hi);

@@ -69,9 +69,9 @@ int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err)
     pl_colloid_pair_params_t p;
     pl_colloid_dlvo_info_t info;
     pl_err_t sub = {0, ""};
-    if (pl_colloid_pair_params(scene, &p, &info, &sub))
-        return pl_scene_fail(scene, err, OFF(colloids.dlvo.primary_depth), "dlvo.primary_depth",
-                             "%s", sub.msg);
+    if (pl_colloid_pair_params(scene, &p, &info, &sub)) /* the dlvo{} key the failure names */
+        return info.fail_key ? pl_scene_fail(scene, err, info.fail_off, info.fail_key, "%s", sub.msg)
+                             : pl_err_set(err, sub.code, "%s", sub.msg);
     double rmax = cs->radius * (1.0 + sqrt(3.0) * cs->polydispersity);
     const double rc = pl_colloid_pair_cutoff(&p, rmax);
     for (int k = 0; k < 3; ++k) {

@@ -55,7 +55,23 @@ static int check_settling(const pl_scene_t *scene, pl_err_t *err)
     double xi = pl_coupling2_friction(scene, mass);
     double vs = mass * gn / xi, e = mass * vs * vs / kT;
     if (e <= bound) return 0;
-    return pl_scene_fail(scene, err, OFF(colloids.gravity), "colloids.gravity",
+    /* a physical scene: the model gravity g t0^2 / a0 comes from the SRD
+     * step in seconds the user wrote, else from physical.gravity */
+    size_t off = OFF(colloids.gravity);
+    const char *key = "colloids.gravity";
+    if (scene->mapping.enabled && pl_scene_line_of(scene, off) <= 0) {
+        int dt_given = pl_scene_line_of(scene, OFF(mapping.cg.srd_dt)) > 0;
+        off = dt_given ? OFF(mapping.cg.srd_dt) : OFF(mapping.physical.gravity);
+        key = dt_given ? "coarse_graining.srd_dt" : "physical.gravity";
+    }
+    if (off == OFF(mapping.cg.srd_dt))
+        return pl_scene_fail(scene, err, off, key,
+                             "%g s makes t0 = %.4g s and the model gravity %.4g a0/t0^2: coupling II "
+                             "colloids settle too fast (M v_s^2 >= %.3g kT > coupling.max_settling_energy = "
+                             "%g, Hecht Sec. VI: tau_P << tau_S); allowed: a shorter SRD step, or 0 "
+                             "(derived from coarse_graining.time_match)",
+                             scene->mapping.cg.srd_dt, scene->mapping.map.t0, gn, e, bound);
+    return pl_scene_fail(scene, err, off, key,
                          "coupling II settling too fast: M = %.4g m_f in cells of %.3g fluid "
                          "particles, xi_II = %.4g, v_s >= M g / xi_II = %.3g a0/t0, M v_s^2 = "
                          "%.3g kT > coupling.max_settling_energy = %g (Hecht Sec. VI: tau_P << "

@@ -136,6 +136,43 @@ static double stiffest(const pl_colloid_pair_params_t *p, double d, double max_o
     return best;
 }
 
+/* The pair cut-off against the periodic box edges (minimum image), checked
+ * here, where the physical key that set the range is known: the Debye
+ * length (physical.kappa or ionic_strength) for a screened Coulomb term,
+ * else physical.box. */
+static int pair_range(const pl_scene_t *s, const pl_colloid_pair_params_t *p, pl_err_t *err)
+{
+    const pl_scene_physical_t *ph = &s->mapping.physical;
+    const pl_scene_colloids_t *cs = &s->colloids;
+    double a0 = s->mapping.map.a0;
+    double rc = pl_colloid_pair_cutoff(p, cs->radius * (1.0 + sqrt(3.0) * cs->polydispersity));
+    for (int k = 0; k < 3; ++k) {
+        if (!p->periodic[k] || rc <= 0.5 * s->box.cells[k]) continue;
+        int debye = (p->terms & PL_CT_DLVO) && ph->surface_potential != 0;
+        int box_given = given(s, OFF(mapping.physical.box)) || !given(s, OFF(box.cells));
+        size_t off = box_given ? OFF(mapping.physical.box) : OFF(box.cells);
+        const char *key = box_given ? "physical.box" : "box.cells";
+        if (debye && given(s, OFF(mapping.physical.kappa))) {
+            off = OFF(mapping.physical.kappa);
+            key = "physical.kappa";
+        } else if (debye && given(s, OFF(mapping.physical.ionic_strength))) {
+            off = OFF(mapping.physical.ionic_strength);
+            key = "physical.ionic_strength";
+        }
+        char why[96] = "";
+        if (debye) snprintf(why, sizeof why, "the Debye length 1/kappa = %.4g m (%.4g a0) is too long: ",
+                            1.0 / s->mapping.kappa, 1.0 / (s->mapping.kappa * a0));
+        return pl_scene_fail(s, err, off, key,
+                             "%sthe colloid pair cut-off is %.4g a0 = %.4g m, more than half the periodic box "
+                             "edge %d (%d a0 = %.4g m, minimum image); allowed: a shorter range (a Debye "
+                             "length 1/kappa well below the box: larger physical.kappa or ionic_strength) "
+                             "or physical.box edges >= %.4g m",
+                             why, rc, rc * a0, k, s->box.cells[k], s->box.cells[k] * a0,
+                             2.0 * rc * a0);
+    }
+    return 0;
+}
+
 static int substeps(pl_scene_t *s, pl_err_t *err)
 {
     pl_scene_mapping_t *mp = &s->mapping;
@@ -144,9 +181,15 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
     pl_colloid_pair_params_t p;
     pl_colloid_dlvo_info_t info;
     pl_err_t e = {0, ""};
-    if (pl_colloid_pair_params(s, &p, &info, &e))
+    if (pl_colloid_pair_params(s, &p, &info, &e)) {
+        /* a dlvo{} model choice the user wrote (cutoff_energy, primary_depth)
+         * is to blame where the failure names it; else the physical input */
+        if (info.fail_key && given(s, info.fail_off))
+            return pl_scene_fail(s, err, info.fail_off, info.fail_key, "%s", e.msg);
         return pl_scene_fail(s, err, OFF(mapping.physical.surface_potential), "physical.surface_potential",
                              "the derived DLVO potential: %s", e.msg);
+    }
+    if (pair_range(s, &p, err)) return PL_ERR_INPUT;
     if (p.terms & PL_CT_DLVO) {
         char bar[64] = "none", sec[64] = "none"; /* the potential need not have them */
         if (isfinite(info.barrier_u)) snprintf(bar, sizeof bar, "%.4g kT at gap %.4g a0", info.barrier_u, info.barrier_h);
@@ -182,11 +225,19 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
         n = n_damp;
         why = "damping guard";
     }
-    if (n > 1000000)
-        return pl_scene_fail(s, err, OFF(mapping.physical.radius), "physical.radius",
-                             "the stiffest contact (U'' = %.4g kT/a0^2, collision time %.4g t0) needs %lld MD "
-                             "steps per SRD step (more than 1e6); soften it: coarse_graining.hertz_K, "
-                             "dlvo.primary_depth", k2, c->contact_time, n);
+    if (n > 1000000) {
+        /* a coarse_graining.cell_size the user wrote sets R / a0 (the colloid
+         * mass and contact curvature in model units): blame it first */
+        int cell = given(s, OFF(mapping.cg.cell_size));
+        return pl_scene_fail(s, err, cell ? OFF(mapping.cg.cell_size) : OFF(mapping.physical.radius),
+                             cell ? "coarse_graining.cell_size" : "physical.radius",
+                             "%s%.6g%s gives R = %.4g a0: the stiffest contact (U'' = %.4g kT/a0^2, collision "
+                             "time %.4g t0) needs %lld MD steps per SRD step (more than 1e6); soften it: coarse_graining.hertz_K, "
+                             "dlvo.primary_depth%s",
+                             cell ? "a0/R = " : "R = ", cell ? mp->cg.cell_size : mp->physical.radius,
+                             cell ? "" : " m", cs->radius,
+                             k2, c->contact_time, n, cell ? ", or a smaller coarse_graining.cell_size" : "");
+    }
     snprintf(c->substeps_reason, sizeof c->substeps_reason,
              "%lld MD steps per SRD step from the %s; mapping %lld, contact %lld (U''max = %.4g kT/a0^2 at gap "
              "%.3g a0, collision %.4g t0, >= %g steps: colloids.min_contact_steps; gaps down to %.4g a0 "
@@ -194,6 +245,11 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
              n, why, n_map, n_contact, k2, h_at, c->contact_time, cs->min_contact_steps, h_reach, e_reach,
              n_damp);
     c->reach_gap = h_reach;
+    if (mp->cg.md_dt > 0 && n > n_map) /* the user's MD step made finer: said, not silent */
+        pl_mapping_warn(&mp->map, PL_SEV_NOTE, "MD_DT_REFINED", mp->map.dt / (double)n,
+                        "coarse_graining.md_dt = %g s (%lld MD steps per SRD step) is refined to %.4g s (%lld "
+                        "steps) by the %s (its criterion: colloids.substeps in peloid params)",
+                        mp->cg.md_dt, n_map, mp->map.dt / (double)n, n, why);
     if (h_reach > 0.0 && (p.terms & PL_CT_DLVO))
         pl_mapping_warn(&mp->map, PL_SEV_NOTE, "CONTACT_SHIELDED", h_reach,
                         "the DLVO barrier keeps pairs out of gaps below %.4g a0 (more than "

@@ -163,6 +163,24 @@ static int apply_box(pl_scene_t *s, pl_err_t *err)
     return 0;
 }
 
+/* A coarse_graining.md_dt longer than the SRD step cannot be used (one MD
+ * step per SRD step at most): refused, not replaced.  Checked once the SRD
+ * step in seconds is final: given (srd_dt), kinematic matching, calibrated,
+ * or without colloids (no calibration run follows). */
+static int check_md_dt(const pl_scene_t *s, pl_err_t *err)
+{
+    const pl_scene_mapping_t *mp = &s->mapping;
+    const pl_mapping_t *m = &mp->map;
+    int final = mp->cg.srd_dt > 0 || mp->cg.time_match == PL_MATCH_KINEMATIC || mp->calib.d_inf > 0 ||
+                mp->colloid.n_colloids == 0;
+    if (!final || !(mp->cg.md_dt > 0) || mp->cg.md_dt <= m->dt * (1.0 + 1e-9)) return 0;
+    return pl_scene_fail(s, err, OFF(mapping.cg.md_dt), "coarse_graining.md_dt",
+                         "%g s is longer than the SRD step %.6g s (lambda t0, coarse_graining.mean_free_path = "
+                         "%g); allowed: 0 < md_dt <= %.6g s (rounded to divide the SRD step), or 0 (derived "
+                         "from min(tau_V, tau_P) / md_resolution)",
+                         mp->cg.md_dt, m->dt, mp->cg.mean_free_path, m->dt);
+}
+
 int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
 {
     pl_scene_mapping_t *mp = &s->mapping;
@@ -194,7 +212,7 @@ int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
     s->srd.dt = cg.lambda;              /* PL Eq. 4: dt = lambda t0 */
     s->fluid.density = cg.gamma;
     s->fluid.temperature = 1.0;         /* kT_model is the energy unit */
-    if (electrostatics(s, err) || apply_box(s, err)) return PL_ERR_INPUT;
+    if (electrostatics(s, err) || apply_box(s, err) || check_md_dt(s, err)) return PL_ERR_INPUT;
     pl_mapping_diffusion_box(s);
 
     pl_mapping_colloid_t *c = &mp->colloid;

@@ -88,7 +88,8 @@ static const pl_key_t cg_keys[] = {
     {"srd_dt", PL_KEY_REAL, C(srd_dt), 0, 1e6, 0, NULL, 0, NULL,
      "s", "SRD step; 0: derived from time_match (Hecht Eq. 30); set it to use a rounded step"},
     {"md_dt", PL_KEY_REAL, C(md_dt), 0, 1e6, 0, NULL, 0, NULL,
-     "s", "MD step; 0: min(tau_V, tau_P) of the model / md_resolution; rounded to divide the SRD step"},
+     "s", "MD step; 0: min(tau_V, tau_P) of the model / md_resolution; rounded to divide the SRD step "
+          "(longer than it: refused); made finer where the contact or damping guard needs it (note MD_DT_REFINED)"},
     {"md_resolution", PL_KEY_REAL, C(md_resolution), 1, 1e6, 0, NULL, 20, NULL,
      "steps", "MD steps per shortest colloid time (Hecht Sec. II: ~20 steps per collision)"},
     {"hertz_K", PL_KEY_REAL, C(hertz_K), 0, 1e15, 0, NULL, 0, NULL,
