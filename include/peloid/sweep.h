@@ -6,6 +6,7 @@
 #ifndef PELOID_SWEEP_H
 #define PELOID_SWEEP_H
 
+#include <signal.h>
 #include <stdio.h>
 
 #include "peloid/error.h"
@@ -57,6 +58,11 @@ typedef struct {
     int collect_only;     /* only collect the table and plot */
     int progress_tty;     /* redraw one progress line (stderr is a terminal) */
     FILE *log;
+    /* The driver's signal flag (NULL: none): 0 none, S > 0 a first signal S
+     * (forwarded to the running points, which stop after their step and
+     * write a checkpoint; no new point starts), -S a second one (the points
+     * are killed, the sweep returns at once).  Polled between waits. */
+    volatile sig_atomic_t *interrupt;
 } pl_sweep_opts_t;
 
 /* Processes and threads for `todo` points on `cpus` CPUs: jobs = min(todo,
@@ -65,10 +71,13 @@ typedef struct {
 void pl_sweep_plan(int todo, int cpus, int jobs_given, int threads_given, int *jobs, int *threads);
 
 /* The sweep: checks every point, writes OUT/points.json and each point's
- * scene, runs the points not yet finished, records each failure
- * (OUT/status/), and collects OUT/sweep.{tsv,json,png}.  Returns 0 when every
- * point ran, 1 when some failed (recorded; the others ran), PL_ERR_* when the
- * sweep itself could not run. */
+ * scene, runs the points not yet finished (a point a signal interrupted
+ * resumes from its own checkpoint), records each failure (OUT/status/), and
+ * collects OUT/sweep.{tsv,json,png}.  Each point runs in its own process
+ * group.  Returns 0 when every point ran, 1 when some failed (recorded; the
+ * others ran), PL_ERR_INTERRUPTED when o->interrupt was raised (the running
+ * points were interrupted and recorded, the table written unless a second
+ * signal came), PL_ERR_* when the sweep itself could not run. */
 int pl_sweep(pl_study_t *study, const pl_sweep_opts_t *o, pl_err_t *err);
 
 #endif
