@@ -73,6 +73,15 @@ rm out/grid/p002/summary.json
 grep -q "3 finished before, 1 to run" resume.err && [ -f out/grid/p002/summary.json ] \
   && ok "a point without a complete summary.json is run again" || bad "resume: $(cat resume.err)"
 
+# a finished point whose status still records an earlier failure (a run that
+# failed while another held its folder, which then finished it): the table and
+# the exit code agree, the point is ok
+printf '2\tpeloid: error: out/grid/p001: another peloid run is writing into this output directory\n' > out/grid/status/p001.tsv
+"$PELOID" sweep grid.cfg 2> stale.err; rc=$?
+st=$(awk -F'\t' '$1 == "p001" { print $2 }' out/grid/sweep.tsv)
+[ $rc = 0 ] && [ "$st" = ok ] && ok "a finished point's stale failure status is cleared: table ok, exit 0" \
+  || bad "stale status: exit $rc, table says '$st'"
+
 # 3. a point whose value trips a guard fails alone and is recorded
 cat > fails.cfg <<'CFG'
 scene = "bd.cfg";
