@@ -17,7 +17,8 @@ typedef struct pl_study pl_study_t;
 
 /* Reads and checks a study file: every key known, every swept key a scene
  * key (section.key as `peloid keys` lists it), at least one value per key,
- * the base scene readable.  Errors: PL_ERR_INPUT, "FILE:LINE: key '...': what;
+ * the base scene readable, `name` not swept, no point twice (a value given
+ * twice on a grid axis, two equal rows of points{}).  Errors: PL_ERR_INPUT, "FILE:LINE: key '...': what;
  * allowed: ...". */
 int pl_study_load(const char *path, pl_study_t **out, pl_err_t *err);
 void pl_study_free(pl_study_t *study);
@@ -33,7 +34,7 @@ const char *pl_study_axis_key(const pl_study_t *study, int axis);
 
 /* The scene of point k (0-based): the base scene's settings with the point's
  * keys set, as libconfig text (malloc'd, the caller frees); `name` becomes
- * the scene's name unless the study sweeps `name`. */
+ * the scene's name (a study cannot sweep `name`). */
 int pl_study_point_scene(pl_study_t *study, int k, const char *name, char **text, pl_err_t *err);
 
 /* Value of axis `axis` at point k as scene text (e.g. "1.4e+08", "\"II\""). */
