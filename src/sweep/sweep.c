@@ -26,6 +26,7 @@
  * points' groups (SIGKILL) and returns at once.  No point outlives the sweep. */
 #include <errno.h>
 #include <jansson.h>
+#include <libconfig.h>
 #include <sched.h>
 #include <signal.h>
 #include <stdlib.h>
@@ -130,20 +131,29 @@ static int summary_interrupted(const char *path)
     return yes;
 }
 
-/* Steps a point a signal interrupted has left: its summary.json says
- * "interrupted" at last_step (where run.c wrote checkpoint.h5) of the
- * scene's steps, and checkpoint.h5 is there; -1 otherwise (the point runs
- * from step 0). */
-static long long steps_left(const char *sum, const char *ck)
+/* Steps a point a signal stopped has left, -1 when it runs from step 0.
+ * Interrupted: its summary.json says so at last_step (where run.c wrote
+ * checkpoint.h5) of the scene's steps.  Killed (a second signal): no
+ * summary.json, and checkpoint.h5 at the step of its last write, of the
+ * `steps` of its scene `text`. */
+static long long steps_left(const char *sum, const char *ck, const char *text)
 {
     struct stat sb;
     if (stat(ck, &sb)) return -1;
+    long long left = -1, at, steps;
     json_t *j = json_load_file(sum, 0, NULL);
-    json_t *last = json_object_get(j, "last_step"), *steps = json_object_get(json_object_get(j, "scene"), "steps");
-    long long left = json_is_true(json_object_get(j, "interrupted")) && json_is_integer(last) && json_is_integer(steps)
-                         ? json_integer_value(steps) - json_integer_value(last)
-                         : -1;
-    json_decref(j);
+    if (j) {
+        json_t *last = json_object_get(j, "last_step"), *st = json_object_get(json_object_get(j, "scene"), "steps");
+        if (json_is_true(json_object_get(j, "interrupted")) && json_is_integer(last) && json_is_integer(st))
+            left = json_integer_value(st) - json_integer_value(last);
+        json_decref(j);
+    } else if (stat(sum, &sb) && !pl_checkpoint_step(ck, &at)) {
+        config_t c;
+        config_init(&c);
+        if (config_read_string(&c, text) == CONFIG_TRUE && config_lookup_int64(&c, "steps", &steps) == CONFIG_TRUE)
+            left = steps - at;
+        config_destroy(&c);
+    }
     return left < 0 ? -1 : left;
 }
 
@@ -267,7 +277,7 @@ static int prepare_point(const sweep_t *s, int k, int *done, long long *left, pl
     int same = old && !strcmp(old, text);
     free(old);
     *done = same && summary_complete(sum);
-    *left = same && !*done ? steps_left(sum, ck) : -1;
+    *left = same && !*done ? steps_left(sum, ck, text) : -1;
     if (!same) rc = write_text(path, text, err);
     free(text);
     if (!rc && *done) { /* its summary is the proof: a failure recorded before (its status) is past */
