@@ -38,6 +38,7 @@
 
 #include "peloid/io.h"
 #include "peloid/sweep.h"
+#include "sweep_priv.h"
 
 static double now_s(void)
 {
@@ -67,7 +68,7 @@ static int mkdir_p(const char *path, pl_err_t *err)
  * ("<path>.tmp.<pid>"): the array tasks of a Slurm sweep write the shared
  * files (points.json, the point scenes) concurrently, and with one shared
  * temporary name one task's rename took the file from under another's. */
-static int write_text(const char *path, const char *text, pl_err_t *err)
+int pl_sweep_write_text(const char *path, const char *text, pl_err_t *err)
 {
     char tmp[4200];
     snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
@@ -76,6 +77,8 @@ static int write_text(const char *path, const char *text, pl_err_t *err)
     fputs(text, f);
     return pl_file_commit(f, tmp, path, err);
 }
+
+#define write_text pl_sweep_write_text
 
 static char *read_text(const char *path);
 
@@ -200,13 +203,6 @@ static int cpu_count(void)
     return n > 0 ? (int)n : 1;
 }
 
-typedef struct {
-    pl_study_t *st;
-    const pl_sweep_opts_t *o;
-    char out[3072];
-    int n;     /* the study's points */
-    int total; /* the points of this run (n, or 1 with --point) */
-} sweep_t;
 
 static void point_path(const sweep_t *s, int k, const char *fmt, char *buf, size_t n)
 {
@@ -321,6 +317,15 @@ static pid_t start_point(const sweep_t *s, int k, int threads, long long left)
     if (pid > 0) setpgid(pid, pid); /* as the child does: whichever runs first, the group exists before a kill */
     if (pid != 0) return pid;
     setpgid(0, 0);
+    /* the sweep's handlers end at exec: a signal before `run` installs its
+     * own takes the default action, and one the inherited handler noted
+     * before the reset ends the point here; an ignored signal stays so */
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    for (size_t j = 0; j < sizeof sigs / sizeof *sigs; ++j) {
+        struct sigaction old;
+        if (!sigaction(sigs[j], NULL, &old) && old.sa_handler != SIG_IGN) signal(sigs[j], SIG_DFL);
+    }
+    if (signal_seen(s->o)) _exit(128 + abs(signal_seen(s->o)));
     FILE *f = freopen(log, left >= 0 ? "a" : "w", stderr);
     if (!f || dup2(fileno(stderr), 1) < 0) _exit(PL_ERR_IO);
     if (left >= 0)
@@ -483,48 +488,6 @@ static int run_points(sweep_t *s, int first, int last, tally_t *t, pl_err_t *err
     return rc;
 }
 
-/* The Slurm job array: task K runs point K; collect.sbatch the table. */
-static int write_slurm(const sweep_t *s, pl_err_t *err)
-{
-    char path[4096], study[4096], out[4096], self[4096], b[16384];
-    if (!realpath(pl_study_path(s->st), study) || !realpath(s->out, out) || !realpath(s->o->self, self))
-        return pl_err_set(err, PL_ERR_IO, "%s: cannot resolve the study, OUT or peloid path: %s",
-                          pl_study_path(s->st), strerror(errno));
-    int threads = s->o->threads > 0 ? s->o->threads : 1;
-    int len = snprintf(b, sizeof b,
-             "#!/bin/bash\n"
-             "# peloid sweep %s: one Slurm array task per point (written by peloid sweep --slurm).\n"
-             "#   submit: bash %s/submit.sh   (or: sbatch %s/sweep.sbatch, then sbatch %s/collect.sbatch)\n"
-             "# Task K runs point K; a finished point is skipped, so resubmitting reruns only the rest.\n"
-             "#SBATCH --job-name=%s\n#SBATCH --array=0-%d\n#SBATCH --cpus-per-task=%d\n#SBATCH --ntasks=1\n"
-             "#SBATCH --output=%s/logs/slurm-%%A_%%a.out\n"
-             "exec %s sweep %s --out %s --point \"$SLURM_ARRAY_TASK_ID\" --threads \"${SLURM_CPUS_PER_TASK:-%d}\"\n",
-             pl_study_name(s->st), out, out, out, pl_study_name(s->st), s->n - 1, threads, out, self, study, out,
-             threads);
-    snprintf(path, sizeof path, "%s/sweep.sbatch", s->out);
-    int rc = len < 0 || (size_t)len >= sizeof b ? pl_err_set(err, PL_ERR_INPUT, "%s: paths too long", s->out)
-                                                 : write_text(path, b, err);
-    len = snprintf(b, sizeof b,
-             "#!/bin/bash\n# peloid sweep %s: the table and plot of every point (after the array).\n"
-             "#SBATCH --job-name=%s-collect\n#SBATCH --ntasks=1\n#SBATCH --cpus-per-task=1\n"
-             "#SBATCH --output=%s/logs/slurm-collect-%%j.out\n"
-             "exec %s sweep %s --out %s --collect\n", pl_study_name(s->st), pl_study_name(s->st), out, self, study, out);
-    snprintf(path, sizeof path, "%s/collect.sbatch", s->out);
-    if (!rc && (len < 0 || (size_t)len >= sizeof b)) rc = pl_err_set(err, PL_ERR_INPUT, "%s: paths too long", s->out);
-    if (!rc) rc = write_text(path, b, err);
-    len = snprintf(b, sizeof b,
-             "#!/bin/bash\n# Submits the array, then the collect step after it (whatever the tasks' exit codes).\n"
-             "set -euo pipefail\njid=$(sbatch --parsable %s/sweep.sbatch)\njid=${jid%%%%;*}\n"
-             "sbatch --parsable --dependency=afterany:$jid %s/collect.sbatch\n", out, out);
-    snprintf(path, sizeof path, "%s/submit.sh", s->out);
-    if (!rc && (len < 0 || (size_t)len >= sizeof b)) rc = pl_err_set(err, PL_ERR_INPUT, "%s: paths too long", s->out);
-    if (!rc) rc = write_text(path, b, err);
-    if (!rc)
-        fprintf(s->o->log, "peloid sweep %s: wrote %s/{sweep.sbatch,collect.sbatch,submit.sh}: %d array tasks x %d "
-                "thread(s); submit with: bash %s/submit.sh\n", pl_study_name(s->st), s->out, s->n, threads, s->out);
-    return rc;
-}
-
 static int collect(const sweep_t *s, pl_err_t *err)
 {
     char script[4096];
@@ -581,7 +544,7 @@ int pl_sweep(pl_study_t *st, const pl_sweep_opts_t *o, pl_err_t *err)
             long long left;
             rc = prepare_point(&s, k, &done, &left, err);
         }
-        return rc ? rc : write_slurm(&s, err);
+        return rc ? rc : pl_sweep_write_slurm(&s, err);
     }
     tally_t t = {0, 0, 0, 0};
     if (!rc && o->point >= 0) rc = run_points(&s, (int)o->point, (int)o->point + 1, &t, err);
