@@ -32,12 +32,12 @@ t0=$(date +%s.%N)
 wait_for() { local end=$(( $(date +%s) + $1 )); shift; until eval "$1"; do [ "$(date +%s)" -ge "$end" ] && return 1; sleep 0.02; done; }
 rows() { [ "$(cat out/$1/p000/thermo.tsv 2>/dev/null | wc -l)" -ge 3 ] && [ "$(cat out/$1/p001/thermo.tsv 2>/dev/null | wc -l)" -ge 3 ]; }
 
-# 2 points of a Brownian scene of ~60000 steps (~2 s a point): the signal
+# 2 points of a Brownian scene of 20000 steps (~0.7 s a point): the signal
 # comes once both have thermo rows, long before either ends
 cat > bd.cfg <<'CFG'
 name = "bd";
 seed = 11;
-steps = 60000;
+steps = 20000;
 box: { cells = [8, 8, 8]; };
 fluid: { density = 0.0; };
 srd: { dt = 0.1; };
@@ -63,9 +63,9 @@ rows = [l.rstrip("\n").split("\t") for l in open("out/sig/sweep.tsv")][1:]
 assert [(r[0], r[1], r[2]) for r in rows] == [("p000", "interrupted", "143"), ("p001", "interrupted", "143")], rows
 for k in ("p000", "p001"):
     s = json.load(open(f"out/sig/{k}/summary.json"))
-    assert s["interrupted"] and 0 < s["last_step"] < 60000, s["last_step"]
+    assert s["interrupted"] and 0 < s["last_step"] < 20000, s["last_step"]
 PY
-  then ok "sweep.tsv: both points 'interrupted' (143), each summary.json interrupted before step 60000"
+  then ok "sweep.tsv: both points 'interrupted' (143), each summary.json interrupted before step 20000"
   else bad "sweep.tsv after SIGTERM: $(cat out/sig/sweep.tsv 2>&1 | cut -c1-200)"; fi
   tail -1 sig.err | grep -q "^peloid: sweep sig: interrupted by signal 15: 2 point(s) stopped at a checkpoint.*resume with: peloid sweep sig.cfg --out out/sig" \
     && ok "one line: $(tail -1 sig.err | cut -c1-140)" || bad "last line: $(tail -1 sig.err)"
@@ -78,11 +78,11 @@ if [ $rc = 0 ] && grep -q "0 finished before, 2 to run (2 from its checkpoint)" 
 import json
 for k in ("p000", "p001"):
     s = json.load(open(f"out/sig/{k}/summary.json"))
-    assert not s["interrupted"] and 0 < s["first_step"] and s["last_step"] == 60000, (k, s["first_step"], s["last_step"])
+    assert not s["interrupted"] and 0 < s["first_step"] and s["last_step"] == 20000, (k, s["first_step"], s["last_step"])
 rows = [l.rstrip("\n").split("\t") for l in open("out/sig/sweep.tsv")][1:]
 assert [(r[0], r[1]) for r in rows] == [("p000", "ok"), ("p001", "ok")], rows
 PY
-then ok "resume: both points continued from their checkpoints (first_step > 0) to step 60000, exit 0"
+then ok "resume: both points continued from their checkpoints (first_step > 0) to step 20000, exit 0"
 else bad "resume (rc $rc): $(tail -2 resume.err)"; fi
 
 # 3. two signals in a row: the points are killed at once (each has written a
@@ -104,9 +104,9 @@ if wait_for 20 "rows kill && [ -f out/kill/p000/checkpoint.h5 ] && [ -f out/kill
 import json
 for k in ("p000", "p001"):
     s = json.load(open(f"out/kill/{k}/summary.json"))
-    assert not s["interrupted"] and 0 < s["first_step"] and s["last_step"] == 60000, (k, s["first_step"], s["last_step"])
+    assert not s["interrupted"] and 0 < s["first_step"] and s["last_step"] == 20000, (k, s["first_step"], s["last_step"])
 PY
-  then ok "killed points (no summary.json) resume from their last checkpoint (first_step > 0) to step 60000, exit 0"
+  then ok "killed points (no summary.json) resume from their last checkpoint (first_step > 0) to step 20000, exit 0"
   else bad "resume after kill (rc $rc): $(tail -2 kresume.err)"; fi
 else bad "kill: no thermo rows or checkpoints in 20 s"; kill -KILL $sp 2>/dev/null; fi
 echo "  sweep signal tests: $pass passed, $fail failed ($(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }') s)"
