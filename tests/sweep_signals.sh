@@ -109,5 +109,16 @@ PY
   then ok "killed points (no summary.json) resume from their last checkpoint (first_step > 0) to step 20000, exit 0"
   else bad "resume after kill (rc $rc): $(tail -2 kresume.err)"; fi
 else bad "kill: no thermo rows or checkpoints in 20 s"; kill -KILL $sp 2>/dev/null; fi
+# 4. a signal to one point alone (not through the sweep): that point stops at
+#    a checkpoint, the sweep goes on and exits 1, the table says interrupted
+printf 'scene = "bd.cfg"; out = "out/one";\ngrid = ( { key = "seed"; values = [1]; } );\n' > one.cfg
+"$PELOID" sweep one.cfg --jobs 1 --threads 1 2> one.err & sp=$!
+if wait_for 20 '[ "$(cat out/one/p000/thermo.tsv 2>/dev/null | wc -l)" -ge 3 ] && [ -n "$(alive)" ]'; then
+  kill -TERM $(alive)
+  wait_for 20 "! kill -0 $sp 2>/dev/null"; wait $sp; rc=$?
+  st=$(awk -F'\t' '$1 == "p000" { print $2 }' out/one/sweep.tsv 2>/dev/null)
+  [ $rc = 1 ] && [ "$st" = interrupted ] && ok "a point signalled alone: table 'interrupted', sweep exit 1" \
+    || bad "a point signalled alone: exit $rc, table '$st': $(tail -1 one.err)"
+else bad "one: no thermo rows in 20 s"; kill -KILL $sp 2>/dev/null; fi
 echo "  sweep signal tests: $pass passed, $fail failed ($(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }') s)"
 [ $fail = 0 ]

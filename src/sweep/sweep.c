@@ -557,8 +557,9 @@ int pl_sweep(pl_study_t *st, const pl_sweep_opts_t *o, pl_err_t *err)
                           pl_study_name(st), t.sig > 0 ? "interrupted by" : "killed by a second", t.sig > 0 ? t.sig : -t.sig,
                           t.interrupted, t.failed, t.pending, t.sig > 0 && o->point < 0 ? " (table: sweep.tsv)" : "",
                           pl_study_path(st), s.out);
-    if (t.failed)
-        return pl_err_set(err, 1, "sweep %s: %d point(s) failed, the others ran (exit code and last message of "
-                          "each: %s/status/, %s/sweep.tsv)", pl_study_name(st), t.failed, s.out, s.out);
+    if (t.failed || t.interrupted) /* a point a signal to it alone stopped is not finished either */
+        return pl_err_set(err, 1, "sweep %s: %d point(s) failed, %d interrupted (the next sweep resumes them), the "
+                          "others ran (exit code and last message of each: %s/status/, %s/sweep.tsv)",
+                          pl_study_name(st), t.failed, t.interrupted, s.out, s.out);
     return 0;
 }
