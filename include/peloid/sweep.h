@@ -75,8 +75,8 @@ void pl_sweep_plan(int todo, int cpus, int jobs_given, int threads_given, int *j
  * scene, runs the points not yet finished (a point a signal interrupted
  * resumes from its own checkpoint), records each failure (OUT/status/), and
  * collects OUT/sweep.{tsv,json,png}.  Each point runs in its own process
- * group.  Returns 0 when every point ran, 1 when some failed (recorded; the
- * others ran), PL_ERR_INTERRUPTED when o->interrupt was raised (the running
+ * group.  Returns 0 when every point ran, 1 when some failed or a signal to
+ * it alone stopped it (recorded; the others ran), PL_ERR_INTERRUPTED when o->interrupt was raised (the running
  * points were interrupted and recorded, the table written unless a second
  * signal came), PL_ERR_* when the sweep itself could not run. */
 int pl_sweep(pl_study_t *study, const pl_sweep_opts_t *o, pl_err_t *err);
