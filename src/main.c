@@ -60,7 +60,11 @@ static const char *const usage =
     "        finished points are skipped; DIR/sweep.{tsv,json,png} collect them.\n"
     "        --point K runs point K only; --slurm writes a Slurm job array\n"
     "        (DIR/sweep.sbatch, collect.sbatch, submit.sh) and runs nothing;\n"
-    "        --collect only rebuilds the table and plot.  Exit 1: some points failed\n"
+    "        --collect only rebuilds the table and plot.  Exit 1: some points failed.\n"
+    "        A signal (SIGINT/SIGTERM/SIGHUP) is forwarded to the running points (each\n"
+    "        in its own process group), which stop after their step with a checkpoint;\n"
+    "        the table is written, exit 128 + signal; a second signal kills them at\n"
+    "        once.  The next sweep resumes an interrupted point from its checkpoint\n"
     "  keys             print the scene-file reference (every key) as Markdown\n"
     "  --help           this text\n"
     "\n"
@@ -106,7 +110,8 @@ static int parse_ll(const char *s, long long lo, long long hi, long long *out)
 /* The signal that asked the run to stop (0: none).  The one mutable
  * file-scope variable: a signal handler can reach the run only through a
  * variable of static storage, and only a volatile sig_atomic_t may be
- * written there (C11 7.14.1.1).  The run polls it between steps. */
+ * written there (C11 7.14.1.1).  The run polls it between steps, the sweep
+ * between waits for its points. */
 static volatile sig_atomic_t interrupt_signal;
 
 /* First signal: note it, the run ends after the present step.  Second: exit
@@ -123,15 +128,24 @@ static void on_signal(int sig)
     interrupt_signal = sig;
 }
 
-/* SIGINT, SIGTERM, SIGHUP end a run cleanly (on_signal), unless the signal is
- * ignored on entry (nohup, a background job of a shell without job control):
- * then it stays ignored. */
-static void catch_signals(void)
+/* `peloid sweep`: a first signal is noted (S), a second turns the flag
+ * negative (-S, the first's number kept for the exit code); the sweep polls
+ * the flag, forwards the first to its points and kills them at the second
+ * (src/sweep/sweep.c), so this handler cannot exit itself. */
+static void on_sweep_signal(int sig)
+{
+    interrupt_signal = interrupt_signal > 0 ? -interrupt_signal : interrupt_signal < 0 ? interrupt_signal : sig;
+}
+
+/* SIGINT, SIGTERM, SIGHUP end a run or sweep cleanly (`handler`), unless the
+ * signal is ignored on entry (nohup, a background job of a shell without job
+ * control): then it stays ignored. */
+static void catch_signals(void (*handler)(int))
 {
     static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
+    sa.sa_handler = handler;
     sa.sa_flags = SA_RESTART;
     sigemptyset(&sa.sa_mask);
     for (size_t k = 0; k < sizeof sigs / sizeof *sigs; ++k) {
@@ -207,7 +221,7 @@ static int cmd_run(int argc, char **argv)
     if (!rc) rc = pl_mapping_report_strict(scene, strict, &err); /* --strict: the audit's warnings refused */
     if (!rc) pl_mapping_warnings_print(scene, stderr);
     if (!rc) {
-        catch_signals();
+        catch_signals(on_signal);
         rc = pl_run(scene, &o, &err);
     }
     free(scene);
@@ -270,7 +284,7 @@ static int cmd_report(int argc, char **argv)
  * (src/sweep/sweep.c), or a Slurm job array. */
 static int cmd_sweep(int argc, char **argv)
 {
-    pl_sweep_opts_t o = {.point = -1, .progress_tty = isatty(2), .log = stderr};
+    pl_sweep_opts_t o = {.point = -1, .progress_tty = isatty(2), .log = stderr, .interrupt = &interrupt_signal};
     const char *path = NULL;
     char msg[256], self[4096], tools[4096];
     for (int i = 0; i < argc; ++i) {
@@ -308,8 +322,16 @@ static int cmd_sweep(int argc, char **argv)
     pl_study_t *st = NULL;
     pl_err_t err = {0, ""};
     int rc = pl_study_load(path, &st, &err);
-    if (!rc) rc = pl_sweep(st, &o, &err);
+    if (!rc) {
+        catch_signals(on_sweep_signal);
+        rc = pl_sweep(st, &o, &err);
+    }
     pl_study_free(st);
+    if (rc == PL_ERR_INTERRUPTED) { /* one line: what stopped, how to resume; exit 128 + the first signal */
+        int sig = interrupt_signal < 0 ? -(int)interrupt_signal : (int)interrupt_signal;
+        fprintf(stderr, "peloid: %s (%s)\n", err.msg, signal_name(sig));
+        return 128 + sig;
+    }
     return rc ? fail(&err) : 0;
 }
 

@@ -73,6 +73,15 @@ rm out/grid/p002/summary.json
 grep -q "3 finished before, 1 to run" resume.err && [ -f out/grid/p002/summary.json ] \
   && ok "a point without a complete summary.json is run again" || bad "resume: $(cat resume.err)"
 
+# a finished point whose status still records an earlier failure (a run that
+# failed while another held its folder, which then finished it): the table and
+# the exit code agree, the point is ok
+printf '2\tpeloid: error: out/grid/p001: another peloid run is writing into this output directory\n' > out/grid/status/p001.tsv
+"$PELOID" sweep grid.cfg 2> stale.err; rc=$?
+st=$(awk -F'\t' '$1 == "p001" { print $2 }' out/grid/sweep.tsv)
+[ $rc = 0 ] && [ "$st" = ok ] && ok "a finished point's stale failure status is cleared: table ok, exit 0" \
+  || bad "stale status: exit $rc, table says '$st'"
+
 # 3. a point whose value trips a guard fails alone and is recorded
 cat > fails.cfg <<'CFG'
 scene = "bd.cfg";
@@ -105,6 +114,19 @@ grid = ( { key = "colloids.bd_viscosty"; values = [0.02]; } );' \
   "badkey.cfg:2: key 'grid.\[0\]': \"colloids.bd_viscosty\" is not a scene key"
 refuse empty 'scene = "bd.cfg"; out = "out/empty"; grid = ( { key = "seed"; values = []; } );' \
   "empty.cfg:1: key 'grid.\[0\]': values: expected a non-empty array"
+refuse dupgrid 'scene = "bd.cfg"; out = "out/dupgrid";
+grid = ( { key = "seed"; values = [1, 2]; },
+  { key = "colloids.bd_viscosity"; values = [0.02, 0.04, 0.02]; } );' \
+  "dupgrid.cfg:3: key 'grid.\[1\]': \"colloids.bd_viscosity\": value 0.02 is given twice (values 0 and 2)"
+refuse duppoints 'scene = "bd.cfg"; out = "out/duppoints";
+points = { keys = ["seed", "colloids.bd_viscosity"];
+  values = ( (1, 0.02),
+             (2, 0.02),
+             (1, 0.02) ); };' \
+  "duppoints.cfg:5: key 'points.values': points 0 and 2 are the same (seed = 1, colloids.bd_viscosity = 0.02)"
+refuse sweepname 'scene = "bd.cfg"; out = "out/sweepname";
+grid = ( { key = "name"; values = ["a", "b"]; } );' \
+  "sweepname.cfg:2: key 'grid.\[0\]': \"name\" names the run, it is not swept.*allowed: "
 refuse badstudy 'scene = "bd.cfg"; out = "out/badstudy"; gird = ( );' "badstudy.cfg:1: key 'gird': unknown study key"
 
 # 5. --point K runs exactly point K (what a Slurm array task runs)
@@ -130,13 +152,15 @@ for k in 0 1 2 3; do SLURM_ARRAY_TASK_ID=$k SLURM_CPUS_PER_TASK=1 bash out/sl/sw
 # 7. a point's scene loses nothing: with the base's own value it reproduces
 #    the base run bitwise (scenes/quickstart.cfg: physical units, @-free, many reals)
 QS="$ROOT/scenes/quickstart.cfg"
-printf 'scene = "%s"; out = "out/same";\npoints = { keys = ["name", "seed"]; values = ( ("quickstart", 20261123) ); };\n' \
+# (the point is named same-p000: so is the base's copy run here)
+printf 'scene = "%s"; out = "out/same";\npoints = { keys = ["seed"]; values = ( (20261123) ); };\n' \
   "$QS" > same.cfg
+sed 's/^name = "quickstart";/name = "same-p000";/' "$QS" > qs.cfg
 "$PELOID" sweep same.cfg --slurm 2> /dev/null  # writes the point's scene, runs nothing
 # (--steps, not steps = 5 in the file: quickstart's observers need more
 # samples than 5 steps give, which check refuses in a scene file)
 "$PELOID" run out/same/scenes/p000.cfg --steps 5 --out pt --threads 1 2> /dev/null
-"$PELOID" run "$QS" --steps 5 --out base --threads 1 2> /dev/null
+"$PELOID" run qs.cfg --steps 5 --out base --threads 1 2> /dev/null
 if [ -f pt/checkpoint.h5 ] && [ "$(sha256sum < pt/checkpoint.h5)" = "$(sha256sum < base/checkpoint.h5)" ]; then
   ok "a point with the base's values reproduces the base run bitwise (quickstart, 5 steps, checkpoint.h5)"
 else bad "point scene differs from its base (checkpoint.h5 hashes)"; fi

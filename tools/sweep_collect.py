@@ -6,7 +6,9 @@
 Reads OUT/points.json (the study's keys, plot and points), each point's
 OUT/ID/summary.json and OUT/status/ID.tsv, and writes
 
-  OUT/sweep.tsv   one row per point: id, status (ok / failed / pending), exit
+  OUT/sweep.tsv   one row per point: id, status (ok / failed / interrupted /
+                  pending; interrupted: a signal stopped it at a checkpoint,
+                  the next sweep resumes it from there), exit
                   code, message, the swept keys, last_step, wall_seconds, then
                   NAME and NAME_se for every observable any point measured
                   (summary.json "observables": value +- stderr)
@@ -50,14 +52,17 @@ def load_point(out, p):
         row["message"] = msg
         row["status"] = "ok" if int(code) == 0 else "failed"
     sp = os.path.join(out, p["id"], "summary.json")
-    if row["status"] != "failed" and os.path.exists(sp):
+    if os.path.exists(sp):
         try:
             s = json.load(open(sp))
         except (OSError, ValueError):
             s = None
         if s and "last_step" in s and s.get("interrupted"):  # a signal ended it early: not finished
-            row["status"] = "failed"
+            row["status"] = "interrupted"
             row["message"] = row["message"] or "interrupted at step %s" % s["last_step"]
+            row["last_step"] = s["last_step"]
+        elif row["status"] == "failed":
+            pass
         elif s and "last_step" in s:
             row["status"], row["exit_code"] = "ok", 0
             if not row["message"]:
@@ -159,7 +164,9 @@ def main():
     plot(study, rows, os.path.join(out, "sweep.png"))
     ok = sum(r["status"] == "ok" for r in rows)
     failed = sum(r["status"] == "failed" for r in rows)
-    print(f"peloid sweep {study['study']}: {ok} ok, {failed} failed, {len(rows) - ok - failed} pending -> "
+    stopped = sum(r["status"] == "interrupted" for r in rows)
+    print(f"peloid sweep {study['study']}: {ok} ok, {failed} failed, {stopped} interrupted, "
+          f"{len(rows) - ok - failed - stopped} pending -> "
           f"{out}/sweep.tsv, sweep.json, sweep.png", file=sys.stderr)
 
 

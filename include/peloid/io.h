@@ -61,6 +61,8 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err);
 int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, pl_err_t *err);
 /* pl_checkpoint_restart with no key allowed to change. */
 int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err);
+/* The step checkpoint `path` holds (*step); -1 when it cannot be read. */
+int pl_checkpoint_step(const char *path, long long *step);
 /* PL_ERR_INPUT unless every comma-separated name in `list` is a scene key
  * ("srd.dt", top-level keys without a section: "seed"). */
 int pl_checkpoint_changed_keys_valid(const char *list, pl_err_t *err);

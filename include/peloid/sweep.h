@@ -6,6 +6,7 @@
 #ifndef PELOID_SWEEP_H
 #define PELOID_SWEEP_H
 
+#include <signal.h>
 #include <stdio.h>
 
 #include "peloid/error.h"
@@ -16,7 +17,8 @@ typedef struct pl_study pl_study_t;
 
 /* Reads and checks a study file: every key known, every swept key a scene
  * key (section.key as `peloid keys` lists it), at least one value per key,
- * the base scene readable.  Errors: PL_ERR_INPUT, "FILE:LINE: key '...': what;
+ * the base scene readable, `name` not swept, no point twice (a value given
+ * twice on a grid axis, two equal rows of points{}).  Errors: PL_ERR_INPUT, "FILE:LINE: key '...': what;
  * allowed: ...". */
 int pl_study_load(const char *path, pl_study_t **out, pl_err_t *err);
 void pl_study_free(pl_study_t *study);
@@ -32,7 +34,7 @@ const char *pl_study_axis_key(const pl_study_t *study, int axis);
 
 /* The scene of point k (0-based): the base scene's settings with the point's
  * keys set, as libconfig text (malloc'd, the caller frees); `name` becomes
- * the scene's name unless the study sweeps `name`. */
+ * the scene's name (a study cannot sweep `name`). */
 int pl_study_point_scene(pl_study_t *study, int k, const char *name, char **text, pl_err_t *err);
 
 /* Value of axis `axis` at point k as scene text (e.g. "1.4e+08", "\"II\""). */
@@ -57,6 +59,11 @@ typedef struct {
     int collect_only;     /* only collect the table and plot */
     int progress_tty;     /* redraw one progress line (stderr is a terminal) */
     FILE *log;
+    /* The driver's signal flag (NULL: none): 0 none, S > 0 a first signal S
+     * (forwarded to the running points, which stop after their step and
+     * write a checkpoint; no new point starts), -S a second one (the points
+     * are killed, the sweep returns at once).  Polled between waits. */
+    volatile sig_atomic_t *interrupt;
 } pl_sweep_opts_t;
 
 /* Processes and threads for `todo` points on `cpus` CPUs: jobs = min(todo,
@@ -65,10 +72,13 @@ typedef struct {
 void pl_sweep_plan(int todo, int cpus, int jobs_given, int threads_given, int *jobs, int *threads);
 
 /* The sweep: checks every point, writes OUT/points.json and each point's
- * scene, runs the points not yet finished, records each failure
- * (OUT/status/), and collects OUT/sweep.{tsv,json,png}.  Returns 0 when every
- * point ran, 1 when some failed (recorded; the others ran), PL_ERR_* when the
- * sweep itself could not run. */
+ * scene, runs the points not yet finished (a point a signal interrupted
+ * resumes from its own checkpoint), records each failure (OUT/status/), and
+ * collects OUT/sweep.{tsv,json,png}.  Each point runs in its own process
+ * group.  Returns 0 when every point ran, 1 when some failed or a signal to
+ * it alone stopped it (recorded; the others ran), PL_ERR_INTERRUPTED when o->interrupt was raised (the running
+ * points were interrupted and recorded, the table written unless a second
+ * signal came), PL_ERR_* when the sweep itself could not run. */
 int pl_sweep(pl_study_t *study, const pl_sweep_opts_t *o, pl_err_t *err);
 
 #endif

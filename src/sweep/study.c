@@ -26,31 +26,17 @@
 #include "peloid/scene.h"
 #include "peloid/sweep.h"
 #include "scene_text.h"
+#include "study_priv.h"
 
-typedef struct {
-    char key[128];           /* section.key, or key for the top level */
-    char sec[64], leaf[64];
-    config_setting_t *values; /* grid: this axis's values */
-    int n, line;
-} axis_t;
-
-struct pl_study {
-    char path[512], name[128], out[512], base[1024];
-    pl_scene_text_t stext, btext;
-    config_t scfg, bcfg;
-    int have_s, have_b;
-    axis_t ax[PL_STUDY_MAX_AXES];
-    int naxes, npoints;
-    config_setting_t *rows; /* points{}: one row per point, NULL for a grid */
-    config_setting_t *plot;
-};
-
-static int fail_at(const pl_study_t *st, const config_setting_t *s, pl_err_t *err, const char *key,
-                   const char *what)
+/* "FILE:LINE: key 'KEY': WHAT" at setting s (NULL: line 1), PL_ERR_INPUT. */
+int pl_study_fail_at(const pl_study_t *st, const config_setting_t *s, pl_err_t *err, const char *key,
+                     const char *what)
 {
     int line = 0, fi = pl_scene_text_where(&st->stext, s ? (int)config_setting_source_line(s) : 1, &line);
     return pl_err_set(err, PL_ERR_INPUT, "%s:%d: key '%s': %s", st->stext.files[fi], line, key, what);
 }
+#define fail_at pl_study_fail_at
+#define value_of pl_study_value_of
 
 static int safe_name(const char *s)
 {
@@ -111,6 +97,11 @@ static int add_axis(pl_study_t *st, const config_setting_t *where, const char *k
     if (!scene_key(key, a)) {
         snprintf(what, sizeof what, "\"%.128s\" is not a scene key; allowed: a key of `peloid keys` as "
                  "section.key (e.g. physical.kappa) or a top-level key (seed, steps)", key);
+        return fail_at(st, where, err, label, what);
+    }
+    if (!strcmp(a->key, "name")) { /* not physics: the sweep names each point STUDY-ID itself */
+        snprintf(what, sizeof what, "\"name\" names the run, it is not swept (each point is named "
+                 "<study>-<id>); allowed: a scene key of the physics or the run (seed, steps, section.key)");
         return fail_at(st, where, err, label, what);
     }
     for (int i = 0; i < st->naxes; ++i)
@@ -284,6 +275,7 @@ static int read_study(pl_study_t *st, pl_err_t *err)
         return fail_at(st, NULL, err, "grid", "missing; allowed: grid = ( { key = \"...\"; values = [...]; } ) or "
                        "points = { keys = [...]; values = ( (...), ... ); }");
     rc = grid ? read_grid(st, grid, err) : read_points(st, pts, err);
+    if (!rc) rc = pl_study_check_unique(st, err);
     config_setting_t *plot = config_setting_get_member(root, "plot");
     if (!rc && plot) rc = read_plot(st, plot, err);
     return rc;
@@ -351,7 +343,7 @@ const char *pl_study_path(const pl_study_t *st) { return st->path; }
 const char *pl_study_axis_key(const pl_study_t *st, int a) { return st->ax[a].key; }
 
 /* Value setting of axis a at point k. */
-static const config_setting_t *value_of(const pl_study_t *st, int k, int a)
+const config_setting_t *pl_study_value_of(const pl_study_t *st, int k, int a)
 {
     if (st->rows) return config_setting_get_elem(config_setting_get_elem(st->rows, (unsigned)k), (unsigned)a);
     int stride = 1;
@@ -482,14 +474,12 @@ static int set_key(config_setting_t *root, const char *sec, const char *leaf, co
 int pl_study_point_scene(pl_study_t *st, int k, const char *name, char **text, pl_err_t *err)
 {
     config_setting_t *root = config_root_setting(&st->bcfg);
-    int swept_name = 0;
     for (int a = 0; a < st->naxes; ++a) {
-        swept_name |= !strcmp(st->ax[a].key, "name");
         if (set_key(root, st->ax[a].sec, st->ax[a].leaf, value_of(st, k, a)))
             return pl_err_set(err, PL_ERR_INPUT, "%s: point %d: cannot set '%s' in the base scene %s (is '%s' "
                               "a group there?)", st->path, k, st->ax[a].key, st->base, st->ax[a].sec);
     }
-    if (!swept_name && name) {
+    if (name) { /* name is never swept (add_axis) */
         config_setting_t *n = config_setting_get_member(root, "name");
         if (!n) n = config_setting_add(root, "name", CONFIG_TYPE_STRING);
         if (!n || config_setting_type(n) != CONFIG_TYPE_STRING || !config_setting_set_string(n, name))

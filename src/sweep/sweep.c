@@ -12,11 +12,21 @@
  * A point is finished when OUT/ID/summary.json is complete JSON with its
  * last_step (run.c writes it atomically at the end) and OUT/scenes/ID.cfg is
  * the scene the study gives it now; a finished point is not run again.  A
- * failed point keeps its exit code and message and the others go on.
- * Processes, not threads: a point that trips a guard or runs out of memory
- * takes only itself down. */
+ * point whose summary says "interrupted" (a signal stopped it after a step
+ * and it wrote its checkpoint there) resumes in place from OUT/ID/checkpoint.h5
+ * for the steps it had left.  A failed point keeps its exit code and message
+ * and the others go on.  Processes, not threads: a point that trips a guard
+ * or runs out of memory takes only itself down.
+ *
+ * Signals (the driver's flag, pl_sweep_opts_t.interrupt): each point runs in
+ * its own process group, so a terminal's ^C reaches the sweep alone; the
+ * sweep forwards a first signal to every running point's group (each ends
+ * after its step with a checkpoint, exit 128 + signal), starts no new point,
+ * waits for them and writes the table; at a second signal it kills the
+ * points' groups (SIGKILL) and returns at once.  No point outlives the sweep. */
 #include <errno.h>
 #include <jansson.h>
+#include <libconfig.h>
 #include <sched.h>
 #include <signal.h>
 #include <stdlib.h>
@@ -28,6 +38,7 @@
 
 #include "peloid/io.h"
 #include "peloid/sweep.h"
+#include "sweep_priv.h"
 
 static double now_s(void)
 {
@@ -57,7 +68,7 @@ static int mkdir_p(const char *path, pl_err_t *err)
  * ("<path>.tmp.<pid>"): the array tasks of a Slurm sweep write the shared
  * files (points.json, the point scenes) concurrently, and with one shared
  * temporary name one task's rename took the file from under another's. */
-static int write_text(const char *path, const char *text, pl_err_t *err)
+int pl_sweep_write_text(const char *path, const char *text, pl_err_t *err)
 {
     char tmp[4200];
     snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
@@ -66,6 +77,8 @@ static int write_text(const char *path, const char *text, pl_err_t *err)
     fputs(text, f);
     return pl_file_commit(f, tmp, path, err);
 }
+
+#define write_text pl_sweep_write_text
 
 static char *read_text(const char *path);
 
@@ -112,6 +125,47 @@ static int summary_complete(const char *path)
 }
 
 /* Last non-empty line of a file, control characters dropped. */
+/* A point's summary says a signal ended its run early. */
+static int summary_interrupted(const char *path)
+{
+    json_t *j = json_load_file(path, 0, NULL);
+    int yes = json_is_true(json_object_get(j, "interrupted"));
+    json_decref(j);
+    return yes;
+}
+
+/* Steps a point a signal stopped has left, -1 when it runs from step 0.
+ * Interrupted: its summary.json says so at last_step (where run.c wrote
+ * checkpoint.h5) of the scene's steps.  Killed (a second signal): no
+ * summary.json, and checkpoint.h5 at the step of its last write, of the
+ * `steps` of its scene `text`. */
+static long long steps_left(const char *sum, const char *ck, const char *text)
+{
+    struct stat sb;
+    if (stat(ck, &sb)) return -1;
+    long long left = -1, at, steps;
+    json_t *j = json_load_file(sum, 0, NULL);
+    if (j) {
+        json_t *last = json_object_get(j, "last_step"), *st = json_object_get(json_object_get(j, "scene"), "steps");
+        if (json_is_true(json_object_get(j, "interrupted")) && json_is_integer(last) && json_is_integer(st))
+            left = json_integer_value(st) - json_integer_value(last);
+        json_decref(j);
+    } else if (stat(sum, &sb) && !pl_checkpoint_step(ck, &at)) {
+        config_t c;
+        config_init(&c);
+        if (config_read_string(&c, text) == CONFIG_TRUE && config_lookup_int64(&c, "steps", &steps) == CONFIG_TRUE)
+            left = steps - at;
+        config_destroy(&c);
+    }
+    return left < 0 ? -1 : left;
+}
+
+/* The driver's signal flag: 0, S (a first signal) or -S (a second). */
+static int signal_seen(const pl_sweep_opts_t *o)
+{
+    return o->interrupt ? (int)*o->interrupt : 0;
+}
+
 static void last_line(const char *path, char *buf, size_t n)
 {
     char *s = read_text(path);
@@ -149,13 +203,6 @@ static int cpu_count(void)
     return n > 0 ? (int)n : 1;
 }
 
-typedef struct {
-    pl_study_t *st;
-    const pl_sweep_opts_t *o;
-    char out[3072];
-    int n;     /* the study's points */
-    int total; /* the points of this run (n, or 1 with --point) */
-} sweep_t;
 
 static void point_path(const sweep_t *s, int k, const char *fmt, char *buf, size_t n)
 {
@@ -209,10 +256,11 @@ static int write_points(const sweep_t *s, pl_err_t *err)
     return rc;
 }
 
-/* Writes point k's scene; *done: its run is finished (same scene). */
-static int prepare_point(const sweep_t *s, int k, int *done, pl_err_t *err)
+/* Writes point k's scene; *done: its run is finished (same scene); *left:
+ * the steps it has left after an interruption (same scene), else -1. */
+static int prepare_point(const sweep_t *s, int k, int *done, long long *left, pl_err_t *err)
 {
-    char id[32], name[192], path[4096], sum[4096];
+    char id[32], name[192], path[4096], sum[4096], ck[4096];
     pl_study_point_id(s->st, k, id, sizeof id);
     snprintf(name, sizeof name, "%s-%s", pl_study_name(s->st), id);
     char *text = NULL;
@@ -220,12 +268,20 @@ static int prepare_point(const sweep_t *s, int k, int *done, pl_err_t *err)
     if (rc) return rc;
     point_path(s, k, "scenes/%s.cfg", path, sizeof path);
     point_path(s, k, "%s/summary.json", sum, sizeof sum);
+    point_path(s, k, "%s/checkpoint.h5", ck, sizeof ck);
     char *old = read_text(path);
     int same = old && !strcmp(old, text);
     free(old);
     *done = same && summary_complete(sum);
+    *left = same && !*done ? steps_left(sum, ck, text) : -1;
     if (!same) rc = write_text(path, text, err);
     free(text);
+    if (!rc && *done) { /* its summary is the proof: a failure recorded before (its status) is past */
+        point_path(s, k, "status/%s.tsv", path, sizeof path);
+        char *st = read_text(path);
+        if (!st || strncmp(st, "0\t", 2)) rc = write_text(path, "0\tok\n", err);
+        free(st);
+    }
     return rc;
 }
 
@@ -239,22 +295,43 @@ static void record(const sweep_t *s, int k, int code, const char *msg)
     write_text(path, line, &e);
 }
 
-static pid_t start_point(const sweep_t *s, int k, int threads)
+/* Starts point k in a process group of its own (the sweep forwards signals
+ * to it); left >= 0: resumes it in place from its checkpoint for `left`
+ * steps (its log is appended to). */
+static pid_t start_point(const sweep_t *s, int k, int threads, long long left)
 {
-    char scene[4096], dir[4096], log[4096], th[16];
+    char scene[4096], dir[4096], log[4096], th[16], ck[4096], ls[32];
     point_path(s, k, "scenes/%s.cfg", scene, sizeof scene);
     point_path(s, k, "%s", dir, sizeof dir);
     point_path(s, k, "logs/%s.log", log, sizeof log);
+    point_path(s, k, "%s/checkpoint.h5", ck, sizeof ck);
     snprintf(th, sizeof th, "%d", threads);
-    char sum[4096]; /* a summary of an earlier run of this point (other values) must not survive a failure */
+    snprintf(ls, sizeof ls, "%lld", left);
+    /* a summary of an earlier run of this point (other values, or the
+     * interruption the resume continues) must not survive a failure */
+    char sum[4096];
     point_path(s, k, "%s/summary.json", sum, sizeof sum);
     unlink(sum);
     fflush(NULL);
     pid_t pid = fork();
+    if (pid > 0) setpgid(pid, pid); /* as the child does: whichever runs first, the group exists before a kill */
     if (pid != 0) return pid;
-    FILE *f = freopen(log, "w", stderr);
+    setpgid(0, 0);
+    /* the sweep's handlers end at exec: a signal before `run` installs its
+     * own takes the default action, and one the inherited handler noted
+     * before the reset ends the point here; an ignored signal stays so */
+    static const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    for (size_t j = 0; j < sizeof sigs / sizeof *sigs; ++j) {
+        struct sigaction old;
+        if (!sigaction(sigs[j], NULL, &old) && old.sa_handler != SIG_IGN) signal(sigs[j], SIG_DFL);
+    }
+    if (signal_seen(s->o)) _exit(128 + abs(signal_seen(s->o)));
+    FILE *f = freopen(log, left >= 0 ? "a" : "w", stderr);
     if (!f || dup2(fileno(stderr), 1) < 0) _exit(PL_ERR_IO);
-    execl(s->o->self, s->o->self, "run", scene, "--out", dir, "--force", "--threads", th, (char *)NULL);
+    if (left >= 0)
+        execl(s->o->self, s->o->self, "run", scene, "--restart", ck, "--out", dir, "--steps", ls, "--threads", th,
+              (char *)NULL);
+    else execl(s->o->self, s->o->self, "run", scene, "--out", dir, "--force", "--threads", th, (char *)NULL);
     fprintf(stderr, "peloid sweep: cannot run %s: %s\n", s->o->self, strerror(errno));
     _exit(PL_ERR_IO);
 }
@@ -281,39 +358,77 @@ static void progress(const sweep_t *s, int done, int failed, int running, int sk
     fflush(s->o->log);
 }
 
-/* Runs points [first, last) that are not finished; returns the number failed. */
-static int run_points(sweep_t *s, int first, int last, int *failed_out, pl_err_t *err)
+/* What run_points ended with: points failed, interrupted by the forwarded
+ * signal, not started; the signal (0: none; -S: a second one killed them). */
+typedef struct {
+    int failed, interrupted, pending, sig;
+} tally_t;
+
+/* A second signal: every running point's group is killed (SIGKILL), reaped
+ * and recorded. */
+static void kill_points(const sweep_t *s, int first, int n, int *state, const pid_t *pids, tally_t *t)
+{
+    for (int i = 0; i < n; ++i)
+        if (state[i] == 1) kill(-pids[i], SIGKILL);
+    for (int i = 0; i < n; ++i) {
+        if (state[i] != 1) continue;
+        int status;
+        while (waitpid(pids[i], &status, 0) < 0 && errno == EINTR) {}
+        record(s, first + i, 128 + SIGKILL, "killed: a second signal to the sweep");
+        state[i] = 3;
+        ++t->failed;
+    }
+}
+
+/* Runs points [first, last) that are not finished, until done or signalled
+ * (s->o->interrupt); *t: how it ended. */
+static int run_points(sweep_t *s, int first, int last, tally_t *t, pl_err_t *err)
 {
     int n = last - first, todo = 0;
     s->total = n;
-    int *state = calloc((size_t)n, sizeof *state); /* 0 todo, 1 running, 2 done, 3 failed */
+    int *state = calloc((size_t)n, sizeof *state); /* 0 todo, 1 running, 2 done, 3 failed, 4 interrupted */
     pid_t *pids = calloc((size_t)n, sizeof *pids);
-    if (!state || !pids) {
+    long long *left = calloc((size_t)n, sizeof *left);
+    if (!state || !pids || !left) {
         free(state);
         free(pids);
+        free(left);
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory starting the sweep");
     }
-    int rc = 0, skipped = 0;
+    int rc = 0, skipped = 0, resumed = 0;
     for (int i = 0; !rc && i < n; ++i) {
         int done;
-        rc = prepare_point(s, first + i, &done, err);
+        rc = prepare_point(s, first + i, &done, &left[i], err);
         if (!rc && done) {
             state[i] = 2;
             ++skipped;
         } else ++todo;
+        if (!rc && left[i] >= 0) ++resumed;
     }
     int jobs, threads;
     pl_sweep_plan(todo, cpu_count(), s->o->jobs, s->o->threads, &jobs, &threads);
     if (!rc)
-        fprintf(s->o->log, "peloid sweep %s: %d point(s), %d finished before, %d to run: %d process(es) x %d "
-                "thread(s) on %d CPU(s) -> %s/\n", pl_study_name(s->st), n, skipped, todo, jobs, threads,
-                cpu_count(), s->out);
+        fprintf(s->o->log, "peloid sweep %s: %d point(s), %d finished before, %d to run (%d from its checkpoint): "
+                "%d process(es) x %d thread(s) on %d CPU(s) -> %s/\n", pl_study_name(s->st), n, skipped, todo,
+                resumed, jobs, threads, cpu_count(), s->out);
     double t0 = now_s(), last_draw = 0;
     int running = 0, done = skipped, failed = 0, next = 0, draw = 0;
+    *t = (tally_t){0, 0, 0, 0};
     while (!rc) {
-        while (running < jobs && next < n) {
+        int seen = signal_seen(s->o);
+        if (seen < 0) { /* a second signal: nothing waits any more */
+            kill_points(s, first, n, state, pids, t);
+            t->sig = seen;
+            break;
+        }
+        if (seen > 0 && !t->sig) { /* a first: each running point ends after its step */
+            t->sig = seen;
+            for (int i = 0; i < n; ++i)
+                if (state[i] == 1) kill(-pids[i], seen);
+        }
+        while (!t->sig && running < jobs && next < n) {
             if (state[next] == 0) {
-                pids[next] = start_point(s, first + next, threads);
+                pids[next] = start_point(s, first + next, threads, left[next]);
                 if (pids[next] < 0) {
                     rc = pl_err_set(err, PL_ERR_IO, "cannot start a point: fork: %s", strerror(errno));
                     break;
@@ -328,15 +443,16 @@ static int run_points(sweep_t *s, int first, int last, int *failed_out, pl_err_t
             last_draw = now_s();
             draw = 0;
         }
-        if (rc || (running == 0 && next >= n)) break;
+        if (rc || (running == 0 && (next >= n || t->sig))) break;
         int status;
-        pid_t pid = waitpid(-1, &status, s->o->progress_tty ? WNOHANG : 0);
-        if (pid == 0) { /* a terminal: redraw every second */
-            if (now_s() - last_draw >= 1.0) {
+        /* polled, not blocking: a signal is seen within 50 ms whenever it comes */
+        pid_t pid = waitpid(-1, &status, WNOHANG);
+        if (pid == 0) {
+            if (s->o->progress_tty && now_s() - last_draw >= 1.0) { /* a terminal: redraw every second */
                 progress(s, done, failed, running, skipped, todo, t0, 0);
                 last_draw = now_s();
             }
-            usleep(100000);
+            usleep(50000);
             continue;
         }
         if (pid < 0) {
@@ -356,57 +472,19 @@ static int run_points(sweep_t *s, int first, int last, int *failed_out, pl_err_t
         last_line(log, msg, sizeof msg);
         if (WIFSIGNALED(status)) snprintf(msg, sizeof msg, "killed by signal %d", WTERMSIG(status));
         record(s, first + i, code, code ? msg : "ok");
-        state[i] = code ? 3 : 2;
-        if (code) ++failed;
+        int stopped = code && (summary_interrupted(sum) || (t->sig && code == 128 + t->sig));
+        state[i] = code ? (stopped ? 4 : 3) : 2;
+        if (stopped) ++t->interrupted;
+        else if (code) ++failed;
         else ++done;
         draw = 1;
     }
     if (!rc && todo == 0) progress(s, done, failed, running, skipped, todo, t0, 1);
+    for (int i = 0; i < n; ++i) t->pending += state[i] == 0;
+    t->failed += failed;
     free(state);
     free(pids);
-    *failed_out = failed;
-    return rc;
-}
-
-/* The Slurm job array: task K runs point K; collect.sbatch the table. */
-static int write_slurm(const sweep_t *s, pl_err_t *err)
-{
-    char path[4096], study[4096], out[4096], self[4096], b[16384];
-    if (!realpath(pl_study_path(s->st), study) || !realpath(s->out, out) || !realpath(s->o->self, self))
-        return pl_err_set(err, PL_ERR_IO, "%s: cannot resolve the study, OUT or peloid path: %s",
-                          pl_study_path(s->st), strerror(errno));
-    int threads = s->o->threads > 0 ? s->o->threads : 1;
-    int len = snprintf(b, sizeof b,
-             "#!/bin/bash\n"
-             "# peloid sweep %s: one Slurm array task per point (written by peloid sweep --slurm).\n"
-             "#   submit: bash %s/submit.sh   (or: sbatch %s/sweep.sbatch, then sbatch %s/collect.sbatch)\n"
-             "# Task K runs point K; a finished point is skipped, so resubmitting reruns only the rest.\n"
-             "#SBATCH --job-name=%s\n#SBATCH --array=0-%d\n#SBATCH --cpus-per-task=%d\n#SBATCH --ntasks=1\n"
-             "#SBATCH --output=%s/logs/slurm-%%A_%%a.out\n"
-             "exec %s sweep %s --out %s --point \"$SLURM_ARRAY_TASK_ID\" --threads \"${SLURM_CPUS_PER_TASK:-%d}\"\n",
-             pl_study_name(s->st), out, out, out, pl_study_name(s->st), s->n - 1, threads, out, self, study, out,
-             threads);
-    snprintf(path, sizeof path, "%s/sweep.sbatch", s->out);
-    int rc = len < 0 || (size_t)len >= sizeof b ? pl_err_set(err, PL_ERR_INPUT, "%s: paths too long", s->out)
-                                                 : write_text(path, b, err);
-    len = snprintf(b, sizeof b,
-             "#!/bin/bash\n# peloid sweep %s: the table and plot of every point (after the array).\n"
-             "#SBATCH --job-name=%s-collect\n#SBATCH --ntasks=1\n#SBATCH --cpus-per-task=1\n"
-             "#SBATCH --output=%s/logs/slurm-collect-%%j.out\n"
-             "exec %s sweep %s --out %s --collect\n", pl_study_name(s->st), pl_study_name(s->st), out, self, study, out);
-    snprintf(path, sizeof path, "%s/collect.sbatch", s->out);
-    if (!rc && (len < 0 || (size_t)len >= sizeof b)) rc = pl_err_set(err, PL_ERR_INPUT, "%s: paths too long", s->out);
-    if (!rc) rc = write_text(path, b, err);
-    len = snprintf(b, sizeof b,
-             "#!/bin/bash\n# Submits the array, then the collect step after it (whatever the tasks' exit codes).\n"
-             "set -euo pipefail\njid=$(sbatch --parsable %s/sweep.sbatch)\njid=${jid%%%%;*}\n"
-             "sbatch --parsable --dependency=afterany:$jid %s/collect.sbatch\n", out, out);
-    snprintf(path, sizeof path, "%s/submit.sh", s->out);
-    if (!rc && (len < 0 || (size_t)len >= sizeof b)) rc = pl_err_set(err, PL_ERR_INPUT, "%s: paths too long", s->out);
-    if (!rc) rc = write_text(path, b, err);
-    if (!rc)
-        fprintf(s->o->log, "peloid sweep %s: wrote %s/{sweep.sbatch,collect.sbatch,submit.sh}: %d array tasks x %d "
-                "thread(s); submit with: bash %s/submit.sh\n", pl_study_name(s->st), s->out, s->n, threads, s->out);
+    free(left);
     return rc;
 }
 
@@ -421,8 +499,18 @@ static int collect(const sweep_t *s, pl_err_t *err)
         fprintf(stderr, "peloid: error: sweep: cannot run /usr/bin/python3 %s: %s\n", script, strerror(errno));
         _exit(PL_ERR_IO);
     }
-    int status;
-    if (pid < 0 || waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status))
+    int status = 0;
+    pid_t got = pid;
+    while (pid > 0 && (got = waitpid(pid, &status, WNOHANG)) == 0) {
+        if (signal_seen(s->o) < 0) { /* a second signal: the table is left as it is */
+            kill(pid, SIGKILL);
+            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+            return pl_err_set(err, PL_ERR_INTERRUPTED, "sweep %s: a second signal: stopped writing %s/sweep.tsv",
+                              pl_study_name(s->st), s->out);
+        }
+        usleep(50000);
+    }
+    if (pid < 0 || got < 0 || !WIFEXITED(status) || WEXITSTATUS(status))
         return pl_err_set(err, PL_ERR_IO, "sweep: collecting %s with %s failed (its message is above)", s->out, script);
     return 0;
 }
@@ -453,17 +541,25 @@ int pl_sweep(pl_study_t *st, const pl_sweep_opts_t *o, pl_err_t *err)
     if (!rc && o->slurm) {
         for (int k = 0; !rc && k < s.n; ++k) {
             int done;
-            rc = prepare_point(&s, k, &done, err);
+            long long left;
+            rc = prepare_point(&s, k, &done, &left, err);
         }
-        return rc ? rc : write_slurm(&s, err);
+        return rc ? rc : pl_sweep_write_slurm(&s, err);
     }
-    int failed = 0;
-    if (!rc && o->point >= 0) rc = run_points(&s, (int)o->point, (int)o->point + 1, &failed, err);
-    else if (!rc) rc = run_points(&s, 0, s.n, &failed, err);
-    if (!rc && o->point < 0) rc = collect(&s, err);
+    tally_t t = {0, 0, 0, 0};
+    if (!rc && o->point >= 0) rc = run_points(&s, (int)o->point, (int)o->point + 1, &t, err);
+    else if (!rc) rc = run_points(&s, 0, s.n, &t, err);
+    if (!rc && o->point < 0 && t.sig >= 0) rc = collect(&s, err); /* a second signal: at once, no table */
     if (rc) return rc;
-    if (failed)
-        return pl_err_set(err, 1, "sweep %s: %d point(s) failed, the others ran (exit code and last message of "
-                          "each: %s/status/, %s/sweep.tsv)", pl_study_name(st), failed, s.out, s.out);
+    if (t.sig)
+        return pl_err_set(err, PL_ERR_INTERRUPTED, "sweep %s: %s signal %d: %d point(s) stopped at a checkpoint, "
+                          "%d failed or killed, %d not started%s; resume with: peloid sweep %s --out %s",
+                          pl_study_name(st), t.sig > 0 ? "interrupted by" : "killed by a second", t.sig > 0 ? t.sig : -t.sig,
+                          t.interrupted, t.failed, t.pending, t.sig > 0 && o->point < 0 ? " (table: sweep.tsv)" : "",
+                          pl_study_path(st), s.out);
+    if (t.failed || t.interrupted) /* a point a signal to it alone stopped is not finished either */
+        return pl_err_set(err, 1, "sweep %s: %d point(s) failed, %d interrupted (the next sweep resumes them), the "
+                          "others ran (exit code and last message of each: %s/status/, %s/sweep.tsv)",
+                          pl_study_name(st), t.failed, t.interrupted, s.out, s.out);
     return 0;
 }

@@ -1,0 +1,40 @@
+/* The study's representation, shared by the files of src/sweep/ that read
+ * and check it (study.c, study_check.c); nothing outside src/sweep/ sees it. */
+#ifndef PELOID_SWEEP_STUDY_PRIV_H
+#define PELOID_SWEEP_STUDY_PRIV_H
+
+#include <libconfig.h>
+
+#include "peloid/sweep.h"
+#include "scene_text.h"
+
+typedef struct {
+    char key[128];           /* section.key, or key for the top level */
+    char sec[64], leaf[64];
+    config_setting_t *values; /* grid: this axis's values */
+    int n, line;
+} axis_t;
+
+struct pl_study {
+    char path[512], name[128], out[512], base[1024];
+    pl_scene_text_t stext, btext;
+    config_t scfg, bcfg;
+    int have_s, have_b;
+    axis_t ax[PL_STUDY_MAX_AXES];
+    int naxes, npoints;
+    config_setting_t *rows; /* points{}: one row per point, NULL for a grid */
+    config_setting_t *plot;
+};
+
+/* "FILE:LINE: key 'KEY': WHAT" at setting s (NULL: line 1); returns PL_ERR_INPUT. */
+int pl_study_fail_at(const pl_study_t *st, const config_setting_t *s, pl_err_t *err, const char *key,
+                     const char *what);
+
+/* Value setting of axis a at point k. */
+const config_setting_t *pl_study_value_of(const pl_study_t *st, int k, int a);
+
+/* Refuses a study that would run a point twice: a grid value given twice
+ * on one axis, or two equal rows of points{}. */
+int pl_study_check_unique(const pl_study_t *st, pl_err_t *err);
+
+#endif
