@@ -111,7 +111,10 @@ PY
 else bad "kill: no thermo rows or checkpoints in 20 s"; kill -KILL $sp 2>/dev/null; fi
 # 4. a signal to one point alone (not through the sweep): that point stops at
 #    a checkpoint, the sweep goes on and exits 1, the table says interrupted
-printf 'scene = "bd.cfg"; out = "out/one";\ngrid = ( { key = "seed"; values = [1]; } );\n' > one.cfg
+#    (a point far longer than the test: it cannot end on its own between the
+#    wait and the signal, as a 20000-step BD point could on an idle machine)
+sed 's/^steps = 20000;/steps = 100000000;/' bd.cfg > bdlong.cfg
+printf 'scene = "bdlong.cfg"; out = "out/one";\ngrid = ( { key = "seed"; values = [1]; } );\n' > one.cfg
 "$PELOID" sweep one.cfg --jobs 1 --threads 1 2> one.err & sp=$!
 if wait_for 20 '[ "$(cat out/one/p000/thermo.tsv 2>/dev/null | wc -l)" -ge 3 ] && [ -n "$(alive)" ]'; then
   kill -TERM $(alive)
