@@ -48,5 +48,13 @@ double pl_srd_xi_stokes_pl(double eta, double sigma_cf, double L);
  * 1 / xi_L = 1 / xi_inf - 2.837 / (6 pi eta L); xi_inf is the unbounded
  * friction (e.g. PL Eq. 41 with xi_S = 4 pi eta sigma_cf). */
 double pl_srd_xi_hasimoto(double xi_inf, double eta, double L);
+/* The periodic images' share of that: 2.837 / (6 pi eta L), the mobility a
+ * colloid loses in a periodic cube of side L (times kT: the lost D). */
+double pl_srd_hasimoto_mobility(double eta, double L);
+
+/* pl_srd_theory of a scene's fluid: its fluid.density, srd.rule, srd.alpha,
+ * srd.dt and kT (pl_scene_kT). */
+struct pl_scene;
+void pl_srd_theory_of(const struct pl_scene *scene, pl_srd_theory_t *out);
 
 #endif

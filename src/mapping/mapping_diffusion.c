@@ -10,8 +10,8 @@
 
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/scene.h"
+#include "peloid/srd_theory.h"
 
-static const double HASIMOTO = 2.837297;
 
 void pl_mapping_diffusion_box(struct pl_scene *s)
 {
@@ -21,7 +21,7 @@ void pl_mapping_diffusion_box(struct pl_scene *s)
     m->box_L = cbrt((double)n[0] * n[1] * n[2]);
     m->box_periodic = s->box.walls_z == PL_WALLS_NONE && s->box.walls_xy == PL_WALLS_NONE;
     const double eta = m->cg.gamma * m->nu_sim; /* m_f / (a0 t0), kT = 1 */
-    m->d_col_box = m->box_periodic ? m->d_col_sim - HASIMOTO / (6.0 * PL_PI * eta * m->box_L) : NAN;
+    m->d_col_box = m->box_periodic ? m->d_col_sim - pl_srd_hasimoto_mobility(eta, m->box_L) : NAN; /* kT = 1 */
 }
 
 /* m^2/s per a0^2/t0 */

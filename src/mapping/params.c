@@ -17,7 +17,7 @@ int pl_params_json(const pl_scene_t *sc, struct json_t **out, pl_err_t *err)
 {
     const double kT = pl_scene_kT(sc);
     pl_srd_theory_t t;
-    pl_srd_theory(sc->fluid.density, sc->srd.rule, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, kT, &t);
+    pl_srd_theory_of(sc, &t);
     pl_json_t b = {err, sc->path, "derived", 0};
     json_t *o = json_object();
     const struct { const char *key; double v; } v[] = {
@@ -106,7 +106,7 @@ void pl_params_print(const pl_scene_t *sc, FILE *out)
 {
     const double kT = pl_scene_kT(sc);
     pl_srd_theory_t t;
-    pl_srd_theory(sc->fluid.density, sc->srd.rule, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, kT, &t);
+    pl_srd_theory_of(sc, &t);
     const int hecht = sc->srd.rule == PL_RULE_HECHT_AXES;
     /* moving no-slip walls: nominal shear rate (u_top - u_bottom) / Lz (Hecht Sec. VIII.C) */
     const int sheared = sc->box.walls_z == PL_WALLS_NOSLIP;

@@ -2,6 +2,7 @@
  * Eq. 28 (+-90 deg about the coordinate axes); friction of a slip sphere: PL
  * Eqs. 40-43 and the Hasimoto finite-size correction. */
 #include "peloid/real.h" /* PL_PI */
+#include "peloid/scene.h"
 #include "peloid/srd_theory.h"
 
 #include <math.h>
@@ -69,7 +70,15 @@ double pl_srd_xi_stokes_pl(double eta, double sigma, double L)
     return 4.0 * PL_PI * eta * sigma / (1.0 - 2.837 * sigma / L);
 }
 
+double pl_srd_hasimoto_mobility(double eta, double L) { return HASIMOTO / (6.0 * PL_PI * eta * L); }
+
 double pl_srd_xi_hasimoto(double xi_inf, double eta, double L)
 {
-    return 1.0 / (1.0 / xi_inf - HASIMOTO / (6.0 * PL_PI * eta * L));
+    return 1.0 / (1.0 / xi_inf - pl_srd_hasimoto_mobility(eta, L));
+}
+
+void pl_srd_theory_of(const struct pl_scene *sc, pl_srd_theory_t *out)
+{
+    pl_srd_theory(sc->fluid.density, sc->srd.rule, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, pl_scene_kT(sc),
+                  out);
 }

@@ -90,8 +90,7 @@ static void references(const pl_scene_t *sc, double *v_stokes, double *phi)
         xi = NAN; /* no solvent, no friction to compare with */
     } else {
         pl_srd_theory_t th;
-        pl_srd_theory(sc->fluid.density, sc->srd.rule, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt,
-                      pl_scene_kT(sc), &th);
+        pl_srd_theory_of(sc, &th);
         xi = 6.0 * PL_PI * th.eta * R;
     }
     *v_stokes = M * g / xi;

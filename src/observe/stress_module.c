@@ -187,7 +187,7 @@ static int gk_lags(const pl_scene_t *sc)
     if (sc->observe.stress_gk_steps > 0) return (int)sc->observe.stress_gk_steps;
     pl_srd_theory_t th;
     const double kT = pl_scene_kT(sc);
-    pl_srd_theory(sc->fluid.density, sc->srd.rule, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, kT, &th);
+    pl_srd_theory_of(sc, &th);
     const double tau = 0.5 * (2.0 * th.nu_kin / (kT * sc->srd.dt) + 1.0);
     const double k = ceil(10.0 * tau);
     return k < 10 ? 10 : k > 1e5 ? 100000 : (int)k;
@@ -637,7 +637,7 @@ static int stress_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *
     if (!all) return err->code;
     const pl_scene_t *sc = &sim->scene;
     pl_srd_theory_t th;
-    pl_srd_theory(sc->fluid.density, sc->srd.rule, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, o->kT, &th);
+    pl_srd_theory_of(sc, &th);
     double v, se;
     pl_blocking_result_t r, rr;
     if (o->couette && couette_estimate(o, &v, &se, &r, &rr)) {

@@ -55,7 +55,6 @@ enum { CAL_VERSION = 1, CAL_BLOCKS = 8, CAL_N2 = 32 };
 static const long long CAL_SEED = 20261204;
 static const double CAL_BUDGET = 6e8;       /* fluid particle-steps of one calibration */
 static const double CAL_TARGET = 15000.0;   /* colloid-time in units of tau_v: ~3 % SE */
-static const double HASIMOTO = 2.837297;
 
 /* ---- the model run ------------------------------------------------------ */
 
@@ -127,8 +126,7 @@ static uint64_t cal_key(const pl_scene_t *c, const cal_plan_t *p)
 static double eta_of(const pl_scene_t *sc)
 {
     pl_srd_theory_t th;
-    pl_srd_theory(sc->fluid.density, sc->srd.rule, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, pl_scene_kT(sc),
-                  &th);
+    pl_srd_theory_of(sc, &th);
     return th.eta;
 }
 
@@ -242,7 +240,7 @@ static int cal_run(const pl_scene_t *sc, const cal_plan_t *p, int nthreads, pl_m
     const double L = p->L, kT = pl_scene_kT(sc);
     cal->d_box = mean;
     cal->d_box_se = sqrt(var / (nb - 1.0) / nb);
-    cal->hasimoto = HASIMOTO * kT / (6.0 * PL_PI * eta_of(sc) * L);
+    cal->hasimoto = kT * pl_srd_hasimoto_mobility(eta_of(sc), L);
     cal->d_inf = (mean + cal->hasimoto) / kT; /* a0^2/t0 at kT = 1, as the mapping uses it */
     cal->d_inf_se = cal->d_box_se / kT;
     cal->phi = p->n * 4.0 / 3.0 * PL_PI * pow(sc->colloids.radius, 3) / (L * L * L);
