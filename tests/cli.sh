@@ -115,7 +115,7 @@ cmp -s run1/checkpoint.h5 resumed/checkpoint.h5 && ok "40 steps == 20 + restart 
 
 # a scene in physical units: mapping report and SI columns in the outputs
 "$PELOID" run "$ROOT/scenes/hecht_table1.cfg" --out mapped --steps 2 2> /dev/null
-$PY - <<'PYEOF' && ok "physical-unit scene: summary.json has mapping + units_si, thermo.tsv has time_s, temperature_K = 300 K (real), model_temperature_K" || bad "mapped outputs"
+$PY - <<'PYEOF' && ok "physical-unit scene: summary.json has mapping + units_si, thermo.tsv has time_s, temperature_K = 300 K (real), model_temperature_K, c_zcm_m = c_zcm a0" || bad "mapped outputs"
 import json
 s = json.load(open("mapped/summary.json"))
 assert s["mapping"] is not None and s["units_si"]["a0_m"] > 0 and s["units_si"]["t0_s"] > 0
@@ -125,6 +125,12 @@ row = dict(zip(head, open("mapped/thermo.tsv").readlines()[-1].split()))
 # temperature_K is the real one (kT = 1 <-> 300 K); the model's own is tiny (Hecht Sec. VII.B)
 assert abs(float(row["temperature_K"]) / 300.0 - 1) < 0.02, row
 assert float(row["model_temperature_K"]) < 0.01, row
+# lengths and stresses have SI twins: c_zcm_m = c_zcm a0, s.._Pa = s.. kT_model/a0^3
+a0 = s["units_si"]["a0_m"]
+assert abs(float(row["c_zcm_m"]) / (float(row["c_zcm"]) * a0) - 1) < 1e-8, row
+for k in [h for h in head if h.endswith("_Pa")]:
+    assert k[:-3] in head, k
+assert head[-1] == "mupdates_per_s", head
 PYEOF
 
 # a capillary (walls_xy): outputs name each axis' boundary, restart refused

@@ -30,17 +30,26 @@ typedef struct {
     double (*value)(const pl_thermo_sample_t *s, int arg);
     long long (*ivalue)(const pl_thermo_sample_t *s, int arg); /* PL_THERMO_INT */
     int arg;                    /* passed to value (a component, a term) */
+    double to_si;               /* an SI twin: the value times this (0: the value itself) */
 } pl_thermo_column_t;
 
-/* The columns of this simulation, in order (at most PL_THERMO_MAX_COLUMNS). */
-enum { PL_THERMO_MAX_COLUMNS = 96 };
+/* The columns of this simulation, in order (at most PL_THERMO_MAX_COLUMNS;
+ * more is refused by pl_thermo_table_build, never dropped). */
+enum { PL_THERMO_MAX_COLUMNS = 128, PL_THERMO_NAME = 48 };
 typedef struct {
     pl_thermo_column_t col[PL_THERMO_MAX_COLUMNS];
+    char si_name[PL_THERMO_MAX_COLUMNS][PL_THERMO_NAME]; /* the names of the SI twins */
     int n;
+    int wanted; /* columns asked for, > n when the table overflowed */
 } pl_thermo_table_t;
 
-void pl_thermo_table_build(const pl_sim_t *sim, pl_thermo_table_t *t);
-/* Appends n columns (a module's thermo_columns). */
+/* The columns of sim: step and time, each module's, for a scene with
+ * physical{} an SI twin of each column in a model length, area, velocity,
+ * diffusivity or stress unit (name_<SI unit>, DESIGN.md "Units and
+ * mapping"), then the wall-clock rate.  PL_ERR_INTERNAL past the cap. */
+int pl_thermo_table_build(const pl_sim_t *sim, pl_thermo_table_t *t, pl_err_t *err);
+/* Appends n columns (a module's thermo_columns); those past the cap are
+ * counted in t->wanted and refused by pl_thermo_table_build. */
 void pl_thermo_add(pl_thermo_table_t *t, const pl_thermo_column_t *c, int n);
 void pl_thermo_header(const pl_thermo_table_t *t, FILE *f);
 /* Opens thermo.tsv for the rows of a run.  keep < 0: a new file with the

@@ -7,6 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "observables_si.h"
 #include "peloid/module.h"
 #include "peloid/thermo.h"
 
@@ -38,16 +39,65 @@ static const pl_thermo_column_t rate_cols[] = { /* wall clock: last, apart from 
 
 void pl_thermo_add(pl_thermo_table_t *t, const pl_thermo_column_t *c, int n)
 {
-    for (int k = 0; k < n && t->n < PL_THERMO_MAX_COLUMNS; ++k) t->col[t->n++] = c[k];
+    for (int k = 0; k < n; ++k, ++t->wanted)
+        if (t->n < PL_THERMO_MAX_COLUMNS) t->col[t->n++] = c[k];
 }
 
-void pl_thermo_table_build(const pl_sim_t *sim, pl_thermo_table_t *t)
+/* The model units whose columns get an SI twin: lengths, areas, velocities,
+ * diffusivities and stresses.  Not t0 (time_s is there), not kT (an energy
+ * in kT is the real one in units of the scene's k_B T). */
+static const char *const twin_units[] = {"a0", "a0^2", "a0/t0", "a0^2/t0", "kT/a0^3"};
+
+/* "m^2" -> "m2", "m/s" -> "m_per_s": a column-name suffix */
+static void unit_suffix(const char *si, char *out, size_t cap)
 {
-    t->n = 0;
+    size_t o = 0;
+    for (const char *p = si; *p && o + 5 < cap; ++p) {
+        if (*p == '^') continue;
+        if (*p == '/') o += (size_t)snprintf(out + o, cap - o, "_per_");
+        else if (*p == ' ') out[o++] = '_';
+        else out[o++] = *p;
+    }
+    out[o] = 0;
+}
+
+static void add_si_twins(const pl_mapping_t *m, pl_thermo_table_t *t)
+{
+    const int n_model = t->n;
+    for (int k = 0; k < n_model; ++k) {
+        const pl_thermo_column_t *c = &t->col[k];
+        int twin = 0;
+        for (size_t u = 0; u < sizeof twin_units / sizeof twin_units[0]; ++u) twin |= !strcmp(c->unit, twin_units[u]);
+        double to_si = 0.0;
+        const char *si = twin ? pl_obs_si_unit(c->unit, m, &to_si) : NULL;
+        if (!si || t->n >= PL_THERMO_MAX_COLUMNS) {
+            t->wanted += si != NULL;
+            continue;
+        }
+        char suffix[24];
+        unit_suffix(si, suffix, sizeof suffix);
+        char *name = t->si_name[t->n];
+        snprintf(name, PL_THERMO_NAME, "%s_%s", c->name, suffix);
+        pl_thermo_column_t s = *c;
+        s.name = name;
+        s.unit = si;
+        s.to_si = to_si;
+        pl_thermo_add(t, &s, 1);
+    }
+}
+
+int pl_thermo_table_build(const pl_sim_t *sim, pl_thermo_table_t *t, pl_err_t *err)
+{
+    t->n = t->wanted = 0;
     pl_thermo_add(t, step_time, NCOL(step_time));
     for (int m = 0; pl_modules[m]; ++m)
         if (pl_modules[m]->thermo_columns) pl_modules[m]->thermo_columns(sim, t);
+    if (sim->scene.mapping.enabled) add_si_twins(&sim->scene.mapping.map, t);
     pl_thermo_add(t, rate_cols, NCOL(rate_cols));
+    if (t->wanted > t->n)
+        return pl_err_set(err, PL_ERR_INTERNAL, "thermo.tsv: this scene asks for %d columns, more than the %d "
+                          "this build holds (PL_THERMO_MAX_COLUMNS)", t->wanted, PL_THERMO_MAX_COLUMNS);
+    return 0;
 }
 
 void pl_thermo_header(const pl_thermo_table_t *t, FILE *f)
@@ -72,7 +122,7 @@ int pl_thermo_row(const pl_thermo_table_t *t, const pl_thermo_sample_t *s, FILE 
         const char sep = k + 1 < t->n ? '\t' : '\n';
         if (c->format == PL_THERMO_INT) r = fprintf(f, "%lld%c", c->ivalue(s, c->arg), sep);
         else if (c->format == PL_THERMO_RATE) r = fprintf(f, "%.4g%c", c->value(s, c->arg), sep);
-        else r = fprintf(f, "%.10g%c", c->value(s, c->arg), sep);
+        else r = fprintf(f, "%.10g%c", c->value(s, c->arg) * (c->to_si != 0.0 ? c->to_si : 1.0), sep);
     }
     return r;
 }
@@ -88,12 +138,17 @@ int pl_thermo_open(const pl_thermo_table_t *t, const char *path, long long keep,
         *out = f;
         return 0;
     }
-    char want[PL_THERMO_MAX_COLUMNS * 32] = "", *line = NULL;
-    size_t cap = 0, used = 0;
-    for (int k = 0; k < t->n && used < sizeof want; ++k)
-        used += (size_t)snprintf(want + used, sizeof want - used, "%s%c", t->col[k].name, k + 1 < t->n ? '\t' : '\n');
+    char *want = NULL, *line = NULL;
+    size_t cap = 0, want_len = 0;
+    FILE *header = open_memstream(&want, &want_len);
+    if (!header) {
+        fclose(f);
+        return pl_err_set(err, PL_ERR_NOMEM, "%s: no memory for its header", path);
+    }
+    pl_thermo_header(t, header);
     int rc = 0;
-    if (getline(&line, &cap, f) < 0 || strcmp(line, want) != 0) {
+    if (fclose(header)) rc = pl_err_set(err, PL_ERR_NOMEM, "%s: no memory for its header", path);
+    else if (getline(&line, &cap, f) < 0 || strcmp(line, want) != 0) {
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: its columns are not this run's (another scene or other output "
                         "options); resume with another --out", path);
     } else { /* the whole rows of steps < keep stay (a row cut short by a crash has no newline) */
@@ -107,6 +162,7 @@ int pl_thermo_open(const pl_thermo_table_t *t, const char *path, long long keep,
                             errno ? strerror(errno) : "stream error");
     }
     free(line);
+    free(want);
     if (rc) fclose(f);
     else *out = f;
     return rc;

@@ -342,12 +342,12 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     if (o->out_dir) snprintf(given, sizeof given, "%s", o->out_dir);
     else snprintf(given, sizeof given, "out/%s", scene->run.name);
     int in_place = o->restart && restart_in_place(o->restart, given);
+    if ((rc = pl_thermo_table_build(sim, &w.columns, err))) goto done; /* before anything is written */
     if ((rc = pl_outdir_prepare(given, o->force || in_place, scene->path, w.dir, sizeof w.dir, err))) goto done;
     if ((rc = pl_outdir_lock(w.dir, &lock_fd, err))) goto done;
     if (!in_place && (rc = pl_outdir_clean(w.dir, err))) goto done;
     char path[PATH_MAX];
     pl_path_join(w.thermo_path, sizeof w.thermo_path, w.dir, "thermo.tsv");
-    pl_thermo_table_build(sim, &w.columns);
     /* first: a thermo.tsv to continue in place with other columns is refused before anything is written */
     if ((rc = pl_thermo_open(&w.columns, w.thermo_path, in_place ? first : -1, &w.thermo, err))) goto done;
     if ((rc = write_scene_echo(&w, &sim->scene, err))) goto done;
