@@ -6,6 +6,7 @@
  * closed on every axis). */
 #include <criterion/criterion.h>
 #include <stdio.h>
+#include <string.h>
 #include <unistd.h>
 
 #include "peloid/io.h"
@@ -85,4 +86,27 @@ Test(determinism, checkpoint_of_another_scene_is_refused)
     pl_sim_free(a);
     pl_sim_free(b);
     unlink(path);
+}
+
+/* The plan refuses a stage past its PL_MAX_STAGES slots with an error
+ * naming the stage (issue 36: a stage never vanishes silently). */
+static int noop_stage(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    (void)sim, (void)ctx, (void)err;
+    return 0;
+}
+
+Test(determinism, a_full_plan_refuses_a_stage_by_name)
+{
+    pl_sim_t *sim = pl_test_sim(scenes[2], 1);
+    int added = sim->nstages, rc = 0;
+    pl_err_t err = {0};
+    while (!rc && added < PL_MAX_STAGES + 4) {
+        pl_stage_t s = {.name = "extra-stage", .fn = noop_stage, .slot = PL_SLOT_SAMPLE};
+        if (!(rc = pl_sim_add_stage(sim, &s, &err))) ++added;
+    }
+    cr_assert_eq(rc, PL_ERR_INTERNAL);
+    cr_assert_eq(added, PL_MAX_STAGES);
+    cr_assert(strstr(err.msg, "extra-stage") && strstr(err.msg, "plan full"), "%s", err.msg);
+    pl_sim_free(sim);
 }

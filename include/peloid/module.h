@@ -23,8 +23,9 @@ typedef struct pl_module {
     int (*create)(pl_sim_t *sim, pl_err_t *err);
     /* Frees what create made (NULL: nothing). */
     void (*destroy)(pl_sim_t *sim);
-    /* Adds the stages the scene needs (pl_sim_add_stage, with their slots). */
-    void (*add_stages)(pl_sim_t *sim);
+    /* Adds the stages the scene needs (pl_sim_add_stage, with their slots);
+     * 0 or the error of the stage it could not add. */
+    int (*add_stages)(pl_sim_t *sim, pl_err_t *err);
     /* Adds the thermo.tsv columns the scene needs, in order (pl_thermo_add). */
     void (*thermo_columns)(const pl_sim_t *sim, pl_thermo_table_t *t);
     /* Adds its entries to the head of summary.json (NULL: none); a

@@ -38,22 +38,24 @@ static int stage_colloid_traj(pl_sim_t *sim, void *ctx, pl_err_t *err)
                                  (double)sim->step * sim->scene.srd.dt, err);
 }
 
-static void colloid_stages(pl_sim_t *sim)
+static int colloid_stages(pl_sim_t *sim, pl_err_t *err)
 {
+    int rc;
     const pl_scene_t *sc = &sim->scene;
-    if (!sim->colloids) return;
+    if (!sim->colloids) return 0;
     if (sc->colloids.trajectory_interval > 0) {
         pl_stage_t t = {.name = "colloid-trajectory", .fn = stage_colloid_traj,
                         .interval = sc->colloids.trajectory_interval, .phase = PL_PHASE_AFTER,
                         .at_start = 1, .at_end = 1, .writes = 1, .slot = PL_SLOT_WRITE};
-        pl_sim_add_stage(sim, &t, NULL);
+        if ((rc = pl_sim_add_stage(sim, &t, err))) return rc;
     }
     /* pinned colloids do not move; the potential coupling runs the
      * colloid MD together with the fluid near them */
     if (!(sim->coupling && (sim->coupling->pinned || sim->coupling->method == PL_COUPLE_POTENTIAL))) {
         pl_stage_t md = {.name = "colloid-md", .fn = stage_colloid_md, .slot = PL_SLOT_COLLOID_MD};
-        pl_sim_add_stage(sim, &md, NULL);
+        if ((rc = pl_sim_add_stage(sim, &md, err))) return rc;
     }
+    return 0;
 }
 
 /* ---- thermo columns (energies: src/colloid/colloid_state.c) ------------------- */

@@ -24,42 +24,46 @@ static void coupling_destroy(pl_sim_t *sim)
     sim->coupling = NULL;
 }
 
-static void add(pl_sim_t *sim, const char *name, pl_stage_fn fn, long long interval, long long except,
-                pl_stage_slot_t slot)
+static int add(pl_sim_t *sim, const char *name, pl_stage_fn fn, long long interval, pl_stage_slot_t slot,
+               pl_err_t *err)
 {
-    pl_stage_t s = {.name = name, .fn = fn, .interval = interval, .except = except, .slot = slot};
-    pl_sim_add_stage(sim, &s, NULL);
+    pl_stage_t s = {.name = name, .fn = fn, .interval = interval, .slot = slot};
+    return pl_sim_add_stage(sim, &s, err);
 }
 
-static void coupling_stages(pl_sim_t *sim)
+static int coupling_stages(pl_sim_t *sim, pl_err_t *err)
 {
     const pl_scene_t *sc = &sim->scene;
-    if (!sim->coupling) return;
+    if (!sim->coupling) return 0;
     const int m = sim->coupling->method;
+    int rc = 0;
     if (m == PL_COUPLE_POTENTIAL) {
-        add(sim, "potential-select", pl_coupling_stage_select, 1, 0, PL_SLOT_PRE_STREAM);
-        add(sim, "potential-md", pl_coupling_stage_potential_md, 1, 0, PL_SLOT_POST_STREAM);
+        if ((rc = add(sim, "potential-select", pl_coupling_stage_select, 1, PL_SLOT_PRE_STREAM, err)) ||
+            (rc = add(sim, "potential-md", pl_coupling_stage_potential_md, 1, PL_SLOT_POST_STREAM, err)))
+            return rc;
     }
     if (m == PL_COUPLE_HECHT1) {
-        add(sim, "coupling1-cells", pl_coupling_stage_reflect_cells, 1, 0, PL_SLOT_PRE_STREAM);
-        add(sim, "coupling1-reflect", pl_coupling_stage_reflect, 1, 0, PL_SLOT_POST_STREAM);
+        if ((rc = add(sim, "coupling1-cells", pl_coupling_stage_reflect_cells, 1, PL_SLOT_PRE_STREAM, err)) ||
+            (rc = add(sim, "coupling1-reflect", pl_coupling_stage_reflect, 1, PL_SLOT_POST_STREAM, err)))
+            return rc;
     }
-    if (m == PL_COUPLE_HECHT2) {
-        add(sim, "coupling2-save", pl_coupling_stage_save, 1, 0, PL_SLOT_PRE_COLLIDE);
-        if (sc->thermostat.type == PL_THERMO_HEYES) { /* the variant of the fluid's collision */
-            const long long k = sc->thermostat.interval;
-            if (k > 1) add(sim, "coupling2-collide", pl_coupling_stage_collide, 1, k, PL_SLOT_POST_COLLIDE);
-            add(sim, "coupling2-collide+heyes", pl_coupling_stage_collide_heyes, k, 0, PL_SLOT_POST_COLLIDE);
-        } else {
-            add(sim, "coupling2-collide", pl_coupling_stage_collide, 1, 0, PL_SLOT_POST_COLLIDE);
-        }
+    if (m == PL_COUPLE_HECHT2) { /* the variant of the fluid's collision */
+        pl_stage_t plain = {.name = "coupling2-collide", .fn = pl_coupling_stage_collide,
+                            .slot = PL_SLOT_POST_COLLIDE};
+        pl_stage_t heyes = {.name = "coupling2-collide+heyes", .fn = pl_coupling_stage_collide_heyes,
+                            .slot = PL_SLOT_POST_COLLIDE};
+        if ((rc = add(sim, "coupling2-save", pl_coupling_stage_save, 1, PL_SLOT_PRE_COLLIDE, err)) ||
+            (rc = pl_sim_add_collide_stage(sim, &plain, &heyes, err)))
+            return rc;
     }
     const double *fv = sc->coupling.flow_velocity;
-    if (sim->coupling->pinned && (fv[0] != 0.0 || fv[1] != 0.0 || fv[2] != 0.0))
-        add(sim, "flow-hold", pl_coupling_stage_flow, 1, 0, PL_SLOT_CONSTRAIN);
+    if (sim->coupling->pinned && (fv[0] != 0.0 || fv[1] != 0.0 || fv[2] != 0.0) &&
+        (rc = add(sim, "flow-hold", pl_coupling_stage_flow, 1, PL_SLOT_CONSTRAIN, err)))
+        return rc;
     /* momentum is not conserved with walls: nothing to remove */
     if (sc->coupling.drift_interval > 0 && !sim->grid.any_walls)
-        add(sim, "drift-removal", pl_coupling_stage_drift, sc->coupling.drift_interval, 0, PL_SLOT_CONSTRAIN);
+        rc = add(sim, "drift-removal", pl_coupling_stage_drift, sc->coupling.drift_interval, PL_SLOT_CONSTRAIN, err);
+    return rc;
 }
 
 /* ---- thermo columns ------------------------------------------------------ */

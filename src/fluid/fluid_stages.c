@@ -176,44 +176,38 @@ static int stage_output_guard(pl_sim_t *sim, void *ctx, pl_err_t *err)
 }
 
 /* The fluid's stages, each at its slot; none without fluid particles. */
-static void fluid_stages(pl_sim_t *sim)
+static int fluid_stages(pl_sim_t *sim, pl_err_t *err)
 {
+    int rc;
     const pl_scene_t *sc = &sim->scene;
-    if (sim->fluid.n == 0) return;
+    if (sim->fluid.n == 0) return 0;
     pl_stage_t og = {.name = "output-guard", .fn = stage_output_guard, .phase = PL_PHASE_AFTER,
                      .slot = PL_SLOT_OUTPUT_GUARD};
     pl_stage_t stream = {.name = "stream+bin", .fn = stage_stream, .slot = PL_SLOT_STREAM};
     pl_stage_t sort = {.name = "sort", .fn = stage_sort, .slot = PL_SLOT_SORT};
-    pl_sim_add_stage(sim, &og, NULL);
-    pl_sim_add_stage(sim, &stream, NULL);
-    pl_sim_add_stage(sim, &sort, NULL);
+    if ((rc = pl_sim_add_stage(sim, &og, err))) return rc;
+    if ((rc = pl_sim_add_stage(sim, &stream, err))) return rc;
+    if ((rc = pl_sim_add_stage(sim, &sort, err))) return rc;
     collide_params(sim, &sim->collide);
-    if (sc->thermostat.type == PL_THERMO_HEYES) { /* one of the two variants each step */
-        const long long k = sc->thermostat.interval;
-        pl_stage_t plain = {.name = "collide", .fn = stage_collide, .except = k, .slot = PL_SLOT_COLLIDE};
-        pl_stage_t heyes = {.name = "collide+heyes", .fn = stage_collide_heyes, .interval = k,
-                            .slot = PL_SLOT_COLLIDE};
-        if (k > 1) pl_sim_add_stage(sim, &plain, NULL);
-        pl_sim_add_stage(sim, &heyes, NULL);
-    } else {
-        pl_stage_t plain = {.name = "collide", .fn = stage_collide, .slot = PL_SLOT_COLLIDE};
-        pl_sim_add_stage(sim, &plain, NULL);
-    }
+    pl_stage_t plain = {.name = "collide", .fn = stage_collide, .slot = PL_SLOT_COLLIDE};
+    pl_stage_t heyes = {.name = "collide+heyes", .fn = stage_collide_heyes, .slot = PL_SLOT_COLLIDE};
+    if ((rc = pl_sim_add_collide_stage(sim, &plain, &heyes, err))) return rc;
     if (sc->thermostat.type == PL_THERMO_RESCALE) {
         pl_stage_t r = {.name = "thermostat-rescale", .fn = stage_rescale, .interval = sc->thermostat.interval,
                         .slot = PL_SLOT_THERMOSTAT};
-        pl_sim_add_stage(sim, &r, NULL);
+        if ((rc = pl_sim_add_stage(sim, &r, err))) return rc;
     }
     /* last before anything samples or moves the fluid again: nothing
      * non-finite reaches an output or the next stream */
     pl_stage_t g = {.name = "fluid-guard", .fn = pl_fluid_guard_stage, .interval = PL_FLUID_GUARD_INTERVAL,
                     .slot = PL_SLOT_GUARD};
-    pl_sim_add_stage(sim, &g, NULL);
+    if ((rc = pl_sim_add_stage(sim, &g, err))) return rc;
     if (sc->output.fields_interval > 0) {
         pl_stage_t f = {.name = "fields", .fn = stage_fields, .interval = sc->output.fields_interval,
                         .slot = PL_SLOT_SAMPLE};
-        pl_sim_add_stage(sim, &f, NULL);
+        if ((rc = pl_sim_add_stage(sim, &f, err))) return rc;
     }
+    return 0;
 }
 
 /* ---- thermo columns ------------------------------------------------------ */

@@ -840,14 +840,15 @@ static int stage_sample(pl_sim_t *sim, void *ctx, pl_err_t *err)
     return rc;
 }
 
-static void observe_stages(pl_sim_t *sim)
+static int observe_stages(pl_sim_t *sim, pl_err_t *err)
 {
+    int rc;
     pl_observe_t *o = sim->observe;
-    if (!o) return;
+    if (!o) return 0;
     const pl_scene_observe_t *so = &sim->scene.observe;
     pl_stage_t b = {.name = "observe-begin", .fn = stage_begin, .ctx = o, .interval = 1,
                     .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
-    pl_sim_add_stage(sim, &b, NULL);
+    if ((rc = pl_sim_add_stage(sim, &b, err))) return rc;
     for (int k = 0; k < NSMP; ++k) {
         if (k == SMP_CLUSTERS) /* the correlators between S(q) and the clusters */
             for (int q = 0; q < PL_MTOBS_N; ++q) {
@@ -855,17 +856,18 @@ static void observe_stages(pl_sim_t *sim)
                 pl_stage_t s = pl_mtobs_stage(so, q);
                 s.fn = stage_mtau;
                 s.ctx = &o->mt_ctx[q];
-                pl_sim_add_stage(sim, &s, NULL);
+                if ((rc = pl_sim_add_stage(sim, &s, err))) return rc;
             }
         if (pl_scene_observe_ll(so, samplers[k].interval) <= 0) continue;
         pl_stage_t s = {.name = samplers[k].stage, .fn = stage_sample, .ctx = &o->smp_ctx[k],
                         .interval = pl_scene_observe_ll(so, samplers[k].interval), .phase = PL_PHASE_AFTER,
                         .slot = PL_SLOT_OBSERVE, .at_start = 1};
-        pl_sim_add_stage(sim, &s, NULL);
+        if ((rc = pl_sim_add_stage(sim, &s, err))) return rc;
     }
     pl_stage_t e = {.name = "observe-error-time", .fn = stage_error_time, .ctx = o, .interval = 1,
                     .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
-    pl_sim_add_stage(sim, &e, NULL);
+    if ((rc = pl_sim_add_stage(sim, &e, err))) return rc;
+    return 0;
 }
 
 /* ---- outputs ----------------------------------------------------------- */

@@ -44,19 +44,21 @@ static int stage_wall(pl_sim_t *sim, void *ctx, pl_err_t *err)
     return 0;
 }
 
-static void stop_stages(pl_sim_t *sim)
+static int stop_stages(pl_sim_t *sim, pl_err_t *err)
 {
+    int rc;
     const pl_scene_stop_t *st = &sim->scene.stop;
     if (st->observable > 0 && sim->observe) {
         pl_stage_t s = {.name = "stop-rule", .fn = stage_stop, .interval = st->check_interval,
                         .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE};
-        pl_sim_add_stage(sim, &s, NULL);
+        if ((rc = pl_sim_add_stage(sim, &s, err))) return rc;
     }
     if (st->max_wall_s > 0) {
         pl_stage_t s = {.name = "stop-wall", .fn = stage_wall, .interval = 1, .phase = PL_PHASE_AFTER,
                         .slot = PL_SLOT_OBSERVE};
-        pl_sim_add_stage(sim, &s, NULL);
+        if ((rc = pl_sim_add_stage(sim, &s, err))) return rc;
     }
+    return 0;
 }
 
 /* summary.json "stop": why the run ended. */

@@ -456,22 +456,24 @@ static int stage_couette(pl_sim_t *sim, void *ctx, pl_err_t *err)
     return 0;
 }
 
-static void stress_stages(pl_sim_t *sim)
+static int stress_stages(pl_sim_t *sim, pl_err_t *err)
 {
+    int rc;
     pl_stress_t *o = sim->stress;
-    if (!o) return;
+    if (!o) return 0;
     if (o->couette) {
         pl_stage_t c = {.name = "stress-couette", .fn = stage_couette, .ctx = o, .interval = 1,
                         .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
-        pl_sim_add_stage(sim, &c, NULL);
-        return;
+        if ((rc = pl_sim_add_stage(sim, &c, err))) return rc;
+        return 0;
     }
     pl_stage_t pre = {.name = "stress-before-collision", .fn = stage_pre, .ctx = o, .interval = 1,
                       .phase = PL_PHASE_STEP, .slot = PL_SLOT_PRE_COLLIDE};
-    pl_sim_add_stage(sim, &pre, NULL);
+    if ((rc = pl_sim_add_stage(sim, &pre, err))) return rc;
     pl_stage_t post = {.name = "stress", .fn = stage_post, .ctx = o, .interval = 1, .phase = PL_PHASE_AFTER,
                        .slot = PL_SLOT_OBSERVE};
-    pl_sim_add_stage(sim, &post, NULL);
+    if ((rc = pl_sim_add_stage(sim, &post, err))) return rc;
+    return 0;
 }
 
 /* ---- outputs ----------------------------------------------------------- */
