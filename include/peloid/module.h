@@ -18,6 +18,10 @@ struct json_t;
 
 typedef struct pl_module {
     const char *name;
+    /* Cross-key checks of its own scene sections, run by pl_scene_validate
+     * in module order after the scene's generic checks (NULL: none);
+     * PL_ERR_INPUT with file:line:key (pl_scene_fail). */
+    int (*validate_scene)(const pl_scene_t *scene, pl_err_t *err);
     /* Creates the module's state in sim from sim->scene (NULL: nothing to
      * create; a module the scene does not ask for creates nothing). */
     int (*create)(pl_sim_t *sim, pl_err_t *err);

@@ -129,6 +129,7 @@ static int colloid_ckpt_read(int64_t f, pl_sim_t *sim, const char *path, pl_err_
 
 const pl_module_t pl_colloid_module = {
     .name = "colloids",
+    .validate_scene = pl_colloid_validate_scene,
     .create = colloid_create,
     .destroy = colloid_destroy,
     .add_stages = colloid_stages,

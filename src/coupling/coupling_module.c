@@ -126,6 +126,7 @@ static int coupling_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t
 
 const pl_module_t pl_coupling_module = {
     .name = "coupling",
+    .validate_scene = pl_coupling_validate_scene,
     .create = coupling_create,
     .destroy = coupling_destroy,
     .add_stages = coupling_stages,

@@ -1485,6 +1485,7 @@ static int observe_resume(pl_sim_t *sim, pl_observe_t *o, pl_err_t *err)
 
 const pl_module_t pl_observe_module = {
     .name = "observe",
+    .validate_scene = pl_observe_validate_scene,
     .create = observe_create,
     .destroy = observe_destroy,
     .add_stages = observe_stages,

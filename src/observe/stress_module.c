@@ -850,6 +850,7 @@ static int stress_ckpt_read(int64_t file, pl_sim_t *sim, const char *path, pl_er
 
 const pl_module_t pl_stress_module = {
     .name = "stress",
+    .validate_scene = pl_stress_validate_scene,
     .create = stress_create,
     .destroy = stress_destroy,
     .add_stages = stress_stages,

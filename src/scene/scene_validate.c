@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <unistd.h>
 
+#include "peloid/module.h"
 #include "peloid/real.h"
 #include "peloid/scene.h"
 
@@ -92,8 +93,7 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
         return pl_scene_fail(scene, err, OFF(output.colloids_xyz), "output.colloids_xyz",
                              "true without colloid frames; allowed: with colloids.count > 0 and "
                              "colloids.trajectory_interval > 0");
-    if (pl_colloid_validate_scene(scene, err)) return PL_ERR_INPUT;
-    if (pl_coupling_validate_scene(scene, err)) return PL_ERR_INPUT;
-    if (pl_stress_validate_scene(scene, err)) return PL_ERR_INPUT;
-    return pl_observe_validate_scene(scene, err);
+    for (int m = 0; pl_modules[m]; ++m) /* each module its own sections (peloid/module.h) */
+        if (pl_modules[m]->validate_scene && pl_modules[m]->validate_scene(scene, err)) return PL_ERR_INPUT;
+    return 0;
 }
