@@ -310,6 +310,16 @@ mv initsc/pos.txt initsc/gone.txt
 "$PELOID" run ini10/scene.cfg --out ini55 --steps 5 --restart ini5/checkpoint.h5 2>> err.txt && cmp -s ini10/checkpoint.h5 ini55/checkpoint.h5 \
   && ok "init_file: restart from the run directory's scene.cfg, 10 == 5 + restart + 5 bitwise" || bad "init_file restart: $(cat err.txt)"
 
+# the closing list of files is the directory's: a stress-only run names its
+# observables.h5 (a hand-kept list left it out), every file listed exists
+# and every file there is listed (no lock, no *.tmp)
+printf 'seed = 3;\nsteps = 30;\nbox: { cells = [5, 5, 5]; };\nobserve: { stress_interval = 1; };\n' > stress_only.cfg
+"$PELOID" run stress_only.cfg --out so 2> so.log
+listed=$(sed -n 's|^peloid:   \(/[^ ]*\)  .*|\1|p' so.log | xargs -n1 basename | sort | tr '\n' ' ')
+there=$(ls so | sort | tr '\n' ' ')
+[ "$listed" = "$there" ] && case "$listed" in *observables.h5*) true;; *) false;; esac \
+  && ok "the closing file list is what the directory holds ($listed)" || bad "file list: listed '$listed', there '$there'"
+
 # the adversarial scene set (issue 18): each refused with exit 2, one line
 # naming file, line and key, nothing written (tests/bad_scenes.sh)
 bash "$ROOT/tests/bad_scenes.sh" "$PELOID" > bad.txt 2>&1 && ok "$(tail -1 bad.txt)" || bad "bad scenes: $(cat bad.txt)"

@@ -17,7 +17,6 @@
 
 #define PL_PROGRESS_WINDOW_S 10.0 /* memory of the rate average */
 #define PL_PROGRESS_TTY_S 0.25    /* refresh of the terminal line */
-enum { MAX_FILES = 16 };
 
 struct pl_progress {
     pl_progress_params_t p;
@@ -25,7 +24,7 @@ struct pl_progress {
     long long step_last_sample;
     double rate;       /* steps per wall second, moving average (0: none yet) */
     int line_open;     /* the terminal line is showing */
-    char files[MAX_FILES][PATH_MAX];
+    char **files; /* the run's output files, in the order given */
     int nfiles;
 };
 
@@ -105,8 +104,11 @@ void pl_progress_note(pl_progress_t *g, const char *fmt, ...)
 
 void pl_progress_file(pl_progress_t *g, const char *dir, const char *name)
 {
-    if (!g || g->nfiles >= MAX_FILES) return;
-    snprintf(g->files[g->nfiles++], PATH_MAX, "%.2000s/%.200s", dir, name);
+    if (!g) return;
+    char **grown = realloc(g->files, (size_t)(g->nfiles + 1) * sizeof *grown);
+    if (!grown) return; /* out of memory: the list is a courtesy, the files are written */
+    g->files = grown;
+    if (asprintf(&g->files[g->nfiles], "%s/%s", dir, name) >= 0) g->nfiles++;
 }
 
 static void fmt_size(char *b, size_t n, double s)
@@ -146,5 +148,7 @@ void pl_progress_finish(pl_progress_t *g, long long step)
 void pl_progress_free(pl_progress_t *g)
 {
     if (g && g->p.out) close_line(g); /* a run that stopped early */
+    for (int k = 0; g && k < g->nfiles; ++k) free(g->files[k]);
+    if (g) free(g->files);
     free(g);
 }

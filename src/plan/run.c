@@ -3,6 +3,7 @@
  * and the summary.  Order matters for "nothing written on bad input": the
  * scene is validated, the sim built and any restart checkpoint read before
  * the output directory is created. */
+#include <dirent.h>
 #include <errno.h>
 #include <limits.h>
 #include <math.h>
@@ -268,6 +269,30 @@ static int loop(pl_sim_t *sim, writer_t *w, pl_progress_t *pg, long long last,
     return rc;
 }
 
+/* The files the run leaves in its directory, read from the directory (what
+ * the writers wrote, not a list kept beside them): the usual ones in their
+ * usual order, then any other by name; not the lock or a *.tmp. */
+static void list_outputs(pl_progress_t *pg, const char *dir)
+{
+    static const char *const usual[] = {"scene.cfg",     INIT_COPY,     "thermo.tsv",     "colloids.h5",
+                                        "colloids.xyz",  "fields.h5",   "fields.xdmf",    "observables.h5",
+                                        "checkpoint.h5", "summary.json"};
+    const size_t nusual = sizeof usual / sizeof *usual;
+    struct dirent **e = NULL;
+    const int n = scandir(dir, &e, NULL, alphasort);
+    for (size_t pass = 0; pass <= nusual; ++pass) /* pass < nusual: usual[pass]; then the others */
+        for (int k = 0; k < n; ++k) {
+            const char *name = e[k]->d_name;
+            const size_t len = strlen(name);
+            if (name[0] == '.' || e[k]->d_type == DT_DIR || (len > 4 && !strcmp(name + len - 4, ".tmp"))) continue;
+            size_t u = 0;
+            while (u < nusual && strcmp(name, usual[u])) ++u;
+            if (pass < nusual ? u == pass : u == nusual) pl_progress_file(pg, dir, name);
+        }
+    for (int k = 0; k < n; ++k) free(e[k]);
+    free(e);
+}
+
 /* Resume in place: the restart checkpoint lies in the output directory
  * (an existing one).  The run then continues that directory's thermo.tsv
  * and trajectories after their rows and frames before the checkpoint's
@@ -287,7 +312,7 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     pl_sim_t *sim = NULL;
     json_t *summary = NULL;
     pl_progress_t *pg = NULL;
-    int traj_written = 0, lock_fd = -1;
+    int lock_fd = -1;
     long long last = 0; /* the step the run ends at */
     writer_t w;
     memset(&w, 0, sizeof w);
@@ -419,7 +444,6 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     }
     if (sim->colloid_traj) { /* the final state is the last frame (the stage's at_end) */
         rc = pl_colloid_traj_close(sim->colloid_traj, err);
-        traj_written = 1;
         sim->colloid_traj = NULL;
         if (rc) goto done;
     }
@@ -435,14 +459,7 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         if (pl_modules[m]->finish && (rc = pl_modules[m]->finish(sim, w.dir, summary, err))) goto done;
     rc = write_summary(&w, summary, sim, first, wall, cpu, err);
     if (!rc) {
-        static const char *const names[] = {"scene.cfg", INIT_COPY, "thermo.tsv", "colloids.h5", "colloids.xyz",
-                                            "fields.h5", "fields.xdmf", "observables.h5", "checkpoint.h5",
-                                            "summary.json"};
-        const int wrote[] = {1, uses_init_file(scene), 1, traj_written, traj_written && scene->output.colloids_xyz,
-                             sim->field_acc && sim->field_samples > 0, sim->field_acc && sim->field_samples > 0,
-                             sim->observe != NULL, 1, 1};
-        for (size_t k = 0; k < sizeof names / sizeof *names; ++k)
-            if (wrote[k]) pl_progress_file(pg, w.dir, names[k]);
+        list_outputs(pg, w.dir);
         if (sim->stop_requested && !w.interrupted)
             pl_progress_note(pg, "stopped at step %lld: %s", sim->step, sim->stop_reason);
         pl_progress_finish(pg, sim->step);
