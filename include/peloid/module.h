@@ -9,6 +9,7 @@
 #define PELOID_MODULE_H
 
 #include <stdint.h>
+#include <stdio.h>
 
 #include "peloid/error.h"
 #include "peloid/sim.h"
@@ -32,6 +33,9 @@ typedef struct pl_module {
     int (*add_stages)(pl_sim_t *sim, pl_err_t *err);
     /* Adds the thermo.tsv columns the scene needs, in order (pl_thermo_add). */
     void (*thermo_columns)(const pl_sim_t *sim, pl_thermo_table_t *t);
+    /* Writes what the user should know of its set-up at the start of a run
+     * to log, "peloid: " lines (NULL: nothing). */
+    void (*describe)(const pl_sim_t *sim, FILE *log);
     /* Adds its entries to the head of summary.json (NULL: none); a
      * non-finite value is PL_ERR_INPUT naming the key. */
     int (*summary)(const pl_sim_t *sim, struct json_t *doc, pl_err_t *err);

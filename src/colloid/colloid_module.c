@@ -3,6 +3,8 @@
  * and potential energy terms, centre-of-mass height) and their pair
  * settings in summary.json. */
 #include <jansson.h>
+#include <math.h>
+#include <stdio.h>
 
 #include "checkpoint_h5.h"
 #include "json_build.h"
@@ -98,6 +100,32 @@ static void colloid_columns(const pl_sim_t *sim, pl_thermo_table_t *t)
     pl_thermo_add(t, tail_cols, 2);
 }
 
+/* The start-of-run lines about the pair terms: where the DLVO potential was
+ * matched and cut (Hecht Eqs. 1-2), the colloid-colloid WCA diameter and
+ * the depletion it compensates (PL Eqs. 22-23). */
+static void colloid_describe(const pl_sim_t *sim, FILE *log)
+{
+    if (!sim->colloids) return;
+    if (sim->colloids->pair.terms & PL_CT_DLVO) {
+        const pl_colloid_dlvo_info_t *d = &sim->colloids->dlvo;
+        char bar[64] = "none", sec[64] = "none"; /* NaN: the potential has no barrier / secondary minimum */
+        if (isfinite(d->barrier_u)) snprintf(bar, sizeof bar, "%.4g kT at %.4g a0", d->barrier_u, d->barrier_h);
+        if (isfinite(d->secmin_u)) snprintf(sec, sizeof sec, "%.4g kT at %.4g a0", d->secmin_u, d->secmin_h);
+        fprintf(log, "peloid: DLVO: primary minimum matched at gap %.4g a0 (curvature %.4g kT/a0^2); "
+                     "barrier %s; secondary minimum %s; cut-off gap %.4g a0, truncation error |V| = %.3g kT, "
+                     "|F| = %.3g kT/a0\n",
+                d->hm, d->curvature, bar, sec, d->hcut, d->trunc_u, d->trunc_f);
+    }
+    if (sim->colloids->pair.terms & (PL_CT_WCA | PL_CT_DEPL)) {
+        const pl_colloid_depl_info_t *d = &sim->colloids->depl;
+        fprintf(log, "peloid: colloid-colloid sigma_cc = %.6g a0 (%s); phi_cc = %.4g kT at twice the "
+                     "colloid-fluid cut-off %.6g a0; depletion potential at sigma_cc %.4g kT "
+                     "(PL Eqs. 22-23)%s\n",
+                d->sigma_cc, d->rule == PL_SIGMA_PL ? "wca.sigma_rule = pl, PL Sec. III.C.1" : "wca.sigma",
+                d->phi_match, d->d_match, d->phi_sigma, d->table_n ? "; compensated by depletion_comp" : "");
+    }
+}
+
 /* summary.json "colloid_pairs": the colloid-colloid diameter and the
  * spurious depletion (PL Sec. III.C.1). */
 static int colloid_summary(const pl_sim_t *sim, json_t *doc, pl_err_t *err)
@@ -135,6 +163,7 @@ const pl_module_t pl_colloid_module = {
     .add_stages = colloid_stages,
     .thermo_columns = colloid_columns,
     .summary = colloid_summary,
+    .describe = colloid_describe,
     .checkpoint_write = colloid_ckpt_write,
     .checkpoint_read = colloid_ckpt_read,
 };

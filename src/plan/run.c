@@ -403,25 +403,8 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         fprintf(log, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/\n",
                 scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
     if (log && sim->observe_resumed == 0) fprintf(log, "peloid: %s\n", sim->observe_note);
-    if (log && sim->colloids && (sim->colloids->pair.terms & PL_CT_DLVO)) {
-        const pl_colloid_dlvo_info_t *d = &sim->colloids->dlvo;
-        char bar[64] = "none", sec[64] = "none"; /* NaN: the potential has no barrier / secondary minimum */
-        if (isfinite(d->barrier_u)) snprintf(bar, sizeof bar, "%.4g kT at %.4g a0", d->barrier_u, d->barrier_h);
-        if (isfinite(d->secmin_u)) snprintf(sec, sizeof sec, "%.4g kT at %.4g a0", d->secmin_u, d->secmin_h);
-        fprintf(log, "peloid: DLVO: primary minimum matched at gap %.4g a0 (curvature %.4g kT/a0^2); "
-                     "barrier %s; secondary minimum %s; cut-off gap %.4g a0, truncation error |V| = %.3g kT, "
-                     "|F| = %.3g kT/a0\n",
-                d->hm, d->curvature, bar, sec, d->hcut, d->trunc_u, d->trunc_f);
-    }
-    if (log && sim->colloids && (sim->colloids->pair.terms & (PL_CT_WCA | PL_CT_DEPL))) {
-        const pl_colloid_depl_info_t *d = &sim->colloids->depl;
-        fprintf(log, "peloid: colloid-colloid sigma_cc = %.6g a0 (%s); phi_cc = %.4g kT at twice the "
-                        "colloid-fluid cut-off %.6g a0; depletion potential at sigma_cc %.4g kT "
-                        "(PL Eqs. 22-23)%s\n",
-                d->sigma_cc, d->rule == PL_SIGMA_PL ? "wca.sigma_rule = pl, PL Sec. III.C.1" : "wca.sigma",
-                d->phi_match, d->d_match, d->phi_sigma,
-                d->table_n ? "; compensated by depletion_comp" : "");
-    }
+    for (int m = 0; log && pl_modules[m]; ++m) /* what each module wants the user to know */
+        if (pl_modules[m]->describe) pl_modules[m]->describe(sim, log);
     pl_progress_params_t pp = {.out = o->log, .terminal = o->progress, .interval_s = scene->output.progress_s,
                                .first = first, .last = last, .dt = scene->srd.dt,
                                .t0_s = scene->mapping.enabled ? scene->mapping.map.t0 : 0.0,
