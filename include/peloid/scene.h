@@ -190,6 +190,11 @@ int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err);
 /* Coupling II friction of a colloid of mass M (m_f): 2/3 (1 - cos alpha) mu / dt,
  * mu = M gamma / (M + gamma); an upper bound (src/coupling/coupling.c). */
 double pl_coupling2_friction(const pl_scene_t *scene, double mass);
+/* Whether the scene's coupling moves (the potential coupling's own MD
+ * step, PL Sec. III) or holds (coupling.pinned) the colloids, so that the
+ * colloid module adds no MD stage; n_fluid: the fluid's particle count (no
+ * coupling without fluid) (src/coupling/coupling.c). */
+int pl_coupling_moves_colloids(const pl_scene_t *scene, size_t n_fluid);
 
 /* Cross-key checks of the colloid sections (src/colloid/colloid_scene.c). */
 int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err);

@@ -9,7 +9,6 @@
 #include "checkpoint_h5.h"
 #include "json_build.h"
 #include "peloid/colloid.h"
-#include "peloid/coupling.h"
 #include "peloid/module.h"
 
 static int colloid_create(pl_sim_t *sim, pl_err_t *err)
@@ -53,7 +52,7 @@ static int colloid_stages(pl_sim_t *sim, pl_err_t *err)
     }
     /* pinned colloids do not move; the potential coupling runs the
      * colloid MD together with the fluid near them */
-    if (!(sim->coupling && (sim->coupling->pinned || sim->coupling->method == PL_COUPLE_POTENTIAL))) {
+    if (!pl_coupling_moves_colloids(sc, sim->fluid.n)) {
         pl_stage_t md = {.name = "colloid-md", .fn = stage_colloid_md, .slot = PL_SLOT_COLLOID_MD};
         if ((rc = pl_sim_add_stage(sim, &md, err))) return rc;
     }

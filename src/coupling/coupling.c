@@ -112,6 +112,12 @@ static void clear_interiors(const pl_coupling_t *cp, pl_sim_t *sim, const pl_cou
                                 cp->nthreads);
 }
 
+int pl_coupling_moves_colloids(const pl_scene_t *scene, size_t n_fluid)
+{
+    const pl_scene_coupling_t *c = &scene->coupling;
+    return n_fluid > 0 && c->method != PL_COUPLE_NONE && (c->pinned || c->method == PL_COUPLE_POTENTIAL);
+}
+
 int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
 {
     const pl_scene_t *sc = &sim->scene;
