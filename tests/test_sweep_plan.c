@@ -157,6 +157,7 @@ Test(sweep_plan, given_jobs_and_threads_win)
     run(&big, 0, 0, 0, 1, 0); /* nothing to run */
     cr_assert_eq(plan.jobs, 1);
     cr_assert_eq(plan.threads, 1);
+    cr_assert_str_eq(plan.why, "no point to run");
 }
 
 Test(sweep_plan, memory_bounds_the_jobs)

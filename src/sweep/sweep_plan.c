@@ -89,7 +89,11 @@ void pl_sweep_plan(const pl_sweep_machine_t *m, const pl_sweep_request_t *r, pl_
     const int C = m->cores > 0 ? imin(m->cores, PL_SWEEP_MAX_CORES) : 1;
     const int P = r->todo > 0 ? r->todo : 1, tmax = r->cost.max_threads > 0 ? r->cost.max_threads : 1;
     int j, t;
-    if (r->jobs_given > 0) {
+    if (r->todo <= 0) {
+        p->jobs = p->threads = 1;
+        WHY("no point to run");
+        return;
+    } else if (r->jobs_given > 0) {
         j = imin(r->jobs_given, P);
         t = r->threads_given > 0 ? r->threads_given : spare_threads(C, j, tmax);
         if (r->threads_given > 0) WHY("--jobs %d --threads %d as given", r->jobs_given, r->threads_given);
@@ -309,7 +313,7 @@ int pl_sweep_plan_points(const sweep_t *s, int first, int n, const int *state, i
             WHY(" (not applied: hwloc could not give the cores' CPU sets)");
         }
     }
-    int rc = s->o->point < 0 ? write_plan(s, &r, pl, text, err) : 0;
+    int rc = s->o->point < 0 && todo > 0 ? write_plan(s, &r, pl, text, err) : 0; /* else: the last plan stays */
     free(text);
     return rc;
 }
