@@ -54,7 +54,7 @@ for how in plan one; do
   name="its own plan: $(sed -n 's/.*from its checkpoint): \([0-9]* job(s) x [0-9]* thread(s)\) on .*/\1/p' "$TMP/$how.line")"
   [ "$how" = one ] && name="\`--jobs 1 --threads $N\`"
   awk -v n="$name" -v m="$m" -v lo="$lo" -v hi="$hi" -v s=$((P * STEPS)) -v lm="$lm" -v llo="$llo" -v lhi="$lhi" \
-    'BEGIN {printf "| %s | %.2f (%.2f..%.2f) | %.0f (%.0f..%.0f) | %.2f (%.2f..%.2f) |\n", n, m, lo, hi, s / m, s / hi, s / lo, lm, llo, lhi}'
+    'BEGIN {printf "| %s | %.2f (%.2f..%.2f) | %.1f (%.1f..%.1f) | %.2f (%.2f..%.2f) |\n", n, m, lo, hi, s / m, s / hi, s / lo, lm, llo, lhi}'
 done
 echo
 echo "$P points of $SCENE x $STEPS steps, $REPS interleaved repetitions; /proc/loadavg $LOAD0 at the start, $LOAD1 at the end."
