@@ -51,7 +51,10 @@ static int spare_threads(int cores, int jobs, int max_threads)
     return t < 1 ? 1 : t;
 }
 
-#define WHY(...) (len += (size_t)snprintf(p->why + len, len < sizeof p->why ? sizeof p->why - len : 0, __VA_ARGS__))
+/* Appends to p->why (cut at its size; `len` counts what was asked). */
+#define WHY(...)                                                                \
+    (len += (size_t)snprintf(len < sizeof p->why ? p->why + len : NULL,         \
+                             len < sizeof p->why ? sizeof p->why - len : 0, __VA_ARGS__))
 
 /* Cores for each job: the domain with the most free cores that holds a
  * whole job; else what is free, in logical order (a split job). */
@@ -125,8 +128,8 @@ void pl_sweep_plan(const pl_sweep_machine_t *m, const pl_sweep_request_t *r, pl_
                 if (r->threads_given <= 0) t = spare_threads(C, j, tmax);
             }
             p->mem_jobs = (int)fmin(have / job_bytes(r, t), (double)PL_SWEEP_MAX_CORES);
-            WHY("; memory: %d job(s) would need %.3g GB, more than %.0f %% of the %.3g GB available: %d job(s) x %d thread(s)", j0,
-                need0 / 1e9, 100 * PL_SWEEP_MEMORY_SHARE, m->mem_bytes / 1e9, j, t);
+            WHY("; memory: %d job(s) would need %.3g GB, more than %.0f %% of the %.3g GB available: "
+                "%d job(s) x %d thread(s)", j0, need0 / 1e9, 100 * PL_SWEEP_MEMORY_SHARE, m->mem_bytes / 1e9, j, t);
         } else WHY("; memory: %d x %.3g GB (the largest point's estimate + %.0f MB a process) of %.3g GB available",
                    j, job_bytes(r, t) / 1e9, PL_SWEEP_JOB_OVERHEAD_BYTES / 1e6, m->mem_bytes / 1e9);
         if (j * job_bytes(r, t) > have)
