@@ -1,6 +1,7 @@
 /* `peloid sweep`: the points of a study (src/sweep/study.c) as independent
  * `peloid run` processes, a process pool of `jobs` processes with `threads`
- * OpenMP threads each (pl_sweep_plan), resumable, or as a Slurm job array.
+ * OpenMP threads each, each process bound to cores of its own (pl_sweep_plan),
+ * resumable, or as a Slurm job array.
  *
  * OUT/points.json        the study: keys, plot, each point's id and values
  * OUT/scenes/ID.cfg      point ID's scene (base + its values)
@@ -8,6 +9,7 @@
  * OUT/logs/ID.log        its stdout + stderr
  * OUT/status/ID.tsv      "exit_code<TAB>last line of its stderr"
  * OUT/sweep.{tsv,json,png}  the table and plot (tools/sweep_collect.py)
+ * OUT/plan.json          jobs x threads, why, each job's CPU set (sweep_plan.c)
  *
  * A point is finished when OUT/ID/summary.json is complete JSON with its
  * last_step (run.c writes it atomically at the end) and OUT/scenes/ID.cfg is
