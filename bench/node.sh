@@ -11,7 +11,9 @@
 #   4. sweep throughput: `peloid sweep` of an N-point study of the Fig. 9
 #      scene (seeds 1..N) as N processes x 1 thread against one N-thread
 #      run, steps/s in total; with N = nproc the sweep runs with its own
-#      choice of processes x threads and the table quotes it;
+#      plan of jobs x threads (README "Parameter sweeps") and the table
+#      quotes it and its reason (bench/sweep_plan.sh: the plan against
+#      --jobs 1 --threads N on the same study);
 #   5. LAMMPS `fix srd` on bench/peers/in.srd_fluid_pure at 1 and N MPI
 #      ranks, interleaved with peloid on the same fluid and L (skipped, with
 #      a line saying so, when no LAMMPS with the SRD package is installed).
@@ -345,7 +347,7 @@ if [ "$(calc "$SP > $sl * 1.5 ? 1 : 0")" = 1 ]; then
 else
   log "sweep: $NMAX points x $SS steps vs one $NMAX-thread run, $SR reps (predicted ${SP%.*} s of ${sl%.*})"
   seeds=$(seq -s, 1 "$NMAX")
-  PICK=""; SWOPT=""
+  PICK=""; WHY=""; SWOPT=""
   # N = the CPUs: the sweep's own choice (its log line says it); otherwise N x 1 forced
   [ "$NMAX" = "$NPROC" ] || SWOPT="--jobs $NMAX --threads 1"
   for r in $(seq "$SR"); do
@@ -357,7 +359,9 @@ else
     # shellcheck disable=SC2086
     timeout "$(cap 300)" bin/peloid sweep "$TMP/study.cfg" --out "$TMP/sw" $SWOPT >"$TMP/sw.log" 2>&1
     src=$?; e=$(date +%s.%N)
-    [ -n "$PICK" ] || PICK=$(sed -n 's/.*to run: \(.*\) -> .*/\1/p' "$TMP/sw.log" | head -1)
+    # the plan's line: "... to run (K from its checkpoint): J job(s) x T thread(s) on C core(s): why -> OUT/"
+    [ -n "$PICK" ] || PICK=$(sed -n 's/.*from its checkpoint): \([0-9]* job(s) x [0-9]* thread(s) on [0-9]* core(s)\): .*/\1/p' "$TMP/sw.log" | head -1)
+    [ -n "$WHY" ] || WHY=$(sed -n 's/.*from its checkpoint): [0-9]* job(s) x [0-9]* thread(s) on [0-9]* core(s): \(.*\) -> .*/\1/p' "$TMP/sw.log" | head -1)
     ok=$(cat "$TMP"/sw/p*/summary.json 2>/dev/null | grep -c '"wall_seconds"')
     if [ "$ok" = "$NMAX" ]; then
       cat "$TMP"/sw/p*/summary.json | sed -n 's/.*"wall_seconds": \([0-9.eE+-]*\).*/\1/p' \
@@ -372,8 +376,8 @@ else
     fi
   done
   emit ""
-  if [ -n "$SWOPT" ]; then how="run with \`$SWOPT\` ($NMAX < the $NPROC CPUs; by itself it would take min(points, CPUs) processes x CPUs / processes threads)"
-  else how="its own choice: ${PICK:-?}"; fi
+  if [ -n "$SWOPT" ]; then how="run with \`$SWOPT\` ($NMAX < the $NPROC CPUs; by itself it plans for the cores it sees, README \"Parameter sweeps\")"
+  else how="its own plan: ${PICK:-?}${WHY:+ (\"$WHY\")}"; fi
   emit "**Sweep throughput** (Fig. 9 model scene, $SS collision steps per run; $SR repetitions, median (min..max)): \`peloid sweep\` of a $NMAX-point study (seeds 1..$NMAX; $how) against one \`peloid run --threads $NMAX\`. Loop: steps / the run loop's wall time (the slowest point for the sweep); end to end: steps / the command's wall time (process start, scene set-up, the sweep's collect and plot):"
   emit ""
   emit "| how | collision steps/s in total, loop | end to end |"

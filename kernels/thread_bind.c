@@ -1,5 +1,6 @@
 /* Thread placement (DESIGN.md "Performance contract"): the OpenMP team of a
- * run is bound to cores spread over the machine before the first allocation,
+ * run is bound to cores spread over the machine before the first allocation
+ * (over the process's own CPU binding: a sweep's job, taskset, a Slurm task),
  * whose first touch (kernels/first_touch.c) then places each thread's pages
  * on its own NUMA node.  The one parallel region of peloid that is not a loop
  * over data: each thread of the team binds itself. */
@@ -24,6 +25,12 @@ void pl_threads_bind(int nthreads)
         hwloc_topology_destroy(topo);
         return;
     }
+    /* only the cores this process may run on: two sweep jobs of 2 threads
+     * each must not both spread over the whole machine */
+    hwloc_bitmap_t own = hwloc_bitmap_alloc();
+    if (own && !hwloc_get_cpubind(topo, own, HWLOC_CPUBIND_PROCESS) && !hwloc_bitmap_iszero(own))
+        hwloc_topology_restrict(topo, own, 0);
+    hwloc_bitmap_free(own);
     int ncores = hwloc_get_nbobjs_by_type(topo, HWLOC_OBJ_CORE);
     if (ncores >= nthreads && nthreads <= 1024) {
         hwloc_bitmap_t sets[1024];

@@ -5,7 +5,11 @@
 # value trips a guard at run time fails alone and is recorded with its exit
 # code and message; an invalid override, an unknown key and an empty grid are
 # refused before anything is written (exit 2, one line naming file:line and
-# key); --point K runs exactly point K; --slurm writes the job array.
+# key); --point K runs exactly point K; --slurm writes the job array; the
+# throughput plan (OUT/plan.json, the log line, sweep.json "plan", the
+# threads column) is within the sweep's cores, its jobs' CPU sets disjoint,
+# --jobs/--threads override it, and each point's results are bitwise the
+# same under the plan and under --jobs 1 --threads 2.
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 PY=/usr/bin/python3
@@ -173,5 +177,61 @@ if grep -q "^  cells = \[10, 10, 10\];" out/arr/scenes/p003.cfg && grep -q '^  i
    && grep -q "^steps = 5000000000L;" out/arr/scenes/p003.cfg && "$PELOID" check out/arr/scenes/p003.cfg > /dev/null 2>&1; then
   ok "array, string and 64-bit integer values written into the point's scene, which checks ok"
 else bad "array/string/int64 values in a point's scene"; fi
+# 9. the throughput plan: jobs x threads within the cores the sweep may use,
+#    each job on cores of its own, the choice and why in one line, plan.json,
+#    sweep.json and the threads column; --jobs/--threads override it
+if $PY - <<'PY'
+import json, os
+p = json.load(open("out/grid/plan.json"))
+m = p["machine"]
+assert p["points_to_run"] >= 1 and p["jobs"] >= 1 and p["threads"] >= 1 and p["why"], p
+assert sum(m["domain_cores"]) == m["cores"] == len(os.sched_getaffinity(0)) // (m["pus"] // m["cores"]), (m, os.sched_getaffinity(0))
+if p["jobs"] * p["threads"] <= m["cores"]:
+    sets = [set() for _ in p["cpusets"]]
+    for s, txt in zip(sets, p["cpusets"]):
+        for part in txt.split(","):
+            a, _, b = part.partition("-")
+            s.update(range(int(a), int(b or a) + 1))
+    assert len(sets) == p["jobs"] and all(s <= os.sched_getaffinity(0) for s in sets), p["cpusets"]
+    assert all(not (x & y) for i, x in enumerate(sets) for y in sets[i + 1:]), p["cpusets"]
+j = json.load(open("out/grid/sweep.json"))
+assert j["plan"]["jobs"] == p["jobs"], j.get("plan")
+PY
+then ok "plan.json: jobs x threads within the sweep's cores, disjoint CPU sets inside its binding; sweep.json has the plan"
+else bad "plan.json: $(cat out/grid/plan.json 2>&1 | head -c 400)"; fi
+grep -Eq "4 to run \(0 from its checkpoint\): [0-9]+ job\(s\) x [0-9]+ thread\(s\) on [0-9]+ core\(s\): .*(one single-thread job per core|spare cores).*memory: .* -> out/grid/" grid.err \
+  && ok "one log line: jobs x threads, cores, why, memory" || bad "plan line: $(head -1 grid.err)"
+if command -v taskset > /dev/null && taskset -c 0 true 2> /dev/null; then
+  sed 's#out/grid#out/ts#' grid.cfg > ts.cfg
+  taskset -c 0 "$PELOID" sweep ts.cfg 2> ts.err
+  $PY -c 'import json; p = json.load(open("out/ts/plan.json")); assert (p["jobs"], p["threads"], p["cpusets"], p["machine"]["cores"]) == (1, 1, ["0"], 1), p' \
+    && ok "under taskset -c 0 the sweep plans 1 x 1 on core 0 (the machine as its binding shows it)" || bad "taskset: $(head -1 ts.err)"
+fi
+
+# 10. a point's results do not depend on jobs x threads: a small fluid
+#     swept by the plan and by --jobs 1 --threads 2, bitwise
+cat > fl.cfg <<'CFG'
+name = "fl";
+seed = 5;
+steps = 40;
+box: { cells = [10, 10, 10]; };
+fluid: { density = 10.0; };
+srd: { dt = 0.1; };
+output: { checkpoint_interval = 40; };
+CFG
+printf 'name = "fl"; scene = "fl.cfg"; out = "out/fa";\ngrid = ( { key = "seed"; values = [1, 2]; } );\n' > fa.cfg
+sed 's#out/fa#out/fb#' fa.cfg > fb.cfg
+"$PELOID" sweep fa.cfg 2> fa.err; ra=$?
+"$PELOID" sweep fb.cfg --jobs 1 --threads 2 2> fb.err; rb=$?
+same=0
+for k in p000 p001; do
+  [ -f out/fa/$k/checkpoint.h5 ] && [ "$(sha256sum < out/fa/$k/checkpoint.h5)" = "$(sha256sum < out/fb/$k/checkpoint.h5)" ] \
+    && [ "$(cut -f1-8 out/fa/$k/thermo.tsv | sha256sum)" = "$(cut -f1-8 out/fb/$k/thermo.tsv | sha256sum)" ] \
+    && [ "$(head -1 out/fa/$k/thermo.tsv | cut -f9)" = mupdates_per_s ] && same=$((same + 1))
+done
+tb=$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "threads") c = i } NR > 1 { print $c }' out/fb/sweep.tsv | sort -u)
+if [ $ra = 0 ] && [ $rb = 0 ] && [ $same = 2 ] && [ "$tb" = 2 ] && grep -q "1 job(s) x 2 thread(s) on .*--jobs 1 --threads 2 as given" fb.err; then
+  ok "both points bitwise equal (checkpoint.h5, thermo.tsv but its wall-clock rate) under $(sed -n 's/.*checkpoint): \([0-9]* job(s) x [0-9]* thread(s)\).*/\1/p' fa.err) and --jobs 1 --threads 2 (threads column: 2)"
+else bad "jobs x threads determinism: exit $ra/$rb, $same of 2 points equal, threads column '$tb'"; fi
 echo "  sweep tests: $pass passed, $fail failed ($(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }') s)"
 [ $fail = 0 ]

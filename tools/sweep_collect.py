@@ -9,10 +9,13 @@ OUT/ID/summary.json and OUT/status/ID.tsv, and writes
   OUT/sweep.tsv   one row per point: id, status (ok / failed / interrupted /
                   pending; interrupted: a signal stopped it at a checkpoint,
                   the next sweep resumes it from there), exit
-                  code, message, the swept keys, last_step, wall_seconds, then
+                  code, message, the swept keys, last_step, wall_seconds,
+                  threads (the OpenMP threads its run had), then
                   NAME and NAME_se for every observable any point measured
                   (summary.json "observables": value +- stderr)
-  OUT/sweep.json  the same as a list of objects
+  OUT/sweep.json  the same as a list of objects, and "plan": OUT/plan.json
+                  (the jobs x threads the last sweep chose, why, each job's
+                  CPU set, the machine), when it exists
   OUT/sweep.png   the study's plot{}: y (one panel per observable) against x,
                   one line per value of `series`, error bars = SE; without
                   plot{}: every observable against the first swept key.
@@ -40,7 +43,7 @@ def fmt(v):
 
 def load_point(out, p):
     row = {"id": p["id"], "index": p["index"], "params": p["params"], "status": "pending", "exit_code": None,
-           "message": "", "last_step": None, "wall_seconds": None, "observables": {}}
+           "message": "", "last_step": None, "wall_seconds": None, "threads": None, "observables": {}}
     st = os.path.join(out, "status", p["id"] + ".tsv")
     if os.path.exists(st):
         try:
@@ -69,6 +72,7 @@ def load_point(out, p):
                 row["message"] = "ok"
             row["last_step"] = s["last_step"]
             row["wall_seconds"] = s.get("wall_seconds")
+            row["threads"] = s.get("threads")
             for name, o in (s.get("observables") or {}).items():
                 if isinstance(o, dict) and "value" in o:
                     row["observables"][name] = {"value": o["value"], "stderr": o.get("stderr"),
@@ -142,14 +146,14 @@ def main():
     names = []
     for r in rows:
         names += [n for n in r["observables"] if n not in names]
-    head = ["id", "status", "exit_code", "message"] + study["keys"] + ["last_step", "wall_seconds"]
+    head = ["id", "status", "exit_code", "message"] + study["keys"] + ["last_step", "wall_seconds", "threads"]
     for n in names:
         head += [n, n + "_se"]
     lines = ["\t".join(head)]
     for r in rows:
         cells = [r["id"], r["status"], fmt(r["exit_code"]), r["message"].replace("\t", " ")]
         cells += [fmt(r["params"].get(k)) for k in study["keys"]]
-        cells += [fmt(r["last_step"]), fmt(r["wall_seconds"])]
+        cells += [fmt(r["last_step"]), fmt(r["wall_seconds"]), fmt(r["threads"])]
         for n in names:
             o = r["observables"].get(n)
             cells += [fmt(o["value"]), fmt(o["stderr"])] if o else ["", ""]
@@ -158,8 +162,12 @@ def main():
     open(tmp, "w").write("\n".join(lines) + "\n")
     os.replace(tmp, os.path.join(out, "sweep.tsv"))
     tmp = os.path.join(out, "sweep.json.tmp")
-    json.dump({"study": study["study"], "study_file": study["study_file"], "keys": study["keys"], "points": rows},
-              open(tmp, "w"), indent=1)
+    doc = {"study": study["study"], "study_file": study["study_file"], "keys": study["keys"], "points": rows}
+    try:
+        doc["plan"] = json.load(open(os.path.join(out, "plan.json")))
+    except (OSError, ValueError):
+        pass  # a Slurm array (--point, --collect) plans nothing
+    json.dump(doc, open(tmp, "w"), indent=1)
     os.replace(tmp, os.path.join(out, "sweep.json"))
     plot(study, rows, os.path.join(out, "sweep.png"))
     ok = sum(r["status"] == "ok" for r in rows)

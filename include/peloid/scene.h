@@ -233,6 +233,8 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err);
  * memory (src/scene/scene_validate.c).  Called by the loader at 1 thread,
  * by `check` and by a run at their thread counts. */
 int pl_scene_memory_check(const pl_scene_t *scene, int nthreads, pl_err_t *err);
+/* The estimate itself, in bytes (the sweep's plan sizes its jobs with it). */
+double pl_scene_memory_bytes(const pl_scene_t *scene, int nthreads);
 
 /* Line on which the key at `offset` (offsetof(pl_scene_t, ...)) was given,
  * or 0 when it took its default. */

@@ -46,8 +46,10 @@ void pl_study_plot_json(const pl_study_t *study, char *buf, size_t n);
 
 /* Checks every point's scene with the scene loader and the run's checks
  * (pl_run_check) before anything is written; a bad point is refused naming
- * the study line, the point and its values, then the loader's message. */
-int pl_study_check_points(pl_study_t *study, const char *out_dir, pl_err_t *err);
+ * the study line, the point and its values, then the loader's message.
+ * cost (NULL: not wanted): each point's cost for the plan (pl_sweep_point_cost). */
+struct pl_sweep_cost;
+int pl_study_check_points(pl_study_t *study, const char *out_dir, struct pl_sweep_cost *cost, pl_err_t *err);
 
 typedef struct {
     const char *out_dir;  /* NULL: the study's */
@@ -66,10 +68,67 @@ typedef struct {
     volatile sig_atomic_t *interrupt;
 } pl_sweep_opts_t;
 
-/* Processes and threads for `todo` points on `cpus` CPUs: jobs = min(todo,
- * cpus), threads = max(1, cpus / jobs); a given --jobs or --threads wins
- * (only --threads: jobs = max(1, cpus / threads), at most todo). */
-void pl_sweep_plan(int todo, int cpus, int jobs_given, int threads_given, int *jobs, int *threads);
+/* The throughput plan of a sweep (src/sweep/sweep_plan.c).  What a point
+ * costs, from its scene (pl_sweep_point_cost): its run's memory estimate
+ * (pl_scene_memory_bytes) and the most threads it gains from, by the rule
+ * of thumb of README "Parameter sweeps": max(1, fluid particles / 131072,
+ * colloids / 64), at most 8 with colloids (bench/RESULTS.md, issue 38). */
+typedef struct pl_sweep_cost {
+    double mem_bytes;      /* estimated bytes of its run at 1 thread */
+    double mem_per_thread; /* + this per further thread (the sort's histograms) */
+    int max_threads;       /* threads beyond this do not speed it up */
+} pl_sweep_cost_t;
+
+enum { PL_SWEEP_MAX_CORES = 4096, PL_SWEEP_MAX_DOMAINS = 256 };
+/* A point's jobs get this much memory on top of the estimate (the process,
+ * its libraries, HDF5 and observer buffers). */
+#define PL_SWEEP_JOB_OVERHEAD_BYTES 64.0e6
+/* Of the memory available at the start, the jobs together may use this share. */
+#define PL_SWEEP_MEMORY_SHARE 0.8
+
+/* The machine as the sweep sees it (pl_sweep_machine: hwloc, restricted to
+ * the sweep's own CPU binding, e.g. taskset or a Slurm allocation). */
+typedef struct {
+    int cores;    /* cores with a PU in the binding */
+    int pus;      /* hardware threads (PUs) on them */
+    int ndomains; /* L3 caches holding them (else NUMA nodes, else 1) */
+    int domain_cores[PL_SWEEP_MAX_DOMAINS]; /* cores per domain; hwloc's logical core order, domain by domain */
+    char domain_kind[8]; /* "L3", "NUMA" or "machine" */
+    double mem_bytes;    /* memory available now (MemAvailable; 0: unknown) */
+} pl_sweep_machine_t;
+
+/* What the plan is asked: points to run, --jobs and --threads (0: choose),
+ * and the largest memory and max_threads of those points. */
+typedef struct {
+    int todo, jobs_given, threads_given;
+    pl_sweep_cost_t cost;
+} pl_sweep_request_t;
+
+typedef struct {
+    int jobs, threads;
+    int bound;    /* each job bound to cores of its own: core[] */
+    int split;    /* jobs whose cores span two domains */
+    int idle;     /* cores no job uses (bound plans) */
+    int mem_jobs; /* the most jobs the memory holds at `threads` (0: not known) */
+    int core[PL_SWEEP_MAX_CORES]; /* job j: cores core[j * threads .. + threads - 1], logical indices */
+    char why[768]; /* the choice and its reasons, one line */
+} pl_sweep_plan_t;
+
+/* Processes x threads for the highest throughput: with P points to run and
+ * C cores, jobs = min(P, C) single-thread jobs when P >= C; when P < C,
+ * jobs = P with threads = floor(C / P), at most cost.max_threads.  A given
+ * --jobs or --threads wins (only --threads: jobs = C / threads; only --jobs:
+ * threads = C / jobs bounded as above); jobs never exceed P.  Without --jobs,
+ * jobs shrink until jobs x (the largest point's estimate + the overhead)
+ * fits PL_SWEEP_MEMORY_SHARE of the memory; a given --jobs is kept and the
+ * reason says it does not fit.  When jobs x threads <= C each job gets
+ * cores of its own, inside one domain where one has room (the domain with
+ * the most free cores first, so jobs spread over domains). */
+void pl_sweep_plan(const pl_sweep_machine_t *m, const pl_sweep_request_t *r, pl_sweep_plan_t *p);
+/* The machine (hwloc and /proc/meminfo). */
+void pl_sweep_machine(pl_sweep_machine_t *m);
+struct pl_scene;
+void pl_sweep_point_cost(const struct pl_scene *scene, pl_sweep_cost_t *cost);
 
 /* The sweep: checks every point, writes OUT/points.json and each point's
  * scene, runs the points not yet finished (a point a signal interrupted

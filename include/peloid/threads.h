@@ -9,7 +9,8 @@
 int pl_threads_default(void);
 
 /* Pins OpenMP thread t to the t-th of nthreads core sets spread over the
- * machine by hwloc_distrib (packages first), unless the user chose a binding
+ * cores of the process's CPU binding (the machine when unbound) by
+ * hwloc_distrib (packages first), unless the user chose a binding
  * (OMP_PROC_BIND) or set PL_NO_BIND.  Call before the allocations, whose
  * first touch then places each thread's pages on its own NUMA node. */
 void pl_threads_bind(int nthreads);

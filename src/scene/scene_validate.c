@@ -18,7 +18,8 @@
  * histograms of the counting sort, the cell starts, a coupling's cell starts
  * and mask and, with output.fields_interval, the field sums (4 x 8 B); per
  * colloid ~600 B (state, scratch, neighbour list). */
-int pl_scene_memory_check(const pl_scene_t *scene, int nthreads, pl_err_t *err)
+static double memory_bytes(const pl_scene_t *scene, int nthreads, double *np_out, double *per_p_out,
+                           double *cells_out, double *per_c_out)
 {
     const pl_scene_box_t *b = &scene->box;
     const int cpl = scene->coupling.method != PL_COUPLE_NONE && scene->colloids.count > 0;
@@ -33,7 +34,22 @@ int pl_scene_memory_check(const pl_scene_t *scene, int nthreads, pl_err_t *err)
     const double per_p = 12.0 * sizeof(pl_real) + 4.0 + (scene->output.track_fluid ? 56.0 : 0.0) +
                          (pot ? 8.0 + 8.0 * (scene->output.track_fluid ? 9.0 : 6.0) : 0.0);
     const double per_c = 4.0 * nthreads + 4.0 + (cpl ? 4.125 : 0.0) + (scene->output.fields_interval > 0 ? 32.0 : 0.0);
-    const double need = per_p * np + per_c * cells + 600.0 * (double)scene->colloids.count;
+    if (np_out) *np_out = np;
+    if (per_p_out) *per_p_out = per_p;
+    if (cells_out) *cells_out = cells;
+    if (per_c_out) *per_c_out = per_c;
+    return per_p * np + per_c * cells + 600.0 * (double)scene->colloids.count;
+}
+
+double pl_scene_memory_bytes(const pl_scene_t *scene, int nthreads)
+{
+    return memory_bytes(scene, nthreads, NULL, NULL, NULL, NULL);
+}
+
+int pl_scene_memory_check(const pl_scene_t *scene, int nthreads, pl_err_t *err)
+{
+    double np, per_p, cells, per_c;
+    const double need = memory_bytes(scene, nthreads, &np, &per_p, &cells, &per_c);
     long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
     double have = pages > 0 && psize > 0 ? (double)pages * (double)psize : 0.0;
     if (!(have > 0.0 && need > have)) return 0;

@@ -545,7 +545,7 @@ void pl_study_plot_json(const pl_study_t *st, char *buf, size_t n)
     free(s);
 }
 
-int pl_study_check_points(pl_study_t *st, const char *out_dir, pl_err_t *err)
+int pl_study_check_points(pl_study_t *st, const char *out_dir, pl_sweep_cost_t *cost, pl_err_t *err)
 {
     pl_scene_t *scene = malloc(sizeof *scene);
     if (!scene) return pl_err_set(err, PL_ERR_NOMEM, "out of memory checking the study's points");
@@ -558,6 +558,7 @@ int pl_study_check_points(pl_study_t *st, const char *out_dir, pl_err_t *err)
         if ((rc = pl_study_point_scene(st, k, name, &text, err))) break;
         rc = pl_scene_load_string(text, label, scene, err);
         if (!rc) rc = pl_run_check(scene, err);
+        if (!rc && cost) pl_sweep_point_cost(scene, &cost[k]);
         free(text);
         if (rc) { /* name the study line of the values, the point, then the loader's line */
             char vals[512] = "", v[128], inner[1024];

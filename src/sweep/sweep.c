@@ -1,6 +1,7 @@
 /* `peloid sweep`: the points of a study (src/sweep/study.c) as independent
  * `peloid run` processes, a process pool of `jobs` processes with `threads`
- * OpenMP threads each (pl_sweep_plan), resumable, or as a Slurm job array.
+ * OpenMP threads each, each process bound to cores of its own (pl_sweep_plan),
+ * resumable, or as a Slurm job array.
  *
  * OUT/points.json        the study: keys, plot, each point's id and values
  * OUT/scenes/ID.cfg      point ID's scene (base + its values)
@@ -8,6 +9,7 @@
  * OUT/logs/ID.log        its stdout + stderr
  * OUT/status/ID.tsv      "exit_code<TAB>last line of its stderr"
  * OUT/sweep.{tsv,json,png}  the table and plot (tools/sweep_collect.py)
+ * OUT/plan.json          jobs x threads, why, each job's CPU set (sweep_plan.c)
  *
  * A point is finished when OUT/ID/summary.json is complete JSON with its
  * last_step (run.c writes it atomically at the end) and OUT/scenes/ID.cfg is
@@ -184,26 +186,6 @@ static void last_line(const char *path, char *buf, size_t n)
     free(s);
 }
 
-void pl_sweep_plan(int todo, int cpus, int jobs_given, int threads_given, int *jobs, int *threads)
-{
-    if (cpus < 1) cpus = 1;
-    int j = jobs_given > 0 ? jobs_given : threads_given > 0 ? cpus / threads_given : cpus;
-    if (j > todo) j = todo;
-    if (j < 1) j = 1;
-    int t = threads_given > 0 ? threads_given : cpus / j;
-    *jobs = j;
-    *threads = t < 1 ? 1 : t;
-}
-
-static int cpu_count(void)
-{
-    cpu_set_t set;
-    if (!sched_getaffinity(0, sizeof set, &set)) return CPU_COUNT(&set);
-    long n = sysconf(_SC_NPROCESSORS_ONLN);
-    return n > 0 ? (int)n : 1;
-}
-
-
 static void point_path(const sweep_t *s, int k, const char *fmt, char *buf, size_t n)
 {
     char id[32];
@@ -298,7 +280,7 @@ static void record(const sweep_t *s, int k, int code, const char *msg)
 /* Starts point k in a process group of its own (the sweep forwards signals
  * to it); left >= 0: resumes it in place from its checkpoint for `left`
  * steps (its log is appended to). */
-static pid_t start_point(const sweep_t *s, int k, int threads, long long left)
+static pid_t start_point(const sweep_t *s, int k, int threads, long long left, const cpu_set_t *cpus)
 {
     char scene[4096], dir[4096], log[4096], th[16], ck[4096], ls[32];
     point_path(s, k, "scenes/%s.cfg", scene, sizeof scene);
@@ -326,6 +308,7 @@ static pid_t start_point(const sweep_t *s, int k, int threads, long long left)
         if (!sigaction(sigs[j], NULL, &old) && old.sa_handler != SIG_IGN) signal(sigs[j], SIG_DFL);
     }
     if (signal_seen(s->o)) _exit(128 + abs(signal_seen(s->o)));
+    if (cpus) sched_setaffinity(0, sizeof *cpus, cpus); /* its run's threads spread inside (thread_bind.c) */
     FILE *f = freopen(log, left >= 0 ? "a" : "w", stderr);
     if (!f || dup2(fileno(stderr), 1) < 0) _exit(PL_ERR_IO);
     if (left >= 0)
@@ -405,12 +388,16 @@ static int run_points(sweep_t *s, int first, int last, tally_t *t, pl_err_t *err
         } else ++todo;
         if (!rc && left[i] >= 0) ++resumed;
     }
-    int jobs, threads;
-    pl_sweep_plan(todo, cpu_count(), s->o->jobs, s->o->threads, &jobs, &threads);
+    sweep_plan_t pl = {0};
+    if (!rc) rc = pl_sweep_plan_points(s, first, n, state, todo, &pl, err);
+    const int jobs = pl.plan ? pl.plan->jobs : 1, threads = pl.plan ? pl.plan->threads : 1;
+    char *busy = calloc((size_t)jobs, 1);
+    int *slot = calloc((size_t)n, sizeof *slot);
+    if (!rc && (!busy || !slot)) rc = pl_err_set(err, PL_ERR_NOMEM, "out of memory starting the sweep");
     if (!rc)
         fprintf(s->o->log, "peloid sweep %s: %d point(s), %d finished before, %d to run (%d from its checkpoint): "
-                "%d process(es) x %d thread(s) on %d CPU(s) -> %s/\n", pl_study_name(s->st), n, skipped, todo,
-                resumed, jobs, threads, cpu_count(), s->out);
+                "%d job(s) x %d thread(s) on %d core(s): %s -> %s/\n", pl_study_name(s->st), n, skipped, todo,
+                resumed, jobs, threads, pl.machine.cores, pl.plan->why, s->out);
     double t0 = now_s(), last_draw = 0;
     int running = 0, done = skipped, failed = 0, next = 0, draw = 0;
     *t = (tally_t){0, 0, 0, 0};
@@ -428,12 +415,16 @@ static int run_points(sweep_t *s, int first, int last, tally_t *t, pl_err_t *err
         }
         while (!t->sig && running < jobs && next < n) {
             if (state[next] == 0) {
-                pids[next] = start_point(s, first + next, threads, left[next]);
+                int j = 0;
+                while (j < jobs - 1 && busy[j]) ++j;
+                pids[next] = start_point(s, first + next, threads, left[next], pl.sets ? &pl.sets[j] : NULL);
                 if (pids[next] < 0) {
                     rc = pl_err_set(err, PL_ERR_IO, "cannot start a point: fork: %s", strerror(errno));
                     break;
                 }
                 state[next] = 1;
+                busy[j] = 1;
+                slot[next] = j;
                 ++running;
             }
             ++next;
@@ -464,6 +455,7 @@ static int run_points(sweep_t *s, int first, int last, tally_t *t, pl_err_t *err
         while (i < n && !(state[i] == 1 && pids[i] == pid)) ++i;
         if (i == n) continue;
         --running;
+        busy[slot[i]] = 0;
         int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
         char log[4096], msg[1024], sum[4096];
         point_path(s, first + i, "logs/%s.log", log, sizeof log);
@@ -485,6 +477,9 @@ static int run_points(sweep_t *s, int first, int last, tally_t *t, pl_err_t *err
     free(state);
     free(pids);
     free(left);
+    free(busy);
+    free(slot);
+    pl_sweep_plan_free(&pl);
     return rc;
 }
 
@@ -515,6 +510,8 @@ static int collect(const sweep_t *s, pl_err_t *err)
     return 0;
 }
 
+static int sweep_points(sweep_t *sp, pl_err_t *err);
+
 int pl_sweep(pl_study_t *st, const pl_sweep_opts_t *o, pl_err_t *err)
 {
     sweep_t s = {.st = st, .o = o, .n = pl_study_npoints(st)};
@@ -529,8 +526,22 @@ int pl_sweep(pl_study_t *st, const pl_sweep_opts_t *o, pl_err_t *err)
     if (!stat(s.out, &sb) && stat(marker, &sb))
         return pl_err_set(err, PL_ERR_INPUT, "sweep: %s exists and is not a sweep's output (no points.json); "
                           "allowed: a new directory or a previous output of a sweep (--out DIR)", s.out);
-    int rc = pl_study_check_points(st, s.out, err); /* every point, before anything is written */
-    if (rc) return rc;
+    s.cost = calloc((size_t)s.n, sizeof *s.cost);
+    if (!s.cost) return pl_err_set(err, PL_ERR_NOMEM, "out of memory checking the study's points");
+    int rc = pl_study_check_points(st, s.out, s.cost, err); /* every point, before anything is written */
+    if (!rc) rc = sweep_points(&s, err);
+    free(s.cost);
+    return rc;
+}
+
+/* pl_sweep after the check: the directories, points.json, the pool (or the
+ * Slurm scripts) and the table. */
+static int sweep_points(sweep_t *sp, pl_err_t *err)
+{
+    sweep_t s = *sp;
+    const pl_sweep_opts_t *o = s.o;
+    pl_study_t *st = s.st;
+    int rc = 0;
     static const char *const sub[] = {"", "/scenes", "/logs", "/status"};
     for (int i = 0; !rc && i < 4; ++i) {
         char d[4096];
