@@ -4,6 +4,7 @@
 #define PELOID_SWEEP_STUDY_PRIV_H
 
 #include <libconfig.h>
+#include <stdio.h>
 
 #include "peloid/sweep.h"
 #include "scene_text.h"
@@ -36,5 +37,9 @@ const config_setting_t *pl_study_value_of(const pl_study_t *st, int k, int a);
 /* Refuses a study that would run a point twice: a grid value given twice
  * on one axis, or two equal rows of points{}. */
 int pl_study_check_unique(const pl_study_t *st, pl_err_t *err);
+
+/* Writes the settings of group g as libconfig text, indented by depth
+ * (study_text.c; text: where integer literals were read, or NULL). */
+void pl_study_write_group(FILE *f, const pl_scene_text_t *text, const config_setting_t *g, int depth);
 
 #endif
