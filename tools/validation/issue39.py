@@ -80,6 +80,19 @@ def fig9_lub(out):
     return res
 
 
+def control(lub):
+    """E2's control (no lubrication, 1.4e8, current revision) against hecht_fig9_kappa's recorded point."""
+    c = lub.get(("hecht_fig9_lub", False, 1.4e8))
+    if not c:
+        return ""
+    f, s = RECORDED["fig9_kappa"][1.4e8]
+    same = abs(100 * c[0] - f) < 0.05
+    return (f"The control without lubrication gives {100 * c[0]:.1f} ± {100 * c[1]:.1f} % against hecht_fig9_kappa's "
+            f"{f} ± {s} % in REPORT.md (runs of 493a6e8, labelled 0.338 s): "
+            + ("equal to the printed digits (the model is unchanged; only the mapped time of the 1140 steps changed since). " if same else
+               "a different trajectory. "))
+
+
 def verdict_fig9(out, rdir):
     t = b2_tool()
     tab = t.fig9_table()
@@ -124,7 +137,7 @@ def verdict_fig9(out, rdir):
                 f"well to its edge {1e3 * a14['t_edge']:.0f} ms, to one diameter away {1e3 * a14['t_away']:.0f} ms, "
                 f"over the {a14['V_b']:.1f} kT barrier {a14['t_in']:.0f} s; Smoluchowski collision time "
                 f"{1e3 * a14['t_coll']:.0f} ms (all with the mapped D0 = kT/6πηR): both ≪ Hecht's 1 s.  "
-                f"E2 (studies/hecht_fig9_lub.cfg, current revision): {pts or 'not run'}.  {lub_note(out)}  "
+                f"E2 (studies/hecht_fig9_lub.cfg, current revision): {pts or 'not run'}.  {control(lub)}{lub_note(out)}  "
                 f"For information (no rule; added after the rules): Brownian dynamics, Eqs. 1–2, no hydrodynamics, "
                 f"D0 = the mapped D (studies/hecht_fig9_bd.cfg): {bd or 'not run'}.")
     cpu_s = sum(lub.get((n, "cpu"), 0.0) for n in ("hecht_fig9_lub", "hecht_fig9_lub_3s", "hecht_fig9_bd"))
@@ -308,8 +321,9 @@ def dphi_bd(out):
         # (SE 1e-9 of D0: D0 fixed)
         d0 = use[0]["D0"]
         fit_free = fit_linear_phi([q["phi"] for q in use], [q["D"] for q in use], [q["se"] for q in use])
-        fit_fixed = fit_linear_phi([PHI_SIGMA_CF] + [q["phi"] for q in use], [d0] + [q["D"] for q in use],
-                                   [1e-9 * d0] + [q["se"] for q in use])
+        ys = [(1 - q["D"] / d0, q["phi"], q["se"] / d0) for q in use]  # 1 - D/D0 = c phi, D0 exact
+        sw_ = sum(f * f / e ** 2 for _, f, e in ys)
+        fit_fixed = (d0, 0.0, sum(y * f / e ** 2 for y, f, e in ys) / sw_, sw_ ** -0.5)
         fit = (fit_free, fit_fixed)
     return pts, fit, cpu(sw)
 
@@ -416,7 +430,12 @@ def section(out, rdir):
     plot_fig9(f9[6], os.path.join(rdir, "issue39_fig9_lub.png"))
     plot_rz(os.path.join(rdir, "issue39_rz.png"))
     plot_dphi(dp[6], os.path.join(rdir, "issue39_dphi.png"))
-    lines = ["## Verdicts (issue 39)", "",
+    import subprocess
+    try:
+        rev = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+    except OSError:
+        rev = "unknown"
+    lines = ["## Verdicts (issue 39)", "", f"This section written at {rev} (tools/validation/issue39.py).", "",
              "Each disagreement row above, judged by the rule of validation/RULES_issue39.md fixed (and committed) before "
              "the tool and the runs; no parameter was tuned.  Verdicts: agrees; disagrees — peloid (a defect); disagrees — "
              "set-up (a named difference, with the run that removes it); paper inconsistent (from the paper's own "
