@@ -177,7 +177,8 @@ validate: validate-physics
 	@$(MAKE) --no-print-directory studies validation-report
 	@echo "make validate: all suites passed, validation/REPORT.md regenerated"
 
-CLI_SUITES := cli restart_guard full_disk interrupt regression observers stress readers sweep sweep_signals sweep_slurm studies_reduced calibration
+CLI_SUITES := cli restart_guard full_disk interrupt regression observers stress readers sweep sweep_signals sweep_slurm studies_reduced calibration \
+              b2_stickiness
 check-cli: $(BIN)
 	@set -e; for t in $(CLI_SUITES); do s=$$(date +%s); bash tests/$$t.sh ./$(BIN); \
 	  echo "   (tests/$$t.sh: $$(( $$(date +%s) - s )) s)"; done
@@ -202,13 +203,14 @@ check-asan: | deps
 # The studies of issue 16 (studies/*.cfg, each a `peloid sweep`; resumable:
 # a finished point is not run again) and validation/REPORT.md from their
 # outputs in out/studies/.
-.PHONY: studies validation-report
+.PHONY: studies validation-report validation-verdicts
 STUDIES := studies/hecht_fig9_kappa.cfg studies/hecht_fig9_kappa_replica.cfg studies/hecht_fig9_kappa_1s.cfg \
            studies/hecht_fig9_bonds.cfg studies/hecht_fig5_rdf.cfg studies/hecht_fig4_rz.cfg studies/hecht_fig14_msd.cfg \
            studies/pl_fig6_drag.cfg studies/accuracy_viscosity.cfg \
            studies/hecht_fig9_diagram.cfg studies/hecht_fig9_phi.cfg studies/accuracy_fluid_diffusion.cfg \
            studies/pl_fig10_vacf.cfg studies/pl_fig4_rdf.cfg studies/pl_fig4_rdf_bd_dt.cfg \
-           studies/pl_fig11_dphi.cfg studies/pl_fig11_dphi_solvent.cfg studies/accuracy_drag_substeps.cfg
+           studies/pl_fig11_dphi.cfg studies/pl_fig11_dphi_solvent.cfg studies/accuracy_drag_substeps.cfg \
+           studies/hecht_fig9_lub.cfg studies/hecht_fig9_bd.cfg studies/pl_fig11_dphi_bd.cfg
 # A sweep exits 1 when some of its points failed (a guard trip, recorded with its message: the Fig. 9
 # diagram's points without a DLVO barrier, the drag guide's 1 MD substep); the report shows them, so that
 # is not an error here; any other failure (bad input: 2) stops make studies.
@@ -216,6 +218,9 @@ studies: $(BIN)
 	@set -e; for s in $(STUDIES); do ./$(BIN) sweep $$s || [ $$? -eq 1 ]; done
 validation-report:
 	$(PYTHON) tools/validation_report.py out/studies validation/REPORT.md
+# Only the section "Verdicts (issue 39)" (tools/validation/issue39.py), the rest of the report kept.
+validation-verdicts:
+	$(PYTHON) tools/validation_report.py --verdicts-only out/studies validation/REPORT.md
 
 bench: $(BENCH_BIN)
 	@mkdir -p bench/out

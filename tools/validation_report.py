@@ -4,6 +4,11 @@ validation-report; the studies run with make studies, i.e. peloid sweep on
 each studies/*.cfg).
 
     /usr/bin/python3 tools/validation_report.py [OUT_STUDIES] [REPORT]
+    /usr/bin/python3 tools/validation_report.py --verdicts-only [OUT_STUDIES] [REPORT]
+
+--verdicts-only rewrites only the section "Verdicts (issue 39)" (tools/validation/issue39.py, between its
+markers) of an existing REPORT, leaving the rest as the last full generation wrote it (make
+validation-verdicts: for a report whose studies' outputs are not on this machine).
 
 For each study below: the paper's figure and value, peloid's value +- SE
 from the study's sweep.json and each point's summary.json, the run time
@@ -24,6 +29,7 @@ from validation.fluid_guides import accuracy_fluid_diffusion, accuracy_viscosity
 from validation.hecht_clusters import (fig14_msd, fig9_bonds, fig9_diagram, fig9_kappa, fig9_phi, reduced_fig14_msd,
                                        reduced_fig9_bonds, reduced_fig9_diagram, reduced_fig9_kappa, reduced_fig9_phi)
 from validation.hecht_rdf import fig5_rdf, reduced_fig5_rdf
+from validation import issue39
 from validation.hecht_rz import fig4_rz, reduced_fig4_rz, rz_precision
 from validation.pl_drag import pl_drag_guide, pl_fig6_drag, reduced_pl_fig6_drag
 from validation.pl_fig10 import pl_fig10_vacf, reduced_pl_fig10_vacf
@@ -320,9 +326,36 @@ NOTES = [
 ]
 
 
+VERDICTS_BEGIN = "<!-- verdicts of issue 39: tools/validation/issue39.py -->"
+VERDICTS_END = "<!-- end of the verdicts of issue 39 -->"
+
+
+def verdict_lines(out, rdir):
+    return [VERDICTS_BEGIN, ""] + issue39.section(out, rdir) + ["", VERDICTS_END]
+
+
+def verdicts_only(out, report):
+    """Replaces the verdict section of an existing report (appends it when the report has none)."""
+    rdir = os.path.dirname(report) or "."
+    text = open(report).read()
+    new = "\n".join(verdict_lines(out, rdir))
+    if VERDICTS_BEGIN in text and VERDICTS_END in text:
+        a, b = text.index(VERDICTS_BEGIN), text.index(VERDICTS_END) + len(VERDICTS_END)
+        text = text[:a] + new + text[b:]
+    else:
+        text = text.rstrip("\n") + "\n\n" + new + "\n"
+    tmp = report + ".tmp"
+    open(tmp, "w").write(text)
+    os.replace(tmp, report)
+    print(f"wrote the verdicts of {report}", file=sys.stderr)
+
+
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else "out/studies"
-    report = sys.argv[2] if len(sys.argv) > 2 else "validation/REPORT.md"
+    args = [a for a in sys.argv[1:] if a != "--verdicts-only"]
+    out = args[0] if len(args) > 0 else "out/studies"
+    report = args[1] if len(args) > 1 else "validation/REPORT.md"
+    if "--verdicts-only" in sys.argv:
+        return verdicts_only(out, report)
     rdir = os.path.dirname(report) or "."
     os.makedirs(rdir, exist_ok=True)
     try:
@@ -365,6 +398,7 @@ def main():
         if os.path.exists(os.path.join(rdir, s["name"] + ".png")):
             lines += [f"![{s['name']}]({s['name']}.png)", ""]
     lines += NOTES + [""] + [d + "\n" for d in details]
+    lines += verdict_lines(out, rdir) + [""]
     tmp = report + ".tmp"
     open(tmp, "w").write("\n".join(lines))
     os.replace(tmp, report)

@@ -1,0 +1,465 @@
+"""Issue 39: one verdict per disagreement row of validation/REPORT.md, by the rules of validation/RULES_issue39.md
+(committed before the tool and the runs), with the evidence: tools/b2_stickiness.py (Hecht Eqs. 1-2 stickiness,
+Fig. 11's potentials), the kinematics of the Richardson-Zaki frames, and the studies hecht_fig9_lub (Fig. 9 with
+lubrication) and pl_fig11_dphi_bd (Brownian-dynamics reference of PL Fig. 11).
+
+Part of tools/validation_report.py: section(out, rdir) returns the report's "Verdicts (issue 39)" lines.  The
+studies of this issue (hecht_fig9_lub, hecht_fig9_bd, pl_fig11_dphi_bd) are read from their sweeps in `out`; the
+numbers of the older studies are RECORDED, the values validation/REPORT.md printed at main 3981e2f (its runs made by
+peloid 493a6e8), quoted as such in the section: when those studies are re-run, RECORDED is to be updated from the
+new rows (their outputs were not on the machine that wrote this)."""
+import math
+import os
+import sys
+
+from validation.common import load, pyplot, save_figure
+
+# validation/REPORT.md at main 3981e2f (runs of peloid 493a6e8): the numbers the rules use where this branch
+# did not re-run the study (RULES_issue39.md says which were known when the rules were written).
+RECORDED = {
+    "fig9_diagram_S4": {"20": (99.8, 0.0), "50": (18.4, 0.9)},          # largest cluster %, kappa = 2e8
+    "fig9_kappa": {1.0e8: (0.8, 0.0), 1.4e8: (27.0, 1.6), 1.6e8: (89.0, 0.8), 2.0e8: (99.8, 0.0)},  # %, seed 9
+    "rz_pe1": {"volume": (2.25, 0.09), "momentum": (2.93, 0.22), "slip": (1.25, 0.09), "vinf_over_stokes": 2.72,
+               "phi": [0.05, 0.10, 0.20, 0.30, 0.35], "u": [0.0428, 0.0378, 0.0317, 0.0276, 0.0253],
+               "u_se": [0.0007, 0.0004, 0.0002, 0.0002, 0.0002], "cpu": 2544},
+    "dphi": {"main": (2.24, 0.25), "solvent": (2.11, 0.46), "scaled": (1.38, 0.30), "D0": 0.01717,
+             "N": [1, 4, 8, 16, 27], "D": [0.01644, 0.01635, 0.01456, 0.01214, 0.00811],
+             "D_se": [0.00096, 0.00075, 0.00054, 0.00029, 0.00036]},
+    "vacf": {"slip_enskog": (1.032, 0.040), "mct_8_16": (1.659, 0.062), "mct_16_32": (1.678, 0.202),
+             "mct_32_52": (1.435, 0.545)},
+    "rdf": {"chi2_extrap": (154.8, 78), "chi2_srd_srd": (104.4, 75), "chi2_pl_step": (203.4, 78)},
+    "viscosity": [("ρ = 3, λ = 0.3", 0.3, 4.8, 0.8), ("ρ = 5, λ = 0.3", 0.3, 2.9, 0.7)],
+}
+FIG11_C = 1.1795
+PHI_SIGMA_CF = 4.0 / 3.0 * math.pi * 2.0 ** 3 / 16.0 ** 3  # PL's phi per colloid, sigma_cf = 2 a0, L = 16 a0
+
+
+def b2_tool():
+    """tools/b2_stickiness.py as a module."""
+    here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    if here not in sys.path:
+        sys.path.insert(0, here)
+    import b2_stickiness
+    return b2_stickiness
+
+
+def cpu(sw):
+    return sum(p["summary"].get("cpu_seconds", 0.0) for p in sw["points"] if p["summary"]) if sw else 0.0
+
+
+def fig9_lub(out):
+    """E2: (pairs, kappa) -> (fraction, SE, state) from studies/hecht_fig9_lub.cfg's sweep."""
+    from validation.hecht_clusters import cluster_state
+    res = {}
+    for name in ("hecht_fig9_lub", "hecht_fig9_lub_3s"):
+        sw = load(out, name)
+        if sw is None:
+            continue
+        for p in sw["points"]:
+            if not p["summary"]:
+                continue
+            n = p["summary"]["mapping"]["colloid"]["n_colloids"]
+            lc = p["summary"]["observables"]["largest_cluster"]
+            lub = "lubrication" in p["summary"]["scene"]["colloids"]["pairs"]
+            t = p["summary"]["last_step"] * p["summary"]["scene"]["srd"]["dt"] * p["summary"]["units_si"]["t0_s"]
+            res[(name, lub, p["params"]["physical.kappa"])] = (lc["value"] / n, lc["stderr"] / n,
+                                                               cluster_state(lc["value"] / n), t)
+        res[(name, "cpu")] = cpu(sw)
+    sw = load(out, "hecht_fig9_bd")
+    if sw is not None:
+        for p in sw["points"]:
+            if not p["summary"]:
+                res[("hecht_fig9_bd", "failed", p["params"]["dlvo.kappa"])] = p.get("message", p["status"])
+                continue
+            n = p["summary"]["scene"]["colloids"]["count"]
+            lc = p["summary"]["observables"]["largest_cluster"]
+            t = p["summary"]["last_step"] * p["summary"]["scene"]["srd"]["dt"] * 5.595e-3  # t0 of the mapping
+            res[("hecht_fig9_bd", None, p["params"]["dlvo.kappa"])] = (lc["value"] / n, lc["stderr"] / n,
+                                                                       cluster_state(lc["value"] / n), t)
+        res[("hecht_fig9_bd", "cpu")] = cpu(sw)
+    return res
+
+
+def control(lub):
+    """E2's control (no lubrication, 1.4e8, current revision) against hecht_fig9_kappa's recorded point."""
+    c = lub.get(("hecht_fig9_lub", False, 1.4e8))
+    if not c:
+        return ""
+    f, s = RECORDED["fig9_kappa"][1.4e8]
+    same = abs(100 * c[0] - f) < 0.05
+    return (f"The control without lubrication gives {100 * c[0]:.1f} ± {100 * c[1]:.1f} % against hecht_fig9_kappa's "
+            f"{f} ± {s} % in REPORT.md (runs of 493a6e8, labelled 0.338 s): "
+            + ("equal to the printed digits (the model is unchanged; only the mapped time of the 1140 steps changed since). " if same else
+               "a different trajectory. "))
+
+
+def verdict_fig9(out, rdir):
+    t = b2_tool()
+    tab = t.fig9_table()
+    tabc = t.fig9_table(cut_gap=50e-9)
+    ks = [a["kappa"] for a in tab]
+    tp = t.tau_p(t.SCENE["phi"])
+    kp = t.crossing(ks, [a["tau"] for a in tab], tp)
+    kc = t.crossing(ks, [a["tau"] for a in tab], t.TAU_C)
+    kpc = t.crossing(ks, [a["tau"] for a in tabc], tp)
+    a14 = next(a for a in tab if a["kappa"] == 1.4e8)
+    lub = fig9_lub(out)
+    e2 = lub.get(("hecht_fig9_lub", True, 1.4e8))
+    fast = a14["t_away"] < 1.0 and a14["t_coll"] < 1.0
+    if kp is None or kp > 1.6e8:
+        v = "not settled"
+    elif 1.4e8 <= kp <= 1.6e8:
+        v = "disagrees — peloid"
+    elif fast and e2 and e2[2] == "suspended":
+        v = "disagrees — set-up"
+    elif fast and e2:
+        v = "paper inconsistent"
+    else:
+        v = "not settled (provisional: paper inconsistent; E2 not run)"
+    pts = "; ".join(
+        f"κ = {k / 1e8:.1f}e8 {'with' if l else 'without'} lubrication, {tt:.2f} s: largest cluster "
+        f"{100 * f:.1f} ± {100 * s:.1f} % → {st}"
+        for (nm, l, k), (f, s, st, tt) in sorted(((key, val) for key, val in lub.items()
+                                                  if len(key) == 3 and key[0] != "hecht_fig9_bd"),
+                                                 key=lambda kv: (kv[0][0], -kv[0][1], kv[0][2])))
+    bd = "; ".join(f"κ = {k / 1e8:.1f}e8, {tt:.2f} s: largest cluster {100 * f:.1f} ± {100 * s:.1f} % → {st}"
+                   for (nm, l, k), (f, s, st, tt) in sorted((key, val) for key, val in lub.items()
+                                                            if len(key) == 3 and key[0] == "hecht_fig9_bd"
+                                                            and key[1] is None))
+    bd += "".join(f"; κ = {key[2] / 1e8:.1f}e8: failed ({val})" for key, val in lub.items()
+                  if len(key) == 3 and key[0] == "hecht_fig9_bd" and key[1] == "failed")
+    rows = " ".join(f"κ = {a['kappa'] / 1e8:.2f}e8: B2* = {a['b2']:.2f}, τ = {a['tau']:.3f};" for a in tab
+                    if a["kappa"] in (1.0e8, 1.2e8, 1.3e8, 1.4e8, 1.6e8))
+    evidence = (f"Hecht Eqs. 1–2 at 20 mV, hard core at the barrier (tools/b2_stickiness.py): {rows} "
+                f"τ_p(φ = 0.14) = {tp:.4f} (Chiew–Glandt) is crossed at κ_p = {kp / 1e8:.3f}e8 /m, Baxter's τ_c = "
+                f"0.0976 at κ_c = {kc / 1e8:.3f}e8 /m (both in peloid's bracket 1.0–1.4e8, below Hecht's 1.4–1.6e8); "
+                f"V cut at a 50 nm gap: κ_p = {kpc / 1e8:.3f}e8 /m.  At 1.4e8: escape from the −{-a14['V_m']:.2f} kT "
+                f"well to its edge {1e3 * a14['t_edge']:.0f} ms, to one diameter away {1e3 * a14['t_away']:.0f} ms, "
+                f"over the {a14['V_b']:.1f} kT barrier {a14['t_in']:.0f} s; Smoluchowski collision time "
+                f"{1e3 * a14['t_coll']:.0f} ms (all with the mapped D0 = kT/6πηR): both ≪ Hecht's 1 s.  "
+                f"E2 (studies/hecht_fig9_lub.cfg, current revision): {pts or 'not run'}.  {control(lub)}{lub_note(out)}  "
+                f"For information (no rule; added after the rules): Brownian dynamics, Eqs. 1–2, no hydrodynamics, "
+                f"D0 = the mapped D (studies/hecht_fig9_bd.cfg): {bd or 'not run'}.")
+    cpu_s = sum(lub.get((n, "cpu"), 0.0) for n in ("hecht_fig9_lub", "hecht_fig9_lub_3s", "hecht_fig9_bd"))
+    return ("Hecht Fig. 9 boundary at 20 mV (hecht_fig9_kappa, _replica, _1s, _diagram S3, _phi S5)", v, evidence,
+            "R1", cpu_s, ["issue39_b2.png", "issue39_fig9_lub.png"], lub)
+
+
+def lub_kinetic(out):
+    """E2's colloid translational kinetic energy (thermo.tsv, c_kin_trans: mean over the second half of the run) per
+    (lubrication, kappa), against equipartition (3/2) N kT: {(lub, kappa): (ratio, c_kin, N)}."""
+    sw = load(out, "hecht_fig9_lub")
+    res = {}
+    for p in (sw or {"points": []})["points"]:
+        if not p["summary"]:
+            continue
+        rows = [ln.rstrip("\n").split("\t") for ln in open(os.path.join(sw["_out"], p["id"], "thermo.tsv"))]
+        head, data = rows[0], rows[1:]
+        half = [r for r in data if int(r[0]) >= p["summary"]["last_step"] // 2]
+        ck = sum(float(r[head.index("c_kin_trans")]) for r in half) / len(half)
+        kt = float(half[-1][head.index("temperature")])
+        n = p["summary"]["mapping"]["colloid"]["n_colloids"]
+        lub = "lubrication" in p["summary"]["scene"]["colloids"]["pairs"]
+        res[(lub, p["params"]["physical.kappa"])] = (ck / (1.5 * n * kt), ck, n)
+    return res
+
+
+def lub_note(out):
+    """The finding of E2's runs: the squeeze lubrication of Hecht Eqs. 4-5 has no fluctuating partner."""
+    kin = lub_kinetic(out)
+    if (True, 1.4e8) not in kin or (False, 1.4e8) not in kin:
+        return ""
+    a, b = kin[(True, 1.4e8)], kin[(False, 1.4e8)]
+    return (f"Found in E2 (thermo.tsv, second half, κ = 1.4e8): the colloids' translational kinetic energy is "
+            f"{a[1]:.0f} kT with lubrication against {b[1]:.0f} without it, i.e. {a[0]:.2f} and {b[0]:.2f} of "
+            f"equipartition (3/2) {a[2]} kT (other κ with lubrication: "
+            + ", ".join(f"{k / 1e8:.1f}e8: {v[0]:.2f}" for (l, k), v in sorted(kin.items()) if l and k != 1.4e8)
+            + "): the squeeze force of Hecht Eqs. 4–5 is dissipative with no random partner, so it cools the "
+              "colloids and deepens the well in units of their temperature.  E2 therefore tests Hecht's set-up "
+              "(Hecht's Eq. 4 has no noise either: had it cooled his colloids as it cools these, it would have made clustering stronger, not weaker), not "
+              "equilibrium; the missing fluctuation–dissipation partner is a defect of peloid's lubrication, to be "
+              "filed as its own issue.")
+
+
+def plot_fig9(lub, path):
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    for (nm, mark) in (("hecht_fig9_lub", "o"), ("hecht_fig9_lub_3s", "s"), ("hecht_fig9_bd", "^")):
+        for l, col in (((True, "C0"), (False, "C3")) if nm != "hecht_fig9_bd" else ((None, "C2"),)):
+            pts = sorted((k, f, s, tt) for (n2, l2, k), (f, s, st, tt) in
+                         ((key, val) for key, val in lub.items() if len(key) == 3 and isinstance(val, tuple))
+                         if n2 == nm and l2 == l)
+            if pts:
+                ax.errorbar([p[0] / 1e8 for p in pts], [100 * p[1] for p in pts], yerr=[100 * p[2] for p in pts],
+                            fmt=mark + ("-" if l else ""), color=col, capsize=2,
+                            label=(f"{'with' if l else 'without'} lubrication, {pts[0][3]:.2f} s" if l is not None
+                                   else f"Brownian dynamics (no HI), {pts[0][3]:.2f} s"))
+    rk = sorted(RECORDED["fig9_kappa"].items())
+    ax.errorbar([k / 1e8 for k, _ in rk], [v[0] for _, v in rk], yerr=[v[1] for _, v in rk], fmt="o--", mfc="none",
+                color="C3", capsize=2, label="without lubrication, hecht_fig9_kappa (REPORT.md)")
+    ax.axhline(10, color="grey", ls=":", label="cluster rule: 10 %")
+    ax.axvspan(1.4, 1.6, color="C3", alpha=0.1, label="Hecht's boundary bracket")
+    t = b2_tool()
+    tab = t.fig9_table()
+    ks = [a["kappa"] for a in tab]
+    kp = t.crossing(ks, [a["tau"] for a in tab], t.tau_p(0.14))
+    kc = t.crossing(ks, [a["tau"] for a in tab], t.TAU_C)
+    ax.axvline(kp / 1e8, color="g", ls="--", label=f"κ_p = {kp / 1e8:.2f}e8 (τ = τ_p, Eqs. 1–2)")
+    ax.axvline(kc / 1e8, color="m", ls="--", label=f"κ_c = {kc / 1e8:.2f}e8 (τ = τ_c)")
+    ax.set_xlabel("κ (1e8 /m), Ψ0 = 20 mV, φ = 0.14")
+    ax.set_ylabel("largest cluster (% of 472)")
+    ax.set_title("Hecht Fig. 9 boundary: peloid with lubrication vs Eqs. 1–2 stickiness")
+    ax.legend(fontsize=7)
+    save_figure(plt, fig, path)
+
+
+def verdict_fig11():
+    t = b2_tool()
+    pts = [t.point(psi, 2.0e8) for psi in (0.020, 0.035, 0.050)]
+    th = [math.tanh(t.E * p["psi0"] / (4 * t.KB * t.SCENE["T"])) ** 2 for p in pts]
+    mono = all(th[i] < th[i + 1] for i in range(2))
+    rising = all(pts[i][k] < pts[i + 1][k] for i in range(2) for k in ("V_m", "V_b", "b2"))
+    s20, s50 = RECORDED["fig9_diagram_S4"]["20"], RECORDED["fig9_diagram_S4"]["50"]
+    falls = (s20[0] - s50[0]) > 3 * math.hypot(s20[1], s50[1])
+    v = "paper inconsistent" if (mono and rising and falls) else "not settled"
+    ev = ("Hecht Eqs. 1–2 at κ = 2e8 /m (scene constants): " + "; ".join(
+        f"Ψ0 = {1e3 * p['psi0']:.0f} mV: tanh² = {x:.4f}, secondary minimum {p['V_m']:.2f} kT, "
+        f"{'barrier' if p['V_b'] > 0 else 'highest point between the minima'} {p['V_b']:.1f} kT, "
+        f"B2* = {p['b2']:.2f}" for p, x in zip(pts, th))
+        + ".  V(r) = V_vdW(r) + tanh²(eΨ0/4kT) × (a Ψ0-free positive function of r), so V rises with Ψ0 at every r: the "
+          "attraction weakens as Ψ0 grows, the opposite of the caption, and consistent with Hecht's own 'clustering "
+          f"upper left, suspended lower right'.  peloid (REPORT.md, hecht_fig9_diagram, 0.338 s): largest cluster "
+          f"{s20[0]} ± {s20[1]} % at 20 mV, {s50[0]} ± {s50[1]} % at 50 mV.")
+    return ("Hecht Fig. 11 caption (hecht_fig9_diagram S4)", v, ev, "R2", 0.0, ["issue39_b2.png"])
+
+
+def verdict_rz(out):
+    import numpy as np
+    r = RECORDED["rz_pe1"]
+    src = "REPORT.md at 3981e2f (runs of 493a6e8)"
+    l_box, se_box = r["momentum"]
+    phi = np.array([0.07, 0.14, 0.21, 0.28, 0.35])
+    fac = {}
+    for lab, m in (("whole box", 3.9 * phi), ("free volume", 3.9 * phi / (1 - phi))):
+        fac[lab] = float(np.polyfit(np.log(1 - phi), np.log(1 / (1 + m)), 1)[0])
+    ph, u, e = map(np.array, (r["phi"], r["u"], r["u_se"]))
+    vv, ve = u * (1 - ph), e * (1 - ph)
+    sel = ph <= 0.2
+    w = 1 / ve[sel] ** 2
+    A = np.vstack([np.ones(sel.sum()), ph[sel]]).T
+    C = np.linalg.inv(A.T @ (A * w[:, None]))
+    b = C @ (A.T @ (w * vv[sel]))
+    K = -b[1] / b[0]
+    K_se = abs(K) * math.sqrt(C[1, 1] / b[1] ** 2 + C[0, 0] / b[0] ** 2 - 2 * C[0, 1] / (b[0] * b[1]))
+    kr = lambda x: 6 * x - 0.5 * x ** 3
+    ah = 1 / r["vinf_over_stokes"]
+    if abs(l_box - 3.5) <= 3 * se_box:
+        v = "agrees"
+    elif abs(r["slip"][0] + fac["whole box"] - 3.5) <= 3 * r["slip"][1]:
+        v = "disagrees — set-up"
+    else:
+        v = "disagrees — peloid"
+    ev = (f"Hecht Sec. VIII.A (iii) follows the centre of mass (counter-force on the fluid): the box frame.  peloid's "
+          f"box-frame l = {l_box:.2f} ± {se_box:.2f} at Pe = 1 vs 3.5: {(l_box - 3.5) / se_box:+.1f} SE ({src}).  "
+          f"The box-frame factor alone, 1/(1 + M_c/M_f), fitted over φ = 0.07–0.35: l = {fac['whole box']:.2f} "
+          f"(M_c/M_f = 3.9φ, fluid counted over the whole box as in coupling II), {fac['free volume']:.2f} (solvent in "
+          f"the free volume); peloid's slip-frame l = {r['slip'][0]:.2f} ± {r['slip'][1]:.2f} plus "
+          f"{fac['whole box']:.2f} = {r['slip'][0] + fac['whole box']:.2f}.  Zero-volume-flux frame (u (1 − φ), "
+          f"converted explicitly from the slip velocities): l = {r['volume'][0]:.2f} ± {r['volume'][1]:.2f}; dilute "
+          f"slope over φ ≤ 0.2 K = {K:.2f} ± {K_se:.2f} against Rotne–Prager with excluded Stokeslets K = 6 a_h/a − "
+          f"0.5 (a_h/a)³ = {kr(ah):.2f} at this run's a_h/a = 1/{r['vinf_over_stokes']} = {ah:.2f} "
+          f"({kr(0.53):.2f} at the current calibration's 1/1.89 = 0.53; Batchelor's 6.55 is for a_h = a).  Not run: "
+          f"the potential-coupling K experiment (L = 32) and R–Z against the experimental n ≈ 4.5–5.6.")
+    return ("Hecht Fig. 4, Richardson–Zaki (hecht_fig4_rz)", v, ev, "R3", 0.0, ["issue39_rz.png"], fac)
+
+
+def plot_rz(path):
+    import numpy as np
+    r = RECORDED["rz_pe1"]
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(6.2, 4.2))
+    ph, u, e = map(np.array, (r["phi"], r["u"], r["u_se"]))
+    for lab, f, c in (("slip u", 1 + 0 * ph, "C0"), ("zero volume flux u(1 − φ)", 1 - ph, "C1"),
+                      ("box (zero momentum) u/(1 + 3.9φ)", 1 / (1 + 3.9 * ph), "C2")):
+        ax.errorbar(1 - ph, u * f / (u[0] * f[0]), yerr=e * f / (u[0] * f[0]), fmt="o", color=c, capsize=2, label=lab)
+    xx = np.linspace(0.6, 1.0, 50)
+    ax.plot(xx, 1 / (1 + 3.9 * (1 - xx)) / (1 / (1 + 3.9 * 0.05)), "k:", label="box factor alone (no hydrodynamics)")
+    ax.plot(xx, (xx / 0.95) ** 3.5, "k--", label="Hecht: l = 3.5")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("1 − φ")
+    ax.set_ylabel("v / v(φ = 0.05), each frame")
+    ax.set_title("Richardson–Zaki frames (Pe = 1, REPORT.md's velocities)")
+    ax.legend(fontsize=7)
+    save_figure(plt, fig, path)
+
+
+def dphi_bd(out):
+    """c_BD from studies/pl_fig11_dphi_bd.cfg with PL Fig. 11's estimator and fit: (points, fit) or None."""
+    from validation.pl_fig11 import colloid_track, fit_linear_phi, msd_diffusion
+    sw = load(out, "pl_fig11_dphi_bd")
+    if sw is None:
+        return None, None, 0.0
+    pts = []
+    for p in sw["points"]:
+        if not p["summary"]:
+            continue
+        t, r, L, m = colloid_track(sw["_out"], p)
+        d = msd_diffusion(t, r)
+        if d is None:
+            continue
+        n = r.shape[1]
+        pts.append({"N": n, "phi": n * PHI_SIGMA_CF, "D": d[0], "se": d[1],
+                    "D0": p["summary"]["scene"]["colloids"]["temperature"] /
+                    (6 * math.pi * p["summary"]["scene"]["colloids"]["bd_viscosity"] *
+                     p["summary"]["scene"]["colloids"]["radius"])})
+    pts.sort(key=lambda q: q["N"])
+    fit = None
+    use = [q for q in pts if q["phi"] <= 0.15]
+    if len(use) >= 2:
+        # the rule's fit: D0 free over N = 4, 8, 16 (as the SRD fit); beside it, BD's exact D0 as an N = 1 point
+        # (SE 1e-9 of D0: D0 fixed)
+        d0 = use[0]["D0"]
+        fit_free = fit_linear_phi([q["phi"] for q in use], [q["D"] for q in use], [q["se"] for q in use])
+        ys = [(1 - q["D"] / d0, q["phi"], q["se"] / d0) for q in use]  # 1 - D/D0 = c phi, D0 exact
+        sw_ = sum(f * f / e ** 2 for _, f, e in ys)
+        fit_fixed = (d0, 0.0, sum(y * f / e ** 2 for y, f, e in ys) / sw_, sw_ ** -0.5)
+        fit = (fit_free, fit_fixed)
+    return pts, fit, cpu(sw)
+
+
+def verdict_dphi(out):
+    r = RECORDED["dphi"]
+    pts, fit, cpu_s = dphi_bd(out)
+    cm, cs = r["main"], r["solvent"]
+    if fit:
+        (d0, d0se, c, cse, chi2, dof), fixed = fit
+    if abs(cs[0] - FIG11_C) <= 3 * cs[1]:
+        v = "disagrees — set-up"
+    elif fit and c - FIG11_C > 3 * cse and abs(cs[0] - c) <= 2 * math.hypot(cs[1], cse):
+        v = "paper inconsistent"
+    else:
+        v = "disagrees — peloid"
+    bd = ("not run" if not fit else
+          "; ".join(f"N = {q['N']} (φ = {q['phi']:.3f}): D/D0 = {q['D'] / q['D0']:.4f} ± {q['se'] / q['D0']:.4f}"
+                    for q in pts)
+          + f"; c_BD = {c:.2f} ± {cse:.2f} (the rule's fit, D0 free: {d0 / pts[0]['D0']:.3f} ± "
+            f"{d0se / pts[0]['D0']:.3f} of the exact D0, χ² = {chi2:.1f}/{dof}); with D0 fixed at the exact kT/ξ "
+            f"{fixed[2]:.2f} ± {fixed[3]:.2f}; c_SRD(solvent) − c_BD = {cs[0] - c:+.2f} ± "
+            f"{math.hypot(cs[1], cse):.2f}, c_SRD(main) − c_BD = {cm[0] - c:+.2f} ± {math.hypot(cm[1], cse):.2f}")
+    ev = (f"Main series (fluid.density over the whole box) c = {cm[0]} ± {cm[1]} ({(cm[0] - FIG11_C) / cm[1]:+.1f} SE "
+          f"from 1.1795); the set-up difference removed (solvent at γ = 5 in the free volume, "
+          f"studies/pl_fig11_dphi_solvent.cfg): c = {cs[0]} ± {cs[1]} ({(cs[0] - FIG11_C) / cs[1]:+.1f} SE) "
+          f"(REPORT.md at 3981e2f).  BD reference, same WCA (σ_cc = 4.3 a0), no hydrodynamic interaction, "
+          f"same estimator (MSD lags 40–100 t0) (studies/pl_fig11_dphi_bd.cfg): {bd}.  Excluded-volume "
+          f"estimate for BD: 2 × (σ_cc/2σ_cf)³ = {2 * (4.3 / 4) ** 3:.2f} (long-time hard spheres, 1 − 2φ_HS).")
+    return ("PL Fig. 11, D(φ) (pl_fig11_dphi)", v, ev, "R4", cpu_s, ["issue39_dphi.png"], (pts, fit))
+
+
+def plot_dphi(res, path):
+    import numpy as np
+    pts, fit = res
+    r = RECORDED["dphi"]
+    plt = pyplot()
+    fig, ax = plt.subplots(figsize=(6.2, 4.2))
+    ph = np.array(r["N"]) * PHI_SIGMA_CF
+    ax.errorbar(ph, np.array(r["D"]) / r["D0"], yerr=np.array(r["D_se"]) / r["D0"], fmt="o", color="C0",
+                capsize=2, label=f"SRD (REPORT.md), c = {r['main'][0]} ± {r['main'][1]}")
+    if pts:
+        ax.errorbar([q["phi"] for q in pts], [q["D"] / q["D0"] for q in pts], yerr=[q["se"] / q["D0"] for q in pts],
+                    fmt="s", color="C3", capsize=2, label=f"BD, same WCA, c = {fit[0][2]:.2f} ± {fit[0][3]:.2f}")
+    xx = np.linspace(0, 0.23, 50)
+    ax.plot(xx, 1 - FIG11_C * xx, "k--", label="PL: 1 − 1.1795 φ")
+    ax.plot(xx, 1 - 2 * (4.3 / 4) ** 3 * xx, "k:", label="1 − 2 (σ_cc/2σ_cf)³ φ (no HI, long time)")
+    ax.set_xlabel("φ = (4/3)π N σ_cf³ / L³")
+    ax.set_ylabel("D / D0")
+    ax.set_title("PL Fig. 11: SRD vs Brownian dynamics, lags 40–100 t0")
+    ax.legend(fontsize=7)
+    save_figure(plt, fig, path)
+
+
+def verdict_vacf():
+    r = RECORDED["vacf"]
+    a, s = r["slip_enskog"]
+    v = "not settled (provisional: " + ("disagrees — set-up" if abs(a - 1) <= 3 * s else "disagrees — peloid") + ")"
+    ev = (f"Not run: L = 64, ≥ 10 seeds (far beyond this branch's CPU).  REPORT.md at 3981e2f: amplitude vs MCT "
+          f"{r['mct_8_16'][0]} ± {r['mct_8_16'][1]} (8–16 t0), {r['mct_16_32'][0]} ± {r['mct_16_32'][1]} (16–32), "
+          f"{r['mct_32_52'][0]} ± {r['mct_32_52'][1]} (32–52); vs the slip ∥ Enskog continuum model (PL Eq. 41 as a "
+          f"memory function, box-corrected; post hoc) {a} ± {s} ({(a - 1) / s:+.1f} SE): the named difference is "
+          f"comparing with the t^−3/2 asymptote at lags where PL's own friction model has not reached it.")
+    return ("PL Fig. 10 tail (pl_fig10_vacf)", v, ev, "R5", 0.0, [])
+
+
+def verdict_rdf():
+    r = RECORDED["rdf"]
+    c, dof = r["chi2_extrap"]
+    k = r["chi2_srd_srd"][0] / r["chi2_srd_srd"][1]
+    red = c / dof / k
+    lim = 1 + 3 * math.sqrt(2 / dof)
+    if red <= lim:
+        pv = "agrees"
+    else:
+        moved = (r["chi2_pl_step"][0] - c) / (r["chi2_pl_step"][0] - dof) > 0.5
+        pv = "disagrees — set-up" if moved else "disagrees — peloid"
+    ev = (f"Not run: a 4× longer SRD run at half the MD step with replicas (~100 CPU-min).  REPORT.md at 3981e2f: "
+          f"SRD + depletion_comp vs BD extrapolated to step 0 χ² = {c}/{dof} = {c / dof:.2f}; the SEs understated by "
+          f"√{k:.2f} (two SRD runs with the same potential beyond 4.49 a0: χ²/dof = {k:.2f}); rescaled χ²/dof = "
+          f"{red:.2f} against 1 + 3√(2/dof) = {lim:.2f}.")
+    return ("PL Fig. 4 g(r) (pl_fig4_rdf)", f"not settled (provisional: {pv})", ev, "R6", 0.0, [])
+
+
+def verdict_viscosity():
+    rows = RECORDED["viscosity"]
+    ok = all(lam < 0.6 and dev > 0 for _, lam, dev, _ in rows)
+    v = "disagrees — set-up" if ok else "disagrees — peloid"
+    ev = ("REPORT.md at 3981e2f: the settings beyond 3 SE: " + ", ".join(f"{n} (+{d} ± {s} %)" for n, _, d, s in rows)
+          + "; every λ = 0.1 and λ = 1 setting agrees.  PL Sec. II: the random-collision formulas fail for λ ≲ 0.6, "
+            "where kinetic correlations enhance transport (the fluid's D: +9.4 ± 0.2 % at λ = 0.3 in the same report); "
+            "the runs that remove the difference: the λ = 1 settings.  Not in issue 39's list.")
+    return ("Accuracy guide, SRD viscosity (accuracy_viscosity)", v, ev, "R7", 0.0, [])
+
+
+def section(out, rdir):
+    """The report's 'Verdicts (issue 39)' lines (and its plots, written into rdir)."""
+    b2 = b2_tool()
+    f9 = verdict_fig9(out, rdir)
+    rz = verdict_rz(out)
+    dp = verdict_dphi(out)
+    rows = [f9, verdict_fig11(), rz, dp, verdict_vacf(), verdict_rdf(), verdict_viscosity()]
+    b2.main_plot(os.path.join(rdir, "issue39_b2.png"))
+    plot_fig9(f9[6], os.path.join(rdir, "issue39_fig9_lub.png"))
+    plot_rz(os.path.join(rdir, "issue39_rz.png"))
+    plot_dphi(dp[6], os.path.join(rdir, "issue39_dphi.png"))
+    import subprocess
+    try:
+        rev = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+    except OSError:
+        rev = "unknown"
+    lines = ["## Verdicts (issue 39)", "", f"This section written at {rev} (tools/validation/issue39.py).", "",
+             "Each disagreement row above, judged by the rule of validation/RULES_issue39.md fixed (and committed) before "
+             "the tool and the runs; no parameter was tuned.  Verdicts: agrees; disagrees — peloid (a defect); disagrees — "
+             "set-up (a named difference, with the run that removes it); paper inconsistent (from the paper's own "
+             "equations); not settled (the decisive run was not made: a provisional verdict from what exists).  CPU: the "
+             "runs' `cpu_seconds` (one thread, `nice -n 15`, on the shared 2-core machine); the analytic tools take ~1 s.",
+             "", "| row | verdict | evidence (± SE) | rule | CPU | plots |", "|---|---|---|---|---|---|"]
+    for r in rows:
+        name, v, ev, rule, c, plots = r[:6]
+        vv = v if v.startswith("not settled") else f"**{v}**"
+        pl = ", ".join(f"[{p}]({p})" for p in plots) or "–"
+        lines.append(f"| {name} | {vv} | {ev} | RULES_issue39.md {rule} | {c:.0f} s | {pl} |")
+    lines += ["", "Departures from the rules, all stated here: (1) R1's escape time was written as Kramers' saddle formula, "
+              "but the secondary well has no outer saddle (V rises monotonically to 0): the tool gives the radial "
+              "mean first-passage time instead (to the well's edge and to one diameter away) and Kramers only for "
+              "the inward escape over the barrier; the rule's condition (< 1 s) holds for each.  (2) E2 ran at the base "
+              "scene's length (0.64 s of mapped time, as the rule says); the issue's 3 s runs with lubrication were "
+              "not made, because E2 showed that the lubrication cools the colloids (above), so a longer lubricated "
+              "run tests Hecht's set-up, not equilibrium.  (3) studies/hecht_fig9_bd.cfg (Brownian dynamics of Eqs. "
+              "1–2) was added after the rules as the equilibrium reference the issue asks for; it decides nothing.  "
+              "(4) The issue's B2* values are reproduced only with another normalisation and other constants (the "
+              "table's note).", ""]
+    for p in ("issue39_b2.png", "issue39_fig9_lub.png", "issue39_rz.png", "issue39_dphi.png"):
+        lines += [f"![{p[:-4]}]({p})", ""]
+    lines += ["Stickiness table of Hecht Eqs. 1–2 (tools/b2_stickiness.py; B2* normalised by the hard core r_b at the "
+              "barrier; the column 'd³ norm.' by the contact diameter d instead):", ""]
+    lines += b2.tables()
+    return lines
