@@ -60,9 +60,8 @@ extern const pl_module_t pl_observe_module;  /* src/observe/observe_module.c */
 extern const pl_module_t pl_stop_module;     /* src/observe/stop_module.c */
 extern const pl_module_t pl_stress_module;  /* src/observe/stress_module.c */
 
-/* The present estimate and SE of observable ob (stop.observable - 1);
- * 0 when it has none yet (src/observe/observe_module.c). */
-int pl_observe_estimate(const pl_sim_t *sim, int ob, double *value, double *se);
-const char *pl_observe_name(int ob);
+/* The present value and SE of the observers' estimate `name`
+ * (stop.observable); 0 when it has none yet (src/observe/observe_module.c). */
+int pl_observe_estimate(const pl_sim_t *sim, const char *name, double *value, double *se);
 
 #endif

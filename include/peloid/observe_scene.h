@@ -38,9 +38,8 @@ static inline long long pl_scene_observe_ll(const pl_scene_observe_t *so, size_t
 /* Section `stop`: end the run when an observable's relative SE reaches
  * rel_error (checked every check_interval steps, from the state only: the
  * same step for any thread count), or after max_wall_s of wall time. */
-enum { PL_STOP_NONE = 0 }; /* else 1 + the observable's index (src/observe/observe_module.c) */
 typedef struct {
-    int observable;
+    char observable[128]; /* "none", or an observer's estimate (peloid/observer.h) */
     double rel_error;
     long long check_interval;
     double max_wall_s; /* 0: no wall-time limit */

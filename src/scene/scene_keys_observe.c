@@ -104,16 +104,12 @@ const pl_section_t pl_scene_section_observe = {"observe", "observers: measured q
 #undef OFF
 #define OFF(member) offsetof(pl_scene_t, stop.member)
 
-/* In the order of the observables of src/observe/observe_module.c (after "none"). */
-static const char *const stop_choices[] = {"none", "colloid_D", "rdf_peak", "cluster_number", "largest_cluster",
-                                           "mean_cluster_size", "settling_velocity", "cluster_bonds",
-                                           "cluster_bonds_primary", "cluster_bonds_secondary",
-                                           "cluster_primary_fraction", NULL};
-
 static const pl_key_t stop_keys[] = {
-    {"observable", PL_KEY_CHOICE, OFF(observable), 0, 0, 0, stop_choices, 0, NULL, "-",
+    {"observable", PL_KEY_STRING, OFF(observable), 0, 0, 0, NULL, 0, "none", "-",
      "end the run (final checkpoint and outputs written) once this observable's standard error is below "
-     "rel_error of its value; its observer must be on"},
+     "rel_error of its value: \"none\", or an estimate of an observer that is on (the summary.json "
+     "\"observables\" entries with a se_vs_time, e.g. \"colloid_D\", \"rdf_peak\", \"cluster_number\"; another "
+     "name is refused with the list)"},
     {"rel_error", PL_KEY_REAL, OFF(rel_error), 0, 1, 0, NULL, 0.01, NULL, "-",
      "the relative standard error that ends the run"},
     {"check_interval", PL_KEY_INT, OFF(check_interval), 1, 1e15, 0, NULL, 100, NULL, "collision steps",
