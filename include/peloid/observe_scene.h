@@ -24,6 +24,8 @@ typedef struct {
     double clusters_energy;            /* energy bond: pair energy below -this (kT_ref) */
     long long vdist_interval, vdist_start; /* velocity distributions against Maxwell-Boltzmann */
     long long sediment_interval, sediment_start, sediment_bins; /* phi(z, t), settling velocity */
+    long long steinhardt_interval, steinhardt_start; /* bond-orientational order Q4, Q6 */
+    double steinhardt_rmax;            /* its neighbour cut-off */
     long long stress_interval, stress_start, stress_gk_steps; /* fluid stress, Green-Kubo viscosity */
     double target_rel_error;           /* the error-against-time report's target */
 } pl_scene_observe_t;

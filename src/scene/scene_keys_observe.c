@@ -83,6 +83,17 @@ static const pl_key_t observe_keys[] = {
      "first step the sedimentation observer samples"},
     {"sediment_bins", PL_KEY_INT, OFF(sediment_bins), 0, 1e6, 0, NULL, 0, NULL, "-",
      "slabs of phi(z) over the box height (0: one per collision cell)"},
+    {"steinhardt_interval", PL_KEY_INT, OFF(steinhardt_interval), 0, 1e15, PL_KEY_FP_SET, NULL, 0, NULL,
+     "collision steps",
+     "Steinhardt bond-orientational order of the colloids every this many steps (0: off): local q_l(i) = "
+     "sqrt(4 pi / (2l+1) sum_m |q_lm(i)|^2), q_lm(i) the mean of Y_lm over the neighbours closer than "
+     "steinhardt_rmax, and the global Q_l of the colloid-averaged q_lm, l = 4 and 6 (fcc: Q4 0.191, Q6 0.575; "
+     "an ideal gas: Q_l ~ 1/sqrt(bonds)); time averages with SE; O(N^2) per sample"},
+    {"steinhardt_start", PL_KEY_INT, OFF(steinhardt_start), 0, 1e15, PL_KEY_FP_SET, NULL, 0, NULL,
+     "collision steps", "first step the Steinhardt order samples"},
+    {"steinhardt_rmax", PL_KEY_REAL, OFF(steinhardt_rmax), 0, 1e6, PL_KEY_FP_SET, NULL, 0, NULL, "a0",
+     "neighbour cut-off of the Steinhardt order (needed with steinhardt_interval > 0; e.g. the first minimum "
+     "of g(r)), at most half the periodic box edge"},
     {"stress_interval", PL_KEY_INT, OFF(stress_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "fluid stress (momentum flux) tensor, kinetic + collisional parts, accumulated every step and written "
      "as its mean over every this many steps (0: off); the shear viscosity from the Green-Kubo sum of the "
