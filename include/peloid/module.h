@@ -1,9 +1,10 @@
 /* Modules of a simulation (DESIGN.md "Scene -> plan"): the fluid, the
  * colloids, the colloid-solvent couplings, the observers.  Each registers
  * here, in one table row, what it adds to a run; its own file holds its
- * stages, its thermo columns and its summary entries.  Adding a module (an
- * observable, a coupling) is its file plus one row of pl_modules
- * (src/plan/modules.c).  Where a module's stages run in a step is their slot
+ * stages, its thermo columns and its summary entries.  Adding a module (a
+ * coupling) is its file plus one row of pl_modules (src/plan/modules.c);
+ * adding an observable is its file plus one row of the observer table
+ * (peloid/observer.h, src/observe/observers.c).  Where a module's stages run in a step is their slot
  * (pl_stage_slot_t, peloid/sim.h). */
 #ifndef PELOID_MODULE_H
 #define PELOID_MODULE_H
