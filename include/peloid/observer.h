@@ -86,7 +86,9 @@ typedef struct pl_observer {
      * keep named datasets only); ckpt_meta fills them (state NULL: off) */
     int meta_slot, nmeta;
     void (*ckpt_meta)(const void *state, long long *m);
-    int (*ckpt_head)(int64_t g, const void *state); /* datasets before every observer's (NULL: none) */
+    /* datasets before every observer's, written when off too (state NULL; the
+     * first observers' layout); NULL: none */
+    int (*ckpt_head)(int64_t g, const void *state);
     int (*ckpt_write)(int64_t g, const void *state);
     /* reads back what ckpt_write wrote (m: its meta slots); errors name path */
     int (*ckpt_read)(int64_t g, pl_obs_run_t *run, void *state, const long long *m, const char *path,

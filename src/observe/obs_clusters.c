@@ -287,10 +287,14 @@ static void ckpt_meta(const void *state, long long *m)
     m[1] = o ? (long long)o->c_hist_len : 0;
 }
 
+/* (also when off, state NULL: the initial accumulators, as the first
+ * checkpoints stored them) */
 static int ckpt_head(int64_t g, const void *state)
 {
     const cl_obs_t *o = state;
-    return pl_ckpt_write_1d((hid_t)g, "cluster_blocking", H5T_NATIVE_UCHAR, o->cb, sizeof o->cb);
+    pl_blocking_t none[NCV];
+    for (int k = 0; !o && k < NCV; ++k) pl_blocking_init(&none[k]);
+    return pl_ckpt_write_1d((hid_t)g, "cluster_blocking", H5T_NATIVE_UCHAR, o ? o->cb : none, sizeof none);
 }
 
 static int ckpt_write(int64_t g_, const void *state)

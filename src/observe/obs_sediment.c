@@ -200,10 +200,14 @@ static void ckpt_meta(const void *state, long long *m)
     m[1] = o ? (long long)o->s_bins : 0;
 }
 
+/* (also when off, state NULL: the initial accumulator, as the first
+ * checkpoints stored it) */
 static int ckpt_head(int64_t g, const void *state)
 {
     const sed_obs_t *o = state;
-    return pl_ckpt_write_1d((hid_t)g, "settling_blocking", H5T_NATIVE_UCHAR, &o->s_vb, sizeof o->s_vb);
+    pl_blocking_t none;
+    if (!o) pl_blocking_init(&none);
+    return pl_ckpt_write_1d((hid_t)g, "settling_blocking", H5T_NATIVE_UCHAR, o ? &o->s_vb : &none, sizeof none);
 }
 
 static int ckpt_write(int64_t g_, const void *state)

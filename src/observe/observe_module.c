@@ -435,8 +435,8 @@ static int observe_ckpt_write(int64_t file, const pl_sim_t *sim)
     legacy_points(o, o->ept, slot);
     int bad = pl_ckpt_write_1d(g, "meta", H5T_NATIVE_LLONG, meta, OCK_N);
     bad |= ept_write(g, "", slot, NLEGACY);
-    for (int k = 0; k < NOBS; ++k)
-        if (o->st[k] && ROW(k)->ckpt_head) bad |= ROW(k)->ckpt_head(g, o->st[k]);
+    for (int k = 0; k < NOBS; ++k) /* an off row's too (NULL) */
+        if (ROW(k)->ckpt_head) bad |= ROW(k)->ckpt_head(g, o->st[k]);
     for (int k = 0; k < NOBS; ++k) {
         if (!o->st[k]) continue;
         bad |= ROW(k)->ckpt_write(g, o->st[k]);
