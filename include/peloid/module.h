@@ -1,9 +1,10 @@
 /* Modules of a simulation (DESIGN.md "Scene -> plan"): the fluid, the
  * colloids, the colloid-solvent couplings, the observers.  Each registers
  * here, in one table row, what it adds to a run; its own file holds its
- * stages, its thermo columns and its summary entries.  Adding a module (an
- * observable, a coupling) is its file plus one row of pl_modules
- * (src/plan/modules.c).  Where a module's stages run in a step is their slot
+ * stages, its thermo columns and its summary entries.  Adding a module (a
+ * coupling) is its file plus one row of pl_modules (src/plan/modules.c);
+ * adding an observable is its file plus one row of the observer table
+ * (peloid/observer.h, src/observe/observers.c).  Where a module's stages run in a step is their slot
  * (pl_stage_slot_t, peloid/sim.h). */
 #ifndef PELOID_MODULE_H
 #define PELOID_MODULE_H
@@ -60,9 +61,8 @@ extern const pl_module_t pl_observe_module;  /* src/observe/observe_module.c */
 extern const pl_module_t pl_stop_module;     /* src/observe/stop_module.c */
 extern const pl_module_t pl_stress_module;  /* src/observe/stress_module.c */
 
-/* The present estimate and SE of observable ob (stop.observable - 1);
- * 0 when it has none yet (src/observe/observe_module.c). */
-int pl_observe_estimate(const pl_sim_t *sim, int ob, double *value, double *se);
-const char *pl_observe_name(int ob);
+/* The present value and SE of the observers' estimate `name`
+ * (stop.observable); 0 when it has none yet (src/observe/observe_module.c). */
+int pl_observe_estimate(const pl_sim_t *sim, const char *name, double *value, double *se);
 
 #endif

@@ -24,6 +24,8 @@ typedef struct {
     double clusters_energy;            /* energy bond: pair energy below -this (kT_ref) */
     long long vdist_interval, vdist_start; /* velocity distributions against Maxwell-Boltzmann */
     long long sediment_interval, sediment_start, sediment_bins; /* phi(z, t), settling velocity */
+    long long steinhardt_interval, steinhardt_start; /* bond-orientational order Q4, Q6 */
+    double steinhardt_rmax;            /* its neighbour cut-off */
     long long stress_interval, stress_start, stress_gk_steps; /* fluid stress, Green-Kubo viscosity */
     double target_rel_error;           /* the error-against-time report's target */
 } pl_scene_observe_t;
@@ -38,9 +40,8 @@ static inline long long pl_scene_observe_ll(const pl_scene_observe_t *so, size_t
 /* Section `stop`: end the run when an observable's relative SE reaches
  * rel_error (checked every check_interval steps, from the state only: the
  * same step for any thread count), or after max_wall_s of wall time. */
-enum { PL_STOP_NONE = 0 }; /* else 1 + the observable's index (src/observe/observe_module.c) */
 typedef struct {
-    int observable;
+    char observable[128]; /* "none", or an observer's estimate (peloid/observer.h) */
     double rel_error;
     long long check_interval;
     double max_wall_s; /* 0: no wall-time limit */

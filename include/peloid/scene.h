@@ -137,8 +137,12 @@ typedef enum {
     PL_KEY_CHOICE, /* int: index into choices */
 } pl_key_type_t;
 
-/* PL_KEY_SAFE_NAME: a string that names a file or directory ([A-Za-z0-9._-]). */
-enum { PL_KEY_MIN_OPEN = 1u, PL_KEY_MAX_OPEN = 2u, PL_KEY_INT32 = 4u, PL_KEY_SAFE_NAME = 8u };
+/* PL_KEY_SAFE_NAME: a string that names a file or directory ([A-Za-z0-9._-]).
+ * PL_KEY_FP_SET: a key the checkpoint fingerprints (scene_keys,
+ * observe_keys) name only when it differs from its default: a key added
+ * later, so that the checkpoints written before it (and their bytes) stay
+ * the same and resume. */
+enum { PL_KEY_MIN_OPEN = 1u, PL_KEY_MAX_OPEN = 2u, PL_KEY_INT32 = 4u, PL_KEY_SAFE_NAME = 8u, PL_KEY_FP_SET = 16u };
 
 typedef struct {
     const char *name;

@@ -91,8 +91,23 @@ static void value_text(const pl_key_t *k, const pl_scene_t *scene, char *buf, si
     }
 }
 
+/* Whether key k of the scene holds its default. */
+static int at_default(const pl_key_t *k, const pl_scene_t *scene)
+{
+    const char *base = (const char *)scene + k->offset;
+    switch (k->type) {
+    case PL_KEY_INT: return *(const long long *)base == (long long)k->def;
+    case PL_KEY_REAL: return *(const double *)base == k->def;
+    case PL_KEY_BOOL:
+    case PL_KEY_CHOICE: return *(const int *)base == (int)k->def;
+    case PL_KEY_STRING: return !strcmp(base, k->def_str ? k->def_str : "");
+    default: return 0;
+    }
+}
+
 /* "name = value" lines of the scene's keys that `keep` selects, in schema
- * order (malloc'ed, NULL when out of memory). */
+ * order, a PL_KEY_FP_SET key only when it is set (malloc'ed, NULL when out
+ * of memory). */
 static char *keys_text(const pl_scene_t *scene, int (*keep)(const char *name))
 {
     size_t ns, cap = 4096, len = 0;
@@ -104,7 +119,8 @@ static char *keys_text(const pl_scene_t *scene, int (*keep)(const char *name))
         for (size_t i = 0; i < all[j]->nkeys; ++i) {
             char name[128], val[256];
             full_name(all[j], &all[j]->keys[i], name, sizeof name);
-            if (!keep(name)) continue;
+            if (!keep(name) || ((all[j]->keys[i].flags & PL_KEY_FP_SET) && at_default(&all[j]->keys[i], scene)))
+                continue;
             if (not_compared(name)) snprintf(val, sizeof val, "\"\"");
             else value_text(&all[j]->keys[i], scene, val, sizeof val);
             size_t need = strlen(name) + strlen(val) + 5;

@@ -11,7 +11,7 @@
 
 /* The first failure while building is kept: err gets one line naming
  * `where` (the scene file) and the key path `prefix.key`. */
-typedef struct {
+typedef struct pl_json {
     pl_err_t *err;
     const char *where;  /* e.g. the scene path */
     const char *prefix; /* key path of the object being filled, e.g. "derived" */

@@ -16,7 +16,7 @@ enum { PL_OBS_NFRAC = 4 };
 extern const double pl_obs_fractions[PL_OBS_NFRAC];
 
 /* An estimate taken at a run fraction. */
-typedef struct {
+typedef struct pl_obs_point {
     long long step;
     double wall_s, value, se;
     int valid, plateau;

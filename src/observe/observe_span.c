@@ -8,7 +8,9 @@
  * Green-Kubo D is the step's, not the colloid's).  Without these checks the
  * observable is absent or meaningless and the run still exits 0.
  *
- * The samplers take their samples at the multiples of their interval from
+ * The observers (peloid/observer.h rows: their interval and start keys,
+ * whether they sample the start state, the samples they need) take their
+ * samples at the multiples of their interval from
  * their start on (at step 0 too, except C_FF, whose force is an average
  * over a collision step), to the last step. */
 #include <math.h>
@@ -16,31 +18,10 @@
 #include <stdio.h>
 
 #include "peloid/observe_scene.h"
+#include "peloid/observer.h"
 #include "peloid/scene.h"
 
 #define OFFS(m) offsetof(pl_scene_t, observe.m)
-
-static const struct {
-    const char *what;
-    size_t interval, start; /* in pl_scene_t */
-    const char *interval_key, *start_key;
-    int at_start;    /* samples at step 0 */
-    long long need;  /* fewest samples with a result */
-} spans[] = {
-    {"g(r)", OFFS(rdf_interval), OFFS(rdf_start), "observe.rdf_interval", "observe.rdf_start", 1, 1},
-    {"S(q)", OFFS(sq_interval), OFFS(sq_start), "observe.sq_interval", "observe.sq_start", 1, 1},
-    {"MSD", OFFS(msd_interval), OFFS(msd_start), "observe.msd_interval", "observe.msd_start", 1, 5},
-    {"VACF", OFFS(vacf_interval), OFFS(vacf_start), "observe.vacf_interval", "observe.vacf_start", 1, 5},
-    {"C_FF", OFFS(cff_interval), OFFS(cff_start), "observe.cff_interval", "observe.cff_start", 0, 5},
-    {"cluster", OFFS(clusters_interval), OFFS(clusters_start), "observe.clusters_interval",
-     "observe.clusters_start", 1, 1},
-    {"velocity-distribution", OFFS(vdist_interval), OFFS(vdist_start), "observe.vdist_interval",
-     "observe.vdist_start", 1, 1},
-    {"sedimentation", OFFS(sediment_interval), OFFS(sediment_start), "observe.sediment_interval",
-     "observe.sediment_start", 1, 2},
-};
-
-static long long ll_at(const pl_scene_t *sc, size_t off) { return *(const long long *)((const char *)sc + off); }
 
 /* Samples at the multiples of `interval` in [start, last] (from step 1 on
  * without at_start). */
@@ -54,24 +35,26 @@ static long long samples_in(long long start, long long interval, long long last,
 int pl_observe_span_problem(const pl_scene_t *sc, long long last, size_t *off, const char **key, char *why,
                             size_t n)
 {
-    for (size_t k = 0; k < sizeof spans / sizeof spans[0]; ++k) {
-        const long long iv = ll_at(sc, spans[k].interval), st = ll_at(sc, spans[k].start);
+    for (int k = 0; k < pl_nobservers; ++k) {
+        const pl_observer_t *r = pl_observers[k];
+        const long long iv = pl_scene_observe_ll(&sc->observe, r->interval),
+                        st = pl_scene_observe_ll(&sc->observe, r->start);
         if (iv <= 0) continue;
-        const long long got = samples_in(st, iv, last, spans[k].at_start);
-        if (got >= spans[k].need) continue;
+        const long long got = samples_in(st, iv, last, r->at_start);
+        if (got >= r->need) continue;
         const int late = st > last;
-        *off = late ? spans[k].start : spans[k].interval;
-        *key = late ? spans[k].start_key : spans[k].interval_key;
+        *off = offsetof(pl_scene_t, observe) + (late ? r->start : r->interval);
+        *key = late ? r->start_key : r->interval_key;
         if (late)
             snprintf(why, n, "%lld is after the run's last step %lld: the %s observer would take no sample; "
-                             "allowed: a start <= %lld", st, last, spans[k].what, last);
+                             "allowed: a start <= %lld", st, last, r->name, last);
         else
             snprintf(why, n, "%lld from step %lld to the run's last step %lld gives %lld sample(s); the %s "
                              "observer needs %lld%s; allowed: an interval of at most about %lld, or a longer run "
                              "(steps)",
-                     iv, st, last, got, spans[k].what, spans[k].need,
-                     spans[k].need > 2 ? " (its estimate reads lags up to a quarter of the sampled span)" : "",
-                     (last - st) / (spans[k].need > 1 ? spans[k].need - 1 : 1));
+                     iv, st, last, got, r->name, r->need,
+                     r->need > 2 ? " (its estimate reads lags up to a quarter of the sampled span)" : "",
+                     (last - st) / (r->need > 1 ? r->need - 1 : 1));
         return 1;
     }
     return 0;

@@ -11,6 +11,7 @@
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "json_build.h"
 #include "peloid/module.h"
@@ -20,13 +21,12 @@ static int stage_stop(pl_sim_t *sim, void *ctx, pl_err_t *err)
     (void)ctx;
     (void)err;
     const pl_scene_stop_t *st = &sim->scene.stop;
-    const int ob = st->observable - 1;
     double v, se;
-    if (ob >= 0 && sim->step % st->check_interval == 0 && pl_observe_estimate(sim, ob, &v, &se) && v != 0.0 &&
+    if (sim->step % st->check_interval == 0 && pl_observe_estimate(sim, st->observable, &v, &se) && v != 0.0 &&
         se <= st->rel_error * fabs(v)) {
         sim->stop_requested = 1;
-        snprintf(sim->stop_reason, sizeof sim->stop_reason, "%s reached SE %.3g = %.3g of %.6g (stop.rel_error %g)",
-                 pl_observe_name(ob), se, se / fabs(v), v, st->rel_error);
+        snprintf(sim->stop_reason, sizeof sim->stop_reason, "%.60s reached SE %.3g = %.3g of %.6g (stop.rel_error %g)",
+                 st->observable, se, se / fabs(v), v, st->rel_error);
     }
     return 0;
 }
@@ -48,7 +48,7 @@ static int stop_stages(pl_sim_t *sim, pl_err_t *err)
 {
     int rc;
     const pl_scene_stop_t *st = &sim->scene.stop;
-    if (st->observable > 0 && sim->observe) {
+    if (strcmp(st->observable, "none") && sim->observe) {
         pl_stage_t s = {.name = "stop-rule", .fn = stage_stop, .interval = st->check_interval,
                         .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE};
         if ((rc = pl_sim_add_stage(sim, &s, err))) return rc;
@@ -65,7 +65,7 @@ static int stop_stages(pl_sim_t *sim, pl_err_t *err)
 static int stop_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
 {
     (void)dir;
-    if (sim->scene.stop.observable == 0 && !(sim->scene.stop.max_wall_s > 0)) return 0;
+    if (!strcmp(sim->scene.stop.observable, "none") && !(sim->scene.stop.max_wall_s > 0)) return 0;
     pl_json_t b = {err, sim->scene.path, "stop", 0};
     json_t *o = json_object();
     pl_json_str(&b, o, "reason", sim->stop_requested ? sim->stop_reason : "the run's steps were done");

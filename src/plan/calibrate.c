@@ -95,7 +95,7 @@ static void cal_scene(const pl_scene_t *sc, const cal_plan_t *p, int replica, pl
     pl_scene_observe_t *o = &c->observe; /* no observer: the run only steps */
     o->rdf_interval = o->sq_interval = o->msd_interval = o->vacf_interval = o->cff_interval = 0;
     o->clusters_interval = o->vdist_interval = o->sediment_interval = o->stress_interval = 0;
-    c->stop.observable = PL_STOP_NONE;
+    snprintf(c->stop.observable, sizeof c->stop.observable, "none");
 }
 
 /* FNV-1a over the parts of the calibration scene that set its bits. */

@@ -83,6 +83,17 @@ static const pl_key_t observe_keys[] = {
      "first step the sedimentation observer samples"},
     {"sediment_bins", PL_KEY_INT, OFF(sediment_bins), 0, 1e6, 0, NULL, 0, NULL, "-",
      "slabs of phi(z) over the box height (0: one per collision cell)"},
+    {"steinhardt_interval", PL_KEY_INT, OFF(steinhardt_interval), 0, 1e15, PL_KEY_FP_SET, NULL, 0, NULL,
+     "collision steps",
+     "Steinhardt bond-orientational order of the colloids every this many steps (0: off): local q_l(i) = "
+     "sqrt(4 pi / (2l+1) sum_m |q_lm(i)|^2), q_lm(i) the mean of Y_lm over the neighbours closer than "
+     "steinhardt_rmax, and the global Q_l of the colloid-averaged q_lm, l = 4 and 6 (fcc: Q4 0.191, Q6 0.575; "
+     "an ideal gas: Q_l ~ 1/sqrt(bonds)); time averages with SE; O(N^2) per sample"},
+    {"steinhardt_start", PL_KEY_INT, OFF(steinhardt_start), 0, 1e15, PL_KEY_FP_SET, NULL, 0, NULL,
+     "collision steps", "first step the Steinhardt order samples"},
+    {"steinhardt_rmax", PL_KEY_REAL, OFF(steinhardt_rmax), 0, 1e6, PL_KEY_FP_SET, NULL, 0, NULL, "a0",
+     "neighbour cut-off of the Steinhardt order (needed with steinhardt_interval > 0; e.g. the first minimum "
+     "of g(r)), at most half the periodic box edge"},
     {"stress_interval", PL_KEY_INT, OFF(stress_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "fluid stress (momentum flux) tensor, kinetic + collisional parts, accumulated every step and written "
      "as its mean over every this many steps (0: off); the shear viscosity from the Green-Kubo sum of the "
@@ -104,16 +115,12 @@ const pl_section_t pl_scene_section_observe = {"observe", "observers: measured q
 #undef OFF
 #define OFF(member) offsetof(pl_scene_t, stop.member)
 
-/* In the order of the observables of src/observe/observe_module.c (after "none"). */
-static const char *const stop_choices[] = {"none", "colloid_D", "rdf_peak", "cluster_number", "largest_cluster",
-                                           "mean_cluster_size", "settling_velocity", "cluster_bonds",
-                                           "cluster_bonds_primary", "cluster_bonds_secondary",
-                                           "cluster_primary_fraction", NULL};
-
 static const pl_key_t stop_keys[] = {
-    {"observable", PL_KEY_CHOICE, OFF(observable), 0, 0, 0, stop_choices, 0, NULL, "-",
+    {"observable", PL_KEY_STRING, OFF(observable), 0, 0, 0, NULL, 0, "none", "-",
      "end the run (final checkpoint and outputs written) once this observable's standard error is below "
-     "rel_error of its value; its observer must be on"},
+     "rel_error of its value: \"none\", or an estimate of an observer that is on (the summary.json "
+     "\"observables\" entries with a se_vs_time, e.g. \"colloid_D\", \"rdf_peak\", \"cluster_number\"; another "
+     "name is refused with the list)"},
     {"rel_error", PL_KEY_REAL, OFF(rel_error), 0, 1, 0, NULL, 0.01, NULL, "-",
      "the relative standard error that ends the run"},
     {"check_interval", PL_KEY_INT, OFF(check_interval), 1, 1e15, 0, NULL, 100, NULL, "collision steps",
