@@ -51,10 +51,11 @@ static inline double pl_min_image(double d, double L, int periodic)
     X(HERTZ, hertz, "hertz", PL_CE_HERTZ, OWN)                  \
     X(LUB, lub, "lubrication", PL_CE_NONE, OWN)                 \
     X(WCA, wca, "wca", PL_CE_WCA, RADIAL)                       \
-    X(DEPL, depl, "depletion_comp", PL_CE_DEPL, RADIAL)
+    X(DEPL, depl, "depletion_comp", PL_CE_DEPL, RADIAL)         \
+    X(TAB, tab, "table", PL_CE_TAB, RADIAL)
 /* Rows of PL_PAIR_TERMS, as a literal for the preprocessor (the kernel
  * specialisations, 2^rows, are generated from it; checked below). */
-#define PL_PAIR_NTERMS 5
+#define PL_PAIR_NTERMS 6
 
 /* Energy slots, one row of n per slot in the energy scratch array, in this
  * order (the order of the thermo columns):
@@ -67,7 +68,8 @@ static inline double pl_min_image(double d, double L, int periodic)
     X(WCA, "c_wca", PL_CT_WCA, 1)              \
     X(WALL, "c_wall", 0u, 1)                   \
     X(GRAVITY, "c_gravity", 0u, 1)             \
-    X(DEPL, "c_depl", PL_CT_DEPL, 1)
+    X(DEPL, "c_depl", PL_CT_DEPL, 1)           \
+    X(TAB, "c_table", PL_CT_TAB, 0)
 
 #define PL_CE_ENUM_(ID, col, bit, always) PL_CE_##ID,
 enum { PL_COLLOID_ENERGY_SLOTS(PL_CE_ENUM_) PL_CE_NTERMS, PL_CE_NONE = -1 };
@@ -86,6 +88,9 @@ _Static_assert(PL_CT_COUNT == PL_PAIR_NTERMS, "PL_PAIR_NTERMS must count the row
 #define PL_CT_KIND_RADIAL 1u
 #define PL_CT_RADIAL_(ID, id, name, slot, kind) | (PL_CT_KIND_##kind ? PL_CT_##ID : 0u)
 #define PL_CT_RADIAL (0u PL_PAIR_TERMS(PL_CT_RADIAL_))
+
+/* Intervals of the table term's internal table (tab_uf). */
+#define PL_PAIR_TABLE_N 2048
 
 typedef struct {
     unsigned terms;  /* PL_CT_* */
@@ -113,6 +118,13 @@ typedef struct {
      * zero from dep_rc on (twice the colloid-fluid cut-off) */
     const double *dep_u, *dep_du;
     double dep_inv_h, dep_rc;
+    /* table (src/colloid/colloid_pair_table.c): U and F = -dU/dr at
+     * r_k = tab_r0 + k / tab_inv_h, k = 0..PL_PAIR_TABLE_N, interleaved
+     * (tab_uf[2k] = U, tab_uf[2k+1] = F; node N+1 repeats node N), each
+     * interpolated linearly between the nodes; cut-off tab_rc (the file's
+     * last r); below tab_r0 the force of tab_r0 */
+    double tab_r0, tab_rc, tab_inv_h;
+    double tab_uf[2 * (PL_PAIR_TABLE_N + 2)];
     double gap_cut; /* largest surface-gap cut-off of the DLVO/Hertz/lub terms */
     /* multiple time stepping (colloids.slow_interval > 1): the force pass
      * over the near list gives each pair's DLVO force times 1 - w, w =

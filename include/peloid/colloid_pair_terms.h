@@ -23,6 +23,7 @@ static inline double pl_pair_rc_WCA(const pl_colloid_pair_params_t *p, double d)
     return (p->wca_sigma > 0.0 ? p->wca_sigma : d) * p->wca_rfac;
 }
 static inline double pl_pair_rc_DEPL(const pl_colloid_pair_params_t *p, double d) { (void)d; return p->dep_rc; }
+static inline double pl_pair_rc_TAB(const pl_colloid_pair_params_t *p, double d) { (void)d; return p->tab_rc; }
 
 /* RADIAL terms, r below the term's cut-off */
 static inline __attribute__((always_inline)) pl_pair_val_t pl_pair_term_WCA(const pl_colloid_pair_params_t *p,
@@ -36,6 +37,29 @@ static inline __attribute__((always_inline)) pl_pair_val_t pl_pair_term_DEPL(con
     (void)d;
     pl_pair_val_t v;
     pl_depletion_table_eval(p->dep_u, p->dep_du, p->dep_inv_h, r, &v.u, &v.f, &v.k2);
+    return v;
+}
+
+/* table: U and F each interpolated linearly between the internal nodes
+ * (as LAMMPS pair_style table linear), d2U/dr2 = -dF/dr of the interval;
+ * below the first node U continues with the first node's force. */
+static inline __attribute__((always_inline)) pl_pair_val_t pl_pair_term_TAB(const pl_colloid_pair_params_t *p,
+                                                                           double r, double d)
+{
+    (void)d;
+    const double t = (r - p->tab_r0) * p->tab_inv_h;
+    pl_pair_val_t v;
+    if (t < 0.0) {
+        v.f = p->tab_uf[1];
+        v.u = p->tab_uf[0] - v.f * (r - p->tab_r0);
+        v.k2 = 0.0;
+        return v;
+    }
+    const int k = (int)t;
+    const double s = t - k, *q = p->tab_uf + 2 * k;
+    v.u = q[0] + s * (q[2] - q[0]);
+    v.f = q[1] + s * (q[3] - q[1]);
+    v.k2 = -(q[3] - q[1]) * p->tab_inv_h;
     return v;
 }
 
