@@ -214,6 +214,7 @@ int pl_colloid_term_setup_dlvo(const pl_scene_t *scene, pl_colloid_pair_params_t
 {
     if (!(p->terms & PL_CT_DLVO)) return 0;
     if (pl_colloid_dlvo_setup(&scene->colloids.dlvo, 2.0 * scene->colloids.radius, p, info, err)) return err->code;
+    info->fail_key = NULL; /* set: a later row's failure is not the DLVO set-up's */
     p->gap_cut = fmax(p->gap_cut, p->dlvo_hcut);
     return 0;
 }
