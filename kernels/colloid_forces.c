@@ -1,7 +1,9 @@
 /* Colloid pair forces, torques and energies over the Verlet neighbour list
  * (kernels/colloid_neighbors.c).
  *
- * Terms (each switched on by a bit of p->terms, formulas in colloid_pair.h):
+ * Terms (each switched on by a bit of p->terms, one row each of the
+ * pair-term table PL_PAIR_TERMS, formulas in colloid_pair.h and
+ * colloid_pair_terms.h):
  *   DLVO: Hecht Eqs. 1-2 with the parabolic primary minimum (Hecht Sec. II)
  *   Hertz: Hecht Eq. 3, normal damping Hecht Eq. 6, tangential viscous
  *          friction on the relative surface velocity (Hecht Sec. II), torques
@@ -44,8 +46,7 @@
 
 #include "colloid_block.h"
 #include "peloid/colloid_kernels.h"
-#include "peloid/colloid_pair.h"
-#include "peloid/depletion.h"
+#include "peloid/colloid_pair_terms.h"
 
 typedef struct {
     double f[3], t[3], e[PL_CE_NTERMS];
@@ -65,14 +66,7 @@ static inline __attribute__((always_inline)) void pair_eval(
     fo[0] = fo[1] = fo[2] = 0.0;
     tj[0] = tj[1] = tj[2] = 0.0;
     double ri = v->rad[i], rj = v->rad[j], d = ri + rj;
-    double rc = d + p->gap_cut;
-    double wsig = 0.0, wrc = 0.0;
-    if (T & PL_CT_WCA) {
-        wsig = p->wca_sigma > 0.0 ? p->wca_sigma : d;
-        wrc = wsig * p->wca_rfac;
-        if (wrc > rc) rc = wrc;
-    }
-    if ((T & PL_CT_DEPL) && p->dep_rc > rc) rc = p->dep_rc;
+    const double rc = pl_colloid_pair_rc(p, T, d);
     if (r2 >= rc * rc) return;
     double r = sqrt(r2), inv = 1.0 / r;
     double ex = dx * inv, ey = dy * inv, ez = dz * inv;
@@ -101,21 +95,20 @@ static inline __attribute__((always_inline)) void pair_eval(
             if (E) a->e[PL_CE_DLVO] += s.u;
         }
     }
-    if (T & PL_CT_WCA) {
-        if (r < wrc) {
-            pl_pair_val_t s = pl_pair_wca(r, wsig, p->wca_eps, p->wca_n);
-            fr += s.f;
-            k2 += s.k2;
-            if (E) a->e[PL_CE_WCA] += s.u;
-        }
+    /* the RADIAL rows of the pair-term table, in row order */
+#define RADIAL_OWN(ID, slot)
+#define RADIAL_RADIAL(ID, slot)                                   \
+    if ((T & PL_CT_##ID) && r < pl_pair_rc_##ID(p, d)) {          \
+        pl_pair_val_t s = pl_pair_term_##ID(p, r, d);             \
+        fr += s.f;                                                \
+        k2 += s.k2;                                               \
+        if (E) a->e[slot] += s.u;                                 \
     }
-    if ((T & PL_CT_DEPL) && r < p->dep_rc) {
-        double u, f, kk;
-        pl_depletion_table_eval(p->dep_u, p->dep_du, p->dep_inv_h, r, &u, &f, &kk);
-        fr += f;
-        k2 += kk;
-        if (E) a->e[PL_CE_DEPL] += u;
-    }
+#define RADIAL_ROW(ID, id, name, slot, kind) RADIAL_##kind(ID, slot)
+    PL_PAIR_TERMS(RADIAL_ROW)
+#undef RADIAL_ROW
+#undef RADIAL_RADIAL
+#undef RADIAL_OWN
     /* relative velocity: only the dissipative terms read it */
     double vrx = 0.0, vry = 0.0, vrz = 0.0, vn = 0.0;
     if (((T & PL_CT_HERTZ) && delta > 0.0) || ((T & PL_CT_LUB) && h < p->lub_hcut)) {
@@ -195,7 +188,7 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
     const double pL[3] = {per[0] ? L[0] : 0.0, per[1] ? L[1] : 0.0, per[2] ? L[2] : 0.0};
     const double xi = v->x[i], yi = v->y[i], zi = v->z[i];
     /* far pairs, vectorised: beyond every term but the van der Waals tail of
-     * Eq. 2 (gap >= far_gap, outside the WCA and depletion ranges) the force
+     * Eq. 2 (gap >= far_gap, outside the ranges of the RADIAL terms) the force
      * is F/r = -A d^6 / (6 r^4 (r^2 - d^2)^2), no square root; the pairs of
      * a block are classified and these forces computed in SIMD lanes, then
      * added in slot order with the others (so the sums keep their order) */
@@ -225,16 +218,9 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
                 dy -= pL[1] * rint(dy * iL[1]);
                 dz -= pL[2] * rint(dz * iL[2]);
                 double r2 = dx * dx + dy * dy + dz * dz;
-                double d = ri + gr[k], rc = d + p->gap_cut, rf = d + (M ? far_gap_m : far_gap);
-                if (T & PL_CT_WCA) {
-                    double wrc = (p->wca_sigma > 0.0 ? p->wca_sigma : d) * p->wca_rfac;
-                    rc = rc > wrc ? rc : wrc;
-                    rf = rf > wrc ? rf : wrc;
-                }
-                if (T & PL_CT_DEPL) {
-                    rc = rc > p->dep_rc ? rc : p->dep_rc;
-                    rf = rf > p->dep_rc ? rf : p->dep_rc;
-                }
+                /* rf: beyond the far gap and every RADIAL term's range */
+                const double d = ri + gr[k], rc = pl_colloid_pair_rc(p, T, d);
+                const double rf = pl_colloid_pair_rc_from(p, T & PL_CT_RADIAL, d, d + (M ? far_gap_m : far_gap));
                 double rd = d + p->dlvo_hcut;
                 int in = r2 < rc * rc, far = in & (r2 >= rf * rf) & (r2 < rd * rd);
                 /* lanes that are not far compute on harmless operands and
@@ -339,14 +325,20 @@ static inline __attribute__((always_inline)) void owner_pairs(const pl_colloid_p
                 owner_pairs(p, nl, v, i, m, E, 0);                                         \
         }                                                                                  \
         break;
-/* Every mask 0..PL_CT_ALL, by doubling (a new term bit adds one level). */
-#define CASES2(b) CASE((b)) CASE((b) + 1)
-#define CASES4(b) CASES2(b) CASES2((b) + 2)
-#define CASES8(b) CASES4(b) CASES4((b) + 4)
-#define CASES16(b) CASES8(b) CASES8((b) + 8)
-#define CASES32(b) CASES16(b) CASES16((b) + 16)
-_Static_assert(PL_CT_ALL == 31u, "one CASES level per pair-term bit: extend ALL_CASES");
-#define ALL_CASES CASES32(0)
+/* Every mask 0..PL_CT_ALL, by doubling: level k lists the 2^k masks from
+ * b; the table's row count PL_PAIR_NTERMS picks the level. */
+#define CASES_0(b) CASE((b))
+#define CASES_1(b) CASES_0(b) CASES_0((b) + 1)
+#define CASES_2(b) CASES_1(b) CASES_1((b) + 2)
+#define CASES_3(b) CASES_2(b) CASES_2((b) + 4)
+#define CASES_4(b) CASES_3(b) CASES_3((b) + 8)
+#define CASES_5(b) CASES_4(b) CASES_4((b) + 16)
+#define CASES_6(b) CASES_5(b) CASES_5((b) + 32)
+#define CASES_7(b) CASES_6(b) CASES_6((b) + 64)
+#define CASES_AT_(n) CASES_##n(0)
+#define CASES_AT(n) CASES_AT_(n)
+_Static_assert(PL_PAIR_NTERMS <= 7, "add a CASES level");
+#define ALL_CASES CASES_AT(PL_PAIR_NTERMS)
 
 /* Pass 1 as an orphaned worksharing loop (call it from every thread of a
  * parallel region, or outside one): the implicit barrier of its loop ends it. */
@@ -391,5 +383,10 @@ double pl_colloid_pair_energy(const pl_colloid_pair_params_t *p, double r, doubl
     acc_t a = {{0}, {0}, {0}, 0.0, 0.0, 0.0, -1, -1, -1};
     double fo[3], tj[3];
     pair_eval(p, &v, 0, 1, r, 0.0, 0.0, r * r, p->terms & PL_CT_ALL, 1, 0, &a, fo, tj);
-    return a.e[PL_CE_DLVO] + a.e[PL_CE_HERTZ] + a.e[PL_CE_WCA] + a.e[PL_CE_DEPL];
+    double u = 0.0; /* the energies of the table's rows, in row order */
+#define SUM_ROW(ID, id, name, slot, kind) \
+    if ((slot) != PL_CE_NONE) u += a.e[(slot) < 0 ? 0 : (slot)];
+    PL_PAIR_TERMS(SUM_ROW)
+#undef SUM_ROW
+    return u;
 }

@@ -19,7 +19,7 @@
  * come from a serial counting transpose (O(pairs), only at a build). */
 #include <math.h>
 
-#include "peloid/colloid_kernels.h"
+#include "peloid/colloid_pair_terms.h"
 
 
 /* The own partners of i within rlist, from the 27 (or fewer) cells around
@@ -154,14 +154,8 @@ void pl_colloid_nlist_fill(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cel
  * full list's displacement check keeps both valid). */
 static double fast_cut(const pl_colloid_pair_params_t *p, double d)
 {
-    double rc = d + p->mts_hout;
-    if ((p->terms & PL_CT_LUB) && d + p->lub_hcut > rc) rc = d + p->lub_hcut;
-    if (p->terms & PL_CT_WCA) {
-        double wrc = (p->wca_sigma > 0.0 ? p->wca_sigma : d) * p->wca_rfac;
-        if (wrc > rc) rc = wrc;
-    }
-    if ((p->terms & PL_CT_DEPL) && p->dep_rc > rc) rc = p->dep_rc;
-    return rc;
+    /* every term's cut-off but DLVO's, whose fast share ends at mts_hout */
+    return pl_colloid_pair_rc_from(p, p->terms & ~(unsigned)PL_CT_DLVO, d, d + p->mts_hout);
 }
 
 static size_t near_scan(pl_colloid_nlist_t *near, const pl_colloid_nlist_t *full,

@@ -109,13 +109,25 @@ int pl_colloid_dlvo_setup(const pl_scene_dlvo_t *s, double d_ref, pl_colloid_pai
  * depletion potential and of PL's sigma_cc rule. */
 void pl_colloid_depletion_params(const pl_scene_t *scene, pl_depletion_params_t *dp);
 
+/* The set-up of each row of the pair-term table (PL_PAIR_TERMS,
+ * colloid_kernels.h): the term's parameters from the scene, called for every
+ * row in row order whether or not colloids.pairs switches it on (a row may
+ * set what another row or the scene report reads; a row reads its own bit in
+ * p->terms).  A failure is blamed on the scene key it names. */
+#define PL_TERM_SETUP_DECL_(ID, id, name, slot, kind)                                    \
+    int pl_colloid_term_setup_##id(const pl_scene_t *scene, pl_colloid_pair_params_t *p, \
+                                   pl_colloid_dlvo_info_t *info, pl_err_t *err);
+PL_PAIR_TERMS(PL_TERM_SETUP_DECL_)
+#undef PL_TERM_SETUP_DECL_
+
 /* Pair parameters of every term from the scene (no state needed; the
  * depletion_comp table itself is built by pl_colloid_setup). */
 int pl_colloid_pair_params(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
                            pl_colloid_dlvo_info_t *info, pl_err_t *err);
 /* The one pair cut-off (centre distance) of the terms in p for colloids of
- * radius up to rmax: contact plus the gap cut-off, the WCA and depletion
- * ranges; the neighbour list and the minimum-image check use it. */
+ * radius up to rmax: the largest row cut-off (pl_colloid_pair_rc) at
+ * contact distance 2 rmax; the neighbour list and the minimum-image check
+ * use it. */
 double pl_colloid_pair_cutoff(const pl_colloid_pair_params_t *p, double rmax);
 
 /* State from a validated scene: radii, masses, positions (lattice / random /

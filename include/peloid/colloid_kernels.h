@@ -24,18 +24,73 @@ static inline double pl_min_image(double d, double L, int periodic)
     return periodic ? d - L * rint(d / L) : d;
 }
 
-/* Pair terms a scene switches on (bit mask). */
-enum {
-    PL_CT_DLVO = 1u,
-    PL_CT_HERTZ = 2u,
-    PL_CT_LUB = 4u,
-    PL_CT_WCA = 8u,
-    PL_CT_DEPL = 16u, /* tabulated compensation of the depletion (PL Sec. III.C.1) */
-    PL_CT_ALL = 31u,
-};
+/* The pair-term table: one row per colloid-colloid term, in this order
+ *   X(ID, id, name, energy slot, kind)
+ * ID/id: the term's tag (PL_CT_ID is its bit, 1 << row index); name: its word
+ * in colloids.pairs; energy slot: its row PL_CE_* of the energy array (and so
+ * its thermo column, PL_COLLOID_ENERGY_SLOTS), PL_CE_NONE for a dissipative
+ * term; kind: RADIAL for a conservative term U(r) of the centre distance
+ * alone, OWN for one the force kernel evaluates by its own code.  Each row
+ * has, by its id:
+ *   pl_pair_rc_ID(p, d)           its cut-off (centre distance) for contact
+ *                                 distance d (include/peloid/colloid_pair_terms.h);
+ *   pl_pair_term_ID(p, r, d)      RADIAL: U, F = -dU/dr, d2U/dr2 at r < the
+ *                                 cut-off (same header);
+ *   pl_colloid_term_setup_id(...) its parameters from the scene
+ *                                 (include/peloid/colloid.h).
+ * Adding a term: its row here (and its slot below), its parameters in
+ * pl_colloid_pair_params_t, its two inline functions, its set-up and its
+ * scene keys.  The force kernel specialises one loop per subset of the rows
+ * (kernels/colloid_forces.c), the cut-offs of the neighbour lists and of the
+ * kernels are the largest row cut-off of the scene's subset
+ * (pl_colloid_pair_rc), colloids.pairs and the thermo columns read the
+ * names.  RADIAL rows are summed in row order after DLVO and before Hertz
+ * and lubrication. */
+#define PL_PAIR_TERMS(X)                                        \
+    X(DLVO, dlvo, "dlvo", PL_CE_DLVO, OWN)                      \
+    X(HERTZ, hertz, "hertz", PL_CE_HERTZ, OWN)                  \
+    X(LUB, lub, "lubrication", PL_CE_NONE, OWN)                 \
+    X(WCA, wca, "wca", PL_CE_WCA, RADIAL)                       \
+    X(DEPL, depl, "depletion_comp", PL_CE_DEPL, RADIAL)         \
+    X(TAB, tab, "table", PL_CE_TAB, RADIAL)
+/* Rows of PL_PAIR_TERMS, as a literal for the preprocessor (the kernel
+ * specialisations, 2^rows, are generated from it; checked below). */
+#define PL_PAIR_NTERMS 6
 
-/* Energy terms, one row of n per term in the energy scratch array. */
-enum { PL_CE_DLVO, PL_CE_HERTZ, PL_CE_WCA, PL_CE_WALL, PL_CE_GRAVITY, PL_CE_DEPL, PL_CE_NTERMS };
+/* Energy slots, one row of n per slot in the energy scratch array, in this
+ * order (the order of the thermo columns):
+ *   X(ID, thermo column, pair-term bit or 0, always)
+ * always: the column is in every colloid run's thermo.tsv; otherwise only
+ * when the scene switches its pair term on. */
+#define PL_COLLOID_ENERGY_SLOTS(X)             \
+    X(DLVO, "c_dlvo", PL_CT_DLVO, 1)           \
+    X(HERTZ, "c_hertz", PL_CT_HERTZ, 1)        \
+    X(WCA, "c_wca", PL_CT_WCA, 1)              \
+    X(WALL, "c_wall", 0u, 1)                   \
+    X(GRAVITY, "c_gravity", 0u, 1)             \
+    X(DEPL, "c_depl", PL_CT_DEPL, 1)           \
+    X(TAB, "c_table", PL_CT_TAB, 0)
+
+#define PL_CE_ENUM_(ID, col, bit, always) PL_CE_##ID,
+enum { PL_COLLOID_ENERGY_SLOTS(PL_CE_ENUM_) PL_CE_NTERMS, PL_CE_NONE = -1 };
+#undef PL_CE_ENUM_
+
+#define PL_CT_INDEX_(ID, id, name, slot, kind) PL_CT_INDEX_##ID,
+enum { PL_PAIR_TERMS(PL_CT_INDEX_) PL_CT_COUNT };
+#undef PL_CT_INDEX_
+#define PL_CT_BIT_(ID, id, name, slot, kind) PL_CT_##ID = 1u << PL_CT_INDEX_##ID,
+/* Pair terms a scene switches on (bit mask). */
+enum { PL_PAIR_TERMS(PL_CT_BIT_) PL_CT_ALL = (1u << PL_CT_COUNT) - 1u };
+#undef PL_CT_BIT_
+_Static_assert(PL_CT_COUNT == PL_PAIR_NTERMS, "PL_PAIR_NTERMS must count the rows of PL_PAIR_TERMS");
+/* The RADIAL rows' bits. */
+#define PL_CT_KIND_OWN 0u
+#define PL_CT_KIND_RADIAL 1u
+#define PL_CT_RADIAL_(ID, id, name, slot, kind) | (PL_CT_KIND_##kind ? PL_CT_##ID : 0u)
+#define PL_CT_RADIAL (0u PL_PAIR_TERMS(PL_CT_RADIAL_))
+
+/* Intervals of the table term's internal table (tab_uf). */
+#define PL_PAIR_TABLE_N 2048
 
 typedef struct {
     unsigned terms;  /* PL_CT_* */
@@ -63,6 +118,13 @@ typedef struct {
      * zero from dep_rc on (twice the colloid-fluid cut-off) */
     const double *dep_u, *dep_du;
     double dep_inv_h, dep_rc;
+    /* table (src/colloid/colloid_pair_table.c): U and F = -dU/dr at
+     * r_k = tab_r0 + k / tab_inv_h, k = 0..PL_PAIR_TABLE_N, interleaved
+     * (tab_uf[2k] = U, tab_uf[2k+1] = F; node N+1 repeats node N), each
+     * interpolated linearly between the nodes; cut-off tab_rc (the file's
+     * last r); below tab_r0 the force of tab_r0 */
+    double tab_r0, tab_rc, tab_inv_h;
+    double tab_uf[2 * (PL_PAIR_TABLE_N + 2)];
     double gap_cut; /* largest surface-gap cut-off of the DLVO/Hertz/lub terms */
     /* multiple time stepping (colloids.slow_interval > 1): the force pass
      * over the near list gives each pair's DLVO force times 1 - w, w =

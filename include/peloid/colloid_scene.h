@@ -9,6 +9,8 @@ enum { PL_CINT_VERLET = 0, PL_CINT_BROWNIAN = 1 };
 /* wca.sigma_rule: sigma_cc as given, or PL's rule against spurious depletion
  * (PL Sec. III.C.1, see depletion.h). */
 enum { PL_SIGMA_FIXED = 0, PL_SIGMA_PL = 1 };
+/* colloids.table_interpolation: from the file's rows onto the internal table */
+enum { PL_TABLE_LINEAR = 0, PL_TABLE_SPLINE = 1 };
 
 typedef struct {
     double eps_r, psi0_mV, z, temperature_K, kappa_per_m, hamaker_J, length_unit_m;
@@ -50,6 +52,10 @@ typedef struct {
     pl_scene_hertz_t hertz;
     pl_scene_lub_t lub;
     pl_scene_wca_t wca;
+    /* the table pair term (src/colloid/colloid_pair_table.c) */
+    char table_file[128];      /* relative to the scene file's directory */
+    int table_interpolation;   /* PL_TABLE_* */
+    double table_force_tolerance; /* allowed |F + dV/dr| / max |F| of the file */
 } pl_scene_colloids_t;
 
 #endif

@@ -92,7 +92,15 @@ static void colloid_columns(const pl_sim_t *sim, pl_thermo_table_t *t)
 {
     if (!sim->colloids) return;
     pl_thermo_add(t, kin_cols, 2);
-    for (int k = 0; k < PL_CE_NTERMS; ++k) { /* one column per energy term, named by its table */
+    /* one column per energy slot (PL_COLLOID_ENERGY_SLOTS): always, or when
+     * the scene switches its pair term on */
+    static const struct { unsigned bit; int always; } slot[PL_CE_NTERMS] = {
+#define SLOT_(ID, col, b, a) [PL_CE_##ID] = {(b), (a)},
+        PL_COLLOID_ENERGY_SLOTS(SLOT_)
+#undef SLOT_
+    };
+    for (int k = 0; k < PL_CE_NTERMS; ++k) {
+        if (!slot[k].always && !(sim->colloids->pair.terms & slot[k].bit)) continue;
         pl_thermo_column_t c = {.name = pl_colloid_energy_names[k], .unit = "kT", .value = v_epot, .arg = k};
         pl_thermo_add(t, &c, 1);
     }

@@ -7,15 +7,16 @@
 
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
-#include "peloid/colloid_pair.h"
+#include "peloid/colloid_pair_terms.h"
 #include "peloid/depletion.h"
 
 static const double E_CHARGE = 1.602176634e-19, K_B = 1.380649e-23, EPS0 = 8.8541878128e-12;
 
-/* the name of each term bit (PL_CT_*, colloid_kernels.h) */
+/* the name and bit of each row of the pair-term table (colloid_kernels.h) */
 static const struct { const char *name; unsigned bit; } names[] = {
-    {"dlvo", PL_CT_DLVO}, {"hertz", PL_CT_HERTZ}, {"lubrication", PL_CT_LUB}, {"wca", PL_CT_WCA},
-    {"depletion_comp", PL_CT_DEPL},
+#define NAME_(ID, id, name, slot, kind) {name, PL_CT_##ID},
+    PL_PAIR_TERMS(NAME_)
+#undef NAME_
 };
 
 void pl_colloid_pair_names(char *buf, size_t n)
@@ -199,33 +200,79 @@ int pl_colloid_pair_params(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
     int walls[3];
     pl_scene_box_walls(&scene->box, walls);
     for (int k = 0; k < 3; ++k) p->periodic[k] = walls[k] == PL_WALLS_NONE;
-    double rmax = cs->radius * (1.0 + sqrt(3.0) * cs->polydispersity);
     p->gap_cut = 0.0;
-    if (p->terms & PL_CT_DLVO) {
-        if (pl_colloid_dlvo_setup(&cs->dlvo, 2.0 * cs->radius, p, info, err)) return err->code;
-        p->gap_cut = fmax(p->gap_cut, p->dlvo_hcut);
-    }
-    p->hertz_K = cs->hertz.K;
-    p->hertz_beta = cs->hertz.beta;
-    p->hertz_gamma_t = cs->hertz.gamma_t;
-    if (p->terms & PL_CT_LUB) {
-        p->lub_eta = cs->lub.viscosity;
-        p->lub_hmin = cs->lub.min_gap;
-        p->lub_hcut = cs->lub.cutoff_gap;
-        p->gap_cut = fmax(p->gap_cut, p->lub_hcut);
-    }
+#define SETUP_(ID, id, name, slot, kind) \
+    if (pl_colloid_term_setup_##id(scene, p, info, err)) return err->code;
+    PL_PAIR_TERMS(SETUP_)
+#undef SETUP_
+    return 0;
+}
+
+/* The rows' set-ups (pl_colloid_term_setup_*, colloid.h). */
+int pl_colloid_term_setup_dlvo(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
+                               pl_colloid_dlvo_info_t *info, pl_err_t *err)
+{
+    if (!(p->terms & PL_CT_DLVO)) return 0;
+    if (pl_colloid_dlvo_setup(&scene->colloids.dlvo, 2.0 * scene->colloids.radius, p, info, err)) return err->code;
+    info->fail_key = NULL; /* set: a later row's failure is not the DLVO set-up's */
+    p->gap_cut = fmax(p->gap_cut, p->dlvo_hcut);
+    return 0;
+}
+
+int pl_colloid_term_setup_hertz(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
+                                pl_colloid_dlvo_info_t *info, pl_err_t *err)
+{
+    (void)info;
+    (void)err;
+    p->hertz_K = scene->colloids.hertz.K;
+    p->hertz_beta = scene->colloids.hertz.beta;
+    p->hertz_gamma_t = scene->colloids.hertz.gamma_t;
+    return 0;
+}
+
+int pl_colloid_term_setup_lub(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
+                              pl_colloid_dlvo_info_t *info, pl_err_t *err)
+{
+    (void)info;
+    (void)err;
+    if (!(p->terms & PL_CT_LUB)) return 0;
+    p->lub_eta = scene->colloids.lub.viscosity;
+    p->lub_hmin = scene->colloids.lub.min_gap;
+    p->lub_hcut = scene->colloids.lub.cutoff_gap;
+    p->gap_cut = fmax(p->gap_cut, p->lub_hcut);
+    return 0;
+}
+
+/* sigma_cc also without the wca term: the depletion report reads it */
+int pl_colloid_term_setup_wca(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
+                              pl_colloid_dlvo_info_t *info, pl_err_t *err)
+{
+    (void)info;
+    (void)err;
+    const pl_scene_colloids_t *cs = &scene->colloids;
     p->wca_eps = cs->wca.epsilon;
     p->wca_sigma = cs->wca.sigma;
     p->wca_n = cs->wca.n;
     p->wca_rfac = pow(2.0, 1.0 / cs->wca.n);
+    if (cs->wca.sigma_rule == PL_SIGMA_PL) { /* PL Sec. III.C.1 */
+        pl_depletion_params_t dp;
+        pl_colloid_depletion_params(scene, &dp);
+        p->wca_sigma = pl_depletion_sigma_cc(2.0 * pl_depletion_cf_cutoff(&dp), cs->wca.epsilon, cs->wca.n,
+                                             PL_DEPLETION_RULE_ENERGY * dp.kT);
+    }
+    return 0;
+}
+
+/* the range only: the table is built by pl_colloid_setup (colloid_pair_setup.c) */
+int pl_colloid_term_setup_depl(const pl_scene_t *scene, pl_colloid_pair_params_t *p,
+                               pl_colloid_dlvo_info_t *info, pl_err_t *err)
+{
+    (void)info;
+    (void)err;
+    if (!(p->terms & PL_CT_DEPL)) return 0;
     pl_depletion_params_t dp;
     pl_colloid_depletion_params(scene, &dp);
-    double d_match = 2.0 * pl_depletion_cf_cutoff(&dp); /* where Phi_depl vanishes */
-    if (cs->wca.sigma_rule == PL_SIGMA_PL) /* PL Sec. III.C.1 */
-        p->wca_sigma = pl_depletion_sigma_cc(d_match, cs->wca.epsilon, cs->wca.n,
-                                             PL_DEPLETION_RULE_ENERGY * dp.kT);
-    if (p->terms & PL_CT_DEPL) p->dep_rc = d_match; /* table set by pl_colloid_setup */
-    (void)rmax;
+    p->dep_rc = 2.0 * pl_depletion_cf_cutoff(&dp); /* where Phi_depl vanishes */
     return 0;
 }
 
@@ -242,8 +289,5 @@ void pl_colloid_depletion_params(const pl_scene_t *scene, pl_depletion_params_t 
 
 double pl_colloid_pair_cutoff(const pl_colloid_pair_params_t *p, double rmax)
 {
-    double rc = 2.0 * rmax + p->gap_cut;
-    if (p->terms & PL_CT_WCA) rc = fmax(rc, (p->wca_sigma > 0.0 ? p->wca_sigma : 2.0 * rmax) * p->wca_rfac);
-    if (p->terms & PL_CT_DEPL) rc = fmax(rc, p->dep_rc);
-    return rc;
+    return pl_colloid_pair_rc(p, p->terms, 2.0 * rmax);
 }

@@ -11,10 +11,9 @@
 #include "peloid/colloid.h"
 #include "peloid/rng.h"
 
-const char *const pl_colloid_energy_names[PL_CE_NTERMS] = {
-    [PL_CE_DLVO] = "c_dlvo", [PL_CE_HERTZ] = "c_hertz", [PL_CE_WCA] = "c_wca",
-    [PL_CE_WALL] = "c_wall", [PL_CE_GRAVITY] = "c_gravity", [PL_CE_DEPL] = "c_depl",
-};
+#define ENERGY_NAME_(ID, col, bit, always) [PL_CE_##ID] = col,
+const char *const pl_colloid_energy_names[PL_CE_NTERMS] = {PL_COLLOID_ENERGY_SLOTS(ENERGY_NAME_)};
+#undef ENERGY_NAME_
 
 #define OFF(m) offsetof(pl_scene_t, m)
 

@@ -4,7 +4,10 @@
  * reads back exactly), enumerated from the schema (src/scene_keys*.c), and
  * "scene_fingerprint" the 64-bit FNV-1a hash of that text.  A restart
  * compares every key with the scene it continues in and refuses any
- * difference that `--restart-changed KEY[,KEY...]` does not name.
+ * difference that `--restart-changed KEY[,KEY...]` does not name.  A key
+ * the checkpoint lacks (one added to the schema after it was written) is no
+ * difference while the scene leaves it at its default: the checkpoint's
+ * binary had that physics.
  *
  * Not physics, so free to change on restart: the run's name and length, the
  * output intervals, the colloid trajectory interval, the guard bounds
@@ -202,9 +205,17 @@ int pl_ckpt_scene_check(hid_t f, const pl_scene_t *scene, const char *changed, c
         return pl_err_set(err, PL_ERR_INPUT, "%s: scene_keys do not match scene_fingerprint (corrupt checkpoint)",
                           path);
     }
-    char *now = scene_text(scene);
-    if (!now) {
+    char *now = scene_text(scene), *defaults = NULL;
+    pl_scene_t *def = malloc(sizeof *def);
+    if (def) {
+        pl_scene_defaults(def);
+        defaults = scene_text(def);
+        free(def);
+    }
+    if (!now || !defaults) {
         free(old);
+        free(now);
+        free(defaults);
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
     }
     char diff[900];
@@ -224,6 +235,8 @@ int pl_ckpt_scene_check(hid_t f, const pl_scene_t *scene, const char *changed, c
             if (pass && has) continue; /* compared in the first pass */
             if (not_compared(name)) continue;
             if (has && !strcmp(a, b)) continue;
+            char c[256];
+            if (!pass && !has && lookup(defaults, name, c, sizeof c) && !strcmp(a, c)) continue; /* newer key, default */
             if (listed(changed, name)) continue;
             const char *vck = pass ? a : has ? b : "(absent)", *vsc = pass ? "(absent)" : a;
             if (len < sizeof diff)
@@ -234,6 +247,7 @@ int pl_ckpt_scene_check(hid_t f, const pl_scene_t *scene, const char *changed, c
     }
     free(old);
     free(now);
+    free(defaults);
     if (ndiff)
         return pl_err_set(err, PL_ERR_INPUT,
                           "%s: checkpoint was written by another scene: %d physics key(s) differ "

@@ -186,6 +186,8 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
          * is to blame where the failure names it; else the physical input */
         if (info.fail_key && given(s, info.fail_off))
             return pl_scene_fail(s, err, info.fail_off, info.fail_key, "%s", e.msg);
+        if (!info.fail_key) /* not the DLVO set-up: another term's own message */
+            return pl_err_set(err, e.code, "%s", e.msg);
         return pl_scene_fail(s, err, OFF(mapping.physical.surface_potential), "physical.surface_potential",
                              "the derived DLVO potential: %s", e.msg);
     }

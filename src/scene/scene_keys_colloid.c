@@ -4,6 +4,7 @@
 #include <float.h>
 #include <stddef.h>
 
+#include "peloid/colloid_kernels.h"
 #include "peloid/scene.h"
 
 #define OFF(member) offsetof(pl_scene_t, colloids.member)
@@ -12,6 +13,9 @@
 static const char *const init_choices[] = {"lattice", "random", "file", NULL};
 static const char *const integ_choices[] = {"verlet", "brownian", NULL};
 static const char *const sigma_rules[] = {"fixed", "pl", NULL};
+static const char *const table_interps[] = {"linear", "spline", NULL};
+/* the words of colloids.pairs, from the pair-term table */
+#define PAIR_WORD_(ID, id, name, slot, kind) " " name
 
 static const pl_key_t colloid_keys[] = {
     {"count", PL_KEY_INT, OFF(count), 0, 1e7, 0, NULL, 0, NULL,
@@ -31,10 +35,27 @@ static const pl_key_t colloid_keys[] = {
      "-", "init = \"file\": text file (relative to the scene file), one colloid per line: x y z [R]; "
           "read strictly (README \"Colloids, couplings and physical units\")"},
     {"pairs", PL_KEY_STRING, OFF(pairs), 0, 0, 0, NULL, 0, "hertz",
-     "-", "pair terms switched on, comma separated: dlvo, hertz, lubrication, wca, depletion_comp "
-          "(\"\": none); depletion_comp = -Phi_depl, the compensating potential of PL Sec. III.C.1 "
+     "-", "pair terms switched on, comma separated (\"\": none), from the pair-term table:"
+          PL_PAIR_TERMS(PAIR_WORD_) "; depletion_comp = -Phi_depl, the compensating potential of PL Sec. III.C.1 "
           "(PL Eqs. 22-23, tabulated at start for the run's fluid density and kT; needs "
           "coupling.method = \"potential\")"},
+    {"table_file", PL_KEY_STRING, OFF(table_file), 0, 0, PL_KEY_FP_SET, NULL, 0, "",
+     "-", "pairs \"table\": text file of U(r) (in the scene file's directory) in model units "
+          "(r in a0, U in kT_ref, F = -dU/dr in kT_ref/a0): rows \"r U F\" or \"r U\" "
+          "(F then -dU/dr of a cubic spline of U), or one LAMMPS pair_style table section (keyword "
+          "line, \"N n\" line, rows \"i r U F\"); # comments; r strictly increasing; "
+          "cut-off = the last r (give U = 0 there for a continuous energy); below the first r the "
+          "force of the first row; model-unit scenes only (README \"Colloids, couplings and physical units\")"},
+    {"table_interpolation", PL_KEY_CHOICE, OFF(table_interpolation), 0, 0, PL_KEY_FP_SET, table_interps,
+     PL_TABLE_SPLINE, NULL,
+     "-", "pairs \"table\": U and F between the file's rows: linear or spline (GSL natural cubic "
+          "spline), sampled at start onto 2048 equal intervals up to the cut-off, between which "
+          "the force kernel interpolates U and F linearly"},
+    {"table_force_tolerance", PL_KEY_REAL, OFF(table_force_tolerance), 0, 1, PL_KEY_MIN_OPEN | PL_KEY_FP_SET, NULL,
+     0.02, NULL,
+     "-", "pairs \"table\" with an F column: between any two neighbouring rows, the largest "
+          "abs(U_i - U_i+1 - (r_i+1 - r_i) (F_i + F_i+1)/2) / (r_i+1 - r_i) allowed, relative to the "
+          "largest abs(F) (the trapezoid rule for the work of F); a file beyond it is refused"},
     {"integrator", PL_KEY_CHOICE, OFF(integrator), 0, 0, 0, integ_choices, PL_CINT_VERLET, NULL,
      "-", "verlet: velocity Verlet + quaternions (Hecht Eqs. 7-10); brownian: overdamped "
           "Langevin with Stokes friction (reference for colloid-only scenes)"},
