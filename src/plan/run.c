@@ -173,7 +173,8 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
         pl_json_int(&b, a, "max", c->adapt_hi);
         pl_json_int(&b, a, "bound_min", c->sub_min);
         pl_json_int(&b, a, "bound_max", c->substeps);
-        pl_json_real_or_null(&b, a, "fewest_contact_steps", c->adapt_worst);
+        /* null: no MD step met a contact (or none ran) */
+        pl_json_real_or_null(&b, a, "fewest_contact_steps", isfinite(c->adapt_worst) ? c->adapt_worst : NAN);
         pl_json_int(&b, a, "refined_steps", c->adapt_refined);
         pl_json_set(&b, doc, "adaptive_substeps", a);
     }
