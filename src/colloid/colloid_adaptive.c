@@ -69,6 +69,7 @@ void pl_colloid_adaptive_free(pl_colloid_t *c)
 int pl_colloid_adaptive_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
 {
     const pl_scene_colloids_t *cs = &scene->colloids;
+    pl_colloid_adaptive_free(c); /* a set-up again (restart) builds the table anew */
     c->adaptive = 0;
     c->dt_coll = scene->srd.dt;
     c->sub_min = (int)cs->substeps;
