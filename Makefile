@@ -187,7 +187,7 @@ check-cli: $(BIN)
 # shrinks the physics runs; the sanitizers slow code ~3-10x), and the
 # sanitizer CLI on the adversarial scene set (tests/bad_scenes).
 ASAN_TESTS := test_scene test_collide test_sort test_determinism test_colloid_forces \
-              test_colloid_guards test_colloid_md test_colloid_mts test_colloid_restart test_capillary \
+              test_colloid_guards test_colloid_md test_colloid_mts test_colloid_adaptive test_colloid_restart test_capillary \
               test_coupling_restart test_coupling_system test_fluid_guard test_progress \
               test_blocking test_mtau test_rdf test_sq test_cluster test_vdist test_sweep_plan test_pair_table
 ASAN_MAKE = BUILD=build-asan \

@@ -5,7 +5,8 @@
  * damping, DLVO, WCA, walls + gravity (images, unwrapped heights), the
  * drift guard's reference energy (NVE scene), the Brownian integrator (noise
  * keyed by the MD step), polydisperse radii, multiple time stepping (slow
- * forces recomputed from the restored positions); with and without fluid.  Two
+ * forces recomputed from the restored positions), adaptive substeps (each
+ * collision step's MD steps chosen from the state); with and without fluid.  Two
  * scenes have >= PL_COLLOID_OMP_MIN colloids so the kernels really thread. */
 #include <criterion/criterion.h>
 #include <stdio.h>
@@ -46,6 +47,14 @@ static const char *scenes[] = {
     "seed = 15;\nbox: { cells = [10, 10, 10]; };\nfluid: { density = 5.0; };\nsrd: { dt = 0.1; };\n"
     "colloids: { count = 300; radius = 0.62; mass_density = 39.0; temperature = 1.0; substeps = 10;\n"
     "  slow_interval = 5; pairs = \"dlvo, hertz\"; min_contact_steps = 0.0; };\n"
+    "coupling: { method = \"hecht2\"; };\nhertz: { K = 1000.0; };\n"
+    "dlvo: { psi0 = 50.0; kappa = 3.0e8; hamaker = 4.76e-20; length_unit = 4.03e-7; };\n",
+    /* adaptive substeps (10 .. 200 per collision step, multiples of the outer
+     * step of 2), the contact guard on, Hecht Fig. 14 DLVO, coupling II: the
+     * choice is made from the state at each collision step's start */
+    "seed = 16;\nbox: { cells = [10, 10, 10]; };\nfluid: { density = 5.0; };\nsrd: { dt = 0.1; };\n"
+    "colloids: { count = 300; radius = 0.62; mass_density = 39.0; temperature = 1.0; substeps = 200;\n"
+    "  min_substeps = 10; adaptive_substeps = true; slow_interval = 2; pairs = \"dlvo, hertz\"; };\n"
     "coupling: { method = \"hecht2\"; };\nhertz: { K = 1000.0; };\n"
     "dlvo: { psi0 = 50.0; kappa = 3.0e8; hamaker = 4.76e-20; length_unit = 4.03e-7; };\n",
 };
@@ -115,6 +124,9 @@ Test(colloid_restart, thread_count_does_not_change_results)
         pl_test_steps(ref, steps);
         pl_test_steps(other, steps);
         assert_same(ref, other, "threads");
+        if (ref->colloids->adaptive) /* the choice really varies */
+            cr_assert_lt(ref->colloids->adapt_lo, ref->colloids->adapt_hi, "scene %zu: MD steps %lld .. %lld", s,
+                         ref->colloids->adapt_lo, ref->colloids->adapt_hi);
         pl_sim_free(ref);
         pl_sim_free(other);
     }

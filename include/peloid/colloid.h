@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "peloid/colloid_adaptive.h"
 #include "peloid/colloid_kernels.h"
 #include "peloid/depletion.h"
 #include "peloid/error.h"
@@ -36,6 +37,11 @@ typedef struct {
     double phi_match; /* phi_cc(d_match) in kT_ref */
     int table_n;      /* intervals of the depletion_comp table (0: term off) */
 } pl_colloid_depl_info_t;
+
+/* Adaptive substeps: a collision step whose contact comes within this
+ * factor of colloids.min_contact_steps runs the rest at colloids.substeps
+ * (src/colloid/colloid_step.c). */
+#define PL_ADAPT_REFINE 1.25
 
 /* Nodes of the depletion_comp table over [0, d_match]: interpolation error
  * ~1e-5 kT (cubic Hermite, checked in tests/test_depletion.c). */
@@ -89,6 +95,16 @@ typedef struct pl_colloid {
     double max_overlap, min_contact_steps, max_energy_drift;
     long long guard_interval;
     int nve; /* no dissipation: the energy-drift guard applies */
+    /* adaptive substeps (colloids.adaptive_substeps, src/colloid/colloid_adaptive.c):
+     * each collision step's MD steps, sub_min .. substeps, chosen from the
+     * state at its start (no state of their own); dt is set per step */
+    int adaptive, sub_min;
+    double dt_coll, adapt_margin, adapt_mred;
+    pl_colloid_reach_t reach;
+    long long adapt_steps, adapt_md, adapt_lo, adapt_hi; /* diagnostics (summary.json) */
+    double adapt_worst; /* fewest MD steps per collision time met (contact guard's measure) */
+    double adapt_last;  /* the same, of the last MD step */
+    long long adapt_refined; /* collision steps finished at the finest MD step */
 } pl_colloid_t;
 
 /* Pair-term mask from the colloids.pairs list; on an unknown name returns
@@ -166,6 +182,14 @@ int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
  * PL_ERR_INPUT where the scene cannot use it. */
 int pl_colloid_depletion_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
 int pl_colloid_mts_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
+/* Adaptive substeps (colloids.adaptive_substeps): checks what they need and
+ * builds the reach table (reads the pair parameters, radii, masses, integrator,
+ * substeps, slow_interval of c); c->adaptive = 0 when off. */
+int pl_colloid_adaptive_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
+void pl_colloid_adaptive_free(pl_colloid_t *c);
+/* The MD steps of the collision step starting now (c->adaptive), from the
+ * positions and velocities and the neighbour list of c. */
+int pl_colloid_adaptive_substeps(pl_colloid_t *c);
 /* Linked cells and neighbour list for pair cut-off rc (a0) with a skin of
  * skin_fraction rc (capped so that rc + skin <= L/2 on periodic axes); the
  * next pl_colloid_forces builds the list.  Called by pl_colloid_setup. */

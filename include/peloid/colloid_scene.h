@@ -41,6 +41,9 @@ typedef struct {
     long long substeps;    /* MD steps per collision step */
     long long slow_interval; /* MD steps per outer step of the slow DLVO share (1: one time step) */
     double slow_gap;       /* a0: surface gap where the slow share starts (full at 2x) */
+    int adaptive_substeps; /* bool: per collision step the fewest MD steps the pairs present need */
+    long long min_substeps; /* adaptive: the fewest MD steps per collision step */
+    double adaptive_margin; /* adaptive: kT added to each pair's energy (third bodies, walls) */
     double gravity[3];
     double bd_viscosity;
     double wall_epsilon, wall_n;

@@ -101,6 +101,7 @@ void pl_colloid_free(pl_colloid_t *c)
     free(c->cells.start);
     nlist_free(&c->nlist);
     nlist_free(&c->near);
+    pl_colloid_adaptive_free(c);
     free(c->fsx);
     free(c->fsy);
     free(c->fsz);
@@ -270,7 +271,11 @@ int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
     c->substeps = (int)cs->substeps;
     c->dt = scene->srd.dt / (double)cs->substeps;
     c->min_contact_steps = cs->min_contact_steps;
+    if (pl_colloid_adaptive_setup(c, scene, err)) return err->code;
+    /* multiple time stepping is checked at the longest MD step it will meet */
+    c->dt = scene->srd.dt / (double)c->sub_min;
     if (pl_colloid_mts_setup(c, scene, err)) return err->code;
+    c->dt = scene->srd.dt / (double)cs->substeps;
     if (c->slow_interval > 1 && mts_alloc(c, err)) return err->code;
     c->kT = cs->temperature;
     c->bd_eta = cs->bd_viscosity;

@@ -1,7 +1,12 @@
 /* Colloid time stepping: one MD step (velocity Verlet for translation, Hecht
  * Eqs. 7-8 / PL Eqs. 18-19, rotation Hecht Eqs. 9-10; or one Brownian step)
  * followed by the guards, and the plan stage that runs the MD substeps of one
- * collision step (dt_MD = srd.dt / colloids.substeps). */
+ * collision step (dt_MD = srd.dt / colloids.substeps, or with adaptive
+ * substeps srd.dt / the count chosen at the step's start,
+ * src/colloid/colloid_adaptive.c). */
+#include <math.h>
+
+#include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
 
 int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err)
@@ -21,6 +26,11 @@ int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err)
         if (pl_colloid_forces(c, err)) return err->code;
     }
     c->md_step++;
+    if (c->adaptive && fused) { /* this step's and the run's closest call */
+        const double steps = g.omega2 > 0.0 ? PL_PI / sqrt(g.omega2) / c->dt : INFINITY;
+        c->adapt_last = steps;
+        if (!(steps >= c->adapt_worst)) c->adapt_worst = steps;
+    }
     int check_e = c->nve && c->max_energy_drift > 0.0 && c->md_step % c->guard_interval == 0;
     return fused ? pl_colloid_guard_max(c, &g, check_e, err) : pl_colloid_guard(c, check_e, err);
 }
@@ -29,9 +39,31 @@ int pl_colloid_advance(pl_colloid_t *c, long long collision_step, pl_err_t *err)
 {
     (void)collision_step;
     c->slow_phase = 0; /* an outer step of multiple time stepping starts here */
-    for (int s = 0; s < c->substeps; ++s) {
+    int n = c->substeps;
+    if (c->adaptive) {
+        n = pl_colloid_adaptive_substeps(c);
+        c->dt = c->dt_coll / (double)n;
+    }
+    /* adaptive, one time step: should a contact come within
+     * PL_ADAPT_REFINE x min_contact_steps MD steps of the guard's bound
+     * anyway (energy from a third colloid or a wall beyond the margin), the
+     * rest of the collision step runs at the finest MD step, colloids.substeps
+     * per collision step: a function of the state, like the choice (under
+     * multiple time stepping the outer steps keep their length instead) */
+    const int refine = c->adaptive && c->slow_interval <= 1 && n < c->substeps;
+    for (int s = 0; s < n; ++s) {
         int rc = pl_colloid_md_step(c, err);
         if (rc) return rc;
+        if (refine && s + 1 < n && c->adapt_last < PL_ADAPT_REFINE * c->min_contact_steps) {
+            const int left = n - s - 1;
+            const int m = (int)(((long long)left * c->substeps + n - 1) / n);
+            c->dt = c->dt_coll * ((double)left / (double)n) / (double)m;
+            c->adapt_refined++;
+            c->adapt_md += m - left;
+            for (int q = 0; q < m; ++q)
+                if ((rc = pl_colloid_md_step(c, err))) return rc;
+            break;
+        }
     }
     return 0;
 }

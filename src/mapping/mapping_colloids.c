@@ -103,26 +103,9 @@ static double stiffest(const pl_colloid_pair_params_t *p, double d, double max_o
     *h_at = *h_reach = hlo;
     const int ng = 200000;
     for (int k = ng; k >= 0; --k) {
-        double h = hlo + (hhi - hlo) * (double)k / ng, r = d + h, k2 = 0.0, u = 0.0;
-        if ((p->terms & PL_CT_DLVO) && h < p->dlvo_hcut) {
-            pl_pair_val_t v = pl_pair_dlvo(r, d, p->coul_C, p->kappa, p->hamaker, p->prim_hm, p->prim_h0,
-                                           p->dlvo_shift);
-            k2 += v.k2;
-            u += v.u;
-        }
-        if ((p->terms & PL_CT_HERTZ) && h < 0.0) {
-            pl_pair_val_t v = pl_pair_hertz(-h, p->hertz_K);
-            k2 += v.k2;
-            u += v.u;
-        }
-        if (p->terms & PL_CT_WCA) {
-            double sg = p->wca_sigma > 0.0 ? p->wca_sigma : d;
-            if (r < sg * p->wca_rfac) {
-                pl_pair_val_t v = pl_pair_wca(r, sg, p->wca_eps, p->wca_n);
-                k2 += v.k2;
-                u += v.u;
-            }
-        }
+        double h = hlo + (hhi - hlo) * (double)k / ng;
+        pl_pair_val_t v = pl_colloid_contact_val(p, d, h);
+        double k2 = v.k2, u = v.u;
         if (u < umin) umin = u;
         if (u - umin > e_reach) {
             *h_reach = h;
@@ -274,6 +257,22 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
     c->md_substeps = n;
     c->md_dt = dt / (double)n;
     prov(c, "colloids.substeps = %lld (derived: %s)", n, c->substeps_reason);
+    /* adaptive substeps: the mapping's own MD step is the floor */
+    long long nmin = n_map < n ? n_map : n;
+    if (refuse(s, err, OFF(colloids.min_substeps), "colloids.min_substeps",
+               "physical{} and coarse_graining{} (the mapping's MD step)", (double)cs->min_substeps,
+               (double)nmin, NULL))
+        return PL_ERR_INPUT;
+    cs->min_substeps = nmin;
+    /* adaptive substeps by default where the contact guard sets the MD step
+     * (velocity Verlet, equal colloids: what the reach table covers) */
+    if (!given(s, OFF(colloids.adaptive_substeps)))
+        cs->adaptive_substeps = strcmp(why, "contact guard") == 0 && cs->integrator == PL_CINT_VERLET &&
+                                cs->polydispersity == 0.0;
+    if (cs->adaptive_substeps)
+        prov(c, "colloids.min_substeps = %lld (derived: the mapping's MD step; adaptive substeps run %lld .. %lld "
+                "per collision step, the stiffest contact the pairs present can reach with their energy + "
+                "colloids.adaptive_margin = %g kT)", nmin, nmin, n, cs->adaptive_margin);
     return 0;
 }
 

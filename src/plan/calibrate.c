@@ -83,6 +83,8 @@ static void cal_scene(const pl_scene_t *sc, const cal_plan_t *p, int replica, pl
     k->substeps = 1; /* no force: free flight between the coupling's impulses */
     k->max_overlap = 1.0; /* ideal colloids: overlaps are not contacts here */
     k->slow_interval = 1;
+    k->adaptive_substeps = 0; /* one MD step per collision step, as written */
+    k->min_substeps = 1;
     memset(k->gravity, 0, sizeof k->gravity);
     k->trajectory_interval = 0;
     memset(&k->dlvo, 0, sizeof k->dlvo);

@@ -163,6 +163,22 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
     b.prefix = "stage_seconds";
     for (int k = 0; k < sim->nstages; ++k) pl_json_real(&b, st, sim->stages[k].name, sim->stages[k].seconds);
     pl_json_set(&b, doc, "stage_seconds", st);
+    const pl_colloid_t *c = sim->colloids;
+    if (c && c->adaptive) { /* this run's collision steps (a restart counts its own) */
+        json_t *a = json_object();
+        b.prefix = "adaptive_substeps";
+        pl_json_int(&b, a, "collision_steps", c->adapt_steps);
+        pl_json_int(&b, a, "md_steps", c->adapt_md);
+        pl_json_real(&b, a, "mean", c->adapt_steps ? (double)c->adapt_md / (double)c->adapt_steps : 0.0);
+        pl_json_int(&b, a, "min", c->adapt_steps ? c->adapt_lo : 0);
+        pl_json_int(&b, a, "max", c->adapt_hi);
+        pl_json_int(&b, a, "bound_min", c->sub_min);
+        pl_json_int(&b, a, "bound_max", c->substeps);
+        /* null: no MD step met a contact (or none ran) */
+        pl_json_real_or_null(&b, a, "fewest_contact_steps", isfinite(c->adapt_worst) ? c->adapt_worst : NAN);
+        pl_json_int(&b, a, "refined_steps", c->adapt_refined);
+        pl_json_set(&b, doc, "adaptive_substeps", a);
+    }
     json_t *units = json_object(); /* thermo.tsv's columns and their units, from the same table */
     b.prefix = "thermo_units";
     for (int k = 0; k < w->columns.n; ++k) pl_json_str(&b, units, w->columns.col[k].name, w->columns.col[k].unit);

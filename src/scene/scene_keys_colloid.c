@@ -72,6 +72,20 @@ static const pl_key_t colloid_keys[] = {
      "a0", "slow_interval > 1: surface gap h_s beyond which the DLVO force starts to move to the "
            "outer steps; its share rises smoothly (cubic in r^2) to all of it at gap 2 h_s; must "
            "exceed the primary minimum's match gap"},
+    {"adaptive_substeps", PL_KEY_BOOL, OFF(adaptive_substeps), 0, 1, PL_KEY_FP_SET, NULL, 0, NULL,
+     "-", "verlet: each collision step runs the fewest MD steps, between colloids.min_substeps and "
+          "colloids.substeps, that give min_contact_steps to the stiffest contact the pairs present "
+          "can reach with their energy (pair potential + approach kinetic energy + "
+          "colloids.adaptive_margin), chosen from the positions and velocities at the step's start "
+          "(the same at any thread count and after a restart); false: colloids.substeps always "
+          "(physical{} scenes: derived true where the contact guard sets the substeps, with "
+          "velocity Verlet and equal colloids; see peloid params)"},
+    {"min_substeps", PL_KEY_INT, OFF(min_substeps), 1, 1e6, PL_KEY_FP_SET, NULL, 1, NULL,
+     "-", "adaptive_substeps: the fewest MD steps per collision step (physical{} scenes: derived, "
+          "the mapping's MD step min(tau_V, tau_P) / md_resolution; see peloid params)"},
+    {"adaptive_margin", PL_KEY_REAL, OFF(adaptive_margin), 0, 1e6, PL_KEY_FP_SET, NULL, 5, NULL,
+     "kT_ref", "adaptive_substeps: energy added to each pair's own (potential + approach kinetic) "
+               "for what third bodies, walls and gravity can give it within one collision step"},
     {"gravity", PL_KEY_REAL3, OFF(gravity), -1e6, 1e6, 0, NULL, 0, NULL,
      "a0 / t0^2", "acceleration on every colloid (gravity minus buoyancy) (physical{} scenes: derived, see peloid params)"},
     {"bd_viscosity", PL_KEY_REAL, OFF(bd_viscosity), 0, 1e9, PL_KEY_MIN_OPEN, NULL, 2.5, NULL,
