@@ -1,4 +1,4 @@
-/* The largest pair energy of adaptive MD substeps (peloid/colloid_adaptive.h
+/* The largest pair energy of adaptive MD substeps (peloid/colloid_reach.h
  * has the rule): per owner its listed pairs within d + gap_cut, U(h) of the
  * conservative terms plus the kinetic energy of the approach,
  * m_red (v_ij . e_ij)^2 / 2 when the pair closes, plus the margin, and never
@@ -9,7 +9,7 @@
  * count. */
 #include <math.h>
 
-#include "peloid/colloid_adaptive.h"
+#include "peloid/colloid_reach.h"
 
 void pl_colloid_reach_energy(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
                              const pl_colloid_reach_t *t, double margin, const double *x,

@@ -7,7 +7,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "peloid/colloid_adaptive.h"
+#include "peloid/colloid_reach.h"
 #include "peloid/colloid_kernels.h"
 #include "peloid/depletion.h"
 #include "peloid/error.h"

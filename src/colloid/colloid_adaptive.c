@@ -1,5 +1,5 @@
 /* Adaptive MD substeps (colloids.adaptive_substeps; the rule in
- * peloid/colloid_adaptive.h): the reach table, built once, and the choice
+ * peloid/colloid_reach.h): the reach table, built once, and the choice
  * of each collision step's MD steps from the state at its start.
  *
  * The contact guard asks pi sqrt(m_red / U'') >= min_contact_steps dt_MD for
@@ -28,7 +28,7 @@
 
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
-#include "peloid/colloid_adaptive.h"
+#include "peloid/colloid_reach.h"
 
 #define OFF(member) offsetof(pl_scene_t, colloids.member)
 

@@ -1,4 +1,4 @@
-/* Adaptive MD substeps (colloids.adaptive_substeps): the fewest MD steps per
+/* The reach table of adaptive MD substeps (colloids.adaptive_substeps): the fewest MD steps per
  * collision step that resolve, by colloids.min_contact_steps, the stiffest
  * contact the pairs present can reach with the energy they have.
  *
@@ -13,8 +13,8 @@
  * curvature it meets is at most k2[k].  A pair found inward of a hump (the
  * primary minimum behind the barrier) is given at least the hump's energy,
  * ereq at its own gap, so it is treated as able to reach every gap inward. */
-#ifndef PELOID_COLLOID_ADAPTIVE_H
-#define PELOID_COLLOID_ADAPTIVE_H
+#ifndef PELOID_COLLOID_REACH_H
+#define PELOID_COLLOID_REACH_H
 
 #include "peloid/colloid_kernels.h"
 #include "peloid/colloid_pair.h"
