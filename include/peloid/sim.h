@@ -58,6 +58,7 @@ typedef struct {
     int at_start;       /* PL_PHASE_AFTER: also on the state a run starts from */
     int at_end;         /* PL_PHASE_AFTER: also on the run's last state */
     int writes;         /* writes an output: the fluid guard scans the state first */
+    int colloid_md;     /* advances the colloids by MD steps (the progress line counts them) */
     double seconds;     /* wall time spent (profile in summary.json) */
 } pl_stage_t;
 

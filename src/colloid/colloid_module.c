@@ -53,7 +53,7 @@ static int colloid_stages(pl_sim_t *sim, pl_err_t *err)
     /* pinned colloids do not move; the potential coupling runs the
      * colloid MD together with the fluid near them */
     if (!pl_coupling_moves_colloids(sc, sim->fluid.n)) {
-        pl_stage_t md = {.name = "colloid-md", .fn = stage_colloid_md, .slot = PL_SLOT_COLLOID_MD};
+        pl_stage_t md = {.name = "colloid-md", .fn = stage_colloid_md, .slot = PL_SLOT_COLLOID_MD, .colloid_md = 1};
         if ((rc = pl_sim_add_stage(sim, &md, err))) return rc;
     }
     return 0;

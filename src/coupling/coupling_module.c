@@ -38,8 +38,10 @@ static int coupling_stages(pl_sim_t *sim, pl_err_t *err)
     const int m = sim->coupling->method;
     int rc = 0;
     if (m == PL_COUPLE_POTENTIAL) {
+        pl_stage_t md = {.name = "potential-md", .fn = pl_coupling_stage_potential_md, .slot = PL_SLOT_POST_STREAM,
+                         .colloid_md = 1}; /* the colloids' MD, with the fluid near them (PL Sec. III) */
         if ((rc = add(sim, "potential-select", pl_coupling_stage_select, 1, PL_SLOT_PRE_STREAM, err)) ||
-            (rc = add(sim, "potential-md", pl_coupling_stage_potential_md, 1, PL_SLOT_POST_STREAM, err)))
+            (rc = pl_sim_add_stage(sim, &md, err)))
             return rc;
     }
     if (m == PL_COUPLE_HECHT1) {

@@ -77,7 +77,7 @@ static int stage_checkpoint(pl_sim_t *sim, void *ctx, pl_err_t *err)
 static int colloid_md_moves(const pl_sim_t *sim)
 {
     for (int k = 0; k < sim->nstages; ++k)
-        if (!strcmp(sim->stages[k].name, "colloid-md") || !strcmp(sim->stages[k].name, "potential-md")) return 1;
+        if (sim->stages[k].colloid_md) return 1;
     return 0;
 }
 
