@@ -124,7 +124,7 @@ else bad "dilute periodic sediment: $r"; fi
 #    box, the same model) both map time on calibration/'s D (the dilute
 #    copy's diffusion against Stokes-Einstein: tests/calibration_potential.sh,
 #    make validate-physics, several minutes)
-sed -e 's/volume_fraction = 0.10;/volume_fraction = 0.02;/' \
+sed -e 's/volume_fraction = 0.0995;.*/volume_fraction = 0.02;/' \
     -e 's/box = \[12.0e-6, 12.0e-6, 12.0e-6\];/box = [16.0e-6, 16.0e-6, 16.0e-6];/' \
     "$ROOT/scenes/pl_potential_physical.cfg" > potd.cfg
 okp=1

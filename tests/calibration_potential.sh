@@ -24,7 +24,7 @@ bad() { fail=$((fail+1)); echo "  FAIL $1"; }
 echo "== coupling-true time of the potential coupling"
 
 sed -e 's/^name = .*/name = "dilute_potential";/' -e 's/^steps = .*/steps = POTSTEPS;/' \
-    -e 's/volume_fraction = 0.10;/volume_fraction = 0.02;/' -e 's/box = \[12.0e-6, 12.0e-6, 12.0e-6\];/box = [16.0e-6, 16.0e-6, 16.0e-6];/' \
+    -e 's/volume_fraction = 0.0995;.*/volume_fraction = 0.02;/' -e 's/box = \[12.0e-6, 12.0e-6, 12.0e-6\];/box = [16.0e-6, 16.0e-6, 16.0e-6];/' \
     -e 's/trajectory_interval = [0-9]*;/trajectory_interval = 10;/' \
     -e '/^observe:/d' -e '/^output:/d' "$ROOT/scenes/pl_potential_physical.cfg" | sed "s/POTSTEPS/${PL_POT_STEPS:-8000}/" > pot.cfg
 if ! "$PELOID" run pot.cfg --out p --threads 2 2> ep; then bad "dilute potential run: $(tail -1 ep)"

@@ -317,6 +317,10 @@ static void print_inputs(const pl_scene_t *s, FILE *f)
             else if (key->offset == OFF(mapping.physical.kappa) && s->mapping.physical.ionic_strength > 0)
                 snprintf(how, sizeof how, "derived: Debye-Hueckel from ionic_strength = %.4g /m",
                          s->mapping.kappa);
+            else if (s->mapping.cg.coupling == PL_COUPLING_POTENTIAL &&
+                     (key->offset == OFF(mapping.cg.boundary) || key->offset == OFF(mapping.cg.enskog)))
+                snprintf(how, sizeof how, "derived: the potential coupling's theory is slip + Enskog (PL Sec. "
+                                          "III.B, Eq. 41), not this value");
             else if (key->offset == OFF(mapping.cg.cell_size))
                 snprintf(how, sizeof how, "default: a0/R = %.6g of the coupling (Hecht Sec. VII.B/C)",
                          s->mapping.map.cg.cell_over_R);
