@@ -11,7 +11,11 @@
  * colloid (radius, mass, coupling keys) in a periodic cube, without walls,
  * gravity or pair forces; coupling II: 32 colloids in one box (points in
  * their cells; 0.8 % of the cells); coupling I: one colloid per box, in
- * replicas (no overlaps, no concentration effect).  D from the slope of the
+ * replicas (no overlaps, no concentration effect); the potential coupling:
+ * 8 colloids on a lattice in a box with phi <= 0.02, with PL's colloid-colloid
+ * WCA (PL Eq. 16, sigma_cc by PL's rule: no overlaps) and the MD step the
+ * mapping derives from the fluid-colloid WCA alone; their slowing of each
+ * other, D (1 - 1.1795 phi) for slip spheres (PL Sec. VI.C), is divided out.  D from the slope of the
  * mean-squared displacement between the lags t1 = 4 tau_v and t2 = 12 tau_v,
  * tau_v = 2 M D_theory, a bound of the velocity relaxation time M D (coupling
  * II colloids move ~2x faster than the theory's D): for an exponential
