@@ -119,5 +119,22 @@ PY
 ); then ok "dilute periodic sediment: $r"
 else bad "dilute periodic sediment: $r"; fi
 
+# 5. the potential coupling's shipped calibration is found, not remeasured:
+#    scenes/pl_potential_physical.cfg and a dilute copy of it (another phi and
+#    box, the same model) both map time on calibration/'s D (the dilute
+#    copy's diffusion against Stokes-Einstein: tests/calibration_potential.sh,
+#    make validate-physics, several minutes)
+sed -e 's/volume_fraction = 0.0995;.*/volume_fraction = 0.02;/' \
+    -e 's/box = \[12.0e-6, 12.0e-6, 12.0e-6\];/box = [16.0e-6, 16.0e-6, 16.0e-6];/' \
+    "$ROOT/scenes/pl_potential_physical.cfg" > potd.cfg
+okp=1
+for sc in "$ROOT/scenes/pl_potential_physical.cfg" potd.cfg; do
+  PELOID_CACHE=$T/cp "$PELOID" params --json "$sc" > pp.json 2> pe || okp=0
+  grep -q calibrating pe && okp=0
+  [ "$(calfield pp.json source 2>/dev/null)" = calibration ] || okp=0
+done
+[ $okp = 1 ] && ok "potential coupling: scenes/pl_potential_physical.cfg and a dilute copy read the shipped calibration" \
+  || bad "potential coupling: shipped calibration not used ($(tail -1 pe))"
+
 echo "calibration: $pass passed, $fail failed"
 [ $fail -eq 0 ]

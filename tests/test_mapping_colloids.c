@@ -266,3 +266,53 @@ Test(mapping_colloids, shipped_physical_scenes)
                      "%s", sc[i].path);
     }
 }
+
+/* PL Eq. 17 energy (kT) and its second derivative by central differences:
+ * independent of the closed form in pl_mapping_cf_contact_time. */
+static double wca_cf(double r, double s, double e) { return 4.0 * e * (pow(s / r, 12) - pow(s / r, 6) + 0.25); }
+
+/* The potential coupling's front end (issue 35): scenes/pl_potential_physical.cfg
+ * gets PL Sec. VII's choices: sigma_cf = R / a0 = 2, epsilon_cf = 2.5 kT, the
+ * colloid-colloid WCA n = 24, 2.5 kT, PL's sigma_cc rule, mass from the
+ * density (neutrally buoyant: mass_density = gamma), a slip surface with the
+ * Enskog friction as the theory, and the MD step resolving the fluid-colloid
+ * contact at kT by 20 steps (pi sqrt(m_red / U'') at U = kT, checked here by
+ * bisection and finite differences). */
+Test(mapping_colloids, potential_front_end)
+{
+    static pl_scene_t scene;
+    pl_err_t err = {0, ""};
+    cr_assert_eq(pl_scene_load("scenes/pl_potential_physical.cfg", &scene, &err), 0, "%s", err.msg);
+    const pl_mapping_t *m = &scene.mapping.map;
+    cr_expect_eq(scene.coupling.method, PL_COUPLE_POTENTIAL);
+    cr_expect_eq(scene.colloids.count, 41); /* 0.1 (12 um)^3 / (4/3 pi (1 um)^3) = 41.3 */
+    cr_expect(fabs(scene.colloids.radius - 2.0) < 1e-12, "R = %g a0", scene.colloids.radius);
+    cr_expect(fabs(m->a0 - 0.5e-6) < 1e-18, "a0 = %g", m->a0);
+    cr_expect_eq(scene.coupling.sigma_cf, scene.colloids.radius);
+    cr_expect_eq(scene.coupling.epsilon_cf, 2.5);
+    cr_expect_str_eq(scene.colloids.pairs, "wca");
+    cr_expect_eq(scene.colloids.wca.n, 24.0);
+    cr_expect_eq(scene.colloids.wca.epsilon, 2.5);
+    cr_expect_eq(scene.colloids.wca.sigma_rule, PL_SIGMA_PL);
+    cr_expect_eq(scene.colloids.wca.sigma, 0.0);
+    cr_expect(fabs(scene.colloids.mass_density - 5.0) < 1e-12, "neutrally buoyant: %g", scene.colloids.mass_density);
+    cr_expect_eq(m->cg.boundary, PL_BOUNDARY_SLIP);
+    cr_expect(m->cg.enskog);
+    const double xi = 1.0 / (1.0 / m->xi_stokes_sim + 1.0 / m->xi_enskog_sim);
+    cr_expect(fabs(m->d_col_theory * xi - 1.0) < 1e-12, "PL Eq. 41");
+    cr_expect(fabs(m->xi_stokes_sim / (4.0 * PL_PI * scene.fluid.density * m->nu_sim * 2.0) - 1.0) < 1e-12, "slip");
+    /* the contact time at kT, independently */
+    double lo = 1.5, hi = 2.0 * pow(2.0, 1.0 / 6.0);
+    for (int k = 0; k < 200; ++k) {
+        double mid = 0.5 * (lo + hi);
+        if (wca_cf(mid, 2.0, 2.5) > 1.0) lo = mid;
+        else hi = mid;
+    }
+    const double r1 = 0.5 * (lo + hi), h = 1e-4;
+    const double u2 = (wca_cf(r1 + h, 2.0, 2.5) - 2.0 * wca_cf(r1, 2.0, 2.5) + wca_cf(r1 - h, 2.0, 2.5)) / (h * h);
+    const double M = 5.0 * 4.0 / 3.0 * PL_PI * 8.0, tc = PL_PI * sqrt(M / (M + 1.0) / u2);
+    cr_expect(fabs(pl_mapping_cf_contact_time(2.0, 2.5, M) / tc - 1.0) < 1e-6, "contact time %.8g vs %.8g",
+              pl_mapping_cf_contact_time(2.0, 2.5, M), tc);
+    cr_expect_eq(scene.colloids.substeps, (long long)ceil(20.0 * 0.1 / tc), "substeps %lld, contact %g t0: %s",
+                 scene.colloids.substeps, tc, scene.mapping.colloid.substeps_reason);
+}

@@ -33,7 +33,7 @@ struct pl_scene;
 #define PL_EPS0 8.8541878128e-12    /* F/m */
 #define PL_NA 6.02214076e23         /* 1/mol */
 
-enum { PL_COUPLING_I = 0, PL_COUPLING_II = 1 };
+enum { PL_COUPLING_I = 0, PL_COUPLING_II = 1, PL_COUPLING_POTENTIAL = 2 };
 enum { PL_MATCH_DIFFUSION = 0, PL_MATCH_KINEMATIC = 1 };
 enum { PL_BOUNDARY_STICK = 0, PL_BOUNDARY_SLIP = 1 };
 /* Viscosity formula: Hecht Eq. 28 (rotation by +-90 deg about a coordinate
@@ -94,6 +94,7 @@ typedef struct {
     long long steps;
     int n_colloids, box;
     double wall_s;            /* wall time of the run (0: read from a cache) */
+    double concentration;     /* 1 - c phi of the calibration box (PL Sec. VI.C; 1: not corrected) */
     char cache[640];          /* the cache file it was read from or written to */
 } pl_mapping_calibration_t;
 
@@ -175,6 +176,7 @@ typedef struct {
      * walls, no correction stated */
     double d_col_box, box_L;
     int box_periodic;
+    double conc_factor;   /* the scene's own 1 - c phi in d_col_box (potential coupling; else 1) */
     double g_sim;         /* gravity on the colloid, a0 / t0^2 */
     double v_sim;         /* flow / Stokes velocity, a0 / t0 */
     /* MD */
@@ -278,7 +280,7 @@ typedef struct {
     double lub_viscosity;          /* m_f / (a0 t0) */
     double contact_time;           /* pi sqrt(m_red / U''_max), t0 */
     double reach_gap;              /* smallest gap the substeps resolve, a0 */
-    char substeps_reason[400];     /* which criterion chose md_substeps */
+    char substeps_reason[480];     /* which criterion chose md_substeps */
     int nprov;                     /* provenance lines of the derived keys */
     char prov[32][480];
 } pl_mapping_colloid_t;
@@ -322,6 +324,15 @@ struct json_t *pl_mapping_diffusion_json(const pl_mapping_t *m);
 /* The audit's warnings (not its notes) of a physical scene, one line each
  * ("peloid: warning: SCENE: NAME: text"); nothing for a model scene. */
 void pl_mapping_warnings_print(const struct pl_scene *scene, FILE *out);
+
+/* The potential coupling's MD step (PL Sec. III.A, VII): the contact time
+ * pi sqrt(m_red / U''(r_1)) of a fluid particle (m_f = 1) meeting a colloid
+ * of mass M through PL Eq. 17 (sigma_cf, eps_cf in kT) at the turning point
+ * r_1 of the mean normal kinetic energy kT of the particles that hit a
+ * surface; t0.  And the MD steps per SRD step of length dt that resolve it
+ * by `resolution` steps (src/mapping/mapping_colloids.c). */
+double pl_mapping_cf_contact_time(double sigma_cf, double eps_cf, double M);
+long long pl_mapping_cf_substeps(double sigma_cf, double eps_cf, double M, double dt, double resolution);
 
 /* Relative permittivity of water at T (K), Malmberg & Maryott 1956 fit,
  * valid 273.15-373.15 K (NaN outside). */

@@ -100,6 +100,8 @@ static double stiffest(const pl_colloid_pair_params_t *p, double d, double max_o
                        double *h_at, double *h_reach)
 {
     double hlo = -max_overlap * d, hhi = fmax(p->gap_cut, 0.0), best = 0.0, umin = INFINITY;
+    if (p->terms & PL_CT_WCA) /* from the WCA cut-off, which lies beyond contact when sigma_cc > d */
+        hhi = fmax(hhi, (p->wca_sigma > 0.0 ? p->wca_sigma : d) * p->wca_rfac - d);
     *h_at = *h_reach = hlo;
     const int ng = 200000;
     for (int k = ng; k >= 0; --k) {
@@ -200,8 +202,16 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
     if (p.terms & PL_CT_LUB)
         zeta += pl_pair_lub_zeta(0.0, cs->radius, cs->radius, p.lub_eta, p.lub_hmin, p.lub_hcut);
     if (zeta > 0.0) n_damp = (long long)ceil(1.05 * dt * zeta / (0.5 * m_red));
-    long long n = n_map;
+    long long n = n_map, n_cf = 0;
     const char *why = mp->cg.md_dt > 0 ? "coarse_graining.md_dt" : "min(tau_V, tau_P) / md_resolution (Hecht Sec. VII)";
+    if (s->coupling.method == PL_COUPLE_POTENTIAL) { /* PL Sec. III.A: the fluid-colloid WCA sets dt_MD */
+        const double res = mp->cg.md_resolution > 0 ? mp->cg.md_resolution : 20.0;
+        n_cf = pl_mapping_cf_substeps(s->coupling.sigma_cf, s->coupling.epsilon_cf, mass, dt, res);
+        if (n_cf > n) {
+            n = n_cf;
+            why = "fluid-colloid contact (PL Eq. 17 at kT / md_resolution)";
+        }
+    }
     if (n_contact > n) {
         n = n_contact;
         why = "contact guard";
@@ -226,9 +236,9 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
     snprintf(c->substeps_reason, sizeof c->substeps_reason,
              "%lld MD steps per SRD step from the %s; mapping %lld, contact %lld (U''max = %.4g kT/a0^2 at gap "
              "%.3g a0, collision %.4g t0, >= %g steps: colloids.min_contact_steps; gaps down to %.4g a0 "
-             "reachable with %g kT: coarse_graining.reach_energy), damping %lld",
+             "reachable with %g kT: coarse_graining.reach_energy), damping %lld, fluid-colloid %lld",
              n, why, n_map, n_contact, k2, h_at, c->contact_time, cs->min_contact_steps, h_reach, e_reach,
-             n_damp);
+             n_damp, n_cf);
     c->reach_gap = h_reach;
     if (mp->cg.md_dt > 0 && n > n_map) /* the user's MD step made finer: said, not silent */
         pl_mapping_warn(&mp->map, PL_SEV_NOTE, "MD_DT_REFINED", mp->map.dt / (double)n,
@@ -276,6 +286,60 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
     return 0;
 }
 
+/* PL Sec. VII's choices for the potential coupling, in model units: the
+ * colloid-fluid WCA of PL Eq. 17 at sigma_cf = R (the hydrodynamic radius,
+ * PL Table VI: a ~ sigma_cf) and epsilon_cf = 2.5 kT (PL Sec. III.C), the
+ * colloid-colloid WCA of PL Eq. 16 with n = 24, epsilon_cc = 2.5 kT and
+ * sigma_cc from PL's rule against spurious depletion (Sec. III.C.1).  A
+ * hand-given value that differs is refused. */
+static const double PL_EPS_CF = 2.5, PL_EPS_CC = 2.5, PL_N_CC = 24.0;
+
+static int potential_keys(pl_scene_t *s, int wca, pl_err_t *err)
+{
+    pl_scene_colloids_t *cs = &s->colloids;
+    const double sigma = s->mapping.map.sigma;
+    const char *pl = "coarse_graining.coupling = \"potential\" (PL Sec. VII)";
+    derived_t dk[] = {
+        {OFF(coupling.sigma_cf), "coupling.sigma_cf", "physical.radius and coarse_graining.cell_size (sigma_cf = R)",
+         sigma, s->coupling.sigma_cf, NULL},
+        {OFF(coupling.epsilon_cf), "coupling.epsilon_cf", pl, PL_EPS_CF, s->coupling.epsilon_cf, NULL},
+        {OFF(colloids.wca.epsilon), "wca.epsilon", pl, PL_EPS_CC, cs->wca.epsilon, NULL},
+        {OFF(colloids.wca.n), "wca.n", pl, PL_N_CC, cs->wca.n, NULL},
+        {OFF(colloids.wca.sigma_rule), "wca.sigma_rule", pl, (double)PL_SIGMA_PL, (double)cs->wca.sigma_rule, "pl"},
+        {OFF(colloids.wca.sigma), "wca.sigma", "wca.sigma_rule = \"pl\" of the potential coupling (PL Sec. III.C.1)",
+         0.0, cs->wca.sigma, "0: sigma_cc from PL's rule"},
+    };
+    /* the wca{} keys only where colloids.pairs switches the term on */
+    for (size_t i = 0; i < (wca ? sizeof dk / sizeof dk[0] : 2); ++i)
+        if (refuse(s, err, dk[i].off, dk[i].key, dk[i].from, dk[i].given, dk[i].derived, dk[i].shown))
+            return PL_ERR_INPUT;
+    s->coupling.sigma_cf = sigma;
+    s->coupling.epsilon_cf = PL_EPS_CF;
+    if (!wca) return 0;
+    cs->wca.epsilon = PL_EPS_CC;
+    cs->wca.n = PL_N_CC;
+    cs->wca.sigma_rule = PL_SIGMA_PL;
+    cs->wca.sigma = 0.0;
+    return 0;
+}
+
+double pl_mapping_cf_contact_time(double sigma_cf, double eps_cf, double M)
+{
+    /* PL Eq. 17 = kT at r_1 (bisection on s = (sigma/r)^6 in [1/2, big]:
+     * 4 eps (s^2 - s + 1/4) = 1 has the root s = 1/2 + sqrt(1 / (4 eps))) */
+    const double s6 = 0.5 + sqrt(1.0 / (4.0 * eps_cf));
+    const double r = sigma_cf / pow(s6, 1.0 / 6.0);
+    const double u2 = 4.0 * eps_cf * (156.0 * s6 * s6 - 42.0 * s6) / (r * r); /* U''(r_1) */
+    const double m_red = M / (M + 1.0);
+    return PL_PI * sqrt(m_red / u2);
+}
+
+long long pl_mapping_cf_substeps(double sigma_cf, double eps_cf, double M, double dt, double resolution)
+{
+    const double n = ceil(resolution * dt / pl_mapping_cf_contact_time(sigma_cf, eps_cf, M) - 1e-9);
+    return n < 1.0 ? 1 : (long long)n;
+}
+
 int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
 {
     pl_scene_mapping_t *mp = &s->mapping;
@@ -301,8 +365,11 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     const char *pairs_src = "given";
     if (have && !given(s, OFF(colloids.pairs))) {
         int dlvo = given(s, OFF(mapping.physical.surface_potential)) || given(s, OFF(mapping.physical.hamaker));
-        snprintf(cs->pairs, sizeof cs->pairs, "%s", dlvo ? "dlvo, hertz" : "hertz");
-        pairs_src = dlvo ? "derived: physical.surface_potential / hamaker given" : "derived: contact repulsion only";
+        const int pot = mp->cg.coupling == PL_COUPLING_POTENTIAL; /* PL Eq. 16 as the contact repulsion */
+        snprintf(cs->pairs, sizeof cs->pairs, "%s", dlvo ? (pot ? "dlvo, wca" : "dlvo, hertz") : pot ? "wca" : "hertz");
+        pairs_src = dlvo  ? "derived: physical.surface_potential / hamaker given"
+                    : pot ? "derived: PL Eq. 16 WCA repulsion of the potential coupling (PL Sec. III.A)"
+                          : "derived: contact repulsion only";
     }
     unsigned mask = 0;
     char bad[128];
@@ -350,8 +417,11 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
                 return PL_ERR_INPUT;
         }
     }
-    int method = !have ? s->coupling.method
-                 : mp->cg.coupling == PL_COUPLING_I ? PL_COUPLE_HECHT1 : PL_COUPLE_HECHT2;
+    static const int methods[] = {[PL_COUPLING_I] = PL_COUPLE_HECHT1, [PL_COUPLING_II] = PL_COUPLE_HECHT2,
+                                  [PL_COUPLING_POTENTIAL] = PL_COUPLE_POTENTIAL};
+    static const char *const method_names[] = {[PL_COUPLE_NONE] = "none", [PL_COUPLE_HECHT1] = "hecht1",
+                                               [PL_COUPLE_HECHT2] = "hecht2", [PL_COUPLE_POTENTIAL] = "potential"};
+    int method = !have ? s->coupling.method : methods[mp->cg.coupling];
     double g = have && m->g_sim > 0.0 ? -m->g_sim : 0.0;
     double temp = have ? 1.0 : cs->temperature;
     /* the derived keys: refused when given with another value */
@@ -386,13 +456,14 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
         {OFF(colloids.lub.viscosity), "lubrication.viscosity", "physical.viscosity (model eta = gamma nu)", eta,
          cs->lub.viscosity, NULL},
         {OFF(coupling.method), "coupling.method", "coarse_graining.coupling", (double)method,
-         (double)s->coupling.method, method == PL_COUPLE_HECHT1 ? "hecht1" : method == PL_COUPLE_HECHT2 ? "hecht2" : "none"},
+         (double)s->coupling.method, method_names[method]},
     };
     /* without colloids (no volume fraction) only a hand-given count matters:
      * the other colloid keys act on nothing (an echoed scene prints them) */
     for (size_t i = 0; i < (have ? sizeof dk / sizeof dk[0] : 1); ++i)
         if (refuse(s, err, dk[i].off, dk[i].key, dk[i].from, dk[i].given, dk[i].derived, dk[i].shown))
             return PL_ERR_INPUT;
+    if (have && method == PL_COUPLE_POTENTIAL && potential_keys(s, (mask & PL_CT_WCA) != 0, err)) return PL_ERR_INPUT;
     if (have && given(s, OFF(colloids.gravity)) && (cs->gravity[0] != 0.0 || cs->gravity[1] != 0.0))
         return pl_scene_fail(s, err, OFF(colloids.gravity), "colloids.gravity",
                              "is derived from physical.gravity (along -z); remove it");
@@ -442,7 +513,14 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     if (mask & PL_CT_HERTZ) prov(c, "hertz.K = %.6g kT/a0^2.5 (%s)", K, K_src);
     prov(c, "lubrication.viscosity = %.6g m_f/(a0 t0) (derived: eta = gamma nu_model, Hecht Eq. 4%s)", eta,
          (mask & PL_CT_LUB) ? "" : "; lubrication not in colloids.pairs");
-    prov(c, "coupling.method = \"%s\" (derived: coarse_graining.coupling = \"%s\")",
-         method == PL_COUPLE_HECHT1 ? "hecht1" : "hecht2", mp->cg.coupling == PL_COUPLING_I ? "I" : "II");
+    static const char *const cg_names[] = {"I", "II", "potential"};
+    prov(c, "coupling.method = \"%s\" (derived: coarse_graining.coupling = \"%s\")", method_names[method],
+         cg_names[mp->cg.coupling]);
+    if (method == PL_COUPLE_POTENTIAL)
+        prov(c, "coupling.sigma_cf = %.6g a0 = R, epsilon_cf = %g kT (derived: PL Eq. 17 with PL Sec. VII's choices: "
+                "the hydrodynamic radius a ~ sigma_cf, PL Table VI; 2.5 kT, PL Sec. III.C); wca: epsilon = %g kT, n = "
+                "%g, sigma_rule = \"pl\" (PL Eq. 16, sigma_cc against spurious depletion, PL Sec. III.C.1; where "
+                "colloids.pairs has wca)",
+             s->coupling.sigma_cf, s->coupling.epsilon_cf, cs->wca.epsilon, cs->wca.n);
     return substeps(s, err);
 }

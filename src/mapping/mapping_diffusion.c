@@ -21,7 +21,12 @@ void pl_mapping_diffusion_box(struct pl_scene *s)
     m->box_L = cbrt((double)n[0] * n[1] * n[2]);
     m->box_periodic = s->box.walls_z == PL_WALLS_NONE && s->box.walls_xy == PL_WALLS_NONE;
     const double eta = m->cg.gamma * m->nu_sim; /* m_f / (a0 t0), kT = 1 */
-    m->d_col_box = m->box_periodic ? m->d_col_sim - pl_srd_hasimoto_mobility(eta, m->box_L) : NAN; /* kT = 1 */
+    /* finite colloids (the potential coupling) slow each other: D (1 - c phi),
+     * c = 1.1795 for slip spheres (PL Sec. VI.C); coupling II's points and
+     * coupling I: not stated (1) */
+    m->conc_factor = m->cg.coupling == PL_COUPLING_POTENTIAL ? 1.0 - 1.1795 * s->mapping.colloid.phi_realised : 1.0;
+    m->d_col_box = m->box_periodic ? m->d_col_sim * m->conc_factor - pl_srd_hasimoto_mobility(eta, m->box_L)
+                                   : NAN; /* kT = 1 */
 }
 
 /* m^2/s per a0^2/t0 */
@@ -47,10 +52,14 @@ void pl_mapping_diffusion_print(const pl_mapping_t *m, FILE *f)
                    "%s\n",
                 c->n_colloids, c->box, c->phi, c->steps, c->d_box, c->d_box_se, c->hasimoto, c->d_theory,
                 c->d_inf / c->d_theory, c->wall_s > 0 ? "run now, cached in" : "read from", c->cache);
+    if (c->d_inf > 0 && c->concentration > 0 && c->concentration != 1.0)
+        fprintf(f, "    calibration concentration correction: D_box + images = D (1 - 1.1795 phi) = D x %.4f (slip "
+                   "spheres, PL Sec. VI.C)\n", c->concentration);
     if (m->box_periodic)
         fprintf(f, "    in this scene's periodic box (L = %.4g a0) a dilute colloid diffuses with D_L = %.5g a0^2/t0 "
-                   "= %.4g m^2/s, %.4g of the real D (periodic images, Hasimoto; compare D_L with a measured D)\n",
-                m->box_L, m->d_col_box, m->d_col_box * si(m), m->d_col_box / m->d_col_sim);
+                   "= %.4g m^2/s, %.4g of the real D (periodic images, Hasimoto%s; compare D_L with a measured D)\n",
+                m->box_L, m->d_col_box, m->d_col_box * si(m), m->d_col_box / m->d_col_sim,
+                m->conc_factor != 1.0 ? ", and the scene's phi: 1 - 1.1795 phi, PL Sec. VI.C" : "");
     else
         fprintf(f, "    the scene's box has walls: a measured D is also slowed by them (not corrected here)\n");
 }
@@ -76,6 +85,7 @@ json_t *pl_mapping_diffusion_json(const pl_mapping_t *m)
         json_object_set_new(k, "steps", json_integer(c->steps));
         json_object_set_new(k, "phi", json_real(c->phi));
         json_object_set_new(k, "wall_s", json_real(c->wall_s));
+        if (c->concentration != 1.0) json_object_set_new(k, "concentration_factor", json_real(c->concentration));
         json_object_set_new(k, "cache", json_string(c->cache));
         json_object_set_new(o, "calibration", k);
     }
@@ -84,6 +94,7 @@ json_t *pl_mapping_diffusion_json(const pl_mapping_t *m)
         json_object_set_new(o, "d_box_a0_2_t0", json_real(m->d_col_box));
         json_object_set_new(o, "d_box_m2_s", json_real(m->d_col_box * si(m)));
         json_object_set_new(o, "box_factor", json_real(m->d_col_box / m->d_col_sim));
+        if (m->conc_factor != 1.0) json_object_set_new(o, "concentration_factor", json_real(m->conc_factor));
     } else {
         json_object_set_new(o, "box_note", json_string("walls: not corrected"));
     }

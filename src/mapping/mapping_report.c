@@ -10,7 +10,7 @@
 #include "json_build.h"
 #include "peloid/mapping.h"
 
-static const char *coupling_name(int c) { return c == PL_COUPLING_I ? "I" : "II"; }
+static const char *coupling_name(int c) { return c == PL_COUPLING_I ? "I" : c == PL_COUPLING_II ? "II" : "potential"; }
 static const char *match_name(int m) { return m == PL_MATCH_DIFFUSION ? "diffusion" : "kinematic"; }
 static const char *visc_name(int v) { return v == PL_VISC_HECHT28 ? "Hecht Eq. 28" : "PL Eqs. 9-12"; }
 

@@ -64,8 +64,15 @@ static void fill_inputs(const pl_scene_t *s, pl_mapping_system_t *r, pl_mapping_
     cg->enskog = c->enskog;
     cg->fluid_gravity = c->fluid_gravity;
     cg->cell_over_R = c->cell_size > 0 ? c->cell_size
-                      : c->coupling == PL_COUPLING_I ? 0.5
-                                                     : cbrt(4.0 * PL_PI / 3.0);
+                      : c->coupling == PL_COUPLING_II ? cbrt(4.0 * PL_PI / 3.0)
+                                                      : 0.5; /* I: Hecht a = R/2; potential: PL sigma_cf = 2 a0 */
+    if (c->coupling == PL_COUPLING_POTENTIAL) {
+        /* PL Sec. III.B: the radial forces of PL Eq. 17 transfer no angular
+         * momentum (slip); PL Table VI adds the Enskog friction in parallel
+         * (PL Eq. 41) unless the file switches it off */
+        cg->boundary = PL_BOUNDARY_SLIP;
+        cg->enskog = pl_scene_line_of(s, OFF(mapping.cg.enskog)) > 0 ? c->enskog : 1;
+    }
     cg->gamma = c->particles_per_cell;
     cg->lambda = c->mean_free_path;
     /* The rotation rule of srd{} picks the viscosity formula. */
@@ -198,6 +205,11 @@ int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
     pl_mapping_system_t r;
     pl_mapping_solvent_t sv;
     pl_mapping_cg_t cg;
+    if (mp->cg.coupling == PL_COUPLING_POTENTIAL && pl_scene_line_of(s, OFF(mapping.cg.boundary)) > 0 &&
+        mp->cg.boundary != PL_BOUNDARY_SLIP)
+        return pl_scene_fail(s, err, OFF(mapping.cg.boundary), "coarse_graining.boundary",
+                             "\"stick\" contradicts coarse_graining.coupling = \"potential\": the radial forces of "
+                             "PL Eq. 17 transfer no angular momentum (PL Sec. III.B); allowed: \"slip\" or not given");
     fill_inputs(s, &r, &sv, &cg);
     pl_err_t e = {0};
     if (pl_mapping_derive(&r, &sv, &cg, &mp->map, &e)) {
@@ -305,6 +317,10 @@ static void print_inputs(const pl_scene_t *s, FILE *f)
             else if (key->offset == OFF(mapping.physical.kappa) && s->mapping.physical.ionic_strength > 0)
                 snprintf(how, sizeof how, "derived: Debye-Hueckel from ionic_strength = %.4g /m",
                          s->mapping.kappa);
+            else if (s->mapping.cg.coupling == PL_COUPLING_POTENTIAL &&
+                     (key->offset == OFF(mapping.cg.boundary) || key->offset == OFF(mapping.cg.enskog)))
+                snprintf(how, sizeof how, "derived: the potential coupling's theory is slip + Enskog (PL Sec. "
+                                          "III.B, Eq. 41), not this value");
             else if (key->offset == OFF(mapping.cg.cell_size))
                 snprintf(how, sizeof how, "default: a0/R = %.6g of the coupling (Hecht Sec. VII.B/C)",
                          s->mapping.map.cg.cell_over_R);

@@ -11,7 +11,11 @@
  * colloid (radius, mass, coupling keys) in a periodic cube, without walls,
  * gravity or pair forces; coupling II: 32 colloids in one box (points in
  * their cells; 0.8 % of the cells); coupling I: one colloid per box, in
- * replicas (no overlaps, no concentration effect).  D from the slope of the
+ * replicas (no overlaps, no concentration effect); the potential coupling:
+ * 8 colloids on a lattice in a box with phi <= 0.02, with PL's colloid-colloid
+ * WCA (PL Eq. 16, sigma_cc by PL's rule: no overlaps) and the MD step the
+ * mapping derives from the fluid-colloid WCA alone; their slowing of each
+ * other, D (1 - 1.1795 phi) for slip spheres (PL Sec. VI.C), is divided out.  D from the slope of the
  * mean-squared displacement between the lags t1 = 4 tau_v and t2 = 12 tau_v,
  * tau_v = 2 M D_theory, a bound of the velocity relaxation time M D (coupling
  * II colloids move ~2x faster than the theory's D): for an exponential
@@ -51,10 +55,16 @@
 #include "peloid/sim.h"
 #include "peloid/srd_theory.h"
 
-enum { CAL_VERSION = 1, CAL_BLOCKS = 8, CAL_N2 = 32 };
+enum { CAL_VERSION = 1, CAL_BLOCKS = 8, CAL_N2 = 32, CAL_NP = 8 };
 static const long long CAL_SEED = 20261204;
 static const double CAL_BUDGET = 6e8;       /* fluid particle-steps of one calibration */
 static const double CAL_TARGET = 15000.0;   /* colloid-time in units of tau_v: ~3 % SE */
+/* the potential coupling: finite colloids at phi <= CAL_PHI_P in their box,
+ * its own budget (the fluid per colloid is phi-bound: ~8 x the particles per
+ * colloid-time of coupling II's points) */
+static const double CAL_PHI_P = 0.02, CAL_BUDGET_P = 4e9;
+/* PL Sec. VI.C: D(phi) = D0 (1 - 1.1795 phi) for slip spheres (PL ref. 90) */
+static const double CAL_SLIP_PHI = 1.1795;
 
 /* ---- the model run ------------------------------------------------------ */
 
@@ -75,12 +85,18 @@ static void cal_scene(const pl_scene_t *sc, const cal_plan_t *p, int replica, pl
     memset(c->box.wall_velocity, 0, sizeof c->box.wall_velocity);
     memset(c->fluid.body_force, 0, sizeof c->fluid.body_force);
     pl_scene_colloids_t *k = &c->colloids;
+    const int pot = sc->coupling.method == PL_COUPLE_POTENTIAL;
     k->count = p->n;
-    k->init = PL_CINIT_RANDOM;
+    k->init = pot ? PL_CINIT_LATTICE : PL_CINIT_RANDOM;
     k->polydispersity = 0.0;
     k->pairs[0] = '\0';
     k->integrator = PL_CINT_VERLET;
     k->substeps = 1; /* no force: free flight between the coupling's impulses */
+    if (pot) /* the fluid-colloid WCA at the MD step the mapping derives from it alone */
+        k->substeps = pl_mapping_cf_substeps(sc->coupling.sigma_cf > 0 ? sc->coupling.sigma_cf : k->radius,
+                                             sc->coupling.epsilon_cf,
+                                             k->mass_density * 4.0 / 3.0 * PL_PI * pow(k->radius, 3.0), sc->srd.dt,
+                                             sc->mapping.cg.md_resolution > 0 ? sc->mapping.cg.md_resolution : 20.0);
     k->max_overlap = 1.0; /* ideal colloids: overlaps are not contacts here */
     k->slow_interval = 1;
     k->adaptive_substeps = 0; /* one MD step per collision step, as written */
@@ -91,6 +107,10 @@ static void cal_scene(const pl_scene_t *sc, const cal_plan_t *p, int replica, pl
     memset(&k->hertz, 0, sizeof k->hertz);
     memset(&k->lub, 0, sizeof k->lub);
     memset(&k->wca, 0, sizeof k->wca);
+    if (pot) { /* finite colloids keep PL's repulsion (PL Eq. 16, Sec. III.C.1): no overlaps */
+        snprintf(k->pairs, sizeof k->pairs, "wca");
+        k->wca = (pl_scene_wca_t){.epsilon = 2.5, .sigma = 0.0, .n = 24.0, .sigma_rule = PL_SIGMA_PL};
+    }
     c->coupling.pinned = 0;
     c->coupling.compensate_gravity = 0;
     memset(c->coupling.flow_velocity, 0, sizeof c->coupling.flow_velocity);
@@ -121,6 +141,12 @@ static uint64_t cal_key(const pl_scene_t *c, const cal_plan_t *p)
     const pl_scene_colloids_t *k = &c->colloids;
     const double cd[] = {k->radius, k->mass_density, k->temperature, k->max_overlap, k->neighbor_skin};
     h = fnv(h, cd, sizeof cd);
+    if (c->coupling.method == PL_COUPLE_POTENTIAL) { /* what couplings I and II leave at their defaults */
+        const double pd[] = {(double)k->substeps, k->wca.epsilon, k->wca.sigma, k->wca.n, (double)k->wca.sigma_rule,
+                             (double)k->init, k->min_contact_steps};
+        h = fnv(h, pd, sizeof pd);
+        h = fnv(h, k->pairs, strlen(k->pairs));
+    }
     return h;
 }
 
@@ -138,9 +164,12 @@ static int cal_plan(const pl_scene_t *sc, cal_plan_t *p)
     const double sigma = sc->colloids.radius, M = m->mass_sim, dt = sc->srd.dt;
     /* the theory's D sizes the run; coupling II colloids move ~2x faster */
     const double tau_v = M * 2.0 * m->d_col_theory;
-    const int two = sc->coupling.method == PL_COUPLE_HECHT2;
+    const int two = sc->coupling.method == PL_COUPLE_HECHT2, pot = sc->coupling.method == PL_COUPLE_POTENTIAL;
+    const int many = two || pot; /* several colloids in one box */
     p->L = (int)fmax(16.0, ceil(8.0 * sigma));
-    p->n = two ? CAL_N2 : 1;
+    p->n = two ? CAL_N2 : pot ? CAL_NP : 1;
+    if (pot) /* phi <= CAL_PHI_P: the concentration correction stays small */
+        p->L = (int)fmax(p->L, ceil(cbrt(CAL_NP * 4.0 / 3.0 * PL_PI * sigma * sigma * sigma / CAL_PHI_P)));
     p->stride = (long long)fmax(1.0, floor(tau_v / dt / 2.0));
     const double sdt = (double)p->stride * dt;
     p->lag1 = (long long)ceil(4.0 * tau_v / sdt);
@@ -150,14 +179,15 @@ static int cal_plan(const pl_scene_t *sc, cal_plan_t *p)
     const double per_box = (double)p->L * p->L * p->L * sc->fluid.density;
     double strides = fmax(5.0 * CAL_BLOCKS * (double)p->lag2, CAL_TARGET * tau_v / (p->n * sdt));
     double replicas = 1.0;
-    if (!two) { /* replicas of one colloid: the target over whole replicas */
+    if (!many) { /* replicas of one colloid: the target over whole replicas */
         strides = 5.0 * CAL_BLOCKS * (double)p->lag2;
         replicas = ceil(CAL_TARGET * tau_v / (strides * sdt));
     }
     double cost = per_box * strides * (double)p->stride * replicas;
-    if (cost > CAL_BUDGET) { /* within the budget; the SE says what it bought */
-        if (two) strides = fmax(5.0 * CAL_BLOCKS * (double)p->lag2, strides * CAL_BUDGET / cost);
-        else replicas = fmax(2.0, floor(replicas * CAL_BUDGET / cost));
+    const double budget = pot ? CAL_BUDGET_P : CAL_BUDGET;
+    if (cost > budget) { /* within the budget; the SE says what it bought */
+        if (many) strides = fmax(5.0 * CAL_BLOCKS * (double)p->lag2, strides * budget / cost);
+        else replicas = fmax(2.0, floor(replicas * budget / cost));
     }
     p->replicas = (int)replicas;
     p->steps = (long long)ceil(strides) * p->stride;
@@ -243,9 +273,12 @@ static int cal_run(const pl_scene_t *sc, const cal_plan_t *p, int nthreads, pl_m
     cal->d_box = mean;
     cal->d_box_se = sqrt(var / (nb - 1.0) / nb);
     cal->hasimoto = kT * pl_srd_hasimoto_mobility(eta_of(sc), L);
-    cal->d_inf = (mean + cal->hasimoto) / kT; /* a0^2/t0 at kT = 1, as the mapping uses it */
-    cal->d_inf_se = cal->d_box_se / kT;
     cal->phi = p->n * 4.0 / 3.0 * PL_PI * pow(sc->colloids.radius, 3) / (L * L * L);
+    /* finite colloids slow each other: D_box + H = D (1 - c phi) (PL Sec. VI.C); coupling II's points and the
+     * single colloid of coupling I: 1 */
+    cal->concentration = sc->coupling.method == PL_COUPLE_POTENTIAL ? 1.0 - CAL_SLIP_PHI * cal->phi : 1.0;
+    cal->d_inf = (mean + cal->hasimoto) / cal->concentration / kT; /* a0^2/t0 at kT = 1, as the mapping uses it */
+    cal->d_inf_se = cal->d_box_se / cal->concentration / kT;
     cal->n_colloids = p->n * p->replicas;
     cal->box = p->L;
     cal->steps = p->steps;
@@ -280,6 +313,8 @@ static int cache_read(const char *path, pl_mapping_calibration_t *c)
         c->n_colloids = (int)json_integer_value(json_object_get(j, "n_colloids"));
         c->box = (int)json_integer_value(json_object_get(j, "box"));
         c->steps = json_integer_value(json_object_get(j, "steps"));
+        json_t *f = json_object_get(j, "concentration"); /* only where it is not 1 (the potential coupling) */
+        c->concentration = json_is_number(f) ? json_number_value(f) : 1.0;
         ok = c->d_inf > 0 && c->n_colloids > 0 && c->box > 0 && c->steps > 0;
     }
     json_decref(j);
@@ -295,6 +330,7 @@ static int cache_write(const char *path, const pl_mapping_calibration_t *c, cons
     for (int k = 0; !bad && k < NFIELDS; ++k) bad = json_object_set_new(j, FIELDS[k], json_real(*field(&cc, k)));
     bad = bad || json_object_set_new(j, "n_colloids", json_integer(c->n_colloids)) ||
           json_object_set_new(j, "box", json_integer(c->box)) || json_object_set_new(j, "steps", json_integer(c->steps));
+    if (c->concentration != 1.0) bad = bad || json_object_set_new(j, "concentration", json_real(c->concentration));
     char tmp[600];
     pl_atomic_tmp(path, tmp, sizeof tmp);
     if (!bad) bad = json_dump_file(j, tmp, JSON_INDENT(2) | JSON_REAL_PRECISION(17)) != 0;
@@ -340,10 +376,17 @@ static int from_cache(const char *path, const pl_scene_t *sc, pl_mapping_calibra
 
 /* ---- the entry point -------------------------------------------------------- */
 
+static const char *cname(const pl_scene_t *sc)
+{
+    const int m = sc->coupling.method;
+    return m == PL_COUPLE_HECHT2 ? "II" : m == PL_COUPLE_POTENTIAL ? "potential" : "I";
+}
+
 int pl_calibration_needed(const pl_scene_t *sc)
 {
     const int m = sc->coupling.method;
-    return sc->mapping.enabled && (m == PL_COUPLE_HECHT1 || m == PL_COUPLE_HECHT2) && sc->colloids.count > 0 &&
+    return sc->mapping.enabled && (m == PL_COUPLE_HECHT1 || m == PL_COUPLE_HECHT2 || m == PL_COUPLE_POTENTIAL) &&
+           sc->colloids.count > 0 &&
            sc->fluid.density > 0;
 }
 
@@ -385,7 +428,7 @@ int pl_calibrate(const pl_scene_t *sc, const char *shipped_dir, int nthreads, FI
     if (log)
         fprintf(log, "peloid: calibrating the colloid diffusion of coupling %s at this resolution (once; cached "
                      "in %s): %d x %d colloid(s) in %d^3 cells, %lld steps\n",
-                sc->coupling.method == PL_COUPLE_HECHT2 ? "II" : "I", have_dir ? dir : "nowhere: no cache directory",
+                cname(sc), have_dir ? dir : "nowhere: no cache directory",
                 p.replicas, p.n, p.L, p.steps);
     int rc = cal_run(sc, &p, nthreads, cal, err);
     cal->d_theory = sc->mapping.map.d_col_theory;
@@ -394,7 +437,7 @@ int pl_calibrate(const pl_scene_t *sc, const char *shipped_dir, int nthreads, FI
         snprintf(about, sizeof about,
                  "peloid coupling-%s calibration: gamma %g, lambda %g, rule %d, alpha %g, radius %.17g a0, mass "
                  "density %.17g m_f/a0^3; D in a0^2/t0 at kT = 1 (src/plan/calibrate.c)",
-                 sc->coupling.method == PL_COUPLE_HECHT2 ? "II" : "I", sc->fluid.density, sc->srd.dt, sc->srd.rule,
+                 cname(sc), sc->fluid.density, sc->srd.dt, sc->srd.rule,
                  sc->srd.alpha_deg, sc->colloids.radius, sc->colloids.mass_density);
         rc = cache_write(path, cal, about, err);
         if (!rc) snprintf(cal->cache, sizeof cal->cache, "%s", path);

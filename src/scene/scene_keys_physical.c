@@ -14,7 +14,7 @@
 #define P(m) OFF(mapping.physical.m)
 #define C(m) OFF(mapping.cg.m)
 
-static const char *const coupling_choices[] = {"I", "II", NULL};
+static const char *const coupling_choices[] = {"I", "II", "potential", NULL};
 static const char *const match_choices[] = {"diffusion", "kinematic", NULL};
 static const char *const boundary_choices[] = {"stick", "slip", NULL};
 
@@ -69,12 +69,15 @@ static const pl_key_t physical_keys[] = {
 
 static const pl_key_t cg_keys[] = {
     {"coupling", PL_KEY_CHOICE, C(coupling), 0, 0, 0, coupling_choices, PL_COUPLING_I, NULL,
-     "-", "I: fluid reflected off colloid surfaces (Hecht Sec. IV); II: colloids join the collision (Hecht Sec. V)"},
+     "-", "I: fluid reflected off colloid surfaces (Hecht Sec. IV); II: colloids join the collision (Hecht Sec. V); "
+          "potential: WCA colloid-fluid forces (PL Sec. III.A, Eq. 17) with PL Sec. VII's choices: sigma_cf = R = 2 a0, "
+          "epsilon_cf = 2.5 kT, colloid-colloid WCA n = 24 with PL's sigma_cc rule, slip surface + Enskog theory"},
     {"time_match", PL_KEY_CHOICE, C(time_match), 0, 0, 0, match_choices, PL_MATCH_DIFFUSION, NULL,
      "-", "time kept equal to reality: diffusion (colloid D and tau_D: Hecht Eq. 30, PL example 1) or "
           "kinematic (tau_nu = R^2/nu: PL example 2)"},
     {"cell_size", PL_KEY_REAL, C(cell_size), 0, 100, 0, NULL, 0, NULL,
-     "R", "cell size a0 / R; 0: 0.5 for coupling I (Hecht: a = R/2), (4 pi/3)^(1/3) for II (cell volume = colloid volume)"},
+     "R", "cell size a0 / R; 0: 0.5 for coupling I (Hecht: a = R/2) and potential (PL: sigma_cf = 2 a0), (4 pi/3)^(1/3) "
+          "for II (cell volume = colloid volume)"},
     {"particles_per_cell", PL_KEY_REAL, C(particles_per_cell), 1, 1e4, PL_KEY_MIN_OPEN, NULL, 5, NULL,
      "-", "gamma (Hecht: M), mean fluid particles per cell; becomes fluid.density"},
     {"mean_free_path", PL_KEY_REAL, C(mean_free_path), 0, 10, PL_KEY_MIN_OPEN, NULL, 0.1, NULL,
