@@ -19,6 +19,12 @@ PELOID=$(realpath "${1:-bin/peloid}")
 PY=/usr/bin/python3
 T=$(mktemp -d /tmp/peloid-interrupt.XXXXXX)
 trap 'kill $(jobs -p) 2> /dev/null; rm -rf "$T"' EXIT
+# the runs get the default action of the signals under test even when this
+# suite was started with them ignored (a background job of a non-interactive
+# shell, nohup): peloid keeps a signal its caller ignores, as it should
+printf '#!/bin/sh\nexec env --default-signal=INT,TERM,HUP "%s" "$@"\n' "$PELOID" > "$T/peloid-default-signals"
+chmod +x "$T/peloid-default-signals"
+PELOID=$T/peloid-default-signals
 cd "$T"
 set -m # background runs in their own process group: SIGINT is not ignored there
 pass=0; fail=0

@@ -12,6 +12,12 @@ set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 PY=/usr/bin/python3
 T=$(mktemp -d /tmp/peloid-sweepsig.XXXXXX)
+# the runs get the default action of the signals under test even when this
+# suite was started with them ignored (a background job of a non-interactive
+# shell, nohup): peloid keeps a signal its caller ignores, as it should
+printf '#!/bin/sh\nexec env --default-signal=INT,TERM,HUP "%s" "$@"\n' "$PELOID" > "$T/peloid-default-signals"
+chmod +x "$T/peloid-default-signals"
+PELOID=$T/peloid-default-signals
 T=$(realpath "$T")
 # the points a sweep of this test left running (cwd $T): none, unless it fails
 alive() {
