@@ -33,6 +33,9 @@ typedef struct pl_obs_run {
 /* Samples from `start` to the run's last step, every `interval` (the room a
  * series needs; at least 1). */
 uint64_t pl_obs_expected(const pl_obs_run_t *run, long long start, long long interval);
+/* Grows a series buffer *p from n to cap elements of size sz, the new part
+ * zero (a resumed run that samples longer); 0 or -1 (out of memory). */
+int pl_obs_grow(void **p, size_t n, size_t cap, size_t sz);
 
 /* One estimate of an observer: a number with its standard error. */
 typedef struct pl_obs_estimate {

@@ -327,16 +327,6 @@ static int ckpt_read(int64_t g_, pl_obs_run_t *run, void *state, const long long
     return clusters_ready(sim, o, err);
 }
 
-/* Grows a series buffer from n to cap elements of size sz (new part zero). */
-static int grow_buf(void **p, size_t n, size_t cap, size_t sz)
-{
-    void *q = realloc(*p, cap * sz);
-    if (!q) return -1;
-    memset((char *)q + n * sz, 0, (cap - n) * sz);
-    *p = q;
-    return 0;
-}
-
 static int resume(pl_obs_run_t *run, void *state, pl_err_t *err)
 {
     cl_obs_t *o = state;
@@ -344,8 +334,8 @@ static int resume(pl_obs_run_t *run, void *state, pl_err_t *err)
     if (!o->c_step) return 0;
     const size_t cap = pl_obs_expected(run, so->clusters_start, so->clusters_interval);
     if (cap <= o->c_cap) return 0;
-    int bad = grow_buf((void **)&o->c_step, o->c_n, cap, sizeof *o->c_step);
-    for (int k = 0; k < NCV; ++k) bad |= grow_buf((void **)&o->c_val[k], o->c_n, cap, sizeof(double));
+    int bad = pl_obs_grow((void **)&o->c_step, o->c_n, cap, sizeof *o->c_step);
+    for (int k = 0; k < NCV; ++k) bad |= pl_obs_grow((void **)&o->c_val[k], o->c_n, cap, sizeof(double));
     if (bad) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cluster observer");
     o->c_cap = cap;
     return 0;

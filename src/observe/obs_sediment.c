@@ -245,16 +245,6 @@ static int ckpt_read(int64_t g_, pl_obs_run_t *run, void *state, const long long
     return 0;
 }
 
-/* Grows a series buffer from n to cap elements of size sz (new part zero). */
-static int grow_buf(void **p, size_t n, size_t cap, size_t sz)
-{
-    void *q = realloc(*p, cap * sz);
-    if (!q) return -1;
-    memset((char *)q + n * sz, 0, (cap - n) * sz);
-    *p = q;
-    return 0;
-}
-
 static int resume(pl_obs_run_t *run, void *state, pl_err_t *err)
 {
     sed_obs_t *o = state;
@@ -262,11 +252,11 @@ static int resume(pl_obs_run_t *run, void *state, pl_err_t *err)
     if (!o->s_step) return 0;
     const size_t cap = pl_obs_expected(run, so->sediment_start, so->sediment_interval);
     if (cap <= o->s_cap) return 0;
-    int bad = grow_buf((void **)&o->s_step, o->s_n, cap, sizeof *o->s_step);
-    bad |= grow_buf((void **)&o->s_phi, o->s_n * o->s_bins, cap * o->s_bins, sizeof(double));
-    bad |= grow_buf((void **)&o->s_height, o->s_n, cap, sizeof(double));
-    bad |= grow_buf((void **)&o->s_vel, o->s_n, cap, sizeof(double));
-    bad |= grow_buf((void **)&o->s_vz, o->s_n, cap, sizeof(double));
+    int bad = pl_obs_grow((void **)&o->s_step, o->s_n, cap, sizeof *o->s_step);
+    bad |= pl_obs_grow((void **)&o->s_phi, o->s_n * o->s_bins, cap * o->s_bins, sizeof(double));
+    bad |= pl_obs_grow((void **)&o->s_height, o->s_n, cap, sizeof(double));
+    bad |= pl_obs_grow((void **)&o->s_vel, o->s_n, cap, sizeof(double));
+    bad |= pl_obs_grow((void **)&o->s_vz, o->s_n, cap, sizeof(double));
     if (bad) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the sedimentation observer");
     o->s_cap = cap;
     return 0;

@@ -64,6 +64,15 @@ typedef struct pl_observe {
     int nept_saved;
 } pl_observe_t;
 
+int pl_obs_grow(void **p, size_t n, size_t cap, size_t sz)
+{
+    void *q = realloc(*p, cap * sz);
+    if (!q) return -1;
+    memset((char *)q + n * sz, 0, (cap - n) * sz);
+    *p = q;
+    return 0;
+}
+
 uint64_t pl_obs_expected(const pl_obs_run_t *r, long long start, long long interval)
 {
     long long a = r->first > start ? r->first : start;
