@@ -249,10 +249,12 @@ int pl_colloid_term_setup_tab(const pl_scene_t *scene, pl_colloid_pair_params_t 
         p->tab_rc = rc_;
         p->tab_inv_h = N / (rc_ - r0);
         for (int k = 0; k <= N && !rc; ++k) {
-            double r = k == N ? rc_ : fmin(r0 + k * h, rc_), u, f;
-            if (gsl_interp_eval_e(iu, t.r, t.u, r, NULL, &u) || gsl_interp_eval_e(ifo, t.r, t.f, r, NULL, &f))
+            double r = k == N ? rc_ : fmin(r0 + k * h, rc_), u = 0.0, f = 0.0;
+            if (gsl_interp_eval_e(iu, t.r, t.u, r, NULL, &u) || gsl_interp_eval_e(ifo, t.r, t.f, r, NULL, &f)) {
                 rc = pl_scene_fail(scene, err, OFF(colloids.table_file), KEY,
                                    "\"%s\": GSL cannot evaluate the table at r = %g", path, r);
+                break;
+            }
             p->tab_uf[2 * k] = u;
             p->tab_uf[2 * k + 1] = f;
         }
