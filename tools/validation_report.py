@@ -6,9 +6,17 @@ each studies/*.cfg).
     /usr/bin/python3 tools/validation_report.py [OUT_STUDIES] [REPORT]
     /usr/bin/python3 tools/validation_report.py --verdicts-only [OUT_STUDIES] [REPORT]
 
+    /usr/bin/python3 tools/validation_report.py --update NAME[,NAME...] [OUT_STUDIES] [REPORT]
+
 --verdicts-only rewrites only the section "Verdicts (issue 39)" (tools/validation/issue39.py, between its
 markers) of an existing REPORT, leaving the rest as the last full generation wrote it (make
 validation-verdicts: for a report whose studies' outputs are not on this machine).
+
+--update rewrites, in an existing REPORT, the rows of the named STUDIES entries (their table row, their
+details paragraph: the one that opens with the same bold title, and their plot) from OUT_STUDIES and the
+notes (NOTES) (the verdict section: --verdicts-only), and adds the runs' git revisions to the report's line naming them;
+every other row stays as the last generation wrote it (make validation-update ENTRIES=...: rerun some
+studies without the CPU hours of all of them).
 
 For each study below: the paper's figure and value, peloid's value +- SE
 from the study's sweep.json and each point's summary.json, the run time
@@ -326,6 +334,89 @@ NOTES = [
 ]
 
 
+def study_row(s, out, rdir):
+    """One STUDIES entry evaluated: (its table row, its details paragraph or None, the runs' git revisions);
+    its plot copied beside the report."""
+    sdir = s.get("sweep", s["name"])  # an entry may evaluate another entry's sweep
+    sw = load(out, sdir)
+    if sw is None:
+        return (f"| `{s['study']}` | {s['figure']} | {s['paper']} | not run | {s['size']} | – | "
+                f"not run: `peloid sweep {s['study']}` |"), None, set()
+    res = s["eval"](sw)
+    value, verdict = res[0], res[1]
+    detail = res[2] if len(res) > 2 and res[2] else None
+    if len(res) > 3 and res[3]:
+        guide = os.path.join(out, sdir, "guide.png" if sdir == s["name"] else s["name"] + ".png")
+        res[3](guide)
+        shutil.copyfile(guide, os.path.join(rdir, s["name"] + ".png"))
+    revs = {p["summary"]["peloid"]["git_revision"] for p in sw["points"] if p["summary"]}
+    size = s["size"] + (f" = {mapped_time(sw)} of mapped real time" if mapped_time(sw) else "")
+    row = f"| `{s['study']}` | {s['figure']} | {s['paper']} | {value} | {size} | {run_time(sw)} | {verdict} |"
+    png = os.path.join(out, sdir, "sweep.png")
+    if os.path.exists(png) and not (len(res) > 3 and res[3]):
+        shutil.copyfile(png, os.path.join(rdir, s["name"] + ".png"))
+    return row, detail, revs
+
+
+def bold_title(paragraph):
+    """The opening **...** of a details paragraph (how --update finds the old one)."""
+    return paragraph[:paragraph.index("**", 2) + 2] if paragraph.startswith("**") and "**" in paragraph[2:] else None
+
+
+def update(names, out, report):
+    """Rewrites the named entries' rows, details and plots, the notes and the verdicts of an existing report."""
+    rdir = os.path.dirname(report) or "."
+    lines = open(report).read().split("\n")
+    known = {s["name"]: s for s in STUDIES}
+    bad = [n for n in names if n not in known]
+    if bad:
+        raise SystemExit(f"--update: unknown entries {', '.join(bad)}; known: {', '.join(known)}")
+    revs = set()
+    for n in names:
+        s = known[n]
+        if load(out, s.get("sweep", n)) is None:
+            raise SystemExit(f"--update {n}: {out}/{s.get('sweep', n)} has no sweep.json (run `peloid sweep {s['study']}`)")
+        row, detail, rv = study_row(s, out, rdir)
+        revs |= rv
+        # the table row: the first line of the table naming this study with this figure
+        key = f"| `{s['study']}` | {s['figure']} |"
+        hits = [i for i, l in enumerate(lines) if l.startswith(key)]
+        if len(hits) != 1:
+            raise SystemExit(f"--update {n}: {len(hits)} table rows open with {key!r} in {report}")
+        lines[hits[0]] = row
+        if detail:
+            t = bold_title(detail)
+            hits = [i for i, l in enumerate(lines) if t and l.startswith(t)]
+            if len(hits) != 1:
+                raise SystemExit(f"--update {n}: {len(hits)} paragraphs open with {t!r} in {report}")
+            # the old details run to the next bold title (its tables and blank lines included)
+            a = hits[0]
+            b = next((i for i in range(a + 1, len(lines)) if lines[i].startswith("**") or
+                      lines[i].startswith("<!-- verdicts") or lines[i].startswith("## ")), len(lines))
+            while b > a + 1 and not lines[b - 1].strip():
+                b -= 1
+            lines[a:b] = detail.rstrip("\n").split("\n")
+    # the notes: from the first to the last NOTES paragraph, as NOTES is now
+    first, last = bold_title(NOTES[0]), bold_title([x for x in NOTES if x][-1])
+    a = next(i for i, l in enumerate(lines) if first and l.startswith(first))
+    b = next(i for i, l in enumerate(lines) if last and l.startswith(last))
+    lines[a:b + 1] = NOTES[:len(NOTES) - next(i for i, x in enumerate(reversed(NOTES)) if x)]
+    # the revisions line
+    i = next(i for i, l in enumerate(lines) if l.startswith("Runs made by peloid "))
+    old = lines[i][len("Runs made by peloid "):lines[i].index(" (the git revision")]
+    allrev = sorted(set(x.strip() for x in old.split(",") if x.strip() and x.strip() != "(none)") | revs)
+    try:
+        rev = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+    except OSError:
+        rev = "unknown"
+    lines[i] = (f"Runs made by peloid {', '.join(allrev)} (the git revision each point's summary.json names); "
+                f"report written at {rev}, the rows of {', '.join(names)} rewritten then (the others as before).")
+    tmp = report + ".tmp"
+    open(tmp, "w").write("\n".join(lines))
+    os.replace(tmp, report)
+    print(f"updated {', '.join(names)} in {report}", file=sys.stderr)
+
+
 VERDICTS_BEGIN = "<!-- verdicts of issue 39: tools/validation/issue39.py -->"
 VERDICTS_END = "<!-- end of the verdicts of issue 39 -->"
 
@@ -351,9 +442,18 @@ def verdicts_only(out, report):
 
 
 def main():
-    args = [a for a in sys.argv[1:] if a != "--verdicts-only"]
+    argv, names = sys.argv[1:], None
+    if "--update" in argv:
+        k = argv.index("--update")
+        if k + 1 >= len(argv):
+            raise SystemExit("--update needs NAME[,NAME...]")
+        names = [n for n in argv[k + 1].split(",") if n]
+        argv = argv[:k] + argv[k + 2:]
+    args = [a for a in argv if a != "--verdicts-only"]
     out = args[0] if len(args) > 0 else "out/studies"
     report = args[1] if len(args) > 1 else "validation/REPORT.md"
+    if names:
+        return update(names, out, report)
     if "--verdicts-only" in sys.argv:
         return verdicts_only(out, report)
     rdir = os.path.dirname(report) or "."
@@ -370,27 +470,11 @@ def main():
     revs = set()
     details = []
     for s in STUDIES:
-        sdir = s.get("sweep", s["name"])  # an entry may evaluate another entry's sweep
-        sw = load(out, sdir)
-        if sw is None:
-            table.append(f"| `{s['study']}` | {s['figure']} | {s['paper']} | not run | {s['size']} | – | "
-                         f"not run: `peloid sweep {s['study']}` |")
-            continue
-        res = s["eval"](sw)
-        value, verdict = res[0], res[1]
-        if len(res) > 2 and res[2]:
-            details.append(res[2])
-        if len(res) > 3 and res[3]:
-            guide = os.path.join(out, sdir, "guide.png" if sdir == s["name"] else s["name"] + ".png")
-            res[3](guide)
-            shutil.copyfile(guide, os.path.join(rdir, s["name"] + ".png"))
-        revs |= {p["summary"]["peloid"]["git_revision"] for p in sw["points"] if p["summary"]}
-        size = s["size"] + (f" = {mapped_time(sw)} of mapped real time" if mapped_time(sw) else "")
-        table.append(f"| `{s['study']}` | {s['figure']} | {s['paper']} | {value} | {size} | {run_time(sw)} | "
-                     f"{verdict} |")
-        png = os.path.join(out, sdir, "sweep.png")
-        if os.path.exists(png) and not (len(res) > 3 and res[3]):
-            shutil.copyfile(png, os.path.join(rdir, s["name"] + ".png"))
+        row, detail, rv = study_row(s, out, rdir)
+        table.append(row)
+        if detail:
+            details.append(detail)
+        revs |= rv
     lines.append(f"Runs made by peloid {', '.join(sorted(revs)) or '(none)'} (the git revision each point's "
                  f"summary.json names); report written at {rev}.")
     lines += [""] + table + [""]
