@@ -36,12 +36,15 @@
  * src/coupling/coupling_stages.c); the reflections (few) then run in
  * particle order, each particle's cell moved in the histogram row of the
  * thread that streamed it, so the counting sort stays consistent and the
- * result is bitwise the same for any thread count.  Only the events on the
- * same colloid depend on each other (each sees the velocity the one before
- * left), so with several threads (and no walls) each thread takes the
- * events of its block of colloids, in particle order (parallel_events);
- * a particle reflected into a second colloid would tie two blocks, and the
- * step then runs the serial loop instead.  Random numbers: Philox (seed,
+ * result is bitwise the same for any thread count.  Every event reads the
+ * colloids' velocities as the step found them (c: src/coupling/
+ * coupling_stages.c freezes them; the order of the events would otherwise
+ * enter the rule, and the counting sort's z-major order made colloids
+ * drift) and adds its impulse to vel; the impulses on one colloid add up
+ * in particle order, so with several threads (and no walls) each thread
+ * takes the events of its block of colloids, in particle order
+ * (parallel_events); a particle reflected into a second colloid would tie
+ * two blocks, and the step then runs the serial loop instead.  Random numbers: Philox (seed,
  * PL_RNG_REFLECT), counter (step, particle index, reflection number); particle indices
  * are those of the last (thread-independent) counting sort. */
 #include <math.h>

@@ -121,3 +121,44 @@ Test(coupling_momentum, hecht1_collision_rate, .timeout = 60)
     cr_expect_eq(sim->coupling->c1->truncations, 0);
     pl_sim_free(sim);
 }
+
+/* Coupling I has no preferred direction: a colloid pinned in a periodic box
+ * (Hecht Table I's resolution: gamma = 2.5, lambda = 0.6, hecht_axes, a =
+ * R / 2, stick_stochastic, entry) leaves the fluid at rest on average.
+ * When each event saw the colloid velocity the events before it left
+ * (particle order = the counting sort's z-major order), the lower events
+ * pushed the colloid up before the upper ones met it and the fluid settled
+ * into a stream of P_z ~ +300 = 3 sqrt(M_f kT) (a free colloid drifted
+ * towards -z at a fifth of its thermal speed).  The fluid momentum relaxes
+ * through the colloid's drag in M_f D / kT ~ 430 steps, so its mean over
+ * steps 600-3000 has SE ~ sqrt(2 M_f kT 430 / 2400) ~ 60 per component;
+ * bound 2 sqrt(M_f kT) = 202 (3.4 SE; the old stream is 5 SE). */
+Test(coupling_momentum, hecht1_pinned_no_stream, .timeout = 120)
+{
+    const char *text =
+        "seed = 11;\n"
+        "box: { cells = [16, 16, 16]; };\n"
+        "fluid: { density = 2.5; temperature = 1.0; };\n"
+        "srd: { dt = 0.6; rule = \"hecht_axes\"; grid_shift = false; };\n"
+        "thermostat: { type = \"heyes\"; temperature = 1.0; };\n"
+        "colloids: { count = 1; radius = 2.0; mass_density = 9.75; temperature = 1.0;\n"
+        "  init = \"lattice\"; pairs = \"\"; substeps = 1; };\n"
+        "coupling: { method = \"hecht1\"; boundary = \"stick_stochastic\"; placement = \"entry\"; pinned = true; };\n";
+    const long long steps = pl_test_quick() ? 100 : 3000, from = pl_test_quick() ? 50 : 600;
+    pl_sim_t *sim = pl_test_sim(text, 2);
+    double sum[3] = {0.0, 0.0, 0.0}, P[3], M = 0.0;
+    double n = 0.0;
+    for (long long s = 0; s < steps; ++s) {
+        pl_test_steps(sim, 1);
+        if (s < from || s % 10) continue;
+        pl_coupling_total_momentum(sim, P, &M);
+        for (int d = 0; d < 3; ++d) sum[d] += P[d];
+        n += 1.0;
+    }
+    const double Mf = (double)sim->fluid.n, bound = 2.0 * sqrt(Mf);
+    for (int d = 0; d < 3; ++d) {
+        cr_log_info("pinned colloid, coupling I: mean fluid momentum[%d] = %.1f (bound %.0f)", d, sum[d] / n, bound);
+        if (!pl_test_quick()) cr_expect_lt(fabs(sum[d] / n), bound, "axis %d: <P> = %.1f", d, sum[d] / n);
+    }
+    pl_sim_free(sim);
+}

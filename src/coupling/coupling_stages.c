@@ -86,6 +86,7 @@ static int scratch_grow(pl_coupling1_scratch_t *sc, size_t n, size_t nc)
 void pl_coupling1_free(pl_coupling1_state_t *s)
 {
     if (!s) return;
+    free(s->vstart);
     pl_coupling_lookup_free(&s->lk);
     pl_free(s->found);
     pl_free(s->counts);
@@ -144,7 +145,16 @@ int pl_coupling_stage_reflect_cells(pl_sim_t *sim, void *ctx, pl_err_t *err)
 }
 
 /* Coupling I after stream+bin: reflections with their impulses on the
- * colloids, event counters. */
+ * colloids, event counters.  Every event of the step sees the colloids'
+ * velocities (V, W) as the step found them; the impulses add up on the
+ * colloids in particle order.  An event that saw the velocity the events
+ * before it left (as until 2026-12-05) made the rule depend on the order
+ * of the events, which is the counting sort's (z, then y, then x): the
+ * lower events, handled first, had pushed the colloid up before the upper
+ * ones met it, so the upper ones met it faster and pushed it down harder;
+ * a free colloid drifted at ~0.01 a0/t0 (a fifth of its thermal speed)
+ * towards -z and -y, and a pinned one held a fluid stream of ~0.03 a0/t0
+ * (tests/test_coupling_momentum.c). */
 int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)ctx;
@@ -153,6 +163,23 @@ int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_colloid_t *c = sim->colloids;
     s->p.step = (uint64_t)sim->step;
     pl_coupling_colloids_t v = pl_coupling_view(c);
+    if (s->vstart_cap < c->n) {
+        free(s->vstart);
+        s->vstart_cap = 0;
+        if (!(s->vstart = malloc(6 * (c->n + 1) * sizeof *s->vstart)))
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloid velocities of the coupling");
+        s->vstart_cap = c->n;
+    }
+    {
+        const double *live[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
+        for (int j = 0; j < 6; ++j) memcpy(s->vstart + (size_t)j * c->n, live[j], c->n * sizeof *s->vstart);
+        v.vx = s->vstart;
+        v.vy = s->vstart + c->n;
+        v.vz = s->vstart + 2 * c->n;
+        v.wx = s->vstart + 3 * c->n;
+        v.wy = s->vstart + 4 * c->n;
+        v.wz = s->vstart + 5 * c->n;
+    }
     /* the streaming ran the detection armed for it (it clears the hook),
      * else the colloids near each collision cell of the binning now */
     const int detected = s->armed_step == sim->step && !sim->stream_hook;
