@@ -173,6 +173,7 @@ validate-physics: $(VALIDATE_BIN) $(BIN)
 	@set -e; for t in $(VALIDATE_BIN); do echo "== $$t"; $$t --jobs 1; done
 	@bash tests/stress.sh ./$(BIN) 80000
 	@bash tests/calibration_potential.sh ./$(BIN)
+	@bash tests/calibration_coupling1.sh ./$(BIN)
 	@echo "make validate-physics: all suites passed"
 validate: validate-physics
 	@$(MAKE) --no-print-directory studies validation-report

@@ -318,6 +318,11 @@ void pl_mapping_plausible(const struct pl_scene *scene, pl_mapping_t *m);
  * d_col_box from the scene's box (after the mapping set box.cells), and
  * its lines in the text report and its object in the JSON one. */
 void pl_mapping_diffusion_box(struct pl_scene *scene);
+/* c of D(phi) = D0 (1 - c phi) for the scene's finite colloids: 1.1795 for slip
+ * spheres (PL Sec. VI.C, ref. 90: the potential coupling, coupling I's slip
+ * rule), 1.8315 for stick spheres (Batchelor 1976: coupling I's stick rules);
+ * 0 for coupling II's points (and no coupling). */
+double pl_mapping_concentration_c(const struct pl_scene *scene);
 void pl_mapping_diffusion_print(const pl_mapping_t *m, FILE *out);
 struct json_t *pl_mapping_diffusion_json(const pl_mapping_t *m);
 

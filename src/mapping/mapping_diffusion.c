@@ -13,6 +13,18 @@
 #include "peloid/srd_theory.h"
 
 
+double pl_mapping_concentration_c(const struct pl_scene *s)
+{
+    /* a physical scene: its coarse_graining (the coupling keys are derived after the box) */
+    const pl_mapping_t *mp = &s->mapping.map;
+    const int ph = s->mapping.enabled;
+    const int pot = ph ? mp->cg.coupling == PL_COUPLING_POTENTIAL : s->coupling.method == PL_COUPLE_POTENTIAL;
+    const int one = ph ? mp->cg.coupling == PL_COUPLING_I : s->coupling.method == PL_COUPLE_HECHT1;
+    const int slip = ph ? mp->cg.boundary == PL_BOUNDARY_SLIP : s->coupling.boundary == PL_BOUND_SLIP;
+    if (pot || (one && slip)) return 1.1795;
+    return one ? 1.8315 : 0.0;
+}
+
 void pl_mapping_diffusion_box(struct pl_scene *s)
 {
     pl_mapping_t *m = &s->mapping.map;
@@ -21,10 +33,9 @@ void pl_mapping_diffusion_box(struct pl_scene *s)
     m->box_L = cbrt((double)n[0] * n[1] * n[2]);
     m->box_periodic = s->box.walls_z == PL_WALLS_NONE && s->box.walls_xy == PL_WALLS_NONE;
     const double eta = m->cg.gamma * m->nu_sim; /* m_f / (a0 t0), kT = 1 */
-    /* finite colloids (the potential coupling) slow each other: D (1 - c phi),
-     * c = 1.1795 for slip spheres (PL Sec. VI.C); coupling II's points and
-     * coupling I: not stated (1) */
-    m->conc_factor = m->cg.coupling == PL_COUPLING_POTENTIAL ? 1.0 - 1.1795 * s->mapping.colloid.phi_realised : 1.0;
+    /* finite colloids (the potential coupling, coupling I) slow each other:
+     * D (1 - c phi); coupling II's points: 1 */
+    m->conc_factor = 1.0 - pl_mapping_concentration_c(s) * s->mapping.colloid.phi_realised;
     m->d_col_box = m->box_periodic ? m->d_col_sim * m->conc_factor - pl_srd_hasimoto_mobility(eta, m->box_L)
                                    : NAN; /* kT = 1 */
 }
@@ -53,13 +64,14 @@ void pl_mapping_diffusion_print(const pl_mapping_t *m, FILE *f)
                 c->n_colloids, c->box, c->phi, c->steps, c->d_box, c->d_box_se, c->hasimoto, c->d_theory,
                 c->d_inf / c->d_theory, c->wall_s > 0 ? "run now, cached in" : "read from", c->cache);
     if (c->d_inf > 0 && c->concentration > 0 && c->concentration != 1.0)
-        fprintf(f, "    calibration concentration correction: D_box + images = D (1 - 1.1795 phi) = D x %.4f (slip "
-                   "spheres, PL Sec. VI.C)\n", c->concentration);
+        fprintf(f, "    calibration concentration correction: D_box + images = D (1 - c phi) = D x %.4f, c = %.4f "
+                   "(slip spheres 1.1795, PL Sec. VI.C; stick spheres 1.8315, Batchelor 1976)\n",
+                c->concentration, c->phi > 0 ? (1.0 - c->concentration) / c->phi : 0.0);
     if (m->box_periodic)
         fprintf(f, "    in this scene's periodic box (L = %.4g a0) a dilute colloid diffuses with D_L = %.5g a0^2/t0 "
                    "= %.4g m^2/s, %.4g of the real D (periodic images, Hasimoto%s; compare D_L with a measured D)\n",
                 m->box_L, m->d_col_box, m->d_col_box * si(m), m->d_col_box / m->d_col_sim,
-                m->conc_factor != 1.0 ? ", and the scene's phi: 1 - 1.1795 phi, PL Sec. VI.C" : "");
+                m->conc_factor != 1.0 ? ", and the scene's phi: 1 - c phi" : "");
     else
         fprintf(f, "    the scene's box has walls: a measured D is also slowed by them (not corrected here)\n");
 }

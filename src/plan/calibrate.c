@@ -10,12 +10,18 @@
  * The run: the scene's model fluid (gamma, lambda, rule, thermostat) and
  * colloid (radius, mass, coupling keys) in a periodic cube, without walls,
  * gravity or pair forces; coupling II: 32 colloids in one box (points in
- * their cells; 0.8 % of the cells); coupling I: one colloid per box, in
- * replicas (no overlaps, no concentration effect); the potential coupling:
+ * their cells; 0.8 % of the cells); coupling I and the potential coupling:
  * 8 colloids on a lattice in a box with phi <= 0.02, with PL's colloid-colloid
- * WCA (PL Eq. 16, sigma_cc by PL's rule: no overlaps) and the MD step the
- * mapping derives from the fluid-colloid WCA alone; their slowing of each
- * other, D (1 - 1.1795 phi) for slip spheres (PL Sec. VI.C), is divided out.  D from the slope of the
+ * WCA (PL Eq. 16, sigma_cc by PL's rule: no overlaps); the potential
+ * coupling at the MD step the mapping derives from the fluid-colloid WCA
+ * alone, coupling I at the contact guard's MD steps for the stiffest
+ * colloid-colloid contact a pair reaches with 20 kT; their slowing of each other is divided
+ * out: D (1 - 1.1795 phi) for slip spheres (PL Sec. VI.C, ref. 90; the
+ * potential coupling and coupling I's slip rule), D (1 - 1.8315 phi) for
+ * stick spheres (Batchelor 1976; coupling I's stick rules).  (Coupling I
+ * used one colloid per box in replicas; 8 per box give 2.4 times the
+ * colloid-time per fluid particle-step, and the blocks of one long run are
+ * many times the longest lag.)  D from the slope of the
  * mean-squared displacement between the lags t1 = 4 tau_v and t2 = 12 tau_v,
  * tau_v = 2 M D_theory, a bound of the velocity relaxation time M D (coupling
  * II colloids move ~2x faster than the theory's D): for an exponential
@@ -49,6 +55,7 @@
 #include <unistd.h>
 
 #include "peloid/colloid.h"
+#include "peloid/depletion.h"
 #include "peloid/io.h"
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/run.h"
@@ -56,6 +63,10 @@
 #include "peloid/srd_theory.h"
 
 enum { CAL_VERSION = 1, CAL_BLOCKS = 8, CAL_N2 = 32, CAL_NP = 8 };
+/* coupling I since 2026-12-05 (8 colloids per box; the events of a step see the colloid velocities the
+ * step found, src/coupling/coupling_stages.c), hashed into its keys only: the coupling II and potential
+ * calibrations keep their keys, a cached coupling-I calibration of the drifting coupling is not read */
+static const int CAL_VERSION_I = 2;
 static const long long CAL_SEED = 20261204;
 static const double CAL_BUDGET = 6e8;       /* fluid particle-steps of one calibration */
 static const double CAL_TARGET = 15000.0;   /* colloid-time in units of tau_v: ~3 % SE */
@@ -63,8 +74,9 @@ static const double CAL_TARGET = 15000.0;   /* colloid-time in units of tau_v: ~
  * its own budget (the fluid per colloid is phi-bound: ~8 x the particles per
  * colloid-time of coupling II's points) */
 static const double CAL_PHI_P = 0.02, CAL_BUDGET_P = 4e9;
-/* PL Sec. VI.C: D(phi) = D0 (1 - 1.1795 phi) for slip spheres (PL ref. 90) */
-static const double CAL_SLIP_PHI = 1.1795;
+/* coupling I's colloid-colloid contact: the gap a pair reaches with this energy (a thermal pair,
+ * e^-20), resolved as the contact guard asks (colloids.min_contact_steps per collision time) */
+static const double CAL_CONTACT_KT = 20.0;
 
 /* ---- the model run ------------------------------------------------------ */
 
@@ -72,6 +84,27 @@ typedef struct {
     int n, L, replicas;
     long long steps, stride, lag1, lag2; /* collision steps; lags in strides */
 } cal_plan_t;
+
+/* Coupling I's MD steps per collision step: the colloid-colloid WCA (PL Eq.
+ * 16, U = 4 eps (x^2 - x) + eps, x = (sigma_cc / r)^n) at the gap where a
+ * pair has CAL_CONTACT_KT of energy, U'' there, and min_contact_steps MD
+ * steps per collision time pi sqrt(m_red / U''), m_red = M / 2 (the contact
+ * guard's bound, colloid_guard.c). */
+static long long cal_contact_substeps(const pl_scene_t *c)
+{
+    const pl_scene_colloids_t *k = &c->colloids;
+    pl_depletion_params_t dp;
+    pl_colloid_depletion_params(c, &dp);
+    const double eps = k->wca.epsilon, n = k->wca.n, kT = pl_scene_kT(c);
+    const double sigma = pl_depletion_sigma_cc(2.0 * pl_depletion_cf_cutoff(&dp), eps, n, PL_DEPLETION_RULE_ENERGY * dp.kT);
+    const double E = CAL_CONTACT_KT * kT, x = 0.5 * (1.0 + sqrt(1.0 + (E - eps) / eps));
+    const double r = sigma / pow(x, 1.0 / n);
+    const double u2 = 4.0 * eps * n * (2.0 * (2.0 * n + 1.0) * x * x - (n + 1.0) * x) / (r * r);
+    const double M = k->mass_density * 4.0 / 3.0 * PL_PI * pow(k->radius, 3.0);
+    const double collision = PL_PI * sqrt(0.5 * M / u2);
+    const double steps = ceil(k->min_contact_steps * c->srd.dt / collision - 1e-9);
+    return steps < 1.0 ? 1 : (long long)steps;
+}
 
 /* The calibration scene: the scene's model with the box, colloids and
  * everything that does not set the friction replaced. */
@@ -85,9 +118,9 @@ static void cal_scene(const pl_scene_t *sc, const cal_plan_t *p, int replica, pl
     memset(c->box.wall_velocity, 0, sizeof c->box.wall_velocity);
     memset(c->fluid.body_force, 0, sizeof c->fluid.body_force);
     pl_scene_colloids_t *k = &c->colloids;
-    const int pot = sc->coupling.method == PL_COUPLE_POTENTIAL;
+    const int pot = sc->coupling.method == PL_COUPLE_POTENTIAL, one = sc->coupling.method == PL_COUPLE_HECHT1;
     k->count = p->n;
-    k->init = pot ? PL_CINIT_LATTICE : PL_CINIT_RANDOM;
+    k->init = pot || one ? PL_CINIT_LATTICE : PL_CINIT_RANDOM;
     k->polydispersity = 0.0;
     k->pairs[0] = '\0';
     k->integrator = PL_CINT_VERLET;
@@ -107,10 +140,11 @@ static void cal_scene(const pl_scene_t *sc, const cal_plan_t *p, int replica, pl
     memset(&k->hertz, 0, sizeof k->hertz);
     memset(&k->lub, 0, sizeof k->lub);
     memset(&k->wca, 0, sizeof k->wca);
-    if (pot) { /* finite colloids keep PL's repulsion (PL Eq. 16, Sec. III.C.1): no overlaps */
+    if (pot || one) { /* finite colloids keep PL's repulsion (PL Eq. 16, Sec. III.C.1): no overlaps */
         snprintf(k->pairs, sizeof k->pairs, "wca");
         k->wca = (pl_scene_wca_t){.epsilon = 2.5, .sigma = 0.0, .n = 24.0, .sigma_rule = PL_SIGMA_PL};
     }
+    if (one) k->substeps = cal_contact_substeps(c);
     c->coupling.pinned = 0;
     c->coupling.compensate_gravity = 0;
     memset(c->coupling.flow_velocity, 0, sizeof c->coupling.flow_velocity);
@@ -141,7 +175,9 @@ static uint64_t cal_key(const pl_scene_t *c, const cal_plan_t *p)
     const pl_scene_colloids_t *k = &c->colloids;
     const double cd[] = {k->radius, k->mass_density, k->temperature, k->max_overlap, k->neighbor_skin};
     h = fnv(h, cd, sizeof cd);
-    if (c->coupling.method == PL_COUPLE_POTENTIAL) { /* what couplings I and II leave at their defaults */
+    if (c->coupling.method == PL_COUPLE_HECHT1) h = fnv(h, &CAL_VERSION_I, sizeof CAL_VERSION_I);
+    if (c->coupling.method == PL_COUPLE_POTENTIAL || c->coupling.method == PL_COUPLE_HECHT1) {
+        /* what coupling II leaves at its defaults */
         const double pd[] = {(double)k->substeps, k->wca.epsilon, k->wca.sigma, k->wca.n, (double)k->wca.sigma_rule,
                              (double)k->init, k->min_contact_steps};
         h = fnv(h, pd, sizeof pd);
@@ -164,11 +200,11 @@ static int cal_plan(const pl_scene_t *sc, cal_plan_t *p)
     const double sigma = sc->colloids.radius, M = m->mass_sim, dt = sc->srd.dt;
     /* the theory's D sizes the run; coupling II colloids move ~2x faster */
     const double tau_v = M * 2.0 * m->d_col_theory;
-    const int two = sc->coupling.method == PL_COUPLE_HECHT2, pot = sc->coupling.method == PL_COUPLE_POTENTIAL;
-    const int many = two || pot; /* several colloids in one box */
+    const int two = sc->coupling.method == PL_COUPLE_HECHT2;
+    const int finite = sc->coupling.method == PL_COUPLE_POTENTIAL || sc->coupling.method == PL_COUPLE_HECHT1;
     p->L = (int)fmax(16.0, ceil(8.0 * sigma));
-    p->n = two ? CAL_N2 : pot ? CAL_NP : 1;
-    if (pot) /* phi <= CAL_PHI_P: the concentration correction stays small */
+    p->n = two ? CAL_N2 : CAL_NP;
+    if (finite) /* phi <= CAL_PHI_P: the concentration correction stays small */
         p->L = (int)fmax(p->L, ceil(cbrt(CAL_NP * 4.0 / 3.0 * PL_PI * sigma * sigma * sigma / CAL_PHI_P)));
     p->stride = (long long)fmax(1.0, floor(tau_v / dt / 2.0));
     const double sdt = (double)p->stride * dt;
@@ -178,17 +214,11 @@ static int cal_plan(const pl_scene_t *sc, cal_plan_t *p)
     /* each block holds 5 times the longest lag; the colloid-time the target asks */
     const double per_box = (double)p->L * p->L * p->L * sc->fluid.density;
     double strides = fmax(5.0 * CAL_BLOCKS * (double)p->lag2, CAL_TARGET * tau_v / (p->n * sdt));
-    double replicas = 1.0;
-    if (!many) { /* replicas of one colloid: the target over whole replicas */
-        strides = 5.0 * CAL_BLOCKS * (double)p->lag2;
-        replicas = ceil(CAL_TARGET * tau_v / (strides * sdt));
-    }
-    double cost = per_box * strides * (double)p->stride * replicas;
-    const double budget = pot ? CAL_BUDGET_P : CAL_BUDGET;
-    if (cost > budget) { /* within the budget; the SE says what it bought */
-        if (many) strides = fmax(5.0 * CAL_BLOCKS * (double)p->lag2, strides * budget / cost);
-        else replicas = fmax(2.0, floor(replicas * budget / cost));
-    }
+    const double replicas = 1.0; /* one box (the field is hashed: the keys keep it) */
+    double cost = per_box * strides * (double)p->stride;
+    const double budget = finite ? CAL_BUDGET_P : CAL_BUDGET;
+    if (cost > budget) /* within the budget; the SE says what it bought */
+        strides = fmax(5.0 * CAL_BLOCKS * (double)p->lag2, strides * budget / cost);
     p->replicas = (int)replicas;
     p->steps = (long long)ceil(strides) * p->stride;
     return M > 0 && tau_v > 0 ? 0 : -1;
@@ -274,9 +304,8 @@ static int cal_run(const pl_scene_t *sc, const cal_plan_t *p, int nthreads, pl_m
     cal->d_box_se = sqrt(var / (nb - 1.0) / nb);
     cal->hasimoto = kT * pl_srd_hasimoto_mobility(eta_of(sc), L);
     cal->phi = p->n * 4.0 / 3.0 * PL_PI * pow(sc->colloids.radius, 3) / (L * L * L);
-    /* finite colloids slow each other: D_box + H = D (1 - c phi) (PL Sec. VI.C); coupling II's points and the
-     * single colloid of coupling I: 1 */
-    cal->concentration = sc->coupling.method == PL_COUPLE_POTENTIAL ? 1.0 - CAL_SLIP_PHI * cal->phi : 1.0;
+    /* finite colloids slow each other: D_box + H = D (1 - c phi) (PL Sec. VI.C); coupling II's points: 1 */
+    cal->concentration = 1.0 - pl_mapping_concentration_c(sc) * cal->phi;
     cal->d_inf = (mean + cal->hasimoto) / cal->concentration / kT; /* a0^2/t0 at kT = 1, as the mapping uses it */
     cal->d_inf_se = cal->d_box_se / cal->concentration / kT;
     cal->n_colloids = p->n * p->replicas;
