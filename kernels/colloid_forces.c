@@ -7,7 +7,8 @@
  *   DLVO: Hecht Eqs. 1-2 with the parabolic primary minimum (Hecht Sec. II)
  *   Hertz: Hecht Eq. 3, normal damping Hecht Eq. 6, tangential viscous
  *          friction on the relative surface velocity (Hecht Sec. II), torques
- *   lubrication: Hecht Eqs. 4-5, limited at a minimum gap
+ *   lubrication: Hecht Eqs. 4-5, limited at a minimum gap, with its random
+ *          partner when p->lub_noise > 0 (lubrication.thermal)
  *   WCA: PL Eq. 16 with exponent n
  *   depletion_comp: Phi_comp = -Phi_depl (PL Sec. III.C.1, Eqs. 22-23),
  *          cubic Hermite interpolation of the table built by src/colloid/depletion.c
@@ -47,6 +48,17 @@
 #include "colloid_block.h"
 #include "peloid/colloid_kernels.h"
 #include "peloid/colloid_pair_terms.h"
+#include "peloid/rng.h"
+
+/* The standard normal number of pair (i, j) for the force pass at MD step
+ * p->noise_step: Philox with the counter (step, lower index, higher index),
+ * so the same for either order, any thread count and after a restart. */
+static inline double pair_gauss(const pl_colloid_pair_params_t *p, size_t i, size_t j)
+{
+    const size_t lo = i < j ? i : j, hi = i < j ? j : i;
+    const pl_rand4_t u = pl_rng_uniform4(p->noise_seed, PL_RNG_LUB_NOISE, p->noise_step, lo, hi);
+    return sqrt(-2.0 * log(u.u[0])) * cos(6.283185307179586476925 * u.u[1]); /* Box-Muller */
+}
 
 typedef struct {
     double f[3], t[3], e[PL_CE_NTERMS];
@@ -157,6 +169,11 @@ static inline __attribute__((always_inline)) void pair_eval(
         double zl = pl_pair_lub_zeta(h, ri, rj, p->lub_eta, p->lub_hmin, p->lub_hcut);
         zeta += zl;
         fr -= zl * vn; /* Hecht Eq. 4 */
+        /* its random partner (fluctuation-dissipation, as DPD's: Espanol &
+         * Warren 1995), sigma = sqrt(2 kT zeta / dt); the draw is the
+         * pair's own, symmetric in i and j, so either owner gives F_i =
+         * sigma g e_ij and F_j = -F_i; the guard's zeta is the friction's */
+        if (!E && p->lub_noise != 0.0) fr += p->lub_noise * sqrt(zl) * pair_gauss(p, i, j);
     }
     fo[0] += fr * ex;
     fo[1] += fr * ey;

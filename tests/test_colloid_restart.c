@@ -6,8 +6,10 @@
  * drift guard's reference energy (NVE scene), the Brownian integrator (noise
  * keyed by the MD step), polydisperse radii, multiple time stepping (slow
  * forces recomputed from the restored positions), adaptive substeps (each
- * collision step's MD steps chosen from the state); with and without fluid.  Two
- * scenes have >= PL_COLLOID_OMP_MIN colloids so the kernels really thread. */
+ * collision step's MD steps chosen from the state), lubrication with its
+ * random partner (keyed by the MD step and the pair); with and without
+ * fluid.  Five scenes have >= PL_COLLOID_OMP_MIN colloids so the kernels
+ * really thread. */
 #include <criterion/criterion.h>
 #include <stdio.h>
 #include <unistd.h>
@@ -56,6 +58,15 @@ static const char *scenes[] = {
     "colloids: { count = 300; radius = 0.62; mass_density = 39.0; temperature = 1.0; substeps = 200;\n"
     "  min_substeps = 10; adaptive_substeps = true; slow_interval = 2; pairs = \"dlvo, hertz\"; };\n"
     "coupling: { method = \"hecht2\"; };\nhertz: { K = 1000.0; };\n"
+    "dlvo: { psi0 = 50.0; kappa = 3.0e8; hamaker = 4.76e-20; length_unit = 4.03e-7; };\n",
+    /* lubrication with its random partner (lubrication.thermal, on by
+     * default: Philox keyed by the MD step and the pair), Hecht Fig. 14
+     * DLVO, coupling II; lattice gaps of 0.19 a0, inside the cut-off gap */
+    "seed = 17;\nbox: { cells = [10, 10, 10]; };\nfluid: { density = 5.0; };\nsrd: { dt = 0.1; };\n"
+    "colloids: { count = 300; radius = 0.62; mass_density = 39.0; temperature = 1.0; substeps = 10;\n"
+    "  pairs = \"dlvo, hertz, lubrication\"; min_contact_steps = 0.0; };\n"
+    "coupling: { method = \"hecht2\"; };\nhertz: { K = 1000.0; };\n"
+    "lubrication: { viscosity = 5.0; cutoff_gap = 0.5; };\n"
     "dlvo: { psi0 = 50.0; kappa = 3.0e8; hamaker = 4.76e-20; length_unit = 4.03e-7; };\n",
 };
 enum { NSCENES = sizeof scenes / sizeof *scenes };

@@ -197,13 +197,18 @@ int pl_colloid_neighbors_init(pl_colloid_t *c, double rc, double skin_fraction, 
 /* Pair and external forces and torques of the present positions (the
  * neighbour list rebuilt first when a colloid has moved by more than half
  * the skin since its build); the external-force energy rows of epot.
+ * The positions are taken as those after c->md_step MD steps: that count
+ * keys the lubrication noise (lubrication.thermal), so a caller that
+ * integrates counts the step before its end-of-step forces (as
+ * pl_colloid_verlet_step does).
  * PL_ERR_NOMEM when a grown neighbour list cannot be allocated. */
 int pl_colloid_forces(pl_colloid_t *c, pl_err_t *err);
 
 /* One velocity-Verlet MD step with the force evaluation (the neighbour list
  * rebuilt when needed) and the guard maxima into g, through the fused
  * kernels of kernels/colloid_verlet.c: the same state as pl_colloid_kick,
- * pl_colloid_drift, pl_colloid_forces, pl_colloid_kick. */
+ * pl_colloid_drift, ++c->md_step, pl_colloid_forces, pl_colloid_kick (the
+ * caller, pl_colloid_md_step, counts the step). */
 int pl_colloid_verlet_step(pl_colloid_t *c, pl_colloid_guard_max_t *g, pl_err_t *err);
 /* One MD step (velocity Verlet + quaternions, or BD), then the guards. */
 int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err);

@@ -111,6 +111,16 @@ typedef struct {
     double hertz_K, hertz_beta, hertz_gamma_t;
     /* lubrication, Hecht Eqs. 4-5 */
     double lub_eta, lub_hmin, lub_hcut;
+    /* its random partner (lubrication.thermal, velocity Verlet only): a
+     * pair within lub_hcut gets the radial force lub_noise sqrt(zeta) g,
+     * lub_noise = sqrt(2 kT / dt_MD), g a standard normal number of Philox
+     * (key: noise_seed, PL_RNG_LUB_NOISE; counter: noise_step, the lower
+     * and the higher colloid index); noise_step is the MD step count of the
+     * positions the forces are evaluated at, set by the caller of each
+     * force pass (src/colloid/colloid_state.c); off when lub_noise is 0 */
+    double lub_noise, lub_kT;
+    int lub_thermal;
+    uint64_t noise_seed, noise_step;
     /* WCA, PL Eq. 16: sigma > 0 fixed, else R_i + R_j */
     double wca_eps, wca_sigma, wca_n, wca_rfac; /* rfac = 2^{1/n} */
     /* depletion compensation Phi_comp = -Phi_depl (PL Sec. III.C.1): cubic

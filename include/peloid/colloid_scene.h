@@ -23,6 +23,7 @@ typedef struct {
 
 typedef struct {
     double viscosity, min_gap, cutoff_gap;
+    int thermal; /* bool: the random partner of the squeeze friction (fluctuation-dissipation) */
 } pl_scene_lub_t;
 
 typedef struct {

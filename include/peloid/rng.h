@@ -26,6 +26,8 @@ typedef enum {
     PL_RNG_COLLOID_PLACE = 18,    /* random placement attempts */
     PL_RNG_COLLOID_VEL = 19,      /* initial translational/rotational velocities */
     PL_RNG_COLLOID_RADIUS = 20,   /* polydisperse radii */
+    PL_RNG_LUB_NOISE = 21,        /* random pair force of the lubrication friction (kernels/colloid_forces.c);
+                                     counter (MD step, lower, higher colloid index) */
     /* colloid-solvent couplings */
     PL_RNG_COUPLE2_ROTATE = 32,   /* coupling II rotation of a cell with colloids */
     PL_RNG_COUPLE2_THERMOSTAT = 33, /* coupling II Heyes factor */

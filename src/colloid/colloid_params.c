@@ -239,6 +239,11 @@ int pl_colloid_term_setup_lub(const pl_scene_t *scene, pl_colloid_pair_params_t 
     p->lub_eta = scene->colloids.lub.viscosity;
     p->lub_hmin = scene->colloids.lub.min_gap;
     p->lub_hcut = scene->colloids.lub.cutoff_gap;
+    /* the random partner: only where velocities are integrated (the
+     * Brownian integrator has its own noise); lub_noise is set per force
+     * pass (pl_colloid_lub_noise) */
+    p->lub_thermal = scene->colloids.lub.thermal && scene->colloids.integrator == PL_CINT_VERLET;
+    p->lub_kT = scene->colloids.temperature;
     p->gap_cut = fmax(p->gap_cut, p->lub_hcut);
     return 0;
 }

@@ -215,6 +215,21 @@ static const pl_colloid_nlist_t *pair_list(const pl_colloid_t *c)
     return c->slow_interval > 1 ? &c->near : &c->nlist;
 }
 
+/* The lubrication noise of a force pass at the positions of MD step
+ * `step` (the MD steps done to reach them): its amplitude sqrt(2 kT / dt)
+ * for this MD step and the counter of its draws (pl_colloid_pair_params_t).
+ * Both evaluations of one time level (restart: read from the checkpoint
+ * instead; coupling III: the step's forces recomputed at its start) draw
+ * the same numbers, so each time level has one random force, which its two
+ * half kicks share (DPD velocity Verlet). */
+static void lub_noise_set(pl_colloid_t *c, long long step)
+{
+    pl_colloid_pair_params_t *p = &c->pair;
+    p->noise_seed = c->seed;
+    p->noise_step = (uint64_t)step;
+    p->lub_noise = p->lub_thermal && (p->terms & PL_CT_LUB) ? sqrt(2.0 * p->lub_kT / c->dt) : 0.0;
+}
+
 int pl_colloid_verlet_step(pl_colloid_t *c, pl_colloid_guard_max_t *g, pl_err_t *err)
 {
     const pl_colloid_dyn_t s = colloid_dyn(c);
@@ -231,6 +246,7 @@ int pl_colloid_verlet_step(pl_colloid_t *c, pl_colloid_guard_max_t *g, pl_err_t 
     const double disp2 = pl_colloid_verlet_open(&s, c->dt, open_h, &c->nlist, c->nthreads);
     if (nlist_ensure(c, disp2, err)) return err->code;
     const pl_colloid_view_t v = colloid_view(c);
+    lub_noise_set(c, c->md_step + 1); /* the close's forces: positions after this step */
     pl_colloid_verlet_close(&s, c->dt, close_h, &c->pair, pair_list(c), &c->nlist, &v, &c->ext,
                             c->epot, g, c->nthreads);
     return 0;
@@ -243,6 +259,7 @@ int pl_colloid_forces(pl_colloid_t *c, pl_err_t *err)
                               : INFINITY;
     if (nlist_ensure(c, disp2, err)) return err->code;
     pl_colloid_view_t v = colloid_view(c);
+    lub_noise_set(c, c->md_step);
     pl_colloid_pair_forces(&c->pair, pair_list(c), &v, c->nthreads);
     if (c->slow_interval > 1)
         pl_colloid_slow_forces(&c->pair, nl, c->x, c->y, c->z, c->rad, c->fsx, c->fsy, c->fsz, c->nthreads);

@@ -469,6 +469,11 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
                 for (int d = 0; d < 3; ++d) cp->impulse[d] += h * ps->cf[(size_t)d * c->n + k];
         mean_force_add(ps, c->n, h);
         const int more = s + 1 < S;
+        /* the MD step is done once these forces are in: counted first, so
+         * they are those of its end (keys the lubrication noise,
+         * pl_colloid_forces; the start of the next collision step recomputes
+         * them with the same numbers) */
+        if (!cp->pinned) c->md_step++;
         if (forces(cp, sim, c, g, h, more ? 2 : 1, more ? dtm : 0.0, wacc, err)) return err->code;
         mean_force_add(ps, c->n, h);
         if (cp->pinned)
@@ -477,7 +482,6 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
         if (!cp->pinned) {
             pl_colloid_kick(c->n, h, c->mass, c->inertia, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz,
                             c->vx, c->vy, c->vz, c->wx, c->wy, c->wz, c->nthreads);
-            c->md_step++;
             int rc = pl_colloid_guard(c, 0, err);
             if (rc) return rc;
         }

@@ -27,7 +27,7 @@ static const pl_key_t colloid_keys[] = {
     {"mass_density", PL_KEY_REAL, OFF(mass_density), 0, 1e9, PL_KEY_MIN_OPEN, NULL, 5, NULL,
      "m_f / a0^3", "colloid mass density: M = density 4/3 pi R^3, I = 2/5 M R^2 (physical{} scenes: derived, see peloid params)"},
     {"temperature", PL_KEY_REAL, OFF(temperature), 0, 1e6, 0, NULL, 1, NULL,
-     "kT_ref", "initial colloid temperature (Maxwell velocities, zero total momentum); BD noise kT (physical{} scenes: derived, see peloid params)"},
+     "kT_ref", "initial colloid temperature (Maxwell velocities, zero total momentum); BD noise kT; kT of the lubrication noise (lubrication.thermal) (physical{} scenes: derived, see peloid params)"},
     {"init", PL_KEY_CHOICE, OFF(init), 0, 0, 0, init_choices, PL_CINIT_LATTICE, NULL,
      "-", "initial positions: lattice (simple cubic filling the box), random "
           "(sequential addition without overlap, seeded by run.seed), file"},
@@ -151,6 +151,12 @@ static const pl_key_t lub_keys[] = {
      "a0", "limit of the 1/h divergence: force of gap h is that of h + min_gap (Hecht Sec. II)"},
     {"cutoff_gap", PL_KEY_REAL, OFF(lub.cutoff_gap), 0, 100, PL_KEY_MIN_OPEN, NULL, 1, NULL,
      "a0", "gap beyond which the squeeze force is off (shifted to zero there)"},
+    {"thermal", PL_KEY_BOOL, OFF(lub.thermal), 0, 1, PL_KEY_FP_SET, NULL, 1, NULL,
+     "-", "verlet: the squeeze friction zeta(h) gets its fluctuation-dissipation partner, a random "
+          "pair force sqrt(2 kT zeta / dt_MD) N(0,1) along the line of centres, equal and opposite "
+          "(kT = colloids.temperature; as the dissipative and random forces of DPD, Espanol & Warren "
+          "1995), so that the pair's relative normal velocity is kept at the colloid temperature; "
+          "false: Hecht Eq. 4 as written, friction only (it cools the colloids)"},
 };
 
 static const pl_key_t wca_keys[] = {
