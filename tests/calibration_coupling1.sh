@@ -11,12 +11,17 @@
 # (Hasimoto and 1 - 1.8315 phi for stick spheres, Batchelor 1976;
 # summary.json mapping.colloid_diffusion.d_box_m2_s), within the issue's
 # 10 % with SE < 3.3 % (10 % = 3 SE), over the lags the calibration fits
-# (4-12 x 2 M D_theory).  PL_C1_STEPS overrides the run length (130000
-# steps: a colloid's MSD slope over those lags scatters 29 % per 6600 t0,
-# so 8 colloids need ~78000 t0 for 3 %).  Shown to fail: the calibration of
-# one colloid per box in 5 replicas (main 5459ad5) mapped this suspension
-# 18-24 % faster than it diffused (10 seeds x 6000 steps, -24 % +- 2 % and
-# -18 % against a 23-replica calibration).
+# (4-12 x 2 M D_theory).  PL_C1_STEPS overrides the run length (60000
+# steps: a colloid's MSD slope over those lags scatters 17 % between runs
+# of 6600 t0, so 8 colloids' lateral D needs ~36000 t0 for 3 %).
+# Measured: 4.271e-13 +- 0.11e-13 m^2/s against 5.493e-13 x 0.7780 =
+# 4.274e-13 (-0.1 %, SE 2.5 %); the lone colloid below settles at 8.47e-6
+# +- 0.25e-6 m/s against 1.012e-5 x 0.8090 = 8.18e-6 (+3.5 %, SE 2.9 %);
+# 5.6 CPU-min (13 min wall at load ~6 on the shared 2 cores).  Shown to
+# fail: before 2026-12-05 the colloids of coupling I drifted (see
+# test_coupling_momentum.hecht1_pinned_no_stream) and the calibration of
+# one colloid per box in 5 replicas mapped this suspension 18-24 % faster
+# than it diffused (10 seeds x 6000 steps: -24 % +- 2 %).
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 ROOT=$(realpath "$(dirname "$0")/..")

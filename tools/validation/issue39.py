@@ -80,16 +80,34 @@ def fig9_lub(out):
     return res
 
 
-def control(lub):
-    """E2's control (no lubrication, 1.4e8, current revision) against hecht_fig9_kappa's recorded point."""
+def fig9_kappa_points(out):
+    """hecht_fig9_kappa's largest cluster (%, SE) per kappa and a label of its runs: from its sweep in out when
+    there, else as REPORT.md recorded it."""
+    sw = load(out, "hecht_fig9_kappa")
+    if sw is None:
+        return RECORDED["fig9_kappa"], "REPORT.md (runs of 493a6e8, labelled 0.338 s)"
+    pts, revs = {}, set()
+    for p in sw["points"]:
+        if not p["summary"]:
+            continue
+        n = p["summary"]["mapping"]["colloid"]["n_colloids"]
+        lc = p["summary"]["observables"]["largest_cluster"]
+        pts[p["params"]["physical.kappa"]] = (round(100 * lc["value"] / n, 1), round(100 * lc["stderr"] / n, 1))
+        revs.add(p["summary"]["peloid"]["git_revision"])
+    return pts, f"its runs of {', '.join(sorted(revs))}"
+
+
+def control(lub, out):
+    """E2's control (no lubrication, 1.4e8, current revision) against hecht_fig9_kappa's point."""
     c = lub.get(("hecht_fig9_lub", False, 1.4e8))
-    if not c:
+    rec, label = fig9_kappa_points(out)
+    if not c or 1.4e8 not in rec:
         return ""
-    f, s = RECORDED["fig9_kappa"][1.4e8]
+    f, s = rec[1.4e8]
     same = abs(100 * c[0] - f) < 0.05
     return (f"The control without lubrication gives {100 * c[0]:.1f} ± {100 * c[1]:.1f} % against hecht_fig9_kappa's "
-            f"{f} ± {s} % in REPORT.md (runs of 493a6e8, labelled 0.338 s): "
-            + ("equal to the printed digits (the model is unchanged; only the mapped time of the 1140 steps changed since). " if same else
+            f"{f} ± {s} % ({label}): "
+            + ("equal to the printed digits (the same model and trajectory). " if same else
                "a different trajectory. "))
 
 
@@ -137,7 +155,7 @@ def verdict_fig9(out, rdir):
                 f"well to its edge {1e3 * a14['t_edge']:.0f} ms, to one diameter away {1e3 * a14['t_away']:.0f} ms, "
                 f"over the {a14['V_b']:.1f} kT barrier {a14['t_in']:.0f} s; Smoluchowski collision time "
                 f"{1e3 * a14['t_coll']:.0f} ms (all with the mapped D0 = kT/6πηR): both ≪ Hecht's 1 s.  "
-                f"E2 (studies/hecht_fig9_lub.cfg, current revision): {pts or 'not run'}.  {control(lub)}{lub_note(out)}  "
+                f"E2 (studies/hecht_fig9_lub.cfg, current revision): {pts or 'not run'}.  {control(lub, out)}{lub_note(out)}  "
                 f"For information (no rule; added after the rules): Brownian dynamics, Eqs. 1–2, no hydrodynamics, "
                 f"D0 = the mapped D (studies/hecht_fig9_bd.cfg): {bd or 'not run'}.")
     cpu_s = sum(lub.get((n, "cpu"), 0.0) for n in ("hecht_fig9_lub", "hecht_fig9_lub_3s", "hecht_fig9_bd"))
@@ -165,20 +183,25 @@ def lub_kinetic(out):
 
 
 def lub_note(out):
-    """The finding of E2's runs: the squeeze lubrication of Hecht Eqs. 4-5 has no fluctuating partner."""
+    """E2's colloid temperature: the squeeze lubrication of Hecht Eqs. 4-5 with its fluctuating partner
+    (lubrication.thermal, since 2026-12-05; without it the colloids cooled to 0.44 kT)."""
     kin = lub_kinetic(out)
     if (True, 1.4e8) not in kin or (False, 1.4e8) not in kin:
         return ""
     a, b = kin[(True, 1.4e8)], kin[(False, 1.4e8)]
-    return (f"Found in E2 (thermo.tsv, second half, κ = 1.4e8): the colloids' translational kinetic energy is "
+    head = (f"E2's colloid temperature (thermo.tsv, second half, κ = 1.4e8): translational kinetic energy "
             f"{a[1]:.0f} kT with lubrication against {b[1]:.0f} without it, i.e. {a[0]:.2f} and {b[0]:.2f} of "
             f"equipartition (3/2) {a[2]} kT (other κ with lubrication: "
             + ", ".join(f"{k / 1e8:.1f}e8: {v[0]:.2f}" for (l, k), v in sorted(kin.items()) if l and k != 1.4e8)
-            + "): the squeeze force of Hecht Eqs. 4–5 is dissipative with no random partner, so it cools the "
-              "colloids and deepens the well in units of their temperature.  E2 therefore tests Hecht's set-up "
-              "(Hecht's Eq. 4 has no noise either: had it cooled his colloids as it cools these, it would have made clustering stronger, not weaker), not "
-              "equilibrium; the missing fluctuation–dissipation partner is a defect of peloid's lubrication, to be "
-              "filed as its own issue.")
+            + ")")
+    if abs(a[0] - 1.0) < 0.1:
+        return (head + ": the squeeze force has its fluctuation–dissipation partner (lubrication.thermal, the "
+                "default since 2026-12-05; the first E2 runs, without it, cooled the colloids to 0.44 of "
+                "equipartition and clustered at 1.2, 1.3 and 1.4e8: 82.7, 98.7, 96.8 %), so E2 tests equilibrium "
+                "with lubrication.  ")
+    return (head + ": the squeeze force of Hecht Eqs. 4–5 is dissipative with no random partner here "
+            "(lubrication.thermal = false), so it cools the colloids and deepens the well in units of their "
+            "temperature; E2 then tests Hecht's literal set-up, not equilibrium.  ")
 
 
 def plot_fig9(lub, path):
@@ -213,13 +236,33 @@ def plot_fig9(lub, path):
     save_figure(plt, fig, path)
 
 
-def verdict_fig11():
+def fig9_s4(out):
+    """hecht_fig9_diagram's largest cluster (%, SE) at kappa = 2e8 /m, 20 and 50 mV, and a label: from its sweep in
+    out when there, else as REPORT.md recorded it."""
+    sw = load(out, "hecht_fig9_diagram")
+    got, revs = {}, set()
+    for p in (sw or {}).get("points", []):
+        if not p["summary"] or p["params"].get("physical.kappa") != 2.0e8:
+            continue
+        mv = {0.020: "20", 0.050: "50"}.get(p["params"].get("physical.surface_potential"))
+        if mv:
+            n = p["summary"]["mapping"]["colloid"]["n_colloids"]
+            lc = p["summary"]["observables"]["largest_cluster"]
+            got[mv] = (round(100 * lc["value"] / n, 1), round(100 * lc["stderr"] / n, 1))
+            revs.add(p["summary"]["peloid"]["git_revision"])
+    if len(got) == 2:
+        return got, f"hecht_fig9_diagram, runs of {', '.join(sorted(revs))}"
+    return RECORDED["fig9_diagram_S4"], "REPORT.md, hecht_fig9_diagram, 0.338 s"
+
+
+def verdict_fig11(out):
     t = b2_tool()
     pts = [t.point(psi, 2.0e8) for psi in (0.020, 0.035, 0.050)]
     th = [math.tanh(t.E * p["psi0"] / (4 * t.KB * t.SCENE["T"])) ** 2 for p in pts]
     mono = all(th[i] < th[i + 1] for i in range(2))
     rising = all(pts[i][k] < pts[i + 1][k] for i in range(2) for k in ("V_m", "V_b", "b2"))
-    s20, s50 = RECORDED["fig9_diagram_S4"]["20"], RECORDED["fig9_diagram_S4"]["50"]
+    s4, label = fig9_s4(out)
+    s20, s50 = s4["20"], s4["50"]
     falls = (s20[0] - s50[0]) > 3 * math.hypot(s20[1], s50[1])
     v = "paper inconsistent" if (mono and rising and falls) else "not settled"
     ev = ("Hecht Eqs. 1–2 at κ = 2e8 /m (scene constants): " + "; ".join(
@@ -228,7 +271,7 @@ def verdict_fig11():
         f"B2* = {p['b2']:.2f}" for p, x in zip(pts, th))
         + ".  V(r) = V_vdW(r) + tanh²(eΨ0/4kT) × (a Ψ0-free positive function of r), so V rises with Ψ0 at every r: the "
           "attraction weakens as Ψ0 grows, the opposite of the caption, and consistent with Hecht's own 'clustering "
-          f"upper left, suspended lower right'.  peloid (REPORT.md, hecht_fig9_diagram, 0.338 s): largest cluster "
+          f"upper left, suspended lower right'.  peloid ({label}): largest cluster "
           f"{s20[0]} ± {s20[1]} % at 20 mV, {s50[0]} ± {s50[1]} % at 50 mV.")
     return ("Hecht Fig. 11 caption (hecht_fig9_diagram S4)", v, ev, "R2", 0.0, ["issue39_b2.png"])
 
@@ -425,7 +468,7 @@ def section(out, rdir):
     f9 = verdict_fig9(out, rdir)
     rz = verdict_rz(out)
     dp = verdict_dphi(out)
-    rows = [f9, verdict_fig11(), rz, dp, verdict_vacf(), verdict_rdf(), verdict_viscosity()]
+    rows = [f9, verdict_fig11(out), rz, dp, verdict_vacf(), verdict_rdf(), verdict_viscosity()]
     b2.main_plot(os.path.join(rdir, "issue39_b2.png"))
     plot_fig9(f9[6], os.path.join(rdir, "issue39_fig9_lub.png"))
     plot_rz(os.path.join(rdir, "issue39_rz.png"))
@@ -451,9 +494,9 @@ def section(out, rdir):
               "but the secondary well has no outer saddle (V rises monotonically to 0): the tool gives the radial "
               "mean first-passage time instead (to the well's edge and to one diameter away) and Kramers only for "
               "the inward escape over the barrier; the rule's condition (< 1 s) holds for each.  (2) E2 ran at the base "
-              "scene's length (0.64 s of mapped time, as the rule says); the issue's 3 s runs with lubrication were "
-              "not made, because E2 showed that the lubrication cools the colloids (above), so a longer lubricated "
-              "run tests Hecht's set-up, not equilibrium.  (3) studies/hecht_fig9_bd.cfg (Brownian dynamics of Eqs. "
+              "scene's length (0.64 s of mapped time, as the rule says), which decides; the issue's 3 s runs with "
+              "lubrication (studies/hecht_fig9_lub_3s.cfg, after the lubrication got its random force) are listed "
+              "beside them and decide nothing.  (3) studies/hecht_fig9_bd.cfg (Brownian dynamics of Eqs. "
               "1–2) was added after the rules as the equilibrium reference the issue asks for; it decides nothing.  "
               "(4) The issue's B2* values are reproduced only with another normalisation and other constants (the "
               "table's note).", ""]
