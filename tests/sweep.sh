@@ -58,6 +58,7 @@ for r in rows:
     assert float(r[c["colloid_D"]]) > 0 and float(r[c["colloid_D_se"]]) > 0
 j = json.load(open("out/grid/sweep.json"))
 assert [p["params"]["seed"] for p in j["points"]] == [1, 2, 1, 2]
+assert j["key_units"] == {"colloids.bd_viscosity": "m_f / (a0 t0)"}, j["key_units"]  # the plot's x axis unit
 import os; assert os.path.getsize("out/grid/sweep.png") > 5000
 for k, (v, s) in enumerate([(0.02, 1), (0.02, 2), (0.04, 1), (0.04, 2)]):
     t = open(f"out/grid/scenes/p{k:03d}.cfg").read()

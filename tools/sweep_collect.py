@@ -13,7 +13,8 @@ OUT/ID/summary.json and OUT/status/ID.tsv, and writes
                   threads (the OpenMP threads its run had), then
                   NAME and NAME_se for every observable any point measured
                   (summary.json "observables": value +- stderr)
-  OUT/sweep.json  the same as a list of objects, and "plan": OUT/plan.json
+  OUT/sweep.json  the same as a list of objects, "key_units" (the swept keys' units, from `peloid keys`:
+                  the plot's x axis) and "plan": OUT/plan.json
                   (the jobs x threads the last sweep chose, why, each job's
                   CPU set, the machine), when it exists
   OUT/sweep.png   the study's plot{}: y (one panel per observable) against x,
@@ -23,6 +24,8 @@ OUT/ID/summary.json and OUT/status/ID.tsv, and writes
 import json
 import math
 import os
+import re
+import subprocess
 import sys
 
 import matplotlib
@@ -80,6 +83,27 @@ def load_point(out, p):
     return row
 
 
+def key_units():
+    """{"section.key": unit} from `peloid keys` of the binary that ran the sweep ($PELOID_BIN; {} without it)."""
+    exe = os.environ.get("PELOID_BIN")
+    if not exe:
+        return {}
+    try:
+        text = subprocess.run([exe, "keys"], capture_output=True, text=True, timeout=30).stdout
+    except (OSError, subprocess.SubprocessError):
+        return {}
+    units, sec = {}, ""
+    for line in text.splitlines():
+        m = re.match(r"#### `([^`]*)`", line)
+        if m:
+            sec = "" if m.group(1) == "(top level)" else m.group(1) + "."
+            continue
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) >= 5 and cells[0].startswith("`") and cells[4] not in ("-", "unit", ""):
+            units[sec + cells[0].strip("`")] = cells[4]
+    return units
+
+
 def plot(study, rows, path):
     spec = study.get("plot") or {}
     keys = study["keys"]
@@ -94,6 +118,7 @@ def plot(study, rows, path):
     elif isinstance(ys, str):
         ys = [ys]
     ok = [r for r in rows if r["status"] == "ok"]
+    xunit = key_units().get(x, "")
     n = max(1, len(ys))
     fig, axes = plt.subplots(n, 1, figsize=(6, 3.2 * n), squeeze=False)
     for ax, y in zip(axes[:, 0], ys):
@@ -111,7 +136,7 @@ def plot(study, rows, path):
             ax.errorbar(xv, yv, yerr=ev, fmt="o-", ms=4, capsize=3,
                         label=f"{series} = {label}" if series else None)
         unit = next((r["observables"][y]["unit"] for r in ok if y in r["observables"]), "")
-        ax.set_xlabel(x)
+        ax.set_xlabel(f"{x} [{xunit}]" if xunit else x)
         ax.set_ylabel(f"{y} [{unit}]" if unit and unit != "1" else y)
         if spec.get("logx"):
             ax.set_xscale("log")
@@ -163,6 +188,8 @@ def main():
     os.replace(tmp, os.path.join(out, "sweep.tsv"))
     tmp = os.path.join(out, "sweep.json.tmp")
     doc = {"study": study["study"], "study_file": study["study_file"], "keys": study["keys"], "points": rows}
+    units = key_units()
+    doc["key_units"] = {k: units[k] for k in study["keys"] if k in units}  # the plot's axis labels
     try:
         doc["plan"] = json.load(open(os.path.join(out, "plan.json")))
     except (OSError, ValueError):

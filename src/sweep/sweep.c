@@ -476,6 +476,12 @@ static int collect(const sweep_t *s, pl_err_t *err)
     fflush(NULL);
     pid_t pid = fork();
     if (pid == 0) {
+        char self[4096]; /* the keys' units for the plot's axis: `peloid keys` of this binary */
+        ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+        if (n > 0) {
+            self[n] = '\0';
+            setenv("PELOID_BIN", self, 1);
+        }
         execl("/usr/bin/python3", "python3", script, s->out, (char *)NULL);
         fprintf(stderr, "peloid: error: sweep: cannot run /usr/bin/python3 %s: %s\n", script, strerror(errno));
         _exit(PL_ERR_IO);
