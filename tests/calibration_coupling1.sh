@@ -66,7 +66,8 @@ else bad "dilute coupling I suspension: $r"; fi
 #    real Stokes velocity times the box factor the mapping states (a lone
 #    colloid: Hasimoto's mobility in the box, D_L / D): its z velocity
 #    relative to the fluid's mean (total momentum zero: u_f = -M v_c / N_f)
-#    from colloids.h5 with h5py, within 10 % with SE < 3.3 % (16 blocks).
+#    from colloids.h5 with h5py (tools/h5md_settling.py), within 10 % with
+#    SE < 3.3 % (16 blocks).
 sed -e 's/^name = .*/name = "settle_c1";/' -e "s/^steps = .*/steps = ${PL_C1_SETTLE_STEPS:-12000};/" \
     -e 's/gravity = 9.81;/gravity = 98.1;/' -e '/hamaker = /d' -e '/primary_minimum = /d' -e '/surface_potential = /d' \
     -e '/ionic_strength = /d' -e 's/volume_fraction = 0.1;/volume_fraction = 0.0024;/' \
@@ -77,33 +78,14 @@ sed -e 's/^name = .*/name = "settle_c1";/' -e "s/^steps = .*/steps = ${PL_C1_SET
 printf 'coupling: { compensate_gravity = true; };\n' >> s1.cfg
 if ! "$PELOID" run s1.cfg --out s --threads 2 2> es; then bad "settling coupling I run: $(tail -1 es)"
 elif grep -q calibrating es; then bad "settling coupling I run: calibrated instead of reading calibration/"
-elif r=$($PY - s <<'PY'
-import json, sys
-import h5py
-import numpy as np
-d = sys.argv[1]
-s = json.load(open(d + "/summary.json"))
-m = s["mapping"]
-n = m["colloid"]["n_colloids"]
-cd = m["colloid_diffusion"]
-with h5py.File(d + "/colloids.h5", "r") as f:
-    g = f["particles/colloids"]
-    u = {"nm": 1e-9, "um": 1e-6, "m": 1.0}
-    pu = g["position/value"].attrs["unit"]; pu = pu.decode() if isinstance(pu, bytes) else pu
-    tu = g["position/time"].attrs["unit"]; tu = tu.decode() if isinstance(tu, bytes) else tu
-    z = g["position/value"][()][:, :, 2] * u[pu] + g["image/value"][()][:, :, 2] * np.diag(g["box/edges/value"][0])[2] * u[pu]
-    t = g["position/time"][()] * {"ps": 1e-12, "ns": 1e-9, "s": 1.0}[tu]
-# settled from the start (tau_P << the frame spacing); 16 blocks of the run, each's mean velocity
-k = len(t) // 16
-vb = np.array([-(z[(b + 1) * k, :] - z[b * k, :]).mean() / (t[(b + 1) * k] - t[b * k]) for b in range(16)])
-rel = 1.0 + n * m["colloid"]["mass_m_f"] / s["fluid_particles"]  # relative to the fluid's counter-flow
-v, se = vb.mean() * rel, vb.std(ddof=1) / np.sqrt(16) * rel
-R, g0 = s["scene"]["physical"]["radius"], s["scene"]["physical"]["gravity"]
-rho_p, rho_f, nu = s["scene"]["physical"]["particle_density"], s["scene"]["physical"]["solvent_density"], s["scene"]["physical"]["viscosity"]
-stokes = 2.0 / 9.0 * (rho_p - rho_f) * g0 * R * R / (rho_f * nu)
-ref = stokes * cd["d_box_m2_s"] / cd["d_real_m2_s"]
-print(f"v = {v:.4g} +- {se:.2g} m/s from colloids.h5 ({n} colloid, {len(t)} frames) vs Stokes {stokes:.4g} x box "
-      f"factor {cd['d_box_m2_s'] / cd['d_real_m2_s']:.4f} = {ref:.4g}: {100 * (v / ref - 1):+.1f} %, SE {100 * se / v:.1f} %")
+elif r=$($PY - s "$ROOT/tools" <<'PY'
+import sys
+sys.path.insert(0, sys.argv[2])
+from h5md_settling import settling
+v, se, stokes, box, n, nf = settling(sys.argv[1])
+ref = stokes * box
+print(f"v = {v:.4g} +- {se:.2g} m/s from colloids.h5 ({n} colloid, {nf} frames) vs Stokes {stokes:.4g} x box "
+      f"factor {box:.4f} = {ref:.4g}: {100 * (v / ref - 1):+.1f} %, SE {100 * se / v:.1f} %")
 sys.exit(0 if abs(v / ref - 1) <= 0.10 and se / v <= 0.033 else 1)
 PY
 ); then ok "settling coupling I colloid: $r"
