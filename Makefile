@@ -238,7 +238,7 @@ bench: $(BENCH_BIN)
 .PHONY: calibrations
 calibrations: $(BIN)
 	rm -f calibration/calibration-*.json
-	@set -e; for s in scenes/*.cfg studies/*_base.cfg; do \
+	@set -e; for s in scenes/*.cfg studies/*_base.cfg tests/calibration/*.cfg; do \
 	  PELOID_CACHE=$(CURDIR)/calibration PELOID_NO_SHIPPED_CALIBRATION=1 ./$(BIN) check $$s > /dev/null; done
 	rm -f calibration/*.lock
 

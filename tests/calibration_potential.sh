@@ -62,13 +62,7 @@ else bad "dilute potential-coupling suspension: $r"; fi
 #    (70000 steps ~ 160 s of real time: SE ~ sqrt(2 D / T) / v ~ 3 %; 44000
 #    steps gave +5.6 % +- 3.9 %; 70000: +5.3 % +- 2.3 %, 1.85e-6 against
 #    2.18e-6 x 0.8059 = 1.76e-6 m/s, 2.2 CPU-min).
-sed -e 's/^name = .*/name = "settle_potential";/' -e "s/^steps = .*/steps = ${PL_POT_SETTLE_STEPS:-70000};/" \
-    -e 's/particle_density = 1.0e3;.*/particle_density = 2.0e3;/' \
-    -e 's/volume_fraction = 0.0995;.*/volume_fraction = 0.0082;\n  gravity = 9.81;/' \
-    -e 's/box = \[12.0e-6, 12.0e-6, 12.0e-6\];.*/box = [8.0e-6, 8.0e-6, 8.0e-6];/' \
-    -e 's/trajectory_interval = [0-9]*;/trajectory_interval = 50;/' -e '/^observe:/d' -e '/^output:/d' \
-    "$ROOT/scenes/pl_potential_physical.cfg" > ps.cfg
-printf 'coupling: { compensate_gravity = true; };\n' >> ps.cfg
+sed -e "s/^steps = .*/steps = ${PL_POT_SETTLE_STEPS:-70000};/" "$ROOT/tests/calibration/pl_potential_settle.cfg" > ps.cfg
 if ! "$PELOID" run ps.cfg --out s --threads 2 2> es; then bad "settling potential run: $(tail -1 es)"
 elif grep -q calibrating es; then bad "settling potential run: calibrated instead of reading calibration/"
 elif r=$($PY - s "$ROOT/tools" <<'PY'
