@@ -200,11 +200,14 @@ int pl_colloid_neighbors_init(pl_colloid_t *c, double rc, double skin_fraction, 
  * PL_ERR_NOMEM when a grown neighbour list cannot be allocated. */
 int pl_colloid_forces(pl_colloid_t *c, pl_err_t *err);
 
-/* One velocity-Verlet MD step with the force evaluation (the neighbour list
- * rebuilt when needed) and the guard maxima into g, through the fused
- * kernels of kernels/colloid_verlet.c: the same state as pl_colloid_kick,
- * pl_colloid_drift, pl_colloid_forces, pl_colloid_kick. */
-int pl_colloid_verlet_step(pl_colloid_t *c, pl_colloid_guard_max_t *g, pl_err_t *err);
+/* Slot arrays of a neighbour list for at least need pairs (PL_ERR_NOMEM). */
+int pl_colloid_nlist_reserve(pl_colloid_nlist_t *nl, size_t need, pl_err_t *err);
+/* The MD region's view of c (kernels/colloid_md_region.c; v: its storage). */
+void pl_colloid_md_region_of(pl_colloid_t *c, pl_colloid_md_region_t *r, pl_colloid_view_t *v);
+/* n velocity-Verlet MD steps of c->dt in one parallel region
+ * (src/colloid/colloid_md.c), each followed by the guards; refine: adaptive
+ * substeps may finish the rest at the finest MD step (pl_colloid_advance). */
+int pl_colloid_verlet_run(pl_colloid_t *c, int n, int refine, pl_err_t *err);
 /* One MD step (velocity Verlet + quaternions, or BD), then the guards. */
 int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err);
 /* The plan stage: colloids.substeps MD steps of one collision step. */
