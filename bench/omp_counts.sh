@@ -7,7 +7,8 @@
 #   fork_join: GOMP_parallel calls (one per parallel region);
 #   barrier:   GOMP_barrier calls / threads (team barriers: the implicit
 #              ones of worksharing loops and single, and explicit ones);
-#   single, atomic (GOMP_atomic_start: reduction combines, per thread),
+#   single:    GOMP_single_start calls / threads (single constructs);
+#   atomic (GOMP_atomic_start: reduction combines, per thread),
 #   critical: calls.
 #   bench/omp_counts.sh BIN SCENE [THREADS (2)] [S1 (2)] [S2 (12)]
 set -eu
@@ -55,7 +56,7 @@ print("site\t" + "\t".join(cols))
 tot = collections.Counter()
 for fn in sorted(tab):
     c = tab[fn]
-    row = [c["fork_join"] / steps, c["barrier"] / T / steps, c["single"] / steps, c["atomic"] / steps,
+    row = [c["fork_join"] / steps, c["barrier"] / T / steps, c["single"] / T / steps, c["atomic"] / steps,
            c["critical"] / steps]
     if not any(row):
         continue

@@ -65,12 +65,7 @@ static int rebuild(const pl_colloid_md_region_t *r, const pl_colloid_md_hooks_t 
 
 int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_hooks_t *hk)
 {
-    const pl_colloid_dyn_t *s = &r->s;
-    const size_t n = s->n, nblk = (n + PL_COLLOID_ROT_BLOCK - 1) / PL_COLLOID_ROT_BLOCK;
-    const double rf = pow(2.0, 1.0 / r->ext->wall_n);
-    const int torques = pl_colloid_pair_torques(r->p);
-    const pl_colloid_view_t vs = pl_colloid_slow_view(n, s->fsx, s->fsy, s->fsz);
-    const pl_colloid_nlist_t *pairs = r->near ? r->near : r->full;
+    const size_t n = r->s.n, nblk = (n + PL_COLLOID_ROT_BLOCK - 1) / PL_COLLOID_ROT_BLOCK;
     /* shared by the team: the step's parameters and the reductions (reset
      * by the single that ends the step before), the status */
     pl_colloid_md_sub_t sub;
@@ -79,25 +74,39 @@ int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_ho
     int go = hk->next(hk->ctx, NULL, &sub), rc = 0;
     if (go <= 0) return go;
 #pragma omp parallel num_threads(r->nthreads) if (n >= PL_COLLOID_OMP_MIN)
-    for (;;) {
-        const double dt = sub.dt, open_h = sub.open_h, close_h = sub.close_h;
+    {
+        /* each thread's own copies of the arrays and parameters (kept in
+         * registers across the loops' stores; read through the shared
+         * descriptor they were reloaded per colloid) */
+        const pl_colloid_dyn_t s = r->s;
+        const pl_colloid_view_t v = *r->v, vs = pl_colloid_slow_view(n, s.fsx, s.fsy, s.fsz);
+        const pl_colloid_ext_params_t ext = *r->ext;
+        const pl_colloid_pair_params_t *const p = r->p;
+        pl_colloid_nlist_t *const full = r->full;
+        const pl_colloid_nlist_t *const pairs = r->near ? r->near : full;
+        double *const epot = r->epot;
+        const double rf = pow(2.0, 1.0 / ext.wall_n);
+        const int torques = pl_colloid_pair_torques(p);
+        for (;;) {
+            const double dt = sub.dt, open_h = sub.open_h, close_h = sub.close_h;
 #pragma omp for schedule(static) reduction(max : dmax)
-        for (size_t bk = 0; bk < nblk; ++bk) pl_colloid_verlet_open_block(s, bk, dt, open_h, r->full, &dmax);
-        if (pl_colloid_nlist_stale(r->full, dmax) && rebuild(r, hk, &rc)) break;
-        pl_colloid_pair_owner_pass(r->p, pairs, r->v);
-        if (close_h != 0.0)
-            pl_colloid_slow_owner_pass(r->p, r->full, s->x, s->y, s->z, s->rad, s->fsx, s->fsy, s->fsz);
+            for (size_t bk = 0; bk < nblk; ++bk) pl_colloid_verlet_open_block(&s, bk, dt, open_h, full, &dmax);
+            if (pl_colloid_nlist_stale(full, dmax) && rebuild(r, hk, &rc)) break;
+            pl_colloid_pair_owner_pass(p, pairs, &v);
+            if (close_h != 0.0)
+                pl_colloid_slow_owner_pass(p, full, s.x, s.y, s.z, s.rad, s.fsx, s.fsy, s.fsz);
 #pragma omp for schedule(static) reduction(pl_guard_max : gm)
-        for (size_t i = 0; i < n; ++i)
-            pl_colloid_verlet_close_one(s, i, dt, close_h, pairs, r->full, r->v, &vs, torques, r->ext, rf,
-                                        r->epot, &gm);
+            for (size_t i = 0; i < n; ++i)
+                pl_colloid_verlet_close_one(&s, i, dt, close_h, pairs, full, &v, &vs, torques, &ext, rf, epot,
+                                            &gm);
 #pragma omp single
-        {
-            go = hk->next(hk->ctx, &gm, &sub);
-            dmax = 0.0;
-            gm = (pl_colloid_guard_max_t){0.0, 0.0, 0.0, 0};
+            {
+                go = hk->next(hk->ctx, &gm, &sub);
+                dmax = 0.0;
+                gm = (pl_colloid_guard_max_t){0.0, 0.0, 0.0, 0};
+            }
+            if (go <= 0) break;
         }
-        if (go <= 0) break;
     }
     return rc ? rc : go;
 }
