@@ -4,27 +4,32 @@
  * has the passes and their formulas).  Per MD step:
  *
  *   open    static loop over blocks: half kick, drift, rotations, max
- *           displacement (reduction; its barrier)
+ *           displacement (reduction; barrier B1)
  *   list    every thread takes the same decision from the reduced maximum;
  *           a rebuild runs its serial parts (cells, prefix sums, the slot
  *           reservation of the caller, reverse entries) in single and its
  *           scans as static loops
- *   close   pair pass 1 (barrier), under multiple time stepping the slow
- *           pass 1 (barrier), then per colloid pass 2, external forces,
- *           half kick and the guard maxima (reduction; its barrier)
- *   next    single: the caller's serial step end (guards, counters, the next
- *           step's time step and slow kicks, or the end; barrier)
+ *   close   pair pass 1 (barrier B2), under multiple time stepping at the end
+ *           of an outer step the slow pass 1 (a barrier), then per colloid
+ *           pass 2, external forces, half kick and the guard maxima
+ *           (reduction; barrier B3)
+ *   end, next  every thread on its own copy of the caller's control
+ *           state: the step's counters, then the next step's time step and
+ *           slow kicks, or the end; between them a single only when the
+ *           caller asks for a serial check (a guard's bound exceeded, the
+ *           energy drift due)
  *
- * so 4 barriers per MD step (5 at the end of an outer step of multiple time
- * stepping), and one fork/join per call.  The serial decisions are the
- * caller's (pl_colloid_md_hooks_t: src/colloid/colloid_md.c), taken by one
- * thread while the others wait; shared values they write are read by the
- * team only after the barrier that follows.
+ * so 3 barriers per MD step (4 at the end of an outer step of multiple time
+ * stepping) and one fork/join per call.  The reductions' shared targets are
+ * reset by the master between barriers that every reader has passed:
+ * the guard maxima after B1 (all threads ended the step before from them),
+ * the displacement after B2 (all decided from it before it).
  *
  * Determinism: every colloid's operations are those of the separate passes
  * in the same order; the only reductions are maxima (exact); the list is
- * built by the same loops as pl_colloid_nlist_count / _fill.  So the state
- * is bitwise that of the per-pass regions, for any thread count. */
+ * built by the same loops as pl_colloid_nlist_count / _fill; every thread
+ * decides from the same values.  So the state is bitwise that of the per-pass
+ * regions, for any thread count. */
 #include <math.h>
 
 #include "colloid_verlet.h"
@@ -63,21 +68,21 @@ static int rebuild(const pl_colloid_md_region_t *r, const pl_colloid_md_hooks_t 
     return 0;
 }
 
-int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_hooks_t *hk)
+int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_hooks_t *hk,
+                         pl_colloid_md_ctl_t *ctl)
 {
     const size_t n = r->s.n, nblk = (n + PL_COLLOID_ROT_BLOCK - 1) / PL_COLLOID_ROT_BLOCK;
-    /* shared by the team: the step's parameters and the reductions (reset
-     * by the single that ends the step before), the status */
-    pl_colloid_md_sub_t sub;
+    /* shared by the team: the reductions' targets, the status, the control
+     * state going out */
     double dmax = 0.0;
     pl_colloid_guard_max_t gm = {0.0, 0.0, 0.0, 0};
-    int go = hk->next(hk->ctx, NULL, &sub), rc = 0;
-    if (go <= 0) return go;
+    int rc = 0;
+    pl_colloid_md_ctl_t out = *ctl;
 #pragma omp parallel num_threads(r->nthreads) if (n >= PL_COLLOID_OMP_MIN)
     {
         /* each thread's own copies of the arrays and parameters (kept in
          * registers across the loops' stores; read through the shared
-         * descriptor they were reloaded per colloid) */
+         * descriptor they were reloaded per colloid) and of the control */
         const pl_colloid_dyn_t s = r->s;
         const pl_colloid_view_t v = *r->v, vs = pl_colloid_slow_view(n, s.fsx, s.fsy, s.fsz);
         const pl_colloid_ext_params_t ext = *r->ext;
@@ -87,26 +92,34 @@ int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_ho
         double *const epot = r->epot;
         const double rf = pow(2.0, 1.0 / ext.wall_n);
         const int torques = pl_colloid_pair_torques(p);
-        for (;;) {
-            const double dt = sub.dt, open_h = sub.open_h, close_h = sub.close_h;
+        pl_colloid_md_ctl_t k = *ctl;
+        pl_colloid_md_sub_t sub;
+        int run = hk->next(hk->ctx, &k, 0, &sub);
+        while (run & PL_MD_RUN) {
 #pragma omp for schedule(static) reduction(max : dmax)
-            for (size_t bk = 0; bk < nblk; ++bk) pl_colloid_verlet_open_block(&s, bk, dt, open_h, full, &dmax);
+            for (size_t bk = 0; bk < nblk; ++bk) pl_colloid_verlet_open_block(&s, bk, sub.dt, sub.open_h, full, &dmax);
             if (pl_colloid_nlist_stale(full, dmax) && rebuild(r, hk, &rc)) break;
+#pragma omp master
+            gm = (pl_colloid_guard_max_t){0.0, 0.0, 0.0, 0};
             pl_colloid_pair_owner_pass(p, pairs, &v);
-            if (close_h != 0.0)
+#pragma omp master
+            dmax = 0.0;
+            if (sub.close_h != 0.0)
                 pl_colloid_slow_owner_pass(p, full, s.x, s.y, s.z, s.rad, s.fsx, s.fsy, s.fsz);
 #pragma omp for schedule(static) reduction(pl_guard_max : gm)
             for (size_t i = 0; i < n; ++i)
-                pl_colloid_verlet_close_one(&s, i, dt, close_h, pairs, full, &v, &vs, torques, &ext, rf, epot,
-                                            &gm);
+                pl_colloid_verlet_close_one(&s, i, sub.dt, sub.close_h, pairs, full, &v, &vs, torques, &ext, rf,
+                                            epot, &gm);
+            if (hk->end(hk->ctx, &k, &gm) & PL_MD_CHECK) {
 #pragma omp single
-            {
-                go = hk->next(hk->ctx, &gm, &sub);
-                dmax = 0.0;
-                gm = (pl_colloid_guard_max_t){0.0, 0.0, 0.0, 0};
+                rc = hk->check(hk->ctx, &k, &gm);
+                if (rc) break;
             }
-            if (go <= 0) break;
+            run = hk->next(hk->ctx, &k, 1, &sub);
         }
+#pragma omp master
+        out = k;
     }
-    return rc ? rc : go;
+    *ctl = out;
+    return rc;
 }

@@ -220,6 +220,9 @@ int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err);
  * the fused MD step). */
 int pl_colloid_guard_max(pl_colloid_t *c, const pl_colloid_guard_max_t *g, int check_energy,
                          pl_err_t *err);
+/* Does a bound trip on these maxima at MD step dt?  (What pl_colloid_guard_max
+ * reports then; a pure function of c's parameters, g and dt.) */
+int pl_colloid_guard_trips(const pl_colloid_t *c, double dt, const pl_colloid_guard_max_t *g);
 
 /* Kinetic + potential energy terms of the current state (fixed-order sums);
  * evaluates the pair energies (into epot) for the positions of the last

@@ -472,14 +472,21 @@ typedef struct {
  * separate passes (pl_colloid_kick, pl_colloid_drift, pl_colloid_forces,
  * pl_colloid_ext_forces, pl_colloid_kick, then the guard's pass), with the
  * neighbour list rebuilt inside when a colloid has moved by more than half
- * the skin.  The caller's serial decisions come through hooks, each called
- * by one thread while the team waits:
- *   next(ctx, g, sub): g NULL before the first MD step, else the guard
- *     maxima of the step just done; returns 1 with the next step's
- *     parameters in sub, 0 when the steps are done, -1 on an error (the
- *     caller's to report);
- *   reserve(ctx, nl, need): slot arrays of nl for need pairs (0, or -1).
- * Returns 0, or -1 when a hook did.
+ * the skin.  The caller's decisions come through hooks on its control
+ * state ctl, of which every thread keeps its own copy:
+ *   end(ctx, ctl, g) and next(ctx, ctl, done, sub): called by every thread
+ *     on its copy, so pure functions of ctl, g and what no hook changes
+ *     inside the region.  end: after an MD step, g its guard maxima;
+ *     PL_MD_CHECK when check is to run.  next: before the first MD step
+ *     (done = 0) and after each end (done = 1, the check passed);
+ *     PL_MD_RUN with the next step's parameters in sub, or 0: the end;
+ *   check(ctx, ctl, g): one thread, the team waiting (guard report, energy
+ *     drift); 0, or -1 to stop (ctl then as end left it);
+ *   reserve(ctx, nl, need): one thread: slot arrays of nl for need pairs
+ *     (0, or -1 to stop).
+ * ctl comes in with the state before the first step and goes out with the
+ * state after the last (the same in every thread).  Returns 0, or -1 when a
+ * hook did.
  * Multiple time stepping (near != NULL): the pair pass runs over near with
  * the fast share; open_h > 0 first kicks by open_h s.fs (the start of an
  * outer step); close_h > 0 (its end) also evaluates the slow forces over
@@ -487,9 +494,19 @@ typedef struct {
 typedef struct {
     double dt, open_h, close_h;
 } pl_colloid_md_sub_t;
+/* The control state of the MD steps (the hooks' to interpret;
+ * src/colloid/colloid_md.c). */
+typedef struct {
+    long long md_step, adapt_md, adapt_refined;
+    double dt, adapt_last, adapt_worst;
+    int slow_phase, n, todo, refine, check_e;
+} pl_colloid_md_ctl_t;
+enum { PL_MD_RUN = 1, PL_MD_CHECK = 2 };
 typedef struct {
     void *ctx;
-    int (*next)(void *ctx, const pl_colloid_guard_max_t *g, pl_colloid_md_sub_t *sub);
+    int (*end)(const void *ctx, pl_colloid_md_ctl_t *ctl, const pl_colloid_guard_max_t *g);
+    int (*next)(const void *ctx, pl_colloid_md_ctl_t *ctl, int done, pl_colloid_md_sub_t *sub);
+    int (*check)(void *ctx, const pl_colloid_md_ctl_t *ctl, const pl_colloid_guard_max_t *g);
     int (*reserve)(void *ctx, pl_colloid_nlist_t *nl, size_t need);
 } pl_colloid_md_hooks_t;
 typedef struct {
@@ -502,7 +519,8 @@ typedef struct {
     double *epot;
     int nthreads;
 } pl_colloid_md_region_t;
-int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_hooks_t *hk);
+int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_hooks_t *hk,
+                         pl_colloid_md_ctl_t *ctl);
 
 /* Velocity Verlet half kick (PL Eq. 19 / Hecht Eq. 8 and the rotational
  * analogue of Hecht Eq. 9): v += h F/m, w += h T/I. */
