@@ -304,7 +304,7 @@ void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_
                             const pl_colloid_view_t *v, int nthreads);
 
 /* The two passes of pl_colloid_pair_forces, for a caller that fuses more
- * per-colloid work into pass 2 (kernels/colloid_verlet.c).  Pass 1: each
+ * per-colloid work into pass 2 (kernels/colloid_verlet.h).  Pass 1: each
  * colloid's own pairs, an orphaned worksharing loop (static schedule) to be
  * called by every thread of the caller's parallel region; its implicit
  * barrier ends it.  Pass 2, per colloid i after that barrier: the reverse

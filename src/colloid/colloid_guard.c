@@ -33,7 +33,7 @@ static size_t argmax(const double *a, size_t n)
 }
 
 /* The tests both scans apply, per colloid or on a maximum (the per-colloid
- * ones shared with the fused MD step, kernels/colloid_verlet.c). */
+ * ones shared with the fused MD step, kernels/colloid_verlet.h). */
 static inline int state_finite(const pl_colloid_t *c, size_t i)
 {
     return pl_colloid_state_finite(c->x[i], c->y[i], c->z[i], c->vx[i], c->vy[i], c->vz[i],
