@@ -20,7 +20,9 @@
  *           energy drift due)
  *
  * so 3 barriers per MD step (4 at the end of an outer step of multiple time
- * stepping) and one fork/join per call.  The reductions' shared targets are
+ * stepping) and one fork/join per call.  With adaptive substeps the region
+ * first computes the maxima of their choice (pl_colloid_reach_owner, a
+ * reduction and its barrier), from which every thread chooses the MD steps.  The reductions' shared targets are
  * reset by the master between barriers that every reader has passed:
  * the guard maxima after B1 (all threads ended the step before from them),
  * the displacement after B2 (all decided from it before it).
@@ -33,6 +35,7 @@
 #include <math.h>
 
 #include "colloid_verlet.h"
+#include "peloid/colloid_reach.h"
 
 /* The neighbour list rebuilt inside the region (every thread calls it):
  * cells, counts, prefix sum and reservation, fill, reverse entries; under
@@ -74,7 +77,7 @@ int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_ho
     const size_t n = r->s.n, nblk = (n + PL_COLLOID_ROT_BLOCK - 1) / PL_COLLOID_ROT_BLOCK;
     /* shared by the team: the reductions' targets, the status, the control
      * state going out */
-    double dmax = 0.0;
+    double dmax = 0.0, em = -INFINITY, vm = 0.0;
     pl_colloid_guard_max_t gm = {0.0, 0.0, 0.0, 0};
     int rc = 0;
     pl_colloid_md_ctl_t out = *ctl;
@@ -94,6 +97,14 @@ int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_ho
         const int torques = pl_colloid_pair_torques(p);
         pl_colloid_md_ctl_t k = *ctl;
         pl_colloid_md_sub_t sub;
+        if (r->reach) { /* adaptive substeps: the maxima their choice needs */
+#pragma omp for schedule(static) reduction(max : em, vm)
+            for (size_t i = 0; i < n; ++i)
+                pl_colloid_reach_owner(p, full, r->reach, r->reach_margin, s.x, s.y, s.z, s.vx, s.vy, s.vz,
+                                       s.mass, i, &em, &vm);
+            k.reach_e = em;
+            k.reach_v2 = vm;
+        }
         int run = hk->next(hk->ctx, &k, 0, &sub);
         while (run & PL_MD_RUN) {
 #pragma omp for schedule(static) reduction(max : dmax)

@@ -190,6 +190,9 @@ void pl_colloid_adaptive_free(pl_colloid_t *c);
 /* The MD steps of the collision step starting now (c->adaptive), from the
  * positions and velocities and the neighbour list of c. */
 int pl_colloid_adaptive_substeps(pl_colloid_t *c);
+/* The choice itself from the reach maxima em, v2 (pl_colloid_reach_energy):
+ * a pure function of them and c's parameters (no counters). */
+int pl_colloid_adaptive_choose(const pl_colloid_t *c, double em, double v2);
 /* Linked cells and neighbour list for pair cut-off rc (a0) with a skin of
  * skin_fraction rc (capped so that rc + skin <= L/2 on periodic axes); the
  * next pl_colloid_forces builds the list.  Called by pl_colloid_setup. */
@@ -205,9 +208,11 @@ int pl_colloid_nlist_reserve(pl_colloid_nlist_t *nl, size_t need, pl_err_t *err)
 /* The MD region's view of c (kernels/colloid_md_region.c; v: its storage). */
 void pl_colloid_md_region_of(pl_colloid_t *c, pl_colloid_md_region_t *r, pl_colloid_view_t *v);
 /* n velocity-Verlet MD steps of c->dt in one parallel region
- * (src/colloid/colloid_md.c), each followed by the guards; refine: adaptive
- * substeps may finish the rest at the finest MD step (pl_colloid_advance). */
-int pl_colloid_verlet_run(pl_colloid_t *c, int n, int refine, pl_err_t *err);
+ * (src/colloid/colloid_md.c), each followed by the guards; n = 0: the MD
+ * steps of a collision step with adaptive substeps, their count and dt chosen
+ * in the region (pl_colloid_adaptive_choose), the rest possibly finished at
+ * the finest MD step (pl_colloid_advance). */
+int pl_colloid_verlet_run(pl_colloid_t *c, int n, pl_err_t *err);
 /* One MD step (velocity Verlet + quaternions, or BD), then the guards. */
 int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err);
 /* The plan stage: colloids.substeps MD steps of one collision step. */

@@ -494,11 +494,13 @@ typedef struct {
 typedef struct {
     double dt, open_h, close_h;
 } pl_colloid_md_sub_t;
+struct pl_colloid_reach; /* peloid/colloid_reach.h */
 /* The control state of the MD steps (the hooks' to interpret;
  * src/colloid/colloid_md.c). */
 typedef struct {
-    long long md_step, adapt_md, adapt_refined;
+    long long md_step, adapt_md, adapt_refined, adapt_steps, adapt_lo, adapt_hi;
     double dt, adapt_last, adapt_worst;
+    double reach_e, reach_v2; /* with r->reach: its maxima, before the first next */
     int slow_phase, n, todo, refine, check_e;
 } pl_colloid_md_ctl_t;
 enum { PL_MD_RUN = 1, PL_MD_CHECK = 2 };
@@ -517,6 +519,10 @@ typedef struct {
     const pl_colloid_view_t *v;      /* the same arrays as s */
     const pl_colloid_ext_params_t *ext;
     double *epot;
+    /* adaptive substeps: the reach table, whose maxima (pl_colloid_reach_energy)
+     * the region computes first into ctl->reach_e, reach_v2; else NULL */
+    const struct pl_colloid_reach *reach;
+    double reach_margin;
     int nthreads;
 } pl_colloid_md_region_t;
 int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_hooks_t *hk,

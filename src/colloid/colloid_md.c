@@ -13,10 +13,12 @@
 
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
+#include "peloid/colloid_reach.h"
 
 typedef struct {
     pl_colloid_t *c;
     pl_err_t *err;
+    int choose; /* adaptive substeps: the MD steps chosen in the region */
 } md_run_t;
 
 /* The next MD step's time step and slow kicks: the slow kicks of k dt / 2
@@ -56,7 +58,20 @@ static int end(const void *ctx, pl_colloid_md_ctl_t *k, const pl_colloid_guard_m
  * its parameters, or 0 when the steps are done. */
 static int next(const void *ctx, pl_colloid_md_ctl_t *k, int done, pl_colloid_md_sub_t *sub)
 {
-    const pl_colloid_t *c = ((const md_run_t *)ctx)->c;
+    const md_run_t *m = ctx;
+    const pl_colloid_t *c = m->c;
+    if (!done && m->choose) { /* adaptive substeps: this collision step's MD steps */
+        const int n = pl_colloid_adaptive_choose(c, k->reach_e, k->reach_v2);
+        k->adapt_steps++;
+        k->adapt_md += n;
+        if (n < k->adapt_lo) k->adapt_lo = n;
+        if (n > k->adapt_hi) k->adapt_hi = n;
+        k->dt = c->dt_coll / (double)n;
+        k->n = k->todo = n;
+        /* one time step: the rest may run at the finest MD step (under
+         * multiple time stepping the outer steps keep their length) */
+        k->refine = c->slow_interval <= 1 && n < c->substeps;
+    }
     if (done && k->refine && k->todo > 0 && k->adapt_last < PL_ADAPT_REFINE * c->min_contact_steps) {
         const int left = k->todo, n = k->n;
         const int steps = (int)(((long long)left * c->substeps + n - 1) / n);
@@ -86,21 +101,29 @@ static int reserve(void *ctx, pl_colloid_nlist_t *nl, size_t need)
     return pl_colloid_nlist_reserve(nl, need, m->err) ? -1 : 0;
 }
 
-int pl_colloid_verlet_run(pl_colloid_t *c, int n, int refine, pl_err_t *err)
+int pl_colloid_verlet_run(pl_colloid_t *c, int n, pl_err_t *err)
 {
-    md_run_t m = {c, err};
+    md_run_t m = {c, err, n == 0};
     pl_colloid_md_ctl_t k = {.md_step = c->md_step, .adapt_md = c->adapt_md,
-                             .adapt_refined = c->adapt_refined, .dt = c->dt,
+                             .adapt_refined = c->adapt_refined, .adapt_steps = c->adapt_steps,
+                             .adapt_lo = c->adapt_lo, .adapt_hi = c->adapt_hi, .dt = c->dt,
                              .adapt_last = c->adapt_last, .adapt_worst = c->adapt_worst,
-                             .slow_phase = c->slow_phase, .n = n, .todo = n, .refine = refine};
+                             .slow_phase = c->slow_phase, .n = n, .todo = n, .refine = 0};
     pl_colloid_md_region_t r;
     pl_colloid_view_t v;
     pl_colloid_md_region_of(c, &r, &v);
+    if (m.choose) {
+        r.reach = &c->reach;
+        r.reach_margin = c->adapt_margin;
+    }
     const pl_colloid_md_hooks_t hk = {&m, end, next, check, reserve};
     const int rc = pl_colloid_md_region(&r, &hk, &k);
     c->md_step = k.md_step;
     c->adapt_md = k.adapt_md;
     c->adapt_refined = k.adapt_refined;
+    c->adapt_steps = k.adapt_steps;
+    c->adapt_lo = k.adapt_lo;
+    c->adapt_hi = k.adapt_hi;
     c->dt = k.dt;
     c->adapt_last = k.adapt_last;
     c->adapt_worst = k.adapt_worst;

@@ -219,7 +219,7 @@ void pl_colloid_md_region_of(pl_colloid_t *c, pl_colloid_md_region_t *r, pl_coll
     const pl_colloid_md_region_t rr = {.s = colloid_dyn(c), .p = &c->pair, .full = &c->nlist,
                                        .near = c->slow_interval > 1 ? &c->near : NULL,
                                        .cells = &c->cells, .v = v, .ext = &c->ext, .epot = c->epot,
-                                       .nthreads = c->nthreads};
+                                       .reach = NULL, .reach_margin = 0.0, .nthreads = c->nthreads};
     *r = rr;
 }
 

@@ -9,7 +9,7 @@
 
 int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err)
 {
-    if (c->integrator == PL_CINT_VERLET) return pl_colloid_verlet_run(c, 1, 0, err);
+    if (c->integrator == PL_CINT_VERLET) return pl_colloid_verlet_run(c, 1, err);
     pl_colloid_bd_params_t bp = {c->dt, c->kT, c->bd_eta, c->seed, (uint64_t)c->md_step};
     pl_colloid_bd_step(&bp, c->n, c->box, c->periodic, c->rad, c->x, c->y, c->z, c->ix, c->iy,
                        c->iz, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz, c->vx, c->vy, c->vz,
@@ -24,20 +24,16 @@ int pl_colloid_advance(pl_colloid_t *c, long long collision_step, pl_err_t *err)
 {
     (void)collision_step;
     c->slow_phase = 0; /* an outer step of multiple time stepping starts here */
-    int n = c->substeps;
-    if (c->adaptive) {
-        n = pl_colloid_adaptive_substeps(c);
-        c->dt = c->dt_coll / (double)n;
-    }
-    /* adaptive, one time step: should a contact come within
-     * PL_ADAPT_REFINE x min_contact_steps MD steps of the guard's bound
-     * anyway (energy from a third colloid or a wall beyond the margin), the
-     * rest of the collision step runs at the finest MD step, colloids.substeps
-     * per collision step: a function of the state, like the choice (under
-     * multiple time stepping the outer steps keep their length instead) */
-    const int refine = c->adaptive && c->slow_interval <= 1 && n < c->substeps;
-    if (c->integrator == PL_CINT_VERLET) return pl_colloid_verlet_run(c, n, refine, err);
-    for (int s = 0; s < n; ++s) {
+    /* adaptive substeps (velocity Verlet only): the count chosen from the
+     * state at the step's start, dt = srd.dt / count; should a contact come
+     * within PL_ADAPT_REFINE x min_contact_steps MD steps of the guard's
+     * bound anyway (energy from a third colloid or a wall beyond the
+     * margin), the rest of the collision step runs at the finest MD step,
+     * colloids.substeps per collision step: a function of the state, like the
+     * choice (under multiple time stepping the outer steps keep their length
+     * instead); both inside the MD region (src/colloid/colloid_md.c) */
+    if (c->integrator == PL_CINT_VERLET) return pl_colloid_verlet_run(c, c->adaptive ? 0 : c->substeps, err);
+    for (int s = 0; s < c->substeps; ++s) {
         int rc = pl_colloid_md_step(c, err);
         if (rc) return rc;
     }
