@@ -22,10 +22,11 @@
  * so 3 barriers per MD step (4 at the end of an outer step of multiple time
  * stepping) and one fork/join per call.  With adaptive substeps the region
  * first computes the maxima of their choice (pl_colloid_reach_owner, a
- * reduction and its barrier), from which every thread chooses the MD steps.  The reductions' shared targets are
- * reset by the master between barriers that every reader has passed:
- * the guard maxima after B1 (all threads ended the step before from them),
- * the displacement after B2 (all decided from it before it).
+ * reduction and its barrier), from which every thread chooses the MD steps.
+ * The reductions' shared targets are reset by the master between barriers
+ * that every reader has passed: the guard maxima after B1 (all threads
+ * ended the step before from them), the displacement after B2 (all decided
+ * from it before it).
  *
  * Determinism: every colloid's operations are those of the separate passes
  * in the same order; the only reductions are maxima (exact); the list is
@@ -108,7 +109,8 @@ int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_ho
         int run = hk->next(hk->ctx, &k, 0, &sub);
         while (run & PL_MD_RUN) {
 #pragma omp for schedule(static) reduction(max : dmax)
-            for (size_t bk = 0; bk < nblk; ++bk) pl_colloid_verlet_open_block(&s, bk, sub.dt, sub.open_h, full, &dmax);
+            for (size_t bk = 0; bk < nblk; ++bk)
+                pl_colloid_verlet_open_block(&s, bk, sub.dt, sub.open_h, full, &dmax);
             if (pl_colloid_nlist_stale(full, dmax) && rebuild(r, hk, &rc)) break;
 #pragma omp master
             gm = (pl_colloid_guard_max_t){0.0, 0.0, 0.0, 0};
@@ -119,8 +121,8 @@ int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_ho
                 pl_colloid_slow_owner_pass(p, full, s.x, s.y, s.z, s.rad, s.fsx, s.fsy, s.fsz);
 #pragma omp for schedule(static) reduction(pl_guard_max : gm)
             for (size_t i = 0; i < n; ++i)
-                pl_colloid_verlet_close_one(&s, i, sub.dt, sub.close_h, pairs, full, &v, &vs, torques, &ext, rf,
-                                            epot, &gm);
+                pl_colloid_verlet_close_one(&s, i, sub.dt, sub.close_h, pairs, full, &v, &vs, torques,
+                                            &ext, rf, epot, &gm);
             if (hk->end(hk->ctx, &k, &gm) & PL_MD_CHECK) {
 #pragma omp single
                 rc = hk->check(hk->ctx, &k, &gm);

@@ -41,7 +41,8 @@ static inline void pl_colloid_verlet_open_block(const pl_colloid_dyn_t *s, size_
 {
     const size_t n = s->n;
     const double h = 0.5 * dt;
-    const size_t b = bk * PL_COLLOID_ROT_BLOCK, e = b + PL_COLLOID_ROT_BLOCK < n ? b + PL_COLLOID_ROT_BLOCK : n;
+    const size_t b = bk * PL_COLLOID_ROT_BLOCK;
+    const size_t e = b + PL_COLLOID_ROT_BLOCK < n ? b + PL_COLLOID_ROT_BLOCK : n;
     for (size_t i = b; i < e; ++i) {
         if (slow_h != 0.0)
             pl_colloid_slow_kick_one(i, slow_h, s->mass, s->fsx, s->fsy, s->fsz, s->vx, s->vy, s->vz);
