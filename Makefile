@@ -105,9 +105,9 @@ $(BUILD)/kernels/coupling_select.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-
 $(BUILD)/kernels/coupling_wca.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 $(BUILD)/kernels/coupling_potential.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 # The colloids' orientation update (kernels/colloid_integrate.h, in both the
-# fused step and the separate drift) normalises by a square root of a sum of
+# fused step of the MD region and the separate drift) normalises by a square root of a sum of
 # squares in vector lanes: the same.
-$(BUILD)/kernels/colloid_verlet.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
+$(BUILD)/kernels/colloid_md_region.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 $(BUILD)/kernels/colloid_integrate.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 # The collision draws its random axes in vector lanes (a square root of
 # 1 - s, s < 1, per cell): the same.

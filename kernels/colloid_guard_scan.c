@@ -2,7 +2,7 @@
  * criteria are Hecht Sec. II's, listed there): per colloid the state tests
  * (finite, image counters in range) and the maxima of the pair kernel's guard
  * quantities, the same as the close of the fused MD step computes
- * (kernels/colloid_verlet.c) when the forces came from the separate passes.
+ * (kernels/colloid_verlet.h) when the forces came from the separate passes.
  *
  * OpenMP: a static loop over colloids with the exact max reduction
  * pl_guard_max (serial below PL_COLLOID_OMP_MIN colloids), so the result is

@@ -1,7 +1,7 @@
 /* One colloid's share of the velocity-Verlet MD step (private to kernels/):
  * the half kick, the drift, the quaternion update (in blocks), and the external
  * forces.  Shared by the separate passes of kernels/colloid_integrate.c and
- * the fused step of kernels/colloid_verlet.c, so both give bitwise the same
+ * the fused step of kernels/colloid_verlet.h, so both give bitwise the same
  * state.  Formulas: see kernels/colloid_integrate.c. */
 #ifndef PELOID_COLLOID_INTEGRATE_H
 #define PELOID_COLLOID_INTEGRATE_H

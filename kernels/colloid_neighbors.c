@@ -15,7 +15,9 @@
  *
  * Threads: the count and fill passes are parallel over colloids, each writing
  * only its own count / slots (static blocks; slot ranges come from the prefix
- * sum, so the list is the same for any thread count).  The reverse entries
+ * sum, so the list is the same for any thread count), as orphaned loops
+ * (_loop: the MD region of kernels/colloid_md_region.c runs them inside its
+ * team) or each in a region of its own.  The reverse entries
  * come from a serial counting transpose (O(pairs), only at a build). */
 #include <math.h>
 
@@ -120,31 +122,50 @@ double pl_colloid_nlist_max_disp2(const pl_colloid_nlist_t *nl, const double box
     return m;
 }
 
+void pl_colloid_nlist_count_loop(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
+                                 const double box[3], const int periodic[3], const double *x,
+                                 const double *y, const double *z)
+{
+    size_t n = nl->n;
+    double rl2 = nl->rlist * nl->rlist;
+#pragma omp for schedule(static)
+    for (size_t i = 0; i < n; ++i) {
+        if (i == 0) nl->start[0] = 0; /* by one thread */
+        nl->start[i + 1] = (int32_t)scan_cells(cells, box, periodic, rl2, x, y, z, i, NULL);
+    }
+}
+
 void pl_colloid_nlist_count(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
                             const double box[3], const int periodic[3], const double *x,
                             const double *y, const double *z, int nthreads)
 {
-    size_t n = nl->n;
-    double rl2 = nl->rlist * nl->rlist;
-    nl->start[0] = 0;
-#pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
-    for (size_t i = 0; i < n; ++i)
-        nl->start[i + 1] = (int32_t)scan_cells(cells, box, periodic, rl2, x, y, z, i, NULL);
+#pragma omp parallel num_threads(nthreads) if (nl->n >= PL_COLLOID_OMP_MIN)
+    pl_colloid_nlist_count_loop(nl, cells, box, periodic, x, y, z);
 }
 
-void pl_colloid_nlist_fill(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
-                           const double box[3], const int periodic[3], const double *x,
-                           const double *y, const double *z, int nthreads)
+void pl_colloid_nlist_fill_loop(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
+                                const double box[3], const int periodic[3], const double *x,
+                                const double *y, const double *z)
 {
     size_t n = nl->n;
     double rl2 = nl->rlist * nl->rlist;
-#pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
+#pragma omp for schedule(static)
     for (size_t i = 0; i < n; ++i) {
         scan_cells(cells, box, periodic, rl2, x, y, z, i, nl->nbr + nl->start[i]);
         nl->x0[i] = x[i];
         nl->y0[i] = y[i];
         nl->z0[i] = z[i];
     }
+}
+
+void pl_colloid_nlist_finish(pl_colloid_nlist_t *nl, int nthreads) { reverse_entries(nl, nthreads); }
+
+void pl_colloid_nlist_fill(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
+                           const double box[3], const int periodic[3], const double *x,
+                           const double *y, const double *z, int nthreads)
+{
+#pragma omp parallel num_threads(nthreads) if (nl->n >= PL_COLLOID_OMP_MIN)
+    pl_colloid_nlist_fill_loop(nl, cells, box, periodic, x, y, z);
     reverse_entries(nl, nthreads);
 }
 
@@ -176,23 +197,41 @@ static size_t near_scan(pl_colloid_nlist_t *near, const pl_colloid_nlist_t *full
     return m;
 }
 
+void pl_colloid_nlist_near_count_loop(pl_colloid_nlist_t *near, const pl_colloid_nlist_t *full,
+                                      const pl_colloid_pair_params_t *p, const double *x,
+                                      const double *y, const double *z, const double *rad)
+{
+    size_t n = full->n;
+#pragma omp for schedule(static)
+    for (size_t i = 0; i < n; ++i) {
+        if (i == 0) near->start[0] = 0; /* by one thread */
+        near->start[i + 1] = (int32_t)near_scan(near, full, p, x, y, z, rad, i, 0);
+    }
+}
+
 void pl_colloid_nlist_near_count(pl_colloid_nlist_t *near, const pl_colloid_nlist_t *full,
                                  const pl_colloid_pair_params_t *p, const double *x,
                                  const double *y, const double *z, const double *rad, int nthreads)
 {
+#pragma omp parallel num_threads(nthreads) if (full->n >= PL_COLLOID_OMP_MIN)
+    pl_colloid_nlist_near_count_loop(near, full, p, x, y, z, rad);
+}
+
+void pl_colloid_nlist_near_fill_loop(pl_colloid_nlist_t *near, const pl_colloid_nlist_t *full,
+                                     const pl_colloid_pair_params_t *p, const double *x,
+                                     const double *y, const double *z, const double *rad)
+{
     size_t n = full->n;
-    near->start[0] = 0;
-#pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
-    for (size_t i = 0; i < n; ++i) near->start[i + 1] = (int32_t)near_scan(near, full, p, x, y, z, rad, i, 0);
+#pragma omp for schedule(static)
+    for (size_t i = 0; i < n; ++i) near_scan(near, full, p, x, y, z, rad, i, 1);
 }
 
 void pl_colloid_nlist_near_fill(pl_colloid_nlist_t *near, const pl_colloid_nlist_t *full,
                                 const pl_colloid_pair_params_t *p, const double *x,
                                 const double *y, const double *z, const double *rad, int nthreads)
 {
-    size_t n = full->n;
-#pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
-    for (size_t i = 0; i < n; ++i) near_scan(near, full, p, x, y, z, rad, i, 1);
+#pragma omp parallel num_threads(nthreads) if (full->n >= PL_COLLOID_OMP_MIN)
+    pl_colloid_nlist_near_fill_loop(near, full, p, x, y, z, rad);
     near->skin = full->skin;
     reverse_entries(near, nthreads);
 }

@@ -6,7 +6,7 @@
  * over the near list (kernels/colloid_forces.c with p->mts); the slow share,
  * w F, here, once per outer step, over the full Verlet list, and applied as
  * a kick of slow_interval MD steps at each end of the outer step
- * (kernels/colloid_verlet.c).  w = 0 below the gap hin, which lies beyond
+ * (kernels/colloid_verlet.h).  w = 0 below the gap hin, which lies beyond
  * the primary minimum's match gap, so the slow share is Eqs. 1-2 alone; it
  * holds no dissipative term, so it is a function of the positions only.
  *

@@ -227,7 +227,7 @@ Test(colloid_md, bitwise_threads)
     free(snap[1]);
 }
 
-/* The fused velocity-Verlet step (kernels/colloid_verlet.c, what
+/* The fused velocity-Verlet step (kernels/colloid_verlet.h, what
  * pl_colloid_md_step runs) against the separate passes it replaces (kick,
  * drift, pl_colloid_forces, kick, pl_colloid_guard; the potential coupling's
  * MD loop still runs these): every state array bitwise equal after 200 MD

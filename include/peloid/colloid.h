@@ -190,6 +190,9 @@ void pl_colloid_adaptive_free(pl_colloid_t *c);
 /* The MD steps of the collision step starting now (c->adaptive), from the
  * positions and velocities and the neighbour list of c. */
 int pl_colloid_adaptive_substeps(pl_colloid_t *c);
+/* The choice itself from the reach maxima em, v2 (pl_colloid_reach_energy):
+ * a pure function of them and c's parameters (no counters). */
+int pl_colloid_adaptive_choose(const pl_colloid_t *c, double em, double v2);
 /* Linked cells and neighbour list for pair cut-off rc (a0) with a skin of
  * skin_fraction rc (capped so that rc + skin <= L/2 on periodic axes); the
  * next pl_colloid_forces builds the list.  Called by pl_colloid_setup. */
@@ -200,16 +203,20 @@ int pl_colloid_neighbors_init(pl_colloid_t *c, double rc, double skin_fraction, 
  * The positions are taken as those after c->md_step MD steps: that count
  * keys the lubrication noise (lubrication.thermal), so a caller that
  * integrates counts the step before its end-of-step forces (as
- * pl_colloid_verlet_step does).
+ * the MD region does, kernels/colloid_md_region.c).
  * PL_ERR_NOMEM when a grown neighbour list cannot be allocated. */
 int pl_colloid_forces(pl_colloid_t *c, pl_err_t *err);
 
-/* One velocity-Verlet MD step with the force evaluation (the neighbour list
- * rebuilt when needed) and the guard maxima into g, through the fused
- * kernels of kernels/colloid_verlet.c: the same state as pl_colloid_kick,
- * pl_colloid_drift, ++c->md_step, pl_colloid_forces, pl_colloid_kick (the
- * caller, pl_colloid_md_step, counts the step). */
-int pl_colloid_verlet_step(pl_colloid_t *c, pl_colloid_guard_max_t *g, pl_err_t *err);
+/* Slot arrays of a neighbour list for at least need pairs (PL_ERR_NOMEM). */
+int pl_colloid_nlist_reserve(pl_colloid_nlist_t *nl, size_t need, pl_err_t *err);
+/* The MD region's view of c (kernels/colloid_md_region.c; v: its storage). */
+void pl_colloid_md_region_of(pl_colloid_t *c, pl_colloid_md_region_t *r, pl_colloid_view_t *v);
+/* n velocity-Verlet MD steps of c->dt in one parallel region
+ * (src/colloid/colloid_md.c), each followed by the guards; n = 0: the MD
+ * steps of a collision step with adaptive substeps, their count and dt chosen
+ * in the region (pl_colloid_adaptive_choose), the rest possibly finished at
+ * the finest MD step (pl_colloid_advance). */
+int pl_colloid_verlet_run(pl_colloid_t *c, int n, pl_err_t *err);
 /* One MD step (velocity Verlet + quaternions, or BD), then the guards. */
 int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err);
 /* The plan stage: colloids.substeps MD steps of one collision step. */
@@ -222,6 +229,9 @@ int pl_colloid_guard(pl_colloid_t *c, int check_energy, pl_err_t *err);
  * the fused MD step). */
 int pl_colloid_guard_max(pl_colloid_t *c, const pl_colloid_guard_max_t *g, int check_energy,
                          pl_err_t *err);
+/* Does a bound trip on these maxima at MD step dt?  (What pl_colloid_guard_max
+ * reports then; a pure function of c's parameters, g and dt.) */
+int pl_colloid_guard_trips(const pl_colloid_t *c, double dt, const pl_colloid_guard_max_t *g);
 
 /* Kinetic + potential energy terms of the current state (fixed-order sums);
  * evaluates the pair energies (into epot) for the positions of the last

@@ -247,6 +247,26 @@ void pl_colloid_nlist_fill(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cel
                            const double box[3], const int periodic[3], const double *x,
                            const double *y, const double *z, int nthreads);
 
+/* The scans of pl_colloid_nlist_count / _fill (without the fill's reverse
+ * entries) as orphaned worksharing loops for every thread of a caller's
+ * team (static schedule, implicit barrier), and the reverse entries
+ * (serial, one thread: pl_colloid_nlist_finish). */
+void pl_colloid_nlist_count_loop(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
+                                 const double box[3], const int periodic[3], const double *x,
+                                 const double *y, const double *z);
+void pl_colloid_nlist_fill_loop(pl_colloid_nlist_t *nl, const pl_colloid_cells_t *cells,
+                                const double box[3], const int periodic[3], const double *x,
+                                const double *y, const double *z);
+void pl_colloid_nlist_finish(pl_colloid_nlist_t *nl, int nthreads);
+/* Is the list to be rebuilt before a force evaluation?  Never built, or a
+ * colloid moved by more than half the skin since (disp2: the largest squared
+ * displacement; a NaN asks for a rebuild). */
+static inline int pl_colloid_nlist_stale(const pl_colloid_nlist_t *nl, double disp2)
+{
+    const double half = 0.5 * nl->skin;
+    return nl->builds == 0 || !(disp2 <= half * half);
+}
+
 /* The near list of multiple time stepping (kernels/colloid_neighbors.c):
  * the pairs of the built full list that may feel a fast force before its
  * next build (count into start[1..n], not summed; then fill after the
@@ -257,6 +277,14 @@ void pl_colloid_nlist_near_count(pl_colloid_nlist_t *near, const pl_colloid_nlis
 void pl_colloid_nlist_near_fill(pl_colloid_nlist_t *near, const pl_colloid_nlist_t *full,
                                 const pl_colloid_pair_params_t *p, const double *x,
                                 const double *y, const double *z, const double *rad, int nthreads);
+/* Their scans as orphaned loops (near's skin and reverse entries then by
+ * one thread: near->skin = full->skin, pl_colloid_nlist_finish). */
+void pl_colloid_nlist_near_count_loop(pl_colloid_nlist_t *near, const pl_colloid_nlist_t *full,
+                                      const pl_colloid_pair_params_t *p, const double *x,
+                                      const double *y, const double *z, const double *rad);
+void pl_colloid_nlist_near_fill_loop(pl_colloid_nlist_t *near, const pl_colloid_nlist_t *full,
+                                     const pl_colloid_pair_params_t *p, const double *x,
+                                     const double *y, const double *z, const double *rad);
 
 /* The slow share of the DLVO forces (multiple time stepping,
  * kernels/colloid_slow.c) over the full list into fs (overwritten): the
@@ -286,7 +314,7 @@ void pl_colloid_pair_forces(const pl_colloid_pair_params_t *p, const pl_colloid_
                             const pl_colloid_view_t *v, int nthreads);
 
 /* The two passes of pl_colloid_pair_forces, for a caller that fuses more
- * per-colloid work into pass 2 (kernels/colloid_verlet.c).  Pass 1: each
+ * per-colloid work into pass 2 (kernels/colloid_verlet.h).  Pass 1: each
  * colloid's own pairs, an orphaned worksharing loop (static schedule) to be
  * called by every thread of the caller's parallel region; its implicit
  * barrier ends it.  Pass 2, per colloid i after that barrier: the reverse
@@ -449,26 +477,66 @@ typedef struct {
     double *fsx, *fsy, *fsz; /* slow forces (multiple time stepping), else NULL */
 } pl_colloid_dyn_t;
 
-/* Velocity-Verlet MD step of time step dt in two parallel regions
- * (kernels/colloid_verlet.c), bitwise the same as the separate passes
- * (pl_colloid_kick, pl_colloid_drift, pl_colloid_pair_forces,
- * pl_colloid_ext_forces, pl_colloid_kick, then the guard's pass).
- * Open: the half kick and the drift; returns the largest squared
- * displacement since the list build (+inf for a non-finite one).  The caller
- * rebuilds the list when needed, then Close: pair forces (v: the same arrays
- * as s), external forces, the second half kick and the guard maxima into g.
- * Multiple time stepping: open with slow_h > 0 first kicks by slow_h s->fs
- * (the start of an outer step); the pair pass runs over nl, the near list;
- * close with slow_h > 0 (the end of an outer step) also evaluates the slow
- * forces over full into s->fs and kicks by slow_h with them after the fast
- * kick.  slow_h = 0: one time step (full unused; may be NULL). */
-double pl_colloid_verlet_open(const pl_colloid_dyn_t *s, double dt, double slow_h,
-                              const pl_colloid_nlist_t *nl, int nthreads);
-void pl_colloid_verlet_close(const pl_colloid_dyn_t *s, double dt, double slow_h,
-                             const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
-                             const pl_colloid_nlist_t *full, const pl_colloid_view_t *v,
-                             const pl_colloid_ext_params_t *ext, double *epot,
-                             pl_colloid_guard_max_t *g, int nthreads);
+/* The MD steps of one collision step in one parallel region
+ * (kernels/colloid_md_region.c): velocity Verlet, bitwise the same as the
+ * separate passes (pl_colloid_kick, pl_colloid_drift, pl_colloid_forces,
+ * pl_colloid_ext_forces, pl_colloid_kick, then the guard's pass), with the
+ * neighbour list rebuilt inside when a colloid has moved by more than half
+ * the skin.  The caller's decisions come through hooks on its control
+ * state ctl, of which every thread keeps its own copy:
+ *   end(ctx, ctl, g) and next(ctx, ctl, done, sub): called by every thread
+ *     on its copy, so pure functions of ctl, g and what no hook changes
+ *     inside the region.  end: after an MD step, g its guard maxima;
+ *     PL_MD_CHECK when check is to run.  next: before the first MD step
+ *     (done = 0) and after each end (done = 1, the check passed);
+ *     PL_MD_RUN with the next step's parameters in sub, or 0: the end;
+ *   check(ctx, ctl, g): one thread, the team waiting (guard report, energy
+ *     drift); 0, or -1 to stop (ctl then as end left it);
+ *   reserve(ctx, nl, need): one thread: slot arrays of nl for need pairs
+ *     (0, or -1 to stop).
+ * ctl comes in with the state before the first step and goes out with the
+ * state after the last (the same in every thread).  Returns 0, or -1 when a
+ * hook did.
+ * Multiple time stepping (near != NULL): the pair pass runs over near with
+ * the fast share; open_h > 0 first kicks by open_h s.fs (the start of an
+ * outer step); close_h > 0 (its end) also evaluates the slow forces over
+ * full into s.fs and kicks by close_h with them after the fast kick. */
+typedef struct {
+    double dt, open_h, close_h;
+} pl_colloid_md_sub_t;
+struct pl_colloid_reach; /* peloid/colloid_reach.h */
+/* The control state of the MD steps (the hooks' to interpret;
+ * src/colloid/colloid_md.c). */
+typedef struct {
+    long long md_step, adapt_md, adapt_refined, adapt_steps, adapt_lo, adapt_hi;
+    double dt, adapt_last, adapt_worst;
+    double reach_e, reach_v2; /* with r->reach: its maxima, before the first next */
+    int slow_phase, n, todo, refine, check_e;
+} pl_colloid_md_ctl_t;
+enum { PL_MD_RUN = 1, PL_MD_CHECK = 2 };
+typedef struct {
+    void *ctx;
+    int (*end)(const void *ctx, pl_colloid_md_ctl_t *ctl, const pl_colloid_guard_max_t *g);
+    int (*next)(const void *ctx, pl_colloid_md_ctl_t *ctl, int done, pl_colloid_md_sub_t *sub);
+    int (*check)(void *ctx, const pl_colloid_md_ctl_t *ctl, const pl_colloid_guard_max_t *g);
+    int (*reserve)(void *ctx, pl_colloid_nlist_t *nl, size_t need);
+} pl_colloid_md_hooks_t;
+typedef struct {
+    pl_colloid_dyn_t s;
+    const pl_colloid_pair_params_t *p;
+    pl_colloid_nlist_t *full, *near; /* near: multiple time stepping, else NULL */
+    pl_colloid_cells_t *cells;
+    const pl_colloid_view_t *v;      /* the same arrays as s */
+    const pl_colloid_ext_params_t *ext;
+    double *epot;
+    /* adaptive substeps: the reach table, whose maxima (pl_colloid_reach_energy)
+     * the region computes first into ctl->reach_e, reach_v2; else NULL */
+    const struct pl_colloid_reach *reach;
+    double reach_margin;
+    int nthreads;
+} pl_colloid_md_region_t;
+int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_hooks_t *hk,
+                         pl_colloid_md_ctl_t *ctl);
 
 /* Velocity Verlet half kick (PL Eq. 19 / Hecht Eq. 8 and the rotational
  * analogue of Hecht Eq. 9): v += h F/m, w += h T/I. */

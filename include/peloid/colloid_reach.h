@@ -48,7 +48,7 @@ static inline pl_pair_val_t pl_colloid_contact_val(const pl_colloid_pair_params_
     return s;
 }
 
-typedef struct {
+typedef struct pl_colloid_reach {
     double d;          /* the pair diameter of the table (monodisperse) */
     double hcut, dh;   /* h_k = hcut - k dh */
     int nk;            /* k = 0 .. nk */
@@ -88,5 +88,35 @@ void pl_colloid_reach_energy(const pl_colloid_pair_params_t *p, const pl_colloid
                              const double *y, const double *z, const double *vx, const double *vy,
                              const double *vz, const double *mass, double *emax, double *v2max,
                              int nthreads);
+
+/* Owner i's share of pl_colloid_reach_energy, raised into *em and *vm (the
+ * MD region of kernels/colloid_md_region.c runs it in its team). */
+static inline void pl_colloid_reach_owner(const pl_colloid_pair_params_t *p, const pl_colloid_nlist_t *nl,
+                                          const pl_colloid_reach_t *t, double margin, const double *x,
+                                          const double *y, const double *z, const double *vx,
+                                          const double *vy, const double *vz, const double *mass,
+                                          size_t i, double *em, double *vm)
+{
+    const double d = t->d, rc = d + p->gap_cut;
+    double v2 = vx[i] * vx[i] + vy[i] * vy[i] + vz[i] * vz[i];
+    /* a non-finite speed makes the caller fall back to the most steps */
+    if (!(v2 <= *vm)) *vm = isnan(v2) ? INFINITY : v2;
+    for (int32_t s = nl->start[i]; s < nl->start[i + 1]; ++s) {
+        size_t j = (size_t)nl->nbr[s];
+        double dx = pl_min_image(x[i] - x[j], p->box[0], p->periodic[0]);
+        double dy = pl_min_image(y[i] - y[j], p->box[1], p->periodic[1]);
+        double dz = pl_min_image(z[i] - z[j], p->box[2], p->periodic[2]);
+        double r2 = dx * dx + dy * dy + dz * dz;
+        if (!(r2 < rc * rc)) continue;
+        double r = sqrt(r2), h = r - d;
+        double vn = ((vx[i] - vx[j]) * dx + (vy[i] - vy[j]) * dy + (vz[i] - vz[j]) * dz) / r;
+        double mred = mass[i] * mass[j] / (mass[i] + mass[j]);
+        double kin = vn < 0.0 ? 0.5 * mred * vn * vn : 0.0;
+        double e = pl_colloid_reach_u(t, h) + kin + margin;
+        double eh = pl_colloid_reach_ereq(t, h);
+        if (eh > e) e = eh;
+        if (!(e <= *em)) *em = isnan(e) ? INFINITY : e;
+    }
+}
 
 #endif

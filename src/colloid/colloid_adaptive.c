@@ -116,12 +116,9 @@ static double k2_of_energy(const pl_colloid_reach_t *t, double e)
     return t->k2[hi];
 }
 
-int pl_colloid_adaptive_substeps(pl_colloid_t *c)
+int pl_colloid_adaptive_choose(const pl_colloid_t *c, double em, double v2)
 {
     const pl_colloid_reach_t *t = &c->reach;
-    double em, v2;
-    pl_colloid_reach_energy(&c->pair, &c->nlist, t, c->adapt_margin, c->x, c->y, c->z, c->vx, c->vy,
-                            c->vz, c->mass, &em, &v2, c->nthreads);
     double k2 = k2_of_energy(t, em);
     double hfar = t->hcut - 2.0 * sqrt(v2) * c->dt_coll, qf = (t->hcut - hfar) / t->dh;
     double kf = !(qf < (double)t->nk) ? t->k2[t->nk] : t->k2[(int)qf + 1];
@@ -135,9 +132,18 @@ int pl_colloid_adaptive_substeps(pl_colloid_t *c)
     const long long k = c->slow_interval > 1 ? c->slow_interval : 1;
     if (n % k) n = (n / k + 1) * k;
     if (n > c->substeps) n = c->substeps;
+    return (int)n;
+}
+
+int pl_colloid_adaptive_substeps(pl_colloid_t *c)
+{
+    double em, v2;
+    pl_colloid_reach_energy(&c->pair, &c->nlist, &c->reach, c->adapt_margin, c->x, c->y, c->z, c->vx, c->vy,
+                            c->vz, c->mass, &em, &v2, c->nthreads);
+    const int n = pl_colloid_adaptive_choose(c, em, v2);
     c->adapt_steps++;
     c->adapt_md += n;
     if (n < c->adapt_lo) c->adapt_lo = n;
     if (n > c->adapt_hi) c->adapt_hi = n;
-    return (int)n;
+    return n;
 }

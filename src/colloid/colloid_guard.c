@@ -33,7 +33,7 @@ static size_t argmax(const double *a, size_t n)
 }
 
 /* The tests both scans apply, per colloid or on a maximum (the per-colloid
- * ones shared with the fused MD step, kernels/colloid_verlet.c). */
+ * ones shared with the fused MD step, kernels/colloid_verlet.h). */
 static inline int state_finite(const pl_colloid_t *c, size_t i)
 {
     return pl_colloid_state_finite(c->x[i], c->y[i], c->z[i], c->vx[i], c->vy[i], c->vz[i],
@@ -44,12 +44,12 @@ static inline int image_axis_out(const pl_colloid_t *c, size_t i)
     return pl_colloid_image_axis_out(c->ix[i], c->iy[i], c->iz[i]);
 }
 /* MD steps resolving the collision of a pair with stiffness om2 = U''/m_red. */
-static inline double contact_steps(const pl_colloid_t *c, double om2) { return PL_PI / sqrt(om2) / c->dt; }
-static inline int contact_trips(const pl_colloid_t *c, double om2)
+static inline double contact_steps(double dt, double om2) { return PL_PI / sqrt(om2) / dt; }
+static inline int contact_trips(const pl_colloid_t *c, double dt, double om2)
 {
-    return c->min_contact_steps > 0.0 && om2 > 0.0 && contact_steps(c, om2) < c->min_contact_steps;
+    return c->min_contact_steps > 0.0 && om2 > 0.0 && contact_steps(dt, om2) < c->min_contact_steps;
 }
-static inline int damping_trips(const pl_colloid_t *c, double damp) { return damp * c->dt > 0.5; }
+static inline int damping_trips(double dt, double damp) { return damp * dt > 0.5; }
 
 /* Drift of the total energy in undamped NVE runs (every guard_interval). */
 static int energy_check(pl_colloid_t *c, pl_err_t *err)
@@ -103,7 +103,7 @@ static int guard_report(const pl_colloid_t *c, pl_err_t *err)
                           st, w, c->g_partner[w], c->g_overlap[w], c->max_overlap);
     w = argmax(c->g_omega2, n);
     const double om2 = c->g_omega2[w];
-    if (contact_trips(c, om2))
+    if (contact_trips(c, c->dt, om2))
         return pl_err_set(err, PL_ERR_GUARD,
                           "guard contact_steps: MD step %lld: colloids %zu and %d: the "
                           "collision time pi sqrt(m_red/U'') = %.4g t0 is resolved by "
@@ -111,10 +111,10 @@ static int guard_report(const pl_colloid_t *c, pl_err_t *err)
                           "%g; raise colloids.substeps (physical{}: it is derived, raise "
                           "coarse_graining.reach_energy) or lower hertz.K / the stiffest term, "
                           "e.g. dlvo.primary_depth",
-                          st, w, c->g_partner[n + w], PL_PI / sqrt(om2), contact_steps(c, om2), c->dt,
+                          st, w, c->g_partner[n + w], PL_PI / sqrt(om2), contact_steps(c->dt, om2), c->dt,
                           c->min_contact_steps);
     w = argmax(c->g_damp, n);
-    if (damping_trips(c, c->g_damp[w]))
+    if (damping_trips(c->dt, c->g_damp[w]))
         return pl_err_set(err, PL_ERR_GUARD,
                           "guard damping: MD step %lld: colloids %zu and %d: dt zeta/m_red = %.4g "
                           "(dissipative rate %.4g /t0); bound 0.5; raise lubrication.min_gap or "
@@ -135,14 +135,19 @@ static void guard_max(const pl_colloid_t *c, pl_colloid_guard_max_t *g)
     pl_colloid_guard_scan(&v, g, c->nthreads);
 }
 
+int pl_colloid_guard_trips(const pl_colloid_t *c, double dt, const pl_colloid_guard_max_t *g)
+{
+    /* the same tests as guard_report, on the maxima (a NaN guard quantity
+     * sends it to guard_report too) */
+    return c->n && (g->bad || g->overlap > c->max_overlap || contact_trips(c, dt, g->omega2) ||
+                    damping_trips(dt, g->damp));
+}
+
 int pl_colloid_guard_max(pl_colloid_t *c, const pl_colloid_guard_max_t *g, int check_energy,
                          pl_err_t *err)
 {
     if (!c->n) return 0;
-    /* does any bound trip?  The same tests as guard_report, on the maxima (a
-     * NaN guard quantity sends it to guard_report too) */
-    if (g->bad || g->overlap > c->max_overlap || contact_trips(c, g->omega2) ||
-        damping_trips(c, g->damp)) {
+    if (pl_colloid_guard_trips(c, c->dt, g)) {
         int rc = guard_report(c, err);
         if (rc) return rc;
     }

@@ -128,7 +128,7 @@ static int mts_alloc(pl_colloid_t *c, pl_err_t *err)
 
 /* Slot arrays of the neighbour list for at least `need` pairs (grown by a
  * quarter beyond the need, so rebuilds rarely allocate). */
-static int nlist_reserve(pl_colloid_nlist_t *nl, size_t need, pl_err_t *err)
+int pl_colloid_nlist_reserve(pl_colloid_nlist_t *nl, size_t need, pl_err_t *err)
 {
     if (need <= nl->cap) return 0;
     size_t cap = need + need / 4 + 64;
@@ -157,13 +157,13 @@ static int nlist_build(pl_colloid_t *c, pl_err_t *err)
     pl_colloid_cells_build(&c->cells, c->n, c->x, c->y, c->z);
     pl_colloid_nlist_count(nl, &c->cells, c->box, c->periodic, c->x, c->y, c->z, c->nthreads);
     for (size_t i = 0; i < c->n; ++i) nl->start[i + 1] += nl->start[i];
-    if (nlist_reserve(nl, (size_t)nl->start[c->n], err)) return err->code;
+    if (pl_colloid_nlist_reserve(nl, (size_t)nl->start[c->n], err)) return err->code;
     pl_colloid_nlist_fill(nl, &c->cells, c->box, c->periodic, c->x, c->y, c->z, c->nthreads);
     if (c->slow_interval <= 1) return 0;
     pl_colloid_nlist_t *nr = &c->near;
     pl_colloid_nlist_near_count(nr, nl, &c->pair, c->x, c->y, c->z, c->rad, c->nthreads);
     for (size_t i = 0; i < c->n; ++i) nr->start[i + 1] += nr->start[i];
-    if (nlist_reserve(nr, (size_t)nr->start[c->n], err)) return err->code;
+    if (pl_colloid_nlist_reserve(nr, (size_t)nr->start[c->n], err)) return err->code;
     pl_colloid_nlist_near_fill(nr, nl, &c->pair, c->x, c->y, c->z, c->rad, c->nthreads);
     return 0;
 }
@@ -190,9 +190,7 @@ int pl_colloid_neighbors_init(pl_colloid_t *c, double rc, double skin_fraction, 
  * since the build, beyond (skin/2)^2 (a function of the state alone). */
 static int nlist_ensure(pl_colloid_t *c, double disp2, pl_err_t *err)
 {
-    const double half = 0.5 * c->nlist.skin;
-    if (c->nlist.builds == 0 || !(disp2 <= half * half)) return nlist_build(c, err);
-    return 0;
+    return pl_colloid_nlist_stale(&c->nlist, disp2) ? nlist_build(c, err) : 0;
 }
 
 static pl_colloid_dyn_t colloid_dyn(pl_colloid_t *c)
@@ -230,26 +228,15 @@ static void lub_noise_set(pl_colloid_t *c, long long step)
     p->lub_noise = p->lub_thermal && (p->terms & PL_CT_LUB) ? sqrt(2.0 * p->lub_kT / c->dt) : 0.0;
 }
 
-int pl_colloid_verlet_step(pl_colloid_t *c, pl_colloid_guard_max_t *g, pl_err_t *err)
+void pl_colloid_md_region_of(pl_colloid_t *c, pl_colloid_md_region_t *r, pl_colloid_view_t *v)
 {
-    const pl_colloid_dyn_t s = colloid_dyn(c);
-    /* multiple time stepping: the slow kicks of k dt / 2 open the first and
-     * close the last MD step of each outer step of k; slow_phase counts the
-     * MD steps of the outer step, reset by pl_colloid_advance at each
-     * collision step (k divides the substeps, so outer steps end with it) */
-    const int k = c->slow_interval;
-    const int phase = k > 1 ? c->slow_phase : 0;
-    if (k > 1) c->slow_phase = (phase + 1) % k;
-    const double slow_h = 0.5 * (double)k * c->dt;
-    const double open_h = k > 1 && phase == 0 ? slow_h : 0.0;
-    const double close_h = k > 1 && phase == k - 1 ? slow_h : 0.0;
-    const double disp2 = pl_colloid_verlet_open(&s, c->dt, open_h, &c->nlist, c->nthreads);
-    if (nlist_ensure(c, disp2, err)) return err->code;
-    const pl_colloid_view_t v = colloid_view(c);
-    lub_noise_set(c, c->md_step + 1); /* the close's forces: positions after this step */
-    pl_colloid_verlet_close(&s, c->dt, close_h, &c->pair, pair_list(c), &c->nlist, &v, &c->ext,
-                            c->epot, g, c->nthreads);
-    return 0;
+    *v = colloid_view(c);
+    c->pair.noise_seed = c->seed; /* the region sets each MD step's noise_step and lub_noise (lub_noise_set) */
+    const pl_colloid_md_region_t rr = {.s = colloid_dyn(c), .p = &c->pair, .full = &c->nlist,
+                                       .near = c->slow_interval > 1 ? &c->near : NULL,
+                                       .cells = &c->cells, .v = v, .ext = &c->ext, .epot = c->epot,
+                                       .reach = NULL, .reach_margin = 0.0, .nthreads = c->nthreads};
+    *r = rr;
 }
 
 int pl_colloid_forces(pl_colloid_t *c, pl_err_t *err)

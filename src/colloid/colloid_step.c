@@ -3,67 +3,39 @@
  * followed by the guards, and the plan stage that runs the MD substeps of one
  * collision step (dt_MD = srd.dt / colloids.substeps, or with adaptive
  * substeps srd.dt / the count chosen at the step's start,
- * src/colloid/colloid_adaptive.c). */
-#include <math.h>
-
-#include "peloid/real.h" /* PL_PI */
+ * src/colloid/colloid_adaptive.c).  The velocity-Verlet steps of a
+ * collision step run in one parallel region (src/colloid/colloid_md.c). */
 #include "peloid/colloid.h"
 
 int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err)
 {
-    pl_colloid_guard_max_t g;
-    const int fused = c->integrator == PL_CINT_VERLET;
-    if (fused) {
-        /* kick, drift, forces (the velocity-dependent ones: damping,
-         * friction, lubrication see the half-step velocities), kick, and
-         * the guard's maxima, in the fused kernels */
-        if (pl_colloid_verlet_step(c, &g, err)) return err->code;
-    } else {
-        pl_colloid_bd_params_t bp = {c->dt, c->kT, c->bd_eta, c->seed, (uint64_t)c->md_step};
-        pl_colloid_bd_step(&bp, c->n, c->box, c->periodic, c->rad, c->x, c->y, c->z, c->ix, c->iy,
-                           c->iz, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz, c->vx, c->vy, c->vz,
-                           c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3, c->nthreads);
-        if (pl_colloid_forces(c, err)) return err->code;
-    }
+    if (c->integrator == PL_CINT_VERLET) return pl_colloid_verlet_run(c, 1, err);
+    pl_colloid_bd_params_t bp = {c->dt, c->kT, c->bd_eta, c->seed, (uint64_t)c->md_step};
+    pl_colloid_bd_step(&bp, c->n, c->box, c->periodic, c->rad, c->x, c->y, c->z, c->ix, c->iy,
+                       c->iz, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz, c->vx, c->vy, c->vz,
+                       c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3, c->nthreads);
+    if (pl_colloid_forces(c, err)) return err->code;
     c->md_step++;
-    if (c->adaptive && fused) { /* this step's and the run's closest call */
-        const double steps = g.omega2 > 0.0 ? PL_PI / sqrt(g.omega2) / c->dt : INFINITY;
-        c->adapt_last = steps;
-        if (!(steps >= c->adapt_worst)) c->adapt_worst = steps;
-    }
     int check_e = c->nve && c->max_energy_drift > 0.0 && c->md_step % c->guard_interval == 0;
-    return fused ? pl_colloid_guard_max(c, &g, check_e, err) : pl_colloid_guard(c, check_e, err);
+    return pl_colloid_guard(c, check_e, err);
 }
 
 int pl_colloid_advance(pl_colloid_t *c, long long collision_step, pl_err_t *err)
 {
     (void)collision_step;
     c->slow_phase = 0; /* an outer step of multiple time stepping starts here */
-    int n = c->substeps;
-    if (c->adaptive) {
-        n = pl_colloid_adaptive_substeps(c);
-        c->dt = c->dt_coll / (double)n;
-    }
-    /* adaptive, one time step: should a contact come within
-     * PL_ADAPT_REFINE x min_contact_steps MD steps of the guard's bound
-     * anyway (energy from a third colloid or a wall beyond the margin), the
-     * rest of the collision step runs at the finest MD step, colloids.substeps
-     * per collision step: a function of the state, like the choice (under
-     * multiple time stepping the outer steps keep their length instead) */
-    const int refine = c->adaptive && c->slow_interval <= 1 && n < c->substeps;
-    for (int s = 0; s < n; ++s) {
+    /* adaptive substeps (velocity Verlet only): the count chosen from the
+     * state at the step's start, dt = srd.dt / count; should a contact come
+     * within PL_ADAPT_REFINE x min_contact_steps MD steps of the guard's
+     * bound anyway (energy from a third colloid or a wall beyond the
+     * margin), the rest of the collision step runs at the finest MD step,
+     * colloids.substeps per collision step: a function of the state, like the
+     * choice (under multiple time stepping the outer steps keep their length
+     * instead); both inside the MD region (src/colloid/colloid_md.c) */
+    if (c->integrator == PL_CINT_VERLET) return pl_colloid_verlet_run(c, c->adaptive ? 0 : c->substeps, err);
+    for (int s = 0; s < c->substeps; ++s) {
         int rc = pl_colloid_md_step(c, err);
         if (rc) return rc;
-        if (refine && s + 1 < n && c->adapt_last < PL_ADAPT_REFINE * c->min_contact_steps) {
-            const int left = n - s - 1;
-            const int m = (int)(((long long)left * c->substeps + n - 1) / n);
-            c->dt = c->dt_coll * ((double)left / (double)n) / (double)m;
-            c->adapt_refined++;
-            c->adapt_md += m - left;
-            for (int q = 0; q < m; ++q)
-                if ((rc = pl_colloid_md_step(c, err))) return rc;
-            break;
-        }
     }
     return 0;
 }
