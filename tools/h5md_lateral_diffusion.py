@@ -14,7 +14,8 @@ import h5py
 import numpy as np
 
 
-def lateral_d(path, tau1, tau2, blocks=8):
+def unwrapped(path):
+    """(t in s, unwrapped positions in m [frame, colloid, axis]) of a colloids.h5."""
     with h5py.File(path, "r") as f:
         g = f["particles/colloids"]
         u = {"nm": 1e-9, "um": 1e-6, "m": 1.0}
@@ -26,7 +27,11 @@ def lateral_d(path, tau1, tau2, blocks=8):
         x, img = g["position/value"][()] * ls, g["image/value"][()]
         t = g["position/time"][()] * ts
         L = np.diag(g["box/edges/value"][0]) * ls
-    r = x + img * L[None, None, :]
+    return t, x + img * L[None, None, :]
+
+
+def lateral_d(path, tau1, tau2, blocks=8):
+    t, r = unwrapped(path)
     dt = t[1] - t[0]
     k1, k2 = int(round(tau1 / dt)), int(round(tau2 / dt))
     n = len(t) - k2

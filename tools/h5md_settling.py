@@ -9,12 +9,14 @@ the box factor the mapping states (summary.json mapping.colloid_diffusion:
 d_box / d_real, Hasimoto's mobility in the box).  Independent of peloid's
 own observers.
 
-    python3 tools/h5md_settling.py RUN_DIR      (prints v SE ref n_colloids frames)"""
+    python3 tools/h5md_settling.py RUN_DIR      (one line: v +- SE against the reference; exit 1
+                                                unless within 10 % with SE < 3.3 %: the tests' rule)"""
 import json
 import sys
 
-import h5py
 import numpy as np
+
+from h5md_lateral_diffusion import unwrapped
 
 
 def settling(d, blocks=16):
@@ -22,16 +24,8 @@ def settling(d, blocks=16):
     m = s["mapping"]
     n = m["colloid"]["n_colloids"]
     cd = m["colloid_diffusion"]
-    with h5py.File(d + "/colloids.h5", "r") as f:
-        g = f["particles/colloids"]
-        u = {"nm": 1e-9, "um": 1e-6, "m": 1.0}
-        pu = g["position/value"].attrs["unit"]
-        pu = pu.decode() if isinstance(pu, bytes) else pu
-        tu = g["position/time"].attrs["unit"]
-        tu = tu.decode() if isinstance(tu, bytes) else tu
-        Lz = np.diag(g["box/edges/value"][0])[2]
-        z = (g["position/value"][()][:, :, 2] + g["image/value"][()][:, :, 2] * Lz) * u[pu]
-        t = g["position/time"][()] * {"ps": 1e-12, "ns": 1e-9, "s": 1.0}[tu]
+    t, r = unwrapped(d + "/colloids.h5")
+    z = r[:, :, 2]
     k = len(t) // blocks
     vb = np.array([-(z[(b + 1) * k, :] - z[b * k, :]).mean() / (t[(b + 1) * k] - t[b * k]) for b in range(blocks)])
     rel = 1.0 + n * m["colloid"]["mass_m_f"] / s["fluid_particles"]  # relative to the fluid's counter-flow
@@ -44,4 +38,7 @@ def settling(d, blocks=16):
 
 if __name__ == "__main__":
     v, se, stokes, box, n, nf = settling(sys.argv[1])
-    print(v, se, stokes * box, n, nf)
+    ref = stokes * box
+    print(f"v = {v:.4g} +- {se:.2g} m/s from colloids.h5 ({n} colloid(s), {nf} frames) vs Stokes {stokes:.4g} x box "
+          f"factor {box:.4f} = {ref:.4g}: {100 * (v / ref - 1):+.1f} %, SE {100 * se / v:.1f} %")
+    sys.exit(0 if abs(v / ref - 1) <= 0.10 and se / v <= 0.033 else 1)
