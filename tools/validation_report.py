@@ -68,7 +68,7 @@ STUDIES = [
         "study": "studies/hecht_fig9_kappa_1s.cfg",
         "figure": "Hecht 2005 Figs. 12–13 (1 s)",
         "paper": "κ = 1.4e8 /m, Ψ0 = 20 mV, 1 s: suspended",
-        "size": "as above, seed 9, 3420 steps, observers over steps 1710–3420",
+        "size": "as above, seed 9, 1788 steps, observers over steps 894–1788",
         "eval": fig9_kappa,
     },
     {
@@ -259,8 +259,8 @@ NOTES = [
     "the first runs: a peak of the contact geometry B, C or D of Fig. 5 (windows scaled by the first "
     "peak's position) standing 5 SE above its window's chord (5, not 3: each window takes its highest "
     "local maximum); the windows come from the Fig. 5 geometry; with 3 SE the verdicts at 1.4e8 and 1.6e8 "
-    "are the same (those peaks stand 10–15 SE high), the 1.0e8 point's D window reaches 3.0 SE.  The runs cover the scene's 1140 steps = 0.34 s of mapped time (steps × "
-    "srd.dt × t0); `studies/hecht_fig9_kappa_1s.cfg` runs κ = 1.4e8 /m for the whole second (3420 steps).  "
+    "are the same (those peaks stand 10–15 SE high), the 1.0e8 point's D window reaches 3.0 SE.  The runs cover the scene's 1140 steps = 0.64 s of mapped time (steps × "
+    "srd.dt × t0, at the coupling-true time); `studies/hecht_fig9_kappa_1s.cfg` runs κ = 1.4e8 /m for the whole second (1788 steps).  "
     "Where the verdict says *disagrees*, peloid clusters at κ = 1.4e8 /m where Hecht reports a suspension, "
     "by both rules; it is suspended at 1.0e8 and clustered at 1.6e8 and 2.0e8, so peloid's boundary at "
     "Ψ0 = 20 mV lies between 1.0e8 and 1.4e8 /m, below Hecht's.  Checked: the replica seed (the same within "
@@ -275,7 +275,7 @@ NOTES = [
     "so the rate at which flocs form within the run.  No parameter was tuned.",
     "",
     "**Hecht Fig. 9 as a diagram, Figs. 10–13.**  The same two rules, per point, seed 9, the scene's 1140 steps "
-    "(0.34 s of mapped time; Hecht ran 1 s).  Axes: Hecht gives Fig. 9's values only in its pictures; the text "
+    "(0.64 s of mapped time at the coupling-true time; Hecht ran 1 s).  Axes: Hecht gives Fig. 9's values only in its pictures; the text "
     "fixes its left column (Ψ0 = 20 mV, κ varying: Fig. 10) and its first row (κ = 2e8 /m, Ψ0 varying: Fig. "
     "11), and Figs. 5–7 and 14 use 50 mV at 7.3e7–3e8 /m.  The grid: κ = 7.3e7, 1.0e8, 1.4e8, 1.6e8, 2.0e8, "
     "3.0e8 /m × Ψ0 = 20, 35, 50 mV and 10 mV (left of the left column).  The orientation is read from the text, "
@@ -288,7 +288,7 @@ NOTES = [
     "and the 50 mV points at 7.3e7 and 3e8 hecht_fig5_rdf's (same scene and seed: the same trajectories), so S3 "
     "repeats that study's disagreement.  Failed points: without a DLVO barrier (10 mV at κ ≥ 1.4e8, 20 mV at "
     "3e8) the colloids fall into the parabolic primary minimum and overlap past the 10 % guard "
-    "(colloids.max_overlap) with hertz_K = 1000 kT/a0^2.5, within the first 61 SRD steps; they are kept as "
+    "(colloids.max_overlap) with hertz_K = 1000 kT/a0^2.5, early in the run (the MD step is in each failed cell); they are kept as "
     "failed, not re-run with a stiffer K (at 7.3e7 and 1.0e8 the 10 mV points ran and cluster).  The two rules "
     "differ at one point near the boundary (1.6e8 /m, 35 mV: largest cluster 3.5 %, but a D peak).  One seed per "
     "point; the SEs are from blocking within the run.  Figs. 12–13 (studies/hecht_fig9_phi.cfg): the colloid "
@@ -299,12 +299,12 @@ NOTES = [
     "",
     "**Hecht Fig. 4 (Richardson–Zaki).**  The sedimentation observer measures the slip velocity u "
     "(colloids relative to the fluid's mean).  The exponent depends on the frame, and Hecht does not say "
-    "which he used: in Richardson–Zaki's frame (zero volume flux, u (1 − φ)) peloid's l is about 2.2–2.3 at "
+    "which he used: in Richardson–Zaki's frame (zero volume flux, u (1 − φ)) peloid's l is about 2.2–2.4 at "
     "every Pe, well below Hecht's 3.5; the colloids' velocity in the simulation box (zero total momentum: "
     "the fluid carries the colloids' weight, Hecht Sec. VIII.A iii, and with it their momentum; u M_f / "
-    "(M_f + M_c), M_c / M_f = 3.9 φ for Al2O3) gives l ≈ 2.9 and is near Hecht's 3.5, but a single power "
+    "(M_f + M_c), M_c / M_f = 3.9 φ for Al2O3) gives l ≈ 2.9–3.1 and is near Hecht's 3.5, but a single power "
     "law fits it poorly (χ²/dof ≫ 1; the SE is scaled by √(χ²/dof)).  The Pe dependence is weak, as Hecht "
-    "and PL say.  The colloids' friction is well below 6π η R (the row's v∞ line): coupling II couples a "
+    "and PL say.  The colloids' friction is below 6π η R (0.60 of it, the row's v∞ line, η of the rule): coupling II couples a "
     "point colloid to its cell's collision, so its hydrodynamic radius is not R, and hindered settling, "
     "which is a hydrodynamic effect, is weaker.  Not checked: Hecht's own coupling II resolution (M = 60, "
     "λ = 0.5 a0, Hecht Sec. VII.C), which sets that friction; Hertz K = 1e5 kT/a0^2.5 (stiffer than the "
