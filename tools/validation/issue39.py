@@ -496,17 +496,41 @@ def verdict_viscosity():
     return ("Accuracy guide, SRD viscosity (accuracy_viscosity)", v, ev, "R7", 0.0, [])
 
 
-def section(out, rdir):
-    """The report's 'Verdicts (issue 39)' lines (and its plots, written into rdir)."""
+# The studies each row reads from OUT (rows 0, 3, 4, 5 of section()); the others are analytic or RECORDED.
+ROW_STUDIES = {0: ("hecht_fig9_lub", "hecht_fig9_lub_3s", "hecht_fig9_bd"), 3: ("pl_fig11_dphi_bd",),
+               4: ("pl_fig10_vacf_l64",), 5: ("pl_fig4_rdf_long", "pl_fig4_rdf_bd_long")}
+KEPT_NOTE = "  [Row kept from the previous generation of this section: the outputs of {} are not in OUT.]"
+
+
+def kept_row(out, i, name, previous):
+    """The previous generation's table line of row i when none of its studies' outputs is in `out` (a
+    --verdicts-only run on a machine without them), else None."""
+    if previous is None or i not in ROW_STUDIES or any(load(out, n) for n in ROW_STUDIES[i]):
+        return None
+    line = next((ln for ln in previous.splitlines() if ln.startswith(f"| {name} |")), None)
+    note = KEPT_NOTE.format(", ".join(ROW_STUDIES[i]))
+    if line is None or note in line:
+        return line
+    cells = line.split(" | ")
+    cells[2] += note
+    return " | ".join(cells)
+
+
+def section(out, rdir, previous=None):
+    """The report's 'Verdicts (issue 39)' lines (and its plots, written into rdir).  previous: the section as
+    last written; a row whose studies have no outputs in `out` is kept from it (kept_row), its plot unchanged."""
     b2 = b2_tool()
     f9 = verdict_fig9(out, rdir)
     rz = verdict_rz(out)
     dp = verdict_dphi(out)
     rows = [f9, verdict_fig11(), rz, dp, verdict_vacf(out, rdir), verdict_rdf(out, rdir), verdict_viscosity()]
+    kept = {i: kept_row(out, i, r[0], previous) for i, r in enumerate(rows)}
     b2.main_plot(os.path.join(rdir, "issue39_b2.png"))
-    plot_fig9(f9[6], os.path.join(rdir, "issue39_fig9_lub.png"))
+    if kept[0] is None:
+        plot_fig9(f9[6], os.path.join(rdir, "issue39_fig9_lub.png"))
     plot_rz(os.path.join(rdir, "issue39_rz.png"))
-    plot_dphi(dp[6], os.path.join(rdir, "issue39_dphi.png"))
+    if kept[3] is None:
+        plot_dphi(dp[6], os.path.join(rdir, "issue39_dphi.png"))
     import subprocess
     try:
         rev = subprocess.run(["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
@@ -519,7 +543,10 @@ def section(out, rdir):
              "equations); not settled (the decisive run was not made: a provisional verdict from what exists).  CPU: the "
              "runs' `cpu_seconds` (one thread, `nice -n 15`, on the shared 2-core machine); the analytic tools take ~1 s.",
              "", "| row | verdict | evidence (± SE) | rule | CPU | plots |", "|---|---|---|---|---|---|"]
-    for r in rows:
+    for i, r in enumerate(rows):
+        if kept[i]:
+            lines.append(kept[i])
+            continue
         name, v, ev, rule, c, plots = r[:6]
         vv = v if v.startswith("not settled") else f"**{v}**"
         pl = ", ".join(f"[{p}]({p})" for p in plots) or "–"
