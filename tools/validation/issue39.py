@@ -560,7 +560,14 @@ def section(out, rdir, previous=None):
               "run tests Hecht's set-up, not equilibrium.  (3) studies/hecht_fig9_bd.cfg (Brownian dynamics of Eqs. "
               "1–2) was added after the rules as the equilibrium reference the issue asks for; it decides nothing.  "
               "(4) The issue's B2* values are reproduced only with another normalisation and other constants (the "
-              "table's note).", ""]
+              "table's note).  (5) R5 and R6 were amended on branch exp39b with the decisive experiments' rules "
+              "(RULES_issue39.md, committed as 9ccedf1 before that branch's runs); the three study files were "
+              "written before the runs and committed at the first one's start (b88b1ba), unchanged since; the "
+              "evaluation code was committed (932c7f1) before the BD reference and the VACF runs had started (one SRD "
+              "replica had finished; its output, compared with itself, was the code's test input).  R5 fixes the model's "
+              "drop D_m = −0.311, computed on a uniform lag grid; the row compares with the model on the correlator's "
+              "own lags (like for like with the data) and prints the rule's number beside it; the gate SE(D) ≤ "
+              "0.104 is the rule's.", ""]
     for p in ["issue39_b2.png", "issue39_fig9_lub.png", "issue39_rz.png", "issue39_dphi.png"] + [
             q for r in rows[4:6] for q in r[5]]:
         lines += [f"![{p[:-4]}]({p})", ""]
