@@ -388,7 +388,9 @@ def verdict_vacf(out, rdir):
     if res is None:
         a, s = r["slip_enskog"]
         v = "not settled (provisional: " + ("disagrees — set-up" if abs(a - 1) <= 3 * s else "disagrees — peloid") + ")"
-        ev = (f"Not run: L = 64, ≥ 10 seeds (studies/pl_fig10_vacf_l64.cfg).  REPORT.md at 3981e2f: amplitude vs MCT "
+        ev = ((f"Not run: L = 64, ≥ 10 seeds (studies/pl_fig10_vacf_l64.cfg)" if sw is None else
+               f"studies/pl_fig10_vacf_l64.cfg: fewer than 2 of its {len(sw['points'])} seeds finished")
+              + f".  REPORT.md at 3981e2f: amplitude vs MCT "
               f"{r['mct_8_16'][0]} ± {r['mct_8_16'][1]} (8–16 t0), {r['mct_16_32'][0]} ± {r['mct_16_32'][1]} (16–32), "
               f"{r['mct_32_52'][0]} ± {r['mct_32_52'][1]} (32–52); vs the slip ∥ Enskog continuum model (PL Eq. 41 as a "
               f"memory function, box-corrected; post hoc) {a} ± {s} ({(a - 1) / s:+.1f} SE).")
@@ -430,9 +432,9 @@ def verdict_vacf(out, rdir):
           f"{'' if model_ok == model_ok_rule else ', which would change the model test'}), {D / Dse:+.1f} SE from 0.  "
           f"Rule: {why}.  Beside (no rule): A vs the box transverse-mode sum "
           + ", ".join(f"{k}: {w[k]['Abox'][0]:.3f} ± {w[k]['Abox'][1]:.3f}" for k in ("8–16", "16–32", "32–64"))
-          + "; SE of A from the 30 seed × component estimates " + ", ".join(
+          + f"; SE of A from the {3 * res['n']} seed × component estimates " + ", ".join(
               f"{k}: {w[k]['A30'][1]:.3f}" for k in ("8–16", "16–32", "32–64"))
-          + f" (from the 10 seeds: " + ", ".join(f"{w[k]['A'][1]:.3f}" for k in ("8–16", "16–32", "32–64"))
+          + f" (from the {res['n']} seeds: " + ", ".join(f"{w[k]['A'][1]:.3f}" for k in ("8–16", "16–32", "32–64"))
           + f"); L = 32 row (REPORT.md at 3981e2f): {r['mct_8_16'][0]} ± {r['mct_8_16'][1]} (8–16), "
           f"{r['mct_16_32'][0]} ± {r['mct_16_32'][1]} (16–32), {r['mct_32_52'][0]} ± {r['mct_32_52'][1]} (32–52).")
     pl10_l64_plot(res, r, os.path.join(rdir, "issue39_vacf_l64.png"))
