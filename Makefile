@@ -212,7 +212,8 @@ STUDIES := studies/hecht_fig9_kappa.cfg studies/hecht_fig9_kappa_replica.cfg stu
            studies/hecht_fig9_diagram.cfg studies/hecht_fig9_phi.cfg studies/accuracy_fluid_diffusion.cfg \
            studies/pl_fig10_vacf.cfg studies/pl_fig4_rdf.cfg studies/pl_fig4_rdf_bd_dt.cfg \
            studies/pl_fig11_dphi.cfg studies/pl_fig11_dphi_solvent.cfg studies/accuracy_drag_substeps.cfg \
-           studies/hecht_fig9_lub.cfg studies/hecht_fig9_lub_3s.cfg studies/hecht_fig9_bd.cfg studies/pl_fig11_dphi_bd.cfg
+           studies/hecht_fig9_lub.cfg studies/hecht_fig9_lub_3s.cfg studies/hecht_fig9_bd.cfg studies/pl_fig11_dphi_bd.cfg \
+           studies/pl_fig4_rdf_long.cfg studies/pl_fig4_rdf_bd_long.cfg studies/pl_fig10_vacf_l64.cfg
 # A sweep exits 1 when some of its points failed (a guard trip, recorded with its message: the Fig. 9
 # diagram's points without a DLVO barrier, the drag guide's 1 MD substep); the report shows them, so that
 # is not an error here; any other failure (bad input: 2) stops make studies.

@@ -10,7 +10,8 @@ each studies/*.cfg).
 
 --verdicts-only rewrites only the section "Verdicts (issue 39)" (tools/validation/issue39.py, between its
 markers) of an existing REPORT, leaving the rest as the last full generation wrote it (make
-validation-verdicts: for a report whose studies' outputs are not on this machine).
+validation-verdicts: for a report whose studies' outputs are not on this machine); a verdict row whose own
+studies have no outputs in OUT_STUDIES is kept from the section as last written, marked so.
 
 --update rewrites, in an existing REPORT, the rows of the named STUDIES entries (their table row, their
 details paragraph: the one that opens with the same bold title, and their plot) from OUT_STUDIES and the
@@ -421,17 +422,19 @@ VERDICTS_BEGIN = "<!-- verdicts of issue 39: tools/validation/issue39.py -->"
 VERDICTS_END = "<!-- end of the verdicts of issue 39 -->"
 
 
-def verdict_lines(out, rdir):
-    return [VERDICTS_BEGIN, ""] + issue39.section(out, rdir) + ["", VERDICTS_END]
+def verdict_lines(out, rdir, previous=None):
+    return [VERDICTS_BEGIN, ""] + issue39.section(out, rdir, previous) + ["", VERDICTS_END]
 
 
 def verdicts_only(out, report):
     """Replaces the verdict section of an existing report (appends it when the report has none)."""
     rdir = os.path.dirname(report) or "."
     text = open(report).read()
-    new = "\n".join(verdict_lines(out, rdir))
-    if VERDICTS_BEGIN in text and VERDICTS_END in text:
+    has = VERDICTS_BEGIN in text and VERDICTS_END in text
+    if has:
         a, b = text.index(VERDICTS_BEGIN), text.index(VERDICTS_END) + len(VERDICTS_END)
+    new = "\n".join(verdict_lines(out, rdir, text[a:b] if has else None))
+    if has:
         text = text[:a] + new + text[b:]
     else:
         text = text.rstrip("\n") + "\n\n" + new + "\n"

@@ -351,3 +351,101 @@ def reduced_pl_fig10_vacf(sw):
     return good, (f"tau = {tau:.3f} +- {se:.3f} vs tau_E {th['tau_E']:.3f} ({100 * (tau / th['tau_E'] - 1):+.1f} %, "
                   f"bound 25 %); C(1 t0) = {c1:.3f} +- {c1se:.3f} vs Langevin {lang:.3f}; "
                   f"C_FF(dt)/C_FF(0) = {r1:.3f} +- {r1se:.3f} -> tau_FP = {tfp:.3f} t0 (bound 0.3)")
+
+
+# Issue 39, R5 amended (validation/RULES_issue39.md, committed before the runs): studies/pl_fig10_vacf_l64.cfg.
+PL10_L64_WINDOWS = (("8–16", 8.0, 16.0), ("16–32", 16.0, 32.0), ("32–64", 32.0, 64.0), ("16–64", 16.0, 64.0))
+
+
+def pl10_window(lag, lo, hi):
+    """The correlator's lags in [lo, hi) t0, the last window (hi = 64) closed."""
+    return (lag >= lo - 1e-9) & ((lag < hi - 1e-9) if hi < 64.0 else (lag <= hi + 1e-9))
+
+
+def pl10_l64(sw):
+    """Per seed (the independent unit): C_s(t) over its colloids and 3 components, normalised by C_s(0); in each
+    window of PL10_L64_WINDOWS the amplitude against MCT (PL Eq. B6; A), against the box transverse-mode sum and
+    against the slip sphere || Enskog + box-correction model (B); the model's own amplitude against MCT (r).
+    Returns None with fewer than 2 finished seeds."""
+    import h5py
+    import numpy as np
+    pts = [p for p in sw["points"] if p["summary"]]
+    if len(pts) < 2:
+        return None
+    seeds, comps, lag = [], [], None
+    for p in pts:
+        v = h5py.File(os.path.join(sw["_out"], p["id"], "observables.h5"), "r")["observables/colloid_vacf"]
+        lag, val = v["lag"][:], v["value"][:, :3]
+        seeds.append(val.sum(1) / val[0].sum())
+        comps += [val[:, j] / val[0, j] for j in range(3)]
+    th = pl10_theory(pts[0]["summary"])
+    mct, box, _ = pl10_curves(th)
+    slip_e = pl10_slip(th, True)
+    sel = pl10_window(lag, 8.0, 64.0)
+    f = {t: mct(t) for t in lag[sel]}
+    bx = {t: box(t) for t in lag[sel]}
+    m = {t: slip_e(t) + bx[t] - f[t] for t in lag[sel]}
+    res = {"n": len(pts), "th": th, "lag": lag, "C": np.array(seeds), "win": {}, "mct": mct, "box": box,
+           "model": m, "cpu": sum(p["summary"].get("cpu_seconds", 0.0) for p in pts),
+           "seeds": [p["params"]["seed"] for p in pts], "steps": pts[0]["summary"]["last_step"]}
+    for name, lo, hi in PL10_L64_WINDOWS:
+        w = pl10_window(lag, lo, hi)
+        tw = lag[w]
+        y = {k: np.array([d[t] for t in tw]) for k, d in (("f", f), ("box", bx), ("m", m))}
+
+        def amp(curves, ref):
+            return mean_se([float(np.sum(c[w] * ref) / np.sum(ref * ref)) for c in curves])
+        res["win"][name] = {"A": amp(seeds, y["f"]), "A30": amp(comps, y["f"]), "Abox": amp(seeds, y["box"]),
+                            "B": amp(seeds, y["m"]), "r": float(np.sum(y["m"] * y["f"]) / np.sum(y["f"] ** 2)),
+                            "nlag": int(w.sum())}
+        res["win"][name]["per_seed"] = [float(np.sum(c[w] * y["f"]) / np.sum(y["f"] ** 2)) for c in seeds]
+    d = np.array(res["win"]["16–64"]["per_seed"]) - np.array(res["win"]["8–16"]["per_seed"])
+    res["D"] = mean_se(d)
+    res["D_m"] = res["win"]["16–64"]["r"] - res["win"]["8–16"]["r"]
+    return res
+
+
+def pl10_l64_plot(res, recorded, path):
+    """C(t)/MCT(t) of the L = 64 seeds (mean +- SE over seeds) with the model's ratio, and the window amplitudes
+    against the L = 32 row's (recorded)."""
+    import numpy as np
+    plt = pyplot()
+    fig, ax = plt.subplots(1, 2, figsize=(12, 4.8))
+    lag, C = res["lag"], res["C"]
+    s = (lag >= 2.0) & (lag <= 100.0)
+    f = np.array([res["mct"](t) for t in lag[s]])
+    ratio = C[:, s] / f
+    a = ax[0]
+    a.errorbar(lag[s], ratio.mean(0), yerr=ratio.std(0, ddof=1) / len(C) ** 0.5, fmt="o", ms=2.5, color="k",
+               elinewidth=0.7, label=f"peloid L = 64, {res['n']} seeds (± SE over seeds)")
+    tm = sorted(res["model"])
+    a.plot(tm, [res["model"][t] / res["mct"](t) for t in tm], "-", color="C9", lw=1.5,
+           label="slip sphere ∥ ξ_E + box correction (model)")
+    a.plot(tm, [res["box"](t) / res["mct"](t) for t in tm], "--", color="C3", lw=1, label="box transverse-mode sum")
+    a.axhline(1.0, color="C2", ls=":", label="MCT (PL Eq. B6)")
+    a.set_xscale("log")
+    a.set_ylim(-1, 4)
+    a.set_xlabel("t (t0)")
+    a.set_ylabel("C(t) / C_MCT(t)")
+    a.set_title("PL Fig. 10 tail at L = 64 (issue 39, R5)", fontsize=10)
+    a.grid(True, which="both", alpha=0.25)
+    a.legend(fontsize=7)
+    a = ax[1]
+    names = [w[0] for w in PL10_L64_WINDOWS]
+    x = np.arange(len(names))
+    a.errorbar(x - 0.1, [res["win"][n]["A"][0] for n in names], yerr=[res["win"][n]["A"][1] for n in names],
+               fmt="o", color="k", capsize=3, label="A vs MCT, L = 64 (SE over seeds)")
+    a.plot(x, [res["win"][n]["r"] for n in names], "s", color="C9", label="model r vs MCT, L = 64")
+    rec = [recorded.get(k) for k in ("mct_8_16", "mct_16_32", "mct_32_52", None)]
+    xr = [i + 0.1 for i, v in enumerate(rec) if v]
+    a.errorbar(xr, [v[0] for v in rec if v], yerr=[v[1] for v in rec if v], fmt="^", mfc="none", color="grey",
+               capsize=3, label="A vs MCT, L = 32 row (8–16, 16–32, 32–52 t0)")
+    a.axhline(1.0, color="C2", ls=":")
+    a.set_xticks(x)
+    a.set_xticklabels([n + " t0" for n in names])
+    a.set_ylabel("amplitude / MCT")
+    a.set_title(f"drop (16–64) − (8–16): {res['D'][0]:+.3f} ± {res['D'][1]:.3f}; model {res['D_m']:+.3f}",
+                fontsize=10)
+    a.grid(True, alpha=0.25)
+    a.legend(fontsize=7)
+    save_figure(plt, fig, path)

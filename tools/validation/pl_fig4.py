@@ -291,3 +291,111 @@ def reduced_pl_fig4_rdf(sw):
     good = abs(z) < 5.0 and c["p"] >= 1e-4 and se < 0.25
     return good, (f"contact peak SRD {ga:.3f} +- {ea:.3f} vs BD {gb:.3f} +- {eb:.3f} ({z:+.1f} combined SE, bound 5, "
                   f"combined SE {se:.3f} < 0.25); chi2 {c['chi2']:.1f}/{c['dof']}, p = {c['p']:.2g} (bound 1e-4)")
+
+
+# Issue 39, R6 amended (validation/RULES_issue39.md, committed before the runs): studies/pl_fig4_rdf_long.cfg
+# (4 replicas of SRD + depletion_comp at half PL's MD step) against studies/pl_fig4_rdf_bd_long.cfg (BD at 1/2
+# and 1/4 of PL's step, extrapolated to step 0).
+PL4_LONG_PEAK_SE_MAX = 0.025
+PL4_LONG_REPLICAS = 4
+
+
+def pl4_colloid_kt(sw, p):
+    """The colloids' kinetic temperature over the sampled part: mean c_kin_trans / (3/2 N) (thermo.tsv)."""
+    rows = [ln.rstrip("\n").split("\t") for ln in open(os.path.join(sw["_out"], p["id"], "thermo.tsv"))]
+    head, data = rows[0], rows[1:]
+    start = p["summary"]["scene"]["observe"]["rdf_start"]
+    ck = [float(r[head.index("c_kin_trans")]) for r in data if int(r[0]) >= start]
+    return sum(ck) / len(ck) / (1.5 * p["summary"]["scene"]["colloids"]["count"])
+
+
+def pl4_long(out):
+    """The R6-amended evaluation; None when the SRD replicas or the two BD steps have not run."""
+    import numpy as np
+    sw, bd = load(out, "pl_fig4_rdf_long"), load(out, "pl_fig4_rdf_bd_long")
+    if sw is None or bd is None:
+        return None
+    reps = [p for p in sw["points"] if p["summary"]]
+    steps = {p["summary"]["scene"]["colloids"]["substeps"]: pl4_rdf(bd, p) for p in bd["points"] if p["summary"]}
+    if len(reps) < 2 or 8 not in steps or 16 not in steps:
+        return None
+    r = steps[8][0]
+    G = np.array([pl4_rdf(sw, p)[1] for p in reps])
+    E = np.array([pl4_rdf(sw, p)[2] for p in reps])
+    n = len(reps)
+    g0 = 2 * steps[16][1] - steps[8][1]
+    e0 = np.hypot(2 * steps[16][2], steps[8][2])
+    i0 = int(np.argmax(g0 > PL4_CONTACT_G))
+    use = (np.arange(len(r)) >= i0) & (E.min(0) > 0) & (e0 > 0)
+    gp = G.mean(0)
+    ep = np.sqrt((E ** 2).sum(0)) / n
+    s2 = float(np.sum(((G - gp) ** 2 / np.where(E > 0, E, 1) ** 2)[:, use]) / ((n - 1) * use.sum()))
+    scale = max(1.0, s2 ** 0.5)
+    ip = int(np.argmax(g0))
+
+    def chi(g, e, sel):
+        se = np.hypot(e, e0)
+        z = np.where(se > 0, (g - g0) / np.where(se > 0, se, 1.0), 0.0)
+        x2, dof = float(np.sum(z[sel] ** 2)), int(sel.sum())
+        return {"z": z, "chi2": x2, "dof": dof, "p": chi2_sf(x2, dof), "bound": 1 + 3 * (2.0 / dof) ** 0.5}
+    main = chi(gp, ep * scale, use)
+    tail = chi(gp, ep * scale, use & (np.arange(len(r)) >= ip))
+    raw = chi(gp, ep, use)
+    per = [chi(G[j], E[j], use) for j in range(n)]
+    comb = float(np.hypot(ep[ip] * scale, e0[ip]))
+    zp = float(main["z"][ip])
+    if n < PL4_LONG_REPLICAS or comb > PL4_LONG_PEAK_SE_MAX:
+        gate = False
+    else:
+        gate = True
+    if main["chi2"] / main["dof"] <= main["bound"] and abs(zp) <= 3:
+        v = "agrees"
+    elif tail["chi2"] / tail["dof"] <= tail["bound"] and abs(zp) <= 3:
+        v = "disagrees — set-up"
+    else:
+        v = "disagrees — peloid"
+    return {"r": r, "G": G, "E": E, "gp": gp, "ep": ep, "g0": g0, "e0": e0, "steps": steps, "i0": i0, "ip": ip,
+            "use": use, "s2": s2, "scale": scale, "main": main, "tail": tail, "raw": raw, "per": per,
+            "comb": comb, "zp": zp, "gate": gate, "verdict": v, "n": n,
+            "seeds": [p["params"]["seed"] for p in reps],
+            "kt": [pl4_colloid_kt(sw, p) for p in reps],
+            "cpu": (sum(p["summary"].get("cpu_seconds", 0.0) for p in reps),
+                    sum(p["summary"].get("cpu_seconds", 0.0) for p in bd["points"] if p["summary"]))}
+
+
+def pl4_long_plot(res, path):
+    """g(r) near contact: the replicas, their pool, BD at 1/2 and 1/4 of PL's step and extrapolated; and z."""
+    plt = pyplot()
+    fig, ax = plt.subplots(2, 1, figsize=(8, 8), gridspec_kw={"height_ratios": [3, 2]})
+    r, dr = res["r"], float(res["r"][1] - res["r"][0])
+    a = ax[0]
+    for j in range(res["n"]):
+        a.plot(r, res["G"][j], color="C3", lw=0.6, alpha=0.5, drawstyle="steps-mid",
+               label="SRD replicas (Δt_MD = 0.0125)" if j == 0 else None)
+    a.fill_between(r, res["gp"] - res["ep"] * res["scale"], res["gp"] + res["ep"] * res["scale"], color="C3",
+                   alpha=0.3, step="mid", lw=0)
+    a.plot(r, res["gp"], color="C3", lw=1.2, drawstyle="steps-mid", label=f"SRD pooled ({res['n']} replicas), ± SE × {res['scale']:.2f}")
+    for sub, c in ((8, "grey"), (16, "C0")):
+        a.plot(r, res["steps"][sub][1], color=c, lw=0.8, ls=":", drawstyle="steps-mid",
+               label=f"BD, step {0.1 / sub:g} t0")
+    a.fill_between(r, res["g0"] - res["e0"], res["g0"] + res["e0"], color="k", alpha=0.2, step="mid", lw=0)
+    a.plot(r, res["g0"], color="k", lw=1.2, ls="--", drawstyle="steps-mid", label="BD extrapolated to step 0, ± SE")
+    lo = r[res["i0"]] - 2 * dr
+    a.set_xlim(lo, lo + 1.5)
+    a.set_ylim(0, 2.1)
+    a.set_ylabel("g(r)")
+    a.set_title("PL Fig. 4 near contact, φ_c = 0.22 (issue 39, R6): SRD at half the MD step vs BD → step 0",
+                fontsize=10)
+    a.legend(fontsize=7.5, loc="lower right")
+    a = ax[1]
+    u = res["use"]
+    a.plot(r[u], res["main"]["z"][u], "o-", ms=2.5, lw=0.6, color="C3",
+           label=f"pooled SRD − BD₀: χ² = {res['main']['chi2']:.0f}/{res['main']['dof']} (SE × {res['scale']:.2f})")
+    for t in (-3, 3):
+        a.axhline(t, color="grey", lw=0.6, ls=":")
+    a.axhline(0, color="k", lw=0.6)
+    a.set_xlim(lo, r[-1] + dr / 2)
+    a.set_xlabel("r (a0)")
+    a.set_ylabel("(g − g_BD0) / combined SE")
+    a.legend(fontsize=7.5)
+    save_figure(plt, fig, path)
