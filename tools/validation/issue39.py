@@ -5,20 +5,22 @@ lubrication) and pl_fig11_dphi_bd (Brownian-dynamics reference of PL Fig. 11).
 
 Part of tools/validation_report.py: section(out, rdir) returns the report's "Verdicts (issue 39)" lines.  The
 studies of this issue (hecht_fig9_lub, hecht_fig9_bd, pl_fig11_dphi_bd) are read from their sweeps in `out`; the
-numbers of the older studies are RECORDED, the values validation/REPORT.md printed at main 3981e2f (its runs made by
-peloid 493a6e8), quoted as such in the section: when those studies are re-run, RECORDED is to be updated from the
-new rows (their outputs were not on the machine that wrote this)."""
+numbers of the older studies are RECORDED, the values validation/REPORT.md printed (the coupling II rows from runs of
+5459ad5 at the coupling-true time, the PL rows from runs of 493a6e8), quoted as such in the section: when those
+studies are re-run, RECORDED is to be updated from the new rows (hecht_fig9_kappa and _diagram are read from their
+sweeps when those are in `out`)."""
 import math
 import os
 import sys
 
 from validation.common import load, pyplot, save_figure
 
-# validation/REPORT.md at main 3981e2f (runs of peloid 493a6e8): the numbers the rules use where this branch
-# did not re-run the study (RULES_issue39.md says which were known when the rules were written).
+# validation/REPORT.md's numbers the rules use where a study's outputs are not in `out` (RULES_issue39.md says which
+# were known when the rules were written): the coupling II rows from runs of 5459ad5, the PL rows from 493a6e8.
 RECORDED = {
-    "fig9_diagram_S4": {"20": (99.8, 0.0), "50": (18.4, 0.9)},          # largest cluster %, kappa = 2e8
-    "fig9_kappa": {1.0e8: (0.8, 0.0), 1.4e8: (27.0, 1.6), 1.6e8: (89.0, 0.8), 2.0e8: (99.8, 0.0)},  # %, seed 9
+    # REPORT.md's rows, runs of 5459ad5 (0.64 s; read from the sweeps instead when they are in OUT_STUDIES)
+    "fig9_diagram_S4": {"20": (99.8, 0.0), "50": (24.8, 1.5)},          # largest cluster %, kappa = 2e8
+    "fig9_kappa": {1.0e8: (0.8, 0.0), 1.4e8: (27.6, 1.4), 1.6e8: (89.0, 0.8), 2.0e8: (99.8, 0.0)},  # %, seed 9
     # REPORT.md's hecht_fig4_rz row, runs of 5459ad5 (coupling-true time, the rule's eta)
     "rz_pe1": {"volume": (2.25, 0.11), "momentum": (2.94, 0.24), "slip": (1.25, 0.11), "vinf_over_stokes": 1.67,
                "phi": [0.05, 0.10, 0.20, 0.30, 0.35], "u": [0.0424, 0.0384, 0.0315, 0.0274, 0.0257],
@@ -87,7 +89,7 @@ def fig9_kappa_points(out):
     there, else as REPORT.md recorded it."""
     sw = load(out, "hecht_fig9_kappa")
     if sw is None:
-        return RECORDED["fig9_kappa"], "REPORT.md (runs of 493a6e8, labelled 0.338 s)"
+        return RECORDED["fig9_kappa"], "REPORT.md (runs of 5459ad5, 0.64 s)"
     pts, revs = {}, set()
     for p in sw["points"]:
         if not p["summary"]:
@@ -254,7 +256,7 @@ def fig9_s4(out):
             revs.add(p["summary"]["peloid"]["git_revision"])
     if len(got) == 2:
         return got, f"hecht_fig9_diagram, runs of {', '.join(sorted(revs))}"
-    return RECORDED["fig9_diagram_S4"], "REPORT.md, hecht_fig9_diagram, 0.338 s"
+    return RECORDED["fig9_diagram_S4"], "REPORT.md, hecht_fig9_diagram, runs of 5459ad5, 0.64 s"
 
 
 def verdict_fig11(out):
