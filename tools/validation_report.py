@@ -221,6 +221,7 @@ REDUCED = {
     "hecht_fig4_rz": reduced_fig4_rz,
     "pl_fig6_drag": reduced_pl_fig6_drag,
     "hecht_fig9_phi": reduced_fig9_phi,
+    "hecht_fig9_lub": issue39.reduced_fig9_lub,
 }
 
 

@@ -186,6 +186,22 @@ def lub_kinetic(out):
     return res
 
 
+def reduced_fig9_lub(sw):
+    """studies/reduced/hecht_fig9_lub.cfg: the lubricated colloids' translational kinetic energy over the second
+    half within 10 % of equipartition (its mean over ~28 rows of ~140 colloids has SE ~0.02-0.03; the lubrication
+    without its random force gave 0.44)."""
+    p = sw["points"][0]
+    rows = [ln.rstrip("\n").split("\t") for ln in open(os.path.join(sw["_out"], p["id"], "thermo.tsv"))]
+    head, data = rows[0], rows[1:]
+    half = [r for r in data if int(r[0]) >= p["summary"]["last_step"] // 2]
+    n = p["summary"]["mapping"]["colloid"]["n_colloids"]
+    kt = float(half[-1][head.index("temperature")])
+    ratios = [float(r[head.index("c_kin_trans")]) / (1.5 * n * kt) for r in half]
+    mean = sum(ratios) / len(ratios)
+    return abs(mean - 1.0) < 0.1, (f"lubricated colloids (kappa 1.4e8, {n} colloids): translational kinetic energy "
+                                   f"{mean:.3f} of equipartition over {len(ratios)} rows (bound |x - 1| < 0.1)")
+
+
 def lub_note(out):
     """E2's colloid temperature: the squeeze lubrication of Hecht Eqs. 4-5 with its fluctuating partner
     (lubrication.thermal, since 2026-12-05; without it the colloids cooled to 0.44 kT)."""
