@@ -80,19 +80,7 @@ else bad "shipped quickstart calibration differs from a fresh one or is missing 
 # 3. the dilute suspension diffuses as mapped
 export PELOID_CACHE=$T/cache
 if ! "$PELOID" run dilute.cfg --out d --threads 2 2> ed; then bad "dilute run: $(tail -1 ed)"
-elif r=$($PY - d "$ROOT/tools" <<'PY'
-import json, sys
-sys.path.insert(0, sys.argv[2])
-from h5md_lateral_diffusion import lateral_d
-s = json.load(open(sys.argv[1] + "/summary.json"))["mapping"]
-cd, tauP = s["colloid_diffusion"], s["hecht_times"]["tau_P"]["model_s"]
-d, se, nf, t1, t2 = lateral_d(sys.argv[1] + "/colloids.h5", 4 * tauP, 12 * tauP)
-ref = cd["d_box_m2_s"]
-print(f"D = {d:.4g} +- {se:.2g} m^2/s from colloids.h5 ({nf} frames, lags {t1:.3g}..{t2:.3g} s) vs the mapping's "
-      f"{ref:.4g} (real {cd['d_real_m2_s']:.4g} x box factor {cd['box_factor']:.4f}; {cd['source']}): "
-      f"{100 * (d / ref - 1):+.1f} %, SE {100 * se / d:.1f} %")
-sys.exit(0 if cd["source"] == "calibration" and abs(d / ref - 1) <= 0.10 and se / d <= 0.033 else 1)
-PY
+elif r=$($PY "$ROOT/tools/h5md_lateral_diffusion.py" --check d tauP
 ); then ok "dilute coupling II suspension: $r"
 else bad "dilute coupling II suspension: $r"; fi
 

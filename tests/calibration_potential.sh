@@ -33,22 +33,7 @@ sed -e 's/^name = .*/name = "dilute_potential";/' -e 's/^steps = .*/steps = POTS
     -e '/^observe:/d' -e '/^output:/d' "$ROOT/scenes/pl_potential_physical.cfg" | sed "s/POTSTEPS/${PL_POT_STEPS:-12000}/" > pot.cfg
 if ! "$PELOID" run pot.cfg --out p --threads 2 2> ep; then bad "dilute potential run: $(tail -1 ep)"
 elif grep -q calibrating ep; then bad "dilute potential run: calibrated instead of reading calibration/ (model differs from scenes/pl_potential_physical.cfg)"
-elif r=$($PY - p "$ROOT/tools" <<'PY'
-import json, sys
-sys.path.insert(0, sys.argv[2])
-from h5md_lateral_diffusion import lateral_d
-s = json.load(open(sys.argv[1] + "/summary.json"))["mapping"]
-cd, tauP = s["colloid_diffusion"], s["hecht_times"]["tau_P"]["model_s"]
-# the calibration's window, 4-12 x 2 M D_theory (src/plan/calibrate.c): the
-# MSD slope of these colloids converges slowly (at 4-12 tau_P it is 8 % lower)
-tv = 2 * tauP * cd["d_theory_a0_2_t0"] / cd["d_a0_2_t0"]
-d, se, nf, t1, t2 = lateral_d(sys.argv[1] + "/colloids.h5", 4 * tv, 12 * tv)
-ref = cd["d_box_m2_s"]
-print(f"D = {d:.4g} +- {se:.2g} m^2/s from colloids.h5 ({nf} frames, lags {t1:.3g}..{t2:.3g} s) vs the mapping's "
-      f"{ref:.4g} (real {cd['d_real_m2_s']:.4g} x box factor {cd['box_factor']:.4f}; {cd['source']}): "
-      f"{100 * (d / ref - 1):+.1f} %, SE {100 * se / d:.1f} %")
-sys.exit(0 if cd["source"] == "calibration" and abs(d / ref - 1) <= 0.10 and se / d <= 0.033 else 1)
-PY
+elif r=$($PY "$ROOT/tools/h5md_lateral_diffusion.py" --check p calibration
 ); then ok "dilute potential-coupling suspension: $r"
 else bad "dilute potential-coupling suspension: $r"; fi
 
