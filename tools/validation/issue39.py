@@ -84,21 +84,29 @@ def fig9_lub(out):
     return res
 
 
+def cluster_points(sw, key):
+    """{key(params): (largest cluster %, its SE %)} of a sweep's finished points (key None: left out) and the git
+    revisions of their runs."""
+    got, revs = {}, set()
+    for p in (sw or {}).get("points", []):
+        k = key(p["params"]) if p["summary"] else None
+        if k is None:
+            continue
+        n = p["summary"]["mapping"]["colloid"]["n_colloids"]
+        lc = p["summary"]["observables"]["largest_cluster"]
+        got[k] = (round(100 * lc["value"] / n, 1), round(100 * lc["stderr"] / n, 1))
+        revs.add(p["summary"]["peloid"]["git_revision"])
+    return got, ", ".join(sorted(revs))
+
+
 def fig9_kappa_points(out):
     """hecht_fig9_kappa's largest cluster (%, SE) per kappa and a label of its runs: from its sweep in out when
     there, else as REPORT.md recorded it."""
     sw = load(out, "hecht_fig9_kappa")
     if sw is None:
         return RECORDED["fig9_kappa"], "REPORT.md (runs of 5459ad5, 0.64 s)"
-    pts, revs = {}, set()
-    for p in sw["points"]:
-        if not p["summary"]:
-            continue
-        n = p["summary"]["mapping"]["colloid"]["n_colloids"]
-        lc = p["summary"]["observables"]["largest_cluster"]
-        pts[p["params"]["physical.kappa"]] = (round(100 * lc["value"] / n, 1), round(100 * lc["stderr"] / n, 1))
-        revs.add(p["summary"]["peloid"]["git_revision"])
-    return pts, f"its runs of {', '.join(sorted(revs))}"
+    pts, revs = cluster_points(sw, lambda q: q["physical.kappa"])
+    return pts, f"its runs of {revs}"
 
 
 def control(lub, out):
@@ -224,7 +232,8 @@ def lub_note(out):
             "temperature; E2 then tests Hecht's literal set-up, not equilibrium.  ")
 
 
-def plot_fig9(lub, path):
+def plot_fig9(lub, path, kappa_pts):
+    """kappa_pts: hecht_fig9_kappa's points (fig9_kappa_points), the study beside E2."""
     plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.5, 4.2))
     for (nm, mark) in (("hecht_fig9_lub", "o"), ("hecht_fig9_lub_3s", "s"), ("hecht_fig9_bd", "^")):
@@ -237,7 +246,7 @@ def plot_fig9(lub, path):
                             fmt=mark + ("-" if l else ""), color=col, capsize=2,
                             label=(f"{'with' if l else 'without'} lubrication, {pts[0][3]:.2f} s" if l is not None
                                    else f"Brownian dynamics (no HI), {pts[0][3]:.2f} s"))
-    rk = sorted(RECORDED["fig9_kappa"].items())
+    rk = sorted(kappa_pts.items())
     ax.errorbar([k / 1e8 for k, _ in rk], [v[0] for _, v in rk], yerr=[v[1] for _, v in rk], fmt="o--", mfc="none",
                 color="C3", capsize=2, label="without lubrication, hecht_fig9_kappa (REPORT.md)")
     ax.axhline(10, color="grey", ls=":", label="cluster rule: 10 %")
@@ -260,18 +269,10 @@ def fig9_s4(out):
     """hecht_fig9_diagram's largest cluster (%, SE) at kappa = 2e8 /m, 20 and 50 mV, and a label: from its sweep in
     out when there, else as REPORT.md recorded it."""
     sw = load(out, "hecht_fig9_diagram")
-    got, revs = {}, set()
-    for p in (sw or {}).get("points", []):
-        if not p["summary"] or p["params"].get("physical.kappa") != 2.0e8:
-            continue
-        mv = {0.020: "20", 0.050: "50"}.get(p["params"].get("physical.surface_potential"))
-        if mv:
-            n = p["summary"]["mapping"]["colloid"]["n_colloids"]
-            lc = p["summary"]["observables"]["largest_cluster"]
-            got[mv] = (round(100 * lc["value"] / n, 1), round(100 * lc["stderr"] / n, 1))
-            revs.add(p["summary"]["peloid"]["git_revision"])
+    got, revs = cluster_points(sw, lambda q: {0.020: "20", 0.050: "50"}.get(q.get("physical.surface_potential"))
+                               if q.get("physical.kappa") == 2.0e8 else None)
     if len(got) == 2:
-        return got, f"hecht_fig9_diagram, runs of {', '.join(sorted(revs))}"
+        return got, f"hecht_fig9_diagram, runs of {revs}"
     return RECORDED["fig9_diagram_S4"], "REPORT.md, hecht_fig9_diagram, runs of 5459ad5, 0.64 s"
 
 
@@ -591,7 +592,7 @@ def section(out, rdir, previous=None):
     kept = {i: kept_row(out, i, r[0], previous) for i, r in enumerate(rows)}
     b2.main_plot(os.path.join(rdir, "issue39_b2.png"))
     if kept[0] is None:
-        plot_fig9(f9[6], os.path.join(rdir, "issue39_fig9_lub.png"))
+        plot_fig9(f9[6], os.path.join(rdir, "issue39_fig9_lub.png"), fig9_kappa_points(out)[0])
     plot_rz(os.path.join(rdir, "issue39_rz.png"))
     if kept[3] is None:
         plot_dphi(dp[6], os.path.join(rdir, "issue39_dphi.png"))
