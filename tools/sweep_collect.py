@@ -104,7 +104,7 @@ def key_units():
     return units
 
 
-def plot(study, rows, path):
+def plot(study, rows, path, units):
     spec = study.get("plot") or {}
     keys = study["keys"]
     x = spec.get("x", keys[0])
@@ -118,7 +118,7 @@ def plot(study, rows, path):
     elif isinstance(ys, str):
         ys = [ys]
     ok = [r for r in rows if r["status"] == "ok"]
-    xunit = key_units().get(x, "")
+    xunit = units.get(x, "")
     n = max(1, len(ys))
     fig, axes = plt.subplots(n, 1, figsize=(6, 3.2 * n), squeeze=False)
     for ax, y in zip(axes[:, 0], ys):
@@ -196,7 +196,7 @@ def main():
         pass  # a Slurm array (--point, --collect) plans nothing
     json.dump(doc, open(tmp, "w"), indent=1)
     os.replace(tmp, os.path.join(out, "sweep.json"))
-    plot(study, rows, os.path.join(out, "sweep.png"))
+    plot(study, rows, os.path.join(out, "sweep.png"), units)
     ok = sum(r["status"] == "ok" for r in rows)
     failed = sum(r["status"] == "failed" for r in rows)
     stopped = sum(r["status"] == "interrupted" for r in rows)
