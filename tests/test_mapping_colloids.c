@@ -316,3 +316,95 @@ Test(mapping_colloids, potential_front_end)
     cr_expect_eq(scene.colloids.substeps, (long long)ceil(20.0 * 0.1 / tc), "substeps %lld, contact %g t0: %s",
                  scene.colloids.substeps, tc, scene.mapping.colloid.substeps_reason);
 }
+
+/* coarse_graining.multiple_time_stepping (issue 38) on the stiff suspension
+ * bench/scenes/silica_10mM.cfg: colloids.slow_gap is the DLVO secondary
+ * minimum (found here by a scan of Hecht Eqs. 1-2 of its own), and
+ * colloids.slow_interval k the largest the colloids' own check
+ * (pl_colloid_mts_setup, the contact guard's rule on the slow share) accepts:
+ * the colloids set up with k, and refuse k + 1 given by hand with the same
+ * gap, unless k is already the cap of a quarter of the fewest MD steps. */
+static char *silica_text(const char *extra_cg, const char *extra_colloids)
+{
+    FILE *f = fopen("bench/scenes/silica_10mM.cfg", "r");
+    cr_assert(f != NULL);
+    static char base[8192];
+    size_t n = fread(base, 1, sizeof base - 1, f);
+    fclose(f);
+    base[n] = 0;
+    char *out = malloc(n + 1024);
+    cr_assert(out != NULL);
+    const char *cg = strstr(base, "coarse_graining: {"), *co = strstr(base, "colloids: {");
+    cr_assert(cg && co && cg < co);
+    size_t a = (size_t)(cg - base) + strlen("coarse_graining: {"), b = (size_t)(co - base) + strlen("colloids: {");
+    snprintf(out, n + 1024, "%.*s %s%.*s %s%s", (int)a, base, extra_cg, (int)(b - a), base + a, extra_colloids,
+             base + b);
+    return out;
+}
+
+/* the checks on the silica scene with extra colloids{} keys; returns k */
+static long long check_mts(const char *extra_colloids)
+{
+    static pl_scene_t scene, hand;
+    pl_err_t err = {0, ""};
+    char *text = silica_text("multiple_time_stepping = true;", extra_colloids);
+    cr_assert_eq(pl_scene_load_string(text, "silica_mts.cfg", &scene, &err), 0, "%s", err.msg);
+    free(text);
+    const pl_scene_colloids_t *cs = &scene.colloids;
+    cr_assert(cs->adaptive_substeps, "the stiff scene runs adaptive substeps");
+    const long long k = cs->slow_interval;
+    cr_expect_geq(k, 2, "slow_interval = %lld", k);
+    cr_expect_eq(cs->substeps % k, 0, "substeps %lld a multiple of %lld", cs->substeps, k);
+    cr_expect_leq(k, cs->min_substeps / 4, "k = %lld at most a quarter of %lld", k, cs->min_substeps);
+
+    /* the secondary minimum by a scan of the DLVO energy beyond the barrier */
+    pl_colloid_pair_params_t p;
+    pl_colloid_dlvo_info_t info;
+    cr_assert_eq(pl_colloid_pair_params(&scene, &p, &info, &err), 0, "%s", err.msg);
+    const double d = 2.0 * cs->radius;
+    double hbest = NAN, ubest = INFINITY, umax = -INFINITY;
+    int past_barrier = 0;
+    for (int q = 1; q <= 200000; ++q) {
+        double h = p.dlvo_hcut * q / 200000.0;
+        double u = pl_pair_dlvo_raw(d + h, d, p.coul_C, p.kappa, p.hamaker).u;
+        if (u > umax) umax = u;
+        if (u < umax - 1.0) past_barrier = 1;
+        if (past_barrier && u < ubest) {
+            ubest = u;
+            hbest = h;
+        }
+    }
+    cr_expect(fabs(cs->slow_gap - hbest) <= 2.0 * p.dlvo_hcut / 200000.0, "slow_gap %.6g, the scan's minimum %.6g",
+              cs->slow_gap, hbest);
+
+    /* the colloids accept k and refuse k + 1 */
+    pl_colloid_t *c = NULL;
+    cr_assert_eq(pl_colloid_create(&scene, 1, &c, &err), 0, "k = %lld refused: %s", k, err.msg);
+    pl_colloid_free(c);
+    if (k + 1 <= cs->min_substeps / 4) {
+        char extra[256];
+        snprintf(extra, sizeof extra, "%s slow_interval = %lld; slow_gap = %.17g;", extra_colloids, k + 1,
+                 cs->slow_gap);
+        text = silica_text("", extra);
+        int rc = pl_scene_load_string(text, "silica_hand.cfg", &hand, &err);
+        free(text);
+        if (rc == 0) {
+            c = NULL;
+            rc = pl_colloid_create(&hand, 1, &c, &err);
+            pl_colloid_free(c);
+        }
+        cr_expect_neq(rc, 0, "k + 1 = %lld accepted", k + 1);
+        cr_expect(strstr(err.msg, "colloids.slow_interval") != NULL, "%s", err.msg);
+    }
+    return k;
+}
+
+/* As the scene is, k is the cap (a quarter of the fewest MD steps); with
+ * min_contact_steps = 40 the slow share's resolution sets it below the cap,
+ * so k + 1 is refused by the colloids' own check. */
+Test(mapping_colloids, multiple_time_stepping_derived, .timeout = 300)
+{
+    const long long k20 = check_mts(""), k40 = check_mts("min_contact_steps = 40.0;");
+    cr_expect_eq(k20, 94 / 4, "the cap: %lld", k20);
+    cr_expect_lt(k40, 94 / 4, "below the cap: %lld", k40);
+}

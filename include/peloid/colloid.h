@@ -182,6 +182,13 @@ int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
  * PL_ERR_INPUT where the scene cannot use it. */
 int pl_colloid_depletion_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
 int pl_colloid_mts_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
+/* The largest stiffness |d(w F)/dr| of the slow share w F of the DLVO force
+ * (Hecht Eqs. 1-2) of a pair of contact distance d split at colloids.slow_gap
+ * = hin, over the gaps from hin to the DLVO cut-off, and (*h_at) the gap where
+ * it is met (untouched when the share is nil): what the outer step of multiple
+ * time stepping must resolve (pl_colloid_mts_setup; the mapping's derived
+ * slow_interval, coarse_graining.multiple_time_stepping). */
+double pl_colloid_slow_stiffness(const pl_colloid_pair_params_t *p, double d, double hin, double *h_at);
 /* Adaptive substeps (colloids.adaptive_substeps): checks what they need and
  * builds the reach table (reads the pair parameters, radii, masses, integrator,
  * substeps, slow_interval of c); c->adaptive = 0 when off. */

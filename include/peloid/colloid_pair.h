@@ -95,6 +95,9 @@ static inline __attribute__((always_inline)) pl_pair_val_t pl_pair_dlvo(double r
     return pl_pair_parabola(h, hm, m.u, vp, pl_pair_parabola_curvature(vp, hm, h0), shift);
 }
 
+/* The gap hout at which the slow share reaches 1, for colloids.slow_gap = hin. */
+static inline double pl_pair_slow_hout(double hin) { return 2.0 * hin; }
+
 /* Multiple time stepping: the share w of a pair's DLVO force carried by the
  * outer (slow) steps, for contact distance d and squared centre distance r2:
  * 0 up to the gap hin, 1 from the gap hout on, and between them the cubic

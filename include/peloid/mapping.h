@@ -259,6 +259,7 @@ typedef struct {
     double md_resolution;
     double hertz_K;           /* model Hertz constant, kT/a0^2.5; 0: from the material */
     double reach_energy;      /* kT: the MD step resolves the gaps a pair reaches with this energy */
+    int multiple_time_stepping; /* derive colloids.slow_gap and slow_interval (r-RESPA) */
 } pl_scene_cg_t;
 
 /* Colloid parameters in simulation units, for the colloid module. */

@@ -47,6 +47,28 @@ int pl_colloid_depletion_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_
     return 0;
 }
 
+double pl_colloid_slow_stiffness(const pl_colloid_pair_params_t *p, double d, double hin, double *h_at)
+{
+    enum { NS = 4000 };
+    const double hc = p->dlvo_hcut, hout = pl_pair_slow_hout(hin);
+    double kmax = 0.0;
+    for (int q = 0; q <= NS && hc > hin; ++q) {
+        /* denser near hin, where the force is largest */
+        double t = (double)q / NS, h = hin + (hc - hin) * t * t, eps = 1e-6 * (hout - hin);
+        double f[2];
+        for (int b = 0; b < 2; ++b) {
+            double r = d + h + (b ? eps : -eps);
+            f[b] = pl_pair_slow_share(r * r, d, hin, hout) * pl_pair_dlvo_raw(r, d, p->coul_C, p->kappa, p->hamaker).f;
+        }
+        double kk = fabs(f[1] - f[0]) / (2.0 * eps);
+        if (kk > kmax) {
+            kmax = kk;
+            *h_at = h;
+        }
+    }
+    return kmax;
+}
+
 /* Multiple time stepping (colloids.slow_interval = k > 1, r-RESPA): checks
  * what it needs, sets the force split of the pair parameters.  Refused where the slow share itself is too
  * stiff for the outer step: its largest |dF_slow/dr| over the pair diameters
@@ -77,7 +99,7 @@ int pl_colloid_mts_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err
         return pl_scene_fail(scene, err, K, "colloids.slow_interval",
                              "%lld does not divide colloids.substeps = %lld (an outer step must end with "
                              "the collision step); allowed: 1 or a divisor of the substeps", k, cs->substeps);
-    const double hin = cs->slow_gap, hout = 2.0 * cs->slow_gap;
+    const double hin = cs->slow_gap, hout = pl_pair_slow_hout(hin);
     if (!(hin > c->pair.prim_hm))
         return pl_scene_fail(scene, err, OFF(colloids.slow_gap), "colloids.slow_gap",
                              "%g a0 is not beyond the primary minimum's match gap %.4g a0 (the slow share "
@@ -93,23 +115,11 @@ int pl_colloid_mts_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err
     }
     double kmax = 0.0, h_at = hin;
     const double ds[3] = {2.0 * rmin, rmin + rmax, 2.0 * rmax};
-    enum { NS = 4000 };
     for (int a = 0; a < (c->n ? 3 : 0); ++a) {
-        const double d = ds[a], hc = c->pair.dlvo_hcut;
-        for (int q = 0; q <= NS && hc > hin; ++q) {
-            /* denser near hin, where the force is largest */
-            double t = (double)q / NS, h = hin + (hc - hin) * t * t, eps = 1e-6 * (hout - hin);
-            double f[2];
-            for (int b = 0; b < 2; ++b) {
-                double r = d + h + (b ? eps : -eps);
-                f[b] = pl_pair_slow_share(r * r, d, hin, hout) *
-                       pl_pair_dlvo_raw(r, d, c->pair.coul_C, c->pair.kappa, c->pair.hamaker).f;
-            }
-            double kk = fabs(f[1] - f[0]) / (2.0 * eps);
-            if (kk > kmax) {
-                kmax = kk;
-                h_at = h;
-            }
+        double h = hin, kk = pl_colloid_slow_stiffness(&c->pair, ds[a], hin, &h);
+        if (kk > kmax) {
+            kmax = kk;
+            h_at = h;
         }
     }
     const double outer = (double)k * c->dt;

@@ -158,6 +158,83 @@ static int pair_range(const pl_scene_t *s, const pl_colloid_pair_params_t *p, pl
     return 0;
 }
 
+/* coarse_graining.multiple_time_stepping: colloids.slow_gap and
+ * slow_interval derived (r-RESPA, kernels/colloid_slow.c).  The split gap is
+ * the DLVO secondary minimum's: inside it a pair feels the steep screened
+ * Coulomb wall (the stiff near field, on every MD step), beyond it the
+ * smooth attractive tail (the slow share, on outer steps).  The interval is
+ * the largest k whose outer step, at the longest MD step the run will take
+ * (the floor nfl rounded up to a multiple of k), still lasts at least
+ * colloids.min_contact_steps outer steps per collision time pi sqrt(m_red /
+ * K) of the slow share's stiffness K (the contact guard's rule, which
+ * pl_colloid_mts_setup checks again on the colloids), and at most nfl / 4:
+ * a floor rounded up to a multiple of k grows by less than a quarter. */
+static int mts_derive(pl_scene_t *s, const pl_colloid_pair_params_t *p, const pl_colloid_dlvo_info_t *info,
+                      double mass, long long nfl, pl_err_t *err)
+{
+    pl_scene_colloids_t *cs = &s->colloids;
+    pl_mapping_colloid_t *c = &s->mapping.colloid;
+    const size_t K = OFF(mapping.cg.multiple_time_stepping);
+    const char *key = "coarse_graining.multiple_time_stepping";
+    if (!(p->terms & PL_CT_DLVO))
+        return pl_scene_fail(s, err, K, key, "true needs the dlvo pair term (its slow share is the DLVO "
+                                            "tail); colloids.pairs has none; allowed here: false");
+    if (cs->integrator != PL_CINT_VERLET || s->coupling.method == PL_COUPLE_POTENTIAL)
+        return pl_scene_fail(s, err, K, key, "true needs colloids.integrator = \"verlet\" and coupling I or II "
+                                            "(the potential coupling integrates the fluid forces with the "
+                                            "colloids); allowed here: false");
+    const double hin = info->secmin_h;
+    if (!isfinite(info->secmin_u) || !(hin > p->prim_hm))
+        return pl_scene_fail(s, err, K, key, "true: the DLVO potential has no secondary minimum beyond the "
+                                            "primary one (the gap that separates the stiff near field from the "
+                                            "smooth tail); allowed here: false, or colloids.slow_gap and "
+                                            "colloids.slow_interval chosen by hand");
+    const double spread = sqrt(3.0) * cs->polydispersity;
+    const double ds[3] = {2.0 * cs->radius * (1.0 - spread), 2.0 * cs->radius, 2.0 * cs->radius * (1.0 + spread)};
+    double kmax = 0.0, h_at = hin;
+    for (int a = 0; a < 3; ++a) {
+        double h = hin, kk = pl_colloid_slow_stiffness(p, ds[a], hin, &h);
+        if (kk > kmax) {
+            kmax = kk;
+            h_at = h;
+        }
+    }
+    const double dt = s->srd.dt, tc = kmax > 0.0 ? PL_PI * sqrt(0.5 * mass / kmax) : INFINITY;
+    long long k = 1;
+    for (long long q = nfl / 4; q >= 2; --q) {
+        const long long lo = (nfl + q - 1) / q * q; /* the floor as pl_colloid_adaptive_setup rounds it */
+        if (!(cs->min_contact_steps > 0.0) || tc / ((double)q * (dt / (double)lo)) >= cs->min_contact_steps) {
+            k = q;
+            break;
+        }
+    }
+    if (refuse(s, err, OFF(colloids.slow_gap), "colloids.slow_gap",
+               "coarse_graining.multiple_time_stepping (the DLVO secondary minimum's gap)", cs->slow_gap, hin, NULL) ||
+        refuse(s, err, OFF(colloids.slow_interval), "colloids.slow_interval",
+               "coarse_graining.multiple_time_stepping (the longest outer step the slow share allows)",
+               (double)cs->slow_interval, (double)k, NULL))
+        return PL_ERR_INPUT;
+    if (k < 2) {
+        pl_mapping_warn(&s->mapping.map, PL_SEV_NOTE, "MTS_NOT_USED", kmax,
+                        "coarse_graining.multiple_time_stepping: the slow DLVO share beyond the secondary "
+                        "minimum (gap %.4g a0) is too stiff (%.4g kT/a0^2 at gap %.4g a0) for an outer step "
+                        "of 2 or more MD steps at the fewest MD steps per SRD step (%lld); the MD runs with "
+                        "one time step", hin, kmax, h_at, nfl);
+        return 0;
+    }
+    cs->slow_gap = hin;
+    cs->slow_interval = k;
+    prov(c, "colloids.slow_gap = %.6g (derived: coarse_graining.multiple_time_stepping, the DLVO secondary "
+            "minimum's gap; the DLVO force beyond it moves to the outer step up to the gap %.6g a0)",
+         hin, pl_pair_slow_hout(hin));
+    prov(c, "colloids.slow_interval = %lld (derived: coarse_graining.multiple_time_stepping; the slow share's "
+            "stiffness %.4g kT/a0^2 at gap %.4g a0 lasts %.3g outer steps per collision time at %lld MD "
+            "steps per SRD step (>= colloids.min_contact_steps = %g); at most a quarter of %lld)",
+         k, kmax, h_at, tc / ((double)k * dt / (double)((nfl + k - 1) / k * k)), (nfl + k - 1) / k * k,
+         cs->min_contact_steps, nfl);
+    return 0;
+}
+
 static int substeps(pl_scene_t *s, pl_err_t *err)
 {
     pl_scene_mapping_t *mp = &s->mapping;
@@ -252,6 +329,14 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
                         "and the Hertz contact are not resolved by the MD step; a pair started or pushed "
                         "there trips the contact guard (raise reach_energy to resolve them)",
                         h_reach, e_reach);
+    /* adaptive substeps by default where the contact guard sets the MD step
+     * (velocity Verlet, equal colloids: what the reach table covers) */
+    if (!given(s, OFF(colloids.adaptive_substeps)))
+        cs->adaptive_substeps = strcmp(why, "contact guard") == 0 && cs->integrator == PL_CINT_VERLET &&
+                                cs->polydispersity == 0.0;
+    if (mp->cg.multiple_time_stepping &&
+        mts_derive(s, &p, &info, mass, cs->adaptive_substeps ? (n_map < n ? n_map : n) : n, err))
+        return PL_ERR_INPUT;
     if (cs->slow_interval > 1 && n % cs->slow_interval) { /* an outer step ends with the collision step */
         n = (n / cs->slow_interval + 1) * cs->slow_interval;
         snprintf(c->substeps_reason + strlen(c->substeps_reason), sizeof c->substeps_reason - strlen(c->substeps_reason),
@@ -274,11 +359,6 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
                (double)nmin, NULL))
         return PL_ERR_INPUT;
     cs->min_substeps = nmin;
-    /* adaptive substeps by default where the contact guard sets the MD step
-     * (velocity Verlet, equal colloids: what the reach table covers) */
-    if (!given(s, OFF(colloids.adaptive_substeps)))
-        cs->adaptive_substeps = strcmp(why, "contact guard") == 0 && cs->integrator == PL_CINT_VERLET &&
-                                cs->polydispersity == 0.0;
     if (cs->adaptive_substeps)
         prov(c, "colloids.min_substeps = %lld (derived: the mapping's MD step; adaptive substeps run %lld .. %lld "
                 "per collision step, the stiffest contact the pairs present can reach with their energy + "
