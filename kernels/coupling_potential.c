@@ -266,7 +266,8 @@ void pl_coupling_potential_scatter(const pl_coupling_near_t *nb, pl_fluid_t *f, 
 #pragma omp parallel for schedule(static) num_threads(nthreads)
     for (int t = 0; t < nthreads; ++t) {
         size_t j = owner_start(nb, t), end = owner_start(nb, t + 1);
-        uint32_t *hrow = hist + (size_t)t * g->ncells;
+        uint32_t *hrow = hist + (size_t)t * g->ncells, blo, blen;
+        pl_fluid_band(f, t, nthreads, (uint32_t)g->ncells, &blo, &blen);
         for (; j < end; ++j) {
             size_t i = nb->idx[j];
             for (int d = 0; d < 3; ++d) {
@@ -285,6 +286,8 @@ void pl_coupling_potential_scatter(const pl_coupling_near_t *nb, pl_fluid_t *f, 
             hrow[f->cell[i]]--;
             hrow[cell]++;
             f->cell[i] = cell;
+            /* outside this thread's band of the counting sort: whole rows next sort */
+            if (pl_fluid_band_out(cell, blo, blen, (uint32_t)g->ncells)) pl_fluid_band_overflow(f);
         }
     }
 }

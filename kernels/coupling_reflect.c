@@ -216,6 +216,15 @@ static inline void prefetch_particle(const pl_fluid_t *f, size_t i)
     __builtin_prefetch(f->cell + i, 1, 3);
 }
 
+/* A particle's cell moved in the row of thread t: outside t's band of the
+ * counting sort (pl_fluid_bands_t), the next sort counts whole rows. */
+static inline void band_check(pl_fluid_t *f, int t, int nthreads, size_t ncells, size_t i)
+{
+    uint32_t lo, len;
+    pl_fluid_band(f, t, nthreads, (uint32_t)ncells, &lo, &len);
+    if (pl_fluid_band_out(f->cell[i], lo, len, (uint32_t)ncells)) pl_fluid_band_overflow(f);
+}
+
 /* The events with the colloids split between the threads: thread t takes,
  * in particle order, the particles found inside a colloid of its static
  * block of colloids, so each colloid sees the same events in the same
@@ -284,6 +293,7 @@ static int parallel_events(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1
             pl_coupling_inside_cells(c, g, cstart, clist, r, q);
             const int rc = reflect_particle(f, g, prm, c, vel, cstart, clist, i, k, q,
                                             hist + (size_t)sc->owner[j] * g->ncells, mine, 1);
+            band_check(f, sc->owner[j], nthreads, g->ncells, i);
             if (rc < 0) {
 #pragma omp atomic write
                 gave_up = 1;
@@ -351,6 +361,7 @@ void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_
             int32_t k = pl_coupling_inside_cells(c, g, cstart, clist, r, q);
             counts[1] += (uint64_t)reflect_particle(f, g, p, c, vel, cstart, clist, i, k, q, h,
                                                     counts, 0);
+            band_check(f, t, nthreads, g->ncells, i);
         }
     }
 }

@@ -16,19 +16,36 @@
 #include <omp.h>
 #include <string.h>
 
+
 #include "srd_drift.h"
 
-/* Scan phase of thread t; part[] holds nthreads block totals.  Contains
- * barriers: call from every thread of the region. */
+/* Scan phase of thread t; part[] holds nthreads block totals.  Only the
+ * rows whose band covers a cell hold its counts (every particle of thread
+ * u lies in u's band, so another row's count there is 0), and only those are
+ * read and rewritten.  Contains barriers: call from every thread of the
+ * region. */
 static void prefix(uint32_t *hist, uint32_t *cell_start, size_t ncells, int nthreads, int t,
-                   uint32_t *part)
+                   uint32_t *part, const uint32_t *blo, const uint32_t *blen)
 {
     size_t c0, c1;
     pl_chunk(ncells, t, nthreads, &c0, &c1);
-    uint32_t tot = 0;
+    /* the rows whose band meets [c0, c1) */
+    int rows[nthreads], nr = 0;
     for (int u = 0; u < nthreads; ++u) {
+        const size_t a = blo[u], e = a + blen[u]; /* [a, e), e > ncells: wrapped to [0, e - ncells) */
+        if (blen[u] && ((a < c1 && e > c0) || (e > ncells && e - ncells > c0))) rows[nr++] = u;
+    }
+    const uint32_t nc = (uint32_t)ncells;
+    uint32_t tot = 0;
+    for (int k = 0; k < nr; ++k) {
+        const int u = rows[k];
         const uint32_t *restrict hu = hist + (size_t)u * ncells;
-        for (size_t c = c0; c < c1; ++c) tot += hu[c];
+        if (blen[u] == nc) { /* the whole row: no test */
+            for (size_t c = c0; c < c1; ++c) tot += hu[c];
+            continue;
+        }
+        for (size_t c = c0; c < c1; ++c)
+            if (!pl_fluid_band_out((uint32_t)c, blo[u], blen[u], nc)) tot += hu[c];
     }
     part[t] = tot;
 #pragma omp barrier
@@ -37,7 +54,9 @@ static void prefix(uint32_t *hist, uint32_t *cell_start, size_t ncells, int nthr
     for (int u = 0; u < t; ++u) off += part[u];
     for (size_t c = c0; c < c1; ++c) {
         cell_start[c] = off;
-        for (int u = 0; u < nthreads; ++u) {
+        for (int k = 0; k < nr; ++k) {
+            const int u = rows[k];
+            if (blen[u] != nc && pl_fluid_band_out((uint32_t)c, blo[u], blen[u], nc)) continue;
             const uint32_t cnt = hist[(size_t)u * ncells + c];
             hist[(size_t)u * ncells + c] = off;
             off += cnt;
@@ -45,6 +64,41 @@ static void prefix(uint32_t *hist, uint32_t *cell_start, size_t ncells, int nthr
     }
     if (t == nthreads - 1) cell_start[ncells] = off;
 #pragma omp barrier
+}
+
+/* The band of the next step for thread t's chunk [lo, hi) of the sorted
+ * particles (cell_start complete): the z planes of its first and last
+ * particle's cells and b->margin planes each side (PL_BAND_MARGIN at first:
+ * a grid shift moves a particle's plane by at most 1, a drift of less than a
+ * cell by at most 1 more; doubled after each step where that fell short, as
+ * with long mean free paths or a coupling's moves), wrapped around a
+ * periodic z axis; the whole row where that covers every plane. */
+static void next_band(const pl_fluid_bands_t *b, const uint32_t *cell_start, size_t ncells, size_t lo,
+                      size_t hi, uint32_t *blo, uint32_t *blen)
+{
+    *blo = 0;
+    *blen = (uint32_t)ncells;
+    if (hi <= lo || !b->plane || (size_t)b->plane * b->nz != ncells) return;
+    size_t ends[2] = {lo, hi - 1}, cells[2];
+    for (int k = 0; k < 2; ++k) { /* the last cell whose start is <= the slot */
+        size_t a = 0, e = ncells; /* cell_start[a] <= slot < cell_start[e] */
+        while (e - a > 1) {
+            size_t m = a + (e - a) / 2;
+            if (cell_start[m] <= ends[k]) a = m;
+            else e = m;
+        }
+        cells[k] = a;
+    }
+    const long long M = b->margin ? b->margin : PL_BAND_MARGIN, nz = b->nz;
+    long long p0 = (long long)(cells[0] / b->plane) - M, p1 = (long long)(cells[1] / b->plane) + M;
+    if (!b->z_periodic) {
+        p0 = p0 < 0 ? 0 : p0;
+        p1 = p1 > nz - 1 ? nz - 1 : p1;
+    }
+    if (p1 - p0 + 1 >= nz) return;
+    if (p0 < 0) p0 += nz;
+    *blo = (uint32_t)p0 * b->plane;
+    *blen = (uint32_t)(p1 - (p0 > p1 ? p0 - nz : p0) + 1) * b->plane;
 }
 
 enum { PF = 48 }; /* prefetch distance of the scatter, in particles (48 > 24 > 8, 96 no better) */
@@ -132,20 +186,73 @@ static void scatter(pl_fluid_t *f, const pl_drift_t *drift, uint32_t *restrict h
     }
 }
 
+/* The counts of [lo, hi) into the whole row h again (a count fell outside a
+ * band): the cells the scatter will use, f->cell or the drift's. */
+static void recount(const pl_fluid_t *f, const pl_drift_t *drift, uint32_t *restrict h, size_t ncells,
+                    size_t lo, size_t hi)
+{
+    memset(h, 0, ncells * sizeof *h);
+    if (!drift) {
+        for (size_t i = lo; i < hi; ++i) h[f->cell[i]]++;
+        return;
+    }
+    const pl_real *x = f->r[0], *y = f->r[1], *z = f->r[2], *vx = f->v[0], *vy = f->v[1], *vz = f->v[2];
+    if (!f->tracked && !drift->walls) { /* as the scatter's periodic blocks */
+        double rb[3][PL_DRIFT_BLOCK], vb[3][PL_DRIFT_BLOCK];
+        uint32_t cb[PL_DRIFT_BLOCK];
+        for (size_t i = lo; i < hi; i += PL_DRIFT_BLOCK) {
+            const size_t m = hi - i < PL_DRIFT_BLOCK ? hi - i : PL_DRIFT_BLOCK;
+            pl_drift_block_periodic(drift, x + i, y + i, z + i, vx + i, vy + i, vz + i, m, rb, vb, cb);
+            for (size_t k = 0; k < m; ++k) h[cb[k]]++;
+        }
+        return;
+    }
+    for (size_t i = lo; i < hi; ++i) {
+        double r[3] = {x[i], y[i], z[i]}, v[3] = {vx[i], vy[i], vz[i]}, dr[3];
+        h[pl_drift_one(drift, r, v, dr, NULL)]++;
+    }
+}
+
 static void sort(pl_fluid_t *f, const pl_drift_t *drift, uint32_t *hist, uint32_t *cell_start,
                  size_t ncells, int nthreads)
 {
-    uint32_t part[nthreads]; /* particles in each thread's block of cells */
+    uint32_t part[nthreads];            /* particles in each thread's block of cells */
+    uint32_t blo[nthreads], blen[nthreads]; /* the bands the rows were counted in */
+    const int whole = f->bands.overflow;  /* a count fell outside a band: whole rows */
+    for (int t = 0; t < nthreads; ++t) {
+        pl_fluid_band(f, t, nthreads, (uint32_t)ncells, &blo[t], &blen[t]);
+        if (whole) {
+            blo[t] = 0;
+            blen[t] = (uint32_t)ncells;
+        }
+    }
+    const int banded = nthreads <= PL_BAND_MAX_THREADS;
+    if (f->bands.threads == nthreads) {
+        f->bands.sorts++;
+        f->bands.recounts += (uint64_t)whole;
+        if (whole) { /* the next bands twice as wide */
+            const uint32_t m = f->bands.margin ? f->bands.margin : PL_BAND_MARGIN;
+            f->bands.margin = m < f->bands.nz ? 2 * m : m;
+        }
+    }
     /* One region: thread t scans its block of cells, then scatters the
-     * particle chunk pl_chunk(n, t) whose histogram row it filled. */
+     * particle chunk pl_chunk(n, t) whose histogram row it filled, and sets
+     * its band of the next step. */
 #pragma omp parallel num_threads(nthreads)
     {
         const int t = omp_get_thread_num();
-        prefix(hist, cell_start, ncells, nthreads, t, part);
         size_t lo, hi;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
+        if (whole && f->bands.threads == nthreads) { /* the bands were in use: rows not whole */
+            recount(f, drift, hist + (size_t)t * ncells, ncells, lo, hi);
+#pragma omp barrier
+        }
+        prefix(hist, cell_start, ncells, nthreads, t, part, blo, blen);
         scatter(f, drift, hist + (size_t)t * ncells, lo, hi);
+        if (banded) next_band(&f->bands, cell_start, ncells, lo, hi, &f->bands.lo[t], &f->bands.len[t]);
     }
+    f->bands.threads = banded ? nthreads : 0;
+    f->bands.overflow = 0;
 }
 
 void pl_srd_sort(pl_fluid_t *f, uint32_t *hist, uint32_t *cell_start, size_t ncells, int nthreads)

@@ -15,13 +15,19 @@
 
 #include "srd_drift.h"
 
+/* The cells thread t may count into (pl_fluid_bands_t): its band of its row. */
+typedef struct {
+    uint32_t lo, len, ncells;
+} band_t;
+
 /* Drift + store + bin of particles [lo, hi) one by one (walls, tracking);
  * wall_acc: NULL, or this thread's wall impulses (PL_WALL_ACC_N slots). */
-static inline __attribute__((always_inline)) void moved_range(pl_fluid_t *f, const pl_drift_t *c,
-                                                              const int closed[3], uint32_t *restrict h,
-                                                              size_t lo, size_t hi, int tracked,
-                                                              int64_t *wall_acc)
+static inline __attribute__((always_inline)) uint32_t moved_range(pl_fluid_t *f, const pl_drift_t *c,
+                                                                  const int closed[3], uint32_t *restrict h,
+                                                                  size_t lo, size_t hi, int tracked,
+                                                                  int64_t *wall_acc, const band_t *b)
 {
+    uint32_t out = 0;
     pl_real *restrict x = f->r[0], *restrict y = f->r[1], *restrict z = f->r[2];
     pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
     uint32_t *restrict cell = f->cell;
@@ -37,7 +43,9 @@ static inline __attribute__((always_inline)) void moved_range(pl_fluid_t *f, con
         vx[i] = (pl_real)v[0]; vy[i] = (pl_real)v[1]; vz[i] = (pl_real)v[2];
         cell[i] = cl;
         h[cl]++;
+        out |= pl_fluid_band_out(cl, b->lo, b->len, b->ncells);
     }
+    return out;
 }
 
 /* Whether a and b have the same bits (-0.0 and +0.0 differ). */
@@ -46,11 +54,13 @@ static inline int same_bits(pl_real a, pl_real b) { return !memcmp(&a, &b, sizeo
 /* The periodic box without tracking, in blocks: drift, store, bin.
  * kick_free (a literal at each call): store a velocity only where its bits
  * changed (see the caller). */
-static inline __attribute__((always_inline)) void periodic_blocks(
+static inline __attribute__((always_inline)) uint32_t periodic_blocks(
     const pl_drift_t *c, pl_real *restrict x, pl_real *restrict y, pl_real *restrict z,
     pl_real *restrict vx, pl_real *restrict vy, pl_real *restrict vz, uint32_t *restrict cell,
-    uint32_t *restrict h, size_t lo, size_t hi, const int kick_free, const pl_stream_params_t *p, int t)
+    uint32_t *restrict h, size_t lo, size_t hi, const int kick_free, const pl_stream_params_t *p, int t,
+    const band_t *b, const int check)
 {
+    uint32_t out = 0;
     const pl_stream_hook_fn hook = p->hook, pre_hook = p->pre_hook;
     double rb[3][PL_DRIFT_BLOCK], vb[3][PL_DRIFT_BLOCK];
     uint32_t cb[PL_DRIFT_BLOCK];
@@ -65,16 +75,20 @@ static inline __attribute__((always_inline)) void periodic_blocks(
                 if (!kick_free || !same_bits((pl_real)vb[d][k], v[d][i + k])) v[d][i + k] = (pl_real)vb[d][k];
             cell[i + k] = cb[k];
             h[cb[k]]++;
+            if (check) out |= pl_fluid_band_out(cb[k], b->lo, b->len, b->ncells);
         }
         if (hook) hook(p->hook_ctx, t, i, i + m); /* the block still in L1 */
     }
+    return out;
 }
 
 /* mode: 0 = bin only, 1 = drift + store + bin, 2 = count the drifted cell
  * without storing anything but the histogram. */
-static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict h, size_t lo,
-                         size_t hi, int mode, int64_t *wall_acc, const pl_stream_params_t *p, int t)
+static uint32_t stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict h, size_t lo,
+                             size_t hi, int mode, int64_t *wall_acc, const pl_stream_params_t *p, int t,
+                             const band_t *b)
 {
+    uint32_t out = 0;
     pl_real *restrict x = f->r[0], *restrict y = f->r[1], *restrict z = f->r[2];
     pl_real *restrict vx = f->v[0], *restrict vy = f->v[1], *restrict vz = f->v[2];
     uint32_t *restrict cell = f->cell;
@@ -84,16 +98,21 @@ static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict 
         for (size_t i = lo; i < hi; i += PL_DRIFT_BLOCK) {
             const size_t m = hi - i < PL_DRIFT_BLOCK ? hi - i : PL_DRIFT_BLOCK;
             pl_drift_block_periodic(c, x + i, y + i, z + i, vx + i, vy + i, vz + i, m, rb, vb, cb);
-            for (size_t k = 0; k < m; ++k) h[cb[k]]++;
+            for (size_t k = 0; k < m; ++k) {
+                h[cb[k]]++;
+                out |= pl_fluid_band_out(cb[k], b->lo, b->len, b->ncells);
+            }
         }
-        return;
+        return out;
     }
     if (mode == 2) {
         for (size_t i = lo; i < hi; ++i) {
             double r[3] = {x[i], y[i], z[i]}, v[3] = {vx[i], vy[i], vz[i]}, dr[3];
-            h[pl_drift_one(c, r, v, dr, NULL)]++;
+            const uint32_t cl = pl_drift_one(c, r, v, dr, NULL);
+            h[cl]++;
+            out |= pl_fluid_band_out(cl, b->lo, b->len, b->ncells);
         }
-        return;
+        return out;
     }
     const int tracked = f->tracked && mode == 1;
     pl_stream_params_t hooks = *p; /* the hooks run only where the particles are stored */
@@ -103,11 +122,13 @@ static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict 
          * except -0.0 (which becomes +0.0), so v is stored only where its
          * bits change: the velocity arrays are read, not written back
          * (24 B per particle less, and no dirty lines to write back). */
-        if (c->a[0] == 0.0 && c->a[1] == 0.0 && c->a[2] == 0.0)
-            periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 1, &hooks, t);
-        else
-            periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 0, &hooks, t);
-        return;
+        /* the band test only where the band is not the whole row (kick_free
+         * and check as literals: four specialisations) */
+        const int kf = c->a[0] == 0.0 && c->a[1] == 0.0 && c->a[2] == 0.0, ck = b->len < b->ncells;
+        if (kf && ck) return periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 1, &hooks, t, b, 1);
+        if (kf) return periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 1, &hooks, t, b, 0);
+        if (ck) return periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 0, &hooks, t, b, 1);
+        return periodic_blocks(c, x, y, z, vx, vy, vz, cell, h, lo, hi, 0, &hooks, t, b, 0);
     }
     /* the common wall layouts with their closed axes as constants */
     const int *w = c->wall;
@@ -116,11 +137,12 @@ static void stream_range(pl_fluid_t *f, const pl_drift_t *c, uint32_t *restrict 
     for (size_t i = lo; i < hi; i += step) {
         const size_t e = hi - i < step ? hi : i + step;
         if (hooks.pre_hook) hooks.pre_hook(hooks.pre_hook_ctx, t, i, e);
-        if (!w[0] && !w[1] && w[2]) moved_range(f, c, (const int[3]){0, 0, 1}, h, i, e, tracked, wall_acc);
-        else if (w[0] && w[1] && !w[2]) moved_range(f, c, (const int[3]){1, 1, 0}, h, i, e, tracked, wall_acc);
-        else moved_range(f, c, w, h, i, e, tracked, wall_acc);
+        if (!w[0] && !w[1] && w[2]) out |= moved_range(f, c, (const int[3]){0, 0, 1}, h, i, e, tracked, wall_acc, b);
+        else if (w[0] && w[1] && !w[2]) out |= moved_range(f, c, (const int[3]){1, 1, 0}, h, i, e, tracked, wall_acc, b);
+        else out |= moved_range(f, c, w, h, i, e, tracked, wall_acc, b);
     }
     if (hooks.hook) hooks.hook(hooks.hook_ctx, t, lo, hi);
+    return out;
 }
 
 static void run(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params_t *p, uint32_t *hist,
@@ -128,19 +150,28 @@ static void run(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params_t *p, 
 {
     pl_drift_t c;
     pl_drift_init(&c, g, p, mode != 0);
+    /* the grid's planes, for the bands the sort sets for the next step */
+    f->bands.plane = (uint32_t)g->n[0] * (uint32_t)g->n[1];
+    f->bands.nz = (uint32_t)g->n[2];
+    f->bands.z_periodic = g->walls[2] == PL_WALLS_NONE;
     /* One parallel region; thread t owns the static chunk pl_chunk(t) here and
-     * in the scatter of the sort, so its histogram row matches its chunk. */
+     * in the scatter of the sort, so its histogram row matches its chunk.  It
+     * zeroes and counts only its band of the row (pl_fluid_bands_t). */
 #pragma omp parallel num_threads(nthreads)
     {
         int t = omp_get_thread_num();
         size_t lo, hi;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
         uint32_t *h = hist + (size_t)t * g->ncells;
-        memset(h, 0, g->ncells * sizeof *h);
+        band_t b = {0, 0, (uint32_t)g->ncells};
+        pl_fluid_band(f, t, nthreads, b.ncells, &b.lo, &b.len);
+        const size_t first = b.lo + b.len < b.ncells ? b.len : b.ncells - b.lo;
+        memset(h + b.lo, 0, first * sizeof *h);
+        memset(h, 0, (b.len - first) * sizeof *h); /* the part wrapped to plane 0 */
         /* the wall impulses of this thread's chunk, in its own cache line */
         int64_t *acc = mode == 1 && c.walls && p->wall_acc ? p->wall_acc + (size_t)t * PL_WALL_ACC_STRIDE : NULL;
         if (acc) memset(acc, 0, PL_WALL_ACC_STRIDE * sizeof *acc);
-        stream_range(f, &c, h, lo, hi, mode, acc, p, t);
+        if (stream_range(f, &c, h, lo, hi, mode, acc, p, t, &b)) pl_fluid_band_overflow(f);
     }
 }
 
@@ -150,11 +181,10 @@ void pl_srd_stream_bin(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params
     run(f, g, p, hist, nthreads, 1);
 }
 
-void pl_srd_stream_count(const pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params_t *p,
+void pl_srd_stream_count(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params_t *p,
                          uint32_t *hist, int nthreads)
 {
-    /* mode 2 reads only: the cast drops a const that is never used to write */
-    run((pl_fluid_t *)(uintptr_t)f, g, p, hist, nthreads, 2);
+    run(f, g, p, hist, nthreads, 2); /* mode 2 writes no particle state, only f->bands */
 }
 
 void pl_srd_stream_wall_impulse(const pl_grid_t *g, const pl_stream_params_t *p, const double r0[3],

@@ -77,10 +77,11 @@ void pl_srd_bin(pl_fluid_t *fluid, const pl_grid_t *grid, uint32_t *hist, int nt
 
 /* First half of the stream-in-scatter step: counts in hist (as
  * pl_srd_stream_bin does) the cell each particle will occupy after the
- * drift, but stores nothing else: r, v and fluid->cell are left as they are.
+ * drift, but stores nothing else: r, v and fluid->cell are left as they are
+ * (fluid->bands is: the grid's planes and a count outside a band).
  * Reads r, v only (48 B per particle in double, against 100 B read+written
  * by pl_srd_stream_bin). */
-void pl_srd_stream_count(const pl_fluid_t *fluid, const pl_grid_t *grid,
+void pl_srd_stream_count(pl_fluid_t *fluid, const pl_grid_t *grid,
                          const pl_stream_params_t *p, uint32_t *hist, int nthreads);
 
 /* ---- counting sort (kernels/srd_sort.c) ------------------------------- */

@@ -179,6 +179,17 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
         pl_json_int(&b, a, "refined_steps", c->adapt_refined);
         pl_json_set(&b, doc, "adaptive_substeps", a);
     }
+    { /* the counting sort's narrow histogram rows (pl_fluid_bands_t): sorts that
+       * used them, and those that counted whole rows again (a particle out of
+       * its band); none with one thread (its band is the whole row) */
+        json_t *sb = json_object();
+        b.prefix = "sort_bands";
+        pl_json_int(&b, sb, "sorts", (long long)sim->fluid.bands.sorts);
+        pl_json_int(&b, sb, "recounts", (long long)sim->fluid.bands.recounts);
+        pl_json_int(&b, sb, "margin_planes",
+                    (long long)(sim->fluid.bands.margin ? sim->fluid.bands.margin : PL_BAND_MARGIN));
+        pl_json_set(&b, doc, "sort_bands", sb);
+    }
     json_t *units = json_object(); /* thermo.tsv's columns and their units, from the same table */
     b.prefix = "thermo_units";
     for (int k = 0; k < w->columns.n; ++k) pl_json_str(&b, units, w->columns.col[k].name, w->columns.col[k].unit);
