@@ -30,8 +30,10 @@ import subprocess
 import sys
 import tempfile
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "tools"))
+import h5md_colloids  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENE = os.path.join(ROOT, "bench", "scenes", "silica_10mM.cfg")
@@ -92,12 +94,7 @@ def run(peloid, tmp, m, tag, seed, sub, nmin, keys, steps, threads):
     th = np.genfromtxt(os.path.join(out, "thermo.tsv"), names=True, delimiter="\t")
     e = th["c_total"]
     n = m["colloids"]["count"]
-    with h5py.File(os.path.join(out, "colloids.h5"), "r") as h:
-        g = h["particles/colloids"]
-        edges = g["box/edges/value"][()]
-        if edges.ndim == 3:
-            edges = np.diagonal(edges, axis1=1, axis2=2)
-        pos = g["position/value"][()] + g["image/value"][()] * edges[:, None, :]
+    pos = h5md_colloids.unwrapped(os.path.join(out, "colloids.h5"))
     a = summ.get("adaptive_substeps") or {}
     return {"wall": summ["wall_seconds"] / steps, "drift": float(np.max(np.abs(e - e[0]))) / n, "pos": pos,
             "md": a.get("mean", float(sub))}

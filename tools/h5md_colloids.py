@@ -43,3 +43,10 @@ def _load(path):
                 "img": g["image/value"][()], "t": g["position/time"][()] / t0,
                 "step": g["position/step"][()], "edges": edges / a0, "mass": mass,
                 "rad": g["radius"][()] / a0}
+
+
+def unwrapped(path):
+    """The colloids' unwrapped positions (T x N x 3, a0): position + image x edges."""
+    c = load(path)
+    return c["pos"] + c["img"] * c["edges"][None, None, :]
+

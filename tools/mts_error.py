@@ -24,8 +24,10 @@ import subprocess
 import sys
 import tempfile
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import h5md_colloids  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -57,12 +59,7 @@ def run(peloid, tmp, seed, sub, k, steps, threads):
     summ = json.load(open(os.path.join(out, "summary.json")))
     th = np.genfromtxt(os.path.join(out, "thermo.tsv"), names=True, delimiter="\t")
     e = th["c_total"]
-    with h5py.File(os.path.join(out, "colloids.h5"), "r") as h:
-        g = h["particles/colloids"]
-        edges = g["box/edges/value"][()]
-        if edges.ndim == 3:  # one 3x3 box matrix per frame
-            edges = np.diagonal(edges, axis1=1, axis2=2)
-        pos = g["position/value"][()] + g["image/value"][()] * edges[:, None, :]
+    pos = h5md_colloids.unwrapped(os.path.join(out, "colloids.h5"))
     return {"wall": summ["wall_seconds"] / steps, "drift": np.max(np.abs(e - e[0])) / 1155.0, "pos": pos}
 
 
