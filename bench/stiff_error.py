@@ -24,6 +24,7 @@ step) and the RMS position error against the reference at 0.5, 1 and 2
 collision steps' worth of t0 multiples (trajectory frames every collision
 step; differences grow chaotically afterwards, so later times compare
 nothing).  Prints a markdown table; writes bench/out/stiff_error.tsv."""
+import argparse
 import json
 import os
 import subprocess
@@ -100,17 +101,14 @@ def run(peloid, tmp, m, tag, seed, sub, nmin, keys, steps, threads):
             "md": a.get("mean", float(sub))}
 
 
-def rms(a, b):
-    return float(np.sqrt(np.mean(np.sum((a - b) ** 2, axis=-1))))
-
-
 def main():
-    if len(sys.argv) < 2:
-        sys.exit(__doc__)
-    peloid = os.path.abspath(sys.argv[1])
-    steps = int(sys.argv[2]) if len(sys.argv) > 2 else 300
-    seeds = int(sys.argv[3]) if len(sys.argv) > 3 else 2
-    threads = int(sys.argv[4]) if len(sys.argv) > 4 else 1
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("peloid")
+    ap.add_argument("steps", nargs="?", type=int, default=300)
+    ap.add_argument("seeds", nargs="?", type=int, default=2)
+    ap.add_argument("threads", nargs="?", type=int, default=1)
+    a = ap.parse_args()
+    peloid, steps, seeds, threads = os.path.abspath(a.peloid), a.steps, a.seeds, a.threads
     with tempfile.TemporaryDirectory() as tmp:
         m = model(peloid, tmp)
         vs = variants(peloid, tmp)
@@ -124,7 +122,7 @@ def main():
             for i, (tag, keys, k) in enumerate(vs):
                 ks, kn = -(-sub // k) * k, -(-nmin // k) * k
                 r = run(peloid, tmp, m, "v%d" % i, seed, ks, kn, keys, steps, threads)
-                r["err"] = [rms(r["pos"][f], ref["pos"][f]) for f in frames]
+                r["err"] = [float(np.sqrt(np.mean(np.sum((r["pos"][f] - ref["pos"][f]) ** 2, axis=-1)))) for f in frames]
                 rows[tag].append(r)
         ref_drift = ref["drift"]
     lines = ["| variant | MD steps / collision step | wall s per collision step | max energy drift (kT/colloid) | "
