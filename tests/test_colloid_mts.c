@@ -140,3 +140,37 @@ Test(colloid_mts, physical_scene_rounds_the_substeps_up_to_a_multiple)
     cr_assert_eq(split.colloids.substeps, (one.colloids.substeps / 5 + 1) * 5, "%lld from %lld",
                  split.colloids.substeps, one.colloids.substeps);
 }
+
+/* With adaptive substeps a collision step's MD count need not be a multiple
+ * of slow_interval: its last outer step is cut to the MD steps left, with
+ * slow kicks of its own length (src/colloid/colloid_md.c).  The same NVE
+ * lattice with adaptive substeps (floor 37, at most 125), slow_interval 5
+ * against 1: the counts chosen include non-multiples of 5 (their sum is
+ * not one), and the drift stays within 3x the one-step drift.  A cut outer
+ * step with the full step's kick (5 dt / 2) fails it. */
+Test(colloid_mts, adaptive_counts_cut_the_last_outer_step, .timeout = 300)
+{
+    PL_SKIP_IF_QUICK("two NVE runs of adaptive substeps");
+    char one[1200], split[1200];
+    fig14_scene(one, sizeof one, 216, 9, 125, 1, 0);
+    fig14_scene(split, sizeof split, 216, 9, 125, 5, 0);
+    char *scenes[2] = {one, split};
+    for (int k = 0; k < 2; ++k) {
+        char *at = strstr(scenes[k], "colloids: {");
+        cr_assert(at != NULL);
+        const char *add = " adaptive_substeps = true; min_substeps = 37;";
+        at += strlen("colloids: {");
+        memmove(at + strlen(add), at, strlen(at) + 1);
+        memcpy(at, add, strlen(add));
+    }
+    pl_sim_t *s = pl_test_sim(split, 2);
+    pl_test_steps(s, 20);
+    const long long md = s->colloids->adapt_md, lo = s->colloids->adapt_lo, hi = s->colloids->adapt_hi;
+    pl_sim_free(s);
+    cr_log_info("adaptive + slow_interval 5: %lld MD steps in 20 collision steps (%lld .. %lld)", md, lo, hi);
+    cr_assert_neq(md % 5, 0, "every count a multiple of 5 (%lld MD steps): the cut outer step is not exercised", md);
+    const double d1 = drift(one, 20), d5 = drift(split, 20);
+    cr_assert_gt(d1, 0.0);
+    cr_log_info("energy drift per colloid, adaptive: %g (slow_interval 1), %g (5)", d1, d5);
+    cr_assert_leq(d5, 3.0 * d1, "energy drift %g kT per colloid with slow_interval 5, %g with 1", d5, d1);
+}

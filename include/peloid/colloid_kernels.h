@@ -512,6 +512,7 @@ typedef struct {
     double dt, adapt_last, adapt_worst;
     double reach_e, reach_v2; /* with r->reach: its maxima, before the first next */
     int slow_phase, n, todo, refine, check_e;
+    int slow_len; /* MD steps of the current outer step (multiple time stepping) */
 } pl_colloid_md_ctl_t;
 enum { PL_MD_RUN = 1, PL_MD_CHECK = 2 };
 typedef struct {

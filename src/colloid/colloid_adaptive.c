@@ -86,8 +86,9 @@ int pl_colloid_adaptive_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t
         return pl_scene_fail(scene, err, OFF(min_substeps), "colloids.min_substeps",
                              "%lld is more than colloids.substeps = %lld; allowed: 1 .. %lld",
                              cs->min_substeps, cs->substeps, cs->substeps);
-    long long k = cs->slow_interval > 1 ? cs->slow_interval : 1, lo = cs->min_substeps;
-    if (lo % k) lo = (lo / k + 1) * k; /* an outer step ends with the collision step */
+    /* under multiple time stepping a count that is not a multiple of
+     * slow_interval cuts the last outer step (src/colloid/colloid_md.c) */
+    const long long lo = cs->min_substeps;
     c->sub_min = (int)(lo < cs->substeps ? lo : cs->substeps);
     c->adapt_margin = cs->adaptive_margin;
     if (build_table(&c->reach, &c->pair, 2.0 * cs->radius, cs->max_overlap))
@@ -129,8 +130,6 @@ int pl_colloid_adaptive_choose(const pl_colloid_t *c, double em, double v2)
         if (!(need <= (double)c->substeps)) need = (double)c->substeps;
         if ((long long)need > n) n = (long long)need;
     }
-    const long long k = c->slow_interval > 1 ? c->slow_interval : 1;
-    if (n % k) n = (n / k + 1) * k;
     if (n > c->substeps) n = c->substeps;
     return (int)n;
 }

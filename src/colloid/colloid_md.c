@@ -21,20 +21,23 @@ typedef struct {
     int choose; /* adaptive substeps: the MD steps chosen in the region */
 } md_run_t;
 
-/* The next MD step's time step and slow kicks: the slow kicks of k dt / 2
- * open the first and close the last MD step of each outer step of k;
- * slow_phase counts the MD steps of the outer step, reset by
- * pl_colloid_advance at each collision step (k divides the substeps, so
- * outer steps end with it). */
+/* The next MD step's time step and slow kicks: the slow kicks of len dt / 2
+ * open the first and close the last MD step of each outer step of len =
+ * slow_interval MD steps, or of the MD steps left when fewer are (with
+ * adaptive substeps the collision step's count need not be a multiple of
+ * slow_interval: its last outer step is cut to what is left, so outer steps
+ * end with the collision step); slow_phase counts the MD steps of the
+ * outer step, reset by pl_colloid_advance at each collision step. */
 static void step_params(const pl_colloid_t *c, pl_colloid_md_ctl_t *k, pl_colloid_md_sub_t *sub)
 {
     const int si = c->slow_interval;
-    const int phase = si > 1 ? k->slow_phase : 0;
-    if (si > 1) k->slow_phase = (phase + 1) % si;
-    const double slow_h = 0.5 * (double)si * k->dt;
+    if (si > 1 && k->slow_phase == 0) k->slow_len = k->todo < si ? k->todo : si;
+    const int len = si > 1 ? k->slow_len : 1, phase = si > 1 ? k->slow_phase : 0;
+    if (si > 1) k->slow_phase = (phase + 1) % len;
+    const double slow_h = 0.5 * (double)len * k->dt;
     sub->dt = k->dt;
     sub->open_h = si > 1 && phase == 0 ? slow_h : 0.0;
-    sub->close_h = si > 1 && phase == si - 1 ? slow_h : 0.0;
+    sub->close_h = si > 1 && phase == len - 1 ? slow_h : 0.0;
 }
 
 /* The end of an MD step: PL_MD_CHECK when the guards are to report or the

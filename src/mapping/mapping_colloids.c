@@ -164,11 +164,11 @@ static int pair_range(const pl_scene_t *s, const pl_colloid_pair_params_t *p, pl
  * Coulomb wall (the stiff near field, on every MD step), beyond it the
  * smooth attractive tail (the slow share, on outer steps).  The interval is
  * the largest k whose outer step, at the longest MD step the run will take
- * (the floor nfl rounded up to a multiple of k), still lasts at least
+ * (that of the floor nfl), still lasts at least
  * colloids.min_contact_steps outer steps per collision time pi sqrt(m_red /
  * K) of the slow share's stiffness K (the contact guard's rule, which
- * pl_colloid_mts_setup checks again on the colloids), and at most nfl / 4:
- * a floor rounded up to a multiple of k grows by less than a quarter. */
+ * pl_colloid_mts_setup checks again on the colloids), and at most nfl / 4
+ * (at least four outer steps per collision step). */
 static int mts_derive(pl_scene_t *s, const pl_colloid_pair_params_t *p, const pl_colloid_dlvo_info_t *info,
                       double mass, long long nfl, pl_err_t *err)
 {
@@ -201,13 +201,11 @@ static int mts_derive(pl_scene_t *s, const pl_colloid_pair_params_t *p, const pl
     }
     const double dt = s->srd.dt, tc = kmax > 0.0 ? PL_PI * sqrt(0.5 * mass / kmax) : INFINITY;
     long long k = 1;
-    for (long long q = nfl / 4; q >= 2; --q) {
-        const long long lo = (nfl + q - 1) / q * q; /* the floor as pl_colloid_adaptive_setup rounds it */
-        if (!(cs->min_contact_steps > 0.0) || tc / ((double)q * (dt / (double)lo)) >= cs->min_contact_steps) {
+    for (long long q = nfl / 4; q >= 2; --q)
+        if (!(cs->min_contact_steps > 0.0) || tc / ((double)q * (dt / (double)nfl)) >= cs->min_contact_steps) {
             k = q;
             break;
         }
-    }
     if (refuse(s, err, OFF(colloids.slow_gap), "colloids.slow_gap",
                "coarse_graining.multiple_time_stepping (the DLVO secondary minimum's gap)", cs->slow_gap, hin, NULL) ||
         refuse(s, err, OFF(colloids.slow_interval), "colloids.slow_interval",
@@ -230,8 +228,7 @@ static int mts_derive(pl_scene_t *s, const pl_colloid_pair_params_t *p, const pl
     prov(c, "colloids.slow_interval = %lld (derived: coarse_graining.multiple_time_stepping; the slow share's "
             "stiffness %.4g kT/a0^2 at gap %.4g a0 lasts %.3g outer steps per collision time at %lld MD "
             "steps per SRD step (>= colloids.min_contact_steps = %g); at most a quarter of %lld)",
-         k, kmax, h_at, tc / ((double)k * dt / (double)((nfl + k - 1) / k * k)), (nfl + k - 1) / k * k,
-         cs->min_contact_steps, nfl);
+         k, kmax, h_at, tc / ((double)k * dt / (double)nfl), nfl, cs->min_contact_steps, nfl);
     return 0;
 }
 
