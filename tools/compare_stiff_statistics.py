@@ -16,6 +16,8 @@ reads them (summary.json, observables.h5, thermo.tsv):
     secondary minimum's shell,
   - bonds, clusters: pairs within gap 0.1 a0 and their clusters (means),
   - u_dlvo: the colloids' DLVO energy (kT, thermo c_dlvo, mean from step 300),
+  - kT_colloid: their translational kinetic temperature (thermo c_kin_trans
+    / (3/2 N), mean from step 300; the fluid's kT is 1),
   - md_steps, fewest: MD steps per collision step and the fewest MD steps
     per collision time met (summary.json adaptive_substeps),
   - md_over_rest: the colloid MD's wall time over all other stages' (cost,
@@ -41,8 +43,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENE = os.path.join(ROOT, "bench", "scenes", "silica_10mM.cfg")
 OBSERVE = ("observe: { rdf_interval = 5; rdf_start = 300; rdf_bins = 300; rdf_rmax = 3.0; msd_interval = 1; "
            "msd_start = 300; clusters_interval = 5; clusters_start = 300; clusters_gap = 0.1; };\n")
-QUANTITIES = ["D", "msd_0.1s", "g_peak", "g_shell", "bonds", "clusters", "u_dlvo", "md_steps", "fewest",
-              "md_over_rest"]
+QUANTITIES = ["D", "msd_0.1s", "g_peak", "g_shell", "bonds", "clusters", "u_dlvo", "kT_colloid", "md_steps",
+              "fewest", "md_over_rest"]
 NOT_PHYSICS = ("md_steps", "fewest", "md_over_rest")
 
 
@@ -67,8 +69,10 @@ def observables(out):
         v["bonds"] = float(o["cluster_bonds/value"][:].mean())
         v["clusters"] = float(o["cluster_number/value"][:].mean())
     with open(os.path.join(out, "thermo.tsv")) as f:
-        v["u_dlvo"] = float(np.mean([float(x["c_dlvo"]) for x in csv.DictReader(f, delimiter="\t")
-                                     if int(x["step"]) >= 300]))
+        rows = [x for x in csv.DictReader(f, delimiter="\t") if int(x["step"]) >= 300]
+    v["u_dlvo"] = float(np.mean([float(x["c_dlvo"]) for x in rows]))
+    n = s["scene"]["colloids"]["count"]
+    v["kT_colloid"] = float(np.mean([float(x["c_kin_trans"]) for x in rows])) / (1.5 * n)
     a = s["adaptive_substeps"]
     v["md_steps"], v["fewest"] = a["mean"], a["fewest_contact_steps"]
     st = s["stage_seconds"]

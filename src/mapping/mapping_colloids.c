@@ -160,9 +160,14 @@ static int pair_range(const pl_scene_t *s, const pl_colloid_pair_params_t *p, pl
 
 /* coarse_graining.multiple_time_stepping: colloids.slow_gap and
  * slow_interval derived (r-RESPA, kernels/colloid_slow.c).  The split gap is
- * the DLVO secondary minimum's: inside it a pair feels the steep screened
- * Coulomb wall (the stiff near field, on every MD step), beyond it the
- * smooth attractive tail (the slow share, on outer steps).  The interval is
+ * the outer edge of the DLVO secondary minimum's well, its inflection point
+ * beyond the minimum: inside it a pair feels the well's positive curvature
+ * and the steep screened-Coulomb wall (the stiff near field, on every MD
+ * step; a pair bound in the well oscillates there), beyond it the smooth
+ * attractive tail of negative curvature (the slow share, on outer steps).
+ * (Split at the minimum itself, the slow share ramps across the bound pairs'
+ * oscillation: twice the NVE energy drift for the same cost,
+ * bench/RESULTS_colloid.md.)  The interval is
  * the largest k whose outer step, at the longest MD step the run will take
  * (that of the floor nfl), still lasts at least
  * colloids.min_contact_steps outer steps per collision time pi sqrt(m_red /
@@ -183,12 +188,16 @@ static int mts_derive(pl_scene_t *s, const pl_colloid_pair_params_t *p, const pl
         return pl_scene_fail(s, err, K, key, "true needs colloids.integrator = \"verlet\" and coupling I or II "
                                             "(the potential coupling integrates the fluid forces with the "
                                             "colloids); allowed here: false");
-    const double hin = info->secmin_h;
-    if (!isfinite(info->secmin_u) || !(hin > p->prim_hm))
+    if (!isfinite(info->secmin_u) || !(info->secmin_h > p->prim_hm))
         return pl_scene_fail(s, err, K, key, "true: the DLVO potential has no secondary minimum beyond the "
                                             "primary one (the gap that separates the stiff near field from the "
                                             "smooth tail); allowed here: false, or colloids.slow_gap and "
                                             "colloids.slow_interval chosen by hand");
+    /* the well's outer edge: its curvature U'' > 0 ends at the inflection
+     * point beyond the minimum (scanned in steps of 1e-3 of the gap) */
+    const double d0 = 2.0 * cs->radius, hm = info->secmin_h, step = 1e-3 * hm;
+    double hin = hm;
+    while (hin < p->dlvo_hcut && pl_pair_dlvo_raw(d0 + hin, d0, p->coul_C, p->kappa, p->hamaker).k2 > 0.0) hin += step;
     const double spread = sqrt(3.0) * cs->polydispersity;
     const double ds[3] = {2.0 * cs->radius * (1.0 - spread), 2.0 * cs->radius, 2.0 * cs->radius * (1.0 + spread)};
     double kmax = 0.0, h_at = hin;
@@ -207,7 +216,8 @@ static int mts_derive(pl_scene_t *s, const pl_colloid_pair_params_t *p, const pl
             break;
         }
     if (refuse(s, err, OFF(colloids.slow_gap), "colloids.slow_gap",
-               "coarse_graining.multiple_time_stepping (the DLVO secondary minimum's gap)", cs->slow_gap, hin, NULL) ||
+               "coarse_graining.multiple_time_stepping (the outer edge of the DLVO secondary minimum's well)",
+               cs->slow_gap, hin, NULL) ||
         refuse(s, err, OFF(colloids.slow_interval), "colloids.slow_interval",
                "coarse_graining.multiple_time_stepping (the longest outer step the slow share allows)",
                (double)cs->slow_interval, (double)k, NULL))
@@ -215,16 +225,17 @@ static int mts_derive(pl_scene_t *s, const pl_colloid_pair_params_t *p, const pl
     if (k < 2) {
         pl_mapping_warn(&s->mapping.map, PL_SEV_NOTE, "MTS_NOT_USED", kmax,
                         "coarse_graining.multiple_time_stepping: the slow DLVO share beyond the secondary "
-                        "minimum (gap %.4g a0) is too stiff (%.4g kT/a0^2 at gap %.4g a0) for an outer step "
+                        "minimum's well (gap %.4g a0) is too stiff (%.4g kT/a0^2 at gap %.4g a0) for an outer step "
                         "of 2 or more MD steps at the fewest MD steps per SRD step (%lld); the MD runs with "
                         "one time step", hin, kmax, h_at, nfl);
         return 0;
     }
     cs->slow_gap = hin;
     cs->slow_interval = k;
-    prov(c, "colloids.slow_gap = %.6g (derived: coarse_graining.multiple_time_stepping, the DLVO secondary "
-            "minimum's gap; the DLVO force beyond it moves to the outer step up to the gap %.6g a0)",
-         hin, pl_pair_slow_hout(hin));
+    prov(c, "colloids.slow_gap = %.6g (derived: coarse_graining.multiple_time_stepping, the outer edge of the "
+            "well of the DLVO secondary minimum at gap %.4g a0 (its inflection point); the DLVO force beyond it moves "
+            "to the outer step up to the gap %.6g a0)",
+         hin, hm, pl_pair_slow_hout(hin));
     prov(c, "colloids.slow_interval = %lld (derived: coarse_graining.multiple_time_stepping; the slow share's "
             "stiffness %.4g kT/a0^2 at gap %.4g a0 lasts %.3g outer steps per collision time at %lld MD "
             "steps per SRD step (>= colloids.min_contact_steps = %g); at most a quarter of %lld)",

@@ -105,8 +105,8 @@ static const pl_key_t cg_keys[] = {
            "shields the primary minimum and the Hertz contact (note CONTACT_SHIELDED)"},
     {"multiple_time_stepping", PL_KEY_BOOL, C(multiple_time_stepping), 0, 1, PL_KEY_FP_SET, NULL, 0, NULL,
      "-", "stiff DLVO suspensions: the colloid MD by multiple time stepping (r-RESPA) with colloids.slow_gap "
-          "= the DLVO secondary minimum's gap (the stiff near field inside it on every MD step, the smooth "
-          "tail beyond on outer steps) and colloids.slow_interval = the longest outer step whose slow forces "
+          "= the outer edge (inflection point) of the DLVO secondary minimum's well (the stiff near field "
+          "inside it on every MD step, the smooth tail beyond on outer steps) and colloids.slow_interval = the longest outer step whose slow forces "
           "the contact guard's rule still resolves (at most a quarter of the fewest MD steps per SRD step); "
           "see peloid params"},
     {"strict", PL_KEY_BOOL, C(strict), 0, 1, 0, NULL, 0, NULL,
