@@ -16,7 +16,6 @@
 #include <omp.h>
 #include <string.h>
 
-
 #include "srd_drift.h"
 
 /* Scan phase of thread t; part[] holds nthreads block totals.  Only the
