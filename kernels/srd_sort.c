@@ -3,7 +3,9 @@
  *
  * Input: the per-thread histograms hist[t * ncells + c] filled for the
  * static chunks pl_chunk(t) (pl_srd_bin / pl_srd_stream_bin, or
- * pl_srd_stream_count).  A prefix sum over (cell, thread) gives every
+ * pl_srd_stream_count), each row only in its thread's band of z planes
+ * (pl_fluid_bands_t: the sort sets the bands of the next step and counts
+ * the whole rows again when a count fell outside one).  A prefix sum over (cell, thread) gives every
  * (cell, thread) pair its first slot; each thread then scatters its own chunk
  * in order.  No atomics, and the result is the stable sort by cell, hence
  * independent of the thread count.  The sorted particles are left in the
