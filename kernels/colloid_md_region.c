@@ -35,6 +35,7 @@
  * regions, for any thread count. */
 #include <math.h>
 
+#include "colloid_bd.h"
 #include "colloid_verlet.h"
 #include "peloid/colloid_reach.h"
 
@@ -148,3 +149,85 @@ int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_ho
     *ctl = out;
     return rc;
 }
+
+/* The Brownian steps of one collision step in one parallel region, as the
+ * velocity-Verlet ones above and with the same hooks: per step the move of
+ * every colloid (pl_colloid_bd_one: with the forces of the step's start,
+ * noise counter md_step) and its displacement since the list build
+ * (barrier), the list rebuilt when that asks, pair pass 1 (barrier), then per
+ * colloid pass 2, unwrapped z, external forces and the guard's tests and
+ * maxima (barrier): the operations of the separate passes it replaced (the
+ * Brownian step, pl_colloid_forces, the guard's scan; bitwise their state,
+ * the regression hashes of 4c626c3 unchanged), colloid by colloid in the same order (lubrication's
+ * noise at the step's counter md_step, as pl_colloid_forces draws it before
+ * the step's count goes up), so the state is bitwise theirs, for any thread
+ * count.  bd: kT, eta, seed (its dt and step are set per step). */
+int pl_colloid_bd_region(const pl_colloid_md_region_t *r, const pl_colloid_md_hooks_t *hk,
+                         const pl_colloid_bd_params_t *bd, pl_colloid_md_ctl_t *ctl)
+{
+    const size_t n = r->s.n;
+    double dmax = 0.0;
+    pl_colloid_guard_max_t gm = {0.0, 0.0, 0.0, 0};
+    int rc = 0;
+    pl_colloid_md_ctl_t out = *ctl;
+#pragma omp parallel num_threads(r->nthreads) if (n >= PL_COLLOID_OMP_MIN)
+    {
+        const pl_colloid_dyn_t s = r->s;
+        const pl_colloid_view_t v = *r->v;
+        const pl_colloid_ext_params_t ext = *r->ext;
+        pl_colloid_pair_params_t pp = *r->p;
+        const pl_colloid_pair_params_t *const p = &pp;
+        const int noisy = pp.lub_thermal && (pp.terms & PL_CT_LUB);
+        pl_colloid_nlist_t *const full = r->full;
+        double *const epot = r->epot;
+        const double rf = pow(2.0, 1.0 / ext.wall_n);
+        const int torques = pl_colloid_pair_torques(p);
+        pl_colloid_md_ctl_t k = *ctl;
+        pl_colloid_md_sub_t sub;
+        int run = hk->next(hk->ctx, &k, 0, &sub);
+        while (run & PL_MD_RUN) {
+            pl_colloid_bd_params_t b = *bd;
+            b.dt = sub.dt;
+            b.step = (uint64_t)k.md_step;
+#pragma omp for schedule(static) reduction(max : dmax)
+            for (size_t i = 0; i < n; ++i) {
+                pl_colloid_bd_one(&b, i, s.box, s.periodic, s.rad, s.x, s.y, s.z, s.ix, s.iy, s.iz, s.fx, s.fy,
+                                  s.fz, s.tx, s.ty, s.tz, s.vx, s.vy, s.vz, s.wx, s.wy, s.wz, s.q0, s.q1, s.q2,
+                                  s.q3);
+                double d2 = pl_colloid_nlist_disp2(full, s.box, s.periodic, s.x, s.y, s.z, i);
+                if (!(d2 <= dmax)) dmax = isnan(d2) ? INFINITY : d2;
+            }
+            if (pl_colloid_nlist_stale(full, dmax) && rebuild(r, hk, &rc)) break;
+#pragma omp master
+            gm = (pl_colloid_guard_max_t){0.0, 0.0, 0.0, 0};
+            if (noisy) {
+                pp.noise_step = (uint64_t)k.md_step;
+                pp.lub_noise = sqrt(2.0 * pp.lub_kT / sub.dt);
+            }
+            pl_colloid_pair_owner_pass(p, full, &v);
+#pragma omp master
+            dmax = 0.0;
+#pragma omp for schedule(static) reduction(pl_guard_max : gm)
+            for (size_t i = 0; i < n; ++i) {
+                pl_colloid_pair_reverse_one(full, &v, i, torques);
+                s.zu[i] = s.z[i] + (double)s.iz[i] * s.box[2];
+                pl_colloid_ext_one(&ext, rf, n, i, s.x, s.y, s.z, s.zu, s.rad, s.mass, s.fx, s.fy, s.fz, epot);
+                const int ok = pl_colloid_state_finite(s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.fx[i],
+                                                       s.fy[i], s.fz[i], s.wx[i], s.wy[i], s.wz[i]) &&
+                               pl_colloid_image_axis_out(s.ix[i], s.iy[i], s.iz[i]) < 0;
+                pl_colloid_guard_add(&gm, ok, v.g_overlap[i], v.g_omega2[i], v.g_damp[i]);
+            }
+            if (hk->end(hk->ctx, &k, &gm) & PL_MD_CHECK) {
+#pragma omp single
+                rc = hk->check(hk->ctx, &k, &gm);
+                if (rc) break;
+            }
+            run = hk->next(hk->ctx, &k, 1, &sub);
+        }
+#pragma omp master
+        out = k;
+    }
+    *ctl = out;
+    return rc;
+}
+

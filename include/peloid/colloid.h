@@ -224,6 +224,9 @@ void pl_colloid_md_region_of(pl_colloid_t *c, pl_colloid_md_region_t *r, pl_coll
  * in the region (pl_colloid_adaptive_choose), the rest possibly finished at
  * the finest MD step (pl_colloid_advance). */
 int pl_colloid_verlet_run(pl_colloid_t *c, int n, pl_err_t *err);
+/* n Brownian steps (colloids.integrator = "brownian") in one parallel region
+ * (pl_colloid_bd_region): each the move, the forces and the guards. */
+int pl_colloid_bd_run(pl_colloid_t *c, int n, pl_err_t *err);
 /* One MD step (velocity Verlet + quaternions, or BD), then the guards. */
 int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err);
 /* The plan stage: colloids.substeps MD steps of one collision step. */

@@ -563,14 +563,13 @@ typedef struct {
     uint64_t seed, step; /* counter-based noise (PL_RNG_BD_NOISE) */
 } pl_colloid_bd_params_t;
 
-/* One Brownian dynamics step (overdamped Langevin with Stokes friction):
- * x += F dt/zeta + sqrt(2 kT dt/zeta) xi, same for the orientation; v and w
- * are set to the drift velocities F/zeta, T/zeta_r. */
-void pl_colloid_bd_step(const pl_colloid_bd_params_t *p, size_t n, const double box[3],
-                        const int periodic[3], const double *rad, double *x, double *y, double *z,
-                        int32_t *ix, int32_t *iy, int32_t *iz, const double *fx, const double *fy,
-                        const double *fz, const double *tx, const double *ty, const double *tz,
-                        double *vx, double *vy, double *vz, double *wx, double *wy, double *wz,
-                        double *q0, double *q1, double *q2, double *q3, int nthreads);
+/* The Brownian steps of one collision step in one parallel region
+ * (kernels/colloid_md_region.c), with the hooks of pl_colloid_md_region (no
+ * adaptive substeps and no multiple time stepping: r->reach and r->near
+ * NULL); bd gives kT, eta and the seed, the control the steps and dt
+ * (overdamped Langevin with Stokes friction, kernels/colloid_bd.h).  The
+ * same state for any thread count. */
+int pl_colloid_bd_region(const pl_colloid_md_region_t *r, const pl_colloid_md_hooks_t *hk,
+                         const pl_colloid_bd_params_t *bd, pl_colloid_md_ctl_t *ctl);
 
 #endif

@@ -104,7 +104,9 @@ static int reserve(void *ctx, pl_colloid_nlist_t *nl, size_t need)
     return pl_colloid_nlist_reserve(nl, need, m->err) ? -1 : 0;
 }
 
-int pl_colloid_verlet_run(pl_colloid_t *c, int n, pl_err_t *err)
+/* The velocity-Verlet (or, brownian, the Brownian) steps of one call: n,
+ * or with adaptive substeps (n = 0) the count chosen in the region. */
+static int run_region(pl_colloid_t *c, int n, int brownian, pl_err_t *err)
 {
     md_run_t m = {c, err, n == 0};
     pl_colloid_md_ctl_t k = {.md_step = c->md_step, .adapt_md = c->adapt_md,
@@ -120,7 +122,8 @@ int pl_colloid_verlet_run(pl_colloid_t *c, int n, pl_err_t *err)
         r.reach_margin = c->adapt_margin;
     }
     const pl_colloid_md_hooks_t hk = {&m, end, next, check, reserve};
-    const int rc = pl_colloid_md_region(&r, &hk, &k);
+    const pl_colloid_bd_params_t bd = {c->dt, c->kT, c->bd_eta, c->seed, 0};
+    const int rc = brownian ? pl_colloid_bd_region(&r, &hk, &bd, &k) : pl_colloid_md_region(&r, &hk, &k);
     c->md_step = k.md_step;
     c->adapt_md = k.adapt_md;
     c->adapt_refined = k.adapt_refined;
@@ -133,3 +136,8 @@ int pl_colloid_verlet_run(pl_colloid_t *c, int n, pl_err_t *err)
     c->slow_phase = k.slow_phase;
     return rc ? err->code : 0;
 }
+
+int pl_colloid_verlet_run(pl_colloid_t *c, int n, pl_err_t *err) { return run_region(c, n, 0, err); }
+
+int pl_colloid_bd_run(pl_colloid_t *c, int n, pl_err_t *err) { return run_region(c, n, 1, err); }
+

@@ -3,21 +3,14 @@
  * followed by the guards, and the plan stage that runs the MD substeps of one
  * collision step (dt_MD = srd.dt / colloids.substeps, or with adaptive
  * substeps srd.dt / the count chosen at the step's start,
- * src/colloid/colloid_adaptive.c).  The velocity-Verlet steps of a
- * collision step run in one parallel region (src/colloid/colloid_md.c). */
+ * src/colloid/colloid_adaptive.c).  The velocity-Verlet (or Brownian) steps
+ * of a collision step run in one parallel region (src/colloid/colloid_md.c). */
 #include "peloid/colloid.h"
 
 int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err)
 {
     if (c->integrator == PL_CINT_VERLET) return pl_colloid_verlet_run(c, 1, err);
-    pl_colloid_bd_params_t bp = {c->dt, c->kT, c->bd_eta, c->seed, (uint64_t)c->md_step};
-    pl_colloid_bd_step(&bp, c->n, c->box, c->periodic, c->rad, c->x, c->y, c->z, c->ix, c->iy,
-                       c->iz, c->fx, c->fy, c->fz, c->tx, c->ty, c->tz, c->vx, c->vy, c->vz,
-                       c->wx, c->wy, c->wz, c->q0, c->q1, c->q2, c->q3, c->nthreads);
-    if (pl_colloid_forces(c, err)) return err->code;
-    c->md_step++;
-    int check_e = c->nve && c->max_energy_drift > 0.0 && c->md_step % c->guard_interval == 0;
-    return pl_colloid_guard(c, check_e, err);
+    return pl_colloid_bd_run(c, 1, err);
 }
 
 int pl_colloid_advance(pl_colloid_t *c, long long collision_step, pl_err_t *err)
@@ -33,9 +26,5 @@ int pl_colloid_advance(pl_colloid_t *c, long long collision_step, pl_err_t *err)
      * choice (under multiple time stepping the outer steps keep their length
      * instead); both inside the MD region (src/colloid/colloid_md.c) */
     if (c->integrator == PL_CINT_VERLET) return pl_colloid_verlet_run(c, c->adaptive ? 0 : c->substeps, err);
-    for (int s = 0; s < c->substeps; ++s) {
-        int rc = pl_colloid_md_step(c, err);
-        if (rc) return rc;
-    }
-    return 0;
+    return pl_colloid_bd_run(c, c->substeps, err);
 }
