@@ -73,6 +73,18 @@ static int rebuild(const pl_colloid_md_region_t *r, const pl_colloid_md_hooks_t 
     return 0;
 }
 
+/* The end of a step in every thread: its counters; when the guards are to
+ * report or the energy drift is due, the check by one thread (its single's
+ * barrier ends it for all).  1: stop with *rc (shared), which is not 0. */
+static int step_end(const pl_colloid_md_hooks_t *hk, pl_colloid_md_ctl_t *k, const pl_colloid_guard_max_t *gm,
+                    int *rc)
+{
+    if (!(hk->end(hk->ctx, k, gm) & PL_MD_CHECK)) return 0;
+#pragma omp single
+    *rc = hk->check(hk->ctx, k, gm);
+    return *rc != 0;
+}
+
 int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_hooks_t *hk,
                          pl_colloid_md_ctl_t *ctl)
 {
@@ -136,11 +148,7 @@ int pl_colloid_md_region(const pl_colloid_md_region_t *r, const pl_colloid_md_ho
             for (size_t i = 0; i < n; ++i)
                 pl_colloid_verlet_close_one(&s, i, sub.dt, sub.close_h, pairs, full, &v, &vs, torques,
                                             &ext, rf, epot, &gm);
-            if (hk->end(hk->ctx, &k, &gm) & PL_MD_CHECK) {
-#pragma omp single
-                rc = hk->check(hk->ctx, &k, &gm);
-                if (rc) break;
-            }
+            if (step_end(hk, &k, &gm, &rc)) break;
             run = hk->next(hk->ctx, &k, 1, &sub);
         }
 #pragma omp master
@@ -209,19 +217,10 @@ int pl_colloid_bd_region(const pl_colloid_md_region_t *r, const pl_colloid_md_ho
             dmax = 0.0;
 #pragma omp for schedule(static) reduction(pl_guard_max : gm)
             for (size_t i = 0; i < n; ++i) {
-                pl_colloid_pair_reverse_one(full, &v, i, torques);
-                s.zu[i] = s.z[i] + (double)s.iz[i] * s.box[2];
-                pl_colloid_ext_one(&ext, rf, n, i, s.x, s.y, s.z, s.zu, s.rad, s.mass, s.fx, s.fy, s.fz, epot);
-                const int ok = pl_colloid_state_finite(s.x[i], s.y[i], s.z[i], s.vx[i], s.vy[i], s.vz[i], s.fx[i],
-                                                       s.fy[i], s.fz[i], s.wx[i], s.wy[i], s.wz[i]) &&
-                               pl_colloid_image_axis_out(s.ix[i], s.iy[i], s.iz[i]) < 0;
-                pl_colloid_guard_add(&gm, ok, v.g_overlap[i], v.g_omega2[i], v.g_damp[i]);
+                pl_colloid_forces_close_one(&s, i, full, &v, torques, &ext, rf, epot);
+                pl_colloid_guard_one(&s, i, &v, &gm);
             }
-            if (hk->end(hk->ctx, &k, &gm) & PL_MD_CHECK) {
-#pragma omp single
-                rc = hk->check(hk->ctx, &k, &gm);
-                if (rc) break;
-            }
+            if (step_end(hk, &k, &gm, &rc)) break;
             run = hk->next(hk->ctx, &k, 1, &sub);
         }
 #pragma omp master

@@ -60,6 +60,29 @@ static inline void pl_colloid_verlet_open_block(const pl_colloid_dyn_t *s, size_
     *m = mm;
 }
 
+/* The guard's tests of colloid i (finite state, image counters in range)
+ * and its pair maxima, into gm. */
+static inline void pl_colloid_guard_one(const pl_colloid_dyn_t *s, size_t i, const pl_colloid_view_t *v,
+                                        pl_colloid_guard_max_t *gm)
+{
+    const int ok = pl_colloid_state_finite(s->x[i], s->y[i], s->z[i], s->vx[i], s->vy[i], s->vz[i],
+                                           s->fx[i], s->fy[i], s->fz[i], s->wx[i], s->wy[i], s->wz[i]) &&
+                   pl_colloid_image_axis_out(s->ix[i], s->iy[i], s->iz[i]) < 0;
+    pl_colloid_guard_add(gm, ok, v->g_overlap[i], v->g_omega2[i], v->g_damp[i]);
+}
+
+/* Pass 2 of colloid i (its reverse entries), its unwrapped z and external
+ * forces: the forces' end, after pair pass 1. */
+static inline void pl_colloid_forces_close_one(const pl_colloid_dyn_t *s, size_t i, const pl_colloid_nlist_t *nl,
+                                               const pl_colloid_view_t *v, int torques,
+                                               const pl_colloid_ext_params_t *ext, double rf, double *epot)
+{
+    pl_colloid_pair_reverse_one(nl, v, i, torques);
+    s->zu[i] = s->z[i] + (double)s->iz[i] * s->box[2];
+    pl_colloid_ext_one(ext, rf, s->n, i, s->x, s->y, s->z, s->zu, s->rad, s->mass, s->fx, s->fy, s->fz,
+                       epot);
+}
+
 /* The close of colloid i after pair pass 1 (nl: the pair pass's list; full:
  * the slow pass's, used when slow_h != 0; vs: pl_colloid_slow_view; rf =
  * 2^{1/wall_n}): reverse entries, unwrapped z, external forces, half kick,
@@ -72,20 +95,14 @@ static inline void pl_colloid_verlet_close_one(const pl_colloid_dyn_t *s, size_t
                                                double *epot, pl_colloid_guard_max_t *gm)
 {
     const double h = 0.5 * dt;
-    pl_colloid_pair_reverse_one(nl, v, i, torques);
-    s->zu[i] = s->z[i] + (double)s->iz[i] * s->box[2];
-    pl_colloid_ext_one(ext, rf, s->n, i, s->x, s->y, s->z, s->zu, s->rad, s->mass, s->fx, s->fy, s->fz,
-                       epot);
+    pl_colloid_forces_close_one(s, i, nl, v, torques, ext, rf, epot);
     pl_colloid_kick_one(i, h, s->mass, s->inertia, s->fx, s->fy, s->fz, s->tx, s->ty, s->tz, s->vx,
                         s->vy, s->vz, s->wx, s->wy, s->wz);
     if (slow_h != 0.0) {
         pl_colloid_pair_reverse_one(full, vs, i, 0);
         pl_colloid_slow_kick_one(i, slow_h, s->mass, s->fsx, s->fsy, s->fsz, s->vx, s->vy, s->vz);
     }
-    const int ok = pl_colloid_state_finite(s->x[i], s->y[i], s->z[i], s->vx[i], s->vy[i], s->vz[i],
-                                           s->fx[i], s->fy[i], s->fz[i], s->wx[i], s->wy[i], s->wz[i]) &&
-                   pl_colloid_image_axis_out(s->ix[i], s->iy[i], s->iz[i]) < 0;
-    pl_colloid_guard_add(gm, ok, v->g_overlap[i], v->g_omega2[i], v->g_damp[i]);
+    pl_colloid_guard_one(s, i, v, gm);
 }
 
 #endif
