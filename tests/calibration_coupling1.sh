@@ -33,6 +33,7 @@ export PELOID_CACHE=$T/cache
 pass=0; fail=0
 ok()  { pass=$((pass+1)); echo "  ok   $1"; }
 bad() { fail=$((fail+1)); echo "  FAIL $1"; }
+. "$ROOT/tests/calibrated_check.sh"
 echo "== coupling-true time of coupling I"
 
 # scenes/hecht_table1.cfg's model (its shipped calibration) without DLVO or lubrication, in a
@@ -47,11 +48,8 @@ table1() {
       "$ROOT/scenes/hecht_table1.cfg"
 }
 table1 dilute_c1 "${PL_C1_STEPS:-60000}" 0.02 5 '/gravity = 9.81;/d' > c1.cfg
-if ! "$PELOID" run c1.cfg --out c --threads 2 2> ec; then bad "dilute coupling I run: $(tail -1 ec)"
-elif grep -q calibrating ec; then bad "dilute coupling I run: calibrated instead of reading calibration/ (model differs from scenes/hecht_table1.cfg)"
-elif r=$($PY "$ROOT/tools/h5md_lateral_diffusion.py" --check c calibration
-); then ok "dilute coupling I suspension: $r"
-else bad "dilute coupling I suspension: $r"; fi
+calibrated_check "dilute coupling I" "dilute coupling I suspension" c1.cfg c \
+  " (model differs from scenes/hecht_table1.cfg)" "$ROOT/tools/h5md_lateral_diffusion.py" --check c calibration
 
 # 2. a single colloid of the same model settles in the periodic box (10 g,
 #    Pe ~ 7, with the fluid's counter-force, Hecht Sec. VIII.A iii) at the
@@ -62,11 +60,7 @@ else bad "dilute coupling I suspension: $r"; fi
 #    SE < 3.3 % (16 blocks).
 table1 settle_c1 "${PL_C1_SETTLE_STEPS:-12000}" 0.0024 10 's/gravity = 9.81;/gravity = 98.1;/' > s1.cfg
 printf 'coupling: { compensate_gravity = true; };\n' >> s1.cfg
-if ! "$PELOID" run s1.cfg --out s --threads 2 2> es; then bad "settling coupling I run: $(tail -1 es)"
-elif grep -q calibrating es; then bad "settling coupling I run: calibrated instead of reading calibration/"
-elif r=$($PY "$ROOT/tools/h5md_settling.py" s
-); then ok "settling coupling I colloid: $r"
-else bad "settling coupling I colloid: $r"; fi
+calibrated_check "settling coupling I" "settling coupling I colloid" s1.cfg s "" "$ROOT/tools/h5md_settling.py" s
 
 echo "calibration_coupling1: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -25,17 +25,15 @@ export PELOID_CACHE=$T/cache
 pass=0; fail=0
 ok()  { pass=$((pass+1)); echo "  ok   $1"; }
 bad() { fail=$((fail+1)); echo "  FAIL $1"; }
+. "$ROOT/tests/calibrated_check.sh"
 echo "== coupling-true time of the potential coupling"
 
 sed -e 's/^name = .*/name = "dilute_potential";/' -e 's/^steps = .*/steps = POTSTEPS;/' \
     -e 's/volume_fraction = 0.0995;.*/volume_fraction = 0.02;/' -e 's/box = \[12.0e-6, 12.0e-6, 12.0e-6\];/box = [16.0e-6, 16.0e-6, 16.0e-6];/' \
     -e 's/trajectory_interval = [0-9]*;/trajectory_interval = 10;/' \
     -e '/^observe:/d' -e '/^output:/d' "$ROOT/scenes/pl_potential_physical.cfg" | sed "s/POTSTEPS/${PL_POT_STEPS:-12000}/" > pot.cfg
-if ! "$PELOID" run pot.cfg --out p --threads 2 2> ep; then bad "dilute potential run: $(tail -1 ep)"
-elif grep -q calibrating ep; then bad "dilute potential run: calibrated instead of reading calibration/ (model differs from scenes/pl_potential_physical.cfg)"
-elif r=$($PY "$ROOT/tools/h5md_lateral_diffusion.py" --check p calibration
-); then ok "dilute potential-coupling suspension: $r"
-else bad "dilute potential-coupling suspension: $r"; fi
+calibrated_check "dilute potential" "dilute potential-coupling suspension" pot.cfg p \
+  " (model differs from scenes/pl_potential_physical.cfg)" "$ROOT/tools/h5md_lateral_diffusion.py" --check p calibration
 
 # 2. a lone sedimenting colloid of the same resolution (rho_p = 2 rho_f, 1 g,
 #    Pe ~ 10; its own shipped calibration, the colloid mass being part of
@@ -48,11 +46,7 @@ else bad "dilute potential-coupling suspension: $r"; fi
 #    steps gave +5.6 % +- 3.9 %; 70000: +5.3 % +- 2.3 %, 1.85e-6 against
 #    2.18e-6 x 0.8059 = 1.76e-6 m/s, 2.2 CPU-min).
 sed -e "s/^steps = .*/steps = ${PL_POT_SETTLE_STEPS:-70000};/" "$ROOT/tests/calibration/pl_potential_settle.cfg" > ps.cfg
-if ! "$PELOID" run ps.cfg --out s --threads 2 2> es; then bad "settling potential run: $(tail -1 es)"
-elif grep -q calibrating es; then bad "settling potential run: calibrated instead of reading calibration/"
-elif r=$($PY "$ROOT/tools/h5md_settling.py" s
-); then ok "settling potential-coupling colloid: $r"
-else bad "settling potential-coupling colloid: $r"; fi
+calibrated_check "settling potential" "settling potential-coupling colloid" ps.cfg s "" "$ROOT/tools/h5md_settling.py" s
 
 echo "calibration_potential: $pass passed, $fail failed"
 [ $fail -eq 0 ]
