@@ -28,7 +28,6 @@ import json
 import math
 import os
 import sys
-import tempfile
 
 import numpy as np
 
@@ -84,18 +83,20 @@ def main():
     k = int(sys.argv[4]) if len(sys.argv) > 4 else 5
     threads = int(sys.argv[5]) if len(sys.argv) > 5 else 2
     first = int(sys.argv[6]) if len(sys.argv) > 6 else 1
-    rows = {"old": [], "new": []}
     tsv = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "bench", "out",
                        "mts_statistics.tsv")
     os.makedirs(os.path.dirname(tsv), exist_ok=True)
-    with tempfile.TemporaryDirectory() as tmp:
-        for s in range(first, first + seeds):  # interleaved
-            for tag, kk in (("old", 1), ("new", k)):
-                out = statistics_compare.run(binary, SCENE.format(seed=s, steps=steps, k=kk), tag, s, tmp, threads)
-                rows[tag].append(observables(out, steps))
-                with open(tsv, "a") as f:
-                    f.write("\t".join([tag, str(s), str(steps), str(kk)] +
-                                       ["%s=%.10g" % kv for kv in sorted(rows[tag][-1].items())]) + "\n")
+    kk = {"old": 1, "new": k}
+
+    def record(tag, s, values):
+        with open(tsv, "a") as f:
+            f.write("\t".join([tag, str(s), str(steps), str(kk[tag])] +
+                               ["%s=%.10g" % kv for kv in sorted(values.items())]) + "\n")
+
+    rows = statistics_compare.interleaved(
+        range(first, first + seeds),
+        [(tag, binary, lambda s, kt=kk[tag]: SCENE.format(seed=s, steps=steps, k=kt)) for tag in ("old", "new")],
+        lambda out: observables(out, steps), threads, record)
     print("# Fig. 14 model suspension, %d seeds x %d collision steps: old = slow_interval 1, new = %d"
           % (seeds, steps, k))
     statistics_compare.table(rows, ["kT_colloid", "u_dlvo", "bonds_per_colloid", "g_peak", "msd_end",

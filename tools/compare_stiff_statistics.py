@@ -31,7 +31,6 @@ import json
 import math
 import os
 import sys
-import tempfile
 
 import h5py
 import numpy as np
@@ -87,12 +86,10 @@ def main():
     binary = os.path.abspath(sys.argv[1])
     seeds = int(sys.argv[2]) if len(sys.argv) > 2 else 8
     first = int(sys.argv[3]) if len(sys.argv) > 3 else 1
-    rows = {"old": [], "new": []}
-    with tempfile.TemporaryDirectory() as tmp:
-        for s in range(first, first + seeds):  # interleaved
-            for tag in ("old", "new"):
-                out = statistics_compare.run(binary, scene_text(s, tag == "new"), tag, s, tmp, 1)
-                rows[tag].append(observables(out))
+    rows = statistics_compare.interleaved(
+        range(first, first + seeds),
+        [("old", binary, lambda s: scene_text(s, False)), ("new", binary, lambda s: scene_text(s, True))],
+        observables, 1)
     print("# bench/scenes/silica_10mM.cfg, seeds %d..%d x 1818 collision steps (1 s): old = the default "
           "(adaptive substeps), new = coarse_graining.multiple_time_stepping = true" % (first, first + seeds - 1))
     statistics_compare.table(rows, QUANTITIES, NOT_PHYSICS)

@@ -48,6 +48,23 @@ def colloid_structure(out, n, edges):
     return gr, shell, np.prod(L), D
 
 
+def interleaved(seeds, variants, observables, threads, each=None):
+    """Runs every variant (tag, binary, scene_text(seed)) seed by seed, the
+    variants in turn for each seed (interleaved, so that a slow spell of the
+    machine falls on all of them); observables(out) gives a dict per run,
+    each(tag, seed, values) sees it at once (None: nothing).  Returns
+    {tag: [values per seed]}."""
+    rows = {tag: [] for tag, _, _ in variants}
+    with tempfile.TemporaryDirectory() as tmp:
+        for s in seeds:
+            for tag, binary, text in variants:
+                out = run(binary, text(s), tag, s, tmp, threads)
+                rows[tag].append(observables(out))
+                if each:
+                    each(tag, s, rows[tag][-1])
+    return rows
+
+
 def table(rows, quantities, not_physics=()):
     """Prints old and new (mean +- SE over seeds) and z = their difference
     over the combined SE per quantity; returns the largest |z| of the
@@ -75,15 +92,11 @@ def main(doc, scene, threads, observables, title, quantities, not_physics=(), se
     if len(sys.argv) < 3:
         print(doc)
         return 2
-    binaries = {"old": sys.argv[1], "new": sys.argv[2]}
     seed_range = range(1, 1 + (int(sys.argv[3]) if len(sys.argv) > 3 else seeds))
     steps = int(sys.argv[4]) if len(sys.argv) > 4 else steps
-    rows = {"old": [], "new": []}
-    with tempfile.TemporaryDirectory() as tmp:
-        for s in seed_range:  # interleaved
-            for tag in ("old", "new"):
-                out = run(binaries[tag], scene.format(seed=s, steps=steps), tag, s, tmp, threads)
-                rows[tag].append(observables(out, steps))
+    text = lambda s: scene.format(seed=s, steps=steps)  # noqa: E731
+    rows = interleaved(seed_range, [("old", sys.argv[1], text), ("new", sys.argv[2], text)],
+                       lambda out: observables(out, steps), threads)
     print(title % (len(seed_range), steps))
     table(rows, quantities, not_physics)
     return 0
