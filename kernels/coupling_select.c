@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "coupling_geometry.h"
+#include "omp_parts.h"
 #include "peloid/coupling_kernels.h"
 #include "peloid/srd_kernels.h"
 
@@ -53,8 +54,7 @@ void pl_coupling_find(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
 {
     const pl_coupling_box_t q = pl_coupling_box(g->L, g->walls);
 #pragma omp parallel num_threads(nthreads)
-    {
-        int t = omp_get_thread_num();
+    PL_FOR_PART(t, nthreads) {
         size_t lo, hi, m = 0, np = 0;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
         for (size_t i = lo; i < hi; ++i) {
@@ -360,8 +360,7 @@ void pl_coupling_find_sorted(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
                              uint64_t *counts)
 {
 #pragma omp parallel num_threads(nthreads)
-    {
-        const int t = omp_get_thread_num();
+    PL_FOR_PART(t, nthreads) {
         size_t lo, hi;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
         select_run_t s = {.q = pl_coupling_box(g->L, g->walls), .c = c, .reach = reach, .f = f, .cstart = cstart,
@@ -422,8 +421,7 @@ void pl_coupling_find_binned(const pl_fluid_t *f, const pl_grid_t *g, const pl_c
     const pl_coupling_box_t q = pl_coupling_box(g->L, g->walls);
     const uint32_t *restrict cell = f->cell;
 #pragma omp parallel num_threads(nthreads)
-    {
-        int t = omp_get_thread_num();
+    PL_FOR_PART(t, nthreads) {
         size_t lo, hi, m = 0, in = 0, np = 0;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
         /* the particles in cells with candidates (branch-free append) ... */

@@ -11,6 +11,7 @@
 #include <omp.h>
 #include <stdint.h>
 
+#include "omp_parts.h"
 #include "peloid/srd_kernels.h"
 
 enum { GUARD_BLOCK = 512 };
@@ -40,11 +41,11 @@ size_t pl_srd_guard_scan(const pl_fluid_t *f, const int Lc[3], double vmax2, int
     const size_t n = f->n;
     size_t first = n;
     /* the same static chunks as the other fluid kernels: each thread reads
-     * the pages it first touched */
+     * the pages it first touched (parts: omp_parts.h) */
 #pragma omp parallel num_threads(nthreads) reduction(min : first)
-    {
+    PL_FOR_PART(t, nthreads) {
         size_t lo, hi, mine = n; /* (the private `first` starts at SIZE_MAX) */
-        pl_chunk(n, omp_get_thread_num(), nthreads, &lo, &hi);
+        pl_chunk(n, t, nthreads, &lo, &hi);
         for (size_t i0 = lo; i0 < hi && mine == n; i0 += GUARD_BLOCK) {
             const size_t i1 = hi - i0 < GUARD_BLOCK ? hi : i0 + GUARD_BLOCK;
             int bad = 0;

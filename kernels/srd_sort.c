@@ -12,30 +12,41 @@
  * twin arrays (r_alt, v_alt, ...): the caller swaps them in (pl_fluid_swap),
  * so that a kernel calls nothing of src/.
  *
- * The prefix sum is parallel: thread t sums its block of cells, the block
- * totals are added up (nthreads terms), then every thread writes the slots of
- * its block.  Integer sums: the same result as a serial scan. */
+ * The prefix sum is parallel: part t sums its block of cells, the block
+ * totals are added up (nthreads terms), then every part writes the slots of
+ * its block.  Integer sums: the same result as a serial scan.  The parts are
+ * the thread count the histogram was counted for; the team takes them
+ * round-robin (omp_parts.h), so a team smaller than asked gives the same
+ * bits. */
 #include <omp.h>
 #include <string.h>
 
+#include "omp_parts.h"
 #include "srd_drift.h"
 
-/* Scan phase of thread t; part[] holds nthreads block totals.  Only the
- * rows whose band covers a cell hold its counts (every particle of thread
- * u lies in u's band, so another row's count there is 0), and only those are
- * read and rewritten.  Contains barriers: call from every thread of the
- * region. */
-static void prefix(uint32_t *hist, uint32_t *cell_start, size_t ncells, int nthreads, int t,
-                   uint32_t *part, const uint32_t *blo, const uint32_t *blen)
+/* The rows whose band meets cell block [c0, c1): only they hold counts
+ * there (every particle of part u lies in u's band, so another row's count
+ * there is 0).  Returns how many, in rows[]. */
+static int rows_of_block(int nthreads, size_t ncells, size_t c0, size_t c1, const uint32_t *blo,
+                         const uint32_t *blen, int *rows)
 {
-    size_t c0, c1;
-    pl_chunk(ncells, t, nthreads, &c0, &c1);
-    /* the rows whose band meets [c0, c1) */
-    int rows[nthreads], nr = 0;
+    int nr = 0;
     for (int u = 0; u < nthreads; ++u) {
         const size_t a = blo[u], e = a + blen[u]; /* [a, e), e > ncells: wrapped to [0, e - ncells) */
         if (blen[u] && ((a < c1 && e > c0) || (e > ncells && e - ncells > c0))) rows[nr++] = u;
     }
+    return nr;
+}
+
+/* Scan, first half: part[t] := the particles in part t's block of cells,
+ * read from the rows whose band covers a cell only. */
+static void prefix_total(const uint32_t *hist, size_t ncells, int nthreads, int t, uint32_t *part,
+                         const uint32_t *blo, const uint32_t *blen)
+{
+    size_t c0, c1;
+    pl_chunk(ncells, t, nthreads, &c0, &c1);
+    int rows[nthreads];
+    const int nr = rows_of_block(nthreads, ncells, c0, c1, blo, blen, rows);
     const uint32_t nc = (uint32_t)ncells;
     uint32_t tot = 0;
     for (int k = 0; k < nr; ++k) {
@@ -49,8 +60,18 @@ static void prefix(uint32_t *hist, uint32_t *cell_start, size_t ncells, int nthr
             if (!pl_fluid_band_out((uint32_t)c, blo[u], blen[u], nc)) tot += hu[c];
     }
     part[t] = tot;
-#pragma omp barrier
-    /* hist[u][c] := first slot of (cell c, thread u), in (cell, thread) order */
+}
+
+/* Scan, second half (every part[] complete): hist[u][c] := the first slot
+ * of (cell c, part u), in (cell, part) order, for part t's block of cells. */
+static void prefix_slots(uint32_t *hist, uint32_t *cell_start, size_t ncells, int nthreads, int t,
+                         const uint32_t *part, const uint32_t *blo, const uint32_t *blen)
+{
+    size_t c0, c1;
+    pl_chunk(ncells, t, nthreads, &c0, &c1);
+    int rows[nthreads];
+    const int nr = rows_of_block(nthreads, ncells, c0, c1, blo, blen, rows);
+    const uint32_t nc = (uint32_t)ncells;
     uint32_t off = 0;
     for (int u = 0; u < t; ++u) off += part[u];
     for (size_t c = c0; c < c1; ++c) {
@@ -64,7 +85,6 @@ static void prefix(uint32_t *hist, uint32_t *cell_start, size_t ncells, int nthr
         }
     }
     if (t == nthreads - 1) cell_start[ncells] = off;
-#pragma omp barrier
 }
 
 /* The band of the next step for thread t's chunk [lo, hi) of the sorted
@@ -236,21 +256,31 @@ static void sort(pl_fluid_t *f, const pl_drift_t *drift, uint32_t *hist, uint32_
             f->bands.margin = m < f->bands.nz ? 2 * m : m;
         }
     }
-    /* One region: thread t scans its block of cells, then scatters the
+    /* One region: part t scans its block of cells, then scatters the
      * particle chunk pl_chunk(n, t) whose histogram row it filled, and sets
-     * its band of the next step. */
+     * its band of the next step.  Parts, not threads, between the barriers:
+     * a smaller team takes several each (omp_parts.h). */
+    const int recount_rows = whole && f->bands.threads == nthreads; /* the bands were in use: rows not whole */
 #pragma omp parallel num_threads(nthreads)
     {
-        const int t = omp_get_thread_num();
-        size_t lo, hi;
-        pl_chunk(f->n, t, nthreads, &lo, &hi);
-        if (whole && f->bands.threads == nthreads) { /* the bands were in use: rows not whole */
-            recount(f, drift, hist + (size_t)t * ncells, ncells, lo, hi);
+        if (recount_rows) {
+            PL_FOR_PART(t, nthreads) {
+                size_t lo, hi;
+                pl_chunk(f->n, t, nthreads, &lo, &hi);
+                recount(f, drift, hist + (size_t)t * ncells, ncells, lo, hi);
+            }
 #pragma omp barrier
         }
-        prefix(hist, cell_start, ncells, nthreads, t, part, blo, blen);
-        scatter(f, drift, hist + (size_t)t * ncells, lo, hi);
-        if (banded) next_band(&f->bands, cell_start, ncells, lo, hi, &f->bands.lo[t], &f->bands.len[t]);
+        PL_FOR_PART(t, nthreads) prefix_total(hist, ncells, nthreads, t, part, blo, blen);
+#pragma omp barrier
+        PL_FOR_PART(t, nthreads) prefix_slots(hist, cell_start, ncells, nthreads, t, part, blo, blen);
+#pragma omp barrier
+        PL_FOR_PART(t, nthreads) {
+            size_t lo, hi;
+            pl_chunk(f->n, t, nthreads, &lo, &hi);
+            scatter(f, drift, hist + (size_t)t * ncells, lo, hi);
+            if (banded) next_band(&f->bands, cell_start, ncells, lo, hi, &f->bands.lo[t], &f->bands.len[t]);
+        }
     }
     f->bands.threads = banded ? nthreads : 0;
     f->bands.overflow = 0;

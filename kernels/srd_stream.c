@@ -13,6 +13,7 @@
 #include <omp.h>
 #include <string.h>
 
+#include "omp_parts.h"
 #include "srd_drift.h"
 
 /* The cells thread t may count into (pl_fluid_bands_t): its band of its row. */
@@ -156,10 +157,10 @@ static void run(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params_t *p, 
     f->bands.z_periodic = g->walls[2] == PL_WALLS_NONE;
     /* One parallel region; thread t owns the static chunk pl_chunk(t) here and
      * in the scatter of the sort, so its histogram row matches its chunk.  It
-     * zeroes and counts only its band of the row (pl_fluid_bands_t). */
+     * zeroes and counts only its band of the row (pl_fluid_bands_t).  Part t
+     * rather than thread t where the team is smaller (omp_parts.h). */
 #pragma omp parallel num_threads(nthreads)
-    {
-        int t = omp_get_thread_num();
+    PL_FOR_PART(t, nthreads) {
         size_t lo, hi;
         pl_chunk(f->n, t, nthreads, &lo, &hi);
         uint32_t *h = hist + (size_t)t * g->ncells;

@@ -217,7 +217,12 @@ static int cmd_run(int argc, char **argv)
     }
     if (!scene_path) return bad_usage("run: missing SCENE");
     pl_err_t err = {0, ""};
+    const int asked = o.threads;
     if (pl_threads_resolve(o.threads, &o.threads, &err)) return fail(&err);
+    if (asked > o.threads) /* capped at OMP_THREAD_LIMIT: the same bits, fewer threads */
+        fprintf(stderr, "peloid: note: --threads %d: OMP_THREAD_LIMIT=%s allows %d; running %d (results do not "
+                        "depend on the count)\n",
+                asked, getenv("OMP_THREAD_LIMIT") ? getenv("OMP_THREAD_LIMIT") : "?", o.threads, o.threads);
     pl_scene_t *scene = malloc(sizeof *scene);
     int rc = scene ? pl_scene_load_coupling_true(scene_path, flags, PL_CALIBRATION_DIR, o.threads, stderr, scene, &err)
                    : PL_ERR_NOMEM;

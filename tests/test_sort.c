@@ -2,6 +2,7 @@
  * the result identical for 1, 2 and 3 threads (DESIGN.md "Data"). */
 #include <criterion/criterion.h>
 #include <math.h>
+#include <omp.h>
 #include <string.h>
 
 #include "peloid/rng.h"
@@ -194,4 +195,45 @@ Test(sort, narrow_bands_bitwise_and_recount)
         pl_free(start);
         pl_free(ref_start);
     }
+}
+
+/* A team smaller than the thread count the arrays were sized for
+ * (OMP_DYNAMIC, OMP_THREAD_LIMIT or a nested region give one): the stream,
+ * the banded sort and a recount after a thrown particle, 7 parts run by a
+ * team of one (the kernels called from one thread of an active outer
+ * region of two, nesting off), are bitwise the 1-thread result.  Each part is a chunk of
+ * particles and a histogram row; a kernel that took its team for its parts
+ * would leave 6 of 7 chunks unsorted (or overflow a row). */
+Test(sort, team_of_one_takes_every_part)
+{
+    omp_set_max_active_levels(1);
+    for (int walls = 0; walls <= 1; ++walls)
+        for (int thrown = 0; thrown <= 1; ++thrown) {
+            pl_fluid_t ref, f;
+            pl_grid_t g;
+            uint32_t *ref_start = pl_alloc((9 * 8 * 25 + 1) * sizeof(uint32_t), 1);
+            uint32_t *start = pl_alloc((9 * 8 * 25 + 1) * sizeof(uint32_t), 1);
+            bands_run(1, walls, &ref, ref_start, &g, thrown ? 25 : -1);
+            int team = 0;
+#pragma omp parallel num_threads(2)
+#pragma omp single
+            {
+                bands_run(7, walls, &f, start, &g, thrown ? 25 : -1);
+#pragma omp parallel num_threads(7)
+#pragma omp single
+                team = omp_get_num_threads();
+            }
+            cr_assert_eq(team, 1, "the kernels' team inside the outer region: %d", team);
+            cr_expect_eq(f.bands.recounts, (uint64_t)thrown, "walls %d thrown %d: %llu recounts", walls, thrown,
+                         (unsigned long long)f.bands.recounts);
+            cr_assert_eq(memcmp(start, ref_start, (g.ncells + 1) * sizeof *start), 0, "cell_start, walls %d", walls);
+            for (int d = 0; d < 3; ++d) {
+                cr_assert_eq(memcmp(f.r[d], ref.r[d], ref.n * sizeof(pl_real)), 0, "r, walls %d thrown %d", walls, thrown);
+                cr_assert_eq(memcmp(f.v[d], ref.v[d], ref.n * sizeof(pl_real)), 0, "v, walls %d thrown %d", walls, thrown);
+            }
+            pl_fluid_free(&f);
+            pl_fluid_free(&ref);
+            pl_free(start);
+            pl_free(ref_start);
+        }
 }
