@@ -161,6 +161,9 @@ int pl_colloid_read_init_file(const pl_scene_t *scene, pl_colloid_t *c, pl_err_t
 /* The path colloids.init_file is opened at: relative to the scene file's
  * directory unless absolute. */
 void pl_colloid_init_path(const pl_scene_t *scene, char *buf, size_t n);
+/* The path of colloids.table_file as the loader opens it (relative to the
+ * scene file's directory unless absolute). */
+void pl_colloid_table_path(const pl_scene_t *scene, char *buf, size_t n);
 
 /* Two initial colloids closer than (1 - colloids.max_overlap)(R_i + R_j)
  * found in O(N log N) (cubes of edge 2 (1 - max_overlap) R_min / sqrt 3):

@@ -27,11 +27,22 @@
 
 static const char *const col_name[4] = {"x", "y", "z", "R"};
 
-void pl_colloid_init_path(const pl_scene_t *scene, char *buf, size_t n)
+/* `f` as the loader opens it: relative to the scene file's directory. */
+static void scene_relative(const pl_scene_t *scene, const char *f, char *buf, size_t n)
 {
-    const char *f = scene->colloids.init_file, *slash = strrchr(scene->path, '/');
+    const char *slash = strrchr(scene->path, '/');
     int dl = f[0] != '/' && slash ? (int)(slash - scene->path) + 1 : 0;
     snprintf(buf, n, "%.*s%s", dl, scene->path, f);
+}
+
+void pl_colloid_init_path(const pl_scene_t *scene, char *buf, size_t n)
+{
+    scene_relative(scene, scene->colloids.init_file, buf, n);
+}
+
+void pl_colloid_table_path(const pl_scene_t *scene, char *buf, size_t n)
+{
+    scene_relative(scene, scene->colloids.table_file, buf, n);
 }
 
 typedef struct {

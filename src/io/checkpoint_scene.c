@@ -17,12 +17,16 @@
  * Not state either: colloids.init_file (the checkpoint holds the colloids'
  * positions and radii, and a run directory's scene.cfg names its own copy
  * of the file, colloids_init.txt): its line keeps its place with the value
- * "" and is not compared on restart (older checkpoints hold a path there). */
+ * "" and is not compared on restart (older checkpoints hold a path there).
+ * colloids.table_file is compared by the table's content (its name may
+ * differ: a run directory holds a copy, pair_table.txt). */
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "checkpoint_h5.h"
+#include "peloid/colloid.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
 
@@ -45,6 +49,27 @@ static const char *const not_physics[] = {
 };
 
 static int not_compared(const char *name) { return !strcmp(name, "colloids.init_file"); }
+
+/* colloids.table_file by its content, "fnv1a:HASH" of the file's bytes: a
+ * run directory's scene.cfg names its own copy (pair_table.txt), and a
+ * restart must see the same table, not the same name. */
+static void table_text(const pl_scene_t *scene, char *buf, size_t n)
+{
+    char path[4096];
+    pl_colloid_table_path(scene, path, sizeof path);
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(buf, n, "\"(unreadable)\"");
+        return;
+    }
+    uint64_t h = 0xcbf29ce484222325ULL;
+    int c;
+    while ((c = getc(f)) != EOF) h = (h ^ (uint64_t)(unsigned char)c) * 0x100000001b3ULL;
+    const int bad = ferror(f);
+    fclose(f);
+    if (bad) snprintf(buf, n, "\"(unreadable)\"");
+    else snprintf(buf, n, "\"fnv1a:%016llx\"", (unsigned long long)h);
+}
 
 static void full_name(const pl_section_t *sec, const pl_key_t *k, char *buf, size_t n)
 {
@@ -125,6 +150,7 @@ static char *keys_text(const pl_scene_t *scene, int (*keep)(const char *name))
             if (!keep(name) || ((all[j]->keys[i].flags & PL_KEY_FP_SET) && at_default(&all[j]->keys[i], scene)))
                 continue;
             if (not_compared(name)) snprintf(val, sizeof val, "\"\"");
+            else if (!strcmp(name, "colloids.table_file")) table_text(scene, val, sizeof val);
             else value_text(&all[j]->keys[i], scene, val, sizeof val);
             size_t need = strlen(name) + strlen(val) + 5;
             if (len + need >= cap) {

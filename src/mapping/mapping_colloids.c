@@ -63,7 +63,7 @@ static int given(const pl_scene_t *s, size_t off) { return pl_scene_line_of(s, o
 static int refuse(const pl_scene_t *s, pl_err_t *err, size_t off, const char *key, const char *from,
                   double given_v, double derived, const char *shown)
 {
-    if (!given(s, off) || fabs(given_v - derived) <= 1e-12 * fabs(derived)) return 0;
+    if (!given(s, off) || s->mapping.provisional || fabs(given_v - derived) <= 1e-12 * fabs(derived)) return 0;
     char v[64];
     if (shown) snprintf(v, sizeof v, "\"%s\"", shown);
     else snprintf(v, sizeof v, "%.6g", derived);
@@ -539,8 +539,8 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
         {OFF(colloids.dlvo.length_unit_m), "dlvo.length_unit", "physical.radius and coarse_graining.cell_size (a0)",
          m->a0, cs->dlvo.length_unit_m, NULL},
         {OFF(colloids.hertz.K), "hertz.K",
-         "physical.young_modulus + poisson_ratio, physical.hertz_constant or coarse_graining.hertz_K", K,
-         cs->hertz.K, NULL},
+         "physical.young_modulus + poisson_ratio, physical.hertz_constant or coarse_graining.hertz_K",
+         (mask & PL_CT_HERTZ) ? K : cs->hertz.K, cs->hertz.K, NULL}, /* without Hertz it acts on nothing (an echo prints it) */
         {OFF(colloids.lub.viscosity), "lubrication.viscosity", "physical.viscosity (model eta = gamma nu)", eta,
          cs->lub.viscosity, NULL},
         {OFF(coupling.method), "coupling.method", "coarse_graining.coupling", (double)method,

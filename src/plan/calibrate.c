@@ -478,8 +478,12 @@ int pl_calibrate(const pl_scene_t *sc, const char *shipped_dir, int nthreads, FI
 int pl_scene_load_coupling_true(const char *path, unsigned flags, const char *shipped_dir, int nthreads, FILE *log,
                                 pl_scene_t *scene, pl_err_t *err)
 {
-    int rc = pl_scene_load_flags(path, flags, scene, err);
-    if (rc || !pl_calibration_needed(scene)) return rc;
+    /* a first pass to plan the calibration (the time unit from theory), the
+     * final one with the measured diffusion; without a calibration the
+     * scene loads once more in full (derived keys compared) */
+    int rc = pl_scene_load_flags(path, flags | PL_SCENE_PROVISIONAL, scene, err);
+    if (rc || !scene->mapping.enabled) return rc;
+    if (!pl_calibration_needed(scene)) return pl_scene_load_flags(path, flags, scene, err);
     pl_mapping_calibration_t cal;
     if ((rc = pl_calibrate(scene, shipped_dir, nthreads > 0 ? nthreads : omp_get_max_threads(), log, &cal, err)))
         return rc;

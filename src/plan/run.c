@@ -212,23 +212,41 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
  * everything its scene.cfg needs, so that scene.cfg loads back (and a
  * restart from the directory works) wherever the original file went. */
 #define INIT_COPY "colloids_init.txt"
+#define TABLE_COPY "pair_table.txt" /* the same for colloids.table_file */
 
 static int uses_init_file(const pl_scene_t *sc) { return sc->colloids.count > 0 && sc->colloids.init == PL_CINIT_FILE; }
 
-/* scene.cfg: the effective scene, every key; with an init file, that file
- * copied as INIT_COPY and named by the echo's colloids.init_file. */
+/* scene.cfg: the effective scene, every key; with an init file or a pair
+ * table, the file copied as INIT_COPY or TABLE_COPY and named by the echo. */
 static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *err)
 {
     char path[PATH_MAX], tmp[PATH_MAX + 8];
-    pl_scene_t *echo = NULL;
+    pl_scene_t *echo = malloc(sizeof *echo);
+    if (!echo) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
+    *echo = *sc;
+    if (sc->mapping.enabled) { /* the choices the mapping made where the file left them open */
+        echo->mapping.cg.boundary = sc->mapping.map.cg.boundary;
+        echo->mapping.cg.enskog = sc->mapping.map.cg.enskog;
+    }
     if (uses_init_file(sc)) {
         char src[PATH_MAX];
         pl_colloid_init_path(sc, src, sizeof src);
         pl_path_join(path, sizeof path, w->dir, INIT_COPY);
-        if (pl_file_copy(src, path, err)) return err->code;
-        if (!(echo = malloc(sizeof *echo))) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
-        *echo = *sc;
+        if (pl_file_copy(src, path, err)) {
+            free(echo);
+            return err->code;
+        }
         snprintf(echo->colloids.init_file, sizeof echo->colloids.init_file, "%s", INIT_COPY);
+    }
+    if (sc->colloids.count > 0 && sc->colloids.table_file[0]) {
+        char src[PATH_MAX];
+        pl_colloid_table_path(sc, src, sizeof src);
+        pl_path_join(path, sizeof path, w->dir, TABLE_COPY);
+        if (pl_file_copy(src, path, err)) {
+            free(echo);
+            return err->code;
+        }
+        snprintf(echo->colloids.table_file, sizeof echo->colloids.table_file, "%s", TABLE_COPY);
     }
     pl_path_join(path, sizeof path, w->dir, "scene.cfg");
     FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
@@ -237,8 +255,10 @@ static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *e
         return PL_ERR_IO;
     }
     fprintf(f, "# effective scene of %s (every key, defaults filled in)\n", sc->path);
-    if (echo) fprintf(f, "# colloids.init_file: %s copied as " INIT_COPY "\n", sc->colloids.init_file);
-    pl_scene_print(echo ? echo : sc, f);
+    if (uses_init_file(sc)) fprintf(f, "# colloids.init_file: %s copied as " INIT_COPY "\n", sc->colloids.init_file);
+    if (sc->colloids.count > 0 && sc->colloids.table_file[0])
+        fprintf(f, "# colloids.table_file: %s copied as " TABLE_COPY "\n", sc->colloids.table_file);
+    pl_scene_print(echo, f);
     free(echo);
     errno = 0;
     if (fflush(f) || ferror(f) || fsync(fileno(f))) { /* name the system error */

@@ -335,7 +335,7 @@ static int default_name(pl_scene_t *scene, const char *label, pl_err_t *err)
     return 0;
 }
 
-static int load_text(const pl_scene_text_t *text, const char *label, const pl_mapping_calibration_t *calib,
+static int load_text(const pl_scene_text_t *text, const char *label, const pl_mapping_calibration_t *calib, unsigned flags,
                      pl_scene_t *scene, pl_err_t *err)
 {
     config_t cfg;
@@ -361,6 +361,7 @@ static int load_text(const pl_scene_text_t *text, const char *label, const pl_ma
         pl_scene_defaults(scene);
         snprintf(scene->path, sizeof scene->path, "%s", label);
         if (calib) scene->mapping.calib = *calib; /* the mapping (in validate) reads it */
+        scene->mapping.provisional = (flags & PL_SCENE_PROVISIONAL) != 0;
         for (int i = 1; i < text->nfiles && i < PL_SCENE_MAX_FILES; ++i)
             snprintf(scene->include_path[i - 1], sizeof scene->include_path[i - 1], "%s", text->files[i]);
         ctx_t c = {text, err};
@@ -378,7 +379,7 @@ int pl_scene_load_calibrated(const char *path, unsigned flags, const pl_mapping_
                           sizeof scene->path - 1);
     pl_scene_text_t text;
     int rc = pl_scene_text_read(&text, path, (flags & PL_SCENE_INCLUDE_ANYWHERE) != 0, err);
-    if (!rc) rc = load_text(&text, path, calib, scene, err);
+    if (!rc) rc = load_text(&text, path, calib, flags, scene, err);
     pl_scene_text_free(&text);
     return rc;
 }
@@ -397,7 +398,7 @@ int pl_scene_load_string(const char *text, const char *label, pl_scene_t *scene,
 {
     pl_scene_text_t t;
     int rc = pl_scene_text_string(&t, text, label, err);
-    if (!rc) rc = load_text(&t, label, NULL, scene, err);
+    if (!rc) rc = load_text(&t, label, NULL, 0, scene, err);
     pl_scene_text_free(&t);
     return rc;
 }

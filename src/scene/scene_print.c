@@ -109,6 +109,37 @@ static void print_value(FILE *f, const pl_key_t *k, const pl_scene_t *scene)
     }
 }
 
+/* A number inside the key's allowed range (every component of a triple). */
+static int in_range(const pl_key_t *k, double v)
+{
+    if (!(k->flags & PL_KEY_MIN_OPEN) ? v < k->min : v <= k->min) return 0;
+    if (!(k->flags & PL_KEY_MAX_OPEN) ? v > k->max : v >= k->max) return 0;
+    return 1;
+}
+
+static int value_loads(const pl_key_t *k, const pl_scene_t *scene)
+{
+    const char *base = (const char *)scene + k->offset;
+    switch (k->type) {
+    case PL_KEY_INT: return in_range(k, (double)*(const long long *)base);
+    case PL_KEY_REAL: return in_range(k, *(const double *)base);
+    case PL_KEY_INT3:
+        for (int d = 0; d < 3; ++d)
+            if (!in_range(k, ((const int *)base)[d])) return 0;
+        return 1;
+    case PL_KEY_REAL3:
+        for (int d = 0; d < 3; ++d)
+            if (!in_range(k, ((const double *)base)[d])) return 0;
+        return 1;
+    default: return 1;
+    }
+}
+
+/* Every key as `key = value;`.  A value outside the key's own range (a
+ * physical scene's mapping writes one where the key has no use, e.g.
+ * dlvo.kappa = 0 without DLVO, or derives a model value beyond what a file
+ * may give, e.g. a Hertz constant of 8e34) is written as a comment: the
+ * mapping derives it again when the echo loads, and the file still loads. */
 void pl_scene_print(const pl_scene_t *scene, void *file_ptr)
 {
     FILE *f = file_ptr;
@@ -123,9 +154,10 @@ void pl_scene_print(const pl_scene_t *scene, void *file_ptr)
         const char *indent = *sec->name ? "  " : "";
         if (*sec->name) fprintf(f, "%s: {\n", sec->name);
         for (size_t i = 0; i < sec->nkeys; ++i) {
-            fprintf(f, "%s%s = ", indent, sec->keys[i].name);
+            const int loads = value_loads(&sec->keys[i], scene);
+            fprintf(f, "%s%s%s = ", indent, loads ? "" : "# ", sec->keys[i].name);
             print_value(f, &sec->keys[i], scene);
-            fprintf(f, ";\n");
+            fprintf(f, loads ? ";\n" : ";  (outside the key's range: derived, not given)\n");
         }
         if (*sec->name) fprintf(f, "};\n");
     }
