@@ -38,7 +38,11 @@
  * file per parameter set (written atomically, under a lock so that
  * concurrent sweep points run it once), and read-only in the project's
  * calibration/ directory for the shipped scenes (`make calibrations`; not
- * read with PELOID_NO_SHIPPED_CALIBRATION set).  The
+ * read with PELOID_NO_SHIPPED_CALIBRATION set).  Entries are checked on
+ * reading (src/plan/calibration_cache.c): a bad shipped one is refused (a
+ * bug), a bad cached one recalibrated and overwritten; a cache that cannot
+ * store the result or a lock not released in time costs this run a
+ * calibration and a warning, never the run.  The
  * run is bitwise deterministic, so a cached and a fresh calibration agree
  * to the last bit (tests/calibration.sh). */
 #include <errno.h>
@@ -50,9 +54,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/file.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "peloid/colloid.h"
 #include "peloid/depletion.h"
@@ -62,7 +63,9 @@
 #include "peloid/sim.h"
 #include "peloid/srd_theory.h"
 
-enum { CAL_VERSION = 1, CAL_BLOCKS = 8, CAL_N2 = 32, CAL_NP = 8 };
+#include "calibration_cache.h"
+
+enum { CAL_BLOCKS = 8, CAL_N2 = 32, CAL_NP = 8 };
 /* coupling I since 2026-12-05 (8 colloids per box; the events of a step see the colloid velocities the
  * step found, src/coupling/coupling_stages.c), hashed into its keys only: the coupling II and potential
  * calibrations keep their keys, a cached coupling-I calibration of the drifting coupling is not read */
@@ -165,7 +168,7 @@ static uint64_t fnv(uint64_t h, const void *p, size_t n)
 static uint64_t cal_key(const pl_scene_t *c, const cal_plan_t *p)
 {
     uint64_t h = 1469598103934665603ull;
-    const int v = CAL_VERSION;
+    const int v = PL_CALCACHE_VERSION;
     h = fnv(h, &v, sizeof v);
     h = fnv(h, p, sizeof *p);
     h = fnv(h, &c->fluid, sizeof c->fluid);
@@ -318,89 +321,33 @@ static int cal_run(const pl_scene_t *sc, const cal_plan_t *p, int nthreads, pl_m
     return 0;
 }
 
-/* ---- the cache ------------------------------------------------------------ */
+/* ---- the cache (src/plan/calibration_cache.c) ---------------------------- */
 
-static const char *const FIELDS[] = {"d_inf", "d_inf_se", "d_box", "d_box_se", "hasimoto", "phi", "wall_s"};
-static double *field(pl_mapping_calibration_t *c, int k)
+/* What an entry of this parameter set must hold: cal_run's plan and derived numbers. */
+static void cal_expect(const pl_scene_t *sc, const cal_plan_t *p, pl_calcache_expect_t *e)
 {
-    double *f[] = {&c->d_inf, &c->d_inf_se, &c->d_box, &c->d_box_se, &c->hasimoto, &c->phi, &c->wall_s};
-    return f[k];
-}
-enum { NFIELDS = sizeof FIELDS / sizeof FIELDS[0] };
-
-static int cache_read(const char *path, pl_mapping_calibration_t *c)
-{
-    json_t *j = json_load_file(path, 0, NULL);
-    if (!j) return -1;
-    int ok = json_integer_value(json_object_get(j, "version")) == CAL_VERSION;
-    for (int k = 0; ok && k < NFIELDS; ++k) {
-        json_t *v = json_object_get(j, FIELDS[k]);
-        ok = json_is_number(v) && isfinite(json_number_value(v));
-        if (ok) *field(c, k) = json_number_value(v);
-    }
-    if (ok) {
-        c->n_colloids = (int)json_integer_value(json_object_get(j, "n_colloids"));
-        c->box = (int)json_integer_value(json_object_get(j, "box"));
-        c->steps = json_integer_value(json_object_get(j, "steps"));
-        json_t *f = json_object_get(j, "concentration"); /* only where it is not 1 (the potential coupling) */
-        c->concentration = json_is_number(f) ? json_number_value(f) : 1.0;
-        ok = c->d_inf > 0 && c->n_colloids > 0 && c->box > 0 && c->steps > 0;
-    }
-    json_decref(j);
-    return ok ? 0 : -1;
+    const double L = p->L;
+    e->kT = pl_scene_kT(sc);
+    e->d_theory = sc->mapping.map.d_col_theory;
+    e->hasimoto = e->kT * pl_srd_hasimoto_mobility(eta_of(sc), L);
+    e->phi = p->n * 4.0 / 3.0 * PL_PI * pow(sc->colloids.radius, 3) / (L * L * L);
+    e->concentration = 1.0 - pl_mapping_concentration_c(sc) * e->phi;
+    e->box = p->L;
+    e->n_colloids = p->n * p->replicas;
+    e->steps = p->steps;
 }
 
-static int cache_write(const char *path, const pl_mapping_calibration_t *c, const char *about, pl_err_t *err)
+/* The entry at path into *cal when it passes the checks (cal->cache names
+ * it, this run paid nothing); else the reader's result, with why. */
+static int from_cache(const char *path, const pl_calcache_expect_t *e, pl_mapping_calibration_t *cal, char *why,
+                      size_t nwhy)
 {
-    json_t *j = json_object();
-    int bad = !j || json_object_set_new(j, "version", json_integer(CAL_VERSION)) ||
-              json_object_set_new(j, "about", json_string(about));
-    pl_mapping_calibration_t cc = *c;
-    for (int k = 0; !bad && k < NFIELDS; ++k) bad = json_object_set_new(j, FIELDS[k], json_real(*field(&cc, k)));
-    bad = bad || json_object_set_new(j, "n_colloids", json_integer(c->n_colloids)) ||
-          json_object_set_new(j, "box", json_integer(c->box)) || json_object_set_new(j, "steps", json_integer(c->steps));
-    if (c->concentration != 1.0) bad = bad || json_object_set_new(j, "concentration", json_real(c->concentration));
-    char tmp[600];
-    pl_atomic_tmp(path, tmp, sizeof tmp);
-    if (!bad) bad = json_dump_file(j, tmp, JSON_INDENT(2) | JSON_REAL_PRECISION(17)) != 0;
-    json_decref(j);
-    if (bad) {
-        unlink(tmp);
-        return pl_err_set(err, PL_ERR_IO, "%s: cannot write the calibration", tmp);
-    }
-    return pl_atomic_commit(tmp, path, err);
-}
-
-/* mkdir -p; 0 or -1 */
-static int make_dirs(const char *dir)
-{
-    char b[512];
-    snprintf(b, sizeof b, "%s", dir);
-    for (char *s = b + 1; *s; ++s)
-        if (*s == '/') {
-            *s = '\0';
-            if (mkdir(b, 0755) && errno != EEXIST) return -1;
-            *s = '/';
-        }
-    return mkdir(b, 0755) && errno != EEXIST ? -1 : 0;
-}
-
-static void cache_dir(char *dir, size_t n)
-{
-    const char *e = getenv("PELOID_CACHE"), *x = getenv("XDG_CACHE_HOME"), *h = getenv("HOME");
-    if (e && *e) snprintf(dir, n, "%s", e);
-    else if (x && *x) snprintf(dir, n, "%s/peloid", x);
-    else snprintf(dir, n, "%s/.cache/peloid", h && *h ? h : "/tmp");
-}
-
-/* 1 with *cal read from path (and what it replaces), 0 when not there. */
-static int from_cache(const char *path, const pl_scene_t *sc, pl_mapping_calibration_t *cal)
-{
-    if (cache_read(path, cal)) return 0;
+    const int st = pl_calcache_read(path, e, cal, why, nwhy);
+    if (st != PL_CALCACHE_OK) return st;
     snprintf(cal->cache, sizeof cal->cache, "%s", path);
-    cal->wall_s = 0.0; /* this run paid nothing */
-    cal->d_theory = sc->mapping.map.d_col_theory;
-    return 1;
+    cal->wall_s = 0.0;
+    cal->d_theory = e->d_theory;
+    return st;
 }
 
 /* ---- the entry point -------------------------------------------------------- */
@@ -423,6 +370,9 @@ int pl_calibrate(const pl_scene_t *sc, const char *shipped_dir, int nthreads, FI
                  pl_err_t *err)
 {
     memset(cal, 0, sizeof *cal);
+    double timeout;
+    int rc = pl_calcache_lock_timeout(&timeout, err);
+    if (rc) return rc;
     cal_plan_t p;
     memset(&p, 0, sizeof p); /* hashed: no padding left undefined */
     if (cal_plan(sc, &p)) return pl_err_set(err, PL_ERR_INPUT, "calibration: the colloid has no mass or friction");
@@ -431,47 +381,69 @@ int pl_calibrate(const pl_scene_t *sc, const char *shipped_dir, int nthreads, FI
     cal_scene(sc, &p, 0, c);
     const uint64_t key = cal_key(c, &p);
     free(c);
-    cal->d_theory = sc->mapping.map.d_col_theory;
-    char name[64], path[600];
+    pl_calcache_expect_t e;
+    cal_expect(sc, &p, &e);
+    cal->d_theory = e.d_theory;
+    char name[64], path[600], why[600];
     snprintf(name, sizeof name, "calibration-%016llx.json", (unsigned long long)key);
     const char *no_shipped = getenv("PELOID_NO_SHIPPED_CALIBRATION"); /* make calibrations, tests */
-    if (shipped_dir && !(no_shipped && *no_shipped)) { /* the project's read-only set */
+    if (shipped_dir && !(no_shipped && *no_shipped)) { /* the project's read-only set: a bad entry is a bug */
         pl_path_join(path, sizeof path, shipped_dir, name);
-        if (from_cache(path, sc, cal)) return 0;
+        const int st = from_cache(path, &e, cal, why, sizeof why);
+        if (st == PL_CALCACHE_OK) return 0;
+        if (st == PL_CALCACHE_BAD)
+            return pl_err_set(err, PL_ERR_INTERNAL, "%s: %s: a corrupt shipped calibration (a bug: `make calibrations` "
+                              "remeasures it; PELOID_NO_SHIPPED_CALIBRATION=1 skips the shipped set)", path, why);
     }
+    /* The user's cache: a folder that cannot take the result, a bad entry or a
+     * lock that is not released cost this run a calibration, never the run. */
     char dir[512];
-    cache_dir(dir, sizeof dir);
-    const int have_dir = make_dirs(dir) == 0;
+    pl_calcache_dir(dir, sizeof dir);
     pl_path_join(path, sizeof path, dir, name);
-    int lock = -1;
-    if (have_dir) {
-        char lp[620];
-        snprintf(lp, sizeof lp, "%s.lock", path);
-        lock = open(lp, O_CREAT | O_RDWR, 0644);
-        if (lock >= 0) flock(lock, LOCK_EX); /* another process may be measuring the same */
-        if (from_cache(path, sc, cal)) {
-            if (lock >= 0) close(lock);
-            return 0;
+    int lock = -1, store = 0, st = PL_CALCACHE_ABSENT;
+    if (pl_calcache_dir_prepare(dir, why, sizeof why)) {
+        if (log)
+            fprintf(log, "peloid: warning: calibration cache %s: %s: this run calibrates without storing the result "
+                         "(set PELOID_CACHE to a writable folder to keep it)\n", dir, why);
+    } else if ((st = from_cache(path, &e, cal, why, sizeof why)) == PL_CALCACHE_OK) { /* entries appear whole */
+        return 0;
+    } else {
+        char lwhy[800];
+        const int lr = pl_calcache_lock(path, timeout, log, &lock, lwhy, sizeof lwhy);
+        if (lr == PL_CALCACHE_LOCKED) { /* another process may have measured it meanwhile */
+            if ((st = from_cache(path, &e, cal, why, sizeof why)) == PL_CALCACHE_OK) {
+                pl_calcache_unlock(lock);
+                return 0;
+            }
+            store = 1;
+        } else if (log) {
+            fprintf(log, "peloid: warning: calibration cache lock %s.lock: %s: this run calibrates without storing the "
+                         "result\n", path, lwhy);
         }
     }
+    if (st == PL_CALCACHE_BAD && log)
+        fprintf(log, "peloid: warning: calibration cache entry %s: %s: recalibrating%s\n", path, why,
+                store ? " and overwriting it" : "");
     if (log)
         fprintf(log, "peloid: calibrating the colloid diffusion of coupling %s at this resolution (once; cached "
                      "in %s): %d x %d colloid(s) in %d^3 cells, %lld steps\n",
-                cname(sc), have_dir ? dir : "nowhere: no cache directory",
-                p.replicas, p.n, p.L, p.steps);
-    int rc = cal_run(sc, &p, nthreads, cal, err);
-    cal->d_theory = sc->mapping.map.d_col_theory;
-    if (!rc && have_dir) {
+                cname(sc), store ? dir : "nowhere: see the warning above", p.replicas, p.n, p.L, p.steps);
+    rc = cal_run(sc, &p, nthreads, cal, err);
+    cal->d_theory = e.d_theory;
+    if (!rc && store) {
         char about[400];
         snprintf(about, sizeof about,
                  "peloid coupling-%s calibration: gamma %g, lambda %g, rule %d, alpha %g, radius %.17g a0, mass "
                  "density %.17g m_f/a0^3; D in a0^2/t0 at kT = 1 (src/plan/calibrate.c)",
                  cname(sc), sc->fluid.density, sc->srd.dt, sc->srd.rule,
                  sc->srd.alpha_deg, sc->colloids.radius, sc->colloids.mass_density);
-        rc = cache_write(path, cal, about, err);
-        if (!rc) snprintf(cal->cache, sizeof cal->cache, "%s", path);
+        if (pl_calcache_write(path, cal, about, why, sizeof why) == 0)
+            snprintf(cal->cache, sizeof cal->cache, "%s", path);
+        else if (log)
+            fprintf(log, "peloid: warning: calibration cache %s: cannot store the calibration: %s: used for this run "
+                         "only (set PELOID_CACHE to a writable folder to keep it)\n", dir, why);
     }
-    if (lock >= 0) close(lock);
+    pl_calcache_unlock(lock);
     return rc;
 }
 
