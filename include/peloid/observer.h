@@ -73,6 +73,12 @@ typedef struct pl_observer {
     const char *interval_key, *start_key;
     int at_start; /* samples the run's start state */
     long long need; /* fewest samples with a result */
+    /* 1: it measures pairs of colloids, so a scene with one colloid is
+     * refused at check (pl_observe_validate_scene) */
+    int pairs;
+    /* what keeps its estimates from a value when it sampled (the end-of-run
+     * warning, pl_observe_unmeasured; NULL: the samples alone) */
+    const char *none_why;
     /* its scene checks beyond one key's range (NULL: none); PL_ERR_INPUT
      * via pl_scene_fail (file:line:key) */
     int (*check)(const pl_scene_t *sc, pl_err_t *err);
@@ -106,6 +112,12 @@ typedef struct pl_observer {
 /* The rows, in the order of their stages, outputs and checkpoint items. */
 extern const pl_observer_t *const pl_observers[];
 extern const int pl_nobservers;
+
+/* Observer r (its state, on) with none of its estimates valid at the end
+ * of steps first..last: 1 and why (n bytes: its interval key, what it
+ * could not measure, row none_why), else 0 (src/observe/observe_span.c). */
+int pl_obs_unmeasured(const pl_observer_t *r, const void *state, long long first, long long last, char *why,
+                      size_t n);
 
 /* A checkpoint's /observe/meta error: "path: /observe/meta: why (corrupt
  * checkpoint)", PL_ERR_INPUT. */

@@ -36,6 +36,12 @@ void pl_colloid_init_path(const pl_scene_t *scene, char *buf, size_t n)
     snprintf(buf, n, "%.*s%s", dl, scene->path, f);
 }
 
+double pl_colloid_radius_min(const pl_scene_t *scene)
+{
+    const pl_scene_colloids_t *cs = &scene->colloids;
+    return cs->radius * (1.0 - sqrt(3.0) * (cs->init == PL_CINIT_FILE ? PL_INIT_POLY_MAX : cs->polydispersity));
+}
+
 typedef struct {
     const char *path;
     long line;
