@@ -315,8 +315,8 @@ static int read_table(const char *dir, pl_colloid_pair_params_t *p, pl_err_t *er
 }
 
 /* The LAMMPS words N, R, RSQ, FPRIME as words: FPRIME read and unused, R and
- * RSQ give the rows' r (a row 1e-7 off lands on the spacing); a comment of
- * any length is one line. */
+ * RSQ give the rows' r (a row 1e-7 off lands on the spacing); a keyword
+ * that starts like "inf" is a word; a comment of any length is one line. */
 Test(pair_table, lammps_words)
 {
     static const char *const ok[] = {
@@ -324,6 +324,7 @@ Test(pair_table, lammps_words)
         "TAB\nN 3 R 4.0 6.0 FPRIME -1 1\n1 4.0000004 0.33333333 0.16666667\n2 5.0 0.16666667 0.16666667\n"
         "3 6.0 0.0 0.16666667\n",
         "TAB\nN 3 RSQ 4.0 6.0\n1 4.0 0.33333333 0.16666667\n2 5.0990195 0.15016341 0.16666667\n3 6.0 0.0 0.16666667\n",
+        "INFLUENCE\nN 3\n1 4.0 0.33333333 0.16666667\n2 5.0 0.16666667 0.16666667\n3 6.0 0.0 0.16666667\n",
         NULL};
     for (int k = 0; ok[k]; ++k) {
         char dir[64];

@@ -173,7 +173,8 @@ static int param_line(const rd_t *rd, char **tok, int nt, lammps_t *lm)
         if (!number(tok[k + 1], &a) || !number(tok[k + 2], &b))
             return fail(rd, "%s \"%.40s %.40s\": not two finite numbers; %s", w, tok[k + 1], tok[k + 2],
                         param_allowed);
-        if (sp && !(a > 0.0 && b > a)) return fail(rd, "%s %g %g: allowed: 0 < lo < hi (the first and last r)", w, a, b);
+        if (sp && !(a > 0.0 && b > a))
+            return fail(rd, "%s %g %g: allowed: 0 < lo < hi (the first and last r)", w, a, b);
         if (sp) {
             lm->spacing = sp;
             lm->lo = a;
@@ -281,9 +282,10 @@ static int read_rows(const pl_scene_t *scene, const char *path, rows_t *t, pl_er
         buf[strcspn(buf, "#")] = '\0';
         const int nt = split(buf, tok, 8); /* the longest line: N n R lo hi FPRIME a b */
         if (!nt) continue;
-        /* a row starts like a number (inf and nan too, refused as such); anything else is a word */
-        const int row = strchr("+-.0123456789", tok[0][0]) || !strncasecmp(tok[0], "inf", 3) ||
-                        !strncasecmp(tok[0], "nan", 3);
+        /* a row starts like a number or is one (inf and nan too, refused as such); anything else is a word */
+        char *end;
+        (void)strtod(tok[0], &end);
+        const int row = strchr("+-.0123456789", tok[0][0]) || (end != tok[0] && !*end);
         rc = row ? row_line(&rd, tok, nt, t, &lm) : word_line(&rd, tok, nt, t, &lm);
     }
     if (!rc && ferror(fp)) rc = fail(&rd, "read failed");

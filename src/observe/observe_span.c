@@ -3,9 +3,10 @@
  * correlator too short for the lag its estimate reads (MSD and VACF
  * diffusion and the C_FF friction read lags up to T/4 of the sampled span T:
  * five samples give one such lag), a g(r) range that ends at or below
- * contact (the smallest radius an init file may give too), a VACF of colloids without inertial velocities (the Brownian
- * integrator draws a new velocity each step: its VACF is a delta and its
- * Green-Kubo D is the step's, not the colloid's).  Without these checks the
+ * contact (the smallest radius an init file may give too), a VACF of
+ * colloids without inertial velocities (the Brownian integrator draws a new
+ * velocity each step: its VACF is a delta and its Green-Kubo D is the
+ * step's, not the colloid's).  Without these checks the
  * observable is absent or meaningless and the run still exits 0.
  *
  * The observers (peloid/observer.h rows: their interval and start keys,
