@@ -11,7 +11,13 @@
 #  - 400 steps == 200 + restart + 200, bitwise (observables.h5, summary.json
 #    values, checkpoint);
 #  - stop.observable = "steinhardt_Q6" is a choice (generated from the
-#    observers' estimates); a wrong name is refused (exit 2) with the list.
+#    observers' estimates); a wrong name is refused (exit 2) with the list;
+#  - a run in which no pair ever comes within range (8 colloids at rest on
+#    a lattice of spacing 8, steinhardt_rmax = rdf_rmax = 3) ends with exit
+#    0, one stderr warning per observer naming its interval key, and
+#    summary.json "observables" "not_measured" naming both, without
+#    steinhardt_* or rdf_peak (the cut-offs below contact and one colloid
+#    are refused at check: tests/bad_scenes/steinhardt_*.cfg).
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 PY=/usr/bin/python3
@@ -82,5 +88,24 @@ if "$PELOID" run stop.cfg --out stop 2> /dev/null &&
    [ $rc -eq 2 ] && [ ! -e wrong ] && grep -q 'stop.observable.*"steinhardt_Q8".*allowed: .*"steinhardt_Q6"' wrong.err
 then ok "stop.observable: steinhardt_Q6 a choice; a wrong name refused: $(head -c 160 wrong.err)..."
 else bad "stop.observable: rc $rc $(cat wrong.err)"; fi
+cat > none.cfg <<'CFG'
+name = "none";
+steps = 40;
+box: { cells = [16, 16, 16]; };
+fluid: { density = 0.0; };
+srd: { dt = 0.1; };
+colloids: { count = 8; radius = 1.0; temperature = 0.0; init = "lattice"; pairs = ""; };
+observe: { steinhardt_interval = 5; steinhardt_rmax = 3.0; rdf_interval = 5; rdf_rmax = 3.0; };
+CFG
+"$PELOID" run none.cfg --out none 2> none.err; rc=$?
+if [ $rc -eq 0 ] && [ "$(grep -c '^peloid: warning: observe\.\(steinhardt\|rdf\)_interval: .* measured nothing' none.err)" -eq 2 ] &&
+   $PY - <<'PY'
+import json
+s = json.load(open("none/summary.json"))["observables"]
+assert set(s["not_measured"]) == {"observe.steinhardt_interval", "observe.rdf_interval"}, s
+assert not [k for k in s if k.startswith("steinhardt_") or k == "rdf_peak"], s
+PY
+then ok "no pair ever in range: exit 0, warned, summary.json not_measured: $(grep -o 'Steinhardt observer.*' none.err | head -c 150)..."
+else bad "no pair ever in range: rc $rc $(head -c 600 none.err)"; fi
 echo "steinhardt.sh: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -3,9 +3,10 @@
 # colloids, 300 steps, ~0.05 s a point) runs and is collected into
 # sweep.{tsv,json,png}; a re-run skips the finished points; a point whose
 # value trips a guard at run time fails alone and is recorded with its exit
-# code and message; an invalid override, an unknown key and an empty grid are
-# refused before anything is written (exit 2, one line naming file:line and
-# key); --point K runs exactly point K; --slurm writes the job array; the
+# code and message; an invalid override, an unknown key, an empty grid and
+# a plot.y that no observer writes or a point does not measure are refused
+# before anything is written (exit 2, one line naming file:line and key);
+# --point K runs exactly point K; --slurm writes the job array; the
 # throughput plan (OUT/plan.json, the log line, sweep.json "plan", the
 # threads column) is within the sweep's cores, its jobs' CPU sets disjoint,
 # --jobs/--threads override it, and each point's results are bitwise the
@@ -133,6 +134,19 @@ refuse sweepname 'scene = "bd.cfg"; out = "out/sweepname";
 grid = ( { key = "name"; values = ["a", "b"]; } );' \
   "sweepname.cfg:2: key 'grid.\[0\]': \"name\" names the run, it is not swept.*allowed: "
 refuse badstudy 'scene = "bd.cfg"; out = "out/badstudy"; gird = ( );' "badstudy.cfg:1: key 'gird': unknown study key"
+refuse ploty_unknown 'scene = "bd.cfg"; out = "out/ploty_unknown";
+grid = ( { key = "seed"; values = [1, 2]; } );
+plot = { x = "seed"; y = ["colloid_D", "colloid_DD"]; };' \
+  "ploty_unknown.cfg:3: key 'plot.y': \"colloid_DD\" is no observer's summary.json observable; allowed: .*\"colloid_D\".*\"steinhardt_Q6\".*\"fluid_viscosity\""
+refuse ploty_unmeasured 'scene = "bd.cfg"; out = "out/ploty_unmeasured";
+grid = ( { key = "seed"; values = [1, 2]; } );
+plot = { x = "seed";
+  y = "rdf_peak"; };' \
+  "ploty_unmeasured.cfg:4: key 'plot.y': point 0: \"rdf_peak\" is measured by the g(r) observer, which is off (observe.rdf_interval = 0); allowed: what the scene measures: \"colloid_D\"$"
+refuse ploty_point 'scene = "bd.cfg"; out = "out/ploty_point";
+grid = ( { key = "observe.sq_interval"; values = [10, 0]; } );
+plot = { x = "observe.sq_interval"; y = ["colloid_D", "sq_peak"]; };' \
+  "ploty_point.cfg:3: key 'plot.y': point 1: \"sq_peak\" is measured by the S(q) observer, which is off (observe.sq_interval = 0)"
 
 # 5. --point K runs exactly point K (what a Slurm array task runs)
 sed 's#out/grid#out/one#' grid.cfg > one.cfg

@@ -20,6 +20,7 @@
 #include <omp.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "colloid_test_util.h"
@@ -278,4 +279,120 @@ Test(pair_table, md_matches_analytic, .timeout = 60)
     cr_expect(dx <= 1.25 * est, "positions differ by %.3g a0, more than 1.25 x %.3g", dx, est);
     pl_colloid_free(a);
     pl_colloid_free(b);
+}
+
+/* ---- the reader (read_rows, check_force) ---- */
+
+/* Writes text to dir/table.txt in a fresh directory (into dir). */
+static void write_text(const char *text, char *dir)
+{
+    strcpy(dir, "/tmp/peloid_table_XXXXXX");
+    cr_assert(mkdtemp(dir));
+    char path[96];
+    snprintf(path, sizeof path, "%s/table.txt", dir);
+    FILE *f = fopen(path, "w");
+    cr_assert(f);
+    fputs(text, f);
+    fclose(f);
+}
+
+/* The table term of dir/table.txt (the scene's load reads it too): 0, or
+ * the error (in err). */
+static int read_table(const char *dir, pl_colloid_pair_params_t *p, pl_err_t *err)
+{
+    char body[512], cfg[96];
+    snprintf(cfg, sizeof cfg, "%s/test.cfg", dir);
+    snprintf(body, sizeof body,
+             "box: { cells = [24, 24, 24]; }; fluid: { density = 0.0; };\n"
+             "colloids: { count = 8; radius = 2.0; pairs = \"table\"; table_file = \"table.txt\"; };\n");
+    pl_scene_t *s = malloc(sizeof *s);
+    cr_assert(s);
+    int rc = pl_scene_load_string(body, cfg, s, err);
+    pl_colloid_dlvo_info_t info;
+    if (!rc) rc = pl_colloid_pair_params(s, p, &info, err);
+    free(s);
+    return rc;
+}
+
+/* The LAMMPS words N, R, RSQ, FPRIME as words: FPRIME read and unused, R and
+ * RSQ give the rows' r (a row 1e-7 off lands on the spacing); a keyword
+ * that starts like "inf" is a word; a comment of any length is one line. */
+Test(pair_table, lammps_words)
+{
+    static const char *const ok[] = {
+        "TAB\nN 3 FPRIME 0.0 0.0\n\n1 4.0 0.33333333 0.16666667\n2 5.0 0.16666667 0.16666667\n3 6.0 0.0 0.16666667\n",
+        "TAB\nN 3 R 4.0 6.0 FPRIME -1 1\n1 4.0000004 0.33333333 0.16666667\n2 5.0 0.16666667 0.16666667\n"
+        "3 6.0 0.0 0.16666667\n",
+        "TAB\nN 3 RSQ 4.0 6.0\n1 4.0 0.33333333 0.16666667\n2 5.0990195 0.15016341 0.16666667\n3 6.0 0.0 0.16666667\n",
+        "INFLUENCE\nN 3\n1 4.0 0.33333333 0.16666667\n2 5.0 0.16666667 0.16666667\n3 6.0 0.0 0.16666667\n",
+        NULL};
+    for (int k = 0; ok[k]; ++k) {
+        char dir[64];
+        write_text(ok[k], dir);
+        pl_colloid_pair_params_t p;
+        pl_err_t err = {0, ""};
+        int rc = read_table(dir, &p, &err);
+        remove_table(dir);
+        cr_expect_eq(rc, 0, "table %d refused: %s", k, err.msg);
+        if (!rc) cr_expect(p.tab_r0 == 4.0 && p.tab_rc == 6.0, "table %d: r from %.17g to %.17g", k, p.tab_r0, p.tab_rc);
+    }
+    char *text = malloc(20000);
+    cr_assert(text);
+    strcpy(text, "# ");
+    for (int k = 0; k < 1000; ++k) strcat(text, "comment ");
+    strcat(text, "\n4.0 0.3333333333 0.1666666667\n5.0 0.1666666667 0.1666666667  # and another\n"
+                 "6.0 0.0 0.1666666667\n");
+    char dir[64];
+    write_text(text, dir);
+    free(text);
+    pl_colloid_pair_params_t p;
+    pl_err_t err = {0, ""};
+    cr_expect_eq(read_table(dir, &p, &err), 0, "a long comment: %s", err.msg);
+    remove_table(dir);
+}
+
+/* What the reader refuses, each naming the key and what is allowed: a pipe
+ * (without waiting for a writer), a file over 16 MiB (sparse), BITMAP, an R
+ * spacing the rows do not follow, a force that alternates around -dU/dr. */
+Test(pair_table, reader_refuses, .timeout = 20)
+{
+    char dir[64], path[96];
+    pl_colloid_pair_params_t p;
+    strcpy(dir, "/tmp/peloid_table_XXXXXX");
+    cr_assert(mkdtemp(dir));
+    snprintf(path, sizeof path, "%s/table.txt", dir);
+    cr_assert_eq(mkfifo(path, 0600), 0);
+    pl_err_t err = {0, ""};
+    cr_expect(read_table(dir, &p, &err) == PL_ERR_INPUT && strstr(err.msg, "colloids.table_file") &&
+                  strstr(err.msg, "pipe") && strstr(err.msg, "allowed: a regular file"),
+              "a pipe: %s", err.msg);
+    unlink(path);
+    FILE *f = fopen(path, "w");
+    cr_assert(f);
+    fputs("4.0 0.3333333333 0.1666666667\n5.0 0.1666666667 0.1666666667\n6.0 0.0 0.1666666667\n", f);
+    fclose(f);
+    cr_assert_eq(truncate(path, (16 << 20) + 1), 0);
+    cr_expect(read_table(dir, &p, &err) == PL_ERR_INPUT && strstr(err.msg, "has 16777217 bytes") &&
+                  strstr(err.msg, "at most 16777216"),
+              "16 MiB + 1: %s", err.msg);
+    remove_table(dir);
+    static const struct {
+        const char *text, *want;
+    } bad[] = {
+        {"TAB\nN 3 BITMAP 2 4\n1 4 0.3 0.1\n2 5 0.2 0.1\n3 6 0 0.1\n", "BITMAP"},
+        {"TAB\nN 3 R 4.0 7.0\n1 4 0.3 0.1\n2 5 0.2 0.1\n3 6 0 0.1\n", "R 4 7 puts row 2 at 5.5"},
+        {"TAB\nN 3 R 4.0\n1 4 0.3 0.1\n2 5 0.2 0.1\n3 6 0 0.1\n", "R needs two numbers"},
+        {"N 3\n4 0.3 0.1\n5 0.2 0.1\n6 0 0.1\n", "without a keyword line"},
+        {"TAB\n1 4 0.3 0.1\n2 5 0.2 0.1\n3 6 0 0.1\n", "right after the keyword line"},
+        {"TAB\nN 3\n1 4 0.3 0.1\n3 5 0.2 0.1\n3 6 0 0.1\n", "index 3; allowed: 2"},
+        {"4.0 0 -50\n4.05 0 50\n4.1 0 -50\n4.15 0 50\n4.2 0 -50\n", "F misses by 1 of max|F| = 50"},
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k) {
+        write_text(bad[k].text, dir);
+        pl_err_clear(&err);
+        int rc = read_table(dir, &p, &err);
+        remove_table(dir);
+        cr_expect(rc == PL_ERR_INPUT && strstr(err.msg, bad[k].want) && strstr(err.msg, "allowed"),
+                  "table %zu: want \"%s\", got rc %d: %s", k, bad[k].want, rc, err.msg);
+    }
 }

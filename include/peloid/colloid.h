@@ -164,6 +164,10 @@ void pl_colloid_init_path(const pl_scene_t *scene, char *buf, size_t n);
 /* The path of colloids.table_file as the loader opens it (relative to the
  * scene file's directory unless absolute). */
 void pl_colloid_table_path(const pl_scene_t *scene, char *buf, size_t n);
+/* The smallest radius a colloid of the scene can have: colloids.radius
+ * (1 - sqrt(3) colloids.polydispersity), or with init = "file" the least
+ * radius the file may give (src/colloid/colloid_init_file.c). */
+double pl_colloid_radius_min(const pl_scene_t *scene);
 
 /* Two initial colloids closer than (1 - colloids.max_overlap)(R_i + R_j)
  * found in O(N log N) (cubes of edge 2 (1 - max_overlap) R_min / sqrt 3):

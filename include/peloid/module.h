@@ -65,4 +65,12 @@ extern const pl_module_t pl_stress_module;  /* src/observe/stress_module.c */
  * (stop.observable); 0 when it has none yet (src/observe/observe_module.c). */
 int pl_observe_estimate(const pl_sim_t *sim, const char *name, double *value, double *se);
 
+/* The k-th observer of the run (k = 0, 1, ...) that ended with none of its
+ * estimates valid: 1 and why (n bytes: the observer, its interval key, the
+ * estimates missing from summary.json and what keeps them from a value), or
+ * 0 when there are fewer than k + 1 (src/observe/observe_module.c).  The
+ * observe module lists them in summary.json "observables" "not_measured";
+ * the run warns of each at its end. */
+int pl_observe_unmeasured(const pl_sim_t *sim, int k, char *why, size_t n);
+
 #endif

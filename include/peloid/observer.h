@@ -73,6 +73,12 @@ typedef struct pl_observer {
     const char *interval_key, *start_key;
     int at_start; /* samples the run's start state */
     long long need; /* fewest samples with a result */
+    /* 1: it measures pairs of colloids, so a scene with one colloid is
+     * refused at check (pl_observe_validate_scene) */
+    int pairs;
+    /* what keeps its estimates from a value when it sampled (the end-of-run
+     * warning, pl_observe_unmeasured; NULL: the samples alone) */
+    const char *none_why;
     /* its scene checks beyond one key's range (NULL: none); PL_ERR_INPUT
      * via pl_scene_fail (file:line:key) */
     int (*check)(const pl_scene_t *sc, pl_err_t *err);
@@ -101,11 +107,33 @@ typedef struct pl_observer {
     void (*free)(void *state);
     const pl_obs_estimate_t *estimates;
     int nestimates;
+    /* its summary.json "observables" entries with a value that are not
+     * estimates (NULL-terminated; NULL: none): its summary writes them
+     * under these names, and a study's plot.y may name them */
+    const char *const *entries;
 } pl_observer_t;
 
 /* The rows, in the order of their stages, outputs and checkpoint items. */
 extern const pl_observer_t *const pl_observers[];
 extern const int pl_nobservers;
+
+/* The summary.json "observables" entries with a value of the fluid stress
+ * module (src/observe/stress_output.c writes them), no row of the table:
+ * on with observe.stress_interval (NULL-terminated). */
+extern const char *const pl_stress_entries[];
+
+/* Whether scene sc measures the summary.json "observables" entry `name`
+ * (an estimate or entry of a row, or a stress entry): 0, or PL_ERR_INPUT
+ * and why (n bytes, "...; allowed: ..." with the names sc measures), when
+ * no observer writes it or its observer is off in sc.  sc NULL: whether
+ * any observer writes it (allowed: every name).  src/observe/observe_names.c */
+int pl_observe_named(const pl_scene_t *sc, const char *name, char *why, size_t n);
+
+/* Observer r (its state, on) with none of its estimates valid at the end
+ * of steps first..last: 1 and why (n bytes: its interval key, what it
+ * could not measure, row none_why), else 0 (src/observe/observe_span.c). */
+int pl_obs_unmeasured(const pl_observer_t *r, const void *state, long long first, long long last, char *why,
+                      size_t n);
 
 /* A checkpoint's /observe/meta error: "path: /observe/meta: why (corrupt
  * checkpoint)", PL_ERR_INPUT. */

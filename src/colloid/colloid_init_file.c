@@ -9,9 +9,10 @@
  * inside).  A radius lies within the spread colloids.polydispersity can give
  * at its largest (R0 (1 +- sqrt(3) 0.25), R0 = colloids.radius) and its pair
  * cut-off within half a periodic edge (minimum image).  Any other content is
- * one error line "FILE:LINE: column N (name): value 'TOKEN': allowed: ...". */
+ * one error line "FILE:LINE: column N (name): value 'TOKEN': allowed: ...".
+ * Anything but a regular file (a directory, a device such as /dev/zero, a
+ * pipe) is refused before it is read, naming the key and the path. */
 #define _POSIX_C_SOURCE 200809L
-#include <errno.h>
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
@@ -19,6 +20,7 @@
 #include <string.h>
 
 #include "peloid/colloid.h"
+#include "peloid/input_file.h"
 
 #define OFF(m) offsetof(pl_scene_t, m)
 
@@ -43,6 +45,12 @@ void pl_colloid_init_path(const pl_scene_t *scene, char *buf, size_t n)
 void pl_colloid_table_path(const pl_scene_t *scene, char *buf, size_t n)
 {
     scene_relative(scene, scene->colloids.table_file, buf, n);
+}
+
+double pl_colloid_radius_min(const pl_scene_t *scene)
+{
+    const pl_scene_colloids_t *cs = &scene->colloids;
+    return cs->radius * (1.0 - sqrt(3.0) * (cs->init == PL_CINIT_FILE ? PL_INIT_POLY_MAX : cs->polydispersity));
 }
 
 typedef struct {
@@ -169,10 +177,11 @@ int pl_colloid_read_init_file(const pl_scene_t *scene, pl_colloid_t *c, pl_err_t
 {
     char path[PATH_MAX];
     pl_colloid_init_path(scene, path, sizeof path);
-    FILE *f = fopen(path, "r");
+    char why[160];
+    FILE *f = pl_input_open(path, 0, why, sizeof why);
     if (!f)
-        return pl_scene_fail(scene, err, OFF(colloids.init_file), "colloids.init_file", "cannot open \"%s\": %s",
-                             path, strerror(errno));
+        return pl_scene_fail(scene, err, OFF(colloids.init_file), "colloids.init_file",
+                             "\"%s\": %s; allowed: a regular file, one colloid per line", path, why);
     reader_t r = {.path = path, .line = 0, .err = err};
     char *line = NULL, *tok[5] = {NULL}, rtok[64] = "";
     size_t cap = 0, i = 0;

@@ -249,6 +249,9 @@ static int friction(const pl_mtobs_t *cff, double kT, double *xi, double *se, do
     return integral(cff, *t1, 3.0 * kT, xi, se);
 }
 
+const char *const pl_mtobs_vacf_entries[] = {"colloid_D_green_kubo", NULL};
+const char *const pl_mtobs_cff_entries[] = {"colloid_friction_green_kubo", NULL};
+
 void pl_mtobs_summary(pl_json_t *b, json_t *all, const pl_mtobs_t *m, const pl_sim_t *sim)
 {
     if (!m->c || pl_mtau_samples(m->c) < 8 || m->which == PL_MTOBS_MSD) return;
@@ -264,7 +267,7 @@ void pl_mtobs_summary(pl_json_t *b, json_t *all, const pl_mtobs_t *m, const pl_s
     if (m->which == PL_MTOBS_VACF) {
         pl_json_real(b, e, "wall_s", m->wall);
         pl_json_str(b, e, "unit", "a0^2/t0");
-        pl_json_set(b, all, "colloid_D_green_kubo", e);
+        pl_json_set(b, all, pl_mtobs_vacf_entries[0], e);
         return;
     }
     pl_json_real(b, e, "force_variance", f2);
@@ -273,5 +276,5 @@ void pl_mtobs_summary(pl_json_t *b, json_t *all, const pl_mtobs_t *m, const pl_s
     pl_json_str(b, e, "unit", "m_f/t0");
     pl_json_str(b, e, "definition", "(1/3kT) int_0^t1 <F(0).F(t)> dt, F the fluid force averaged over each "
                                     "collision step, t1 the first zero of C_FF");
-    pl_json_set(b, all, "colloid_friction_green_kubo", e);
+    pl_json_set(b, all, pl_mtobs_cff_entries[0], e);
 }

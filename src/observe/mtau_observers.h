@@ -64,5 +64,7 @@ int pl_mtobs_diffusion(const pl_mtobs_t *msd, double *D, double *se, double *tmi
 /* summary.json's colloid_D_green_kubo (VACF) or colloid_friction_green_kubo
  * (C_FF) in `all`, when the correlator has enough samples. */
 void pl_mtobs_summary(pl_json_t *b, json_t *all, const pl_mtobs_t *m, const pl_sim_t *sim);
+/* their names (the VACF's and C_FF's rows' entries, NULL-terminated) */
+extern const char *const pl_mtobs_vacf_entries[], *const pl_mtobs_cff_entries[];
 
 #endif

@@ -141,11 +141,12 @@ const pl_observer_t pl_observer_msd = {
 const pl_observer_t pl_observer_vacf = {
     .name = "VACF", .stage = "observe-vacf", .interval = OFFS(vacf_interval), .start = OFFS(vacf_start),
     .interval_key = "observe.vacf_interval", .start_key = "observe.vacf_start", .at_start = 1, .need = 5,
-    .create = create_vacf, .summary = gk_summary, .meta_slot = 3, COMMON,
+    .create = create_vacf, .summary = gk_summary, .meta_slot = 3, .entries = pl_mtobs_vacf_entries, COMMON,
 };
 
 const pl_observer_t pl_observer_cff = {
     .name = "C_FF", .stage = "observe-cff", .interval = OFFS(cff_interval), .start = OFFS(cff_start),
     .interval_key = "observe.cff_interval", .start_key = "observe.cff_start", .at_start = 0, .need = 5,
-    .check = cff_check, .create = create_cff, .summary = gk_summary, .meta_slot = 4, COMMON,
+    .check = cff_check, .create = create_cff, .summary = gk_summary, .meta_slot = 4,
+    .entries = pl_mtobs_cff_entries, COMMON,
 };

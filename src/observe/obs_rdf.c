@@ -175,7 +175,8 @@ static int sample(pl_obs_run_t *run, void *state, pl_err_t *err)
     return 0;
 }
 
-/* The bin of the highest g(r) (the first coordination shell) and its SE. */
+/* The bin of the highest g(r) (the first coordination shell) and its SE;
+ * none before 2 samples or when no pair fell within range (g = 0). */
 static int rdf_peak_of(const pl_rdf_t *rdf, size_t nb, double *r, double *g, double *se)
 {
     if (!rdf || pl_rdf_samples(rdf) < 2) return 0;
@@ -190,7 +191,7 @@ static int rdf_peak_of(const pl_rdf_t *rdf, size_t nb, double *r, double *g, dou
     *g = gg[best];
     *se = ss[best];
     free(rm);
-    return isfinite(*g) && isfinite(*se);
+    return isfinite(*g) && isfinite(*se) && *g > 0.0;
 }
 
 static void est_peak(const void *state, pl_obs_point_t *p)
@@ -373,7 +374,8 @@ static const pl_obs_estimate_t estimates[] = {{"rdf_peak", 1, est_peak, NULL}};
 const pl_observer_t pl_observer_rdf = {
     .name = "g(r)", .stage = "observe-rdf",
     .interval = offsetof(pl_scene_observe_t, rdf_interval), .start = offsetof(pl_scene_observe_t, rdf_start),
-    .interval_key = "observe.rdf_interval", .start_key = "observe.rdf_start", .at_start = 1, .need = 1,
+    .interval_key = "observe.rdf_interval", .start_key = "observe.rdf_start", .at_start = 1, .need = 1, .pairs = 1,
+    .none_why = "fewer than 2 samples, or no pair of colloids within observe.rdf_rmax at any",
     .check = check, .create = create, .sample = sample, .write = obs_write, .summary = summary,
     .meta_slot = 5, .nmeta = 2, .ckpt_meta = ckpt_meta, .ckpt_write = ckpt_write, .ckpt_read = ckpt_read,
     .free = obs_free, .estimates = estimates, .nestimates = 1,

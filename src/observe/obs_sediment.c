@@ -272,4 +272,5 @@ const pl_observer_t pl_observer_sediment = {
     .create = create, .sample = sample, .write = obs_write, .summary = summary,
     .meta_slot = 11, .nmeta = 2, .ckpt_meta = ckpt_meta, .ckpt_head = ckpt_head, .ckpt_write = ckpt_write,
     .ckpt_read = ckpt_read, .resume = resume, .free = obs_free, .estimates = estimates, .nestimates = 1,
+    .entries = pl_sediment_entries,
 };

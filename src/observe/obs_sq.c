@@ -108,6 +108,8 @@ static int obs_write(int64_t obs, const pl_sim_t *sim, void *state)
     return bad ? -1 : 0;
 }
 
+static const char *const entries[] = {"sq_peak", NULL}; /* the row's entries */
+
 /* sq_peak: the highest bin of S(q). */
 static int summary(pl_obs_sum_t *s, const pl_sim_t *sim, void *state)
 {
@@ -131,7 +133,7 @@ static int summary(pl_obs_sum_t *s, const pl_sim_t *sim, void *state)
         pl_json_int(b, e, "wave_vectors", (long long)pl_sq_vectors(o->sq));
         pl_json_real(b, e, "wall_s", s->wall);
         pl_json_str(b, e, "unit", "1");
-        pl_json_set(b, s->all, "sq_peak", e);
+        pl_json_set(b, s->all, entries[0], e);
     }
     free(buf);
     return 0;
@@ -174,4 +176,5 @@ const pl_observer_t pl_observer_sq = {
     .check = check, .create = create, .sample = sample, .write = obs_write, .summary = summary,
     .meta_slot = 7, .nmeta = 1, .ckpt_meta = ckpt_meta, .ckpt_write = ckpt_write, .ckpt_read = ckpt_read,
     .free = obs_free,
+    .entries = entries,
 };

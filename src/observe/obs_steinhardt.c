@@ -118,6 +118,13 @@ static int check(const pl_scene_t *sc, pl_err_t *err)
         return pl_scene_fail(sc, err, OFFO(steinhardt_rmax), "observe.steinhardt_rmax",
                              "%g a0 is beyond half the periodic box edge; allowed: <= %g a0 (minimum image)",
                              o->steinhardt_rmax, half);
+    const double contact = 2.0 * pl_colloid_radius_min(sc); /* the closest two colloids can be without overlap */
+    if (o->steinhardt_rmax <= contact)
+        return pl_scene_fail(sc, err, OFFO(steinhardt_rmax), "observe.steinhardt_rmax",
+                             "%g a0 is at or below contact (2 x the smallest radius, %g a0): no two colloids are "
+                             "neighbours, so Q4 and Q6 would have no bond; allowed: > %g a0 (e.g. the first "
+                             "minimum of g(r)) and <= %g a0",
+                             o->steinhardt_rmax, contact, contact, half);
     return 0;
 }
 
@@ -253,7 +260,8 @@ const pl_observer_t pl_observer_steinhardt = {
     .name = "Steinhardt", .stage = "observe-steinhardt",
     .interval = offsetof(pl_scene_observe_t, steinhardt_interval),
     .start = offsetof(pl_scene_observe_t, steinhardt_start), .interval_key = "observe.steinhardt_interval",
-    .start_key = "observe.steinhardt_start", .at_start = 1, .need = 2,
+    .start_key = "observe.steinhardt_start", .at_start = 1, .need = 2, .pairs = 1,
+    .none_why = "fewer than 2 samples with two colloids closer than observe.steinhardt_rmax",
     .check = check, .create = create, .sample = sample, .write = obs_write, .summary = summary,
     .meta_slot = -1, .ckpt_write = ckpt_write, .ckpt_read = ckpt_read, .free = obs_free,
     .estimates = estimates, .nestimates = NV,

@@ -4,7 +4,9 @@
  * the observers the scene switches on, adds one after-step stage per
  * observer, opens observables.h5 (H5MD /observables) once and lets each row
  * write its groups, collects the rows' summary.json "observables" entries,
- * and keeps the checkpoint group /observe.
+ * and keeps the checkpoint group /observe.  An observer that ends with none
+ * of its estimates valid is listed in summary.json "observables"
+ * "not_measured" (its interval key: why) and the run warns of it.
  *
  * Error against run time: at 1/8, 1/4, 1/2 and all of the run the current
  * estimate and SE of every row's estimates are recorded with the wall time
@@ -121,6 +123,20 @@ int pl_observe_estimate(const pl_sim_t *sim, const char *name, double *value, do
     return p.valid;
 }
 
+/* Row k on, with none of its estimates valid: why (n bytes). */
+static int row_unmeasured(const pl_sim_t *sim, int k, char *why, size_t n)
+{
+    const pl_observe_t *o = sim->observe;
+    return o && o->st[k] && pl_obs_unmeasured(ROW(k), o->st[k], o->run.first, sim->step, why, n);
+}
+
+int pl_observe_unmeasured(const pl_sim_t *sim, int k, char *why, size_t n)
+{
+    for (int r = 0; r < NOBS; ++r)
+        if (row_unmeasured(sim, r, why, n) && k-- == 0) return 1;
+    return 0;
+}
+
 /* ---- scene checks ------------------------------------------------------ */
 
 static int stop_check(const pl_scene_t *sc, pl_err_t *err)
@@ -154,10 +170,11 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
 {
     for (int k = 0; k < NOBS; ++k) {
         const long long iv = row_interval(sc, k);
-        if (iv > 0 && sc->colloids.count == 0)
+        if (iv > 0 && sc->colloids.count < (ROW(k)->pairs ? 2 : 1))
             return pl_scene_fail(sc, err, offsetof(pl_scene_t, observe) + ROW(k)->interval, ROW(k)->interval_key,
-                                 "%lld: the observer needs colloids (colloids.count = 0); allowed: 0 without colloids",
-                                 iv);
+                                 "%lld: the %s observer needs %s (colloids.count = %lld); allowed: 0 with fewer "
+                                 "than %d colloids", iv, ROW(k)->name, ROW(k)->pairs ? "pairs of colloids" : "colloids",
+                                 sc->colloids.count, ROW(k)->pairs ? 2 : 1);
     }
     int rc = stop_check(sc, err);
     for (int k = 0; !rc && k < NOBS; ++k)
@@ -341,6 +358,13 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
         pl_obs_sum_t s = {&b, all, o->wall[k], sim->scene.observe.target_rel_error,
                           o->ept[o->est0[k]]};
         if ((rc = ROW(k)->summary(&s, sim, o->st[k]))) return rc;
+    }
+    json_t *none = NULL; /* "not_measured": {interval key: why} */
+    for (int k = 0; !b.failed && k < NOBS; ++k) {
+        char why[600];
+        if (!row_unmeasured(sim, k, why, sizeof why)) continue;
+        if (!none) pl_json_set(&b, all, "not_measured", none = json_object());
+        pl_json_str(&b, none, ROW(k)->interval_key, why);
     }
     return b.failed ? err->code : 0;
 }

@@ -3,20 +3,26 @@
  * correlator too short for the lag its estimate reads (MSD and VACF
  * diffusion and the C_FF friction read lags up to T/4 of the sampled span T:
  * five samples give one such lag), a g(r) range that ends at or below
- * contact, a VACF of colloids without inertial velocities (the Brownian
- * integrator draws a new velocity each step: its VACF is a delta and its
- * Green-Kubo D is the step's, not the colloid's).  Without these checks the
+ * contact (the smallest radius an init file may give too), a VACF of
+ * colloids without inertial velocities (the Brownian integrator draws a new
+ * velocity each step: its VACF is a delta and its Green-Kubo D is the
+ * step's, not the colloid's).  Without these checks the
  * observable is absent or meaningless and the run still exits 0.
  *
  * The observers (peloid/observer.h rows: their interval and start keys,
  * whether they sample the start state, the samples they need) take their
  * samples at the multiples of their interval from
  * their start on (at step 0 too, except C_FF, whose force is an average
- * over a collision step), to the last step. */
+ * over a collision step), to the last step.
+ *
+ * At the end of a run, pl_obs_unmeasured names an observer that sampled
+ * and still has no estimate (summary.json "not_measured", a warning). */
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 
+#include "observables_out.h" /* pl_obs_point_t */
+#include "peloid/colloid.h"
 #include "peloid/observe_scene.h"
 #include "peloid/observer.h"
 #include "peloid/scene.h"
@@ -75,13 +81,30 @@ int pl_observe_validate_measurable(const pl_scene_t *sc, pl_err_t *err)
                              "step, not the colloid; allowed: 0 (observe.msd_interval gives D)",
                              o->vacf_interval);
     if (o->rdf_interval > 0 && o->rdf_rmax > 0) {
-        /* the closest pair: two of the smallest radii the scene can draw */
-        const double rmin = sc->colloids.radius * (1.0 - sqrt(3.0) * sc->colloids.polydispersity);
-        if (sc->colloids.init != PL_CINIT_FILE && o->rdf_rmax <= 2.0 * rmin)
+        /* the closest pair: two of the smallest radii the scene can draw or read */
+        const double rmin = pl_colloid_radius_min(sc);
+        if (o->rdf_rmax <= 2.0 * rmin)
             return pl_scene_fail(sc, err, OFFS(rdf_rmax), "observe.rdf_rmax",
                                  "%g a0 is at or below contact (2 x the smallest radius, %g a0): g(r) would count "
                                  "no pair; allowed: 0 (half the box) or > %g a0",
                                  o->rdf_rmax, 2.0 * rmin, 2.0 * rmin);
     }
     return 0;
+}
+
+int pl_obs_unmeasured(const pl_observer_t *r, const void *state, long long first, long long last, char *why, size_t n)
+{
+    if (!r->nestimates) return 0;
+    char names[400] = "";
+    for (int j = 0, len = 0; j < r->nestimates; ++j) {
+        pl_obs_point_t p = {0};
+        r->estimates[j].get(state, &p);
+        if (p.valid) return 0;
+        if (len < (int)sizeof names)
+            len += snprintf(names + len, sizeof names - (size_t)len, "%s%s", j ? ", " : "", r->estimates[j].name);
+    }
+    snprintf(why, n, "%s: the %s observer measured nothing in steps %lld..%lld (%s): no %s in summary.json",
+             r->interval_key, r->name, first, last, r->none_why ? r->none_why : "too few samples with a result",
+             names);
+    return 1;
 }

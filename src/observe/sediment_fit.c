@@ -98,6 +98,8 @@ static void references(const pl_scene_t *sc, double *v_stokes, double *phi)
     *phi = (double)c->count * vol / ((double)n[0] * n[1] * n[2]);
 }
 
+const char *const pl_sediment_entries[] = {"initial_settling_velocity", NULL};
+
 void pl_sediment_summary(pl_json_t *b, json_t *all, const pl_scene_t *sc, const double *v, const long long *step,
                          size_t n)
 {
@@ -140,5 +142,5 @@ void pl_sediment_summary(pl_json_t *b, json_t *all, const pl_scene_t *sc, const 
         pl_json_real_or_null(b, e, "stokes_m_per_s", vs * to_si);
         pl_json_real_or_null(b, e, "richardson_zaki_4.65_m_per_s", vs * pow(1.0 - phi, 4.65) * to_si);
     }
-    pl_json_set(b, all, "initial_settling_velocity", e);
+    pl_json_set(b, all, pl_sediment_entries[0], e);
 }

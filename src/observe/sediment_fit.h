@@ -26,5 +26,7 @@ int pl_sediment_initial(const double *v, size_t n, pl_sediment_fit_t *out);
 struct pl_scene;
 void pl_sediment_summary(pl_json_t *b, struct json_t *all, const struct pl_scene *sc, const double *v,
                          const long long *step, size_t n);
+/* its name (the sedimentation row's entries, NULL-terminated) */
+extern const char *const pl_sediment_entries[];
 
 #endif

@@ -12,6 +12,7 @@
 #include "observables_si.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
+#include "peloid/observer.h"
 #include "peloid/real.h"
 #include "peloid/srd_theory.h"
 #include "stress_priv.h"
@@ -190,6 +191,9 @@ static json_t *viscosity_entry(pl_json_t *b, const pl_stress_t *o, const pl_sim_
     return e;
 }
 
+/* summary.json names: [0] Couette, [1] Green-Kubo viscosity, [2] pressure */
+const char *const pl_stress_entries[] = {"couette_viscosity", "fluid_viscosity", "fluid_pressure", NULL};
+
 int pl_stress_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
 {
     pl_stress_t *o = sim->stress;
@@ -224,12 +228,12 @@ int pl_stress_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
         pl_json_str(&b, q, "unit", "1/t0");
         pl_json_set(&b, e, "shear_rate", q);
         pl_json_real(&b, e, "apparent_value", r.mean * (double)o->nlayers / o->du);
-        pl_json_set(&b, all, "couette_viscosity", e);
+        pl_json_set(&b, all, pl_stress_entries[0], e);
     }
     if (!o->couette && pl_stress_eta_estimate(o, &v, &se, &r)) {
         json_t *e = viscosity_entry(&b, o, sim, v, se, &r, th.eta);
         pl_json_int(&b, e, "green_kubo_lags", o->K);
-        pl_json_set(&b, all, "fluid_viscosity", e);
+        pl_json_set(&b, all, pl_stress_entries[1], e);
     }
     if (o->pressure.n >= 2) {
         pl_blocking_result_t p = pl_blocking_result(&o->pressure);
@@ -241,7 +245,7 @@ int pl_stress_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
         pl_json_set(&b, e, "plateau", json_boolean(p.plateau));
         pl_json_str(&b, e, "unit", "kT/a0^3");
         pl_json_real(&b, e, "ideal_gas", (o->N - 1.0) * o->kT / o->V);
-        pl_json_set(&b, all, "fluid_pressure", e);
+        pl_json_set(&b, all, pl_stress_entries[2], e);
     }
     return b.failed ? err->code : 0;
 }

@@ -492,6 +492,9 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         list_outputs(pg, w.dir);
         if (sim->stop_requested && !w.interrupted)
             pl_progress_note(pg, "stopped at step %lld: %s", sim->step, sim->stop_reason);
+        char why[600];
+        for (int k = 0; pl_observe_unmeasured(sim, k, why, sizeof why); ++k) /* summary.json "not_measured" too */
+            pl_progress_note(pg, "warning: %s", why);
         pl_progress_finish(pg, sim->step);
     }
     if (!rc && w.interrupted)

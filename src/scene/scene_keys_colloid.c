@@ -43,7 +43,8 @@ static const pl_key_t colloid_keys[] = {
      "-", "pairs \"table\": text file of U(r) (in the scene file's directory) in model units "
           "(r in a0, U in kT_ref, F = -dU/dr in kT_ref/a0): rows \"r U F\" or \"r U\" "
           "(F then -dU/dr of a cubic spline of U), or one LAMMPS pair_style table section (keyword "
-          "line, \"N n\" line, rows \"i r U F\"); # comments; r strictly increasing; "
+          "line, \"N n [R lo hi | RSQ lo hi] [FPRIME fplo fphi]\" line, rows \"i r U F\"); # comments; "
+          "a regular file of at most 16 MiB; r strictly increasing; "
           "cut-off = the last r (give U = 0 there for a continuous energy); below the first r the "
           "force of the first row; model-unit scenes only (README \"Colloids, couplings and physical units\")"},
     {"table_interpolation", PL_KEY_CHOICE, OFF(table_interpolation), 0, 0, PL_KEY_FP_SET, table_interps,
@@ -55,7 +56,9 @@ static const pl_key_t colloid_keys[] = {
      0.02, NULL,
      "-", "pairs \"table\" with an F column: between any two neighbouring rows, the largest "
           "abs(U_i - U_i+1 - (r_i+1 - r_i) (F_i + F_i+1)/2) / (r_i+1 - r_i) allowed, relative to the "
-          "largest abs(F) (the trapezoid rule for the work of F); a file beyond it is refused"},
+          "largest abs(F) (the trapezoid rule for the work of F), and at every row abs(F_i + dU/dr) "
+          "(the slope of the parabola through the row and its neighbours) within 2 x this x max abs(F) "
+          "(4 x at the first and last row); a file beyond either is refused"},
     {"integrator", PL_KEY_CHOICE, OFF(integrator), 0, 0, 0, integ_choices, PL_CINT_VERLET, NULL,
      "-", "verlet: velocity Verlet + quaternions (Hecht Eqs. 7-10); brownian: overdamped "
           "Langevin with Stokes friction (reference for colloid-only scenes)"},

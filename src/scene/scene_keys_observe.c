@@ -20,7 +20,7 @@ static const pl_key_t observe_keys[] = {
     {"rdf_bins", PL_KEY_INT, OFF(rdf_bins), 1, 1e6, 0, NULL, 200, NULL, "-", "g(r) bins over [0, rdf_rmax)"},
     {"rdf_rmax", PL_KEY_REAL, OFF(rdf_rmax), 0, 1e6, 0, NULL, 0, NULL, "a0",
      "largest distance of g(r) (0: half the shortest periodic box edge, or the box edge with walls on all "
-     "axes but z)"},
+     "axes but z); else above contact (2 x the smallest radius)"},
     {"rdf_size_classes", PL_KEY_INT, OFF(rdf_size_classes), 0, 16, 0, NULL, 0, NULL, "-",
      "partial g_ab(r) of size classes (0: off; k in 2..16): the colloids ranked by radius (ties by index) and "
      "cut into k classes of equal count, class floor(rank k / N); every class pair a <= b, normalised by its "
@@ -93,7 +93,7 @@ static const pl_key_t observe_keys[] = {
      "collision steps", "first step the Steinhardt order samples"},
     {"steinhardt_rmax", PL_KEY_REAL, OFF(steinhardt_rmax), 0, 1e6, PL_KEY_FP_SET, NULL, 0, NULL, "a0",
      "neighbour cut-off of the Steinhardt order (needed with steinhardt_interval > 0; e.g. the first minimum "
-     "of g(r)), at most half the periodic box edge"},
+     "of g(r)), above contact (2 x the smallest radius) and at most half the periodic box edge"},
     {"stress_interval", PL_KEY_INT, OFF(stress_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "fluid stress (momentum flux) tensor, kinetic + collisional parts, accumulated every step and written "
      "as its mean over every this many steps (0: off); the shear viscosity from the Green-Kubo sum of the "

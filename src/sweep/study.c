@@ -271,6 +271,7 @@ static int read_study(pl_study_t *st, pl_err_t *err)
     if (!rc) rc = pl_study_check_unique(st, err);
     config_setting_t *plot = config_setting_get_member(root, "plot");
     if (!rc && plot) rc = read_plot(st, plot, err);
+    if (!rc && plot) rc = pl_study_check_plot(st, NULL, -1, err);
     return rc;
 }
 
@@ -415,6 +416,7 @@ int pl_study_check_points(pl_study_t *st, const char *out_dir, pl_sweep_cost_t *
         if (!rc) rc = pl_run_check(scene, err);
         if (!rc && cost) pl_sweep_point_cost(scene, &cost[k]);
         free(text);
+        if (!rc && (rc = pl_study_check_plot(st, scene, k, err))) break; /* names its own line */
         if (rc) { /* name the study line of the values, the point, then the loader's line */
             char vals[512] = "", v[128], inner[1024];
             int line = st->ax[0].line, fl;

@@ -2,10 +2,15 @@
  * point twice.  A grid value given twice on one axis, or two equal rows of
  * points{}, would run the same scene twice under two ids (twice the cost,
  * and a table whose rows look like independent samples); the study is
- * refused at load instead, naming the file, line, key and values. */
+ * refused at load instead, naming the file, line, key and values.  And
+ * every plot.y an observable that each point measures: a name no observer
+ * writes is refused at load, one whose observer a point leaves off when the
+ * points are checked (the names from the observer table,
+ * pl_observe_named), so that a plot is never silently empty. */
 #include <stdlib.h>
 #include <string.h>
 
+#include "peloid/observer.h"
 #include "study_priv.h"
 
 typedef struct {
@@ -81,4 +86,22 @@ static int rows_unique(const pl_study_t *st, pl_err_t *err)
 int pl_study_check_unique(const pl_study_t *st, pl_err_t *err)
 {
     return st->rows ? rows_unique(st, err) : grid_unique(st, err);
+}
+
+int pl_study_check_plot(const pl_study_t *st, const pl_scene_t *scene, int k, pl_err_t *err)
+{
+    const config_setting_t *y = st->plot ? config_setting_get_member(st->plot, "y") : NULL;
+    if (!y) return 0;
+    const int array = config_setting_type(y) == CONFIG_TYPE_ARRAY;
+    for (int i = 0; i < (array ? config_setting_length(y) : 1); ++i) {
+        const config_setting_t *v = array ? config_setting_get_elem(y, (unsigned)i) : y;
+        const char *name = config_setting_get_string(v);
+        char why[800], what[900];
+        if (!name) return pl_study_fail_at(st, v, err, "plot.y", "expected an observable name (a string)");
+        if (!pl_observe_named(scene, name, why, sizeof why)) continue;
+        if (k < 0) snprintf(what, sizeof what, "%s", why);
+        else snprintf(what, sizeof what, "point %d: %s", k, why);
+        return pl_study_fail_at(st, v, err, "plot.y", what);
+    }
+    return 0;
 }

@@ -6,6 +6,7 @@
 #include <libconfig.h>
 #include <stdio.h>
 
+#include "peloid/scene.h"
 #include "peloid/sweep.h"
 #include "scene_text.h"
 
@@ -37,6 +38,11 @@ const config_setting_t *pl_study_value_of(const pl_study_t *st, int k, int a);
 /* Refuses a study that would run a point twice: a grid value given twice
  * on one axis, or two equal rows of points{}. */
 int pl_study_check_unique(const pl_study_t *st, pl_err_t *err);
+
+/* Refuses a plot.y that names no observable (scene NULL, at load) or one
+ * that point k's scene does not measure, naming the study's line of the
+ * name, plot.y and the names allowed. */
+int pl_study_check_plot(const pl_study_t *st, const pl_scene_t *scene, int k, pl_err_t *err);
 
 /* Writes the settings of group g as libconfig text, indented by depth
  * (study_text.c; text: where integer literals were read, or NULL). */
