@@ -288,7 +288,7 @@ typedef struct {
 
 typedef struct {
     int enabled;                   /* the scene has a physical{} section */
-    int provisional;               /* PL_SCENE_PROVISIONAL: derived keys not compared with the file */
+    int provisional;               /* PL_SCENE_PROVISIONAL: time-unit keys not compared with the file */
     pl_scene_physical_t physical;
     pl_scene_cg_t cg;
     double kappa;                  /* 1/m, given or Debye-Hueckel */

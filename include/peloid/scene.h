@@ -215,9 +215,10 @@ int pl_scene_load(const char *path, pl_scene_t *scene, pl_err_t *err);
 /* Same, with PL_SCENE_* flags: PL_SCENE_INCLUDE_ANYWHERE lets @include name
  * files outside the scene's directory tree (--allow-include-anywhere). */
 /* PL_SCENE_PROVISIONAL: a first pass whose time unit a calibration will
- * replace (pl_scene_load_coupling_true): the model values the mapping
- * derives are not yet final, so a file's values of derived keys (an echoed
- * scene.cfg writes them) are compared in the final pass only. */
+ * replace (pl_scene_load_coupling_true): the derived keys that depend on
+ * the time unit (MD step counts, model gravity) are not yet final, so a
+ * file's values of them (an echoed scene.cfg writes them) are compared in
+ * the final pass only; every other key is checked before calibrating. */
 enum { PL_SCENE_INCLUDE_ANYWHERE = 1u, PL_SCENE_PROVISIONAL = 2u };
 int pl_scene_load_flags(const char *path, unsigned flags, pl_scene_t *scene, pl_err_t *err);
 

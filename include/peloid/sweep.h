@@ -36,6 +36,10 @@ const char *pl_study_axis_key(const pl_study_t *study, int axis);
  * keys set, as libconfig text (malloc'd, the caller frees); `name` becomes
  * the scene's name (a study cannot sweep `name`). */
 int pl_study_point_scene(pl_study_t *study, int k, const char *name, char **text, pl_err_t *err);
+/* Copies the files the point last set by pl_study_point_scene reads
+ * (colloids.init_file, colloids.table_file: relative to the base scene's
+ * folder) into scenes_dir, beside its scene. */
+int pl_study_point_files(const pl_study_t *study, const char *scenes_dir, pl_err_t *err);
 
 /* Value of axis `axis` at point k as scene text (e.g. "1.4e+08", "\"II\""). */
 int pl_study_point_value(const pl_study_t *study, int k, int axis, char *buf, size_t n);

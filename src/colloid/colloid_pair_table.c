@@ -398,9 +398,7 @@ int pl_colloid_term_setup_tab(const pl_scene_t *scene, pl_colloid_pair_params_t 
         return pl_scene_fail(scene, err, OFF(colloids.pairs), "colloids.pairs",
                              "the table pair term needs colloids.table_file");
     char path[640];
-    const char *slash = strrchr(scene->path, '/');
-    int dl = cs->table_file[0] != '/' && slash ? (int)(slash - scene->path) + 1 : 0;
-    snprintf(path, sizeof path, "%.*s%s", dl, scene->path, cs->table_file);
+    pl_colloid_table_path(scene, path, sizeof path);
     rows_t t = {0};
     int rc = read_rows(scene, path, &t, err);
     if (!rc) rc = check_force(scene, path, &t, err);

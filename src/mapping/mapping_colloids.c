@@ -60,10 +60,20 @@ static int given(const pl_scene_t *s, size_t off) { return pl_scene_line_of(s, o
 
 /* A derived key in the file: refused unless it carries the derived value
  * itself (an echoed effective scene reloads). */
+/* The derived keys whose model value depends on the time unit t0, which a
+ * calibration replaces after a provisional first pass (PL_SCENE_PROVISIONAL):
+ * the MD step counts and the model gravity g t0^2 / a0. */
+static int time_unit_key(size_t off)
+{
+    return off == OFF(colloids.substeps) || off == OFF(colloids.min_substeps) || off == OFF(colloids.slow_interval) ||
+           off == OFF(colloids.gravity);
+}
+
 static int refuse(const pl_scene_t *s, pl_err_t *err, size_t off, const char *key, const char *from,
                   double given_v, double derived, const char *shown)
 {
-    if (!given(s, off) || s->mapping.provisional || fabs(given_v - derived) <= 1e-12 * fabs(derived)) return 0;
+    if (!given(s, off) || fabs(given_v - derived) <= 1e-12 * fabs(derived)) return 0;
+    if (s->mapping.provisional && time_unit_key(off)) return 0; /* the calibrated pass compares it */
     char v[64];
     if (shown) snprintf(v, sizeof v, "\"%s\"", shown);
     else snprintf(v, sizeof v, "%.6g", derived);

@@ -30,8 +30,7 @@ static size_t section_given(const pl_scene_t *s, const pl_section_t *sec)
 static int forbid(const pl_scene_t *s, pl_err_t *err, size_t off, const char *key, double derived,
                   double given)
 {
-    if (pl_scene_line_of(s, off) <= 0 || s->mapping.provisional || fabs(given - derived) <= 1e-12 * fabs(derived))
-        return 0;
+    if (pl_scene_line_of(s, off) <= 0 || fabs(given - derived) <= 1e-12 * fabs(derived)) return 0;
     return pl_scene_fail(s, err, off, key,
                          "is derived from physical{} by the unit mapping (value %g); remove it here "
                          "or remove the physical section",

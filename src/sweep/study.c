@@ -17,11 +17,13 @@
  * scene loader then checks it like any scene.  Grid points run with the last
  * key fastest. */
 #include <ctype.h>
+#include <limits.h>
 #include <libconfig.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "peloid/io.h"
 #include "peloid/run.h"
 #include "peloid/scene.h"
 #include "peloid/sweep.h"
@@ -368,6 +370,52 @@ static int set_key(config_setting_t *root, const char *sec, const char *leaf, co
     return copy_value(g, leaf, v);
 }
 
+/* The files a scene reads, named relative to its folder (their keys allow
+ * no '/'): a point's scene lives in OUT/scenes/, where the sweep copies
+ * them from the base scene's folder (pl_study_point_files). */
+static const char *const file_keys[] = {"init_file", "table_file"};
+
+/* The point's value of colloids.<file_keys[i]> in the base tree as set for
+ * the present point ("" when unset or not a string). */
+static const char *file_key(const pl_study_t *st, size_t i)
+{
+    config_setting_t *c = config_setting_get_member(config_root_setting(&st->bcfg), "colloids");
+    config_setting_t *f = c && config_setting_type(c) == CONFIG_TYPE_GROUP ? config_setting_get_member(c, file_keys[i])
+                                                                            : NULL;
+    const char *v = f && config_setting_type(f) == CONFIG_TYPE_STRING ? config_setting_get_string(f) : NULL;
+    return v ? v : "";
+}
+
+static int point_reads_files(const pl_study_t *st)
+{
+    for (size_t i = 0; i < sizeof file_keys / sizeof file_keys[0]; ++i)
+        if (*file_key(st, i)) return 1;
+    return 0;
+}
+
+/* Where a point's scene is checked before anything is written: OUT/scenes/
+ * ID.cfg, or, when it reads files, beside the base scene (where they are). */
+static void check_label(const pl_study_t *st, const char *out_dir, const char *id, char *buf, size_t n)
+{
+    const char *slash = strrchr(st->base, '/');
+    if (point_reads_files(st)) snprintf(buf, n, "%.*s%s.cfg", slash ? (int)(slash - st->base + 1) : 0, st->base, id);
+    else snprintf(buf, n, "%s/scenes/%s.cfg", out_dir, id);
+}
+
+int pl_study_point_files(const pl_study_t *st, const char *scenes_dir, pl_err_t *err)
+{
+    const char *slash = strrchr(st->base, '/');
+    for (size_t i = 0; i < sizeof file_keys / sizeof file_keys[0]; ++i) {
+        const char *v = file_key(st, i);
+        if (!*v || strchr(v, '/')) continue; /* (a '/' is refused by the scene check) */
+        char src[PATH_MAX], dst[PATH_MAX];
+        snprintf(src, sizeof src, "%.*s%s", slash ? (int)(slash - st->base + 1) : 0, st->base, v);
+        snprintf(dst, sizeof dst, "%s/%s", scenes_dir, v);
+        if (pl_file_copy(src, dst, err)) return err->code;
+    }
+    return 0;
+}
+
 int pl_study_point_scene(pl_study_t *st, int k, const char *name, char **text, pl_err_t *err)
 {
     config_setting_t *root = config_root_setting(&st->bcfg);
@@ -410,8 +458,8 @@ int pl_study_check_points(pl_study_t *st, const char *out_dir, pl_sweep_cost_t *
         char *text = NULL, label[1024], name[160], id[32];
         pl_study_point_id(st, k, id, sizeof id);
         snprintf(name, sizeof name, "%s-%s", st->name, id);
-        snprintf(label, sizeof label, "%s/scenes/%s.cfg", out_dir, id);
         if ((rc = pl_study_point_scene(st, k, name, &text, err))) break;
+        check_label(st, out_dir, id, label, sizeof label);
         rc = pl_scene_load_string(text, label, scene, err);
         if (!rc) rc = pl_run_check(scene, err);
         if (!rc && cost) pl_sweep_point_cost(scene, &cost[k]);

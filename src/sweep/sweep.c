@@ -243,6 +243,11 @@ static int prepare_point(const sweep_t *s, int k, int *done, long long *left, pl
     *done = same && summary_complete(sum);
     *left = same && !*done ? steps_left(sum, ck, text) : -1;
     if (!same) rc = write_text(path, text, err);
+    if (!rc) { /* the files it reads beside it */
+        char dir[4096];
+        point_path(s, k, "scenes", dir, sizeof dir);
+        rc = pl_study_point_files(s->st, dir, err);
+    }
     free(text);
     if (!rc && *done) { /* its summary is the proof: a failure recorded before (its status) is past */
         point_path(s, k, "status/%s.tsv", path, sizeof path);
