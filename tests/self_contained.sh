@@ -9,6 +9,8 @@
 #    run folder and named by its scene.cfg, which loads from a copy of the
 #    folder elsewhere after the originals are gone, and restarts from it
 #    (10 == 5 + restart + 5); a changed table is refused on restart.
+#  - Resume in place refuses (exit 2, one line, nothing changed) when an
+#    output it appends to is missing: colloids.h5, colloids.xyz, thermo.tsv.
 #  - A study of that scene: its points find both files (they are named
 #    relative to the base scene's folder), run, and their folders hold
 #    copies.
@@ -113,6 +115,26 @@ ls study_out/scenes/soft.table study_out/scenes/pos.txt > /dev/null 2>&1 && ok "
 nt=$(ls study_out/*/pair_table.txt 2>/dev/null | wc -l)
 [ $rc -eq 0 ] && [ "$nt" -eq 2 ] && ok "a study of the scene finds its table and init file: 2 points ran, each folder holds its copies" \
   || bad "study: rc $rc, $nt table copies: $(tail -2 sweep.txt | tr '\n' ' ')"
+
+echo "== resume in place checks every output it appends to"
+printf 'name = "rs";\nseed = 4;\nsteps = 20;\nbox: { cells = [12, 12, 12]; };\nfluid: { density = 3.0; };\ncolloids: { count = 4; radius = 1.5; pairs = "hertz"; trajectory_interval = 2; substeps = 2; };\ncoupling: { method = "hecht2"; };\noutput: { thermo_interval = 2; checkpoint_interval = 10; colloids_xyz = true; };\n' > rs.cfg
+for gone in colloids.h5 colloids.xyz thermo.tsv; do
+  rm -rf rs_$gone
+  "$PELOID" run rs.cfg --out rs_$gone --steps 10 --threads 1 > /dev/null 2>&1
+  rm -f rs_$gone/$gone
+  cp rs_$gone/checkpoint.h5 before.h5
+  "$PELOID" run rs.cfg --out rs_$gone --restart rs_$gone/checkpoint.h5 --steps 10 > /dev/null 2> err.txt; rc=$?
+  if [ $rc -eq 2 ] && [ "$(wc -l < err.txt)" -eq 1 ] && grep -q "rs_$gone/$gone: missing" err.txt \
+     && [ ! -e rs_$gone/$gone ] && cmp -s before.h5 rs_$gone/checkpoint.h5; then
+    ok "resume in place without $gone refused, nothing written: $(cat err.txt)"
+  else
+    bad "resume in place without $gone: rc $rc, $(cat err.txt)"
+  fi
+done
+"$PELOID" run rs.cfg --out rs_ok --steps 10 --threads 1 > /dev/null 2>&1
+"$PELOID" run rs.cfg --out rs_ok --restart rs_ok/checkpoint.h5 --steps 10 > /dev/null 2> err.txt \
+  && [ "$(grep -vc '^step' rs_ok/thermo.tsv)" -eq 11 ] && ok "resume in place with every output: 11 thermo rows" \
+  || bad "resume in place: $(tail -1 err.txt)"
 
 echo "self_contained: $pass passed, $fail failed"
 [ $fail -eq 0 ]

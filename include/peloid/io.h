@@ -29,6 +29,11 @@ int pl_outdir_lock(const char *dir, int *fd, pl_err_t *err);
  * that a directory never mixes two runs; other files and the lock file stay.  PL_ERR_IO naming a
  * file that cannot be removed. */
 int pl_outdir_clean(const char *dir, pl_err_t *err);
+/* Before a resume in place at step `first`: every output the run being
+ * continued wrote and this one appends to (thermo.tsv; colloids.h5 and
+ * colloids.xyz where the directory's scene.cfg asked for them) is there,
+ * else PL_ERR_INPUT naming the file (its earlier part would be lost). */
+int pl_outdir_resume_check(const char *dir, long long first, pl_err_t *err);
 
 /* "<dir>/<name>" into buf. */
 void pl_path_join(char *buf, size_t n, const char *dir, const char *name);

@@ -147,7 +147,7 @@ static const char *const outdir_names[] = {
     "scene.cfg", "thermo.tsv", "summary.json", "checkpoint.h5", "colloids.h5", "colloids.xyz", "fields.h5",
     "fields.xdmf", "observables.h5", "report.md", "rdf.png", "rdf_classes.png", "sq.png", "cff.png",
     "bonds.png", "msd.png", "clusters.png", "vdist.png", "sediment_phi.png", "viscosity.png", "thermo.png",
-    "sediment.png"};
+    "sediment.png", "colloids_init.txt", "pair_table.txt"};
 
 int pl_outdir_clean(const char *dir, pl_err_t *err)
 {
@@ -163,5 +163,59 @@ int pl_outdir_clean(const char *dir, pl_err_t *err)
                 return pl_err_set(err, PL_ERR_IO, "%s: cannot remove the earlier run's file (--force): %s", path,
                                   strerror(errno));
         }
+    return 0;
+}
+
+/* `key = value;` of section `sec` in an echoed scene.cfg (our own format:
+ * "sec: {", two-space keys, "};"); 0 when absent. */
+static long long echo_value(FILE *f, const char *sec, const char *key)
+{
+    char line[512], head[128], want[128];
+    snprintf(head, sizeof head, "%s: {\n", sec);
+    snprintf(want, sizeof want, "  %s = ", key);
+    int in = 0;
+    rewind(f);
+    while (fgets(line, sizeof line, f)) {
+        if (!strcmp(line, head)) in = 1;
+        else if (in && !strcmp(line, "};\n")) in = 0;
+        else if (in && !strncmp(line, want, strlen(want))) {
+            const char *v = line + strlen(want);
+            return !strncmp(v, "true", 4) ? 1 : strtoll(v, NULL, 10);
+        }
+    }
+    return 0;
+}
+
+int pl_outdir_resume_check(const char *dir, long long first, pl_err_t *err)
+{
+    char path[PATH_MAX + 32], tmp[PATH_MAX + 40];
+    snprintf(path, sizeof path, "%s/scene.cfg", dir);
+    FILE *f = fopen(path, "r");
+    long long traj = 0, xyz = 0, count = 0;
+    if (f) {
+        count = echo_value(f, "colloids", "count");
+        traj = echo_value(f, "colloids", "trajectory_interval");
+        xyz = echo_value(f, "output", "colloids_xyz");
+        fclose(f);
+    }
+    const struct {
+        const char *name;
+        int wanted;
+        const char *why;
+    } out[] = {
+        {"thermo.tsv", 1, "its rows"},
+        {"colloids.h5", count > 0 && traj > 0, "its frames (scene.cfg: colloids.trajectory_interval > 0)"},
+        {"colloids.xyz", count > 0 && traj > 0 && xyz, "its frames (scene.cfg: output.colloids_xyz = true)"},
+    };
+    for (size_t k = 0; k < sizeof out / sizeof out[0]; ++k) {
+        if (!out[k].wanted) continue;
+        snprintf(path, sizeof path, "%s/%s", dir, out[k].name);
+        snprintf(tmp, sizeof tmp, "%s.tmp", path);
+        if (access(path, F_OK) && access(tmp, F_OK))
+            return pl_err_set(err, PL_ERR_INPUT,
+                              "%s: missing; the run resumed in place at step %lld wrote %s before it there; "
+                              "allowed: put the file back, or resume into another --out",
+                              path, first, out[k].why);
+    }
     return 0;
 }

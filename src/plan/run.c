@@ -418,6 +418,7 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     if ((rc = pl_outdir_prepare(given, o->force || in_place, scene->path, w.dir, sizeof w.dir, err))) goto done;
     if ((rc = pl_outdir_lock(w.dir, &lock_fd, err))) goto done;
     if (!in_place && (rc = pl_outdir_clean(w.dir, err))) goto done;
+    if (in_place && (rc = pl_outdir_resume_check(w.dir, first, err))) goto done;
     char path[PATH_MAX];
     pl_path_join(w.thermo_path, sizeof w.thermo_path, w.dir, "thermo.tsv");
     /* first: a thermo.tsv to continue in place with other columns is refused before anything is written */
