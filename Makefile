@@ -185,6 +185,16 @@ check-cli: $(BIN)
 	@set -e; for t in $(CLI_SUITES); do s=$$(date +%s); bash tests/$$t.sh ./$(BIN); \
 	  echo "   (tests/$$t.sh: $$(( $$(date +%s) - s )) s)"; done
 
+# The fault trials in one command (CI runs it): signals at random moments
+# then resume in place (tests/fault_trials.sh), concurrent runs and sweeps
+# under signals (tests/sweep_signals.sh), a full disk (tests/full_disk.sh,
+# a tmpfs as root) and OpenMP settings (tests/omp_env.sh).
+.PHONY: fault-trials
+fault-trials: $(BIN)
+	@set -e; for t in fault_trials sweep_signals full_disk omp_env; do s=$$(date +%s); bash tests/$$t.sh ./$(BIN); \
+	  echo "   (tests/$$t.sh: $$(( $$(date +%s) - s )) s)"; done
+	@echo "make fault-trials: all trials passed"
+
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
 # shrinks the physics runs; the sanitizers slow code ~3-10x), and the
 # sanitizer CLI on the adversarial scene set (tests/bad_scenes).
