@@ -278,6 +278,8 @@ typedef struct {
     double mass_density;           /* m_f / a0^3 */
     double inertia;                /* 2/5 M R^2, m_f a0^2 */
     double hertz_K;                /* kT / a0^2.5 */
+    size_t hertz_off;              /* the input key hertz_K comes from (a scene offset) and its name */
+    const char *hertz_key;
     double lub_viscosity;          /* m_f / (a0 t0) */
     double contact_time;           /* pi sqrt(m_red / U''_max), t0 */
     double reach_gap;              /* smallest gap the substeps resolve, a0 */

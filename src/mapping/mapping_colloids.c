@@ -485,12 +485,15 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
         if (mp->cg.hertz_K > 0) {
             K = mp->cg.hertz_K;
             K_src = "given: coarse_graining.hertz_K (softer than the material, Hecht Sec. II)";
+            c->hertz_off = OFF(mapping.cg.hertz_K), c->hertz_key = "coarse_graining.hertz_K";
         } else if (ph->hertz_constant > 0) {
             K = ph->hertz_constant * pow(m->a0, 2.5) / kT;
             K_src = "derived: physical.hertz_constant a0^2.5 / kT (Hecht Eq. 3)";
+            c->hertz_off = OFF(mapping.physical.hertz_constant), c->hertz_key = "physical.hertz_constant";
         } else if (ph->young_modulus > 0 && given(s, OFF(mapping.physical.poisson_ratio))) {
             K = pl_mapping_hertz_K(ph->young_modulus, ph->poisson_ratio, ph->radius) * pow(m->a0, 2.5) / kT;
             K_src = "derived: Hertz theory from physical.young_modulus, poisson_ratio (Hecht Eq. 3)";
+            c->hertz_off = OFF(mapping.physical.young_modulus), c->hertz_key = "physical.young_modulus";
         } else {
             char miss[200];
             snprintf(miss, sizeof miss, "%s",
