@@ -256,6 +256,31 @@ int pl_mapping_report_json(const struct pl_scene *scene, struct json_t **out, pl
     return pl_mapping_json(&mp->map, &mp->colloid, scene->path, out, err);
 }
 
+static int ident_char(char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.'; }
+
+/* The first "section.key" a warning's text names (its remedy, e.g. "lower
+ * coarse_graining.mean_free_path") that the scene file gives: the key a
+ * --strict refusal blames, with its file and line.  0: none given. */
+static int named_given_key(const pl_scene_t *s, const char *text, size_t *off, char *key, size_t nkey)
+{
+    size_t nsec;
+    const pl_section_t *const *secs = pl_scene_sections(&nsec);
+    const char *best = NULL;
+    for (size_t i = 0; i < nsec; ++i)
+        for (size_t k = 0; secs[i]->name[0] && k < secs[i]->nkeys; ++k) {
+            char full[128];
+            snprintf(full, sizeof full, "%s.%s", secs[i]->name, secs[i]->keys[k].name);
+            for (const char *p = strstr(text, full); p; p = strstr(p + 1, full))
+                if ((p == text || !ident_char(p[-1])) && !ident_char(p[strlen(full)]) &&
+                    pl_scene_line_of(s, secs[i]->keys[k].offset) > 0 && (!best || p < best)) {
+                    best = p;
+                    *off = secs[i]->keys[k].offset;
+                    snprintf(key, nkey, "%s", full);
+                }
+        }
+    return best != NULL;
+}
+
 int pl_mapping_report_strict(const struct pl_scene *scene, int strict, pl_err_t *err)
 {
     const pl_scene_mapping_t *mp = &scene->mapping;
@@ -269,6 +294,10 @@ int pl_mapping_report_strict(const struct pl_scene *scene, int strict, pl_err_t 
                 if (pass == 0)
                     return pl_scene_fail(scene, err, w->key_off, w->key, "strict mapping audit: %s: %s", w->name,
                                          w->text);
+                size_t off; /* else the key its remedy names, where the file gives it */
+                char key[128];
+                if (named_given_key(scene, w->text, &off, key, sizeof key))
+                    return pl_scene_fail(scene, err, off, key, "strict mapping audit: %s: %s", w->name, w->text);
                 return pl_err_set(err, PL_ERR_INPUT, "%s: strict mapping audit: %s: %s", scene->path, w->name,
                                   w->text);
             }
