@@ -227,8 +227,7 @@ static int cmd_run(int argc, char **argv)
     int rc = scene ? pl_scene_load_coupling_true(scene_path, flags, PL_CALIBRATION_DIR, o.threads, stderr, scene, &err)
                    : PL_ERR_NOMEM;
     if (!rc) rc = pl_mapping_report_strict(scene, strict, &err); /* --strict: the audit's warnings refused */
-    if (!rc) pl_mapping_warnings_print(scene, stderr);
-    if (!rc) {
+    if (!rc) { /* the audit's warnings: pl_run prints them once nothing refuses the run */
         catch_signals(on_signal);
         rc = pl_run(scene, &o, &err);
     }

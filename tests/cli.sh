@@ -293,6 +293,28 @@ timeout 60 "$PELOID" run bigcells.cfg --threads 4096 --out bigcells > /dev/null 
 [ $rc -eq 2 ] && [ "$(wc -l < err.txt)" -eq 1 ] && grep -q "key 'box.cells'" err.txt && [ ! -e bigcells ] \
   && ok "run --threads 4096 refuses it too, nothing written" || bad "run bigcells: rc $rc $(head -c 300 err.txt)"
 
+# check = run under a memory limit below physical memory (ulimit -v here;
+# a cgroup limit alike): both refuse 1e9 cells with the same line naming
+# box.cells and the limit, nothing written (check used to pass it and the
+# run to fail its allocation, exit 5, naming no key)
+( ulimit -v 4000000
+  timeout 60 "$PELOID" check bigcells.cfg > /dev/null 2> lim_check.txt; echo $? > lim_check.rc
+  timeout 60 "$PELOID" run bigcells.cfg --out biglim > /dev/null 2> lim_run.txt; echo $? > lim_run.rc )
+[ "$(cat lim_check.rc)" = 2 ] && [ "$(cat lim_run.rc)" = 2 ] && cmp -s lim_check.txt lim_run.txt && [ "$(wc -l < lim_run.txt)" -eq 1 ] \
+  && grep -q "bigcells.cfg:2: key 'box.cells'" lim_run.txt && grep -q "ulimit -v" lim_run.txt && [ ! -e biglim ] \
+  && ok "ulimit -v 4 GB: check and run refuse 1e9 cells with the same line: $(cat lim_run.txt)" \
+  || bad "memory limit: check rc $(cat lim_check.rc) '$(cat lim_check.txt)', run rc $(cat lim_run.rc) '$(head -c 300 lim_run.txt)'"
+
+# --strict (params --json, params, check): an audit warning without a key of
+# its own is blamed on the key its remedy names where the file gives it:
+# FILE:LINE: key, one line, exit 2 (params --json: nothing on stdout)
+for mode in "params --json --strict" "params --strict" "check --strict"; do
+  "$PELOID" ${mode%% *} "$ROOT/scenes/quickstart.cfg" ${mode#* } > strict.out 2> err.txt; rc=$?
+  [ $rc -eq 2 ] && [ "$(wc -l < err.txt)" -eq 1 ] && { [ "$mode" != "params --json --strict" ] || [ ! -s strict.out ]; } \
+    && grep -qE "quickstart.cfg:[0-9]+: key 'coarse_graining.mean_free_path': strict mapping audit: HECHT_TAU_P_G" err.txt \
+    && ok "$mode names file, line and key: $(cut -c1-120 err.txt)" || bad "$mode: rc $rc $(cat err.txt)"
+done
+
 # colloids.init_file: a comment line of any length is one comment (600
 # characters here; a fixed line buffer made its tail a colloid); the run
 # directory's scene.cfg loads back with the original file gone (it names the

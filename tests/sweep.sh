@@ -168,6 +168,16 @@ for k in 0 1 2 3; do SLURM_ARRAY_TASK_ID=$k SLURM_CPUS_PER_TASK=1 bash out/sl/sw
 "$PELOID" sweep sl.cfg --out out/sl --collect 2> /dev/null
 [ "$(grep -c '	ok	0	' out/sl/sweep.tsv)" = 4 ] && ok "the 4 array tasks run locally (SLURM_ARRAY_TASK_ID=0..3), collected" \
   || bad "array tasks run locally"
+# --collect where no sweep ran (an empty folder, none, a file): one clear
+# line (no Python errno), exit 2, nothing written there
+mkdir -p out/empty_collect; : > out/file_collect
+for d in out/empty_collect out/none_collect out/file_collect; do
+  "$PELOID" sweep sl.cfg --out "$d" --collect 2> ec.err; rc=$?
+  if [ $rc = 2 ] && [ "$(wc -l < ec.err)" = 1 ] && grep -q "sweep --collect: $d has no points.json" ec.err \
+     && ! grep -q "Errno" ec.err && [ ! -e "$d/sweep.tsv" ] && [ ! -e out/none_collect ]; then
+    ok "--collect on $d: $(cut -c1-110 ec.err)"
+  else bad "--collect on $d: rc $rc, $(cat ec.err)"; fi
+done
 # 7. a point's scene loses nothing: with the base's own value it reproduces
 #    the base run bitwise (scenes/quickstart.cfg: physical units, @-free, many reals)
 QS="$ROOT/scenes/quickstart.cfg"

@@ -160,8 +160,10 @@ def main():
     out = sys.argv[1]
     try:
         study = json.load(open(os.path.join(out, "points.json")))
-    except (OSError, ValueError) as e:
-        sys.exit(f"peloid: error: {out}/points.json: {e}; allowed: the output of peloid sweep")
+    except OSError as e:
+        sys.exit(f"peloid: error: {out}/points.json: {e.strerror}; allowed: the output of peloid sweep")
+    except ValueError as e:
+        sys.exit(f"peloid: error: {out}/points.json: not JSON ({e}); allowed: the output of peloid sweep")
     ok_keys = isinstance(study, dict) and all(k in study for k in ("study", "study_file", "keys", "points"))
     if not ok_keys or not all(isinstance(p, dict) and all(k in p for k in ("id", "index", "params"))
                               for p in study["points"]):

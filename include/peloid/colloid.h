@@ -171,9 +171,15 @@ double pl_colloid_radius_min(const pl_scene_t *scene);
 
 /* Two initial colloids closer than (1 - colloids.max_overlap)(R_i + R_j)
  * found in O(N log N) (cubes of edge 2 (1 - max_overlap) R_min / sqrt 3):
- * PL_ERR_INPUT naming colloids.init.  Run before the neighbour list, whose
+ * PL_ERR_INPUT (pl_colloid_overlap_fail).  Run before the neighbour list, whose
  * cost it bounds to O(N) (src/colloid/colloid_overlap.c). */
 int pl_colloid_overlap_screen(const pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err);
+/* An overlapping initial configuration: the error line, "initial colloids
+ * I and J overlap by F ..." (`what`), blamed on the key that set the
+ * colloids: physical.volume_fraction in a physical{} scene not read from a
+ * file (it gives the count), else colloids.init if the file gives it, else
+ * colloids.count. */
+int pl_colloid_overlap_fail(const pl_scene_t *scene, pl_err_t *err, const char *what);
 
 /* Allocation only (n colloids, zeroed; unit quaternions); for tests that set
  * positions by hand, followed by pl_colloid_setup().  nthreads: the thread

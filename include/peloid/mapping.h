@@ -278,6 +278,8 @@ typedef struct {
     double mass_density;           /* m_f / a0^3 */
     double inertia;                /* 2/5 M R^2, m_f a0^2 */
     double hertz_K;                /* kT / a0^2.5 */
+    size_t hertz_off;              /* the input key hertz_K comes from (a scene offset) and its name */
+    const char *hertz_key;
     double lub_viscosity;          /* m_f / (a0 t0) */
     double contact_time;           /* pi sqrt(m_red / U''_max), t0 */
     double reach_gap;              /* smallest gap the substeps resolve, a0 */
@@ -316,6 +318,15 @@ int pl_mapping_colloids_apply(struct pl_scene *scene, pl_err_t *err);
  * of a liquid suspension, each naming the likely unit mistake
  * (src/mapping/mapping_plausible.c). */
 void pl_mapping_plausible(const struct pl_scene *scene, pl_mapping_t *m);
+/* The key at fault for a derived value out of range: the first of the
+ * physical{} keys at `offs` (the inputs the value comes from) that the file
+ * gives outside its plausible range, its offset in *off and in `why` its
+ * value and range ("V UNIT, outside the plausible LO..HI UNIT, gives: ", to
+ * lead the message); NULL and why = "": none (the caller blames its own
+ * key).  A value off by orders of magnitude is the likely cause, not the
+ * other inputs it meets. */
+const char *pl_mapping_blame(const struct pl_scene *scene, const size_t *offs, size_t n, size_t *off, char *why,
+                             size_t nwhy);
 /* The colloid diffusion the mapping matched (src/mapping/mapping_diffusion.c):
  * d_col_box from the scene's box (after the mapping set box.cells), and
  * its lines in the text report and its object in the JSON one. */

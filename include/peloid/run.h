@@ -25,7 +25,7 @@ typedef struct {
     const char *restart;     /* checkpoint to continue from, or NULL */
     int force;               /* write into an existing output directory */
     int progress;            /* log is a terminal: one updating progress line */
-    FILE *log;               /* progress and notes (the driver's stderr), or NULL */
+    FILE *log;               /* progress, notes and the mapping audit's warnings (the driver's stderr), or NULL */
     const char *restart_changed; /* --restart-changed: comma-separated scene keys
                                   * allowed to differ from the checkpoint's, or NULL */
     /* The driver's signal flag (the signal number, 0: none), or NULL: polled

@@ -8,6 +8,7 @@
  * (10^6 colloids far beyond close packing) made the pair count O(N^2). */
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "peloid/colloid.h"
@@ -49,11 +50,32 @@ int pl_colloid_overlap_screen(const pl_colloid_t *c, const pl_scene_t *scene, pl
         size_t i = p->i, j = q->i;
         double dx = c->x[i] - c->x[j], dy = c->y[i] - c->y[j], dz = c->z[i] - c->z[j];
         double s = c->rad[i] + c->rad[j];
-        rc = pl_scene_fail(scene, err, OFF(colloids.init), "colloids.init",
-                           "initial colloids %zu and %zu overlap by %.4g of R_i+R_j > colloids.max_overlap = %g; "
-                           "fewer colloids, smaller radius or another configuration",
-                           i, j, (s - sqrt(dx * dx + dy * dy + dz * dz)) / s, scene->colloids.max_overlap);
+        char what[160];
+        snprintf(what, sizeof what, "initial colloids %zu and %zu overlap by %.4g", i, j,
+                 (s - sqrt(dx * dx + dy * dy + dz * dz)) / s);
+        rc = pl_colloid_overlap_fail(scene, err, what);
     }
     free(cu);
     return rc;
+}
+
+int pl_colloid_overlap_fail(const pl_scene_t *scene, pl_err_t *err, const char *what)
+{
+    const pl_scene_colloids_t *cs = &scene->colloids;
+    const pl_scene_physical_t *ph = &scene->mapping.physical;
+    char from[160] = "";
+    size_t off = OFF(colloids.count);
+    const char *key = "colloids.count";
+    if (scene->mapping.enabled && cs->init != PL_CINIT_FILE) {
+        off = OFF(mapping.physical.volume_fraction);
+        key = "physical.volume_fraction";
+        snprintf(from, sizeof from, "%g gives %lld colloids (init = \"%s\"): ", ph->volume_fraction, cs->count,
+                 cs->init == PL_CINIT_LATTICE ? "lattice" : "random");
+    } else if (pl_scene_line_of(scene, OFF(colloids.init)) > 0) {
+        off = OFF(colloids.init);
+        key = "colloids.init";
+    }
+    return pl_scene_fail(scene, err, off, key,
+                         "%s%s of R_i+R_j > colloids.max_overlap = %g; allowed: fewer colloids, a smaller radius "
+                         "or another configuration", from, what, cs->max_overlap);
 }

@@ -8,6 +8,38 @@
 
 #define OFF(m) offsetof(pl_scene_t, m)
 
+/* The softest Hertz contact that is a contact at all: Hecht Eq. 3, U = K
+ * (d - r)^{5/2}, must reach the thermal energy kT before the centres of
+ * two colloids of the smallest diameter d meet (overlap d), K d^{5/2} >=
+ * kT; softer, a pair meeting with the mean collision energy kT (flux-
+ * weighted normal motion) passes through the contact.  Blamed on the key
+ * K comes from: hertz.K, or in a physical{} scene the input the mapping
+ * derived it from (coarse_graining.hertz_K, physical.hertz_constant or
+ * young_modulus). */
+static int hertz_floor(const pl_scene_t *scene, pl_err_t *err)
+{
+    const pl_scene_colloids_t *cs = &scene->colloids;
+    const double d = 2.0 * cs->radius * (1.0 - sqrt(3.0) * cs->polydispersity);
+    const double kT = cs->temperature > 0.0 ? cs->temperature : 1.0, K = cs->hertz.K;
+    const double kmin = kT / pow(d, 2.5);
+    if (K >= kmin) return 0;
+    const pl_mapping_colloid_t *c = &scene->mapping.colloid;
+    const int mapped = scene->mapping.enabled && c->hertz_key;
+    const size_t off = mapped ? c->hertz_off : OFF(colloids.hertz.K);
+    char what[128];
+    if (mapped)
+        snprintf(what, sizeof what, "%g gives hertz.K = %.4g kT/a0^2.5", *(const double *)((const char *)scene + off),
+                 K);
+    else
+        snprintf(what, sizeof what, "%g kT/a0^2.5", K);
+    return pl_scene_fail(scene, err, off, mapped ? c->hertz_key : "hertz.K",
+                         "%s: the Hertz energy K d^2.5 = %.3g kT at full overlap of colloids of diameter d = %.4g "
+                         "a0 is below kT = %g, a pair meeting with the thermal energy passes through the contact "
+                         "(Hecht Eq. 3); allowed: hertz.K >= kT / d^2.5 = %.4g kT/a0^2.5 (Hecht Sec. II: stiff "
+                         "enough that overlaps stay near 10%%)",
+                         what, K * pow(d, 2.5), d, kT, kmin);
+}
+
 int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err)
 {
     const pl_scene_colloids_t *cs = &scene->colloids;
@@ -72,6 +104,7 @@ int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err)
     if (pl_colloid_pair_params(scene, &p, &info, &sub)) /* the dlvo{} key the failure names */
         return info.fail_key ? pl_scene_fail(scene, err, info.fail_off, info.fail_key, "%s", sub.msg)
                              : pl_err_set(err, sub.code, "%s", sub.msg);
+    if ((mask & PL_CT_HERTZ) && hertz_floor(scene, err)) return PL_ERR_INPUT;
     double rmax = cs->radius * (1.0 + sqrt(3.0) * cs->polydispersity);
     const double rc = pl_colloid_pair_cutoff(&p, rmax);
     for (int k = 0; k < 3; ++k) {

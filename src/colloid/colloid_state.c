@@ -422,11 +422,10 @@ int pl_colloid_create(const pl_scene_t *scene, int nthreads, pl_colloid_t **out,
     for (size_t i = 1; i < c->n; ++i)
         if (c->g_overlap[i] > c->g_overlap[worst]) worst = i;
     if (c->n && c->g_overlap[worst] > c->max_overlap) {
-        rc = pl_scene_fail(scene, err, OFF(colloids.init), "colloids.init",
-                           "initial colloids %zu and %d overlap by %.4g of R_i+R_j > "
-                           "colloids.max_overlap = %g; fewer colloids, smaller radius or another "
-                           "configuration", worst, c->g_partner[worst], c->g_overlap[worst],
-                           c->max_overlap);
+        char what[160];
+        snprintf(what, sizeof what, "initial colloids %zu and %d overlap by %.4g", worst, c->g_partner[worst],
+                 c->g_overlap[worst]);
+        rc = pl_colloid_overlap_fail(scene, err, what);
         pl_colloid_free(c);
         return rc;
     }

@@ -59,10 +59,23 @@ static int check_settling(const pl_scene_t *scene, pl_err_t *err)
      * step in seconds the user wrote, else from physical.gravity */
     size_t off = OFF(colloids.gravity);
     const char *key = "colloids.gravity";
+    char why[160] = "";
     if (scene->mapping.enabled && pl_scene_line_of(scene, off) <= 0) {
+        /* at fault: an implausible physical input of M g, then a mean free
+         * path above one cell (xi_II ~ 1/srd.dt, Hecht Sec. V), else
+         * physical.gravity */
+        const size_t from[] = {OFF(mapping.physical.particle_density), OFF(mapping.physical.solvent_density),
+                               OFF(mapping.physical.gravity), OFF(mapping.physical.radius),
+                               OFF(mapping.physical.viscosity)};
         int dt_given = pl_scene_line_of(scene, OFF(mapping.cg.srd_dt)) > 0;
-        off = dt_given ? OFF(mapping.cg.srd_dt) : OFF(mapping.physical.gravity);
-        key = dt_given ? "coarse_graining.srd_dt" : "physical.gravity";
+        int lambda = pl_scene_line_of(scene, OFF(mapping.cg.mean_free_path)) > 0 &&
+                     scene->mapping.cg.mean_free_path > 1.0;
+        off = dt_given ? OFF(mapping.cg.srd_dt)
+              : lambda ? OFF(mapping.cg.mean_free_path)
+                       : OFF(mapping.physical.gravity);
+        key = dt_given ? "coarse_graining.srd_dt" : lambda ? "coarse_graining.mean_free_path" : "physical.gravity";
+        const char *k = pl_mapping_blame(scene, from, sizeof from / sizeof from[0], &off, why, sizeof why);
+        if (k) key = k;
     }
     if (off == OFF(mapping.cg.srd_dt))
         return pl_scene_fail(scene, err, off, key,
@@ -71,14 +84,16 @@ static int check_settling(const pl_scene_t *scene, pl_err_t *err)
                              "%g, Hecht Sec. VI: tau_P << tau_S); allowed: a shorter SRD step, or 0 "
                              "(derived from coarse_graining.time_match)",
                              scene->mapping.cg.srd_dt, scene->mapping.map.t0, gn, e, bound);
+    const int phys = scene->mapping.enabled;
     return pl_scene_fail(scene, err, off, key,
-                         "coupling II settling too fast: M = %.4g m_f in cells of %.3g fluid "
+                         "%scoupling II settling too fast: M = %.4g m_f in cells of %.3g fluid "
                          "particles, xi_II = %.4g, v_s >= M g / xi_II = %.3g a0/t0, M v_s^2 = "
                          "%.3g kT > coupling.max_settling_energy = %g (Hecht Sec. VI: tau_P << "
                          "tau_S); lower the gravity, or the colloid mass per cell (radius ~ 0.62 "
-                         "a0: cell volume = colloid volume, Hecht Sec. VII.C), or raise "
-                         "fluid.density, or lower srd.dt",
-                         mass, scene->fluid.density, xi, vs, e, bound);
+                         "a0: cell volume = colloid volume, Hecht Sec. VII.C), or raise %s, or lower %s",
+                         why, mass, scene->fluid.density, xi, vs, e, bound,
+                         phys ? "coarse_graining.particles_per_cell" : "fluid.density",
+                         phys ? "coarse_graining.mean_free_path" : "srd.dt");
 }
 
 int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err)

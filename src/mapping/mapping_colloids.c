@@ -28,23 +28,8 @@
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
 #include "peloid/colloid_pair.h"
-#include "peloid/scene.h"
 
 #define OFF(m) offsetof(pl_scene_t, m)
-
-double pl_mapping_water_permittivity(double T)
-{
-    double t = T - 273.15;
-    if (!(t >= 0.0 && t <= 100.0)) return NAN;
-    /* Malmberg & Maryott, J. Res. NBS 56, 1 (1956), Eq. 5 */
-    return 87.740 - 0.40008 * t + 9.398e-4 * t * t - 1.410e-6 * t * t * t;
-}
-
-double pl_mapping_hertz_K(double E, double nu_p, double R)
-{
-    double Es = E / (2.0 * (1.0 - nu_p * nu_p));
-    return 8.0 / 15.0 * Es * sqrt(0.5 * R);
-}
 
 static void prov(pl_mapping_colloid_t *c, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 static void prov(pl_mapping_colloid_t *c, const char *fmt, ...)
@@ -94,10 +79,8 @@ static int check_missing(const pl_scene_t *s, pl_err_t *err, size_t off, const c
                          const char *needs, const char *missing)
 {
     if (!missing[0]) return 0;
-    return pl_scene_fail(s, err, off, key,
-                         "the %s pair term needs the material constants %s; missing: %s (no material "
-                         "defaults: give them in physical{})",
-                         term, needs, missing);
+    return pl_scene_fail(s, err, off, key, "the %s pair term needs the material constants %s; missing: %s (no "
+                         "material defaults: give them in physical{})", term, needs, missing);
 }
 
 /* Largest U'' (kT/a0^2) over the gaps a pair of reference diameter d can
@@ -262,8 +245,17 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
     pl_colloid_dlvo_info_t info;
     pl_err_t e = {0, ""};
     if (pl_colloid_pair_params(s, &p, &info, &e)) {
-        /* a dlvo{} model choice the user wrote (cutoff_energy, primary_depth)
-         * is to blame where the failure names it; else the physical input */
+        /* an implausible physical input first; then a dlvo{} model choice the user wrote
+         * (cutoff_energy, primary_depth) where the failure names it; else the surface potential */
+        const size_t dl[] = {OFF(mapping.physical.hamaker), OFF(mapping.physical.surface_potential),
+                             OFF(mapping.physical.kappa), OFF(mapping.physical.ionic_strength),
+                             OFF(mapping.physical.primary_minimum), OFF(mapping.physical.radius),
+                             OFF(mapping.physical.temperature)};
+        size_t off;
+        char why[160];
+        const char *key =
+            info.fail_key ? pl_mapping_blame(s, dl, sizeof dl / sizeof dl[0], &off, why, sizeof why) : NULL;
+        if (key) return pl_scene_fail(s, err, off, key, "%sthe derived DLVO potential: %s", why, e.msg);
         if (info.fail_key && given(s, info.fail_off))
             return pl_scene_fail(s, err, info.fail_off, info.fail_key, "%s", e.msg);
         if (!info.fail_key) /* not the DLVO set-up: another term's own message */
@@ -316,17 +308,29 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
         why = "damping guard";
     }
     if (n > 1000000) {
-        /* a coarse_graining.cell_size the user wrote sets R / a0 (the colloid
-         * mass and contact curvature in model units): blame it first */
-        int cell = given(s, OFF(mapping.cg.cell_size));
-        return pl_scene_fail(s, err, cell ? OFF(mapping.cg.cell_size) : OFF(mapping.physical.radius),
-                             cell ? "coarse_graining.cell_size" : "physical.radius",
-                             "%s%.6g%s gives R = %.4g a0: the stiffest contact (U'' = %.4g kT/a0^2, collision "
-                             "time %.4g t0) needs %lld MD steps per SRD step (more than 1e6); soften it: coarse_graining.hertz_K, "
-                             "dlvo.primary_depth%s",
-                             cell ? "a0/R = " : "R = ", cell ? mp->cg.cell_size : mp->physical.radius,
-                             cell ? "" : " m", cs->radius,
-                             k2, c->contact_time, n, cell ? ", or a smaller coarse_graining.cell_size" : "");
+        /* at fault: an implausible physical input; else the MD step the file asks for where it
+         * sets the count; else a given coarse_graining.cell_size (R / a0: mass, curvature); else R */
+        const size_t from[] = {OFF(mapping.physical.viscosity), OFF(mapping.physical.radius),
+                               OFF(mapping.physical.particle_density), OFF(mapping.physical.solvent_density),
+                               OFF(mapping.physical.temperature)};
+        size_t off = OFF(mapping.physical.radius);
+        char bl[160];
+        const char *key = pl_mapping_blame(s, from, sizeof from / sizeof from[0], &off, bl, sizeof bl);
+        const size_t md = mp->cg.md_dt > 0 ? OFF(mapping.cg.md_dt) : OFF(mapping.cg.md_resolution);
+        if (!key && n == n_map && given(s, md)) {
+            off = md;
+            key = mp->cg.md_dt > 0 ? "coarse_graining.md_dt" : "coarse_graining.md_resolution";
+        } else if (!key && given(s, OFF(mapping.cg.cell_size))) {
+            off = OFF(mapping.cg.cell_size);
+            key = "coarse_graining.cell_size";
+        }
+        return pl_scene_fail(s, err, off, key ? key : "physical.radius",
+                             "%sR = %.4g m, a0/R = %.6g give R = %.4g a0; the %s (stiffest contact U'' = %.4g "
+                             "kT/a0^2, collision time %.4g t0; coarse_graining.md_dt = %g s, md_resolution = %g) needs "
+                             "%lld MD steps per SRD step (more than 1e6); soften it: coarse_graining.hertz_K, "
+                             "dlvo.primary_depth, or a smaller coarse_graining.cell_size or md_resolution",
+                             bl, mp->physical.radius, mp->map.a0 / mp->physical.radius, cs->radius, why, k2,
+                             c->contact_time, mp->cg.md_dt, mp->cg.md_resolution, n);
     }
     snprintf(c->substeps_reason, sizeof c->substeps_reason,
              "%lld MD steps per SRD step from the %s; mapping %lld, contact %lld (U''max = %.4g kT/a0^2 at gap "
@@ -421,23 +425,6 @@ static int potential_keys(pl_scene_t *s, int wca, pl_err_t *err)
     return 0;
 }
 
-double pl_mapping_cf_contact_time(double sigma_cf, double eps_cf, double M)
-{
-    /* PL Eq. 17 = kT at r_1 (bisection on s = (sigma/r)^6 in [1/2, big]:
-     * 4 eps (s^2 - s + 1/4) = 1 has the root s = 1/2 + sqrt(1 / (4 eps))) */
-    const double s6 = 0.5 + sqrt(1.0 / (4.0 * eps_cf));
-    const double r = sigma_cf / pow(s6, 1.0 / 6.0);
-    const double u2 = 4.0 * eps_cf * (156.0 * s6 * s6 - 42.0 * s6) / (r * r); /* U''(r_1) */
-    const double m_red = M / (M + 1.0);
-    return PL_PI * sqrt(m_red / u2);
-}
-
-long long pl_mapping_cf_substeps(double sigma_cf, double eps_cf, double M, double dt, double resolution)
-{
-    const double n = ceil(resolution * dt / pl_mapping_cf_contact_time(sigma_cf, eps_cf, M) - 1e-9);
-    return n < 1.0 ? 1 : (long long)n;
-}
-
 int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
 {
     pl_scene_mapping_t *mp = &s->mapping;
@@ -446,13 +433,7 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     pl_mapping_colloid_t *c = &mp->colloid;
     pl_scene_colloids_t *cs = &s->colloids;
     c->nprov = 0;
-    int have = c->n_colloids > 0;
-    if (ph->volume_fraction > 0 && !have)
-        return pl_scene_fail(s, err, OFF(mapping.physical.volume_fraction), "physical.volume_fraction",
-                             "%g gives no colloid in the box (%d x %d x %d cells of %.4g m); allowed: a larger "
-                             "physical.box or volume fraction", ph->volume_fraction, s->box.cells[0],
-                             s->box.cells[1], s->box.cells[2], m->a0);
-
+    int have = c->n_colloids > 0; /* a volume fraction without one is refused by the box (mapping_scene.c) */
     if (have && mp->cg.fluid_gravity && ph->gravity > 0)
         return pl_scene_fail(s, err, OFF(mapping.cg.fluid_gravity), "coarse_graining.fluid_gravity",
                              "with colloids is not supported: the fluid would need the body force and the "
@@ -495,12 +476,15 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
         if (mp->cg.hertz_K > 0) {
             K = mp->cg.hertz_K;
             K_src = "given: coarse_graining.hertz_K (softer than the material, Hecht Sec. II)";
+            c->hertz_off = OFF(mapping.cg.hertz_K), c->hertz_key = "coarse_graining.hertz_K";
         } else if (ph->hertz_constant > 0) {
             K = ph->hertz_constant * pow(m->a0, 2.5) / kT;
             K_src = "derived: physical.hertz_constant a0^2.5 / kT (Hecht Eq. 3)";
+            c->hertz_off = OFF(mapping.physical.hertz_constant), c->hertz_key = "physical.hertz_constant";
         } else if (ph->young_modulus > 0 && given(s, OFF(mapping.physical.poisson_ratio))) {
             K = pl_mapping_hertz_K(ph->young_modulus, ph->poisson_ratio, ph->radius) * pow(m->a0, 2.5) / kT;
             K_src = "derived: Hertz theory from physical.young_modulus, poisson_ratio (Hecht Eq. 3)";
+            c->hertz_off = OFF(mapping.physical.young_modulus), c->hertz_key = "physical.young_modulus";
         } else {
             char miss[200];
             snprintf(miss, sizeof miss, "%s",

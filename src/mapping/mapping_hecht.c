@@ -175,3 +175,9 @@ int pl_mapping_derive(const pl_mapping_system_t *real, const pl_mapping_solvent_
     pl_mapping_audit(m);
     return 0;
 }
+
+double pl_mapping_hertz_K(double E, double nu_p, double R)
+{
+    double Es = E / (2.0 * (1.0 - nu_p * nu_p));
+    return 8.0 / 15.0 * Es * sqrt(0.5 * R);
+}

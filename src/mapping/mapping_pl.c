@@ -6,7 +6,8 @@
  * PL Eqs. 26 (Sc), 28 (Ma), 29 (Re), 30 (t_S), 31 (tau_nu), 34 (Kn), 35 (Pe),
  * 36 (tau_D), 39-41 (Stokes and Enskog friction in parallel), 46 (t_cs),
  * 47 (tau_B), 53 (tau_E), 54 (Stokes-Einstein).  Length scale a = R = sigma_cf
- * (PL Table VI caption: a ~ sigma_cf). */
+ * (PL Table VI caption: a ~ sigma_cf).  The MD step of the colloid-fluid
+ * contact of PL Eq. 17. */
 #include <math.h>
 
 #include "peloid/real.h" /* PL_PI */
@@ -68,4 +69,21 @@ void pl_mapping_pl_real(const pl_mapping_system_t *r, const pl_mapping_solvent_t
     n->Re = v * a / r->nu;
     n->Kn = sv->mean_free_path / a;
     n->Pe = v * a / D;
+}
+
+double pl_mapping_cf_contact_time(double sigma_cf, double eps_cf, double M)
+{
+    /* PL Eq. 17 = kT at r_1 (bisection on s = (sigma/r)^6 in [1/2, big]:
+     * 4 eps (s^2 - s + 1/4) = 1 has the root s = 1/2 + sqrt(1 / (4 eps))) */
+    const double s6 = 0.5 + sqrt(1.0 / (4.0 * eps_cf));
+    const double r = sigma_cf / pow(s6, 1.0 / 6.0);
+    const double u2 = 4.0 * eps_cf * (156.0 * s6 * s6 - 42.0 * s6) / (r * r); /* U''(r_1) */
+    const double m_red = M / (M + 1.0);
+    return PL_PI * sqrt(m_red / u2);
+}
+
+long long pl_mapping_cf_substeps(double sigma_cf, double eps_cf, double M, double dt, double resolution)
+{
+    const double n = ceil(resolution * dt / pl_mapping_cf_contact_time(sigma_cf, eps_cf, M) - 1e-9);
+    return n < 1.0 ? 1 : (long long)n;
 }

@@ -6,7 +6,8 @@
  * molar, g/cm^3 for kg/m^3, micrometres for metres, mV for V, Celsius for
  * kelvin).  Warnings: `peloid check` and `run` print them, `--strict` and
  * coarse_graining.strict refuse the scene.  The ranges are listed in README
- * ("Physical units: plausible ranges"). */
+ * ("Physical units: plausible ranges").  The same ranges pick the key a
+ * derived-value refusal blames (pl_mapping_blame). */
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -75,4 +76,35 @@ void pl_mapping_plausible(const struct pl_scene *s, pl_mapping_t *m)
             w->key_off = ranges[k].off;
         }
     }
+}
+
+/* The index in `ranges` of the key at `off` if the file gives it outside
+ * its plausible range; -1: in range, not given, or a key without a range. */
+static int implausible(const struct pl_scene *s, size_t off)
+{
+    for (size_t k = 0; k < sizeof ranges / sizeof ranges[0]; ++k) {
+        if (ranges[k].off != off) continue;
+        const double v = *(const double *)((const char *)s + off);
+        const double a = ranges[k].absolute ? fabs(v) : v;
+        const int bad = pl_scene_line_of(s, off) > 0 && !(ranges[k].zero_ok && v == 0.0) &&
+                        !(a >= ranges[k].lo && a <= ranges[k].hi);
+        return bad ? (int)k : -1;
+    }
+    return -1;
+}
+
+const char *pl_mapping_blame(const struct pl_scene *s, const size_t *offs, size_t n, size_t *off, char *why,
+                             size_t nwhy)
+{
+    why[0] = '\0';
+    for (size_t i = 0; i < n; ++i) {
+        const int k = implausible(s, offs[i]);
+        if (k < 0) continue;
+        *off = offs[i];
+        snprintf(why, nwhy, "%g %s, outside the plausible %g..%g %s, gives: ",
+                 *(const double *)((const char *)s + offs[i]), ranges[k].unit, ranges[k].lo, ranges[k].hi,
+                 ranges[k].unit);
+        return ranges[k].key;
+    }
+    return NULL;
 }

@@ -16,6 +16,14 @@
 #define OFF(m) offsetof(pl_scene_t, m)
 #define DLVO_KAPPA_R_MIN 5.0
 
+double pl_mapping_water_permittivity(double T)
+{
+    double t = T - 273.15;
+    if (!(t >= 0.0 && t <= 100.0)) return NAN;
+    /* Malmberg & Maryott, J. Res. NBS 56, 1 (1956), Eq. 5 */
+    return 87.740 - 0.40008 * t + 9.398e-4 * t * t - 1.410e-6 * t * t * t;
+}
+
 /* The physical front end is on when any key of physical{} is in the file. */
 /* 1 + the offset of the first key of `sec` given in the file; 0: none. */
 static size_t section_given(const pl_scene_t *s, const pl_section_t *sec)
@@ -121,6 +129,28 @@ static int electrostatics(pl_scene_t *s, pl_err_t *err)
     return 0;
 }
 
+/* physical.box edge d gives n cells of a0 outside 1..4096 (or none): the
+ * key at fault is an implausible physical.radius (a0 follows R), else a
+ * coarse_graining.cell_size the file gives that makes the cell smaller than
+ * a solvent molecule (a0 < 1 nm, too many cells) or larger than a colloid
+ * diameter (a0/R > 2, too few), else the box. */
+static int box_fail(const pl_scene_t *s, pl_err_t *err, int d, double n, double a0)
+{
+    const pl_scene_physical_t *p = &s->mapping.physical;
+    const size_t radius = OFF(mapping.physical.radius), cell = OFF(mapping.cg.cell_size);
+    size_t off = OFF(mapping.physical.box);
+    char why[160];
+    const char *key = pl_mapping_blame(s, &radius, 1, &off, why, sizeof why);
+    if (!key && pl_scene_line_of(s, cell) > 0 && (n > 4096 ? a0 < 1e-9 : s->mapping.cg.cell_size > 2.0)) {
+        off = cell;
+        key = "coarse_graining.cell_size";
+    }
+    return pl_scene_fail(s, err, off, key ? key : "physical.box",
+                         "%sphysical.box edge %d = %g m gives %g cells of a0 = %g m (a0 = %g x physical.radius = %g "
+                         "m); allowed: 1..4096 cells (a0/2 < edge <= 4096.5 a0)",
+                         why, d, p->box[d], n, a0, a0 / p->radius, p->radius);
+}
+
 /* Hecht Sec. VII (phi kept): the colloid count is phi V / (4/3 pi R^3) of
  * the box actually used (whole cells), so the realised phi differs from the
  * given one only by rounding the count; rounding the box is reported. */
@@ -131,12 +161,9 @@ static int apply_box(pl_scene_t *s, pl_err_t *err)
     int given = p->box[0] > 0 || p->box[1] > 0 || p->box[2] > 0;
     if (given) {
         for (int d = 0; d < 3; ++d) {
-            double n = fmax(1.0, floor(p->box[d] / a0 + 0.5)); /* nearest whole number of cells */
-            if (forbid(s, err, OFF(box.cells), "box.cells", n, s->box.cells[d])) return PL_ERR_INPUT;
-            if (!(p->box[d] > 0) || n > 4096)
-                return pl_scene_fail(s, err, OFF(mapping.physical.box), "physical.box",
-                                     "edge %d = %g m gives %g cells of a0 = %g m; allowed: 1..4096 cells", d,
-                                     p->box[d], n, a0);
+            double n = floor(p->box[d] / a0 + 0.5); /* nearest whole number of cells */
+            if (forbid(s, err, OFF(box.cells), "box.cells", fmax(1.0, n), s->box.cells[d])) return PL_ERR_INPUT;
+            if (!(p->box[d] > 0) || !(n >= 1.0 && n <= 4096)) return box_fail(s, err, d, n, a0);
             s->box.cells[d] = (int)n;
         }
     }
@@ -147,6 +174,23 @@ static int apply_box(pl_scene_t *s, pl_err_t *err)
     c->n_colloids = (long long)floor(p->volume_fraction * V / vc + 0.5);
     c->phi_given = p->volume_fraction;
     c->phi_realised = (double)c->n_colloids * vc / V;
+    if (p->volume_fraction > 0 && c->n_colloids == 0) { /* at fault: a box narrower than a colloid, else phi */
+        const size_t radius = OFF(mapping.physical.radius);
+        size_t off = OFF(mapping.physical.volume_fraction);
+        char why[160];
+        const char *key = pl_mapping_blame(s, &radius, 1, &off, why, sizeof why);
+        int narrow = 0;
+        for (int d = 0; d < 3; ++d) narrow |= s->box.cells[d] * a0 < 2.0 * p->radius;
+        if (!key && narrow) {
+            off = given ? OFF(mapping.physical.box) : OFF(box.cells);
+            key = given ? "physical.box" : "box.cells";
+        }
+        return pl_scene_fail(s, err, off, key ? key : "physical.volume_fraction",
+                             "%sphysical.volume_fraction = %g gives no colloid of radius %g m in the box (%d x %d x "
+                             "%d cells of %.4g m)%s; allowed: a larger box or volume fraction",
+                             why, p->volume_fraction, p->radius, s->box.cells[0], s->box.cells[1], s->box.cells[2],
+                             a0, narrow ? ", an edge shorter than the colloid diameter" : "");
+    }
     if (given && p->volume_fraction > 0) {
         double Vg = p->box[0] * p->box[1] * p->box[2];
         if (fabs(V / Vg - 1.0) > 0.005)
@@ -181,11 +225,17 @@ static int check_md_dt(const pl_scene_t *s, pl_err_t *err)
     int final = mp->cg.srd_dt > 0 || mp->cg.time_match == PL_MATCH_KINEMATIC || mp->calib.d_inf > 0 ||
                 mp->colloid.n_colloids == 0;
     if (!final || !(mp->cg.md_dt > 0) || mp->cg.md_dt <= m->dt * (1.0 + 1e-9)) return 0;
-    return pl_scene_fail(s, err, OFF(mapping.cg.md_dt), "coarse_graining.md_dt",
-                         "%g s is longer than the SRD step %.6g s (lambda t0, coarse_graining.mean_free_path = "
+    /* the SRD step in seconds (t0) follows the physical inputs: an implausible one is at fault */
+    const size_t from[] = {OFF(mapping.physical.viscosity), OFF(mapping.physical.radius),
+                           OFF(mapping.physical.temperature), OFF(mapping.physical.solvent_density)};
+    size_t off = OFF(mapping.cg.md_dt);
+    char why[160];
+    const char *key = pl_mapping_blame(s, from, sizeof from / sizeof from[0], &off, why, sizeof why);
+    return pl_scene_fail(s, err, off, key ? key : "coarse_graining.md_dt",
+                         "%scoarse_graining.md_dt = %g s is longer than the SRD step %.6g s (lambda t0, coarse_graining.mean_free_path = "
                          "%g); allowed: 0 < md_dt <= %.6g s (rounded to divide the SRD step), or 0 (derived "
                          "from min(tau_V, tau_P) / md_resolution)",
-                         mp->cg.md_dt, m->dt, mp->cg.mean_free_path, m->dt);
+                         why, mp->cg.md_dt, m->dt, mp->cg.mean_free_path, m->dt);
 }
 
 int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
@@ -212,9 +262,14 @@ int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
                              "PL Eq. 17 transfer no angular momentum (PL Sec. III.B); allowed: \"slip\" or not given");
     fill_inputs(s, &r, &sv, &cg);
     pl_err_t e = {0};
-    if (pl_mapping_derive(&r, &sv, &cg, &mp->map, &e)) {
-        size_t off = strstr(e.msg, "dens") ? OFF(mapping.physical.particle_density) : OFF(mapping.physical.radius);
-        return pl_scene_fail(s, err, off, "physical", "%s", e.msg);
+    if (pl_mapping_derive(&r, &sv, &cg, &mp->map, &e)) { /* the inputs' own checks (mapping_hecht.c) */
+        const size_t dens[] = {OFF(mapping.physical.solvent_density), OFF(mapping.physical.particle_density)};
+        const int density = strstr(e.msg, "dens") != NULL;
+        size_t off = density ? dens[1] : OFF(mapping.physical.radius);
+        char why[160];
+        const char *key = density ? pl_mapping_blame(s, dens, 2, &off, why, sizeof why) : NULL;
+        if (!key) key = density ? "physical.particle_density" : "physical.radius";
+        return pl_scene_fail(s, err, off, key, "%s%s", density ? why : "", e.msg);
     }
     const pl_mapping_t *m = &mp->map;
     if (forbid(s, err, OFF(srd.dt), "srd.dt", cg.lambda, s->srd.dt) ||
@@ -256,6 +311,31 @@ int pl_mapping_report_json(const struct pl_scene *scene, struct json_t **out, pl
     return pl_mapping_json(&mp->map, &mp->colloid, scene->path, out, err);
 }
 
+static int ident_char(char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' || c == '.'; }
+
+/* The first "section.key" a warning's text names (its remedy, e.g. "lower
+ * coarse_graining.mean_free_path") that the scene file gives: the key a
+ * --strict refusal blames, with its file and line.  0: none given. */
+static int named_given_key(const pl_scene_t *s, const char *text, size_t *off, char *key, size_t nkey)
+{
+    size_t nsec;
+    const pl_section_t *const *secs = pl_scene_sections(&nsec);
+    const char *best = NULL;
+    for (size_t i = 0; i < nsec; ++i)
+        for (size_t k = 0; secs[i]->name[0] && k < secs[i]->nkeys; ++k) {
+            char full[128];
+            snprintf(full, sizeof full, "%s.%s", secs[i]->name, secs[i]->keys[k].name);
+            for (const char *p = strstr(text, full); p; p = strstr(p + 1, full))
+                if ((p == text || !ident_char(p[-1])) && !ident_char(p[strlen(full)]) &&
+                    pl_scene_line_of(s, secs[i]->keys[k].offset) > 0 && (!best || p < best)) {
+                    best = p;
+                    *off = secs[i]->keys[k].offset;
+                    snprintf(key, nkey, "%s", full);
+                }
+        }
+    return best != NULL;
+}
+
 int pl_mapping_report_strict(const struct pl_scene *scene, int strict, pl_err_t *err)
 {
     const pl_scene_mapping_t *mp = &scene->mapping;
@@ -269,6 +349,10 @@ int pl_mapping_report_strict(const struct pl_scene *scene, int strict, pl_err_t 
                 if (pass == 0)
                     return pl_scene_fail(scene, err, w->key_off, w->key, "strict mapping audit: %s: %s", w->name,
                                          w->text);
+                size_t off; /* else the key its remedy names, where the file gives it */
+                char key[128];
+                if (named_given_key(scene, w->text, &off, key, sizeof key))
+                    return pl_scene_fail(scene, err, off, key, "strict mapping audit: %s: %s", w->name, w->text);
                 return pl_err_set(err, PL_ERR_INPUT, "%s: strict mapping audit: %s: %s", scene->path, w->name,
                                   w->text);
             }

@@ -442,6 +442,7 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         if ((rc = pl_colloid_traj_open(path, sim->colloids, &tp, &sim->colloid_traj, err))) goto done;
     }
     FILE *log = o->log; /* the driver's stream; NULL: quiet */
+    if (log) pl_mapping_warnings_print(scene, log); /* after every refusal: a refused run prints one line */
     const int cores = log ? pl_threads_cores() : 0;
     if (cores > 0 && sim->nthreads > cores)
         fprintf(log, "peloid: warning: %d OpenMP threads on %d cores (hwloc): the threads beyond the cores slow "

@@ -140,7 +140,9 @@ static const pl_key_t dlvo_keys[] = {
 
 static const pl_key_t hertz_keys[] = {
     {"K", PL_KEY_REAL, OFF(hertz.K), 0, 1e15, PL_KEY_MIN_OPEN, NULL, 1e3, NULL,
-     "kT_ref / a0^2.5", "Hertz constant (Hecht Eq. 3: V = K (d - r)^{5/2}) (physical{} scenes: derived, see peloid params)"},
+     "kT_ref / a0^2.5", "Hertz constant (Hecht Eq. 3: V = K (d - r)^{5/2}) (physical{} scenes: derived, see peloid params); "
+                         "refused below kT / d^2.5 (d the smallest diameter), where a pair meeting with the "
+                         "energy kT passes through the contact"},
     {"beta", PL_KEY_REAL, OFF(hertz.beta), 0, 1e12, 0, NULL, 0, NULL,
      "m_f / (t0 a0^0.5)", "normal damping constant (Hecht Eq. 6)"},
     {"gamma_t", PL_KEY_REAL, OFF(hertz.gamma_t), 0, 1e12, 0, NULL, 0, NULL,

@@ -98,11 +98,14 @@ static const pl_key_t cg_keys[] = {
     {"hertz_K", PL_KEY_REAL, C(hertz_K), 0, 1e15, 0, NULL, 0, NULL,
      "kT/a0^2.5", "model Hertz constant chosen softer than the material (Hecht Sec. II: K is chosen so "
                   "that overlaps stay below ~10% and a collision takes ~20 MD steps, not from the elastic "
-                  "modulus); 0 / not given: K of physical.young_modulus / hertz_constant in kT/a0^2.5"},
-    {"reach_energy", PL_KEY_REAL, C(reach_energy), 0, 1e6, PL_KEY_MIN_OPEN, NULL, 40, NULL,
+                  "modulus); 0 / not given: K of physical.young_modulus / hertz_constant in kT/a0^2.5.  Refused below "
+                  "kT / (2R)^2.5, where a pair meeting with the energy kT passes through the contact"},
+    {"reach_energy", PL_KEY_REAL, C(reach_energy), 10, 1e6, 0, NULL, 40, NULL,
      "kT", "the MD substeps resolve every gap a colliding pair can reach with this energy above the lowest "
            "pair energy further out (Boltzmann factor e^-40 by default); a DLVO barrier higher than this "
-           "shields the primary minimum and the Hertz contact (note CONTACT_SHIELDED)"},
+           "shields the primary minimum and the Hertz contact (note CONTACT_SHIELDED).  At least 10 kT: "
+           "a collision's energy along the line of centres exceeds E with probability e^-E/kT, so below "
+           "10 kT more than 1 collision in 22000 reaches gaps the MD step does not resolve"},
     {"multiple_time_stepping", PL_KEY_BOOL, C(multiple_time_stepping), 0, 1, PL_KEY_FP_SET, NULL, 0, NULL,
      "-", "stiff DLVO suspensions: the colloid MD by multiple time stepping (r-RESPA) with colloids.slow_gap "
           "= the outer edge (inflection point) of the DLVO secondary minimum's well (the stiff near field "

@@ -1,6 +1,7 @@
 /* Cross-key scene checks: what one key's range cannot express. */
 #include <math.h>
 #include <stdio.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "peloid/module.h"
@@ -46,20 +47,62 @@ double pl_scene_memory_bytes(const pl_scene_t *scene, int nthreads)
     return memory_bytes(scene, nthreads, NULL, NULL, NULL, NULL);
 }
 
+/* A limit in bytes read from a cgroup file ("max" or absent: none, 0). */
+static double cgroup_limit(const char *path)
+{
+    FILE *f = fopen(path, "r");
+    double v = 0.0;
+    if (f) {
+        if (fscanf(f, "%lf", &v) != 1) v = 0.0;
+        fclose(f);
+    }
+    return v > 0.0 && v < 1e18 ? v : 0.0; /* cgroup v1 writes ~9.2e18 for "no limit" */
+}
+
+/* The memory this process may allocate: the least of physical memory, the
+ * address-space and data-segment limits (ulimit -v, -d) and the memory
+ * limit of its cgroup (v2, v1), so that check refuses what the run's
+ * allocation would fail on; `what` names the one that binds. */
+static double memory_have(const char **what)
+{
+    long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
+    double have = pages > 0 && psize > 0 ? (double)pages * (double)psize : 0.0;
+    *what = "physical memory";
+    const struct { int res; const char *name; } lims[] = {{RLIMIT_AS, "address-space limit, ulimit -v"},
+                                                          {RLIMIT_DATA, "data-segment limit, ulimit -d"}};
+    for (size_t k = 0; k < sizeof lims / sizeof lims[0]; ++k) {
+        struct rlimit rl;
+        if (getrlimit(lims[k].res, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY &&
+            (have <= 0.0 || (double)rl.rlim_cur < have)) {
+            have = (double)rl.rlim_cur;
+            *what = lims[k].name;
+        }
+    }
+    const char *cg[] = {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"};
+    for (size_t k = 0; k < sizeof cg / sizeof cg[0]; ++k) {
+        double v = cgroup_limit(cg[k]);
+        if (v > 0.0 && (have <= 0.0 || v < have)) {
+            have = v;
+            *what = "cgroup memory limit";
+        }
+    }
+    return have;
+}
+
 int pl_scene_memory_check(const pl_scene_t *scene, int nthreads, pl_err_t *err)
 {
     double np, per_p, cells, per_c;
     const double need = memory_bytes(scene, nthreads, &np, &per_p, &cells, &per_c);
-    long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
-    double have = pages > 0 && psize > 0 ? (double)pages * (double)psize : 0.0;
+    const char *what;
+    const double have = memory_have(&what);
     if (!(have > 0.0 && need > have)) return 0;
     const int fluid_big = per_p * np >= per_c * cells;
     return pl_scene_fail(scene, err, fluid_big ? OFF(fluid.density) : OFF(box.cells),
                          fluid_big ? "fluid.density" : "box.cells",
                          "the run needs about %.3g GB: %.3g fluid particles (box.cells x fluid.density) x %.0f B "
-                         "+ %.3g cells x %.0f B (at %d thread(s)) + %lld colloids x 600 B; this machine has %.3g GB "
-                         "(physical memory); allowed: a smaller box, density or thread count",
-                         need / 1e9, np, per_p, cells, per_c, nthreads, scene->colloids.count, have / 1e9);
+                         "+ %.3g cells x %.0f B (at %d thread(s)) + %lld colloids x 600 B; this process may use %.3g GB "
+                         "(%s); allowed: a smaller box, density or thread count",
+                         need / 1e9, np, per_p, cells, per_c, nthreads, scene->colloids.count, have / 1e9, what);
 }
 
 int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)

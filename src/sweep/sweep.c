@@ -516,10 +516,15 @@ int pl_sweep(pl_study_t *st, const pl_sweep_opts_t *o, pl_err_t *err)
     if (o->point >= s.n)
         return pl_err_set(err, PL_ERR_INPUT, "sweep: --point %lld: study %s has %d point(s); allowed: 0..%d",
                           o->point, pl_study_path(st), s.n, s.n - 1);
-    if (o->collect_only) return collect(&s, err);
     struct stat sb;
     char marker[4096];
     snprintf(marker, sizeof marker, "%s/points.json", s.out);
+    if (o->collect_only && (stat(marker, &sb) || !S_ISREG(sb.st_mode))) /* one line, before the script runs */
+        return pl_err_set(err, PL_ERR_INPUT, "sweep --collect: %s has no points.json (%s), nothing to collect; "
+                          "allowed: the output folder of a sweep of %s (run `peloid sweep %s` first, or give it "
+                          "with --out DIR)", s.out, stat(s.out, &sb) ? "no such folder" : !S_ISDIR(sb.st_mode)
+                          ? "not a folder" : "not a sweep's output", pl_study_path(st), pl_study_path(st));
+    if (o->collect_only) return collect(&s, err);
     if (!stat(s.out, &sb) && stat(marker, &sb))
         return pl_err_set(err, PL_ERR_INPUT, "sweep: %s exists and is not a sweep's output (no points.json); "
                           "allowed: a new directory or a previous output of a sweep (--out DIR)", s.out);
