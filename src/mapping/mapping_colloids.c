@@ -11,15 +11,12 @@
  *   hertz.K               K a0^2.5 / kT (Hecht Eq. 3; K from E, nu_P by Hertz theory)
  *   lubrication.viscosity eta_model = gamma nu_model (Hecht Eq. 4 with the model fluid)
  *   coupling.method       hecht1 (coupling I) / hecht2 (coupling II)
- *   colloids.substeps     the largest of: the mapping's MD step (Hecht Sec. VII:
- *                         min(tau_V, tau_P) / md_resolution, or md_dt), the contact
- *                         criterion of the min_contact_steps guard for the stiffest
- *                         contact the pair terms can produce (Hertz at the largest
- *                         allowed overlap, the primary minimum, WCA), and the damping
- *                         guard (Hecht Eqs. 4, 6).
- * A derived key given in the file is refused, naming it and the physical keys
- * it comes from; a pair term without its material constants is refused,
- * naming the missing keys. */
+ *   colloids.substeps     the largest of: the mapping's MD step (Hecht Sec. VII: min(tau_V,
+ *                         tau_P) / md_resolution, or md_dt), the min_contact_steps guard for the
+ *                         stiffest contact the pair terms can produce (Hertz at the largest allowed
+ *                         overlap, the primary minimum, WCA), the damping guard (Hecht Eqs. 4, 6).
+ * A derived key given in the file is refused, naming it and the physical keys it comes from;
+ * a pair term without its material constants is refused, naming the missing keys. */
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -43,22 +40,16 @@ static void prov(pl_mapping_colloid_t *c, const char *fmt, ...)
 
 static int given(const pl_scene_t *s, size_t off) { return pl_scene_line_of(s, off) > 0; }
 
-/* A derived key in the file: refused unless it carries the derived value
- * itself (an echoed effective scene reloads). */
-/* The derived keys whose model value depends on the time unit t0, which a
- * calibration replaces after a provisional first pass (PL_SCENE_PROVISIONAL):
- * the MD step counts and the model gravity g t0^2 / a0. */
-static int time_unit_key(size_t off)
-{
-    return off == OFF(colloids.substeps) || off == OFF(colloids.min_substeps) || off == OFF(colloids.slow_interval) ||
-           off == OFF(colloids.gravity);
-}
-
+/* A derived key in the file: refused unless it carries the derived value (an echoed scene
+ * reloads); in a provisional pass (PL_SCENE_PROVISIONAL) the keys of the time unit a calibration
+ * replaces (MD step counts, model gravity g t0^2 / a0) wait for the calibrated pass. */
 static int refuse(const pl_scene_t *s, pl_err_t *err, size_t off, const char *key, const char *from,
                   double given_v, double derived, const char *shown)
 {
+    const int time_unit = off == OFF(colloids.substeps) || off == OFF(colloids.min_substeps) ||
+                          off == OFF(colloids.slow_interval) || off == OFF(colloids.gravity);
     if (!given(s, off) || fabs(given_v - derived) <= 1e-12 * fabs(derived)) return 0;
-    if (s->mapping.provisional && time_unit_key(off)) return 0; /* the calibrated pass compares it */
+    if (s->mapping.provisional && time_unit) return 0;
     char v[64];
     if (shown) snprintf(v, sizeof v, "\"%s\"", shown);
     else snprintf(v, sizeof v, "%.6g", derived);
@@ -534,7 +525,7 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
          m->a0, cs->dlvo.length_unit_m, NULL},
         {OFF(colloids.hertz.K), "hertz.K",
          "physical.young_modulus + poisson_ratio, physical.hertz_constant or coarse_graining.hertz_K",
-         (mask & PL_CT_HERTZ) ? K : cs->hertz.K, cs->hertz.K, NULL}, /* without Hertz it acts on nothing (an echo prints it) */
+         (mask & PL_CT_HERTZ) ? K : cs->hertz.K, cs->hertz.K, NULL}, /* unused without Hertz */
         {OFF(colloids.lub.viscosity), "lubrication.viscosity", "physical.viscosity (model eta = gamma nu)", eta,
          cs->lub.viscosity, NULL},
         {OFF(coupling.method), "coupling.method", "coarse_graining.coupling", (double)method,
