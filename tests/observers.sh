@@ -518,5 +518,17 @@ $PY "$TOOLS/plot_sediment.py" sed_h5 > /dev/null 2> sed_h5.err; rc=$?
 if [ $rc -ne 0 ] && [ "$(wc -l < sed_h5.err)" -eq 1 ] && grep -q "^plot_sediment: sed_h5/colloids.h5: " sed_h5.err
 then ok "plot_sediment.py on a truncated colloids.h5: $(cat sed_h5.err)"
 else bad "plot_sediment.py on a truncated colloids.h5: rc $rc $(head -c 600 sed_h5.err)"; fi
+# sedimentation without gravity (issue 45): no Stokes velocity to divide by;
+# the run wrote 'over_stokes' = -inf and failed at its end before
+sed 's/gravity *= *9.81;/gravity = 0.0;/' "$TOOLS/../scenes/quickstart.cfg" > g0.cfg
+"$PELOID" run g0.cfg --out g0 --steps 400 > /dev/null 2> g0.err; rc=$?
+if [ $rc -eq 0 ] && $PY - <<'PYEOF'
+import json, h5py
+e = json.load(open("g0/summary.json"))["observables"]["initial_settling_velocity"]
+assert e["stokes"] == 0.0 and "over_stokes" not in e and "no gravity" in e["note"], e
+h5py.File("g0/observables.h5", "r").close()
+PYEOF
+then ok "sedimentation with physical.gravity = 0: no over_stokes, a note, observables.h5 written"
+else bad "gravity 0: rc $rc $(grep -m1 'error:' g0.err)"; fi
 echo "observers.sh: $pass passed, $fail failed"
 [ $fail -eq 0 ]

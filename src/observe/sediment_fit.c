@@ -133,7 +133,8 @@ void pl_sediment_summary(pl_json_t *b, json_t *all, const pl_scene_t *sc, const 
     pl_json_real_or_null(b, e, "stokes", vs);
     /* Richardson & Zaki 1954 for Re < 0.2: (1 - phi)^4.65; Hecht Eq. 37 */
     pl_json_real_or_null(b, e, "richardson_zaki_4.65", vs * pow(1.0 - phi, 4.65));
-    if (found) pl_json_real_or_null(b, e, "over_stokes", -f.value / vs);
+    if (found && vs != 0.0) pl_json_real_or_null(b, e, "over_stokes", -f.value / vs);
+    if (vs == 0.0) pl_json_str(b, e, "note", "no gravity: no Stokes settling to compare with");
     if (sc->mapping.enabled) {
         if (found) {
             pl_json_real(b, e, "value_m_per_s", -f.value * to_si);
