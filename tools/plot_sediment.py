@@ -98,16 +98,16 @@ def main():
 
     si = summ.get("units_si") or None
     ts, ls, vs = (si["t0_s"], si["a0_m"] * 1e6, si["a0_m"] * 1e6 / si["t0_s"]) if si else (1.0, 1.0, 1.0)
-    tu, lu, vu = ("s", "um", "um/s") if si else ("t0", "a0", "a0/t0")
+    tu, lu, vu = ("s", "µm", "µm/s") if si else ("t0", "a0", "a0/t0")
 
     print("plot_sediment: %s: %d colloids, R = %.4g a0, M = %.4g m_f, g = %.4g a0/t0^2"
           % (a.outdir, z.shape[1], pr["R"], pr["M"], pr["g"]))
     print("  measured initial settling speed  %.4g +- %.2g %s  (%.4g a0/t0, fit to t = %.4g %s)"
           % (v * vs, se * vs, vu, v, t_fit * ts, tu))
     print("  %s, xi = %-7.4g  %.4g %s  (measured / Stokes = %.2f)"
-          % (pr["stokes_label"], pr["xi_stokes"], pr["v_stokes"] * vs, vu, v / pr["v_stokes"]))
+          % (pr["stokes_label"], pr["xi_stokes"], pr["v_stokes"] * vs, vu, v / pr["v_stokes"] if pr["v_stokes"] else math.nan))
     print("  coupling II, xi_II = %-12.4g  %.4g %s  (measured / v_II = %.2f)"
-          % (pr["xi_II"], pr["v_II"] * vs, vu, v / pr["v_II"]))
+          % (pr["xi_II"], pr["v_II"] * vs, vu, v / pr["v_II"] if pr["v_II"] else math.nan))
 
     import matplotlib
     matplotlib.use("Agg")
@@ -141,9 +141,23 @@ def main():
     ax2.set_ylabel("centre-of-mass height [%s]" % lu)
     ax2.set_title("settling of the centre of mass")
     ax2.legend(fontsize=8)
+    fig.suptitle(system_title(summ), fontsize=10)
     png = a.png or os.path.join(a.outdir, "sediment.png")
     fig.savefig(png, dpi=110)
     print("  wrote %s" % png)
+
+
+def system_title(summ):
+    """The system a plot shows: the scene's name and, for a physical scene,
+    its radius, volume fraction, salt and coupling."""
+    sc = summ.get("scene", {})
+    t = str(sc.get("name", ""))
+    ph, cg = sc.get("physical"), sc.get("coarse_graining")
+    if summ.get("units_si") and ph and cg:
+        salt = (f"I = {ph['ionic_strength'] * 1e3:.3g} mM" if ph.get("ionic_strength", 0) > 0
+                else f"1/κ = {1e9 / ph['kappa']:.3g} nm" if ph.get("kappa", 0) > 0 else "no salt given")
+        t += f": R = {ph['radius'] * 1e6:.3g} µm, φ = {ph['volume_fraction']:.3g}, {salt}, coupling {cg['coupling']}"
+    return t
 
 
 if __name__ == "__main__":

@@ -361,7 +361,7 @@ def error_table(obs, lines):
         need = v.get("wall_s_for_target")
         tgt = (f"{need:.3g} s for {100 * v['target_rel_error']:.3g} %"
                + ("" if v.get("extrapolation_reliable", True) else " (no plateau: a lower bound)")) if need else "-"
-        val = f"{v['value']:.5g} ± {v['stderr']:.2g} {v['unit']}"
+        val = f"{v['value']:.5g} ± {v['stderr']:.2g}" + ("" if v["unit"] in ("1", "") else f" {v['unit']}")
         if "unit_si" in v and v["unit_si"] != "1":  # a physical scene: the SI value beside
             val += f" = {v['value_si']:.5g} ± {v['stderr_si']:.2g} {v['unit_si']}"
         lines.append(f"| {k} | {val} | {pts} | {tgt} |")

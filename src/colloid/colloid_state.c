@@ -440,9 +440,12 @@ int pl_colloid_create(const pl_scene_t *scene, int nthreads, pl_colloid_t **out,
         rc = pl_scene_fail(scene, err, OFF(colloids.init), "colloids.init",
                            "initial colloids %zu and %d: the collision time pi sqrt(m_red/U'') = %.4g t0 "
                            "is resolved by %.3g MD steps < colloids.min_contact_steps = %g (the contact "
-                           "guard would stop the run at its first MD step); raise colloids.substeps "
-                           "(physical{}: coarse_graining.reach_energy) or start elsewhere",
-                           stiff, c->g_partner[c->n + stiff], tc, tc / c->dt, c->min_contact_steps);
+                           "guard would stop the run at its first MD step); %s",
+                           stiff, c->g_partner[c->n + stiff], tc, tc / c->dt, c->min_contact_steps,
+                           scene->mapping.enabled
+                               ? "start without touching pairs (colloids.init = \"lattice\"), or resolve the contact: "
+                                 "raise coarse_graining.reach_energy (the MD step is derived from it)"
+                               : "raise colloids.substeps or start elsewhere (colloids.init = \"lattice\")");
         pl_colloid_free(c);
         return rc;
     }

@@ -68,9 +68,9 @@ void pl_mapping_print_text(const pl_mapping_t *m, const pl_mapping_colloid_t *c,
     fprintf(f, "  SRD: gamma = %g, lambda = %g a0, dt = %.4g s = %g t0, nu = %.4g a0^2/t0 (nu dt/a0^2 = %.4f)"
                " = %.4g m^2/s (real %.4g)\n",
             cg->gamma, cg->lambda, m->dt, cg->lambda, m->nu_sim, m->nu_coeff, m->model.nu, m->real.nu);
-    fprintf(f, "  colloid: R = %.4g a0, mass = %.4g m_f, gravity %.4g m/s^2 = %.4g a0/t0^2 (Hecht Eq. 31), "
-               "A_H = %.4g J in the model\n",
-            m->sigma, m->mass_sim, m->model.g, m->g_sim, m->model.hamaker);
+    fprintf(f, "  colloid: R = %.4g a0, mass = %.4g m_f, gravity %.4g m/s^2 (real) = %.4g a0/t0^2 in the model "
+               "(Hecht Eq. 31), A_H = %.4g J in the model\n",
+            m->sigma, m->mass_sim, m->real.g, m->g_sim, m->model.hamaker);
     if (c)
         fprintf(f, "           A_H = %.4g kT, Coulomb prefactor (Hecht Eq. 1) = %.4g kT/a0, kappa = %.4g /a0, "
                    "l = %.4g a0, colloids = %lld\n",
