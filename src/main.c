@@ -23,6 +23,7 @@ static const char *const usage =
     "commands:\n"
     "  run SCENE [--out DIR] [--steps N] [--threads N] [--restart CHECKPOINT]\n"
     "            [--restart-changed KEY[,KEY...]] [--force] [--strict] [--allow-include-anywhere]\n"
+    "            [--calibrate never|auto|always]\n"
     "        run a scene; writes DIR/{thermo.tsv, summary.json, checkpoint.h5, scene.cfg\n"
     "        [, fields.h5 + fields.xdmf] [, colloids.h5 [+ colloids.xyz]]}.  DIR\n"
     "        defaults to out/<scene name>; an existing DIR is\n"
@@ -41,12 +42,18 @@ static const char *const usage =
     "        exceeds the cores).\n"
     "        A scene's @include files are resolved relative to the including file and\n"
     "        must lie in the scene's directory tree unless --allow-include-anywhere.\n"
-    "  check SCENE [--strict] [--allow-include-anywhere]\n"
+    "        --calibrate (also for check and params): where a physical scene's colloid D\n"
+    "        (coupling I, II, potential) comes from: auto (default) the shipped calibration\n"
+    "        or the cache, else a calibration run (its estimated duration and progress on\n"
+    "        stderr); always a calibration run, stored in the cache; never the coupling's\n"
+    "        theory with its stated relative error, marked in params, the run's log and\n"
+    "        summary.json \"calibration\" (t0 and every SI time then carry that error)\n"
+    "  check SCENE [--strict] [--allow-include-anywhere] [--calibrate MODE]\n"
     "        validate a scene without running it; a physical scene's audit warnings\n"
     "        (a dimensionless number out of the papers' range, an implausible input\n"
     "        with its likely unit mistake) are printed, and refused with --strict\n"
     "        (also for run and params)\n"
-    "  params SCENE [--json] [--strict] [--allow-include-anywhere]\n"
+    "  params SCENE [--json] [--strict] [--allow-include-anywhere] [--calibrate MODE]\n"
     "        print the derived SRD parameters: lambda, nu_kin, nu_col, nu, eta, D_f,\n"
     "        Sc, tau_f (Padding & Louis 2006, Eqs. 4, 6, 9-15)\n"
     "  report OUTDIR    write OUTDIR/report.md with a plot of every observable the run\n"
@@ -54,6 +61,7 @@ static const char *const usage =
     "                   time table (tools/report.py with /usr/bin/python3; PELOID_TOOLS\n"
     "                   names another tools directory)\n"
     "  sweep STUDY [--out DIR] [--jobs J] [--threads T] [--point K] [--slurm] [--collect]\n"
+    "              [--calibrate MODE]\n"
     "        run a parameter study: every point (the study's base scene with its keys\n"
     "        set) as its own `peloid run` in DIR/ID (default: the study's out), J\n"
     "        processes of T threads, each bound to cores of its own (default, C\n"
@@ -63,7 +71,8 @@ static const char *const usage =
     "        finished points are skipped; DIR/sweep.{tsv,json,png} collect them.\n"
     "        --point K runs point K only; --slurm writes a Slurm job array\n"
     "        (DIR/sweep.sbatch, collect.sbatch, submit.sh) and runs nothing;\n"
-    "        --collect only rebuilds the table and plot.  Exit 1: some points failed.\n"
+    "        --collect only rebuilds the table and plot; --calibrate MODE is passed to\n"
+    "        every point's run.  Exit 1: some points failed.\n"
     "        A signal (SIGINT/SIGTERM/SIGHUP) is forwarded to the running points (each\n"
     "        in its own process group), which stop after their step with a checkpoint;\n"
     "        the table is written, exit 128 + signal; a second signal kills them at\n"
@@ -108,6 +117,15 @@ static int parse_ll(const char *s, long long lo, long long hi, long long *out)
     if (*s == '\0' || *end != '\0' || errno == ERANGE || v < lo || v > hi) return -1;
     *out = v;
     return 0;
+}
+
+/* --calibrate VALUE (NULL: missing) into *mode; else one line naming the
+ * option, the value and the allowed ones, and exit 2. */
+static int calibrate_opt(const char *v, int *mode)
+{
+    if (v && !pl_calibrate_mode_parse(v, mode)) return 0;
+    fprintf(stderr, "peloid: error: --calibrate %.100s: allowed: never, auto, always\n", v ? v : "(no value)");
+    return PL_ERR_INPUT;
 }
 
 /* The signal that asked the run to stop (0: none).  The one mutable
@@ -181,14 +199,18 @@ static int cmd_run(int argc, char **argv)
                        .progress = isatty(2), .log = stderr, .restart_changed = NULL,
                        .interrupt = &interrupt_signal, .end = &end};
     unsigned flags = 0;
-    int strict = 0;
+    int strict = 0, rc;
     const char *scene_path = NULL;
     char msg[256];
+    pl_calibrate_opts_t co = {.mode = PL_CALIBRATE_AUTO, .log = stderr, .terminal = o.progress};
     for (int i = 0; i < argc; ++i) {
         const char *a = argv[i];
         int has = i + 1 < argc;
         long long v;
         if (!strcmp(a, "--force")) o.force = 1;
+        else if (!strcmp(a, "--calibrate")) {
+            if ((rc = calibrate_opt(has ? argv[++i] : NULL, &co.mode))) return rc;
+        }
         else if (!strcmp(a, "--strict")) strict = 1;
         else if (!strcmp(a, "--allow-include-anywhere")) flags |= PL_SCENE_INCLUDE_ANYWHERE;
         else if (!strcmp(a, "--out") && has) o.out_dir = argv[++i];
@@ -224,8 +246,8 @@ static int cmd_run(int argc, char **argv)
                         "depend on the count)\n",
                 asked, getenv("OMP_THREAD_LIMIT") ? getenv("OMP_THREAD_LIMIT") : "?", o.threads, o.threads);
     pl_scene_t *scene = malloc(sizeof *scene);
-    int rc = scene ? pl_scene_load_coupling_true(scene_path, flags, PL_CALIBRATION_DIR, o.threads, stderr, scene, &err)
-                   : PL_ERR_NOMEM;
+    rc = scene ? pl_scene_load_coupling_true(scene_path, flags, PL_CALIBRATION_DIR, o.threads, &co, scene, &err)
+               : PL_ERR_NOMEM;
     if (!rc) rc = pl_mapping_report_strict(scene, strict, &err); /* --strict: the audit's warnings refused */
     if (!rc) { /* the audit's warnings: pl_run prints them once nothing refuses the run */
         catch_signals(on_signal);
@@ -239,10 +261,14 @@ static int cmd_run(int argc, char **argv)
 static int cmd_scene(int argc, char **argv, int params)
 {
     const char *path = NULL;
-    int json = 0, strict = 0;
+    int json = 0, strict = 0, rc;
     unsigned flags = 0;
+    pl_calibrate_opts_t co = {.mode = PL_CALIBRATE_AUTO, .log = stderr, .terminal = isatty(2)};
     for (int i = 0; i < argc; ++i) {
         if (!strcmp(argv[i], "--allow-include-anywhere")) flags |= PL_SCENE_INCLUDE_ANYWHERE;
+        else if (!strcmp(argv[i], "--calibrate")) {
+            if ((rc = calibrate_opt(i + 1 < argc ? argv[++i] : NULL, &co.mode))) return rc;
+        }
         else if (params && !strcmp(argv[i], "--json")) json = 1;
         else if (!strcmp(argv[i], "--strict")) strict = 1;
         else if (argv[i][0] != '-' && !path) path = argv[i];
@@ -258,7 +284,7 @@ static int cmd_scene(int argc, char **argv, int params)
     if (pl_threads_resolve(0, &nthreads, &err)) return fail(&err);
     pl_scene_t *scene = malloc(sizeof *scene);
     if (!scene) return PL_ERR_NOMEM;
-    int rc = pl_scene_load_coupling_true(path, flags, PL_CALIBRATION_DIR, nthreads, stderr, scene, &err);
+    rc = pl_scene_load_coupling_true(path, flags, PL_CALIBRATION_DIR, nthreads, &co, scene, &err);
     if (!rc && params && json) {
         rc = pl_params_write_json(scene, stdout, strict, &err);
     } else if (!rc && params) {
@@ -269,6 +295,9 @@ static int cmd_scene(int argc, char **argv, int params)
         rc = pl_run_check(scene, &err);
         if (!rc) rc = pl_mapping_report_strict(scene, strict, &err);
         if (!rc) pl_mapping_warnings_print(scene, stderr);
+        char cal[800] = ""; /* where the colloid D came from, and how sure it is */
+        if (!rc && scene->mapping.enabled) pl_mapping_calibration_line(&scene->mapping.map, cal, sizeof cal);
+        if (cal[0]) fprintf(stderr, "peloid: %s\n", cal);
         if (!rc) printf("%s: ok\n", path);
     }
     free(scene);
@@ -298,7 +327,13 @@ static int cmd_sweep(int argc, char **argv)
         const char *a = argv[i];
         int has = i + 1 < argc;
         long long v;
+        int mode;
         if (!strcmp(a, "--slurm")) o.slurm = 1;
+        else if (!strcmp(a, "--calibrate")) {
+            int rc = calibrate_opt(has ? argv[++i] : NULL, &mode);
+            if (rc) return rc;
+            o.calibrate = pl_calibrate_mode_name(mode);
+        }
         else if (!strcmp(a, "--collect")) o.collect_only = 1;
         else if (!strcmp(a, "--out") && has) o.out_dir = argv[++i];
         else if ((!strcmp(a, "--jobs") || !strcmp(a, "--threads") || !strcmp(a, "--point")) && has) {

@@ -96,7 +96,21 @@ typedef struct {
     double wall_s;            /* wall time of the run (0: read from a cache) */
     double concentration;     /* 1 - c phi of the calibration box (PL Sec. VI.C; 1: not corrected) */
     char cache[640];          /* the cache file it was read from or written to */
+    /* provenance (src/plan/calibrate_mode.c), for every output: the mode the
+     * run asked for (PL_CALIBRATE_*), where d_inf came from (PL_CALSRC_*;
+     * NONE: the scene was loaded without asking, e.g. a model scene), and
+     * for PL_CALSRC_THEORY the theory's stated relative error with the
+     * range of measured / theory over the shipped calibrations it rests on */
+    int mode, source;
+    double theory_error, theory_lo, theory_hi;
+    int theory_files;
 } pl_mapping_calibration_t;
+
+/* --calibrate: AUTO the shipped set or the cache, else a calibration run;
+ * ALWAYS a calibration run (stored in the cache); NEVER the coupling's
+ * theory (d_col_theory) with its stated error. */
+enum { PL_CALIBRATE_AUTO = 0, PL_CALIBRATE_NEVER = 1, PL_CALIBRATE_ALWAYS = 2 };
+enum { PL_CALSRC_NONE = 0, PL_CALSRC_SHIPPED, PL_CALSRC_CACHE, PL_CALSRC_RUN, PL_CALSRC_THEORY };
 
 /* ---- coarse-graining choices ------------------------------------------ */
 typedef struct {
@@ -338,6 +352,12 @@ void pl_mapping_diffusion_box(struct pl_scene *scene);
 double pl_mapping_concentration_c(const struct pl_scene *scene);
 void pl_mapping_diffusion_print(const pl_mapping_t *m, FILE *out);
 struct json_t *pl_mapping_diffusion_json(const pl_mapping_t *m);
+/* Where the colloid D came from, for every output (params, the run's log,
+ * summary.json "calibration"): one line without a newline into buf, or the
+ * object {"mode", "source", "relative_error", ...}; both empty / NULL when
+ * the scene was loaded without a calibration decision (source NONE). */
+void pl_mapping_calibration_line(const pl_mapping_t *m, char *buf, size_t n);
+struct json_t *pl_mapping_calibration_json(const pl_mapping_t *m);
 
 /* The audit's warnings (not its notes) of a physical scene, one line each
  * ("peloid: warning: SCENE: NAME: text"); nothing for a model scene. */

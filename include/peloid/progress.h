@@ -18,6 +18,8 @@ typedef struct {
     double t0_s;        /* > 0: physical scene, t0 in seconds (time shown in s too) */
     double fluid_n;     /* fluid particles (updates per step) */
     double md_per_step; /* colloid MD steps per collision step (0: none) */
+    const char *label;  /* NULL: a run (simulated time shown); else e.g. "calibration": the
+                           lines are named by it and show the elapsed wall time instead */
 } pl_progress_params_t;
 
 /* NULL when out of memory (progress is then silent). */

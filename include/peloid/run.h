@@ -74,14 +74,33 @@ int pl_params_write_json(const pl_scene_t *scene, FILE *out, int strict, pl_err_
 /* Coupling-true time (src/plan/calibrate.c).  Whether a scene's mapping
  * needs the measured colloid D: a physical scene with coupling I or II. */
 int pl_calibration_needed(const pl_scene_t *scene);
+/* How a run, check or params gets the colloid D (--calibrate) and where a
+ * calibration run reports: before it starts, its size and an estimate of its
+ * duration (extrapolated from its first steps), then progress lines (percent,
+ * elapsed, ETA) every progress_s seconds, or one line rewritten in place on a
+ * terminal (src/io/progress.c). */
+typedef struct {
+    int mode;          /* PL_CALIBRATE_* (mapping.h) */
+    FILE *log;         /* NULL: silent */
+    int terminal;      /* log is a terminal */
+    double progress_s; /* > 0: seconds between progress lines off a terminal */
+} pl_calibrate_opts_t;
+/* "never", "auto", "always" -> PL_CALIBRATE_*; -1 for anything else. */
+int pl_calibrate_mode_parse(const char *s, int *mode);
+const char *pl_calibrate_mode_name(int mode);
 /* The colloid D of the scene's model fluid and colloid, from
  * shipped_dir/calibration-<key>.json, else the user's cache, else a
- * calibration run (nthreads; a line on log, which may be NULL), cached. */
-int pl_calibrate(const pl_scene_t *scene, const char *shipped_dir, int nthreads, FILE *log,
+ * calibration run (nthreads), cached; with PL_CALIBRATE_ALWAYS a calibration
+ * run whatever is stored (the cache entry replaced). */
+int pl_calibrate(const pl_scene_t *scene, const char *shipped_dir, int nthreads, const pl_calibrate_opts_t *o,
                  pl_mapping_calibration_t *cal, pl_err_t *err);
-/* pl_scene_load_flags, then, where needed, pl_calibrate and the scene
- * loaded again with the calibrated D (pl_scene_load_calibrated). */
-int pl_scene_load_coupling_true(const char *path, unsigned flags, const char *shipped_dir, int nthreads, FILE *log,
-                                pl_scene_t *scene, pl_err_t *err);
+/* The coupling theory's relative error (PL_CALSRC_THEORY fields of cal) for
+ * the scene's coupling (src/plan/calibrate_mode.c). */
+void pl_calibrate_theory(const pl_scene_t *scene, pl_mapping_calibration_t *cal);
+/* pl_scene_load_flags, then, where needed, pl_calibrate (or, with
+ * PL_CALIBRATE_NEVER, the theory) and the scene loaded again with that D
+ * (pl_scene_load_calibrated); the provenance lands in scene->mapping.calib. */
+int pl_scene_load_coupling_true(const char *path, unsigned flags, const char *shipped_dir, int nthreads,
+                                const pl_calibrate_opts_t *o, pl_scene_t *scene, pl_err_t *err);
 
 #endif

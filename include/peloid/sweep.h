@@ -64,6 +64,7 @@ typedef struct {
     int slurm;            /* write the job-array scripts, run nothing */
     int collect_only;     /* only collect the table and plot */
     int progress_tty;     /* redraw one progress line (stderr is a terminal) */
+    const char *calibrate; /* NULL, or a --calibrate mode every point's run is given */
     FILE *log;
     /* The driver's signal flag (NULL: none): 0 none, S > 0 a first signal S
      * (forwarded to the running points, which stop after their step and

@@ -53,15 +53,24 @@ static void line(pl_progress_t *g, long long step, double now)
     double todo = (double)(p->last - p->first), done = (double)(step - p->first);
     double t = (double)step * p->dt, el = now - g->t_start;
     double rate = g->rate > 0 ? g->rate : (el > 0 ? done / el : 0.0);
-    char eta[32], tsim[64] = "", rates[96] = "";
+    char eta[32], tsim[96] = "", rates[96] = "", name[64] = "";
     fmt_dur(eta, sizeof eta, rate > 0 ? (todo - done) / rate : NAN);
-    if (p->t0_s > 0) snprintf(tsim, sizeof tsim, " (%.4g s)", t * p->t0_s);
+    if (p->label) { /* a stage before the run: its wall time, not a simulated one */
+        char e[32];
+        fmt_dur(e, sizeof e, el);
+        snprintf(name, sizeof name, "%s: ", p->label);
+        snprintf(tsim, sizeof tsim, "elapsed %s", e);
+    } else {
+        int k = snprintf(tsim, sizeof tsim, "t = %.6g t0", t);
+        if (p->t0_s > 0 && k > 0 && (size_t)k < sizeof tsim)
+            snprintf(tsim + k, sizeof tsim - (size_t)k, " (%.4g s)", t * p->t0_s);
+    }
     int k = 0;
     if (p->fluid_n > 0) k += snprintf(rates + k, sizeof rates - (size_t)k, "  %.3g Mupdates/s", rate * p->fluid_n / 1e6);
     if (p->md_per_step > 0 && k >= 0 && (size_t)k < sizeof rates)
         snprintf(rates + k, sizeof rates - (size_t)k, "  %.3g MD steps/s", rate * p->md_per_step);
-    fprintf(p->out, "%s%sstep %lld/%lld %5.1f%%  t = %.6g t0%s  ETA %s%s%s", p->terminal ? "\r" : "",
-            p->terminal ? "  " : "peloid: ", step, p->last, todo > 0 ? 100.0 * done / todo : 100.0, t, tsim, eta,
+    fprintf(p->out, "%s%s%sstep %lld/%lld %5.1f%%  %s  ETA %s%s%s", p->terminal ? "\r" : "",
+            p->terminal ? "  " : "peloid: ", name, step, p->last, todo > 0 ? 100.0 * done / todo : 100.0, tsim, eta,
             rates, p->terminal ? "\033[K" : "\n");
     fflush(p->out);
     g->line_open = p->terminal;
@@ -129,12 +138,13 @@ void pl_progress_finish(pl_progress_t *g, long long step)
     double el = now - g->t_start, done = (double)(step - p->first);
     char wall[32];
     fmt_dur(wall, sizeof wall, el);
-    fprintf(p->out, "peloid: done: steps %lld..%lld in %s", p->first, step, wall);
+    fprintf(p->out, "peloid: %s%sdone: steps %lld..%lld in %s", p->label ? p->label : "", p->label ? ": " : "",
+            p->first, step, wall);
     if (p->fluid_n > 0 && el > 0) fprintf(p->out, ", %.4g Mupdates/s", done * p->fluid_n / el / 1e6);
     if (p->md_per_step > 0 && el > 0) fprintf(p->out, ", %.4g MD steps/s", done * p->md_per_step / el);
     double t = (double)step * p->dt;
-    fprintf(p->out, "; simulated time %.6g t0", t);
-    if (p->t0_s > 0) fprintf(p->out, " = %.4g s", t * p->t0_s);
+    if (!p->label) fprintf(p->out, "; simulated time %.6g t0", t);
+    if (!p->label && p->t0_s > 0) fprintf(p->out, " = %.4g s", t * p->t0_s);
     fputc('\n', p->out);
     for (int k = 0; k < g->nfiles; ++k) {
         struct stat st;

@@ -45,7 +45,70 @@ static double si(const pl_mapping_t *m) { return m->a0 * m->a0 / m->t0; }
 
 static const char *source(const pl_mapping_t *m)
 {
-    return m->calib.d_inf > 0 ? "calibration" : "theory (PL Eqs. 39-41, not verified)";
+    return m->calib.d_inf > 0 ? "calibration"
+           : m->calib.source == PL_CALSRC_THEORY ? "theory (PL Eqs. 39-41, --calibrate never)"
+                                                 : "theory (PL Eqs. 39-41, not verified)";
+}
+
+static const char *const SOURCE_NAMES[] = {[PL_CALSRC_NONE] = "none", [PL_CALSRC_SHIPPED] = "shipped",
+                                           [PL_CALSRC_CACHE] = "cache", [PL_CALSRC_RUN] = "calibration run",
+                                           [PL_CALSRC_THEORY] = "theory"};
+
+static const char *source_name(int s)
+{
+    return s >= 0 && s < (int)(sizeof SOURCE_NAMES / sizeof SOURCE_NAMES[0]) ? SOURCE_NAMES[s] : "?";
+}
+
+static const char *mode_name(int mode)
+{
+    return mode == PL_CALIBRATE_NEVER ? "never" : mode == PL_CALIBRATE_ALWAYS ? "always" : "auto";
+}
+
+void pl_mapping_calibration_line(const pl_mapping_t *m, char *buf, size_t n)
+{
+    const pl_mapping_calibration_t *c = &m->calib;
+    if (n) buf[0] = '\0';
+    if (c->source == PL_CALSRC_NONE || !n) return;
+    if (c->source == PL_CALSRC_THEORY)
+        snprintf(buf, n, "calibration: --calibrate never: the colloid D is the coupling's theory 1/xi = %.5g "
+                 "a0^2/t0, relative error %.2g (RMS of measured/theory - 1 over %d shipped calibration(s) of this "
+                 "coupling: measured/theory %.3g..%.3g); t0 and every SI time and rate carry it",
+                 m->d_col_sim, c->theory_error, c->theory_files, c->theory_lo, c->theory_hi);
+    else
+        snprintf(buf, n, "calibration: --calibrate %s: the colloid D measured, %.5g +- %.2g a0^2/t0 (relative "
+                 "error %.2g), %s %s", mode_name(c->mode), c->d_inf, c->d_inf_se, c->d_inf_se / c->d_inf,
+                 c->source == PL_CALSRC_RUN ? "run now, stored in" : "read from the", c->source == PL_CALSRC_RUN
+                 ? (c->cache[0] ? c->cache : "nowhere") : c->source == PL_CALSRC_SHIPPED ? "shipped set" : "cache");
+}
+
+json_t *pl_mapping_calibration_json(const pl_mapping_t *m)
+{
+    const pl_mapping_calibration_t *c = &m->calib;
+    if (c->source == PL_CALSRC_NONE) return NULL;
+    json_t *o = json_object();
+    const int th = c->source == PL_CALSRC_THEORY;
+    json_object_set_new(o, "mode", json_string(mode_name(c->mode)));
+    json_object_set_new(o, "source", json_string(source_name(c->source)));
+    json_object_set_new(o, "d_a0_2_t0", json_real(m->d_col_sim));
+    if (th && !isfinite(c->theory_error)) { /* no shipped calibration of this coupling */
+        json_object_set_new(o, "relative_error", json_null());
+    } else {
+        json_object_set_new(o, "relative_error", json_real(th ? c->theory_error : c->d_inf_se / c->d_inf));
+    }
+    if (th) {
+        json_object_set_new(o, "relative_error_of", json_string("RMS of D_measured / D_theory - 1 over the shipped "
+                                                                "calibrations of this coupling"));
+        json_object_set_new(o, "shipped_calibrations", json_integer(c->theory_files));
+        if (c->theory_files > 0) {
+            json_object_set_new(o, "measured_over_theory_min", json_real(c->theory_lo));
+            json_object_set_new(o, "measured_over_theory_max", json_real(c->theory_hi));
+        }
+    } else {
+        json_object_set_new(o, "relative_error_of", json_string("standard error of the measured D"));
+        json_object_set_new(o, "file", json_string(c->cache));
+        json_object_set_new(o, "wall_s", json_real(c->wall_s));
+    }
+    return o;
 }
 
 void pl_mapping_diffusion_print(const pl_mapping_t *m, FILE *f)
@@ -63,6 +126,9 @@ void pl_mapping_diffusion_print(const pl_mapping_t *m, FILE *f)
                    "%s\n",
                 c->n_colloids, c->box, c->phi, c->steps, c->d_box, c->d_box_se, c->hasimoto, c->d_theory,
                 c->d_inf / c->d_theory, c->wall_s > 0 ? "run now, cached in" : "read from", c->cache);
+    char line[800];
+    pl_mapping_calibration_line(m, line, sizeof line);
+    if (line[0]) fprintf(f, "    %s\n", line);
     if (c->d_inf > 0 && c->concentration > 0 && c->concentration != 1.0)
         fprintf(f, "    calibration concentration correction: D_box + images = D (1 - c phi) = D x %.4f, c = %.4f "
                    "(slip spheres 1.1795, PL Sec. VI.C; stick spheres 1.8315, Batchelor 1976)\n",

@@ -217,13 +217,14 @@ static int apply_box(pl_scene_t *s, pl_err_t *err)
 /* A coarse_graining.md_dt longer than the SRD step cannot be used (one MD
  * step per SRD step at most): refused, not replaced.  Checked once the SRD
  * step in seconds is final: given (srd_dt), kinematic matching, calibrated,
- * or without colloids (no calibration run follows). */
+ * the theory's D by choice (--calibrate never), or without colloids (no
+ * calibration run follows). */
 static int check_md_dt(const pl_scene_t *s, pl_err_t *err)
 {
     const pl_scene_mapping_t *mp = &s->mapping;
     const pl_mapping_t *m = &mp->map;
     int final = mp->cg.srd_dt > 0 || mp->cg.time_match == PL_MATCH_KINEMATIC || mp->calib.d_inf > 0 ||
-                mp->colloid.n_colloids == 0;
+                mp->calib.source == PL_CALSRC_THEORY || mp->colloid.n_colloids == 0;
     if (!final || !(mp->cg.md_dt > 0) || mp->cg.md_dt <= m->dt * (1.0 + 1e-9)) return 0;
     /* the SRD step in seconds (t0) follows the physical inputs: an implausible one is at fault */
     const size_t from[] = {OFF(mapping.physical.viscosity), OFF(mapping.physical.radius),

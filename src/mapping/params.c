@@ -92,6 +92,8 @@ int pl_params_write_json(const pl_scene_t *sc, FILE *out, int strict, pl_err_t *
         pl_json_t b = {err, sc->path, "", 0};
         pl_json_set(&b, doc, "srd", srd);
         pl_json_set(&b, doc, "mapping", map);
+        json_t *cal = pl_mapping_calibration_json(&sc->mapping.map); /* as summary.json's */
+        if (cal) pl_json_set(&b, doc, "calibration", cal);
         if (b.failed) {
             json_decref(doc);
             return err->code;

@@ -44,7 +44,12 @@
  * store the result or a lock not released in time costs this run a
  * calibration and a warning, never the run.  The
  * run is bitwise deterministic, so a cached and a fresh calibration agree
- * to the last bit (tests/calibration.sh). */
+ * to the last bit (tests/calibration.sh).  --calibrate always skips the
+ * shipped set and the cache on reading and replaces the entry; never is
+ * src/plan/calibrate_mode.c.  A run that has to measure says so before it
+ * starts (its size), times its first steps (CAL_PROBE_FRACTION of them, or
+ * CAL_PROBE_S of wall time, whichever comes first) and extrapolates them to
+ * an estimated duration, then reports progress (src/io/progress.c). */
 #include <errno.h>
 #include <fcntl.h>
 #include <jansson.h>
@@ -58,6 +63,7 @@
 #include "peloid/colloid.h"
 #include "peloid/depletion.h"
 #include "peloid/io.h"
+#include "peloid/progress.h"
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/run.h"
 #include "peloid/sim.h"
@@ -80,6 +86,9 @@ static const double CAL_PHI_P = 0.02, CAL_BUDGET_P = 4e9;
 /* coupling I's colloid-colloid contact: the gap a pair reaches with this energy (a thermal pair,
  * e^-20), resolved as the contact guard asks (colloids.min_contact_steps per collision time) */
 static const double CAL_CONTACT_KT = 20.0;
+/* the estimate: the first 1 % of the steps (at least 10) or 2 s of wall time, whichever comes first; progress lines
+ * off a terminal every output.progress_s seconds, at most CAL_PROGRESS_S */
+static const double CAL_PROBE_FRACTION = 0.01, CAL_PROBE_MIN = 10.0, CAL_PROBE_S = 2.0, CAL_PROGRESS_S = 5.0;
 
 /* ---- the model run ------------------------------------------------------ */
 
@@ -227,9 +236,39 @@ static int cal_plan(const pl_scene_t *sc, cal_plan_t *p)
     return M > 0 && tau_v > 0 ? 0 : -1;
 }
 
+/* What the person waiting is told (NULL pg: nothing): the estimated
+ * duration once the first `probe` steps (or CAL_PROBE_S) are timed, then
+ * progress over all `total` steps of the replicas.  The first step (memory
+ * first touched, threads started) is left out of the rate: the estimate is
+ * the time so far plus the remaining steps at the rate of steps 2..probe. */
+typedef struct {
+    pl_progress_t *pg;
+    double t_start, t_first;
+    long long total, probe;
+    int estimated;
+} cal_watch_t;
+
+static void cal_tick(cal_watch_t *w, long long step)
+{
+    if (!w->pg) return;
+    if (w->estimated) {
+        pl_progress_update(w->pg, step);
+        return;
+    }
+    const double now = omp_get_wtime(), el = now - w->t_start;
+    if (step == 1) w->t_first = now;
+    if ((step < w->probe && el < CAL_PROBE_S) || step < 2) return;
+    const double est = el + (now - w->t_first) / (double)(step - 1) * (double)(w->total - step);
+    char min[32] = "";
+    if (est >= 90.0) snprintf(min, sizeof min, " (%.1f min)", est / 60.0);
+    w->estimated = 1;
+    pl_progress_note(w->pg, "calibration: the first %lld of %lld steps took %.3g s: estimated duration %.3g s%s "
+                     "(their rate extrapolated)", step, w->total, el, est, min);
+}
+
 /* Per replica: block means of the slope estimate, over colloids and origins. */
-static int cal_replica(const pl_scene_t *sc, const cal_plan_t *p, int replica, int nthreads, double *blocks,
-                       pl_err_t *err)
+static int cal_replica(const pl_scene_t *sc, const cal_plan_t *p, int replica, int nthreads, cal_watch_t *w,
+                       double *blocks, pl_err_t *err)
 {
     pl_scene_t *c = malloc(sizeof *c);
     if (!c) return pl_err_set(err, PL_ERR_NOMEM, "out of memory (calibration scene)");
@@ -247,7 +286,10 @@ static int cal_replica(const pl_scene_t *sc, const cal_plan_t *p, int replica, i
     }
     for (long long k = 0; k < nrec && !rc; ++k) {
         if (k > 0)
-            for (long long s = 0; s < p->stride && !rc; ++s) rc = pl_sim_step(sim, err);
+            for (long long s = 0; s < p->stride && !rc; ++s) {
+                rc = pl_sim_step(sim, err);
+                cal_tick(w, replica * p->steps + (k - 1) * p->stride + s + 1);
+            }
         const pl_colloid_t *col = sim->colloids;
         for (size_t i = 0; i < n; ++i) {
             double *q = r + ((size_t)k * n + i) * 3;
@@ -284,15 +326,20 @@ static int cal_replica(const pl_scene_t *sc, const cal_plan_t *p, int replica, i
     return 0;
 }
 
-static int cal_run(const pl_scene_t *sc, const cal_plan_t *p, int nthreads, pl_mapping_calibration_t *cal,
-                   pl_err_t *err)
+static int cal_run(const pl_scene_t *sc, const cal_plan_t *p, int nthreads, const pl_progress_params_t *pp,
+                   pl_mapping_calibration_t *cal, pl_err_t *err)
 {
     const int nb = p->replicas * CAL_BLOCKS;
     double *blk = malloc((size_t)nb * sizeof *blk);
     if (!blk) return pl_err_set(err, PL_ERR_NOMEM, "out of memory (calibration)");
     const double t0 = omp_get_wtime();
+    const double probe = fmax(CAL_PROBE_MIN, ceil(CAL_PROBE_FRACTION * (double)pp->last));
+    cal_watch_t w = {.pg = pp->out ? pl_progress_create(pp) : NULL, .t_start = t0, .t_first = t0,
+                     .total = pp->last, .probe = (long long)fmin((double)pp->last, probe), .estimated = 0};
     int rc = 0;
-    for (int q = 0; q < p->replicas && !rc; ++q) rc = cal_replica(sc, p, q, nthreads, blk + q * CAL_BLOCKS, err);
+    for (int q = 0; q < p->replicas && !rc; ++q) rc = cal_replica(sc, p, q, nthreads, &w, blk + q * CAL_BLOCKS, err);
+    if (!rc) pl_progress_finish(w.pg, pp->last);
+    pl_progress_free(w.pg);
     if (rc) {
         free(blk);
         return rc;
@@ -339,14 +386,15 @@ static void cal_expect(const pl_scene_t *sc, const cal_plan_t *p, pl_calcache_ex
 
 /* The entry at path into *cal when it passes the checks (cal->cache names
  * it, this run paid nothing); else the reader's result, with why. */
-static int from_cache(const char *path, const pl_calcache_expect_t *e, pl_mapping_calibration_t *cal, char *why,
-                      size_t nwhy)
+static int from_cache(const char *path, const pl_calcache_expect_t *e, int source, pl_mapping_calibration_t *cal,
+                      char *why, size_t nwhy)
 {
     const int st = pl_calcache_read(path, e, cal, why, nwhy);
     if (st != PL_CALCACHE_OK) return st;
     snprintf(cal->cache, sizeof cal->cache, "%s", path);
     cal->wall_s = 0.0;
     cal->d_theory = e->d_theory;
+    cal->source = source;
     return st;
 }
 
@@ -366,10 +414,33 @@ int pl_calibration_needed(const pl_scene_t *sc)
            sc->fluid.density > 0;
 }
 
-int pl_calibrate(const pl_scene_t *sc, const char *shipped_dir, int nthreads, FILE *log, pl_mapping_calibration_t *cal,
-                 pl_err_t *err)
+/* The calibration run of plan p (c: its scene), with the line that opens it
+ * and the progress that follows on o->log; stored at path when store. */
+static int measure(const pl_scene_t *sc, const pl_scene_t *c, const cal_plan_t *p, int nthreads,
+                   const pl_calibrate_opts_t *o, const char *where, pl_mapping_calibration_t *cal, pl_err_t *err)
+{
+    const double fluid_n = (double)p->L * p->L * p->L * sc->fluid.density;
+    const double md = (double)c->colloids.substeps;
+    if (o->log)
+        fprintf(o->log, "peloid: calibrating the colloid diffusion of coupling %s at this resolution (%s; cached "
+                        "in %s): %d x %d colloid(s) in %d^3 cells, %.4g fluid particles, %d MD step(s) per step, "
+                        "%lld steps; timing the first steps for an estimate of the duration\n",
+                cname(sc), o->mode == PL_CALIBRATE_ALWAYS ? "--calibrate always" : "once", where, p->replicas, p->n,
+                p->L, fluid_n, (int)md, (long long)p->replicas * p->steps);
+    const double every = sc->output.progress_s > 0 ? fmin(sc->output.progress_s, CAL_PROGRESS_S) : CAL_PROGRESS_S;
+    const pl_progress_params_t pp = {.out = o->log, .terminal = o->terminal,
+                                     .interval_s = o->progress_s > 0 ? o->progress_s : every, .first = 0,
+                                     .last = (long long)p->replicas * p->steps, .dt = sc->srd.dt, .t0_s = 0.0,
+                                     .fluid_n = fluid_n, .md_per_step = md, .label = "calibration"};
+    return cal_run(sc, p, nthreads, &pp, cal, err);
+}
+
+int pl_calibrate(const pl_scene_t *sc, const char *shipped_dir, int nthreads, const pl_calibrate_opts_t *o,
+                 pl_mapping_calibration_t *cal, pl_err_t *err)
 {
     memset(cal, 0, sizeof *cal);
+    FILE *log = o->log;
+    const int fresh = o->mode == PL_CALIBRATE_ALWAYS; /* nothing stored is read */
     double timeout;
     int rc = pl_calcache_lock_timeout(&timeout, err);
     if (rc) return rc;
@@ -380,57 +451,58 @@ int pl_calibrate(const pl_scene_t *sc, const char *shipped_dir, int nthreads, FI
     if (!c) return pl_err_set(err, PL_ERR_NOMEM, "out of memory (calibration)");
     cal_scene(sc, &p, 0, c);
     const uint64_t key = cal_key(c, &p);
-    free(c);
     pl_calcache_expect_t e;
     cal_expect(sc, &p, &e);
     cal->d_theory = e.d_theory;
     char name[64], path[600], why[600];
     snprintf(name, sizeof name, "calibration-%016llx.json", (unsigned long long)key);
     const char *no_shipped = getenv("PELOID_NO_SHIPPED_CALIBRATION"); /* make calibrations, tests */
-    if (shipped_dir && !(no_shipped && *no_shipped)) { /* the project's read-only set: a bad entry is a bug */
+    if (shipped_dir && !fresh && !(no_shipped && *no_shipped)) { /* the project's read-only set: a bad entry is a bug */
         pl_path_join(path, sizeof path, shipped_dir, name);
-        const int st = from_cache(path, &e, cal, why, sizeof why);
-        if (st == PL_CALCACHE_OK) return 0;
+        const int st = from_cache(path, &e, PL_CALSRC_SHIPPED, cal, why, sizeof why);
         if (st == PL_CALCACHE_BAD)
-            return pl_err_set(err, PL_ERR_INTERNAL, "%s: %s: a corrupt shipped calibration (a bug: `make calibrations` "
-                              "remeasures it; PELOID_NO_SHIPPED_CALIBRATION=1 skips the shipped set)", path, why);
+            rc = pl_err_set(err, PL_ERR_INTERNAL, "%s: %s: a corrupt shipped calibration (a bug: `make calibrations` "
+                            "remeasures it; PELOID_NO_SHIPPED_CALIBRATION=1 skips the shipped set)", path, why);
+        if (st == PL_CALCACHE_OK || rc) {
+            free(c);
+            cal->mode = o->mode;
+            return rc;
+        }
     }
     /* The user's cache: a folder that cannot take the result, a bad entry or a
      * lock that is not released cost this run a calibration, never the run. */
     char dir[512];
     pl_calcache_dir(dir, sizeof dir);
     pl_path_join(path, sizeof path, dir, name);
-    int lock = -1, store = 0, st = PL_CALCACHE_ABSENT;
+    int lock = -1, store = 0, st = PL_CALCACHE_ABSENT, done = 0;
     if (pl_calcache_dir_prepare(dir, why, sizeof why)) {
         if (log)
             fprintf(log, "peloid: warning: calibration cache %s: %s: this run calibrates without storing the result "
                          "(set PELOID_CACHE to a writable folder to keep it)\n", dir, why);
-    } else if ((st = from_cache(path, &e, cal, why, sizeof why)) == PL_CALCACHE_OK) { /* entries appear whole */
-        return 0;
+    } else if (!fresh && (st = from_cache(path, &e, PL_CALSRC_CACHE, cal, why, sizeof why)) == PL_CALCACHE_OK) {
+        done = 1; /* entries appear whole */
     } else {
         char lwhy[800];
         const int lr = pl_calcache_lock(path, timeout, log, &lock, lwhy, sizeof lwhy);
         if (lr == PL_CALCACHE_LOCKED) { /* another process may have measured it meanwhile */
-            if ((st = from_cache(path, &e, cal, why, sizeof why)) == PL_CALCACHE_OK) {
-                pl_calcache_unlock(lock);
-                return 0;
-            }
-            store = 1;
+            if (!fresh && (st = from_cache(path, &e, PL_CALSRC_CACHE, cal, why, sizeof why)) == PL_CALCACHE_OK)
+                done = 1;
+            store = !done;
         } else if (log) {
             fprintf(log, "peloid: warning: calibration cache lock %s.lock: %s: this run calibrates without storing the "
                          "result\n", path, lwhy);
         }
     }
-    if (st == PL_CALCACHE_BAD && log)
+    if (!done && st == PL_CALCACHE_BAD && log)
         fprintf(log, "peloid: warning: calibration cache entry %s: %s: recalibrating%s\n", path, why,
                 store ? " and overwriting it" : "");
-    if (log)
-        fprintf(log, "peloid: calibrating the colloid diffusion of coupling %s at this resolution (once; cached "
-                     "in %s): %d x %d colloid(s) in %d^3 cells, %lld steps\n",
-                cname(sc), store ? dir : "nowhere: see the warning above", p.replicas, p.n, p.L, p.steps);
-    rc = cal_run(sc, &p, nthreads, cal, err);
-    cal->d_theory = e.d_theory;
-    if (!rc && store) {
+    if (!done) {
+        rc = measure(sc, c, &p, nthreads, o, store ? dir : "nowhere: see the warning above", cal, err);
+        cal->d_theory = e.d_theory;
+        cal->source = PL_CALSRC_RUN;
+    }
+    free(c);
+    if (!done && !rc && store) {
         char about[400];
         snprintf(about, sizeof about,
                  "peloid coupling-%s calibration: gamma %g, lambda %g, rule %d, alpha %g, radius %.17g a0, mass "
@@ -444,20 +516,6 @@ int pl_calibrate(const pl_scene_t *sc, const char *shipped_dir, int nthreads, FI
                          "only (set PELOID_CACHE to a writable folder to keep it)\n", dir, why);
     }
     pl_calcache_unlock(lock);
+    cal->mode = o->mode;
     return rc;
-}
-
-int pl_scene_load_coupling_true(const char *path, unsigned flags, const char *shipped_dir, int nthreads, FILE *log,
-                                pl_scene_t *scene, pl_err_t *err)
-{
-    /* a first pass to plan the calibration (the time unit from theory), the
-     * final one with the measured diffusion; without a calibration the
-     * scene loads once more in full (derived keys compared) */
-    int rc = pl_scene_load_flags(path, flags | PL_SCENE_PROVISIONAL, scene, err);
-    if (rc || !scene->mapping.enabled) return rc;
-    if (!pl_calibration_needed(scene)) return pl_scene_load_flags(path, flags, scene, err);
-    pl_mapping_calibration_t cal;
-    if ((rc = pl_calibrate(scene, shipped_dir, nthreads > 0 ? nthreads : omp_get_max_threads(), log, &cal, err)))
-        return rc;
-    return pl_scene_load_calibrated(path, flags, &cal, scene, err);
 }

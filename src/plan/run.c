@@ -111,6 +111,8 @@ static int summary_head(const pl_sim_t *sim, json_t **out, pl_err_t *err)
         pl_json_real(&b, o, "model_temperature_K", m->kT_model / PL_KB);
         pl_json_real(&b, o, "real_temperature_K", sc->mapping.physical.temperature);
         pl_json_set(&b, doc, "units_si", o);
+        json_t *cal = pl_mapping_calibration_json(m); /* where t0's colloid D came from (--calibrate) */
+        if (cal) pl_json_set(&b, doc, "calibration", cal);
     }
     int walls[3]; /* each axis: periodic, or noslip / slip walls at 0 and L */
     pl_scene_box_walls(&sc->box, walls);
@@ -451,6 +453,9 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     if (log)
         fprintf(log, "peloid: %s: %zu fluid particles, %d thread(s), steps %lld..%lld -> %s/\n",
                 scene->run.name, sim->fluid.n, sim->nthreads, first, last, w.dir);
+    char cal[800] = "";
+    if (log && scene->mapping.enabled) pl_mapping_calibration_line(&scene->mapping.map, cal, sizeof cal);
+    if (cal[0]) fprintf(log, "peloid: %s\n", cal);
     if (log && sim->observe_resumed == 0) fprintf(log, "peloid: %s\n", sim->observe_note);
     for (int m = 0; log && pl_modules[m]; ++m) /* what each module wants the user to know */
         if (pl_modules[m]->describe) pl_modules[m]->describe(sim, log);

@@ -302,10 +302,20 @@ static pid_t start_point(const sweep_t *s, int k, int threads, long long left, c
     if (cpus) sched_setaffinity(0, sizeof *cpus, cpus); /* its run's threads spread inside (thread_bind.c) */
     FILE *f = freopen(log, left >= 0 ? "a" : "w", stderr);
     if (!f || dup2(fileno(stderr), 1) < 0) _exit(PL_ERR_IO);
-    if (left >= 0)
-        execl(s->o->self, s->o->self, "run", scene, "--restart", ck, "--out", dir, "--steps", ls, "--threads", th,
-              (char *)NULL);
-    else execl(s->o->self, s->o->self, "run", scene, "--out", dir, "--force", "--threads", th, (char *)NULL);
+    const char *av[16] = {s->o->self, "run", scene, "--out", dir, "--threads", th};
+    int n = 7;
+    if (left >= 0) {
+        av[n++] = "--restart";
+        av[n++] = ck;
+        av[n++] = "--steps";
+        av[n++] = ls;
+    } else av[n++] = "--force";
+    if (s->o->calibrate) {
+        av[n++] = "--calibrate";
+        av[n++] = s->o->calibrate;
+    }
+    av[n] = NULL;
+    execv(s->o->self, (char *const *)av);
     fprintf(stderr, "peloid sweep: cannot run %s: %s\n", s->o->self, strerror(errno));
     _exit(PL_ERR_IO);
 }

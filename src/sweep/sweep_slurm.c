@@ -23,9 +23,9 @@ int pl_sweep_write_slurm(const sweep_t *s, pl_err_t *err)
              "# Task K runs point K; a finished point is skipped, so resubmitting reruns only the rest.\n"
              "#SBATCH --job-name=%s\n#SBATCH --array=0-%d\n#SBATCH --cpus-per-task=%d\n#SBATCH --ntasks=1\n"
              "#SBATCH --output=%s/logs/slurm-%%A_%%a.out\n"
-             "exec %s sweep %s --out %s --point \"$SLURM_ARRAY_TASK_ID\" --threads \"${SLURM_CPUS_PER_TASK:-%d}\"\n",
+             "exec %s sweep %s --out %s --point \"$SLURM_ARRAY_TASK_ID\" --threads \"${SLURM_CPUS_PER_TASK:-%d}\"%s%s\n",
              pl_study_name(s->st), out, out, out, pl_study_name(s->st), s->n - 1, threads, out, self, study, out,
-             threads);
+             threads, s->o->calibrate ? " --calibrate " : "", s->o->calibrate ? s->o->calibrate : "");
     snprintf(path, sizeof path, "%s/sweep.sbatch", s->out);
     int rc = len < 0 || (size_t)len >= sizeof b ? pl_err_set(err, PL_ERR_INPUT, "%s: paths too long", s->out)
                                                  : pl_sweep_write_text(path, b, err);
