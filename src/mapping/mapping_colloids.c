@@ -443,22 +443,23 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     }
     unsigned mask = 0;
     char bad[128];
-    if (pl_colloid_parse_pairs(cs->pairs, &mask, bad, sizeof bad)) mask = 0; /* reported by the colloid checks */
-    if (!have) mask = 0;
+    if (pl_colloid_parse_pairs(cs->pairs, &mask, bad, sizeof bad) || !have) mask = 0; /* bad: the colloid checks */
     double rho_ratio = ph->particle_density / ph->solvent_density;
     double eta = mp->cg.particles_per_cell * m->nu_sim; /* rho_f nu, m_f / (a0 t0) */
     double kT = PL_KB * ph->temperature;
-    double K = 0.0;
+    double K = 0.0; /* hertz.K, from K_src */
     const char *K_src = "";
     size_t pairs_off = given(s, OFF(colloids.pairs)) ? OFF(colloids.pairs) : OFF(mapping.physical.volume_fraction);
     const char *pairs_key = given(s, OFF(colloids.pairs)) ? "colloids.pairs" : "physical.volume_fraction";
-    if (mask & PL_CT_DLVO) {
+    if (mask & PL_CT_DLVO) { /* colloids.pairs derived: blamed on the key that switched the term on */
+        const int ham = given(s, OFF(mapping.physical.hamaker)), own = given(s, OFF(colloids.pairs));
         char miss[256] = "";
-        if (!given(s, OFF(mapping.physical.hamaker))) strcat(miss, "physical.hamaker, ");
+        if (!ham) strcat(miss, "physical.hamaker, ");
         if (!given(s, OFF(mapping.physical.surface_potential))) strcat(miss, "physical.surface_potential, ");
         if (!(mp->kappa > 0)) strcat(miss, "physical.kappa or physical.ionic_strength, ");
         if (miss[0]) miss[strlen(miss) - 2] = '\0';
-        if (check_missing(s, err, pairs_off, pairs_key, "dlvo",
+        const size_t on = own ? pairs_off : ham ? OFF(mapping.physical.hamaker) : OFF(mapping.physical.surface_potential);
+        if (check_missing(s, err, on, own ? pairs_key : ham ? "physical.hamaker" : "physical.surface_potential", "dlvo",
                           "physical.hamaker, physical.surface_potential and physical.kappa (or "
                           "physical.ionic_strength)", miss))
             return PL_ERR_INPUT;

@@ -131,9 +131,9 @@ static int electrostatics(pl_scene_t *s, pl_err_t *err)
 
 /* physical.box edge d gives n cells of a0 outside 1..4096 (or none): the
  * key at fault is an implausible physical.radius (a0 follows R), else a
- * coarse_graining.cell_size the file gives that makes the cell smaller than
- * a solvent molecule (a0 < 1 nm, too many cells) or larger than a colloid
- * diameter (a0/R > 2, too few), else the box. */
+ * coarse_graining.cell_size the file gives outside 0.1..2 (a colloid of
+ * more than 20 cells across or a cell wider than a colloid: beyond the
+ * couplings' 0.5 to 1.6 of Hecht and PL), else the box. */
 static int box_fail(const pl_scene_t *s, pl_err_t *err, int d, double n, double a0)
 {
     const pl_scene_physical_t *p = &s->mapping.physical;
@@ -141,7 +141,7 @@ static int box_fail(const pl_scene_t *s, pl_err_t *err, int d, double n, double 
     size_t off = OFF(mapping.physical.box);
     char why[160];
     const char *key = pl_mapping_blame(s, &radius, 1, &off, why, sizeof why);
-    if (!key && pl_scene_line_of(s, cell) > 0 && (n > 4096 ? a0 < 1e-9 : s->mapping.cg.cell_size > 2.0)) {
+    if (!key && pl_scene_line_of(s, cell) > 0 && !(s->mapping.cg.cell_size >= 0.1 && s->mapping.cg.cell_size <= 2.0)) {
         off = cell;
         key = "coarse_graining.cell_size";
     }

@@ -89,6 +89,21 @@ static double memory_have(const char **what)
     return have;
 }
 
+/* The key a refusal of box.cells (density 0) or fluid.density (1) names:
+ * in a physical{} scene, where the mapping derived them, the input they
+ * come from (physical.box, coarse_graining.particles_per_cell) where the
+ * file gives it. */
+static const char *size_key(const pl_scene_t *s, int density, size_t *off)
+{
+    *off = density ? OFF(fluid.density) : OFF(box.cells);
+    const size_t src = density ? OFF(mapping.cg.particles_per_cell) : OFF(mapping.physical.box);
+    if (s->mapping.enabled && pl_scene_line_of(s, *off) <= 0 && pl_scene_line_of(s, src) > 0) {
+        *off = src;
+        return density ? "coarse_graining.particles_per_cell" : "physical.box";
+    }
+    return density ? "fluid.density" : "box.cells";
+}
+
 int pl_scene_memory_check(const pl_scene_t *scene, int nthreads, pl_err_t *err)
 {
     double np, per_p, cells, per_c;
@@ -96,9 +111,9 @@ int pl_scene_memory_check(const pl_scene_t *scene, int nthreads, pl_err_t *err)
     const char *what;
     const double have = memory_have(&what);
     if (!(have > 0.0 && need > have)) return 0;
-    const int fluid_big = per_p * np >= per_c * cells;
-    return pl_scene_fail(scene, err, fluid_big ? OFF(fluid.density) : OFF(box.cells),
-                         fluid_big ? "fluid.density" : "box.cells",
+    size_t off;
+    const char *key = size_key(scene, per_p * np >= per_c * cells, &off);
+    return pl_scene_fail(scene, err, off, key,
                          "the run needs about %.3g GB: %.3g fluid particles (box.cells x fluid.density) x %.0f B "
                          "+ %.3g cells x %.0f B (at %d thread(s)) + %lld colloids x 600 B; this process may use %.3g GB "
                          "(%s); allowed: a smaller box, density or thread count",
@@ -110,14 +125,16 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
     if (pl_mapping_scene_apply(scene, err)) return PL_ERR_INPUT; /* physical{} -> srd, fluid, box */
     const pl_scene_box_t *b = &scene->box;
     double ncells = (double)b->cells[0] * b->cells[1] * b->cells[2];
+    size_t soff;
+    const char *skey = size_key(scene, 0, &soff);
     if (ncells > 1.0e9)
-        return pl_scene_fail(scene, err, OFF(box.cells), "box.cells",
-                             "%g cells is more than the 1e9 supported", ncells);
+        return pl_scene_fail(scene, err, soff, skey, "%d x %d x %d = %g cells (box.cells) is more than the 1e9 supported",
+                             b->cells[0], b->cells[1], b->cells[2], ncells);
     if (b->walls_z != PL_WALLS_NONE && b->cells[2] < 2)
-        return pl_scene_fail(scene, err, OFF(box.cells), "box.cells",
+        return pl_scene_fail(scene, err, soff, skey,
                              "Lz = %d with walls_z; allowed: Lz >= 2", b->cells[2]);
     if (b->walls_xy != PL_WALLS_NONE && (b->cells[0] < 2 || b->cells[1] < 2))
-        return pl_scene_fail(scene, err, OFF(box.cells), "box.cells",
+        return pl_scene_fail(scene, err, soff, skey,
                              "Lx = %d, Ly = %d with walls_xy; allowed: Lx >= 2 and Ly >= 2",
                              b->cells[0], b->cells[1]);
     for (int w = 0; w < 2; ++w) { /* moving walls (shear, Hecht Sec. VIII.C) */
@@ -136,13 +153,14 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
                                  "[ux, uy, 0]", u[2]);
     }
     double np = ncells * scene->fluid.density;
+    skey = size_key(scene, 1, &soff);
     if (np > 4.0e9)
-        return pl_scene_fail(scene, err, OFF(fluid.density), "fluid.density",
-                             "%.3g fluid particles (density x cells); allowed: < 4e9", np);
+        return pl_scene_fail(scene, err, soff, skey, "%.3g fluid particles (fluid.density %g x %g cells); allowed: < 4e9",
+                             np, scene->fluid.density, ncells);
     if (pl_scene_memory_check(scene, 1, err)) return PL_ERR_INPUT; /* at 1 thread: the least a run needs */
     if (scene->fluid.density > 0 && np < 2.0)
-        return pl_scene_fail(scene, err, OFF(fluid.density), "fluid.density",
-                             "%.3g fluid particles in the box; allowed: at least 2", np);
+        return pl_scene_fail(scene, err, soff, skey, "%.3g fluid particles in the box (fluid.density %g x %g cells); "
+                             "allowed: at least 2", np, scene->fluid.density, ncells);
     if (scene->output.fields_interval > 0 && scene->output.fields_start >= scene->run.steps &&
         scene->run.steps > 0)
         return pl_scene_fail(scene, err, OFF(output.fields_start), "output.fields_start",
