@@ -56,9 +56,9 @@ void pl_mapping_hydro_print(const pl_mapping_t *m, FILE *f)
 {
     fprintf(f, "    hydrodynamic radius: R_h = kT / (%d pi eta D) = %.4g", slip(m) ? 4 : 6, m->rh_over_R);
     if (isfinite(m->rh_over_R_se)) fprintf(f, " +- %.2g", m->rh_over_R_se);
-    fprintf(f, " R = %.4g m (%s; %s surface, PL Eq. 39, eta = gamma nu = %.4g m_f/(a0 t0))", m->rh_over_R * m->real.radius,
-            calibrated(m) ? "from the calibrated D" : "theory, from the coupling's friction", slip(m) ? "slip" : "stick",
-            m->cg.gamma * m->nu_sim);
+    fprintf(f, " R = %.4g m (%s; %s surface, PL Eq. 39, eta = gamma nu = %.4g m_f/(a0 t0))",
+            m->rh_over_R * m->real.radius, calibrated(m) ? "from the calibrated D" : "theory, from the coupling's friction",
+            slip(m) ? "slip" : "stick", m->cg.gamma * m->nu_sim);
     if (slip(m)) fprintf(f, "; a stick sphere of the same friction: %.4g R", m->rh_stick_over_R);
     fprintf(f, "\n");
 }
