@@ -22,6 +22,9 @@ by the observers of the scene's observe{} section) and OUTDIR/thermo.tsv.
   sediment   phi(z, t) and the mean height with the settling velocity.
   velocities fluid and colloid velocity distributions against Maxwell-
              Boltzmann, with the chi^2 p-value.
+  colloid    a physical scene's model colloid: its hydrodynamic radius
+             R_h/R (summary.json mapping.colloid) and, for the potential
+             coupling, the hard-core volume fraction phi_c.
   thermo     the temperature (and, with colloids, the colloid kinetic
              energy and centre-of-mass height) over time.
 
@@ -410,6 +413,27 @@ def plot_observables(h5, summary, obs, u, outdir, lines):
             plot_viscosity(f, obs, u, outdir, lines)
 
 
+def mapping_lines(summary, lines):
+    """A physical scene's model colloid as the mapping states it (summary.json
+    "mapping" "colloid"): the hydrodynamic radius R_h/R (its friction in the
+    model fluid, xi = k pi eta R_h) and, for the potential coupling, the
+    volume fraction of the colloid-colloid hard cores."""
+    mp = summary.get("mapping")
+    col = mp.get("colloid") if isinstance(mp, dict) else None
+    if not isinstance(col, dict) or not isinstance(col.get("hydrodynamic_radius_over_R"), (int, float)):
+        return
+    rh, se = col["hydrodynamic_radius_over_R"], col.get("hydrodynamic_radius_over_R_se")
+    pm = f" ± {se:.2g}" if isinstance(se, (int, float)) else ""
+    lines += ["## Model colloid", "",
+              f"hydrodynamic radius R_h/R = {rh:.4g}{pm} ({col.get('hydrodynamic_radius_source')}, "
+              f"{col.get('hydrodynamic_radius_boundary')} surface): box corrections, hindered settling and "
+              "lubrication have the strength of that sphere", ""]
+    phic, core = col.get("volume_fraction_hard_core"), col.get("hard_core_radius_over_R")
+    if isinstance(phic, (int, float)) and isinstance(core, (int, float)):
+        lines += [f"hard-core volume fraction φ_c = {phic:.4g} (radius {core:.4g} R) beside the stated "
+                  f"φ = {col.get('volume_fraction_given')}", ""]
+
+
 def report(outdir):
     summary = read_summary(os.path.join(outdir, "summary.json"))
     obs = summary.get("observables", {})
@@ -422,6 +446,7 @@ def report(outdir):
     lines = [f"# Report of {summary.get('scene_file', outdir)}", "",
              f"steps {summary.get('first_step')}..{summary.get('last_step')}, "
              f"{summary.get('wall_seconds', 0):.3g} s wall, {summary.get('threads')} thread(s)", ""]
+    mapping_lines(summary, lines)
     h5 = os.path.join(outdir, "observables.h5")
     if os.path.exists(h5):
         # a truncated or corrupt file (OSError), a missing dataset or

@@ -128,6 +128,7 @@ typedef struct {
     double md_dt;       /* MD step in s; 0: derived */
     double md_resolution; /* MD steps per shortest MD time scale (Hecht Sec. II: ~20) */
     double d_col_calibrated; /* measured unbounded colloid D, a0^2/t0 (0: theory) */
+    double d_col_calibrated_se; /* its standard error, a0^2/t0 */
 } pl_mapping_cg_t;
 
 /* Extra properties of the real system the audit needs. */
@@ -156,7 +157,7 @@ typedef struct {
     char name[24];   /* e.g. "MACH", "REYNOLDS" */
     int severity;    /* PL_SEV_* */
     double value;
-    char text[400];  /* number, value, recommended range, source, input to change */
+    char text[512];  /* number, value, recommended range, source, input to change */
     /* the input key it is about (empty: a derived number) and its offset in
      * pl_scene_t, so that a refusal names file, line and key */
     char key[40];
@@ -191,6 +192,13 @@ typedef struct {
     double d_col_box, box_L;
     int box_periodic;
     double conc_factor;   /* the scene's own 1 - c phi in d_col_box (potential coupling; else 1) */
+    /* the hydrodynamic radius of the model colloid (mapping_hydro.c): the
+     * sphere whose classical friction in the model fluid is the colloid's
+     * xi = kT / d_col_sim, R_h = xi / (k pi eta), k = 6 stick / 4 slip
+     * (cg.boundary, PL Eq. 39), eta = gamma nu_sim (PL Eq. 13); over R =
+     * sigma, its SE from the calibration's (NaN: theory, no SE), and the
+     * stick sphere of the same friction (k = 6) */
+    double rh_over_R, rh_over_R_se, rh_stick_over_R;
     double g_sim;         /* gravity on the colloid, a0 / t0^2 */
     double v_sim;         /* flow / Stokes velocity, a0 / t0 */
     /* MD */
@@ -224,6 +232,17 @@ void pl_mapping_pl_real(const pl_mapping_system_t *real, const pl_mapping_solven
 
 /* Fills m->warn with the named warnings and notes (mapping_audit.c). */
 void pl_mapping_audit(pl_mapping_t *m);
+
+/* Fills rh_over_R, rh_over_R_se, rh_stick_over_R from d_col_sim,
+ * cg.d_col_calibrated_se, nu_sim, cg.gamma, cg.boundary and sigma, and warns
+ * HYDRODYNAMIC_RADIUS when |R_h/R - 1| - 2 SE > PL_RH_TOL (SE 0 for the
+ * theory) (src/mapping/mapping_hydro.c). */
+#define PL_RH_TOL 0.05
+void pl_mapping_hydrodynamic_radius(pl_mapping_t *m);
+/* Its line in the text report and its keys in a JSON object. */
+void pl_mapping_hydro_print(const pl_mapping_t *m, FILE *out);
+struct json_t;
+void pl_mapping_hydro_json(const pl_mapping_t *m, struct json_t *o);
 
 /* Appends a named warning or note (ignored beyond PL_MAP_MAX_WARN). */
 void pl_mapping_warn(pl_mapping_t *m, int severity, const char *name, double value, const char *fmt, ...)
@@ -289,6 +308,10 @@ typedef struct {
     /* physical{} -> colloids{}, dlvo{}, hertz{}, lubrication{}, coupling{}
      * (src/mapping/mapping_colloids.c) */
     double phi_given, phi_realised;  /* volume fraction asked for / of the box used */
+    /* the hard core the colloid-colloid repulsion realises (potential
+     * coupling: sigma_cc / 2 of PL Eq. 16; 0: not computed) and the volume
+     * fraction phi_c of the colloids counted with it (mapping_potential.c) */
+    double core_radius, phi_core;
     double mass_density;           /* m_f / a0^3 */
     double inertia;                /* 2/5 M R^2, m_f a0^2 */
     double hertz_K;                /* kT / a0^2.5 */
@@ -371,6 +394,18 @@ void pl_mapping_warnings_print(const struct pl_scene *scene, FILE *out);
  * by `resolution` steps (src/mapping/mapping_colloids.c). */
 double pl_mapping_cf_contact_time(double sigma_cf, double eps_cf, double M);
 long long pl_mapping_cf_substeps(double sigma_cf, double eps_cf, double M, double dt, double resolution);
+
+/* The potential coupling's colloid hard core (src/mapping/mapping_potential.c,
+ * PL Sec. III.C.1), after its derived keys: with the wca term in `pairs`
+ * (PL_CT_* bits) the radius sigma_cc / 2 of PL Eq. 16 at PL's sigma_cc rule,
+ * else R; sets colloid.core_radius and phi_core, warns HARD_CORE_PHI when
+ * phi_c / phi leaves 1 +- PL_CORE_PHI_TOL; refuses the DLVO term beside the
+ * wca term (PL_ERR_INPUT, naming the key that switched DLVO on). */
+#define PL_CORE_PHI_TOL 0.10
+int pl_mapping_potential_core(struct pl_scene *scene, unsigned pairs, pl_err_t *err);
+/* Its line in the text report and its keys in a JSON object. */
+void pl_mapping_core_print(const pl_mapping_colloid_t *c, FILE *out);
+void pl_mapping_core_json(const pl_mapping_colloid_t *c, struct json_t *o);
 
 /* Relative permittivity of water at T (K), Malmberg & Maryott 1956 fit,
  * valid 273.15-373.15 K (NaN outside). */

@@ -387,9 +387,10 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
  * hand-given value that differs is refused. */
 static const double PL_EPS_CF = 2.5, PL_EPS_CC = 2.5, PL_N_CC = 24.0;
 
-static int potential_keys(pl_scene_t *s, int wca, pl_err_t *err)
+static int potential_keys(pl_scene_t *s, unsigned mask, pl_err_t *err)
 {
     pl_scene_colloids_t *cs = &s->colloids;
+    const int wca = (mask & PL_CT_WCA) != 0;
     const double sigma = s->mapping.map.sigma;
     const char *pl = "coarse_graining.coupling = \"potential\" (PL Sec. VII)";
     derived_t dk[] = {
@@ -408,12 +409,8 @@ static int potential_keys(pl_scene_t *s, int wca, pl_err_t *err)
             return PL_ERR_INPUT;
     s->coupling.sigma_cf = sigma;
     s->coupling.epsilon_cf = PL_EPS_CF;
-    if (!wca) return 0;
-    cs->wca.epsilon = PL_EPS_CC;
-    cs->wca.n = PL_N_CC;
-    cs->wca.sigma_rule = PL_SIGMA_PL;
-    cs->wca.sigma = 0.0;
-    return 0;
+    if (wca) cs->wca = (pl_scene_wca_t){.epsilon = PL_EPS_CC, .n = PL_N_CC, .sigma_rule = PL_SIGMA_PL, .sigma = 0.0};
+    return pl_mapping_potential_core(s, mask, err); /* its hard core, and DLVO beside it refused */
 }
 
 int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
@@ -537,7 +534,7 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     for (size_t i = 0; i < (have ? sizeof dk / sizeof dk[0] : 1); ++i)
         if (refuse(s, err, dk[i].off, dk[i].key, dk[i].from, dk[i].given, dk[i].derived, dk[i].shown))
             return PL_ERR_INPUT;
-    if (have && method == PL_COUPLE_POTENTIAL && potential_keys(s, (mask & PL_CT_WCA) != 0, err)) return PL_ERR_INPUT;
+    if (have && method == PL_COUPLE_POTENTIAL && potential_keys(s, mask, err)) return PL_ERR_INPUT;
     if (have && given(s, OFF(colloids.gravity)) && (cs->gravity[0] != 0.0 || cs->gravity[1] != 0.0))
         return pl_scene_fail(s, err, OFF(colloids.gravity), "colloids.gravity",
                              "is derived from physical.gravity (along -z); remove it");

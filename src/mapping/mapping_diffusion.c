@@ -133,6 +133,7 @@ void pl_mapping_diffusion_print(const pl_mapping_t *m, FILE *f)
         fprintf(f, "    calibration concentration correction: D_box + images = D (1 - c phi) = D x %.4f, c = %.4f "
                    "(slip spheres 1.1795, PL Sec. VI.C; stick spheres 1.8315, Batchelor 1976)\n",
                 c->concentration, c->phi > 0 ? (1.0 - c->concentration) / c->phi : 0.0);
+    pl_mapping_hydro_print(m, f);
     if (m->box_periodic)
         fprintf(f, "    in this scene's periodic box (L = %.4g a0) a dilute colloid diffuses with D_L = %.5g a0^2/t0 "
                    "= %.4g m^2/s, %.4g of the real D (periodic images, Hasimoto%s; compare D_L with a measured D)\n",

@@ -173,6 +173,7 @@ int pl_mapping_derive(const pl_mapping_system_t *real, const pl_mapping_solvent_
 
     md_step(m);
     pl_mapping_audit(m);
+    pl_mapping_hydrodynamic_radius(m);
     return 0;
 }
 

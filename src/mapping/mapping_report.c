@@ -75,6 +75,7 @@ void pl_mapping_print_text(const pl_mapping_t *m, const pl_mapping_colloid_t *c,
         fprintf(f, "           A_H = %.4g kT, Coulomb prefactor (Hecht Eq. 1) = %.4g kT/a0, kappa = %.4g /a0, "
                    "l = %.4g a0, colloids = %lld\n",
                 c->hamaker, c->coulomb, c->kappa, c->primary_minimum, c->n_colloids);
+    if (c) pl_mapping_core_print(c, f);
     pl_mapping_diffusion_print(m, f);
     fprintf(f, "  MD: dt_MD = %.4g s = %.4g t0, %lld MD steps per SRD step\n", m->md_dt, m->md_dt / m->t0,
             m->md_substeps);
@@ -153,6 +154,7 @@ int pl_mapping_json(const pl_mapping_t *m, const pl_mapping_colloid_t *c, const 
         {"radius_a0", m->sigma}, {"mass_m_f", m->mass_sim}, {"gravity_model_m_s2", m->model.g},
         {"gravity_a0_t0_2", m->g_sim}, {"hamaker_model_J", m->model.hamaker}, {"D_col_a0_2_t0", m->d_col_sim}};
     for (size_t i = 0; i < sizeof col / sizeof col[0]; ++i) pl_json_real_or_null(&b, o, col[i].key, col[i].v);
+    pl_mapping_hydro_json(m, o);
     if (c) {
         pl_json_real_or_null(&b, o, "hamaker_kT", c->hamaker);
         pl_json_real_or_null(&b, o, "coulomb_kT_a0", c->coulomb);
@@ -162,6 +164,7 @@ int pl_mapping_json(const pl_mapping_t *m, const pl_mapping_colloid_t *c, const 
         if (c->nprov > 0) {
             pl_json_real_or_null(&b, o, "volume_fraction_given", c->phi_given);
             pl_json_real_or_null(&b, o, "volume_fraction_realised", c->phi_realised);
+            pl_mapping_core_json(c, o);
             json_t *a = json_array();
             for (int i = 0; i < c->nprov; ++i) json_array_append_new(a, json_string(c->prov[i]));
             pl_json_set(&b, o, "derived_keys", a);

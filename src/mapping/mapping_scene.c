@@ -67,6 +67,7 @@ static void fill_inputs(const pl_scene_t *s, pl_mapping_system_t *r, pl_mapping_
     *cg = (pl_mapping_cg_t){0};
     cg->coupling = c->coupling;
     cg->d_col_calibrated = s->mapping.calib.d_inf;
+    cg->d_col_calibrated_se = s->mapping.calib.d_inf_se;
     cg->match = c->time_match;
     cg->boundary = c->boundary;
     cg->enskog = c->enskog;

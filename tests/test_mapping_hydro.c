@@ -1,0 +1,232 @@
+/* The model colloid's hydrodynamic radius and the potential coupling's hard
+ * core (issue 45).
+ *
+ * Hydrodynamic radius: R_h = kT / (k pi eta D), k = 6 stick / 4 slip (PL
+ * Eq. 39), checked against a hand computation with eta = gamma (nu_kin +
+ * nu_col) from PL Eqs. 9-10 written out here (gamma = 5, lambda = 0.1, alpha
+ * = 90 deg: eta = 2.49592 m_f/(a0 t0)), for a known calibrated D with its SE
+ * (relative SE of R_h = relative SE of D), the warning rule |R_h/R - 1| - 2
+ * SE > 0.05 on both sides of its threshold, and the theory case: the
+ * potential coupling's slip + Enskog friction (PL Eqs. 39-41) gives R_h/R =
+ * xi_E / (xi_S + xi_E) = 0.680 for sigma_cf = 2 a0, coupling II's Stokes
+ * theory exactly 1.  Tolerance 1e-9 relative: the same formulas in another
+ * order, rounding only.
+ *
+ * Hard core: PL's sigma_cc rule at sigma_cf = R, eps = 2.5 kT, n = 24 gives
+ * sigma_cc = 2^{7/6} R (Sec. III.C.1), so phi_c = phi 2^{1/2}; DLVO beside
+ * that WCA is refused naming the key that switched it on. */
+#include <jansson.h>
+#include <math.h>
+#include <string.h>
+
+#include "mapping_testutil.h"
+
+#include "peloid/mapping.h"
+#include "peloid/scene.h"
+
+#define REL_EQ(a, b) (fabs((a) / (b) - 1.0) <= 1e-9)
+
+/* PL Eqs. 9-10 at a0 = m_f = kT = 1, dt = lambda, times gamma (PL Eq. 13) */
+static double eta_hand(double gamma, double lambda, double alpha)
+{
+    const double g1 = gamma - 1.0 + exp(-gamma);
+    const double nu_kin = 0.5 * lambda * (5.0 * gamma / (g1 * (2.0 - cos(alpha) - cos(2.0 * alpha))) - 1.0);
+    const double nu_col = (1.0 - cos(alpha)) / (18.0 * lambda) * g1 / gamma;
+    return gamma * (nu_kin + nu_col);
+}
+
+static pl_mapping_system_t water_1um(void)
+{
+    pl_mapping_system_t r = {0};
+    r.radius = 1e-6;
+    r.rho_p = r.rho_f = 1e3;
+    r.nu = 1e-6;
+    r.kT = PL_KB * 298.15;
+    return r;
+}
+
+static pl_mapping_cg_t cg_of(int coupling, int boundary, double d, double d_se)
+{
+    pl_mapping_cg_t c = {0};
+    c.coupling = coupling;
+    c.match = PL_MATCH_DIFFUSION;
+    c.viscosity = PL_VISC_PL;
+    c.boundary = boundary;
+    c.gamma = 5.0;
+    c.lambda = 0.1;
+    c.alpha = M_PI / 2;
+    c.cell_over_R = 0.5; /* R = 2 a0 */
+    c.md_resolution = 20;
+    c.d_col_calibrated = d;
+    c.d_col_calibrated_se = d_se;
+    return c;
+}
+
+static const pl_mapping_warning_t *find_warn(const pl_mapping_t *m, const char *name)
+{
+    for (int i = 0; i < m->nwarn; ++i)
+        if (!strcmp(m->warn[i].name, name)) return &m->warn[i];
+    return NULL;
+}
+
+static void derive(const pl_mapping_cg_t *cg, pl_mapping_t *m)
+{
+    const pl_mapping_system_t r = water_1um();
+    const pl_mapping_solvent_t sv = {0};
+    pl_err_t err = {0, ""};
+    cr_assert_eq(pl_mapping_derive(&r, &sv, cg, m, &err), 0, "%s", err.msg);
+}
+
+/* a calibrated D = 0.02 +- 0.0005 a0^2/t0: stick R_h/R = 1 / (6 pi eta 2 D) = 0.53138, SE 2.5 % of it; slip 1.5x */
+Test(hydro, calibrated_stick_and_slip)
+{
+    static pl_mapping_t m;
+    const double eta = eta_hand(5.0, 0.1, M_PI / 2);
+    cr_expect(fabs(eta - 2.49592) < 1e-5, "eta = %.8g", eta);
+    pl_mapping_cg_t c = cg_of(PL_COUPLING_II, PL_BOUNDARY_STICK, 0.02, 0.0005);
+    derive(&c, &m);
+    const double stick = 1.0 / (6.0 * M_PI * eta * 2.0 * 0.02);
+    cr_expect(REL_EQ(m.rh_over_R, stick), "R_h/R = %.10g, hand %.10g", m.rh_over_R, stick);
+    cr_expect(fabs(stick - 0.53138) < 1e-5, "hand value %.8g", stick);
+    cr_expect(REL_EQ(m.rh_over_R_se, stick * 0.025), "SE %.10g, hand %.10g", m.rh_over_R_se, stick * 0.025);
+    cr_expect(REL_EQ(m.rh_stick_over_R, stick));
+    const pl_mapping_warning_t *w = find_warn(&m, "HYDRODYNAMIC_RADIUS");
+    cr_assert(w, "no HYDRODYNAMIC_RADIUS warning at R_h/R = %g", m.rh_over_R);
+    cr_expect_eq(w->severity, PL_SEV_WARNING);
+    cr_expect(REL_EQ(w->value, stick));
+    cr_expect(strstr(w->text, "sphere of 0.531 R") != NULL, "%s", w->text);
+
+    c.boundary = PL_BOUNDARY_SLIP;
+    derive(&c, &m);
+    cr_expect(REL_EQ(m.rh_over_R, 1.5 * stick), "slip R_h/R = %.10g, hand %.10g", m.rh_over_R, 1.5 * stick);
+    cr_expect(REL_EQ(m.rh_stick_over_R, stick), "the stick sphere of the same friction");
+    cr_expect(REL_EQ(m.rh_over_R_se, 1.5 * stick * 0.025));
+}
+
+/* the rule |R_h/R - 1| - 2 SE > 0.05 on both sides: R_h/R = 1.06 +- 0.01 (0.04: quiet), 1.08 +- 0.01 (0.06:
+ * warned), 1.08 +- 0.02 (0.04: quiet), 0.93 +- 0.005 (0.06: warned) */
+Test(hydro, warning_rule)
+{
+    static pl_mapping_t m;
+    const double eta = eta_hand(5.0, 0.1, M_PI / 2);
+    const struct { double ratio, se; int warned; } cases[] = {
+        {1.06, 0.01, 0}, {1.08, 0.01, 1}, {1.08, 0.02, 0}, {0.93, 0.005, 1}, {1.0, 0.0, 0}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
+        const double d = 1.0 / (6.0 * M_PI * eta * 2.0 * cases[i].ratio); /* the D that gives the ratio */
+        pl_mapping_cg_t c = cg_of(PL_COUPLING_I, PL_BOUNDARY_STICK, d, d * cases[i].se / cases[i].ratio);
+        derive(&c, &m);
+        cr_expect(REL_EQ(m.rh_over_R, cases[i].ratio), "case %zu: %.10g", i, m.rh_over_R);
+        cr_expect(fabs(m.rh_over_R_se - cases[i].se) < 1e-12, "case %zu: SE %.10g", i, m.rh_over_R_se);
+        cr_expect_eq(find_warn(&m, "HYDRODYNAMIC_RADIUS") != NULL, cases[i].warned, "case %zu: R_h/R %g +- %g", i,
+                     cases[i].ratio, cases[i].se);
+    }
+}
+
+/* theory (no calibration): the potential coupling's slip Stokes + Enskog in
+ * parallel (PL Eqs. 39-41), xi_E = 8/3 sqrt(2 pi mu) gamma sigma^2 (PL Eq. 40,
+ * mu = M / (M + 1), M = gamma 4/3 pi sigma^3 neutrally buoyant): R_h/R (slip)
+ * = xi_E / (xi_S + xi_E) = 0.680, no SE; coupling II's theory is Stokes: 1 */
+Test(hydro, theory)
+{
+    static pl_mapping_t m;
+    const double eta = eta_hand(5.0, 0.1, M_PI / 2);
+    pl_mapping_cg_t c = cg_of(PL_COUPLING_POTENTIAL, PL_BOUNDARY_SLIP, 0.0, 0.0);
+    c.enskog = 1;
+    derive(&c, &m);
+    const double M = 5.0 * 4.0 / 3.0 * M_PI * 8.0, mu = M / (M + 1.0);
+    const double xi_e = 8.0 / 3.0 * sqrt(2.0 * M_PI * mu) * 5.0 * 4.0, xi_s = 4.0 * M_PI * eta * 2.0;
+    const double hand = xi_e / (xi_s + xi_e);
+    cr_expect(fabs(hand - 0.680) < 5e-4, "hand %.6g", hand);
+    cr_expect(REL_EQ(m.rh_over_R, hand), "theory R_h/R = %.10g, hand %.10g", m.rh_over_R, hand);
+    cr_expect(isnan(m.rh_over_R_se), "theory has no SE: %g", m.rh_over_R_se);
+    const pl_mapping_warning_t *w = find_warn(&m, "HYDRODYNAMIC_RADIUS");
+    cr_assert(w, "theory 0.68 not warned");
+    cr_expect(strstr(w->text, "theory") && strstr(w->text, "slip"), "%s", w->text);
+
+    c = cg_of(PL_COUPLING_II, PL_BOUNDARY_STICK, 0.0, 0.0);
+    derive(&c, &m);
+    cr_expect(REL_EQ(m.rh_over_R, 1.0), "coupling II Stokes theory: %.12g", m.rh_over_R);
+    cr_expect(find_warn(&m, "HYDRODYNAMIC_RADIUS") == NULL);
+}
+
+/* The scene path: a calibration handed to the loader reaches R_h with its SE
+ * (scenes/pl_potential_physical.cfg, slip), and params --json carries it and
+ * the hard core; without one, the theory is marked */
+Test(hydro, scene_report)
+{
+    static pl_scene_t scene;
+    pl_err_t err = {0, ""};
+    pl_mapping_calibration_t cal = {0};
+    cal.d_inf = 0.019957;
+    cal.d_inf_se = 0.0011;
+    cr_assert_eq(pl_scene_load_calibrated("scenes/pl_potential_physical.cfg", 0, &cal, &scene, &err), 0, "%s",
+                 err.msg);
+    const pl_mapping_t *m = &scene.mapping.map;
+    const double eta = eta_hand(5.0, 0.1, M_PI / 2);
+    const double hand = 1.0 / (4.0 * M_PI * eta * 2.0 * 0.019957);
+    cr_expect(REL_EQ(m->rh_over_R, hand), "R_h/R %.10g, hand %.10g", m->rh_over_R, hand);
+    cr_expect(REL_EQ(m->rh_over_R_se, hand * 0.0011 / 0.019957), "SE %.10g", m->rh_over_R_se);
+    json_t *doc = NULL;
+    cr_assert_eq(pl_mapping_report_json(&scene, &doc, &err), 0, "%s", err.msg);
+    json_t *col = json_object_get(doc, "colloid");
+    cr_expect(REL_EQ(json_real_value(json_object_get(col, "hydrodynamic_radius_over_R")), hand));
+    cr_expect(REL_EQ(json_real_value(json_object_get(col, "hydrodynamic_radius_over_R_se")), hand * 0.0011 / 0.019957));
+    cr_expect(REL_EQ(json_real_value(json_object_get(col, "hydrodynamic_radius_m")), hand * 1e-6));
+    cr_expect_str_eq(json_string_value(json_object_get(col, "hydrodynamic_radius_source")), "calibration");
+    cr_expect_str_eq(json_string_value(json_object_get(col, "hydrodynamic_radius_boundary")), "slip");
+    cr_expect(REL_EQ(json_real_value(json_object_get(col, "volume_fraction_hard_core")),
+                     scene.mapping.colloid.phi_realised * sqrt(2.0)));
+    json_decref(doc);
+
+    cr_assert_eq(pl_scene_load("scenes/pl_potential_physical.cfg", &scene, &err), 0, "%s", err.msg);
+    cr_assert_eq(pl_mapping_report_json(&scene, &doc, &err), 0, "%s", err.msg);
+    col = json_object_get(doc, "colloid");
+    cr_expect_str_eq(json_string_value(json_object_get(col, "hydrodynamic_radius_source")), "theory");
+    cr_expect(json_is_null(json_object_get(col, "hydrodynamic_radius_over_R_se")), "theory: SE null");
+    json_decref(doc);
+}
+
+/* PL's sigma_cc rule at sigma_cf = R = 2 a0: sigma_cc = 2 2^{1/6} sigma_cf (1/2 + sqrt(2.5 / 10))^{1/24} =
+ * 2^{7/6} R, hard-core radius 2^{1/6} R, phi_c = 2^{1/2} phi: 0.1406 for scenes/pl_potential_physical.cfg
+ * (41 colloids, phi 0.099387), warned HARD_CORE_PHI */
+Test(hydro, potential_hard_core)
+{
+    static pl_scene_t scene;
+    pl_err_t err = {0, ""};
+    cr_assert_eq(pl_scene_load("scenes/pl_potential_physical.cfg", &scene, &err), 0, "%s", err.msg);
+    const pl_mapping_colloid_t *c = &scene.mapping.colloid;
+    cr_expect(REL_EQ(c->core_radius, 2.0 * pow(2.0, 1.0 / 6.0)), "core %.10g a0", c->core_radius);
+    cr_expect(REL_EQ(c->phi_core, c->phi_realised * sqrt(2.0)), "phi_c %.10g", c->phi_core);
+    cr_expect(fabs(c->phi_core - 0.1406) < 1e-4, "phi_c %.6g", c->phi_core);
+    const pl_mapping_warning_t *w = find_warn(&scene.mapping.map, "HARD_CORE_PHI");
+    cr_assert(w, "no HARD_CORE_PHI warning");
+    cr_expect(strstr(w->text, "1.122 R") != NULL, "%s", w->text);
+}
+
+/* DLVO with the potential coupling's WCA is refused, naming the key that
+ * switched DLVO on (the physical key, or colloids.pairs where given), the
+ * coupling and sigma_cc */
+Test(hydro, potential_dlvo_refused)
+{
+    static pl_scene_t scene;
+    const char *base = "physical: { radius = 1.0e-6; volume_fraction = 0.02; box = [12.0e-6, 12.0e-6, 12.0e-6];\n"
+                       "  hamaker = 1.0e-20; surface_potential = 0.05; ionic_strength = 0.001; };\n"
+                       "coarse_graining: { coupling = \"potential\"; };\n";
+    char text[1024];
+    const char *extra[] = {"", "colloids: { pairs = \"dlvo, wca\"; };\n"};
+    const char *key[] = {"key 'physical.surface_potential'", "key 'colloids.pairs'"};
+    for (int i = 0; i < 2; ++i) {
+        pl_err_t err = {0, ""};
+        snprintf(text, sizeof text, "%s%s", base, extra[i]);
+        cr_expect_eq(pl_scene_load_string(text, "pd.cfg", &scene, &err), PL_ERR_INPUT, "accepted: %s", text);
+        cr_expect(strstr(err.msg, "pd.cfg:") && strstr(err.msg, key[i]) && strstr(err.msg, "sigma_cc = 2.245 R") &&
+                      strstr(err.msg, "coarse_graining.coupling = \"potential\""),
+                  "%s", err.msg);
+    }
+    /* without DLVO the same suspension loads */
+    pl_err_t err = {0, ""};
+    cr_expect_eq(pl_scene_load_string("physical: { radius = 1.0e-6; volume_fraction = 0.02; box = [12.0e-6, 12.0e-6, "
+                                      "12.0e-6]; };\ncoarse_graining: { coupling = \"potential\"; };\n",
+                                      "p.cfg", &scene, &err),
+                 0, "%s", err.msg);
+}
