@@ -217,6 +217,18 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
 #define TABLE_COPY "pair_table.txt" /* the same for colloids.table_file */
 
 static int uses_init_file(const pl_scene_t *sc) { return sc->colloids.count > 0 && sc->colloids.init == PL_CINIT_FILE; }
+static int uses_table_file(const pl_scene_t *sc) { return sc->colloids.count > 0 && sc->colloids.table_file[0]; }
+
+/* src copied into the run directory as `name`, which the echo's key (key,
+ * n bytes) then names. */
+static int copy_named(const writer_t *w, const char *src, const char *name, char *key, size_t n, pl_err_t *err)
+{
+    char path[PATH_MAX];
+    pl_path_join(path, sizeof path, w->dir, name);
+    if (pl_file_copy(src, path, err)) return err->code;
+    snprintf(key, n, "%s", name);
+    return 0;
+}
 
 /* scene.cfg: the effective scene, every key; with an init file or a pair
  * table, the file copied as INIT_COPY or TABLE_COPY and named by the echo. */
@@ -230,25 +242,17 @@ static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *e
         echo->mapping.cg.boundary = sc->mapping.map.cg.boundary;
         echo->mapping.cg.enskog = sc->mapping.map.cg.enskog;
     }
-    if (uses_init_file(sc)) {
-        char src[PATH_MAX];
-        pl_colloid_init_path(sc, src, sizeof src);
-        pl_path_join(path, sizeof path, w->dir, INIT_COPY);
-        if (pl_file_copy(src, path, err)) {
-            free(echo);
-            return err->code;
-        }
-        snprintf(echo->colloids.init_file, sizeof echo->colloids.init_file, "%s", INIT_COPY);
+    char src[PATH_MAX];
+    if (uses_init_file(sc)) pl_colloid_init_path(sc, src, sizeof src);
+    if (uses_init_file(sc) && copy_named(w, src, INIT_COPY, echo->colloids.init_file, sizeof echo->colloids.init_file, err)) {
+        free(echo);
+        return err->code;
     }
-    if (sc->colloids.count > 0 && sc->colloids.table_file[0]) {
-        char src[PATH_MAX];
-        pl_colloid_table_path(sc, src, sizeof src);
-        pl_path_join(path, sizeof path, w->dir, TABLE_COPY);
-        if (pl_file_copy(src, path, err)) {
-            free(echo);
-            return err->code;
-        }
-        snprintf(echo->colloids.table_file, sizeof echo->colloids.table_file, "%s", TABLE_COPY);
+    if (uses_table_file(sc)) pl_colloid_table_path(sc, src, sizeof src);
+    if (uses_table_file(sc) &&
+        copy_named(w, src, TABLE_COPY, echo->colloids.table_file, sizeof echo->colloids.table_file, err)) {
+        free(echo);
+        return err->code;
     }
     pl_path_join(path, sizeof path, w->dir, "scene.cfg");
     FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
@@ -258,8 +262,7 @@ static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *e
     }
     fprintf(f, "# effective scene of %s (every key, defaults filled in)\n", sc->path);
     if (uses_init_file(sc)) fprintf(f, "# colloids.init_file: %s copied as " INIT_COPY "\n", sc->colloids.init_file);
-    if (sc->colloids.count > 0 && sc->colloids.table_file[0])
-        fprintf(f, "# colloids.table_file: %s copied as " TABLE_COPY "\n", sc->colloids.table_file);
+    if (uses_table_file(sc)) fprintf(f, "# colloids.table_file: %s copied as " TABLE_COPY "\n", sc->colloids.table_file);
     pl_scene_print(echo, f);
     free(echo);
     errno = 0;

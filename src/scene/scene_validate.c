@@ -68,12 +68,16 @@ static double memory_have(const char **what)
     long pages = sysconf(_SC_PHYS_PAGES), psize = sysconf(_SC_PAGESIZE);
     double have = pages > 0 && psize > 0 ? (double)pages * (double)psize : 0.0;
     *what = "physical memory";
-    const struct { int res; const char *name; } lims[] = {{RLIMIT_AS, "address-space limit, ulimit -v"},
-                                                          {RLIMIT_DATA, "data-segment limit, ulimit -d"}};
+    /* (the resources named in the calls: glibc types them as an enum, clang
+     * would see a sign change through an int table) */
+    struct { struct rlimit rl; int ok; const char *name; } lims[2];
+    lims[0].ok = getrlimit(RLIMIT_AS, &lims[0].rl) == 0;
+    lims[0].name = "address-space limit, ulimit -v";
+    lims[1].ok = getrlimit(RLIMIT_DATA, &lims[1].rl) == 0;
+    lims[1].name = "data-segment limit, ulimit -d";
     for (size_t k = 0; k < sizeof lims / sizeof lims[0]; ++k) {
-        struct rlimit rl;
-        if (getrlimit(lims[k].res, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY &&
-            (have <= 0.0 || (double)rl.rlim_cur < have)) {
+        const struct rlimit rl = lims[k].rl;
+        if (lims[k].ok && rl.rlim_cur != RLIM_INFINITY && (have <= 0.0 || (double)rl.rlim_cur < have)) {
             have = (double)rl.rlim_cur;
             *what = lims[k].name;
         }
