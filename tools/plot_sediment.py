@@ -17,8 +17,10 @@ and prints the measured initial settling speed next to
 
 M g is the colloid weight minus buoyancy (colloids.gravity).  The measured
 speed is the slope of the centre-of-mass height over the first stretch of
-the run, where every colloid still falls (until the centre of mass has gone
-a quarter of the way down to its final height).
+the run, where every colloid still falls: the run's own estimate
+(summary.json initial_settling_velocity, the sedimentation observer: the
+number report.md shows) where it has one, else a fit to the centre of mass
+until it has gone a quarter of the way down to its final height.
 """
 import argparse
 import json
@@ -95,6 +97,13 @@ def main():
                  f"({type(e).__name__}: {e})")
     zcm = (z * mass[None, :]).sum(1) / mass.sum()
     v, se, t_fit, p = measure(t, zcm)
+    source = "fit of colloids.h5's centre of mass over the first quarter of the way down"
+    ini = (summ.get("observables") or {}).get("initial_settling_velocity") or {}
+    if ini.get("value") is not None:  # the run's own estimate: the same number as report.md
+        dt = summ["scene"]["srd"]["dt"]
+        v, se, t_fit = ini["value"], ini["stderr"], ini["last_step"] * dt
+        p = np.array([-v, zcm[0] + v * t[0]])
+        source = "summary.json initial_settling_velocity (the sedimentation observer, relative to the fluid)"
 
     si = summ.get("units_si") or None
     ts, ls, vs = (si["t0_s"], si["a0_m"] * 1e6, si["a0_m"] * 1e6 / si["t0_s"]) if si else (1.0, 1.0, 1.0)
@@ -102,8 +111,8 @@ def main():
 
     print("plot_sediment: %s: %d colloids, R = %.4g a0, M = %.4g m_f, g = %.4g a0/t0^2"
           % (a.outdir, z.shape[1], pr["R"], pr["M"], pr["g"]))
-    print("  measured initial settling speed  %.4g +- %.2g %s  (%.4g a0/t0, fit to t = %.4g %s)"
-          % (v * vs, se * vs, vu, v, t_fit * ts, tu))
+    print("  measured initial settling speed  %.4g +- %.2g %s  (%.4g a0/t0, to t = %.4g %s; %s)"
+          % (v * vs, se * vs, vu, v, t_fit * ts, tu, source))
     print("  %s, xi = %-7.4g  %.4g %s  (measured / Stokes = %.2f)"
           % (pr["stokes_label"], pr["xi_stokes"], pr["v_stokes"] * vs, vu, v / pr["v_stokes"] if pr["v_stokes"] else math.nan))
     print("  coupling II, xi_II = %-12.4g  %.4g %s  (measured / v_II = %.2f)"
@@ -136,7 +145,7 @@ def main():
         keep = zz >= zcm.min() - 0.05 * (zcm[0] - zcm.min())
         ax2.plot(tt[keep] * ts, zz[keep] * ls, style, label="%s = %.3g %s" % (lab, pr[key] * vs, vu))
     tf = np.linspace(0.0, t_fit, 20)
-    ax2.plot(tf * ts, np.polyval(p, tf) * ls, "C3-", lw=2, label="fit: %.3g %s" % (v * vs, vu))
+    ax2.plot(tf * ts, np.polyval(p, tf) * ls, "C3-", lw=2, label="initial v = %.3g ± %.2g %s" % (v * vs, se * vs, vu))
     ax2.set_xlabel("time [%s]" % tu)
     ax2.set_ylabel("centre-of-mass height [%s]" % lu)
     ax2.set_title("settling of the centre of mass")
