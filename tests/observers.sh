@@ -530,5 +530,13 @@ h5py.File("g0/observables.h5", "r").close()
 PYEOF
 then ok "sedimentation with physical.gravity = 0: no over_stokes, a note, observables.h5 written"
 else bad "gravity 0: rc $rc $(grep -m1 'error:' g0.err)"; fi
+# a run too short, with too few colloids, to resolve a settling velocity
+# (issue 45): the audit says so; the quickstart itself resolves it
+sed -e 's/^steps *= *[0-9]*;/steps = 120;/' -e 's/volume_fraction = 0.05;/volume_fraction = 0.0005;/' \
+  "$TOOLS/../scenes/quickstart.cfg" > unres.cfg
+if "$PELOID" params unres.cfg 2>&1 | grep -q "SETTLING_UNRESOLVED: the run's settling Peclet number" \
+   && ! "$PELOID" params "$TOOLS/../scenes/quickstart.cfg" 2>&1 | grep -q SETTLING_UNRESOLVED
+then ok "SETTLING_UNRESOLVED for 2 colloids over 120 steps, not for the quickstart"
+else bad "SETTLING_UNRESOLVED: $("$PELOID" params unres.cfg 2>&1 | grep -m1 -i 'settl\|error')"; fi
 echo "observers.sh: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -355,6 +355,9 @@ int pl_mapping_colloids_apply(struct pl_scene *scene, pl_err_t *err);
  * of a liquid suspension, each naming the likely unit mistake
  * (src/mapping/mapping_plausible.c). */
 void pl_mapping_plausible(const struct pl_scene *scene, pl_mapping_t *m);
+/* SETTLING_UNRESOLVED when a physical scene's sedimentation observer cannot
+ * resolve the settling velocity over the run (src/mapping/mapping_sediment.c). */
+void pl_mapping_sediment_audit(const struct pl_scene *scene, pl_mapping_t *m);
 /* The key at fault for a derived value out of range: the first of the
  * physical{} keys at `offs` (the inputs the value comes from) that the file
  * gives outside its plausible range, its offset in *off and in `why` its

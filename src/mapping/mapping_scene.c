@@ -294,6 +294,7 @@ int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
     c->md_substeps = m->md_substeps;
     if (pl_mapping_colloids_apply(s, err)) return PL_ERR_INPUT;
     pl_mapping_plausible(s, &mp->map);
+    pl_mapping_sediment_audit(s, &mp->map);
     if (mp->cg.strict && pl_mapping_nwarnings(m) > 0) {
         for (int i = 0; i < m->nwarn; ++i)
             if (m->warn[i].severity == PL_SEV_WARNING)
