@@ -330,7 +330,7 @@ def plot(study, rows, path, units, physical=False, pooled=False):
         nrep = study.get("replicas")
         flagged = sum(any(q["flag"] in ("high", "low") for q in r["pooled"].get(y, {}).values()) for r in rows
                       for y in ys)
-        bars = (f"mean of {nrep} replicas, error bars: SE between them"
+        bars = (f"{nrep} replicas each\nmean, error bars: SE between the replicas"
                 + (f" ({flagged} disagree with the within-run SE)" if flagged else ""))
     axes[0, 0].set_title(f"sweep {study['study']}: {len(ok)}/{len(rows)} points ok"
                          + (f", {failed} failed" if failed else "") + ", " + bars, fontsize=10)

@@ -20,6 +20,7 @@ The flag's interval (ratio_interval) is where the ratio falls 95 % of the
 time when the within-run SEs are right, from the chi-square distribution
 of the sample variance.
 """
+import functools
 import math
 
 from scipy.stats import chi2
@@ -27,6 +28,7 @@ from scipy.stats import chi2
 LEVEL = 0.95
 
 
+@functools.lru_cache(maxsize=None)
 def ratio_interval(n, level=LEVEL):
     """The central `level` interval of se / se_within for n >= 2 replicas whose within-run SE is right.
 
