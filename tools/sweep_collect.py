@@ -135,7 +135,7 @@ def views(name, o, physical, n_colloids):
         return [(name + "_fraction", "1", scaled(v, n_colloids), scaled(e, n_colloids)),
                 (name + "_model", "colloids", v, e)]
     usi = o.get("unit_si")
-    if usi is None:  # (every observer unit has an SI twin, observables_si.c; kept honest if one does not)
+    if usi is None:  # a unit without an SI twin (observables_si.c): its model column alone, named so
         return [(name + "_model", u, v, e)]
     if usi == u:
         return [(name, usi, v, e)]
