@@ -10,7 +10,12 @@
 # throughput plan (OUT/plan.json, the log line, sweep.json "plan", the
 # threads column) is within the sweep's cores, its jobs' CPU sets disjoint,
 # --jobs/--threads override it, and each point's results are bitwise the
-# same under the plan and under --jobs 1 --threads 2.
+# same under the plan and under --jobs 1 --threads 2; a physical study's
+# sweep.tsv is in SI with units in its header (model values beside, cluster
+# sizes as fractions of N); replicas = 3 runs seeds seed + 0..2 of each point
+# and pools them (mean, SE between replicas, within-run SE, flag), refused
+# beside a swept seed; the pooling passes its unit test on synthetic
+# replicas of known variance (tools/test_sweep_pool.py).
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 PY=/usr/bin/python3
@@ -133,6 +138,12 @@ points = { keys = ["seed", "colloids.bd_viscosity"];
 refuse sweepname 'scene = "bd.cfg"; out = "out/sweepname";
 grid = ( { key = "name"; values = ["a", "b"]; } );' \
   "sweepname.cfg:2: key 'grid.\[0\]': \"name\" names the run, it is not swept.*allowed: "
+refuse repseed 'scene = "bd.cfg"; out = "out/repseed";
+grid = ( { key = "seed"; values = [1, 2]; } );
+replicas = 3;' \
+  "repseed.cfg:3: key 'replicas': replicas = 3 with \"seed\" swept (repseed.cfg:2); allowed: one of them, not both"
+refuse repzero 'scene = "bd.cfg"; out = "out/repzero"; grid = ( { key = "steps"; values = [10]; } ); replicas = 0;' \
+  "repzero.cfg:1: key 'replicas': value 0; allowed: an integer from 1 to"
 refuse badstudy 'scene = "bd.cfg"; out = "out/badstudy"; gird = ( );' "badstudy.cfg:1: key 'gird': unknown study key"
 refuse ploty_unknown 'scene = "bd.cfg"; out = "out/ploty_unknown";
 grid = ( { key = "seed"; values = [1, 2]; } );
@@ -258,5 +269,77 @@ tb=$(awk -F'\t' 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "threads") c = i 
 if [ $ra = 0 ] && [ $rb = 0 ] && [ $same = 2 ] && [ "$tb" = 2 ] && grep -q "1 job(s) x 2 thread(s) on .*--jobs 1 --threads 2 as given" fb.err; then
   ok "both points bitwise equal (checkpoint.h5, thermo.tsv but its wall-clock rate) under $(sed -n 's/.*checkpoint): \([0-9]* job(s) x [0-9]* thread(s)\).*/\1/p' fa.err) and --jobs 1 --threads 2 (threads column: 2)"
 else bad "jobs x threads determinism: exit $ra/$rb, $same of 2 points equal, threads column '$tb'"; fi
+# 11. a physical study (quickstart at 300 steps, observers every 10) in SI:
+#     every observable's column and the swept key with its unit, the model
+#     value beside, the largest cluster as a fraction of the colloids
+sed -e 's/^steps = 2400;/steps = 300;/' -e 's/_interval = 20;/_interval = 10;/' "$QS" > qs300.cfg
+printf 'scene = "qs300.cfg"; out = "out/si";\ngrid = ( { key = "physical.kappa"; values = [3.0e7, 1.0e8]; } );\n' > si.cfg
+"$PELOID" sweep si.cfg 2> si.err; rc=$?
+if [ $rc = 0 ] && $PY - <<'PY'
+import json
+rows = [l.rstrip("\n").split("\t") for l in open("out/si/sweep.tsv")]
+h = rows[0]
+for c in ("physical.kappa [1/m]", "wall_seconds [s]", "colloid_D [m^2/s]", "colloid_D_se [m^2/s]",
+          "colloid_D_model [a0^2/t0]", "colloid_D_model_se [a0^2/t0]", "settling_velocity [m/s]",
+          "settling_velocity_model [a0/t0]", "largest_cluster_fraction [1]", "largest_cluster_fraction_se [1]",
+          "largest_cluster_model [colloids]", "rdf_peak [1]"):
+    assert c in h, (c, h)
+assert "colloid_D" not in h and "largest_cluster" not in h, h
+for r in rows[1:]:
+    c = dict(zip(h, r))
+    s = json.load(open(f"out/si/{c['id']}/summary.json"))
+    o = s["observables"]
+    assert float(c["colloid_D [m^2/s]"]) == o["colloid_D"]["value_si"]
+    assert float(c["colloid_D_model [a0^2/t0]"]) == o["colloid_D"]["value"]
+    n = s["scene"]["colloids"]["count"]
+    assert abs(float(c["largest_cluster_fraction [1]"]) - o["largest_cluster"]["value"] / n) < 1e-15, (c, n)
+    assert 0 < float(c["largest_cluster_fraction [1]"]) <= 1
+    assert 1e-14 < float(c["colloid_D [m^2/s]"]) < 1e-11, c  # ~0.5 um^2/s
+print("    header:", " | ".join(h[4:16]), "...")
+PY
+then ok "physical study: sweep.tsv in SI with units (colloid_D [m^2/s] beside colloid_D_model [a0^2/t0], largest_cluster_fraction [1])"
+else bad "physical study SI table (rc $rc): $(tail -1 si.err); $(head -1 out/si/sweep.tsv 2>/dev/null | cut -c1-300)"; fi
+
+# 12. replicas = 3: each point runs seeds 11, 12, 13 (the base's 11 + r) as
+#     its own run p00Kr0..r2, pooled into one row per point
+printf 'scene = "bd.cfg"; out = "out/rep";\ngrid = ( { key = "colloids.bd_viscosity"; values = [0.02, 0.03]; } );\nreplicas = 3;\n' > rep.cfg
+"$PELOID" sweep rep.cfg 2> rep.err; rc=$?
+if [ $rc = 0 ] && $PY - <<'PY'
+import json, math, statistics
+runs = [l.rstrip("\n").split("\t") for l in open("out/rep/sweep_replicas.tsv")]
+hr = runs[0]; runs = [dict(zip(hr, r)) for r in runs[1:]]
+assert [(r["id"], r["status"], r["seed"]) for r in runs] == [
+    ("p000r0", "ok", "11"), ("p000r1", "ok", "12"), ("p000r2", "ok", "13"),
+    ("p001r0", "ok", "11"), ("p001r1", "ok", "12"), ("p001r2", "ok", "13")], runs
+for r in runs:
+    t = open(f"out/rep/{r['id']}/scene.cfg").read()
+    assert f"seed = {r['seed']};" in t, t
+pts = [l.rstrip("\n").split("\t") for l in open("out/rep/sweep.tsv")]
+h = pts[0]; pts = [dict(zip(h, r)) for r in pts[1:]]
+assert [p["id"] for p in pts] == ["p000", "p001"] and all(p["replicas"] == "3" for p in pts), pts
+for c in ("colloid_D", "colloid_D_se", "colloid_D_se_within", "colloid_D_se_flag"):
+    assert c in h, (c, h)
+for k, p in enumerate(pts):
+    xs = [float(r["colloid_D"]) for r in runs[3 * k:3 * k + 3]]
+    ses = [float(r["colloid_D_se"]) for r in runs[3 * k:3 * k + 3]]
+    assert len(set(xs)) == 3, xs  # three seeds, three results
+    assert abs(float(p["colloid_D"]) - statistics.fmean(xs)) < 1e-12 * abs(statistics.fmean(xs))
+    assert abs(float(p["colloid_D_se"]) - statistics.stdev(xs) / math.sqrt(3)) < 1e-12 * float(p["colloid_D_se"])
+    assert abs(float(p["colloid_D_se_within"]) - statistics.fmean(ses) / math.sqrt(3)) < 1e-12 * float(p["colloid_D_se_within"])
+    assert p["colloid_D_se_flag"] in ("ok", "high", "low"), p
+j = json.load(open("out/rep/sweep.json"))
+assert j["replicas"] == 3 and len(j["pooled"]) == 2 and len(j["points"]) == 6, j.keys()
+print("    p000: D = %s +- %s (between) / %s (within), %s" % tuple(pts[0][c] for c in
+      ("colloid_D", "colloid_D_se", "colloid_D_se_within", "colloid_D_se_flag")))
+PY
+then ok "replicas = 3: 6 runs (seeds 11-13 per point), one pooled row per point: mean, SE between, within-run SE, flag"
+else bad "replicas (rc $rc): $(tail -1 rep.err)"; fi
+
+# 13. the pooling on synthetic replicas of known variance
+if $PY "$ROOT/tools/test_sweep_pool.py" > pool.out 2>&1; then
+  ok "pooling unit test (tools/test_sweep_pool.py): SE between replicas ~ sigma/sqrt(N), flag rate 5 % with right SEs, fires on 3x understated"
+else bad "pooling unit test: $(grep -v '^  ok' pool.out | head -5)"; fi
+sed 's/^/    /' pool.out | grep -E "N = 3: SEs|N = 20: SEs|1000 replicas"
+
 echo "  sweep tests: $pass passed, $fail failed ($(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }') s)"
 [ $fail = 0 ]

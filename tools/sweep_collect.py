@@ -20,6 +20,26 @@ OUT/ID/summary.json and OUT/status/ID.tsv, and writes
   OUT/sweep.png   the study's plot{}: y (one panel per observable) against x,
                   one line per value of `series`, error bars = SE; without
                   plot{}: every observable against the first swept key.
+
+A physical study (its points' summary.json has "units_si"): every column of
+sweep.tsv is in SI with its unit in the header, the model value beside it
+("colloid_D [m^2/s]", "colloid_D_se [m^2/s]", "colloid_D_model [a0^2/t0]",
+"colloid_D_model_se [a0^2/t0]"; a dimensionless one once, "rdf_peak [1]"),
+cluster sizes as fractions of the colloids ("largest_cluster_fraction [1]":
+largest cluster / N, beside "largest_cluster_model [colloids]"), the swept
+keys with their units ("physical.kappa [1/m]"); sweep.png in SI with
+mathtext units (um as \u00b5m, m^2/s as \u00b5m\u00b2/s).  A model-unit study's
+columns are the names alone, as they always were.
+
+Replicas (study key `replicas` = N > 1, points.json "replicas"): the runs
+pPPPr0 .. pPPPr{N-1} of a point are pooled (tools/sweep_pool.py): sweep.tsv
+has one row per point (id pPPP, the replicas that finished, NAME the mean,
+NAME_se the SE from the scatter between replicas, NAME_se_within the mean
+within-run SE / sqrt(N), NAME_se_flag ok / high / low when the two disagree
+beyond the 95 % interval of their ratio), OUT/sweep_replicas.tsv one row
+per run as sweep.tsv has without replicas (plus replica and seed), and
+sweep.json "pooled" the pooled rows; sweep.png draws the pooled means with
+the SE between replicas.
 """
 import json
 import math
@@ -32,6 +52,15 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+from sweep_pool import pool  # noqa: E402
+
+# Observables that count colloids: in a physical study given as fractions of N.
+CLUSTER_SIZES = ("largest_cluster", "mean_cluster_size")
+# SI units as drawn (sweep.png): the factor to the drawn unit and its mathtext.
+DRAWN = {"m": (1e6, "\u00b5m"), "1/m": (1e-6, "\u00b5m$^{-1}$"), "m^2": (1e12, "\u00b5m$^2$"),
+         "1/m^3": (1e-18, "\u00b5m$^{-3}$"), "m/s": (1e6, "\u00b5m/s"), "m^2/s": (1e12, "\u00b5m$^2$/s"),
+         "m^2/s^2": (1e12, "\u00b5m$^2$/s$^2$"), "1/s": (1.0, "s$^{-1}$")}
 
 
 def fmt(v):
@@ -80,7 +109,119 @@ def load_point(out, p):
                 if isinstance(o, dict) and "value" in o:
                     row["observables"][name] = {"value": o["value"], "stderr": o.get("stderr"),
                                                 "unit": o.get("unit", "")}
+                    row["observables"][name].update({k: o[k] for k in ("value_si", "stderr_si", "unit_si") if k in o})
+            if "units_si" in s:  # a physical scene: its colloids, the N of the cluster fractions
+                row["units_si"] = True
+                count = ((s.get("scene") or {}).get("colloids") or {}).get("count")
+                row["colloids"] = count if isinstance(count, int) and count > 0 else None
+    for k in ("point", "replica", "seed"):
+        if k in p:
+            row[k] = p[k]
     return row
+
+
+def scaled(v, n):
+    return v / n if isinstance(v, (int, float)) and not isinstance(v, bool) and n else v
+
+
+def views(name, o, physical, n_colloids):
+    """The columns of observable `name` (o: a row's entry): [(column, unit, value, stderr)], unit None for a
+    model-unit study (its columns are the names alone); a physical study's SI column first, the model one
+    after it (none for a dimensionless one, whose SI value is the model's)."""
+    v, e, u = o["value"], o.get("stderr"), o.get("unit") or "1"
+    if not physical:
+        return [(name, None, v, e)]
+    if name in CLUSTER_SIZES and n_colloids:
+        return [(name + "_fraction", "1", scaled(v, n_colloids), scaled(e, n_colloids)),
+                (name + "_model", "colloids", v, e)]
+    usi = o.get("unit_si")
+    if usi is None:  # a unit without an SI twin (observables_si.c): its model column alone, named so
+        return [(name + "_model", u, v, e)]
+    if usi == u:
+        return [(name, usi, v, e)]
+    return [(name, usi, o.get("value_si"), o.get("stderr_si")), (name + "_model", u, v, e)]
+
+
+def head(column, unit, suffix=""):
+    return f"{column}{suffix} [{unit}]" if unit else column + suffix
+
+
+def row_views(r, physical):
+    return {name: views(name, o, physical, r.get("colloids")) for name, o in r["observables"].items()}
+
+
+def layout(rows, physical):
+    """Each observable any row measured, in order, with its columns [(column, unit)] (from the first row)."""
+    out = {}
+    for r in rows:
+        for name, vs in row_views(r, physical).items():
+            out.setdefault(name, [(c, u) for c, u, _, _ in vs])
+    return out
+
+
+def table(rows, keys, physical, units, pooled=False):
+    """sweep.tsv's lines: one per row (a run, or with `pooled` a point's pooled replicas)."""
+    cols = {}
+    for r in rows if pooled else ():
+        for name, cs in r["columns"].items():
+            cols.setdefault(name, cs)
+    cols = cols if pooled else layout(rows, physical)
+    kh = [head(k, units.get(k) if physical else None) for k in keys]
+    h = ["id", "status", "exit_code", "message"] + kh
+    h += ["replicas"] if pooled else [c for c in ("replica", "seed") if rows and c in rows[0]]
+    h += ["last_step", head("wall_seconds", "s" if physical else None), "threads"]
+    for name, cs in cols.items():
+        for i, (c, u) in enumerate(cs):
+            h += [head(c, u), head(c, u, "_se")]
+            if pooled:
+                h += [head(c, u, "_se_within")] + ([name + "_se_flag"] if i == 0 else [])
+    lines = ["\t".join(h)]
+    for r in rows:
+        cells = [r["id"], r["status"], fmt(r["exit_code"]), r["message"].replace("\t", " ")]
+        cells += [fmt(r["params"].get(k)) for k in keys]
+        cells += [fmt(r.get("replicas_ok"))] if pooled else [fmt(r[c]) for c in ("replica", "seed") if c in r]
+        cells += [fmt(r["last_step"]), fmt(r["wall_seconds"]), fmt(r["threads"])]
+        got = r["pooled"] if pooled else {n: {c: {"mean": v, "se": e} for c, _, v, e in vs}
+                                          for n, vs in row_views(r, physical).items()}
+        for name, cs in cols.items():
+            for i, (c, _) in enumerate(cs):
+                q = got.get(name, {}).get(c)
+                cells += [fmt(q["mean"]), fmt(q["se"])] if q else ["", ""]
+                if pooled:
+                    cells += [fmt(q["se_within"]) if q else ""] + ([q["flag"] if q else ""] if i == 0 else [])
+        lines.append("\t".join(cells))
+    return lines
+
+
+def pool_points(rows, physical):
+    """One row per point from the rows of its replicas (points.json "point"): status ok when every replica is,
+    else the first replica's that is not; each observable's columns pooled over the replicas that finished."""
+    by = {}
+    for r in rows:
+        by.setdefault(r["point"], []).append(r)
+    out = []
+    for p, rs in sorted(by.items()):
+        ok = [r for r in rs if r["status"] == "ok"]
+        bad = next((r for r in rs if r["status"] != "ok"), None)
+        first = rs[0]
+        pr = {"id": first["id"].rpartition("r")[0], "index": p, "params": first["params"],
+              "status": bad["status"] if bad else "ok", "exit_code": bad["exit_code"] if bad else 0,
+              "message": (f"{bad['id']}: {bad['message']}" if bad else f"{len(ok)}/{len(rs)} replicas ok"),
+              "replicas": [r["id"] for r in rs], "replicas_ok": len(ok),
+              "last_step": first["last_step"] if all(r["last_step"] == first["last_step"] for r in rs) else None,
+              "wall_seconds": math.fsum(r["wall_seconds"] for r in ok) if ok else None,
+              "threads": first["threads"], "pooled": {}}
+        if bad and bad["status"] != "failed" and ok:
+            pr["message"] = f"{len(ok)}/{len(rs)} replicas ok, {bad['id']} {bad['status']}"
+        vs = [row_views(r, physical) for r in ok]
+        pr["columns"] = layout(ok, physical)
+        pr["model_unit"] = {n: o["unit"] for r in ok for n, o in r["observables"].items()}
+        for name, cols in pr["columns"].items():
+            per = [{c: (v, e) for c, _, v, e in v_.get(name, [])} for v_ in vs]
+            pr["pooled"][name] = {c: pool([q[c][0] if c in q else None for q in per],
+                                          [q[c][1] if c in q else None for q in per]) for c, _ in cols}
+        out.append(pr)
+    return out
 
 
 def key_units():
@@ -104,7 +245,43 @@ def key_units():
     return units
 
 
-def plot(study, rows, path, units):
+def mathtext(unit):
+    """A unit as matplotlib draws it: powers as superscripts (m^2 -> m$^2$, 1/m -> m$^{-1}$), um as \u00b5m."""
+    unit = re.sub(r"\bum\b", "\u00b5m", unit)
+    m = re.fullmatch(r"1/([A-Za-z\u00b5]+)(?:\^(\d+))?", unit)
+    if m:
+        return f"{m.group(1)}$^{{-{m.group(2) or 1}}}$"
+    return re.sub(r"\^(-?\d+)", r"$^{\1}$", unit)
+
+
+def drawn(rows, physical, pooled):
+    """Each row's {observable: (value, SE, axis label)} as sweep.png draws it: a model-unit study its values;
+    a physical one its SI column in the drawn units (DRAWN: \u00b5m, \u00b5m\u00b2/s, ...); pooled rows their mean
+    with the SE between replicas."""
+    out = []
+    for r in rows:
+        d = {}
+        if pooled:
+            for name, cs in r["columns"].items():
+                c, u = cs[0]
+                q = r["pooled"][name][c]
+                d[name] = (q["mean"], q["se"], u if physical else r["model_unit"].get(name, ""))
+        else:
+            for name, vs in row_views(r, physical).items():
+                _, u, v, e = vs[0]
+                d[name] = (v, e, u if physical else r["observables"][name]["unit"])
+        for name, (v, e, u) in list(d.items()):
+            if not physical:
+                d[name] = (v, e, f"{name} [{u}]" if u and u != "1" else name)
+                continue
+            f, shown = DRAWN.get(u, (1.0, mathtext(u or "1")))
+            label = f"{name} / N" if name in CLUSTER_SIZES and u == "1" else name
+            d[name] = (scaled(v, 1.0 / f), scaled(e, 1.0 / f), f"{label} [{shown}]" if shown != "1" else label)
+        out.append(d)
+    return out
+
+
+def plot(study, rows, path, units, physical=False, pooled=False):
     spec = study.get("plot") or {}
     keys = study["keys"]
     x = spec.get("x", keys[0])
@@ -113,31 +290,32 @@ def plot(study, rows, path, units):
     if ys is None:
         ys = []
         for r in rows:
-            ys += [n for n in r["observables"] if n not in ys]
+            ys += [n for n in (r["pooled"] if pooled else r["observables"]) if n not in ys]
         ys = ys[:6]
     elif isinstance(ys, str):
         ys = [ys]
-    ok = [r for r in rows if r["status"] == "ok"]
+    ok = [(r, d) for r, d in zip(rows, drawn(rows, physical, pooled)) if r["status"] == "ok"
+          or (pooled and r.get("replicas_ok"))]
     xunit = units.get(x, "")
     n = max(1, len(ys))
     fig, axes = plt.subplots(n, 1, figsize=(6, 3.2 * n), squeeze=False)
     for ax, y in zip(axes[:, 0], ys):
         groups = {}
-        for r in ok:
-            if y not in r["observables"] or not isinstance(r["params"].get(x), (int, float)):
+        for r, d in ok:
+            if y not in d or not isinstance(r["params"].get(x), (int, float)) or not isinstance(d[y][0], (int, float)):
                 continue
-            groups.setdefault(json.dumps(r["params"].get(series)) if series else "", []).append(r)
+            groups.setdefault(json.dumps(r["params"].get(series)) if series else "", []).append((r, d))
         for label, rs in sorted(groups.items()):
-            rs.sort(key=lambda r: r["params"][x])
-            xv = [r["params"][x] for r in rs]
-            yv = [r["observables"][y]["value"] for r in rs]
-            ev = [r["observables"][y]["stderr"] or 0.0 for r in rs]
-            ev = [e if e is not None and math.isfinite(e) else 0.0 for e in ev]
+            rs.sort(key=lambda rd: rd[0]["params"][x])
+            xv = [r["params"][x] for r, _ in rs]
+            yv = [d[y][0] for _, d in rs]
+            ev = [d[y][1] for _, d in rs]
+            ev = [e if isinstance(e, (int, float)) and math.isfinite(e) else 0.0 for e in ev]
             ax.errorbar(xv, yv, yerr=ev, fmt="o-", ms=4, capsize=3,
                         label=f"{series} = {label}" if series else None)
-        unit = next((r["observables"][y]["unit"] for r in ok if y in r["observables"]), "")
-        ax.set_xlabel(f"{x} [{xunit}]" if xunit else x)
-        ax.set_ylabel(f"{y} [{unit}]" if unit and unit != "1" else y)
+        ylabel = next((d[y][2] for _, d in ok if y in d), y)
+        ax.set_xlabel(f"{x} [{mathtext(xunit) if physical else xunit}]" if xunit else x)
+        ax.set_ylabel(ylabel)
         if spec.get("logx"):
             ax.set_xscale("log")
         if spec.get("logy"):
@@ -147,8 +325,15 @@ def plot(study, rows, path, units):
         elif series:
             ax.legend(fontsize=8)
     failed = sum(r["status"] == "failed" for r in rows)
+    bars = "error bars: SE"
+    if pooled:
+        nrep = study.get("replicas")
+        flagged = sum(any(q["flag"] in ("high", "low") for q in r["pooled"].get(y, {}).values()) for r in rows
+                      for y in ys)
+        bars = (f"{nrep} replicas each\nmean, error bars: SE between the replicas"
+                + (f" ({flagged} disagree with the within-run SE)" if flagged else ""))
     axes[0, 0].set_title(f"sweep {study['study']}: {len(ok)}/{len(rows)} points ok"
-                         + (f", {failed} failed" if failed else "") + ", error bars: SE", fontsize=10)
+                         + (f", {failed} failed" if failed else "") + ", " + bars, fontsize=10)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -170,27 +355,25 @@ def main():
         sys.exit(f"peloid: error: {out}/points.json: not a study (needs study, study_file, keys and points "
                  "with id, index, params); allowed: the output of peloid sweep")
     rows = [load_point(out, p) for p in study["points"]]
-    names = []
-    for r in rows:
-        names += [n for n in r["observables"] if n not in names]
-    head = ["id", "status", "exit_code", "message"] + study["keys"] + ["last_step", "wall_seconds", "threads"]
-    for n in names:
-        head += [n, n + "_se"]
-    lines = ["\t".join(head)]
-    for r in rows:
-        cells = [r["id"], r["status"], fmt(r["exit_code"]), r["message"].replace("\t", " ")]
-        cells += [fmt(r["params"].get(k)) for k in study["keys"]]
-        cells += [fmt(r["last_step"]), fmt(r["wall_seconds"]), fmt(r["threads"])]
-        for n in names:
-            o = r["observables"].get(n)
-            cells += [fmt(o["value"]), fmt(o["stderr"])] if o else ["", ""]
-        lines.append("\t".join(cells))
-    tmp = os.path.join(out, "sweep.tsv.tmp")
-    open(tmp, "w").write("\n".join(lines) + "\n")
-    os.replace(tmp, os.path.join(out, "sweep.tsv"))
+    physical = any(r.get("units_si") for r in rows)
+    replicas = study.get("replicas", 1)
+    units = key_units()
+    pooled = pool_points(rows, physical) if replicas > 1 else None
+
+    def write(name, lines):
+        tmp = os.path.join(out, name + ".tmp")
+        open(tmp, "w").write("\n".join(lines) + "\n")
+        os.replace(tmp, os.path.join(out, name))
+
+    write("sweep.tsv", table(pooled, study["keys"], physical, units, pooled=True) if pooled
+          else table(rows, study["keys"], physical, units))
+    if pooled:
+        write("sweep_replicas.tsv", table(rows, study["keys"], physical, units))
     tmp = os.path.join(out, "sweep.json.tmp")
     doc = {"study": study["study"], "study_file": study["study_file"], "keys": study["keys"], "points": rows}
-    units = key_units()
+    if pooled:
+        doc["replicas"] = replicas
+        doc["pooled"] = pooled
     doc["key_units"] = {k: units[k] for k in study["keys"] if k in units}  # the plot's axis labels
     try:
         doc["plan"] = json.load(open(os.path.join(out, "plan.json")))
@@ -198,13 +381,14 @@ def main():
         pass  # a Slurm array (--point, --collect) plans nothing
     json.dump(doc, open(tmp, "w"), indent=1)
     os.replace(tmp, os.path.join(out, "sweep.json"))
-    plot(study, rows, os.path.join(out, "sweep.png"), units)
+    plot(study, pooled or rows, os.path.join(out, "sweep.png"), units, physical, bool(pooled))
     ok = sum(r["status"] == "ok" for r in rows)
     failed = sum(r["status"] == "failed" for r in rows)
     stopped = sum(r["status"] == "interrupted" for r in rows)
     print(f"peloid sweep {study['study']}: {ok} ok, {failed} failed, {stopped} interrupted, "
           f"{len(rows) - ok - failed - stopped} pending -> "
-          f"{out}/sweep.tsv, sweep.json, sweep.png", file=sys.stderr)
+          f"{out}/sweep.tsv, {'sweep_replicas.tsv, ' if pooled else ''}sweep.json, sweep.png", file=sys.stderr)
 
 
-main()
+if __name__ == "__main__":
+    main()

@@ -23,8 +23,16 @@ typedef struct pl_study pl_study_t;
 int pl_study_load(const char *path, pl_study_t **out, pl_err_t *err);
 void pl_study_free(pl_study_t *study);
 
+/* The runs of the study: its points times its replicas (study key
+ * `replicas`, default 1).  Every k below is a run: replica k % replicas of
+ * point k / replicas. */
 int pl_study_npoints(const pl_study_t *study);
-/* Directory name of point k: p000, p001, ... (wider from 1000 points). */
+int pl_study_replicas(const pl_study_t *study);
+/* The seed run k is given: the base scene's seed (its default when unset)
+ * + its replica number (meaningful with replicas > 1; else the base's). */
+long long pl_study_seed(const pl_study_t *study, int k);
+/* Directory name of run k: p000, p001, ... (wider from 1000 points); with
+ * replicas > 1 the replica follows: p000r0, p000r1, ... */
 void pl_study_point_id(const pl_study_t *study, int k, char *buf, size_t n);
 int pl_study_naxes(const pl_study_t *study);
 const char *pl_study_name(const pl_study_t *study);
@@ -41,7 +49,7 @@ int pl_study_point_scene(pl_study_t *study, int k, const char *name, char **text
  * folder) into scenes_dir, beside its scene. */
 int pl_study_point_files(const pl_study_t *study, const char *scenes_dir, pl_err_t *err);
 
-/* Value of axis `axis` at point k as scene text (e.g. "1.4e+08", "\"II\""). */
+/* Value of axis `axis` at run k as scene text (e.g. "1.4e+08", "\"II\""). */
 int pl_study_point_value(const pl_study_t *study, int k, int axis, char *buf, size_t n);
 
 /* The study's plot{} section as JSON text ("{}" when absent), for the collect

@@ -11,11 +11,19 @@
  *   # or an explicit list instead of grid:
  *   # points = { keys = ["physical.kappa", "seed"]; values = ( (1.4e8, 1), (1.6e8, 2) ); };
  *   plot  = { x = "physical.kappa"; y = ["rdf_peak"]; series = "physical.surface_potential"; };
+ *   replicas = 3;                        # each point 3 times, seeds seed + 0, 1, 2
  *
  * A point's scene is the base scene's settings (its @include files
  * expanded) with the point's keys set, written back as libconfig text; the
  * scene loader then checks it like any scene.  Grid points run with the last
- * key fastest. */
+ * key fastest.
+ *
+ * Replicas: with replicas = N > 1 the sweep's runs are the points times N,
+ * run k being replica r = k % N of point k / N, id pPPPrR, its scene the
+ * point's with seed = S + r (S: the base scene's seed, its default when
+ * unset); a swept seed is refused beside it (two sources of seeds).  The
+ * runs go through the sweep's plan like any points; the collect step pools
+ * the replicas of each point (tools/sweep_collect.py). */
 #include <ctype.h>
 #include <limits.h>
 #include <libconfig.h>
@@ -225,17 +233,45 @@ static int read_plot(pl_study_t *st, config_setting_t *p, pl_err_t *err)
     return 0;
 }
 
+/* replicas = N: an integer >= 1, the runs in all within PL_STUDY_MAX_POINTS,
+ * and no swept seed (the replicas' seeds are the base scene's seed + r). */
+static int read_replicas(pl_study_t *st, const config_setting_t *s, pl_err_t *err)
+{
+    char what[512], v[80];
+    int t = config_setting_type(s);
+    long long n = t == CONFIG_TYPE_INT || t == CONFIG_TYPE_INT64 ? config_setting_get_int64(s) : 0;
+    long long most = PL_STUDY_MAX_POINTS / st->npoints;
+    if (t == CONFIG_TYPE_INT || t == CONFIG_TYPE_INT64) snprintf(v, sizeof v, "%lld", n);
+    else if (t == CONFIG_TYPE_FLOAT) snprintf(v, sizeof v, "%g", config_setting_get_float(s));
+    else if (t == CONFIG_TYPE_STRING) snprintf(v, sizeof v, "\"%.64s\"", config_setting_get_string(s));
+    else snprintf(v, sizeof v, "(not a number)");
+    if (n < 1 || n > most) {
+        snprintf(what, sizeof what, "value %s; allowed: an integer from 1 to %lld (each point run that many "
+                 "times, at most %d runs in all)", v, most, PL_STUDY_MAX_POINTS);
+        return fail_at(st, s, err, "replicas", what);
+    }
+    for (int a = 0; a < st->naxes; ++a)
+        if (!strcmp(st->ax[a].key, "seed")) {
+            int line = 0, fi = pl_scene_text_where(&st->stext, st->ax[a].line, &line);
+            snprintf(what, sizeof what, "replicas = %lld with \"seed\" swept (%.200s:%d); allowed: one of them, "
+                     "not both (replica r runs the base scene's seed + r)", n, st->stext.files[fi], line);
+            return fail_at(st, s, err, "replicas", what);
+        }
+    st->replicas = (int)n;
+    return 0;
+}
+
 static int read_study(pl_study_t *st, pl_err_t *err)
 {
     config_setting_t *root = config_root_setting(&st->scfg);
-    static const char *const known[] = {"name", "scene", "out", "grid", "points", "plot", NULL};
+    static const char *const known[] = {"name", "scene", "out", "grid", "points", "plot", "replicas", NULL};
     for (int j = 0; j < config_setting_length(root); ++j) {
         config_setting_t *s = config_setting_get_elem(root, (unsigned)j);
         int ok = 0;
         for (int i = 0; known[i]; ++i) ok |= !strcmp(known[i], config_setting_name(s));
         if (!ok)
             return fail_at(st, s, err, config_setting_name(s), "unknown study key; allowed: name, scene, out, "
-                           "grid, points, plot");
+                           "grid, points, plot, replicas");
     }
     int rc = 0;
     const char *name = string_of(st, root, "name", err, &rc), *scene = NULL, *out = NULL;
@@ -274,6 +310,8 @@ static int read_study(pl_study_t *st, pl_err_t *err)
     config_setting_t *plot = config_setting_get_member(root, "plot");
     if (!rc && plot) rc = read_plot(st, plot, err);
     if (!rc && plot) rc = pl_study_check_plot(st, NULL, -1, err);
+    config_setting_t *replicas = config_setting_get_member(root, "replicas");
+    if (!rc && replicas) rc = read_replicas(st, replicas, err);
     return rc;
 }
 
@@ -283,6 +321,7 @@ int pl_study_load(const char *path, pl_study_t **out, pl_err_t *err)
     pl_study_t *st = calloc(1, sizeof *st);
     if (!st) return pl_err_set(err, PL_ERR_NOMEM, "out of memory reading the study");
     snprintf(st->path, sizeof st->path, "%s", path);
+    st->replicas = 1;
     int rc = pl_scene_text_read(&st->stext, path, 0, err);
     if (!rc) {
         config_init(&st->scfg);
@@ -298,6 +337,7 @@ int pl_study_load(const char *path, pl_study_t **out, pl_err_t *err)
     pl_scene_t *scene = rc ? NULL : malloc(sizeof *scene);
     if (!rc && !scene) rc = pl_err_set(err, PL_ERR_NOMEM, "out of memory reading the study");
     if (!rc) rc = pl_scene_load(st->base, scene, err); /* the base scene alone: the loader's message */
+    if (!rc) st->seed0 = scene->run.seed;
     free(scene);
     if (!rc) rc = pl_scene_text_read(&st->btext, st->base, 0, err);
     if (!rc) {
@@ -324,13 +364,17 @@ void pl_study_free(pl_study_t *st)
     free(st);
 }
 
-int pl_study_npoints(const pl_study_t *st) { return st->npoints; }
+int pl_study_npoints(const pl_study_t *st) { return st->npoints * st->replicas; }
+int pl_study_replicas(const pl_study_t *st) { return st->replicas; }
+long long pl_study_seed(const pl_study_t *st, int k) { return st->seed0 + k % st->replicas; }
 
 void pl_study_point_id(const pl_study_t *st, int k, char *buf, size_t n)
 {
     int w = 3;
     for (int m = st->npoints - 1; m >= 1000; m /= 10) ++w;
-    if (snprintf(buf, n, "p%0*d", w, k) >= (int)n) buf[0] = '\0'; /* n >= 32 in every caller */
+    int len = st->replicas > 1 ? snprintf(buf, n, "p%0*dr%d", w, k / st->replicas, k % st->replicas)
+                               : snprintf(buf, n, "p%0*d", w, k);
+    if (len >= (int)n) buf[0] = '\0'; /* n >= 32 in every caller */
 }
 int pl_study_naxes(const pl_study_t *st) { return st->naxes; }
 const char *pl_study_name(const pl_study_t *st) { return st->name; }
@@ -416,14 +460,26 @@ int pl_study_point_files(const pl_study_t *st, const char *scenes_dir, pl_err_t 
     return 0;
 }
 
+/* Sets the top-level seed of the base tree (a replica's; a new setting,
+ * so that the writer does not read the base's literal back). */
+static int set_seed(config_setting_t *root, long long seed)
+{
+    if (config_setting_get_member(root, "seed") && config_setting_remove(root, "seed") != CONFIG_TRUE) return -1;
+    config_setting_t *s = config_setting_add(root, "seed", CONFIG_TYPE_INT64);
+    return s && config_setting_set_int64(s, seed) ? 0 : -1;
+}
+
 int pl_study_point_scene(pl_study_t *st, int k, const char *name, char **text, pl_err_t *err)
 {
     config_setting_t *root = config_root_setting(&st->bcfg);
+    const int p = k / st->replicas, r = k % st->replicas;
     for (int a = 0; a < st->naxes; ++a) {
-        if (set_key(root, st->ax[a].sec, st->ax[a].leaf, value_of(st, k, a)))
+        if (set_key(root, st->ax[a].sec, st->ax[a].leaf, value_of(st, p, a)))
             return pl_err_set(err, PL_ERR_INPUT, "%s: point %d: cannot set '%s' in the base scene %s (is '%s' "
-                              "a group there?)", st->path, k, st->ax[a].key, st->base, st->ax[a].sec);
+                              "a group there?)", st->path, p, st->ax[a].key, st->base, st->ax[a].sec);
     }
+    if (st->replicas > 1 && set_seed(root, pl_study_seed(st, k)))
+        return pl_err_set(err, PL_ERR_INPUT, "%s: point %d replica %d: cannot set the seed", st->path, p, r);
     if (name) { /* name is never swept (add_axis) */
         config_setting_t *n = config_setting_get_member(root, "name");
         if (!n) n = config_setting_add(root, "name", CONFIG_TYPE_STRING);
@@ -433,8 +489,10 @@ int pl_study_point_scene(pl_study_t *st, int k, const char *name, char **text, p
     size_t len;
     FILE *f = open_memstream(text, &len);
     if (!f) return pl_err_set(err, PL_ERR_NOMEM, "out of memory writing a point's scene");
-    fprintf(f, "# peloid sweep: study %s, point %d of %d: the base scene %s with\n", st->path, k, st->npoints,
+    fprintf(f, "# peloid sweep: study %s, point %d of %d: the base scene %s with\n", st->path, p, st->npoints,
             st->base);
+    if (st->replicas > 1)
+        fprintf(f, "#   replica %d of %d: seed = %lld (the base scene's + %d)\n", r, st->replicas, pl_study_seed(st, k), r);
     for (int a = 0; a < st->naxes; ++a) {
         char v[256];
         pl_study_point_value(st, k, a, v, sizeof v);
@@ -454,7 +512,7 @@ int pl_study_check_points(pl_study_t *st, const char *out_dir, pl_sweep_cost_t *
     pl_scene_t *scene = malloc(sizeof *scene);
     if (!scene) return pl_err_set(err, PL_ERR_NOMEM, "out of memory checking the study's points");
     int rc = 0;
-    for (int k = 0; !rc && k < st->npoints; ++k) {
+    for (int k = 0; !rc && k < pl_study_npoints(st); ++k) {
         char *text = NULL, label[1024], name[160], id[32];
         pl_study_point_id(st, k, id, sizeof id);
         snprintf(name, sizeof name, "%s-%s", st->name, id);
@@ -464,7 +522,7 @@ int pl_study_check_points(pl_study_t *st, const char *out_dir, pl_sweep_cost_t *
         if (!rc) rc = pl_run_check(scene, err);
         if (!rc && cost) pl_sweep_point_cost(scene, &cost[k]);
         free(text);
-        if (!rc && (rc = pl_study_check_plot(st, scene, k, err))) break; /* names its own line */
+        if (!rc && (rc = pl_study_check_plot(st, scene, k / st->replicas, err))) break; /* names its own line */
         if (rc) { /* name the study line of the values, the point, then the loader's line */
             char vals[512] = "", v[128], inner[1024];
             int line = st->ax[0].line, fl;
@@ -479,7 +537,7 @@ int pl_study_check_points(pl_study_t *st, const char *out_dir, pl_sweep_cost_t *
             int fi = pl_scene_text_where(&st->stext, line, &fl);
             snprintf(inner, sizeof inner, "%s", err->msg);
             rc = pl_err_set(err, PL_ERR_INPUT, "%s:%d: point %d (%s) is not a valid scene, nothing was run: %s",
-                            st->stext.files[fi], fl, k, vals, inner);
+                            st->stext.files[fi], fl, k / st->replicas, vals, inner);
         }
     }
     free(scene);

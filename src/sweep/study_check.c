@@ -34,8 +34,8 @@ static int grid_unique(const pl_study_t *st, pl_err_t *err)
         for (int i = 1; i < st->ax[a].n; ++i)
             for (int j = 0; j < i; ++j) {
                 char vi[256], vj[256], label[32], what[800];
-                pl_study_point_value(st, i * stride, a, vi, sizeof vi);
-                pl_study_point_value(st, j * stride, a, vj, sizeof vj);
+                pl_study_value_text(st, i * stride, a, vi, sizeof vi);
+                pl_study_value_text(st, j * stride, a, vj, sizeof vj);
                 if (strcmp(vi, vj)) continue;
                 snprintf(label, sizeof label, "grid.[%d]", a);
                 snprintf(what, sizeof what, "\"%s\": value %.200s is given twice (values %d and %d), so every "
@@ -58,7 +58,7 @@ static int rows_unique(const pl_study_t *st, pl_err_t *err)
         r[k].text = malloc(cap);
         if (!r[k].text) rc = pl_err_set(err, PL_ERR_NOMEM, "out of memory checking the study's points");
         for (int a = 0; !rc && a < st->naxes; ++a) {
-            pl_study_point_value(st, k, a, r[k].text + len, 256);
+            pl_study_value_text(st, k, a, r[k].text + len, 256);
             len += strlen(r[k].text + len);
             r[k].text[len++] = '\x1f';
             r[k].text[len] = '\0';
@@ -71,7 +71,7 @@ static int rows_unique(const pl_study_t *st, pl_err_t *err)
         size_t len = 0;
         for (int a = 0; a < st->naxes && len < sizeof vals; ++a) {
             char v[256];
-            pl_study_point_value(st, r[i].k, a, v, sizeof v);
+            pl_study_value_text(st, r[i].k, a, v, sizeof v);
             len += (size_t)snprintf(vals + len, sizeof vals - len, "%s%s = %.100s", a ? ", " : "", st->ax[a].key, v);
         }
         snprintf(what, sizeof what, "points %d and %d are the same (%s); allowed: each point once", r[i - 1].k,

@@ -23,7 +23,9 @@ struct pl_study {
     config_t scfg, bcfg;
     int have_s, have_b;
     axis_t ax[PL_STUDY_MAX_AXES];
-    int naxes, npoints;
+    int naxes, npoints;      /* npoints: distinct points (grid or rows) */
+    int replicas;            /* runs of each point, seeds seed0 + r (>= 1) */
+    long long seed0;         /* the base scene's seed (its default when unset) */
     config_setting_t *rows; /* points{}: one row per point, NULL for a grid */
     config_setting_t *plot;
 };
@@ -32,8 +34,10 @@ struct pl_study {
 int pl_study_fail_at(const pl_study_t *st, const config_setting_t *s, pl_err_t *err, const char *key,
                      const char *what);
 
-/* Value setting of axis a at point k. */
+/* Value setting of axis a at point k (a distinct point: run k / replicas). */
 const config_setting_t *pl_study_value_of(const pl_study_t *st, int k, int a);
+/* The same as scene text (study_text.c; pl_study_point_value takes a run). */
+int pl_study_value_text(const pl_study_t *st, int k, int a, char *buf, size_t n);
 
 /* Refuses a study that would run a point twice: a grid value given twice
  * on one axis, or two equal rows of points{}. */

@@ -117,6 +117,11 @@ void pl_study_write_group(FILE *f, const pl_scene_text_t *text, const config_set
 
 int pl_study_point_value(const pl_study_t *st, int k, int a, char *buf, size_t n)
 {
+    return pl_study_value_text(st, k / st->replicas, a, buf, n);
+}
+
+int pl_study_value_text(const pl_study_t *st, int k, int a, char *buf, size_t n)
+{
     char *s = NULL;
     size_t len;
     FILE *f = open_memstream(&s, &len);

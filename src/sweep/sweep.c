@@ -67,39 +67,7 @@ static int mkdir_p(const char *path, pl_err_t *err)
 }
 
 #define write_text pl_sweep_write_text
-
-static char *read_text(const char *path);
-
-/* Writes `text` unless the file already holds it. */
-static int write_changed(const char *path, const char *text, pl_err_t *err)
-{
-    char *old = read_text(path);
-    int same = old && !strcmp(old, text);
-    free(old);
-    return same ? 0 : write_text(path, text, err);
-}
-
-static char *read_text(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    char *s = NULL;
-    size_t cap = 0, n = 0, r;
-    char b[8192];
-    while ((r = fread(b, 1, sizeof b, f)) > 0) {
-        if (n + r + 1 > cap) {
-            cap = 2 * (n + r + 1);
-            char *q = realloc(s, cap);
-            if (!q) break;
-            s = q;
-        }
-        memcpy(s + n, b, r);
-        n += r;
-    }
-    fclose(f);
-    if (s) s[n] = '\0';
-    return s ? s : calloc(1, 1);
-}
+#define read_text pl_sweep_read_text
 
 /* A finished point's summary: complete, and not of a run a signal ended
  * early (that point runs again). */
@@ -179,49 +147,6 @@ static void point_path(const sweep_t *s, int k, const char *fmt, char *buf, size
     char rel[128];
     snprintf(rel, sizeof rel, fmt, id);
     snprintf(buf, n, "%s/%s", s->out, rel);
-}
-
-/* points.json: what the collect step needs to know of the study. */
-static int write_points(const sweep_t *s, pl_err_t *err)
-{
-    json_t *doc = json_object(), *keys = json_array(), *pts = json_array();
-    char plot[2048], path[4096];
-    json_object_set_new(doc, "study", json_string(pl_study_name(s->st)));
-    json_object_set_new(doc, "study_file", json_string(pl_study_path(s->st)));
-    for (int a = 0; a < pl_study_naxes(s->st); ++a) json_array_append_new(keys, json_string(pl_study_axis_key(s->st, a)));
-    json_object_set_new(doc, "keys", keys);
-    pl_study_plot_json(s->st, plot, sizeof plot);
-    json_t *pj = json_loads(plot, 0, NULL);
-    json_object_set_new(doc, "plot", pj ? pj : json_object());
-    for (int k = 0; k < s->n; ++k) {
-        json_t *p = json_object(), *params = json_object();
-        char id[32], v[256];
-        pl_study_point_id(s->st, k, id, sizeof id);
-        json_object_set_new(p, "index", json_integer(k));
-        json_object_set_new(p, "id", json_string(id));
-        for (int a = 0; a < pl_study_naxes(s->st); ++a) {
-            pl_study_point_value(s->st, k, a, v, sizeof v);
-            json_t *jv = json_loads(v, JSON_DECODE_ANY, NULL);
-            json_object_set_new(params, pl_study_axis_key(s->st, a), jv ? jv : json_string(v));
-        }
-        json_object_set_new(p, "params", params);
-        json_array_append_new(pts, p);
-    }
-    json_object_set_new(doc, "points", pts);
-    char *text = json_dumps(doc, JSON_INDENT(1));
-    json_decref(doc);
-    if (!text) return pl_err_set(err, PL_ERR_NOMEM, "out of memory writing points.json");
-    snprintf(path, sizeof path, "%s/points.json", s->out);
-    size_t len = strlen(text);
-    char *t2 = realloc(text, len + 2);
-    if (t2) {
-        t2[len] = '\n';
-        t2[len + 1] = '\0';
-        text = t2;
-    }
-    int rc = write_changed(path, text, err);
-    free(text);
-    return rc;
 }
 
 /* Writes point k's scene; *done: its run is finished (same scene); *left:
@@ -560,7 +485,7 @@ static int sweep_points(sweep_t *sp, pl_err_t *err)
         snprintf(d, sizeof d, "%s%s", s.out, sub[i]);
         rc = mkdir_p(d, err);
     }
-    if (!rc) rc = write_points(&s, err);
+    if (!rc) rc = pl_sweep_write_points(&s, err);
     if (!rc && o->slurm) {
         for (int k = 0; !rc && k < s.n; ++k) {
             int done;

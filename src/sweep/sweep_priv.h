@@ -20,6 +20,12 @@ typedef struct {
 
 /* Atomic write of `text` to `path` through "<path>.tmp.<pid>". */
 int pl_sweep_write_text(const char *path, const char *text, pl_err_t *err);
+/* The file's bytes, NUL-terminated (malloc'd; NULL when it cannot be opened). */
+char *pl_sweep_read_text(const char *path);
+/* pl_sweep_write_text unless the file already holds `text`. */
+int pl_sweep_write_changed(const char *path, const char *text, pl_err_t *err);
+/* OUT/points.json (sweep_text.c). */
+int pl_sweep_write_points(const sweep_t *s, pl_err_t *err);
 
 /* The plan of one run of the pool (sweep_plan.c): the machine, the plan,
  * each job's CPU set (NULL: the jobs are not bound). */
