@@ -29,7 +29,8 @@ int pl_obs_window_problem(const pl_scene_t *sc, long long last, char *why, size_
                          "or a percentage of the run in [0, 100) (\"75%%\")", txt, time_unit(sc));
         return 1;
     }
-    if (s.kind != PL_WINDOW_TIME) return 0;
+    /* a provisional pass's t0 is the theory's: the calibrated pass checks */
+    if (s.kind != PL_WINDOW_TIME || (sc->mapping.enabled && sc->mapping.provisional)) return 0;
     const double end = (double)last * sc->srd.dt * (sc->mapping.enabled ? sc->mapping.map.t0 : 1.0);
     if (time_model(sc, s.value) >= (double)last * sc->srd.dt) {
         snprintf(why, n, "\"%.100s\" %s is at or after the run's end (%g %s, step %lld): nothing would be averaged; "
