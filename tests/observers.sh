@@ -441,7 +441,9 @@ else bad "stop rule: stop step $S / $S2 ${out:-}"; fi
 # aside), with the correlators (MSD every 10 steps, VACF every 5) growing a
 # level at the restart (pl_mtau_grow):
 #  - quickstart (g(r), MSD, VACF, clusters, sedimentation, velocity
-#    distributions; walls, DLVO, coupling II), 160 vs 80 + 80 steps;
+#    distributions; walls, DLVO, coupling II), 160 vs 80 + 80 steps, with
+#    the detected averaging windows and (qsw) average_from = "50%" of the
+#    combined run;
 #  - free Brownian colloids, polydisperse: g(r) per size class and S(q);
 #  - the stress observer: Green-Kubo (pure fluid, periodic) and Couette;
 #  - a restart with another observe section, and one from a checkpoint
@@ -495,7 +497,8 @@ srd: { dt = 0.5; alpha = 130; grid_shift = true; };
 thermostat: { type = "heyes"; temperature = 1.0; };
 observe: { stress_interval = 20; };
 CFG
-for c in "qsr 80" "freer 200" "gkr 200" "cour 200"; do
+sed -e 's/sediment_interval = 20;/sediment_interval = 20; average_from = "50%";/' qsr.cfg > qsw.cfg
+for c in "qsr 80" "qsw 80" "freer 200" "gkr 200" "cour 200"; do
   set -- $c
   if "$PELOID" run $1.cfg --steps $(($2 * 2)) --threads 2 --out $1.full 2> /dev/null &&
      "$PELOID" run $1.cfg --steps $2 --threads 2 --out $1.half 2> /dev/null &&

@@ -166,10 +166,10 @@ int pl_mtobs_ckpt_read(hid_t g, pl_mtobs_t *m, long long levels, const pl_sim_t 
 
 /* D(t) = d MSD / (6 dt) as a local slope (MSD group datasets D_local,
  * D_local_se beside lag): at lag k the least-squares slope of the summed MSD
- * over lags k-1..k+1, fitted per colloid and averaged with the SE of that
- * mean (pl_mtau_slope, as colloid_D over its fit window); NAN at the first
- * and last lag.  A D(t) that levels off shows the diffusive regime that
- * colloid_D's fit window assumes. */
+ * over lags k-1..k+1 (one-sided at the first and last lag), fitted per
+ * colloid and averaged with the SE of that mean (pl_mtau_slope, as
+ * colloid_D over its fit window).  A D(t) that levels off shows the
+ * diffusive regime that colloid_D's fit window assumes. */
 static int local_D(hid_t g, const pl_mtau_t *c, const double *lag, size_t n)
 {
     double *d = malloc(2 * (n ? n : 1) * sizeof *d);
@@ -178,8 +178,9 @@ static int local_D(hid_t g, const pl_mtau_t *c, const double *lag, size_t n)
     for (size_t k = 0; k < n; ++k) {
         double s[PL_MTAU_COLS], se[PL_MTAU_COLS];
         pl_err_t ignore = {0, ""};
+        const double lo = lag[k ? k - 1 : 0], hi = lag[k + 1 < n ? k + 1 : k];
         d[k] = e[k] = NAN;
-        if (k == 0 || k + 1 >= n || pl_mtau_slope(c, lag[k - 1], lag[k + 1], s, se, &ignore)) continue;
+        if (pl_mtau_slope(c, lo, hi, s, se, &ignore)) continue;
         d[k] = s[3] / 6.0;
         e[k] = se[3] / 6.0;
     }
