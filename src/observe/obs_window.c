@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "peloid/h5.h"
 #include "peloid/scene.h"
@@ -25,8 +26,11 @@ int pl_obs_window_problem(const pl_scene_t *sc, long long last, char *why, size_
     pl_window_spec_t s;
     const char *txt = sc->observe.average_from;
     if (pl_window_parse(txt, &s)) {
-        snprintf(why, n, "\"%.100s\" is not a window; allowed: \"auto\", \"start\", a time >= 0 in %s (\"12.5\") "
-                         "or a percentage of the run in [0, 100) (\"75%%\")", txt, time_unit(sc));
+        const double v = strtod(txt, NULL);
+        snprintf(why, n, "\"%.100s\" %s; allowed: \"auto\", \"start\", a time >= 0 in %s (\"12.5\") "
+                         "or a percentage of the run in [0, 100) (\"75%%\")", txt,
+                 v < 0.0 ? "is negative" : v >= 100.0 && strchr(txt, '%') ? "is not below 100%" : "is not a window",
+                 time_unit(sc));
         return 1;
     }
     /* a provisional pass's t0 is the theory's: the calibrated pass checks */
