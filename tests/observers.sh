@@ -19,6 +19,7 @@
 #    run; observables.h5 carries unit attributes;
 #  - velocity distributions against Maxwell-Boltzmann;
 #  - the settling velocity and phi(z) of sedimenting Brownian colloids;
+#  - analysis windows (observe.average_from) on a drifting series;
 #  - the stopping rule stops at the first check where the target is met;
 #  - peloid report writes report.md with the plots of what the run measured.
 set -u
@@ -363,6 +364,53 @@ print(f"v = {e['value']:.4f} +- {e['stderr']:.4f} vs M g / (6 pi eta R) = {v0:.4
 PY
 ); then ok "sedimentation: $out"; else bad "sedimentation: $out"; fi
 
+# Analysis windows (observe.average_from, src/observe/window.c) on a
+# drifting series: the quickstart's settling velocity falls from the
+# initial settling to ~0 once the layer has formed.  "50%" averages the
+# samples from the run's middle on; "auto" from Chodera's detected start;
+# "start" the whole run.  Each summary value equals the mean of the
+# observables.h5 series from the stated start on (computed here with numpy,
+# 1e-12 relative: the blocking's Welford mean rounds differently), the start
+# is stated (average_from_step, average_from_time in s, window_source) in
+# summary.json and as attributes of the series, the whole-run mean lies
+# outside the late window's mean +- 3 SE (the drift is what the window
+# removes), and a detected start lies after the first samples.
+for w in "half 50%" "auto auto" "whole start"; do
+  set -- $w
+  sed "s/sediment_interval = 20;/sediment_interval = 20; average_from = \"$2\";/" \
+    "$(dirname "$TOOLS")/scenes/quickstart.cfg" > win_$1.cfg
+  "$PELOID" run win_$1.cfg --threads 2 --out win_$1 2> /dev/null || bad "window run $1"
+done
+if out=$($PY - <<'PY'
+import json, h5py, numpy as np
+res = {}
+for name, src in (("half", "user"), ("auto", "detected"), ("whole", "whole run")):
+    e = json.load(open(f"win_{name}/summary.json"))["observables"]["settling_velocity"]
+    with h5py.File(f"win_{name}/observables.h5") as f:
+        g = f["observables/settling_velocity"]
+        step, v = g["step"][:], g["value"][:]
+        st, tm = g.attrs["average_from_step_time"]
+        assert g.attrs["window_source"].decode() == src, g.attrs["window_source"]
+    assert e["window_source"] == src, (name, e["window_source"])
+    assert e["average_from_step"] == st and e["average_from_time_unit"] == "s", (e["average_from_step"], st)
+    keep = step >= e["average_from_step"]
+    assert e["samples"] == keep.sum() and step[keep][0] == e["average_from_step"], (e["samples"], keep.sum())
+    assert abs(e["average_from_time"] - tm) <= 1e-12 * abs(tm), (e["average_from_time"], tm)
+    m = v[keep].mean()
+    assert abs(e["value"] - m) <= 1e-12 * abs(m), (name, e["value"], m)
+    res[name] = (e, v.mean(), step)
+e, whole, step = res["half"]
+assert e["average_from_step"] == step[step >= 1200][0], e["average_from_step"]
+assert abs(whole - e["value"]) > 3 * e["stderr"], (whole, e["value"], e["stderr"])
+assert res["whole"][0]["average_from_step"] == step[0]
+assert res["auto"][0]["average_from_step"] > step[0]
+a = res["auto"][0]
+print(f"whole run {whole:.5f}; from 50% (step {e['average_from_step']}) {e['value']:.5f} +- {e['stderr']:.5f}; "
+      f"detected from step {a['average_from_step']} ({a['average_from_time']:.2f} s, N_eff {a['window_n_eff']:.1f}) "
+      f"{a['value']:.5f} +- {a['stderr']:.5f} a0/t0")
+PY
+); then ok "analysis windows: $out"; else bad "analysis windows: $out"; fi
+
 # The stopping rule: stop at the first check (every 50 steps) where the
 # number of clusters (free colloids, bond gap 1) has a relative SE <= 1 %;
 # the same step at 1 and 2 threads; runs without the rule to that step and
@@ -393,7 +441,9 @@ else bad "stop rule: stop step $S / $S2 ${out:-}"; fi
 # aside), with the correlators (MSD every 10 steps, VACF every 5) growing a
 # level at the restart (pl_mtau_grow):
 #  - quickstart (g(r), MSD, VACF, clusters, sedimentation, velocity
-#    distributions; walls, DLVO, coupling II), 160 vs 80 + 80 steps;
+#    distributions; walls, DLVO, coupling II), 160 vs 80 + 80 steps, with
+#    the detected averaging windows and (qsw) average_from = "50%" of the
+#    combined run;
 #  - free Brownian colloids, polydisperse: g(r) per size class and S(q);
 #  - the stress observer: Green-Kubo (pure fluid, periodic) and Couette;
 #  - a restart with another observe section, and one from a checkpoint
@@ -447,7 +497,8 @@ srd: { dt = 0.5; alpha = 130; grid_shift = true; };
 thermostat: { type = "heyes"; temperature = 1.0; };
 observe: { stress_interval = 20; };
 CFG
-for c in "qsr 80" "freer 200" "gkr 200" "cour 200"; do
+sed -e 's/sediment_interval = 20;/sediment_interval = 20; average_from = "50%";/' qsr.cfg > qsw.cfg
+for c in "qsr 80" "qsw 80" "freer 200" "gkr 200" "cour 200"; do
   set -- $c
   if "$PELOID" run $1.cfg --steps $(($2 * 2)) --threads 2 --out $1.full 2> /dev/null &&
      "$PELOID" run $1.cfg --steps $2 --threads 2 --out $1.half 2> /dev/null &&

@@ -169,6 +169,30 @@ def plot_cff(f, obs, u, outdir, lines):
     lines += ["## Fluid-force autocorrelation C_FF", "", "![C_FF](cff.png)", ""]
 
 
+def window_start(g, e, u):
+    """Where the summary's average of series group g starts (display time)
+    and how it was chosen (summary.json average_from_step, window_source;
+    None: the entry predates analysis windows)."""
+    if not e or "average_from_step" not in e:
+        return None, ""
+    st, t = g["step"][:], g["time"][:]
+    k = min(int(np.searchsorted(st, e["average_from_step"])), len(t) - 1)
+    return u("time", float(t[k])), e["window_source"]
+
+
+def window_band(ax, g, e, u, col, label, conv=lambda x: x):
+    """The mean +- SE band of entry e over its averaging window only, the
+    window's start marked (a dashed line) unless it is the whole run."""
+    t = u("time", g["time"][:])
+    t0, src = window_start(g, e, u)
+    x0 = t[0] if t0 is None else t0
+    v, se = conv(e["value"]), conv(e["stderr"])
+    ax.fill_between([x0, t[-1]], v - se, v + se, color=col, alpha=0.15, label=label)
+    ax.hlines(v, x0, t[-1], color=col, lw=0.6)
+    if t0 is not None and src != "whole run":
+        ax.axvline(t0, color=col, ls="--", lw=0.7, label=f"averaged from {t0:.3g} {u.name('time')} ({src})")
+
+
 def plot_bonds(f, obs, u, outdir, lines):
     fig, ax = plt.subplots(figsize=(6, 3.5))
     for name, col in (("cluster_bonds_primary", "C0"), ("cluster_bonds_secondary", "C1")):
@@ -179,7 +203,7 @@ def plot_bonds(f, obs, u, outdir, lines):
             lab += f": mean {e['value']:.4g} ± {e['stderr']:.2g}"
         ax.plot(u("time", g["time"][:]), g["value"][:], lw=0.8, color=col, label=lab)
         if e:
-            ax.axhspan(e["value"] - e["stderr"], e["value"] + e["stderr"], color=col, alpha=0.15)
+            window_band(ax, g, e, u, col, None)
     fr = obs.get("cluster_primary_fraction")
     ax.set_title("energy bonds" + (f"; primary fraction {fr['value']:.3g} ± {fr['stderr']:.2g}" if fr else ""),
                  fontsize=9)
@@ -196,7 +220,9 @@ def plot_msd(f, obs, u, outdir, lines):
     g = f["observables/colloid_msd"]
     lag, v, se = u("time", g["lag"][:]), u("area", g["value"][:, 3]), u("area", g["value_se"][:, 3])
     m = lag > 0
-    fig, ax = plt.subplots(figsize=(6, 4))
+    local = "D_local" in g
+    fig, axs = plt.subplots(1, 2 if local else 1, figsize=(11 if local else 6, 4), squeeze=False)
+    ax = axs[0][0]
     ax.errorbar(lag[m], v[m], yerr=se[m], fmt=".", ms=3, elinewidth=0.6, label="MSD (x+y+z) +- SE")
     d = obs.get("colloid_D")
     if d:
@@ -209,6 +235,18 @@ def plot_msd(f, obs, u, outdir, lines):
     ax.set_xlabel(f"lag [{u.name('time')}]")
     ax.set_ylabel(f"MSD [{u.name('area')}]")
     ax.legend(fontsize=8)
+    if local:  # D(t) = d MSD / (6 dt): converged where it levels off
+        ax = axs[0][1]
+        dl, dle = u("D", g["D_local"][:]), u("D", g["D_local_se"][:])
+        k = np.isfinite(dl) & m
+        ax.errorbar(lag[k], dl[k], yerr=dle[k], fmt=".", ms=3, elinewidth=0.6, label="local slope / 6 ± SE")
+        if d:
+            ax.axhspan(D - De, D + De, color="r", alpha=0.15, label="D of the fit")
+            ax.axvspan(t[0], t[1], color="r", alpha=0.08)
+        ax.set_xscale("log")
+        ax.set_xlabel(f"lag [{u.name('time')}]")
+        ax.set_ylabel(f"D(t) [{u.name('D')}]")
+        ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "msd.png"), dpi=120)
     plt.close(fig)
@@ -222,9 +260,8 @@ def plot_clusters(f, obs, u, outdir, lines):
         ax.plot(u("time", g["time"][:]), g["value"][:], lw=0.8)
         e = obs.get(name)
         if e:
-            ax.axhline(e["value"], color="r", lw=0.6)
-            ax.axhspan(e["value"] - e["stderr"], e["value"] + e["stderr"], color="r", alpha=0.15,
-                       label=f"mean {e['value']:.4g} ± {e['stderr']:.2g}" + ("" if e["plateau"] else " (no plateau)"))
+            window_band(ax, g, e, u, "r",
+                        f"mean {e['value']:.4g} ± {e['stderr']:.2g}" + ("" if e["plateau"] else " (no plateau)"))
             ax.legend(fontsize=7)
         ax.set_ylabel(name.replace("_", " "), fontsize=8)
     axs[-1].set_xlabel(f"time [{u.name('time')}]")
@@ -274,9 +311,13 @@ def plot_sediment(f, obs, u, outdir, lines):
     ht, hv = u("time", h["time"][:]), u("len", h["value"][:])
     axs[1].plot(ht, hv, lw=0.8, label="mean height")
     e = obs.get("settling_velocity")
-    if e and e.get("plateau", True):  # the run's mean means something only when it is steady
+    if e and e.get("plateau", True):  # the window's mean means something only when it is steady
         vs, vse = u("vel", e["value"]), u("vel", e["stderr"])
-        axs[1].plot(t, hv[0] + vs * (t - ht[0]), "r--", lw=0.8, label=f"run mean v = {vs:.4g} ± {vse:.2g} {u.name('vel')}")
+        t0, src = window_start(f["observables/settling_velocity"], e, u)
+        k = 0 if t0 is None else int(np.searchsorted(ht, t0))
+        tw = ht[k:]
+        axs[1].plot(tw, hv[k] + vs * (tw - ht[k]), "r--", lw=0.8,
+                    label=f"mean v = {vs:.4g} ± {vse:.2g} {u.name('vel')}" + (f" from {t0:.3g} {u.name('time')} ({src})" if t0 is not None and src != "whole run" else ""))
     ini, text = obs.get("initial_settling_velocity"), []
     if ini and "value" in ini:  # the homogeneous fall: its window and the references
         k = min(int(ini["samples"]), len(ht) - 1)
@@ -357,8 +398,12 @@ def error_table(obs, lines):
     if not rows:
         return
     lines += ["## Error against run time", "",
-              "| observable | value ± SE | SE at 1/8, 1/4, 1/2, 1 of the run (wall s) | wall s for the target |",
-              "|---|---|---|---|"]
+              "The value averages the samples from the window's start on (observe.average_from: given, or "
+              "detected by Chodera's equilibration test); the SE against run time is over the whole run so far.",
+              "",
+              "| observable | value ± SE | averaged from | SE at 1/8, 1/4, 1/2, 1 of the run (wall s) | "
+              "wall s for the target |",
+              "|---|---|---|---|---|"]
     for k, v in rows:
         pts = ", ".join(f"{p['stderr']:.3g} ({p['wall_s']:.3g} s)" for p in v["se_vs_time"])
         need = v.get("wall_s_for_target")
@@ -367,7 +412,9 @@ def error_table(obs, lines):
         val = f"{v['value']:.5g} ± {v['stderr']:.2g}" + ("" if v["unit"] in ("1", "") else f" {v['unit']}")
         if "unit_si" in v and v["unit_si"] != "1":  # a physical scene: the SI value beside
             val += f" = {v['value_si']:.5g} ± {v['stderr_si']:.2g} {v['unit_si']}"
-        lines.append(f"| {k} | {val} | {pts} | {tgt} |")
+        win = (f"{v['average_from_time']:.4g} {v['average_from_time_unit']} (step {v['average_from_step']}, "
+               f"{v['window_source']})" if "window_source" in v else "-")
+        lines.append(f"| {k} | {val} | {win} | {pts} | {tgt} |")
     lines.append("")
 
 

@@ -28,6 +28,7 @@ typedef struct {
     double steinhardt_rmax;            /* its neighbour cut-off */
     long long stress_interval, stress_start, stress_gk_steps; /* fluid stress, Green-Kubo viscosity */
     double target_rel_error;           /* the error-against-time report's target */
+    char average_from[128];            /* the time averages' window (peloid/window.h): "auto", "start", t, "p%" */
 } pl_scene_observe_t;
 
 /* The long long key at byte offset off (offsetof(pl_scene_observe_t, ...)):

@@ -169,10 +169,13 @@ static char *keys_text(const pl_scene_t *scene, int (*keep)(const char *name))
 /* The fingerprint text of `scene` (malloc'ed, NULL when out of memory). */
 static char *scene_text(const pl_scene_t *scene) { return keys_text(scene, is_physics); }
 
-/* The observe keys that shape the observers' state (all but the report's target). */
+/* The observe keys that shape the observers' state (all but the report's
+ * target and the averaging window, which are applied to the stored state
+ * at the end of the run). */
 static int is_observer_shape(const char *name)
 {
-    return !strncmp(name, "observe.", 8) && strcmp(name, "observe.target_rel_error");
+    return !strncmp(name, "observe.", 8) && strcmp(name, "observe.target_rel_error") &&
+           strcmp(name, "observe.average_from");
 }
 
 char *pl_ckpt_observe_text(const pl_scene_t *scene) { return keys_text(scene, is_observer_shape); }

@@ -164,6 +164,33 @@ int pl_mtobs_ckpt_read(hid_t g, pl_mtobs_t *m, long long levels, const pl_sim_t 
 
 /* ---- outputs ----------------------------------------------------------- */
 
+/* D(t) = d MSD / (6 dt) as a local slope (MSD group datasets D_local,
+ * D_local_se beside lag): at lag k the least-squares slope of the summed MSD
+ * over lags k-1..k+1 (one-sided at the first and last lag), fitted per
+ * colloid and averaged with the SE of that mean (pl_mtau_slope, as
+ * colloid_D over its fit window).  A D(t) that levels off shows the
+ * diffusive regime that colloid_D's fit window assumes. */
+static int local_D(hid_t g, const pl_mtau_t *c, const double *lag, size_t n)
+{
+    double *d = malloc(2 * (n ? n : 1) * sizeof *d);
+    if (!d) return -1;
+    double *e = d + n;
+    for (size_t k = 0; k < n; ++k) {
+        double s[PL_MTAU_COLS], se[PL_MTAU_COLS];
+        pl_err_t ignore = {0, ""};
+        const double lo = lag[k ? k - 1 : 0], hi = lag[k + 1 < n ? k + 1 : k];
+        d[k] = e[k] = NAN;
+        if (pl_mtau_slope(c, lo, hi, s, se, &ignore)) continue;
+        d[k] = s[3] / 6.0;
+        e[k] = se[3] / 6.0;
+    }
+    hsize_t d1[1] = {n};
+    int bad = pl_obs_put(g, "D_local", H5T_NATIVE_DOUBLE, 1, d1, d, "a0^2/t0") != 0;
+    bad |= pl_obs_put(g, "D_local_se", H5T_NATIVE_DOUBLE, 1, d1, e, "a0^2/t0") != 0;
+    free(d);
+    return bad ? -1 : 0;
+}
+
 int pl_mtobs_write(hid_t obs, const pl_mtobs_t *m)
 {
     if (!m->c || pl_mtau_samples(m->c) <= 1) return 0;
@@ -187,6 +214,7 @@ int pl_mtobs_write(hid_t obs, const pl_mtobs_t *m)
         bad |= pl_obs_put(g, "value", H5T_NATIVE_DOUBLE, 2, d2, val, unit) != 0;
         bad |= pl_obs_put(g, "value_se", H5T_NATIVE_DOUBLE, 2, d2, se, unit) != 0;
         bad |= pl_h5_attr_str(g, "columns", "x y z sum") != 0;
+        if (m->which == PL_MTOBS_MSD && !bad) bad |= local_D(g, c, lag, n) != 0;
     }
     if (g >= 0 && H5Gclose(g) < 0) bad = 1;
     free(lag);

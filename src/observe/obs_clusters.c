@@ -3,7 +3,8 @@
  * (primary / secondary minimum by the DLVO barrier gap), union-find over
  * linked cells (peloid/cluster.h; Hecht Figs. 9, 14): number of clusters,
  * largest, mean size, bonds per sample; their time averages with the
- * blocking SE (peloid/blocking.h); the size distribution summed over
+ * blocking SE (peloid/blocking.h) over the analysis window
+ * (peloid/window.h, observe.average_from); the size distribution summed over
  * samples; the cluster id of each colloid with every trajectory frame
  * (pl_colloid_traj_cluster_ids). */
 #include <hdf5.h>
@@ -14,6 +15,7 @@
 
 #include "checkpoint_h5.h"
 #include "json_build.h"
+#include "obs_window.h"
 #include "observables_out.h"
 #include "peloid/cluster.h"
 #include "peloid/colloid.h"
@@ -217,8 +219,11 @@ static int obs_write(int64_t obs_, const pl_sim_t *sim, void *state)
      * samples without a bond) only in the summary */
     const int ncv = sim->scene.observe.clusters_bond == PL_BOND_ENERGY ? NCV - 1 : 4;
     int bad = 0;
-    for (int k = 0; k < ncv && !bad; ++k)
+    for (int k = 0; k < ncv && !bad; ++k) {
         bad |= pl_obs_series(obs, cv_names[k], o->c_n, o->c_step, sim->scene.srd.dt, o->c_val[k], "1") != 0;
+        const pl_window_t w = pl_obs_window(o->run, o->c_step, o->c_val[k], o->c_n);
+        if (!bad) bad |= pl_obs_window_h5(obs, cv_names[k], sim, &w) != 0;
+    }
     size_t len = o->c_hist_len; /* trailing empty sizes left out */
     while (len > 1 && o->c_hist[len - 1] == 0) --len;
     hsize_t d1[1] = {len};
@@ -234,12 +239,16 @@ static int summary(pl_obs_sum_t *s, const pl_sim_t *sim, void *state)
     const cl_obs_t *o = state;
     const int energy_bonds = sim->scene.observe.clusters_bond == PL_BOND_ENERGY;
     for (int k = 0; o->cl && k < NCV; ++k) {
-        const pl_blocking_t *bl = &o->cb[k];
-        if (bl->n < 2 || (k > 3 && !energy_bonds)) continue;
-        pl_blocking_result_t res = pl_blocking_result(bl);
-        if (!isfinite(res.mean) || !isfinite(res.se)) continue;
+        if (k > 3 && !energy_bonds) continue;
+        /* the average over the window of the stored series (the accumulator
+         * cb[k] holds the whole run's, for se_vs_time and stop.observable) */
+        const pl_window_t w = pl_obs_window(o->run, o->c_step, o->c_val[k], o->c_n);
+        uint64_t nw;
+        pl_blocking_result_t res = pl_window_blocking(o->c_val[k], o->c_n, w.first, &nw);
+        if (nw < 2 || !isfinite(res.mean) || !isfinite(res.se)) continue;
         json_t *e = pl_obs_entry(s, k, res.mean, res.se, res.n_indep, res.inefficiency, res.plateau, "1");
-        pl_json_int(s->b, e, "samples", (long long)bl->n);
+        pl_json_int(s->b, e, "samples", (long long)nw);
+        pl_obs_window_json(s->b, e, sim, &w);
         if (k == 6) pl_json_str(s->b, e, "over", "samples with at least one bond");
         if (k >= 3 && energy_bonds) {
             pl_json_real(s->b, e, "bond_energy_kT", -sim->scene.observe.clusters_energy);

@@ -2,7 +2,7 @@
  * colloid volume fraction phi(z) (exact sphere slices), the mean (unwrapped)
  * height h, <v_z> of the colloids; the settling velocity between samples,
  * (h_k - h_{k-1}) / dt minus the fluid's mean velocity, whose blocking
- * average is the (hindered) settling velocity of Hecht Eq. 37
+ * average over the analysis window (peloid/window.h) is the (hindered) settling velocity of Hecht Eq. 37
  * (Richardson-Zaki) in a homogeneous suspension. */
 #include <hdf5.h>
 #include <jansson.h>
@@ -12,6 +12,7 @@
 
 #include "checkpoint_h5.h"
 #include "json_build.h"
+#include "obs_window.h"
 #include "observables_out.h"
 #include "peloid/colloid.h"
 #include "peloid/h5.h"
@@ -130,8 +131,11 @@ static int obs_write(int64_t obs_, const pl_sim_t *sim, void *state)
     const double dt = sim->scene.srd.dt;
     if (o->s_n == 0) return 0;
     int bad = pl_obs_series(obs, "colloid_height", o->s_n, o->s_step, dt, o->s_height, "a0") != 0;
-    if (o->s_n > 1)
+    if (o->s_n > 1) {
         bad |= pl_obs_series(obs, "settling_velocity", o->s_n - 1, o->s_step + 1, dt, o->s_vel + 1, "a0/t0") != 0;
+        const pl_window_t w = pl_obs_window(o->run, o->s_step + 1, o->s_vel + 1, o->s_n - 1);
+        if (!bad) bad |= pl_obs_window_h5(obs, "settling_velocity", sim, &w) != 0;
+    }
     bad |= pl_obs_series(obs, "colloid_vz", o->s_n, o->s_step, dt, o->s_vz, "a0/t0") != 0;
     hid_t g = pl_h5_group(obs, "colloid_phi_z");
     bad |= g < 0;
@@ -158,11 +162,16 @@ static int obs_write(int64_t obs_, const pl_sim_t *sim, void *state)
 static int summary(pl_obs_sum_t *s, const pl_sim_t *sim, void *state)
 {
     const sed_obs_t *o = state;
-    if (o->s_vb.n >= 2) {
-        pl_blocking_result_t res = pl_blocking_result(&o->s_vb);
-        if (isfinite(res.mean) && isfinite(res.se)) {
+    if (o->s_n >= 3) {
+        /* the average over the window of the stored velocities (s_vb holds
+         * the whole run's, for se_vs_time and stop.observable) */
+        const pl_window_t w = pl_obs_window(o->run, o->s_step + 1, o->s_vel + 1, o->s_n - 1);
+        uint64_t nw;
+        pl_blocking_result_t res = pl_window_blocking(o->s_vel + 1, o->s_n - 1, w.first, &nw);
+        if (nw >= 2 && isfinite(res.mean) && isfinite(res.se)) {
             json_t *e = pl_obs_entry(s, 0, res.mean, res.se, res.n_indep, res.inefficiency, res.plateau, "a0/t0");
-            pl_json_int(s->b, e, "samples", (long long)o->s_vb.n);
+            pl_json_int(s->b, e, "samples", (long long)nw);
+            pl_obs_window_json(s->b, e, sim, &w);
             if (sim->scene.mapping.enabled) { /* a0/t0 -> m/s */
                 const pl_mapping_t *m = &sim->scene.mapping.map;
                 pl_json_real(s->b, e, "value_m_per_s", res.mean * m->a0 / m->t0);

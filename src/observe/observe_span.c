@@ -15,12 +15,15 @@
  * their start on (at step 0 too, except C_FF, whose force is an average
  * over a collision step), to the last step.
  *
+ * observe.average_from must parse and start before the last step.
+ *
  * At the end of a run, pl_obs_unmeasured names an observer that sampled
  * and still has no estimate (summary.json "not_measured", a warning). */
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 
+#include "obs_window.h"
 #include "observables_out.h" /* pl_obs_point_t */
 #include "peloid/colloid.h"
 #include "peloid/observe_scene.h"
@@ -61,6 +64,11 @@ int pl_observe_span_problem(const pl_scene_t *sc, long long last, size_t *off, c
                      iv, st, last, got, r->name, r->need,
                      r->need > 2 ? " (its estimate reads lags up to a quarter of the sampled span)" : "",
                      (last - st) / (r->need > 1 ? r->need - 1 : 1));
+        return 1;
+    }
+    if (pl_obs_window_problem(sc, last, why, n)) {
+        *off = OFFS(average_from);
+        *key = "observe.average_from";
         return 1;
     }
     return 0;

@@ -105,6 +105,13 @@ static const pl_key_t observe_keys[] = {
      "lags of the stress autocorrelation the Green-Kubo sum includes (0: ten kinetic stress relaxation "
      "times 1 / (1 - f) from PL Eq. 9, at least 10); each lag adds noise, too few cut the integral: the "
      "running sum against the lag is written so that its plateau can be checked"},
+    {"average_from", PL_KEY_STRING, OFF(average_from), 0, 0, 0, NULL, 0, "auto", "-",
+     "where the time averages of the cluster and sedimentation series (summary.json values and SEs) start: "
+     "\"auto\" (per series, Chodera's automated equilibration detection, J. Chem. Theory Comput. 12, 1799 "
+     "(2016): the start in the first half that maximises the effective number of uncorrelated samples), "
+     "\"start\" (the whole run), a time \"t\" (seconds in a scene with physical{}, t0 otherwise; e.g. \"12.5\") "
+     "or a percentage of the run \"p%\" (e.g. \"75%\": the last quarter); each summary.json entry states the "
+     "start (average_from_step, average_from_time, window_source); a time beyond the run's end is refused"},
     {"target_rel_error", PL_KEY_REAL, OFF(target_rel_error), 0, 1, PL_KEY_MIN_OPEN, NULL, 0.01, NULL, "-",
      "relative standard error the end-of-run report extrapolates the needed wall time to (SE ~ 1/sqrt(t))"},
 };
