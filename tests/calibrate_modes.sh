@@ -41,26 +41,12 @@ bad() { fail=$((fail+1)); echo "  FAIL $1"; }
 echo "== --calibrate never|auto|always"
 export PELOID_NO_SHIPPED_CALIBRATION=1 PELOID_CACHE="$T/cache"
 
-cat > s.cfg <<'CFG'
+cat > s.cfg <<CFG
 name = "modes";
 seed = 7;
 steps = 4;
-srd: { rule = "random_axis"; alpha = 130.0; grid_shift = true; };
-thermostat: { type = "heyes"; temperature = 1.0; };
 output: { progress_s = 0.02; };
-physical: {
-  radius = 0.4e-6;
-  particle_density = 1.0e3;
-  solvent_density = 1.0e3;
-  temperature = 300.0;
-  viscosity = 1.0e-6;
-  young_modulus = 3.7e11;
-  poisson_ratio = 0.22;
-  volume_fraction = 0.02;
-  box = [10.3e-6, 10.3e-6, 10.3e-6];
-};
-coarse_graining: { coupling = "II"; particles_per_cell = 3.0; mean_free_path = 0.5; hertz_K = 1000.0; };
-colloids: { init = "lattice"; pairs = "hertz"; };
+$(cat "$ROOT/tests/calibration_coarse_ii.inc")
 CFG
 # cal FILE KEY: summary.json / params --json "calibration" KEY (repr; "-" when absent)
 cal() { $PY -c "import json,sys; print(repr(json.load(open(sys.argv[1])).get('calibration',{}).get(sys.argv[2],'-')))" "$1" "$2" 2>/dev/null || echo "-"; }

@@ -26,6 +26,7 @@
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 PY=/usr/bin/python3
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
 T=$(mktemp -d /tmp/peloid-calcache.XXXXXX)
 HOLD=""
 trap '[ -n "$HOLD" ] && kill -CONT $HOLD 2>/dev/null && kill $HOLD 2>/dev/null; rm -rf "$T"' EXIT
@@ -37,25 +38,11 @@ echo "== the calibration cache never costs a run"
 export PELOID_NO_SHIPPED_CALIBRATION=1
 unset PELOID_CACHE_LOCK_TIMEOUT
 
-cat > s.cfg <<'CFG'
+cat > s.cfg <<CFG
 name = "cache";
 seed = 7;
 steps = 10;
-srd: { rule = "random_axis"; alpha = 130.0; grid_shift = true; };
-thermostat: { type = "heyes"; temperature = 1.0; };
-physical: {
-  radius = 0.4e-6;
-  particle_density = 1.0e3;
-  solvent_density = 1.0e3;
-  temperature = 300.0;
-  viscosity = 1.0e-6;
-  young_modulus = 3.7e11;
-  poisson_ratio = 0.22;
-  volume_fraction = 0.02;
-  box = [10.3e-6, 10.3e-6, 10.3e-6];
-};
-coarse_graining: { coupling = "II"; particles_per_cell = 3.0; mean_free_path = 0.5; hertz_K = 1000.0; };
-colloids: { init = "lattice"; pairs = "hertz"; };
+$(cat "$ROOT/tests/calibration_coarse_ii.inc")
 CFG
 dinf() { $PY -c "import json,sys; print(repr(json.load(open(sys.argv[1]))['mapping']['colloid_diffusion']['calibration']['d_inf_a0_2_t0']))" "$1" 2>/dev/null; }
 entry_dinf() { [ -f "$1" ] && $PY -c "import json,sys; print(repr(json.load(open(sys.argv[1]))['d_inf']))" "$1" 2>/dev/null; }
