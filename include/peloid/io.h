@@ -37,6 +37,10 @@ int pl_outdir_resume_check(const char *dir, long long first, pl_err_t *err);
 
 /* "<dir>/<name>" into buf. */
 void pl_path_join(char *buf, size_t n, const char *dir, const char *name);
+/* name as read beside `file`: relative to file's directory, unless name is
+ * absolute (how a scene names its init and table files, a study its base
+ * scene). */
+void pl_path_beside(char *buf, size_t n, const char *file, const char *name);
 
 /* The one atomic-write helper (src/io/atomic_file.c).  pl_atomic_tmp: the
  * temporary name "<path>.tmp" to write first.  pl_atomic_commit: fsync it,

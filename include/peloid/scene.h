@@ -164,6 +164,10 @@ typedef struct {
     size_t nkeys;
 } pl_section_t;
 
+/* Whether v (finite) lies in key k's allowed range, its open ends honoured:
+ * the loader's test of a given number, and the echo's of a derived one. */
+int pl_key_in_range(const pl_key_t *k, double v);
+
 /* All sections, in documentation order; *count receives their number. */
 const pl_section_t *const *pl_scene_sections(size_t *count);
 

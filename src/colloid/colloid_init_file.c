@@ -21,6 +21,7 @@
 
 #include "peloid/colloid.h"
 #include "peloid/input_file.h"
+#include "peloid/io.h"
 
 #define OFF(m) offsetof(pl_scene_t, m)
 
@@ -29,22 +30,14 @@
 
 static const char *const col_name[4] = {"x", "y", "z", "R"};
 
-/* `f` as the loader opens it: relative to the scene file's directory. */
-static void scene_relative(const pl_scene_t *scene, const char *f, char *buf, size_t n)
-{
-    const char *slash = strrchr(scene->path, '/');
-    int dl = f[0] != '/' && slash ? (int)(slash - scene->path) + 1 : 0;
-    snprintf(buf, n, "%.*s%s", dl, scene->path, f);
-}
-
 void pl_colloid_init_path(const pl_scene_t *scene, char *buf, size_t n)
 {
-    scene_relative(scene, scene->colloids.init_file, buf, n);
+    pl_path_beside(buf, n, scene->path, scene->colloids.init_file);
 }
 
 void pl_colloid_table_path(const pl_scene_t *scene, char *buf, size_t n)
 {
-    scene_relative(scene, scene->colloids.table_file, buf, n);
+    pl_path_beside(buf, n, scene->path, scene->colloids.table_file);
 }
 
 double pl_colloid_radius_min(const pl_scene_t *scene)

@@ -12,17 +12,18 @@
 
 hid_t pl_ckpt_group_create(hid_t f, const char *name) { return pl_h5_group(f, name); }
 
-uint64_t pl_ckpt_fnv1a(const void *data, size_t n)
+/* FNV-1a, 64 bit (Fowler, Noll, Vo): offset basis and prime */
+uint64_t pl_ckpt_fnv1a_more(uint64_t h, const void *data, size_t n)
 {
-    /* FNV-1a, 64 bit (Fowler, Noll, Vo): offset basis and prime */
     const unsigned char *p = data;
-    uint64_t h = 14695981039346656037ULL;
     for (size_t i = 0; i < n; ++i) {
         h ^= p[i];
         h *= 1099511628211ULL;
     }
     return h;
 }
+
+uint64_t pl_ckpt_fnv1a(const void *data, size_t n) { return pl_ckpt_fnv1a_more(14695981039346656037ULL, data, n); }
 
 int pl_ckpt_write_1d(hid_t g, const char *name, hid_t type, const void *data, size_t n)
 {

@@ -19,6 +19,9 @@ enum { PL_CKPT_FORMAT = 2 };
 
 /* 64-bit FNV-1a hash of n bytes (the per-dataset checksum). */
 uint64_t pl_ckpt_fnv1a(const void *data, size_t n);
+/* The same continued over more bytes: pl_ckpt_fnv1a(a b) =
+ * pl_ckpt_fnv1a_more(pl_ckpt_fnv1a(a), b). */
+uint64_t pl_ckpt_fnv1a_more(uint64_t h, const void *data, size_t n);
 
 /* 1-d dataset `name` of n elements under g, with the attribute "fnv1a64":
  * the FNV-1a hash of its n elements' bytes in memory; 0 or -1.  type must be

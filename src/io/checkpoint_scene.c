@@ -20,7 +20,6 @@
  * "" and is not compared on restart (older checkpoints hold a path there).
  * colloids.table_file is compared by the table's content (its name may
  * differ: a run directory holds a copy, pair_table.txt). */
-#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -62,9 +61,10 @@ static void table_text(const pl_scene_t *scene, char *buf, size_t n)
         snprintf(buf, n, "\"(unreadable)\"");
         return;
     }
-    uint64_t h = 0xcbf29ce484222325ULL;
-    int c;
-    while ((c = getc(f)) != EOF) h = (h ^ (uint64_t)(unsigned char)c) * 0x100000001b3ULL;
+    char chunk[1 << 14];
+    size_t got;
+    uint64_t h = pl_ckpt_fnv1a(NULL, 0);
+    while ((got = fread(chunk, 1, sizeof chunk, f)) > 0) h = pl_ckpt_fnv1a_more(h, chunk, got);
     const int bad = ferror(f);
     fclose(f);
     if (bad) snprintf(buf, n, "\"(unreadable)\"");

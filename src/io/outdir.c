@@ -17,6 +17,13 @@ void pl_path_join(char *buf, size_t n, const char *dir, const char *name)
     snprintf(buf, n, "%s/%s", dir, name);
 }
 
+void pl_path_beside(char *buf, size_t n, const char *file, const char *name)
+{
+    const char *slash = strrchr(file, '/');
+    const int dl = name[0] != '/' && slash ? (int)(slash - file) + 1 : 0;
+    snprintf(buf, n, "%.*s%s", dl, file, name);
+}
+
 /* dir is an ancestor of (or the same as) path; both resolved. */
 static int contains(const char *dir, const char *path)
 {

@@ -243,16 +243,18 @@ static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *e
         echo->mapping.cg.enskog = sc->mapping.map.cg.enskog;
     }
     char src[PATH_MAX];
-    if (uses_init_file(sc)) pl_colloid_init_path(sc, src, sizeof src);
-    if (uses_init_file(sc) && copy_named(w, src, INIT_COPY, echo->colloids.init_file, sizeof echo->colloids.init_file, err)) {
-        free(echo);
-        return err->code;
+    int rc = 0;
+    if (uses_init_file(sc)) {
+        pl_colloid_init_path(sc, src, sizeof src);
+        rc = copy_named(w, src, INIT_COPY, echo->colloids.init_file, sizeof echo->colloids.init_file, err);
     }
-    if (uses_table_file(sc)) pl_colloid_table_path(sc, src, sizeof src);
-    if (uses_table_file(sc) &&
-        copy_named(w, src, TABLE_COPY, echo->colloids.table_file, sizeof echo->colloids.table_file, err)) {
+    if (!rc && uses_table_file(sc)) {
+        pl_colloid_table_path(sc, src, sizeof src);
+        rc = copy_named(w, src, TABLE_COPY, echo->colloids.table_file, sizeof echo->colloids.table_file, err);
+    }
+    if (rc) {
         free(echo);
-        return err->code;
+        return rc;
     }
     pl_path_join(path, sizeof path, w->dir, "scene.cfg");
     FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);

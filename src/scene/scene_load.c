@@ -65,7 +65,7 @@ static void range_text(const pl_key_t *k, char *buf, size_t n)
     snprintf(buf, n, "%s %g and %s %g", lo, k->min, hi, k->max);
 }
 
-static int in_range(const pl_key_t *k, double v)
+int pl_key_in_range(const pl_key_t *k, double v)
 {
     if (!isfinite(v)) return 0;
     if ((k->flags & PL_KEY_MIN_OPEN) ? !(v > k->min) : !(v >= k->min)) return 0;
@@ -86,7 +86,7 @@ static double number_of(const config_setting_t *s)
 static int check_number(const ctx_t *c, const config_setting_t *s, const char *sec,
                         const pl_key_t *k, int elem, double v)
 {
-    if (in_range(k, v)) return 0;
+    if (pl_key_in_range(k, v)) return 0;
     char range[128], what[512], lit[64];
     range_text(k, range, sizeof range);
     if (isfinite(v) || pl_scene_text_token(c->text, (int)config_setting_source_line(s), config_setting_name(s),
@@ -127,7 +127,7 @@ static int get_integer(const ctx_t *c, const config_setting_t *s, const config_s
         return where_fail(c, s, sec, k->name, what);
     }
     if (rc < 0) snprintf(lit, sizeof lit, "%lld", libval);
-    if (!in_range(k, (double)v)) {
+    if (!pl_key_in_range(k, (double)v)) {
         snprintf(what, sizeof what, "%svalue %s is out of range; allowed: %s%s", el, lit, range, units);
         return where_fail(c, s, sec, k->name, what);
     }

@@ -109,27 +109,21 @@ static void print_value(FILE *f, const pl_key_t *k, const pl_scene_t *scene)
     }
 }
 
-/* A number inside the key's allowed range (every component of a triple). */
-static int in_range(const pl_key_t *k, double v)
-{
-    if (!(k->flags & PL_KEY_MIN_OPEN) ? v < k->min : v <= k->min) return 0;
-    if (!(k->flags & PL_KEY_MAX_OPEN) ? v > k->max : v >= k->max) return 0;
-    return 1;
-}
-
+/* The value would load back: inside the key's allowed range (every
+ * component of a triple), by the loader's own test. */
 static int value_loads(const pl_key_t *k, const pl_scene_t *scene)
 {
     const char *base = (const char *)scene + k->offset;
     switch (k->type) {
-    case PL_KEY_INT: return in_range(k, (double)*(const long long *)base);
-    case PL_KEY_REAL: return in_range(k, *(const double *)base);
+    case PL_KEY_INT: return pl_key_in_range(k, (double)*(const long long *)base);
+    case PL_KEY_REAL: return pl_key_in_range(k, *(const double *)base);
     case PL_KEY_INT3:
         for (int d = 0; d < 3; ++d)
-            if (!in_range(k, ((const int *)base)[d])) return 0;
+            if (!pl_key_in_range(k, ((const int *)base)[d])) return 0;
         return 1;
     case PL_KEY_REAL3:
         for (int d = 0; d < 3; ++d)
-            if (!in_range(k, ((const double *)base)[d])) return 0;
+            if (!pl_key_in_range(k, ((const double *)base)[d])) return 0;
         return 1;
     default: return 1;
     }

@@ -292,11 +292,7 @@ static int read_study(pl_study_t *st, pl_err_t *err)
                               "name; allowed: letters, digits, '.', '_', '-'; set name = \"...\"", st->path, st->name);
     }
     if (!scene) return fail_at(st, NULL, err, "scene", "missing; allowed: scene = \"BASE.cfg\" (relative to the study)");
-    if (scene[0] == '/') snprintf(st->base, sizeof st->base, "%s", scene);
-    else {
-        const char *slash = strrchr(st->path, '/');
-        snprintf(st->base, sizeof st->base, "%.*s%s", slash ? (int)(slash - st->path + 1) : 0, st->path, scene);
-    }
+    pl_path_beside(st->base, sizeof st->base, st->path, scene);
     if (out && !*out) return fail_at(st, config_setting_get_member(root, "out"), err, "out", "empty; allowed: a directory");
     if (out) snprintf(st->out, sizeof st->out, "%s", out);
     else snprintf(st->out, sizeof st->out, "out/%s", st->name);
@@ -441,19 +437,19 @@ static int point_reads_files(const pl_study_t *st)
  * ID.cfg, or, when it reads files, beside the base scene (where they are). */
 static void check_label(const pl_study_t *st, const char *out_dir, const char *id, char *buf, size_t n)
 {
-    const char *slash = strrchr(st->base, '/');
-    if (point_reads_files(st)) snprintf(buf, n, "%.*s%s.cfg", slash ? (int)(slash - st->base + 1) : 0, st->base, id);
-    else snprintf(buf, n, "%s/scenes/%s.cfg", out_dir, id);
+    char name[64];
+    snprintf(name, sizeof name, "%s.cfg", id);
+    if (point_reads_files(st)) pl_path_beside(buf, n, st->base, name);
+    else snprintf(buf, n, "%s/scenes/%s", out_dir, name);
 }
 
 int pl_study_point_files(const pl_study_t *st, const char *scenes_dir, pl_err_t *err)
 {
-    const char *slash = strrchr(st->base, '/');
     for (size_t i = 0; i < sizeof file_keys / sizeof file_keys[0]; ++i) {
         const char *v = file_key(st, i);
         if (!*v || strchr(v, '/')) continue; /* (a '/' is refused by the scene check) */
         char src[PATH_MAX], dst[PATH_MAX];
-        snprintf(src, sizeof src, "%.*s%s", slash ? (int)(slash - st->base + 1) : 0, st->base, v);
+        pl_path_beside(src, sizeof src, st->base, v);
         snprintf(dst, sizeof dst, "%s/%s", scenes_dir, v);
         if (pl_file_copy(src, dst, err)) return err->code;
     }
