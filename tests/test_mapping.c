@@ -37,7 +37,7 @@ static const pl_mapping_solvent_t water = {0.0, 1480.0, 3e-10, 2.3e-9};
 static pl_mapping_cg_t coupling1(void)
 {
     pl_mapping_cg_t c = {0};
-    c.coupling = PL_COUPLING_I;
+    c.coupling = PL_COUPLE_HECHT1;
     c.match = PL_MATCH_DIFFUSION;
     c.viscosity = PL_VISC_HECHT28;
     c.boundary = PL_BOUNDARY_STICK;
@@ -54,7 +54,7 @@ static pl_mapping_cg_t coupling1(void)
 static pl_mapping_cg_t coupling2(void)
 {
     pl_mapping_cg_t c = coupling1();
-    c.coupling = PL_COUPLING_II;
+    c.coupling = PL_COUPLE_HECHT2;
     c.cell_over_R = 6.25e-7 / 0.4e-6;
     c.gamma = 60;
     c.lambda = 0.5;

@@ -83,7 +83,7 @@ Test(hydro, calibrated_stick_and_slip)
     static pl_mapping_t m;
     const double eta = eta_hand(5.0, 0.1, M_PI / 2);
     cr_expect(fabs(eta - 2.49592) < 1e-5, "eta = %.8g", eta);
-    pl_mapping_cg_t c = cg_of(PL_COUPLING_II, PL_BOUNDARY_STICK, 0.02, 0.0005);
+    pl_mapping_cg_t c = cg_of(PL_COUPLE_HECHT2, PL_BOUNDARY_STICK, 0.02, 0.0005);
     derive(&c, &m);
     const double stick = 1.0 / (6.0 * M_PI * eta * 2.0 * 0.02);
     cr_expect(REL_EQ(m.rh_over_R, stick), "R_h/R = %.10g, hand %.10g", m.rh_over_R, stick);
@@ -113,7 +113,7 @@ Test(hydro, warning_rule)
         {1.06, 0.01, 0}, {1.08, 0.01, 1}, {1.08, 0.02, 0}, {0.93, 0.005, 1}, {1.0, 0.0, 0}};
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; ++i) {
         const double d = 1.0 / (6.0 * M_PI * eta * 2.0 * cases[i].ratio); /* the D that gives the ratio */
-        pl_mapping_cg_t c = cg_of(PL_COUPLING_I, PL_BOUNDARY_STICK, d, d * cases[i].se / cases[i].ratio);
+        pl_mapping_cg_t c = cg_of(PL_COUPLE_HECHT1, PL_BOUNDARY_STICK, d, d * cases[i].se / cases[i].ratio);
         derive(&c, &m);
         cr_expect(REL_EQ(m.rh_over_R, cases[i].ratio), "case %zu: %.10g", i, m.rh_over_R);
         cr_expect(fabs(m.rh_over_R_se - cases[i].se) < 1e-12, "case %zu: SE %.10g", i, m.rh_over_R_se);
@@ -130,7 +130,7 @@ Test(hydro, theory)
 {
     static pl_mapping_t m;
     const double eta = eta_hand(5.0, 0.1, M_PI / 2);
-    pl_mapping_cg_t c = cg_of(PL_COUPLING_POTENTIAL, PL_BOUNDARY_SLIP, 0.0, 0.0);
+    pl_mapping_cg_t c = cg_of(PL_COUPLE_POTENTIAL, PL_BOUNDARY_SLIP, 0.0, 0.0);
     c.enskog = 1;
     derive(&c, &m);
     const double M = 5.0 * 4.0 / 3.0 * M_PI * 8.0, mu = M / (M + 1.0);
@@ -143,7 +143,7 @@ Test(hydro, theory)
     cr_assert(w, "theory 0.68 not warned");
     cr_expect(strstr(w->text, "theory") && strstr(w->text, "slip"), "%s", w->text);
 
-    c = cg_of(PL_COUPLING_II, PL_BOUNDARY_STICK, 0.0, 0.0);
+    c = cg_of(PL_COUPLE_HECHT2, PL_BOUNDARY_STICK, 0.0, 0.0);
     derive(&c, &m);
     cr_expect(REL_EQ(m.rh_over_R, 1.0), "coupling II Stokes theory: %.12g", m.rh_over_R);
     cr_expect(find_warn(&m, "HYDRODYNAMIC_RADIUS") == NULL);

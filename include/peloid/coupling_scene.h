@@ -10,6 +10,17 @@
  * (Hecht Sec. V); PL_COUPLE_POTENTIAL: WCA colloid-fluid forces integrated at
  * the MD step for the fluid near colloids (PL Sec. III.A, Eq. 17). */
 enum { PL_COUPLE_NONE = 0, PL_COUPLE_HECHT1 = 1, PL_COUPLE_HECHT2 = 2, PL_COUPLE_POTENTIAL = 3 };
+/* The one coupling enum: coupling.method of a model scene and
+ * coarse_graining.coupling of a physical one (values PL_COUPLE_HECHT1..)
+ * both hold it.  Its names there: */
+static inline const char *pl_couple_model_name(int m)
+{
+    return m == PL_COUPLE_HECHT1 ? "hecht1" : m == PL_COUPLE_HECHT2 ? "hecht2" : m == PL_COUPLE_POTENTIAL ? "potential" : "none";
+}
+static inline const char *pl_couple_physical_name(int m)
+{
+    return m == PL_COUPLE_HECHT1 ? "I" : m == PL_COUPLE_HECHT2 ? "II" : m == PL_COUPLE_POTENTIAL ? "potential" : "none";
+}
 /* PL_BOUND_* (surface rule) and PL_PLACE_* (placement) of coupling I: in
  * kernel_enums.h, shared with kernels/coupling_reflect.c. */
 

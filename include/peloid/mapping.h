@@ -24,6 +24,7 @@
 
 #include <stdio.h>
 
+#include "peloid/coupling_scene.h" /* PL_COUPLE_* */
 #include "peloid/error.h"
 
 struct pl_scene;
@@ -33,7 +34,6 @@ struct pl_scene;
 #define PL_EPS0 8.8541878128e-12    /* F/m */
 #define PL_NA 6.02214076e23         /* 1/mol */
 
-enum { PL_COUPLING_I = 0, PL_COUPLING_II = 1, PL_COUPLING_POTENTIAL = 2 };
 enum { PL_MATCH_DIFFUSION = 0, PL_MATCH_KINEMATIC = 1 };
 enum { PL_BOUNDARY_STICK = 0, PL_BOUNDARY_SLIP = 1 };
 /* Viscosity formula: Hecht Eq. 28 (rotation by +-90 deg about a coordinate
@@ -114,7 +114,7 @@ enum { PL_CALSRC_NONE = 0, PL_CALSRC_SHIPPED, PL_CALSRC_CACHE, PL_CALSRC_RUN, PL
 
 /* ---- coarse-graining choices ------------------------------------------ */
 typedef struct {
-    int coupling;       /* PL_COUPLING_* */
+    int coupling;       /* PL_COUPLE_* (coupling_scene.h) */
     int match;          /* PL_MATCH_*: which time is kept (fixes t0) */
     int viscosity;      /* PL_VISC_* */
     int boundary;       /* PL_BOUNDARY_*: Stokes 6 pi (stick) or 4 pi (slip) */
@@ -281,7 +281,7 @@ typedef struct {
 } pl_scene_physical_t;
 
 typedef struct {
-    int coupling;             /* PL_COUPLING_* */
+    int coupling;             /* PL_COUPLE_* (coupling_scene.h) */
     int time_match;           /* PL_MATCH_* */
     int boundary;             /* PL_BOUNDARY_* */
     int enskog, fluid_gravity, strict;

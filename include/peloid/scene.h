@@ -134,7 +134,7 @@ typedef enum {
     PL_KEY_REAL3,  /* double[3] */
     PL_KEY_BOOL,   /* int */
     PL_KEY_STRING, /* char[128] */
-    PL_KEY_CHOICE, /* int: index into choices */
+    PL_KEY_CHOICE, /* int: min + index into choices (min: the first value, usually 0) */
 } pl_key_type_t;
 
 /* PL_KEY_SAFE_NAME: a string that names a file or directory ([A-Za-z0-9._-]).
@@ -167,6 +167,8 @@ typedef struct {
 /* Whether v (finite) lies in key k's allowed range, its open ends honoured:
  * the loader's test of a given number, and the echo's of a derived one. */
 int pl_key_in_range(const pl_key_t *k, double v);
+/* The name of value v of a PL_KEY_CHOICE key (v = min + index). */
+static inline const char *pl_key_choice_name(const pl_key_t *k, int v) { return k->choices[v - (int)k->min]; }
 
 /* All sections, in documentation order; *count receives their number. */
 const pl_section_t *const *pl_scene_sections(size_t *count);

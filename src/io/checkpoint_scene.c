@@ -103,7 +103,7 @@ static void value_text(const pl_key_t *k, const pl_scene_t *scene, char *buf, si
     case PL_KEY_REAL: real_text(buf, n, *(const double *)base); break;
     case PL_KEY_BOOL: snprintf(buf, n, "%s", *(const int *)base ? "true" : "false"); break;
     case PL_KEY_STRING: snprintf(buf, n, "\"%.127s\"", base); break;
-    case PL_KEY_CHOICE: snprintf(buf, n, "\"%s\"", k->choices[*(const int *)base]); break;
+    case PL_KEY_CHOICE: snprintf(buf, n, "\"%s\"", pl_key_choice_name(k, *(const int *)base)); break;
     case PL_KEY_INT3: {
         const int *v = (const int *)base;
         snprintf(buf, n, "[%d, %d, %d]", v[0], v[1], v[2]);

@@ -59,7 +59,7 @@ static void audit_numbers(pl_mapping_t *m)
     /* Kn compares the mean free path with a resolved colloid surface
      * (couplings I and potential); a coupling II colloid is a point in its
      * cell, which resolves nothing smaller (Hecht Sec. VII.C): a note */
-    if (n->Kn > KN_MAX && m->cg.coupling == PL_COUPLING_II)
+    if (n->Kn > KN_MAX && m->cg.coupling == PL_COUPLE_HECHT2)
         pl_mapping_warn(m, PL_SEV_NOTE, "KNUDSEN", n->Kn,
                         "Kn = %.3g > %.2g (PL Sec. IV.D, Eq. 34), as always with coupling II: the colloid is a "
                         "point in its cell, the flow around it is not resolved (Hecht Sec. VII.C)", n->Kn, KN_MAX);

@@ -432,7 +432,7 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     const char *pairs_src = "given";
     if (have && !given(s, OFF(colloids.pairs))) {
         int dlvo = given(s, OFF(mapping.physical.surface_potential)) || given(s, OFF(mapping.physical.hamaker));
-        const int pot = mp->cg.coupling == PL_COUPLING_POTENTIAL; /* PL Eq. 16 as the contact repulsion */
+        const int pot = mp->cg.coupling == PL_COUPLE_POTENTIAL; /* PL Eq. 16 as the contact repulsion */
         snprintf(cs->pairs, sizeof cs->pairs, "%s", dlvo ? (pot ? "dlvo, wca" : "dlvo, hertz") : pot ? "wca" : "hertz");
         pairs_src = dlvo  ? "derived: physical.surface_potential / hamaker given"
                     : pot ? "derived: PL Eq. 16 WCA repulsion of the potential coupling (PL Sec. III.A)"
@@ -488,11 +488,7 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
                 return PL_ERR_INPUT;
         }
     }
-    static const int methods[] = {[PL_COUPLING_I] = PL_COUPLE_HECHT1, [PL_COUPLING_II] = PL_COUPLE_HECHT2,
-                                  [PL_COUPLING_POTENTIAL] = PL_COUPLE_POTENTIAL};
-    static const char *const method_names[] = {[PL_COUPLE_NONE] = "none", [PL_COUPLE_HECHT1] = "hecht1",
-                                               [PL_COUPLE_HECHT2] = "hecht2", [PL_COUPLE_POTENTIAL] = "potential"};
-    int method = !have ? s->coupling.method : methods[mp->cg.coupling];
+    int method = !have ? s->coupling.method : mp->cg.coupling;
     double g = have && m->g_sim > 0.0 ? -m->g_sim : 0.0;
     double temp = have ? 1.0 : cs->temperature;
     /* the derived keys: refused when given with another value */
@@ -527,7 +523,7 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
         {OFF(colloids.lub.viscosity), "lubrication.viscosity", "physical.viscosity (model eta = gamma nu)", eta,
          cs->lub.viscosity, NULL},
         {OFF(coupling.method), "coupling.method", "coarse_graining.coupling", (double)method,
-         (double)s->coupling.method, method_names[method]},
+         (double)s->coupling.method, pl_couple_model_name(method)},
     };
     /* without colloids (no volume fraction) only a hand-given count matters:
      * the other colloid keys act on nothing (an echoed scene prints them) */
@@ -584,9 +580,8 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     if (mask & PL_CT_HERTZ) prov(c, "hertz.K = %.6g kT/a0^2.5 (%s)", K, K_src);
     prov(c, "lubrication.viscosity = %.6g m_f/(a0 t0) (derived: eta = gamma nu_model, Hecht Eq. 4%s)", eta,
          (mask & PL_CT_LUB) ? "" : "; lubrication not in colloids.pairs");
-    static const char *const cg_names[] = {"I", "II", "potential"};
-    prov(c, "coupling.method = \"%s\" (derived: coarse_graining.coupling = \"%s\")", method_names[method],
-         cg_names[mp->cg.coupling]);
+    prov(c, "coupling.method = \"%s\" (derived: coarse_graining.coupling = \"%s\")", pl_couple_model_name(method),
+         pl_couple_physical_name(mp->cg.coupling));
     if (method == PL_COUPLE_POTENTIAL)
         prov(c, "coupling.sigma_cf = %.6g a0 = R, epsilon_cf = %g kT (derived: PL Eq. 17 with PL Sec. VII's choices: "
                 "the hydrodynamic radius a ~ sigma_cf, PL Table VI; 2.5 kT, PL Sec. III.C); wca: epsilon = %g kT, n = "

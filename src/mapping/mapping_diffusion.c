@@ -18,8 +18,8 @@ double pl_mapping_concentration_c(const struct pl_scene *s)
     /* a physical scene: its coarse_graining (the coupling keys are derived after the box) */
     const pl_mapping_t *mp = &s->mapping.map;
     const int ph = s->mapping.enabled;
-    const int pot = ph ? mp->cg.coupling == PL_COUPLING_POTENTIAL : s->coupling.method == PL_COUPLE_POTENTIAL;
-    const int one = ph ? mp->cg.coupling == PL_COUPLING_I : s->coupling.method == PL_COUPLE_HECHT1;
+    const int pot = ph ? mp->cg.coupling == PL_COUPLE_POTENTIAL : s->coupling.method == PL_COUPLE_POTENTIAL;
+    const int one = ph ? mp->cg.coupling == PL_COUPLE_HECHT1 : s->coupling.method == PL_COUPLE_HECHT1;
     const int slip = ph ? mp->cg.boundary == PL_BOUNDARY_SLIP : s->coupling.boundary == PL_BOUND_SLIP;
     if (pot || (one && slip)) return 1.1795;
     return one ? 1.8315 : 0.0;

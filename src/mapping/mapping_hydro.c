@@ -60,7 +60,7 @@ void pl_mapping_hydro_print(const pl_mapping_t *m, FILE *f)
             m->rh_over_R * m->real.radius, calibrated(m) ? "from the calibrated D" : "theory, from the coupling's friction",
             slip(m) ? "slip" : "stick", m->cg.gamma * m->nu_sim);
     if (slip(m)) fprintf(f, "; a stick sphere of the same friction: %.4g R", m->rh_stick_over_R);
-    if (m->cg.coupling == PL_COUPLING_II) fprintf(f, "; coupling II colloids are points in the collision, the "
+    if (m->cg.coupling == PL_COUPLE_HECHT2) fprintf(f, "; coupling II colloids are points in the collision, the "
                                                      "surface is the one the mapping assumes");
     fprintf(f, "\n");
 }

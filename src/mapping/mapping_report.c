@@ -10,7 +10,6 @@
 #include "json_build.h"
 #include "peloid/mapping.h"
 
-static const char *coupling_name(int c) { return c == PL_COUPLING_I ? "I" : c == PL_COUPLING_II ? "II" : "potential"; }
 static const char *match_name(int m) { return m == PL_MATCH_DIFFUSION ? "diffusion" : "kinematic"; }
 static const char *visc_name(int v) { return v == PL_VISC_HECHT28 ? "Hecht Eq. 28" : "PL Eqs. 9-12"; }
 
@@ -59,7 +58,7 @@ void pl_mapping_print_text(const pl_mapping_t *m, const pl_mapping_colloid_t *c,
 {
     const pl_mapping_cg_t *cg = &m->cg;
     fprintf(f, "Unit mapping (Hecht Sec. VII, PL Sec. VII): coupling %s, time matched on %s, viscosity %s%s\n",
-            coupling_name(cg->coupling), match_name(cg->match), visc_name(cg->viscosity),
+            pl_couple_physical_name(cg->coupling), match_name(cg->match), visc_name(cg->viscosity),
             cg->srd_dt > 0 ? ", SRD step given" : "");
     fprintf(f, "  units: a0 = %.4g m, t0 = %.4g s, m_f = %.4g kg, kT_model = %.4g J\n", m->a0, m->t0, m->m_f,
             m->kT_model);
@@ -133,7 +132,7 @@ int pl_mapping_json(const pl_mapping_t *m, const pl_mapping_colloid_t *c, const 
     const pl_mapping_cg_t *cg = &m->cg;
     pl_json_t b = {err, where, "mapping", 0};
     json_t *doc = json_object(), *o;
-    pl_json_str(&b, doc, "coupling", coupling_name(cg->coupling));
+    pl_json_str(&b, doc, "coupling", pl_couple_physical_name(cg->coupling));
     pl_json_str(&b, doc, "time_match", match_name(cg->match));
     pl_json_str(&b, doc, "viscosity_formula", visc_name(cg->viscosity));
     const struct { const char *key; double v; } units[] = {

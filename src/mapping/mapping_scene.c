@@ -73,9 +73,9 @@ static void fill_inputs(const pl_scene_t *s, pl_mapping_system_t *r, pl_mapping_
     cg->enskog = c->enskog;
     cg->fluid_gravity = c->fluid_gravity;
     cg->cell_over_R = c->cell_size > 0 ? c->cell_size
-                      : c->coupling == PL_COUPLING_II ? cbrt(4.0 * PL_PI / 3.0)
+                      : c->coupling == PL_COUPLE_HECHT2 ? cbrt(4.0 * PL_PI / 3.0)
                                                       : 0.5; /* I: Hecht a = R/2; potential: PL sigma_cf = 2 a0 */
-    if (c->coupling == PL_COUPLING_POTENTIAL) {
+    if (c->coupling == PL_COUPLE_POTENTIAL) {
         /* PL Sec. III.B: the radial forces of PL Eq. 17 transfer no angular
          * momentum (slip); PL Table VI adds the Enskog friction in parallel
          * (PL Eq. 41) unless the file switches it off */
@@ -257,7 +257,7 @@ int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
     pl_mapping_system_t r;
     pl_mapping_solvent_t sv;
     pl_mapping_cg_t cg;
-    if (mp->cg.coupling == PL_COUPLING_POTENTIAL && pl_scene_line_of(s, OFF(mapping.cg.boundary)) > 0 &&
+    if (mp->cg.coupling == PL_COUPLE_POTENTIAL && pl_scene_line_of(s, OFF(mapping.cg.boundary)) > 0 &&
         mp->cg.boundary != PL_BOUNDARY_SLIP)
         return pl_scene_fail(s, err, OFF(mapping.cg.boundary), "coarse_graining.boundary",
                              "\"stick\" contradicts coarse_graining.coupling = \"potential\": the radial forces of "
@@ -392,7 +392,7 @@ static void print_inputs(const pl_scene_t *s, FILE *f)
             }
             case PL_KEY_INT: snprintf(v, sizeof v, "%lld", *(const long long *)base); break;
             case PL_KEY_BOOL: snprintf(v, sizeof v, "%s", *(const int *)base ? "true" : "false"); break;
-            case PL_KEY_CHOICE: snprintf(v, sizeof v, "\"%s\"", key->choices[*(const int *)base]); break;
+            case PL_KEY_CHOICE: snprintf(v, sizeof v, "\"%s\"", pl_key_choice_name(key, *(const int *)base)); break;
             default: snprintf(v, sizeof v, "-"); break;
             }
             int line = pl_scene_line_of(s, key->offset);
@@ -404,7 +404,7 @@ static void print_inputs(const pl_scene_t *s, FILE *f)
             else if (key->offset == OFF(mapping.physical.kappa) && s->mapping.physical.ionic_strength > 0)
                 snprintf(how, sizeof how, "derived: Debye-Hueckel from ionic_strength = %.4g /m",
                          s->mapping.kappa);
-            else if (s->mapping.cg.coupling == PL_COUPLING_POTENTIAL &&
+            else if (s->mapping.cg.coupling == PL_COUPLE_POTENTIAL &&
                      (key->offset == OFF(mapping.cg.boundary) || key->offset == OFF(mapping.cg.enskog)))
                 snprintf(how, sizeof how, "derived: the potential coupling's theory is slip + Enskog (PL Sec. "
                                           "III.B, Eq. 41), not this value");

@@ -400,11 +400,7 @@ static int from_cache(const char *path, const pl_calcache_expect_t *e, int sourc
 
 /* ---- the entry point -------------------------------------------------------- */
 
-static const char *cname(const pl_scene_t *sc)
-{
-    const int m = sc->coupling.method;
-    return m == PL_COUPLE_HECHT2 ? "II" : m == PL_COUPLE_POTENTIAL ? "potential" : "I";
-}
+static const char *cname(const pl_scene_t *sc) { return pl_couple_physical_name(sc->coupling.method); }
 
 int pl_calibration_needed(const pl_scene_t *sc)
 {

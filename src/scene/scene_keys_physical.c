@@ -14,6 +14,7 @@
 #define P(m) OFF(mapping.physical.m)
 #define C(m) OFF(mapping.cg.m)
 
+/* values PL_COUPLE_HECHT1.. (the key's min): the one coupling enum of coupling_scene.h */
 static const char *const coupling_choices[] = {"I", "II", "potential", NULL};
 static const char *const match_choices[] = {"diffusion", "kinematic", NULL};
 static const char *const boundary_choices[] = {"stick", "slip", NULL};
@@ -68,7 +69,7 @@ static const pl_key_t physical_keys[] = {
 };
 
 static const pl_key_t cg_keys[] = {
-    {"coupling", PL_KEY_CHOICE, C(coupling), 0, 0, 0, coupling_choices, PL_COUPLING_I, NULL,
+    {"coupling", PL_KEY_CHOICE, C(coupling), PL_COUPLE_HECHT1, 0, 0, coupling_choices, PL_COUPLE_HECHT1, NULL,
      "-", "I: fluid reflected off colloid surfaces (Hecht Sec. IV); II: colloids join the collision (Hecht Sec. V); "
           "potential: WCA colloid-fluid forces (PL Sec. III.A, Eq. 17) with PL Sec. VII's choices: sigma_cf = R = 2 a0, "
           "epsilon_cf = 2.5 kT, colloid-colloid WCA n = 24 with PL's sigma_cc rule, slip surface + Enskog theory"},

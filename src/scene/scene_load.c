@@ -198,7 +198,7 @@ static int apply_key(const ctx_t *c, const config_setting_t *s, const char *sec,
         {
             const char *v = config_setting_get_string(s);
             for (int i = 0; k->choices[i]; ++i)
-                if (!strcmp(v, k->choices[i])) { *(int *)base = i; return 0; }
+                if (!strcmp(v, k->choices[i])) { *(int *)base = (int)k->min + i; return 0; }
             size_t len = (size_t)snprintf(what, sizeof what, "unknown value \"%s\"; allowed:", v);
             for (int i = 0; k->choices[i] && len < sizeof what; ++i)
                 len += (size_t)snprintf(what + len, sizeof what - len, " \"%s\"", k->choices[i]);

@@ -12,7 +12,7 @@ static void default_text(const pl_key_t *k, char *buf, size_t n)
     switch (k->type) {
     case PL_KEY_INT: case PL_KEY_REAL: snprintf(buf, n, "%g", k->def); break;
     case PL_KEY_BOOL: snprintf(buf, n, "%s", k->def != 0 ? "true" : "false"); break;
-    case PL_KEY_CHOICE: snprintf(buf, n, "\"%s\"", k->choices[(int)k->def]); break;
+    case PL_KEY_CHOICE: snprintf(buf, n, "\"%s\"", pl_key_choice_name(k, (int)k->def)); break;
     case PL_KEY_STRING: if (k->def_str && *k->def_str) snprintf(buf, n, "\"%s\"", k->def_str); else snprintf(buf, n, "(derived)"); break;
     case PL_KEY_INT3: case PL_KEY_REAL3: snprintf(buf, n, "[%g, %g, %g]", k->def, k->def, k->def); break;
     }
@@ -91,7 +91,7 @@ static void print_value(FILE *f, const pl_key_t *k, const pl_scene_t *scene)
         }
         fputc('"', f);
         break;
-    case PL_KEY_CHOICE: fprintf(f, "\"%s\"", k->choices[*(const int *)base]); break;
+    case PL_KEY_CHOICE: fprintf(f, "\"%s\"", pl_key_choice_name(k, *(const int *)base)); break;
     case PL_KEY_INT3: {
         const int *v = (const int *)base;
         fprintf(f, "[%d, %d, %d]", v[0], v[1], v[2]);
@@ -166,7 +166,7 @@ static void put_value(pl_json_t *b, json_t *obj, const pl_key_t *k, const pl_sce
     case PL_KEY_REAL: pl_json_real(b, obj, k->name, *(const double *)base); return;
     case PL_KEY_BOOL: pl_json_set(b, obj, k->name, json_boolean(*(const int *)base)); return;
     case PL_KEY_STRING: pl_json_str(b, obj, k->name, base); return;
-    case PL_KEY_CHOICE: pl_json_str(b, obj, k->name, k->choices[*(const int *)base]); return;
+    case PL_KEY_CHOICE: pl_json_str(b, obj, k->name, pl_key_choice_name(k, *(const int *)base)); return;
     case PL_KEY_INT3:
         a = json_array();
         for (int d = 0; a && d < 3; ++d) json_array_append_new(a, json_integer(((const int *)base)[d]));
