@@ -29,6 +29,7 @@
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
 #include "peloid/colloid_reach.h"
+#include "peloid/colloid_integrator.h"
 
 #define OFF(member) offsetof(pl_scene_t, colloids.member)
 
@@ -75,7 +76,7 @@ int pl_colloid_adaptive_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t
     c->sub_min = (int)cs->substeps;
     if (!cs->adaptive_substeps) return 0;
     const size_t K = OFF(adaptive_substeps);
-    if (c->integrator != PL_CINT_VERLET)
+    if (!pl_colloid_integrator(c->integrator)->inertial)
         return pl_scene_fail(scene, err, K, "colloids.adaptive_substeps",
                              "true needs colloids.integrator = \"verlet\" (the contact guard's MD); allowed here: false");
     if (cs->polydispersity != 0.0)

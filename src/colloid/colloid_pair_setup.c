@@ -11,6 +11,7 @@
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
 #include "peloid/colloid_pair.h"
+#include "peloid/colloid_integrator.h"
 
 #define OFF(m) offsetof(pl_scene_t, m)
 
@@ -84,7 +85,7 @@ int pl_colloid_mts_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err
     c->pair.mts = 0;
     if (k <= 1) return 0;
     const size_t K = OFF(colloids.slow_interval);
-    if (c->integrator != PL_CINT_VERLET)
+    if (!pl_colloid_integrator(c->integrator)->inertial)
         return pl_scene_fail(scene, err, K, "colloids.slow_interval",
                              "%lld: multiple time stepping needs colloids.integrator = \"verlet\"; allowed here: 1 (off)", k);
     if (scene->coupling.method == PL_COUPLE_POTENTIAL)

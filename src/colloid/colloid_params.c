@@ -9,6 +9,7 @@
 #include "peloid/colloid.h"
 #include "peloid/colloid_pair_terms.h"
 #include "peloid/depletion.h"
+#include "peloid/colloid_integrator.h"
 
 static const double E_CHARGE = 1.602176634e-19, K_B = 1.380649e-23, EPS0 = 8.8541878128e-12;
 
@@ -242,7 +243,7 @@ int pl_colloid_term_setup_lub(const pl_scene_t *scene, pl_colloid_pair_params_t 
     /* the random partner: only where velocities are integrated (the
      * Brownian integrator has its own noise); lub_noise is set per force
      * pass (pl_colloid_lub_noise) */
-    p->lub_thermal = scene->colloids.lub.thermal && scene->colloids.integrator == PL_CINT_VERLET;
+    p->lub_thermal = scene->colloids.lub.thermal && pl_colloid_integrator(scene->colloids.integrator)->inertial;
     p->lub_kT = scene->colloids.temperature;
     p->gap_cut = fmax(p->gap_cut, p->lub_hcut);
     return 0;

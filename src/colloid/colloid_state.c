@@ -10,6 +10,7 @@
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
 #include "peloid/rng.h"
+#include "peloid/colloid_integrator.h"
 
 #define ENERGY_NAME_(ID, col, bit, always) [PL_CE_##ID] = col,
 const char *const pl_colloid_energy_names[PL_CE_NTERMS] = {PL_COLLOID_ENERGY_SLOTS(ENERGY_NAME_)};
@@ -288,7 +289,7 @@ int pl_colloid_setup(pl_colloid_t *c, const pl_scene_t *scene, pl_err_t *err)
     c->max_energy_drift = cs->max_energy_drift;
     c->guard_interval = cs->guard_interval;
     unsigned t = c->pair.terms;
-    c->nve = c->integrator == PL_CINT_VERLET && !(t & PL_CT_LUB) &&
+    c->nve = pl_colloid_integrator(c->integrator)->inertial && !(t & PL_CT_LUB) &&
              !((t & PL_CT_HERTZ) && (cs->hertz.beta > 0.0 || cs->hertz.gamma_t > 0.0));
     /* neighbour list radius: the largest pair cut-off plus the skin (the
      * skin capped so the list keeps to the minimum image); cells sized by it */

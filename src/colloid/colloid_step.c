@@ -6,11 +6,11 @@
  * src/colloid/colloid_adaptive.c).  The velocity-Verlet (or Brownian) steps
  * of a collision step run in one parallel region (src/colloid/colloid_md.c). */
 #include "peloid/colloid.h"
+#include "peloid/colloid_integrator.h"
 
 int pl_colloid_md_step(pl_colloid_t *c, pl_err_t *err)
 {
-    if (c->integrator == PL_CINT_VERLET) return pl_colloid_verlet_run(c, 1, err);
-    return pl_colloid_bd_run(c, 1, err);
+    return pl_colloid_integrator(c->integrator)->run(c, 1, err);
 }
 
 int pl_colloid_advance(pl_colloid_t *c, long long collision_step, pl_err_t *err)
@@ -25,6 +25,5 @@ int pl_colloid_advance(pl_colloid_t *c, long long collision_step, pl_err_t *err)
      * colloids.substeps per collision step: a function of the state, like the
      * choice (under multiple time stepping the outer steps keep their length
      * instead); both inside the MD region (src/colloid/colloid_md.c) */
-    if (c->integrator == PL_CINT_VERLET) return pl_colloid_verlet_run(c, c->adaptive ? 0 : c->substeps, err);
-    return pl_colloid_bd_run(c, c->substeps, err);
+    return pl_colloid_integrator(c->integrator)->run(c, c->adaptive ? 0 : c->substeps, err);
 }

@@ -25,6 +25,7 @@
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/colloid.h"
 #include "peloid/colloid_pair.h"
+#include "peloid/colloid_integrator.h"
 
 #define OFF(m) offsetof(pl_scene_t, m)
 
@@ -168,7 +169,7 @@ static int mts_derive(pl_scene_t *s, const pl_colloid_pair_params_t *p, const pl
     if (!(p->terms & PL_CT_DLVO))
         return pl_scene_fail(s, err, K, key, "true needs the dlvo pair term (its slow share is the DLVO "
                                             "tail); colloids.pairs has none; allowed here: false");
-    if (cs->integrator != PL_CINT_VERLET || s->coupling.method == PL_COUPLE_POTENTIAL)
+    if (!pl_colloid_integrator(cs->integrator)->inertial || s->coupling.method == PL_COUPLE_POTENTIAL)
         return pl_scene_fail(s, err, K, key, "true needs colloids.integrator = \"verlet\" and coupling I or II "
                                             "(the potential coupling integrates the fluid forces with the "
                                             "colloids); allowed here: false");
@@ -345,7 +346,7 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
     /* adaptive substeps by default where the contact guard sets the MD step
      * (velocity Verlet, equal colloids: what the reach table covers) */
     if (!given(s, OFF(colloids.adaptive_substeps)))
-        cs->adaptive_substeps = strcmp(why, "contact guard") == 0 && cs->integrator == PL_CINT_VERLET &&
+        cs->adaptive_substeps = strcmp(why, "contact guard") == 0 && pl_colloid_integrator(cs->integrator)->inertial &&
                                 cs->polydispersity == 0.0;
     if (mp->cg.multiple_time_stepping &&
         mts_derive(s, &p, &info, mass, cs->adaptive_substeps ? (n_map < n ? n_map : n) : n, err))

@@ -15,6 +15,7 @@
 #include "peloid/h5.h"
 #include "peloid/observer.h"
 #include "peloid/vdist.h"
+#include "peloid/colloid_integrator.h"
 
 enum { VD_BINS = 60 };
 
@@ -89,7 +90,7 @@ static int sample(pl_obs_run_t *run, void *state, pl_err_t *err)
         scale_components(o->vs, nf, v, NULL, kT);
         pl_vdist_sample(o->vd[0], nf, o->vs[0], o->vs[1], o->vs[2]);
     }
-    if (c->n > 1 && c->integrator != PL_CINT_BROWNIAN) {
+    if (c->n > 1 && pl_colloid_integrator(c->integrator)->inertial) {
         const double *const v[3] = {c->vx, c->vy, c->vz};
         scale_components(o->vs, c->n, v, c->mass, kT);
         pl_vdist_sample(o->vd[1], c->n, o->vs[0], o->vs[1], o->vs[2]);

@@ -29,6 +29,7 @@
 #include "peloid/observe_scene.h"
 #include "peloid/observer.h"
 #include "peloid/scene.h"
+#include "peloid/colloid_integrator.h"
 
 #define OFFS(m) offsetof(pl_scene_t, observe.m)
 
@@ -82,7 +83,7 @@ int pl_observe_validate_measurable(const pl_scene_t *sc, pl_err_t *err)
     char why[400];
     if (pl_observe_span_problem(sc, sc->run.steps, &off, &key, why, sizeof why))
         return pl_scene_fail(sc, err, off, key, "%s", why);
-    if (o->vacf_interval > 0 && sc->colloids.integrator == PL_CINT_BROWNIAN)
+    if (o->vacf_interval > 0 && !pl_colloid_integrator(sc->colloids.integrator)->inertial)
         return pl_scene_fail(sc, err, OFFS(vacf_interval), "observe.vacf_interval",
                              "%lld with colloids.integrator = \"brownian\": Brownian dynamics has no inertial "
                              "velocities (a new one each step), so the VACF and its Green-Kubo D measure the "

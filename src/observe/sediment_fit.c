@@ -24,6 +24,7 @@
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/scene.h"
 #include "peloid/srd_theory.h"
+#include "peloid/colloid_integrator.h"
 #include "sediment_fit.h"
 
 /* mean and SE (blocking) of v[a, b) */
@@ -82,7 +83,7 @@ static void references(const pl_scene_t *sc, double *v_stokes, double *phi)
     const double g = sqrt(c->gravity[0] * c->gravity[0] + c->gravity[1] * c->gravity[1] +
                           c->gravity[2] * c->gravity[2]);
     double xi;
-    if (c->integrator == PL_CINT_BROWNIAN) { /* the Stokes friction BD uses */
+    if (!pl_colloid_integrator(c->integrator)->inertial) { /* the Stokes friction BD uses */
         xi = 6.0 * PL_PI * c->bd_viscosity * R;
     } else if (sc->mapping.enabled) {
         xi = pl_scene_kT(sc) / sc->mapping.map.d_col_sim;
