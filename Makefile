@@ -35,14 +35,25 @@ LIB_SRC  := $(wildcard src/*/*.c) $(wildcard kernels/*.c)
 LIB_OBJ  := $(patsubst %.c,$(BUILD)/%.o,$(LIB_SRC))
 LIB      := $(BUILD)/libpeloid.a
 BIN      := bin/peloid
-TEST_SRC := $(wildcard tests/test_*.c)
-TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
+# Tests by kind, one folder each (README "Tests"): tests/unit (make check and
+# the sanitizer build), tests/physics (make check: physics runs too long for
+# the sanitizers), tests/validation (make validate-physics), tests/cli and
+# tests/fault (scripts on the command line), tests/support (their shared
+# headers and helpers), tests/manual (by hand).  Every list below comes
+# from these folders; a binary is $(BUILD)/tests/NAME whatever its kind.
+UNIT_SRC := $(wildcard tests/unit/test_*.c)
+PHYS_SRC := $(wildcard tests/physics/test_*.c)
+VAL_SRC  := $(wildcard tests/validation/test_*.c)
+TEST_SRC := $(UNIT_SRC) $(PHYS_SRC) $(VAL_SRC)
+test_bins = $(patsubst %.c,$(BUILD)/tests/%,$(notdir $(1)))
+TEST_BIN := $(call test_bins,$(TEST_SRC))
+vpath test_%.c tests/unit tests/physics tests/validation
 BENCH_SRC:= $(wildcard bench/*.c)
 BENCH_BIN:= $(patsubst bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
 
 # Debian packages the build, the tests and the tools need (python3-mdanalysis,
-# python3-ase and paraview: tests/readers.sh opens the outputs with them;
-# slurm-wlm: tests/sweep_slurm.sh starts a one-node Slurm, as root).
+# python3-ase and paraview: tests/cli/readers.sh opens the outputs with them;
+# slurm-wlm: tests/cli/sweep_slurm.sh starts a one-node Slurm, as root).
 DEB_PKGS := libgsl-dev libhwloc-dev librandom123-dev libhdf5-dev libconfig-dev libjansson-dev \
             libcriterion-dev pkg-config hwloc python3-numpy python3-h5py \
             python3-matplotlib python3-scipy python3-mdanalysis python3-ase paraview slurm-wlm
@@ -129,10 +140,10 @@ $(BUILD)/bin/peloid: $(BUILD)/src/main.o $(LIB)
 	@echo "  LD      $@"
 	@$(CC) $(CFLAGS_ALL) -o $@ $^ $(LDLIBS_ALL)
 
-$(BUILD)/tests/%: tests/%.c $(LIB) $(BUILD)/flags.stamp | deps $(BUILD)/gen/peloid_build.h
+$(BUILD)/tests/test_%: test_%.c $(LIB) $(BUILD)/flags.stamp | deps $(BUILD)/gen/peloid_build.h
 	@mkdir -p $(dir $@)
 	@echo "  TEST    $@"
-	@$(CC) $(CFLAGS_ALL) -MMD -MP -o $@ $< $(LIB) $(LDLIBS_ALL) -lcriterion -lgsl -lgslcblas
+	@$(CC) $(CFLAGS_ALL) -Itests/support -MMD -MP -o $@ $< $(LIB) $(LDLIBS_ALL) -lcriterion -lgsl -lgslcblas
 
 $(BUILD)/bench/%: bench/%.c $(LIB) $(BUILD)/flags.stamp | deps $(BUILD)/gen/peloid_build.h
 	@mkdir -p $(dir $@)
@@ -161,9 +172,8 @@ check-build: $(CHECK_BIN) $(BIN)
 # (make studies, ~40 min on 2 cores) and regenerates validation/REPORT.md;
 # `make check` runs everything else.  CI runs check and validate-physics (the
 # studies would take its total past 60 min).
-VALIDATE_TESTS := test_coupling_drag test_coupling_wall test_coupling_vacf test_coupling_depletion test_coupling_thermal
-VALIDATE_BIN := $(patsubst %,$(BUILD)/tests/%,$(VALIDATE_TESTS))
-CHECK_BIN := $(filter-out $(VALIDATE_BIN),$(TEST_BIN))
+VALIDATE_BIN := $(call test_bins,$(VAL_SRC))
+CHECK_BIN := $(call test_bins,$(UNIT_SRC) $(PHYS_SRC))
 
 check-unit: $(CHECK_BIN)
 	@set -e; for t in $(CHECK_BIN); do echo "== $$t"; s=$$(date +%s); $$t --jobs 1; \
@@ -171,37 +181,35 @@ check-unit: $(CHECK_BIN)
 
 validate-physics: $(VALIDATE_BIN) $(BIN)
 	@set -e; for t in $(VALIDATE_BIN); do echo "== $$t"; $$t --jobs 1; done
-	@bash tests/stress.sh ./$(BIN) 80000
-	@bash tests/calibration_potential.sh ./$(BIN)
-	@bash tests/calibration_coupling1.sh ./$(BIN)
+	@bash tests/cli/stress.sh ./$(BIN) 80000
+	@set -e; for t in $(wildcard tests/validation/*.sh); do bash $$t ./$(BIN); done
 	@echo "make validate-physics: all suites passed"
 validate: validate-physics
 	@$(MAKE) --no-print-directory studies validation-report
 	@echo "make validate: all suites passed, validation/REPORT.md regenerated"
 
-CLI_SUITES := cli omp_env self_contained restart_guard full_disk interrupt regression observers steinhardt stress readers sweep sweep_signals sweep_slurm studies_reduced calibration calibration_cache calibrate_modes \
-              b2_stickiness
+# the command-line suites and the fault scripts short enough for make check
+# (tests/fault/fault_trials.sh, minutes of signals at random moments, runs in
+# make fault-trials only)
+CLI_SUITES := $(wildcard tests/cli/*.sh) $(filter-out tests/fault/fault_trials.sh,$(wildcard tests/fault/*.sh))
 check-cli: $(BIN)
-	@set -e; for t in $(CLI_SUITES); do s=$$(date +%s); bash tests/$$t.sh ./$(BIN); \
-	  echo "   (tests/$$t.sh: $$(( $$(date +%s) - s )) s)"; done
+	@set -e; for t in $(CLI_SUITES); do s=$$(date +%s); bash $$t ./$(BIN); \
+	  echo "   ($$t: $$(( $$(date +%s) - s )) s)"; done
 
 # The fault trials in one command (CI runs it): signals at random moments
-# then resume in place (tests/fault_trials.sh), concurrent runs and sweeps
-# under signals (tests/sweep_signals.sh), a full disk (tests/full_disk.sh,
-# a tmpfs as root) and OpenMP settings (tests/omp_env.sh).
+# then resume in place (tests/fault/fault_trials.sh), concurrent runs and sweeps
+# under signals (tests/fault/sweep_signals.sh), a full disk (tests/fault/full_disk.sh,
+# a tmpfs as root) and OpenMP settings (tests/fault/omp_env.sh).
 .PHONY: fault-trials
 fault-trials: $(BIN)
-	@set -e; for t in fault_trials sweep_signals full_disk omp_env; do s=$$(date +%s); bash tests/$$t.sh ./$(BIN); \
-	  echo "   (tests/$$t.sh: $$(( $$(date +%s) - s )) s)"; done
+	@set -e; for t in $(wildcard tests/fault/*.sh); do s=$$(date +%s); bash $$t ./$(BIN); \
+	  echo "   ($$t: $$(( $$(date +%s) - s )) s)"; done
 	@echo "make fault-trials: all trials passed"
 
 # Address + undefined-behaviour sanitizers on the quick suites (PL_QUICK=1
 # shrinks the physics runs; the sanitizers slow code ~3-10x), and the
 # sanitizer CLI on the adversarial scene set (tests/bad_scenes).
-ASAN_TESTS := test_scene test_collide test_sort test_determinism test_colloid_forces \
-              test_colloid_guards test_colloid_md test_colloid_mts test_colloid_adaptive test_colloid_restart test_capillary \
-              test_coupling_restart test_coupling_system test_fluid_guard test_progress \
-              test_blocking test_mtau test_rdf test_sq test_cluster test_vdist test_sweep_plan test_pair_table
+ASAN_TESTS := $(basename $(notdir $(UNIT_SRC))) # tests/unit, every one
 ASAN_MAKE = BUILD=build-asan \
   OPTFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
 check-asan: | deps
@@ -210,7 +218,7 @@ check-asan: | deps
 	  echo "== asan $$t"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$$t --jobs 1; \
 	  echo "   (asan $$t: $$(( $$(date +%s) - s )) s)"; done
 	@echo "== asan bin/peloid on tests/bad_scenes"
-	@ASAN_OPTIONS=detect_leaks=1 bash tests/bad_scenes.sh build-asan/bin/peloid
+	@ASAN_OPTIONS=detect_leaks=1 bash tests/support/bad_scenes.sh build-asan/bin/peloid
 
 # The studies of issue 16 (studies/*.cfg, each a `peloid sweep`; resumable:
 # a finished point is not run again) and validation/REPORT.md from their
@@ -231,7 +239,7 @@ studies: $(BIN)
 	@set -e; for s in $(STUDIES); do ./$(BIN) sweep $$s || [ $$? -eq 1 ]; done
 validation-report:
 	$(PYTHON) tools/validation_report.py out/studies validation/REPORT.md
-# Only the section "Verdicts (issue 39)" (tools/validation/issue39.py), the rest of the report kept.
+# Only the section "Verdicts of the disagreement rows" (tools/validation/verdicts.py), the rest of the report kept.
 validation-verdicts:
 	$(PYTHON) tools/validation_report.py --verdicts-only out/studies validation/REPORT.md
 # Only the rows of the named entries (ENTRIES=hecht_fig9_kappa,hecht_fig4_rz: their sweeps rerun into

@@ -25,7 +25,7 @@ void pl_colloid_kick(size_t n, double h, const double *restrict mass,
 
 /* Rounds as written (PL_ROUND_AS_WRITTEN, peloid/real.h: gcc had fused the
  * quaternion product into vfmaddsub), as the vector lanes of
- * pl_colloid_rotate_block do (tests/test_colloid_md.c). */
+ * pl_colloid_rotate_block do (tests/unit/test_colloid_md.c). */
 PL_ROUND_AS_WRITTEN void pl_colloid_quat_rotate(double px, double py, double pz, double q[4])
 {
     /* Hecht Eq. 10 (kernels/colloid_integrate.h) */

@@ -228,7 +228,7 @@ void pl_coupling_potential_kick(const pl_coupling_near_t *nb, double h, const do
  * first), so a particle near a colloid meets the same wall as any other.  A
  * per-axis mirror of the end point with a bounce-back velocity made the
  * equilibrium force of a pinned colloid near a no-slip wall 7 % too strong
- * (tests/test_coupling_wall.c: the exact Boltzmann force). */
+ * (tests/validation/test_coupling_wall.c: the exact Boltzmann force). */
 double pl_coupling_potential_drift(const pl_coupling_near_t *nb, const pl_grid_t *g, const double wall_u[2][3],
                                    double dt, int nthreads, int64_t acc[PL_WALL_ACC_N])
 {

@@ -8,7 +8,7 @@
  * a nested region), so the parts are handed round-robin to the team it got:
  * member m takes parts m, m + T, m + 2T, ...  Every part is then done
  * exactly once, by one thread, and the result does not depend on the team:
- * the same bits as a full team (tests/test_sort.c, team_of_one). */
+ * the same bits as a full team (tests/unit/test_sort.c, team_of_one). */
 #ifndef PL_OMP_PARTS_H
 #define PL_OMP_PARTS_H
 

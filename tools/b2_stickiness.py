@@ -155,7 +155,7 @@ def selftest():
     """Analytic checks: (1) square well of depth e and range lambda sigma: B2* = 1 - (lambda^3 - 1)(e^e - 1);
     (2) Baxter's limit of a narrow deep well: tau = 1 / (12 (lambda - 1) (e^e - 1)) (to first order in the
     width); (3) Chiew-Glandt at phi = 0.14 = 0.1231; (4) Hecht Eqs. 1-2 against tools/dlvo_reference.py's
-    numbers at 20 mV, 1.4e8 /m with eps_r = 81 (tests/test_colloid_forces.c: barrier 10.1, secondary minimum
+    numbers at 20 mV, 1.4e8 /m with eps_r = 81 (tests/unit/test_colloid_forces.c: barrier 10.1, secondary minimum
     -3.0 kT, both recomputed here independently)."""
     ok = True
 

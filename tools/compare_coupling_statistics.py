@@ -25,8 +25,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import statistics_compare  # noqa: E402
+import statistics_compare
 
 SCENE = """name = "coupling_compare";
 seed = {seed};

@@ -20,8 +20,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import statistics_compare  # noqa: E402
+import statistics_compare
 
 SCENE = """name = "md_compare";
 seed = {seed};

@@ -31,9 +31,8 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import h5md_colloids  # noqa: E402
-import statistics_compare  # noqa: E402
+import h5md_colloids
+import statistics_compare
 
 SCENE = """name = "mts_compare";
 seed = {seed};

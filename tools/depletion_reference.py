@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Independent reference for tests/test_depletion.c: the depletion potential
+"""Independent reference for tests/physics/test_depletion.c: the depletion potential
 that an ideal fluid with the colloid-fluid WCA potential of PL Eq. 17 induces
 between two colloids (PL Eqs. 22-23),
     Phi(d) = -n_f kT  Int f(|r|) f(|r - d z|) d^3r,   f = exp(-phi_cf/kT) - 1,

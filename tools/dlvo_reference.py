@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Independent reference for tests/test_colloid_forces.c: barrier and secondary
+"""Independent reference for tests/unit/test_colloid_forces.c: barrier and secondary
 minimum of the DLVO potential (Hecht Eqs. 1-2) for Hecht Fig. 1 parameters
 (Al2O3, d = 0.5 um, water, 300 K), in SI units with numpy/scipy.  The minimum
 is located as the root of the analytic derivative (Brent on V alone is only

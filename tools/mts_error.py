@@ -26,8 +26,7 @@ import tempfile
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import h5md_colloids  # noqa: E402
+import h5md_colloids
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 

@@ -30,8 +30,7 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import h5md_colloids  # noqa: E402
+import h5md_colloids
 
 
 def load(outdir):

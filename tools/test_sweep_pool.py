@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Unit test of the replica pooling (tools/sweep_pool.py), run by tests/sweep.sh:
+"""Unit test of the replica pooling (tools/sweep_pool.py), run by tests/cli/sweep.sh:
 
     /usr/bin/python3 tools/test_sweep_pool.py
 

@@ -8,7 +8,7 @@ each studies/*.cfg).
 
     /usr/bin/python3 tools/validation_report.py --update NAME[,NAME...] [OUT_STUDIES] [REPORT]
 
---verdicts-only rewrites only the section "Verdicts (issue 39)" (tools/validation/issue39.py, between its
+--verdicts-only rewrites only the section "Verdicts of the disagreement rows" (tools/validation/verdicts.py, between its
 markers) of an existing REPORT, leaving the rest as the last full generation wrote it (make
 validation-verdicts: for a report whose studies' outputs are not on this machine); a verdict row whose own
 studies have no outputs in OUT_STUDIES is kept from the section as last written, marked so.
@@ -38,7 +38,7 @@ from validation.fluid_guides import accuracy_fluid_diffusion, accuracy_viscosity
 from validation.hecht_clusters import (fig14_msd, fig9_bonds, fig9_diagram, fig9_kappa, fig9_phi, reduced_fig14_msd,
                                        reduced_fig9_bonds, reduced_fig9_diagram, reduced_fig9_kappa, reduced_fig9_phi)
 from validation.hecht_rdf import fig5_rdf, reduced_fig5_rdf
-from validation import issue39
+from validation import verdicts
 from validation.hecht_rz import fig4_rz, reduced_fig4_rz, rz_precision
 from validation.pl_drag import pl_drag_guide, pl_fig6_drag, reduced_pl_fig6_drag
 from validation.pl_fig10 import pl_fig10_vacf, reduced_pl_fig10_vacf
@@ -205,7 +205,7 @@ STUDIES = [
 ]
 
 
-# The reduced studies of make check (tests/studies_reduced.sh runs studies/reduced/NAME.cfg for every NAME
+# The reduced studies of make check (tests/cli/studies_reduced.sh runs studies/reduced/NAME.cfg for every NAME
 # here and asserts the check): each returns (passed, one-line message).
 REDUCED = {
     "hecht_fig9_kappa": reduced_fig9_kappa,
@@ -221,7 +221,7 @@ REDUCED = {
     "hecht_fig4_rz": reduced_fig4_rz,
     "pl_fig6_drag": reduced_pl_fig6_drag,
     "hecht_fig9_phi": reduced_fig9_phi,
-    "hecht_fig9_lub": issue39.reduced_fig9_lub,
+    "hecht_fig9_lub": verdicts.reduced_fig9_lub,
 }
 
 
@@ -332,7 +332,7 @@ NOTES = [
     "of PL Eqs. 40–43, finite box; PL quote 2.5 t0); it lies 6 and 4 SE above it at 2τ_ν and 4τ_ν.  The Enskog "
     "time agrees only through the fit form's window systematic (statistically τ is 15 SE above τ_E): the "
     "one-parameter fit takes up part of the hydrodynamic decay, which is larger in this box than in "
-    "tests/test_coupling_vacf.c's L = 16 (1.21–1.25 t0 there).  No parameter was tuned.",
+    "tests/validation/test_coupling_vacf.c's L = 16 (1.21–1.25 t0 there).  No parameter was tuned.",
 ]
 
 
@@ -419,12 +419,12 @@ def update(names, out, report):
     print(f"updated {', '.join(names)} in {report}", file=sys.stderr)
 
 
-VERDICTS_BEGIN = "<!-- verdicts of issue 39: tools/validation/issue39.py -->"
-VERDICTS_END = "<!-- end of the verdicts of issue 39 -->"
+VERDICTS_BEGIN = "<!-- verdicts of the disagreement rows: tools/validation/verdicts.py -->"
+VERDICTS_END = "<!-- end of the verdicts of the disagreement rows -->"
 
 
 def verdict_lines(out, rdir, previous=None):
-    return [VERDICTS_BEGIN, ""] + issue39.section(out, rdir, previous) + ["", VERDICTS_END]
+    return [VERDICTS_BEGIN, ""] + verdicts.section(out, rdir, previous) + ["", VERDICTS_END]
 
 
 def verdicts_only(out, report):

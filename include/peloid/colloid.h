@@ -44,7 +44,7 @@ typedef struct {
 #define PL_ADAPT_REFINE 1.25
 
 /* Nodes of the depletion_comp table over [0, d_match]: interpolation error
- * ~1e-5 kT (cubic Hermite, checked in tests/test_depletion.c). */
+ * ~1e-5 kT (cubic Hermite, checked in tests/physics/test_depletion.c). */
 #define PL_COLLOID_DEPL_TABLE 256
 
 /* Names of the energy terms PL_CE_* (thermo columns), in enum order. */

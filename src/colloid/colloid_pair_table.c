@@ -9,7 +9,7 @@
  *   |dU| <= D^2/8 max|U''| + h^2/8 max|U''|,  |dF| <= D^2/8 max|F''| + h^2/8 max|F''|
  * with linear rows; with the spline the first term falls to O(D^4) away
  * from the ends (natural end conditions: O(D^2) within a few rows of them).
- * Tested against the analytic terms in tests/test_pair_table.c.
+ * Tested against the analytic terms in tests/unit/test_pair_table.c.
  *
  * The file (model units: r in a0, U in kT_ref, F in kT_ref/a0), a regular
  * file of at most PL_TABLE_FILE_MAX bytes, lines of any length:

@@ -154,7 +154,7 @@ int pl_coupling_stage_reflect_cells(pl_sim_t *sim, void *ctx, pl_err_t *err)
  * ones met it, so the upper ones met it faster and pushed it down harder;
  * a free colloid drifted at ~0.01 a0/t0 (a fifth of its thermal speed)
  * towards -z and -y, and a pinned one held a fluid stream of ~0.03 a0/t0
- * (tests/test_coupling_momentum.c). */
+ * (tests/physics/test_coupling_momentum.c). */
 int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)ctx;

@@ -44,7 +44,7 @@
  * store the result or a lock not released in time costs this run a
  * calibration and a warning, never the run.  The
  * run is bitwise deterministic, so a cached and a fresh calibration agree
- * to the last bit (tests/calibration.sh).  --calibrate always skips the
+ * to the last bit (tests/cli/calibration.sh).  --calibrate always skips the
  * shipped set and the cache on reading and replaces the entry; never is
  * src/plan/calibrate_mode.c.  A run that has to measure says so before it
  * starts (its size), times its first steps (CAL_PROBE_FRACTION of them, or

@@ -13,7 +13,7 @@
  * The theory is biased rather than noisy (coupling II's points move ~2x
  * faster than its friction says, the potential coupling ~14 % slower), so
  * the figure is a size of the error, not a standard error; a coupling with
- * no shipped row has none (NaN: "unknown").  tests/calibrate_modes.sh
+ * no shipped row has none (NaN: "unknown").  tests/cli/calibrate_modes.sh
  * recomputes the rows from `peloid params --json` of the scenes named. */
 #include <math.h>
 #include <omp.h>

@@ -6,7 +6,7 @@ import os
 from validation.common import pl_friction, pyplot, save_figure
 # PL Figs. 10, 13 (studies/pl_fig10_vacf.cfg).  Rules fixed before the runs:
 #  1. Enskog time: PL Eq. B11 fitted (amplitude fixed, ln C = -t / tau through the origin) over 0.2-1.2 t0 as in
-#     tests/test_coupling_vacf.c; agrees with tau_E = M_c / xi_E (PL Eqs. 40, 53, reduced mass) when within
+#     tests/validation/test_coupling_vacf.c; agrees with tau_E = M_c / xi_E (PL Eqs. 40, 53, reduced mass) when within
 #     3 sqrt(SE^2 + S_w^2), S_w the fit form's window systematic (half the spread of tau over the windows below).
 #  2. Tail: one amplitude ratio A = sum C C_th / sum C_th^2 over the lags in [tau_nu, L^2 / (4 pi^2 nu)] (from
 #     the kinematic time sigma_cf^2 / nu to the decay time of the box's slowest shear mode); agrees when
@@ -229,7 +229,7 @@ def pl_fig10_vacf(sw):
         f"(σ_cf = {th['sig']:g} a0, M_c = {th['M']:.1f} m_f, φ = {th['phi']:.4f}) in L = {th['L']} a0; observers from step "
         f"{pts[0]['summary']['scene']['observe']['vacf_start']}; C(t) = ⟨V(t)V(0)⟩/⟨V²⟩ per run and Cartesian component "
         f"({n} estimates; SE from their spread).  M⟨V²⟩/kT = {mv2[0]:.3f} ± {mv2[1]:.3f}.\n\n"
-        f"1. *Enskog decay* (PL Eq. B11, amplitude fixed, through the origin; tests/test_coupling_vacf.c's form): "
+        f"1. *Enskog decay* (PL Eq. B11, amplitude fixed, through the origin; tests/validation/test_coupling_vacf.c's form): "
         + ", ".join(f"{lo:g}–{hi:g} t0: τ = {m:.3f} ± {e:.3f}" for (lo, hi), (m, e) in taus.items())
         + f" against τ_E = M_c/ξ_E = {th['tau_E']:.3f} t0 (PL Eqs. 40, 53, reduced mass).  Rule fixed before the "
         f"runs: agreement within 3√(SE² + S_w²), S_w = {s_w:.3f} t0 = half the spread over the three windows (the "

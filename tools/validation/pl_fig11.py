@@ -30,7 +30,7 @@ def colloid_track(out, p):
 
 
 def msd_diffusion(t, r, lags=FIG11_LAGS, burn=FIG11_BURN, frac=1.0, blocks=FIG11_BLOCKS):
-    """D = (MSD(t2) - MSD(t1)) / (6 (t2 - t1)) (PL Sec. VI.C: 2 D t per component; tests/test_coupling_vacf.c's
+    """D = (MSD(t2) - MSD(t1)) / (6 (t2 - t1)) (PL Sec. VI.C: 2 D t per component; tests/validation/test_coupling_vacf.c's
     estimator) from the time origins in [burn, burn + frac (T - burn)] whose displacements end there too (a
     prefix uses only its own data); mean over the colloids; SE from `blocks` contiguous blocks of origins.
     Returns (D, SE, origins)."""
@@ -74,7 +74,7 @@ def msd_curve(t, r, burn=FIG11_BURN, tmax=150.0):
 
 def fig11_reference(s, mass):
     """kT / xi of one colloid in the box: PL Eqs. 40-43 as PL evaluate them (Enskog Eq. 40 with the reduced mass,
-    in parallel with 4 pi eta sigma_cf / (1 - 2.837 sigma_cf / L)); tests/test_coupling_vacf.c's reference."""
+    in parallel with 4 pi eta sigma_cf / (1 - 2.837 sigma_cf / L)); tests/validation/test_coupling_vacf.c's reference."""
     sig, L = s["scene"]["coupling"]["sigma_cf"], s["scene"]["box"]["cells"][0]
     eta, rho, kT = s["derived"]["eta"], s["scene"]["fluid"]["density"], s["derived"]["kT"]
     return kT / pl_friction(kT, rho, eta, sig, L, mass)[2]
@@ -245,7 +245,7 @@ def pl_fig11_dphi(sw):
         f"φ = (4/3)π N σ_cf³ / V; D = (MSD({FIG11_LAGS[1]:g} t0) − MSD({FIG11_LAGS[0]:g} t0)) / (6 · "
         f"{FIG11_LAGS[1] - FIG11_LAGS[0]:g} t0) from the unwrapped trajectory (every 1 t0), mean over colloids and "
         f"time origins after {FIG11_BURN:g} t0; SE from {FIG11_BLOCKS} blocks of origins.  The window starts after "
-        "the box's slowest shear mode L²/(4π²ν) = 13 t0 has decayed (tests/test_coupling_vacf.c: a 20–60 t0 window "
+        "the box's slowest shear mode L²/(4π²ν) = 13 t0 has decayed (tests/validation/test_coupling_vacf.c: a 20–60 t0 window "
         "reads 3 % low).  Weighted fit D = D0 (1 − c φ) over φ ≤ 0.15 (the rule, fixed before the runs: agrees "
         "when |c − 1.1795| ≤ 3 SE; SE scaled by √(χ²/dof) when above 1): "
         f"c = {c:.2f} ± {cse:.2f}, D0 = {D0:.5f} ± {D0se:.5f}, χ² = {chi2:.1f} / {dof} dof."
@@ -290,11 +290,11 @@ def pl_fig11_dphi(sw):
         "The statistical error is what ~15 min of one CPU buys.\n\n"
         f"**Accuracy–cost guide, a colloid's D** (the N = {pts[0]['N']} point, seed {pts[0]['seed']}: prefixes of one "
         f"run, the same estimator and 8-block SE; error against kT/ξ = {ref:.5f}, PL Eqs. 40–43 in the box, "
-        "tests/test_coupling_vacf.c's reference; CPU = the step loop's CPU seconds, one thread, burn-in included, measured on the shared 2-core machine: ~0.9 ms per step here against ~0.6 ms on an idle core):\n\n"
+        "tests/validation/test_coupling_vacf.c's reference; CPU = the step loop's CPU seconds, one thread, burn-in included, measured on the shared 2-core machine: ~0.9 ms per step here against ~0.6 ms on an idle core):\n\n"
         + "\n".join(table) + "\n\nCheapest run for an accuracy a (|error| ≤ a and 2 SE ≤ a): " + "; ".join(acc) +
         ".  Precision alone (the SE, whatever the reference), scaled from the full run by SE ∝ CPU^−½: " +
         "; ".join(prec) +
-        ".  The 8-block SE is itself uncertain by ~25 %; tests/test_coupling_vacf.c found the run-to-run scatter of "
+        ".  The 8-block SE is itself uncertain by ~25 %; tests/validation/test_coupling_vacf.c found the run-to-run scatter of "
         "single-colloid runs (11 % at 2e5 steps) larger than their blocks' SE (6 %), so read these SEs as lower "
         "bounds.  The reference is not exact either: that test measured D 8 ± 5 % below PL's kT/ξ and 4 ± 5 % below "
         "kT/ξ of the pinned drag, so accuracies below ~5 % against PL Eqs. 40–43 are not resolved.  More colloids "
