@@ -23,7 +23,7 @@ static const char *const usage =
     "commands:\n"
     "  run SCENE [--out DIR] [--steps N] [--threads N] [--restart CHECKPOINT]\n"
     "            [--restart-changed KEY[,KEY...]] [--force] [--strict] [--allow-include-anywhere]\n"
-    "            [--calibrate never|auto|always]\n"
+    "            [--calibrate never|auto|always|stored]\n"
     "        run a scene; writes DIR/{thermo.tsv, summary.json, checkpoint.h5, scene.cfg\n"
     "        [, fields.h5 + fields.xdmf] [, colloids.h5 [+ colloids.xyz]]}.  DIR\n"
     "        defaults to out/<scene name>; an existing DIR is\n"
@@ -47,9 +47,13 @@ static const char *const usage =
     "        or the cache, else a calibration run (its estimated duration and progress on\n"
     "        stderr); always a calibration run, stored in the cache; never the coupling's\n"
     "        theory with its stated relative error, marked in params, the run's log and\n"
-    "        summary.json \"calibration\" (t0 and every SI time then carry that error)\n"
+    "        summary.json \"calibration\" (t0 and every SI time then carry that error);\n"
+    "        stored the shipped calibration or the cache, else the theory (never a run:\n"
+    "        check's default)\n"
     "  check SCENE [--strict] [--allow-include-anywhere] [--calibrate MODE]\n"
-    "        validate a scene without running it; a physical scene's audit warnings\n"
+    "        validate a scene without running it, in seconds (--calibrate stored by\n"
+    "        default: a suspension no calibration is stored for is checked with the\n"
+    "        coupling's theory and its stated error); a physical scene's audit warnings\n"
     "        (a dimensionless number out of the papers' range, an implausible input\n"
     "        with its likely unit mistake) are printed, and refused with --strict\n"
     "        (also for run and params)\n"
@@ -124,7 +128,7 @@ static int parse_ll(const char *s, long long lo, long long hi, long long *out)
 static int calibrate_opt(const char *v, int *mode)
 {
     if (v && !pl_calibrate_mode_parse(v, mode)) return 0;
-    fprintf(stderr, "peloid: error: --calibrate %.100s: allowed: never, auto, always\n", v ? v : "(no value)");
+    fprintf(stderr, "peloid: error: --calibrate %.100s: allowed: never, auto, always, stored\n", v ? v : "(no value)");
     return PL_ERR_INPUT;
 }
 
@@ -263,7 +267,10 @@ static int cmd_scene(int argc, char **argv, int params)
     const char *path = NULL;
     int json = 0, strict = 0, rc;
     unsigned flags = 0;
-    pl_calibrate_opts_t co = {.mode = PL_CALIBRATE_AUTO, .log = stderr, .terminal = isatty(2)};
+    /* check never waits for a calibration run (stored, else the theory with
+     * its error); params measures one (auto), announced with its duration */
+    pl_calibrate_opts_t co = {.mode = params ? PL_CALIBRATE_AUTO : PL_CALIBRATE_STORED, .log = stderr,
+                              .terminal = isatty(2)};
     for (int i = 0; i < argc; ++i) {
         if (!strcmp(argv[i], "--allow-include-anywhere")) flags |= PL_SCENE_INCLUDE_ANYWHERE;
         else if (!strcmp(argv[i], "--calibrate")) {

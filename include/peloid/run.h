@@ -85,13 +85,14 @@ typedef struct {
     int terminal;      /* log is a terminal */
     double progress_s; /* > 0: seconds between progress lines off a terminal */
 } pl_calibrate_opts_t;
-/* "never", "auto", "always" -> PL_CALIBRATE_*; -1 for anything else. */
+/* "never", "auto", "always", "stored" -> PL_CALIBRATE_*; -1 for anything else. */
 int pl_calibrate_mode_parse(const char *s, int *mode);
 const char *pl_calibrate_mode_name(int mode);
 /* The colloid D of the scene's model fluid and colloid, from
  * shipped_dir/calibration-<key>.json, else the user's cache, else a
  * calibration run (nthreads), cached; with PL_CALIBRATE_ALWAYS a calibration
- * run whatever is stored (the cache entry replaced). */
+ * run whatever is stored (the cache entry replaced); with PL_CALIBRATE_STORED
+ * what is stored, else the coupling's theory (PL_CALSRC_THEORY), never a run. */
 int pl_calibrate(const pl_scene_t *scene, const char *shipped_dir, int nthreads, const pl_calibrate_opts_t *o,
                  pl_mapping_calibration_t *cal, pl_err_t *err);
 /* The coupling theory's relative error (PL_CALSRC_THEORY fields of cal) for

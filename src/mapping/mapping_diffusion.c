@@ -61,7 +61,10 @@ static const char *source_name(int s)
 
 static const char *mode_name(int mode)
 {
-    return mode == PL_CALIBRATE_NEVER ? "never" : mode == PL_CALIBRATE_ALWAYS ? "always" : "auto";
+    return mode == PL_CALIBRATE_NEVER    ? "never"
+           : mode == PL_CALIBRATE_ALWAYS ? "always"
+           : mode == PL_CALIBRATE_STORED ? "stored"
+                                         : "auto";
 }
 
 void pl_mapping_calibration_line(const pl_mapping_t *m, char *buf, size_t n)
@@ -70,10 +73,14 @@ void pl_mapping_calibration_line(const pl_mapping_t *m, char *buf, size_t n)
     if (n) buf[0] = '\0';
     if (c->source == PL_CALSRC_NONE || !n) return;
     if (c->source == PL_CALSRC_THEORY)
-        snprintf(buf, n, "calibration: --calibrate never: the colloid D is the coupling's theory 1/xi = %.5g "
+        snprintf(buf, n, "calibration: %s: the colloid D is the coupling's theory 1/xi = %.5g "
                  "a0^2/t0, relative error %.2g (RMS of measured/theory - 1 over %d shipped calibration(s) of this "
-                 "coupling: measured/theory %.3g..%.3g); t0 and every SI time and rate carry it",
-                 m->d_col_sim, c->theory_error, c->theory_files, c->theory_lo, c->theory_hi);
+                 "coupling: measured/theory %.3g..%.3g); t0 and every SI time and rate carry it%s",
+                 c->mode == PL_CALIBRATE_STORED ? "--calibrate stored, none stored for this model" : "--calibrate never",
+                 m->d_col_sim, c->theory_error, c->theory_files, c->theory_lo, c->theory_hi,
+                 c->mode == PL_CALIBRATE_STORED ? "; `peloid run` measures the calibration first (once, cached; "
+                                                  "its size and estimated duration printed), --calibrate auto "
+                                                  "measures it here" : "");
     else
         snprintf(buf, n, "calibration: --calibrate %s: the colloid D measured, %.5g +- %.2g a0^2/t0 (relative "
                  "error %.2g), %s %s", mode_name(c->mode), c->d_inf, c->d_inf_se, c->d_inf_se / c->d_inf,

@@ -37,7 +37,7 @@ static const struct {
 };
 
 static const char *const MODE_NAMES[] = {[PL_CALIBRATE_AUTO] = "auto", [PL_CALIBRATE_NEVER] = "never",
-                                         [PL_CALIBRATE_ALWAYS] = "always"};
+                                         [PL_CALIBRATE_ALWAYS] = "always", [PL_CALIBRATE_STORED] = "stored"};
 enum { NMODES = sizeof MODE_NAMES / sizeof MODE_NAMES[0] };
 
 int pl_calibrate_mode_parse(const char *s, int *mode)
@@ -83,7 +83,8 @@ int pl_scene_load_coupling_true(const char *path, unsigned flags, const char *sh
     if (rc || !scene->mapping.enabled) return rc;
     if (!pl_calibration_needed(scene)) return pl_scene_load_flags(path, flags, scene, err);
     pl_mapping_calibration_t cal;
-    if (o->mode == PL_CALIBRATE_NEVER) { /* d_inf 0: the mapping keeps the theory's D, final */
+    if (o->mode == PL_CALIBRATE_NEVER) { /* d_inf 0: the mapping keeps the theory's D, final (as STORED with
+                                            * nothing stored: pl_calibrate) */
         memset(&cal, 0, sizeof cal);
         cal.mode = PL_CALIBRATE_NEVER;
         cal.source = PL_CALSRC_THEORY;

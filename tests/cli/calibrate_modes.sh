@@ -8,7 +8,10 @@
 #     once (< 5 s) and store nothing; params (text, --json), the run's log
 #     and summary.json "calibration" name mode never, source theory and the
 #     coupling's relative error; the potential coupling at a density no
-#     calibration was made for checks in < 5 s;
+#     calibration was made for checks in < 5 s, with --calibrate never and
+#     with check's default (stored: nothing measured or stored, the theory's
+#     error stated and that run calibrates first; it calibrated for 50 s
+#     before), and check reads a calibration the cache has;
 #  2. auto, empty cache: a calibration runs, prints its estimated duration
 #     before it starts and progress lines (percent, elapsed, ETA); stored;
 #     auto again reads the cache (no calibration, source "cache", same D);
@@ -80,6 +83,13 @@ a=$(now); "$PELOID" check pot.cfg --calibrate never > pot.out 2> pot.err; rc=$?;
 if [ $rc = 0 ] && fast "$a" "$b" && grep -q "relative error 0.14" pot.err && [ -z "$(entry)" ]; then
   ok "potential coupling at a new density: check --calibrate never in $($PY -c "print(round($b - $a, 2))") s (error 0.14 stated)"
 else bad "potential never: rc $rc: $(tr '\n' '|' < pot.err | cut -c1-300)"; fi
+# check's default (stored): a new suspension is checked at once with the theory and its error, nothing
+# measured or stored, and the user told that run calibrates first (before: check calibrated, 50 s here)
+a=$(now); "$PELOID" check pot.cfg > pd.out 2> pd.err; rc=$?; b=$(now)
+if [ $rc = 0 ] && fast "$a" "$b" && [ -z "$(entry)" ] && ! grep -q "calibrating" pd.err \
+   && grep -q "calibration: --calibrate stored, none stored for this model: .*theory.*relative error 0.14.*peloid run. measures the calibration first" pd.err; then
+  ok "check (default stored) of the potential coupling at a new density: $($PY -c "print(round($b - $a, 2))") s, the theory's error 0.14 stated, run calibrates first"
+else bad "check default: rc $rc, entry '$(entry)': $(tr '\n' '|' < pd.err | cut -c1-300)"; fi
 
 # 2. auto: a calibration with its estimate and progress, then the cache
 "$PELOID" params --json s.cfg > a1.json 2> a1.err; rc=$?
@@ -95,6 +105,10 @@ if [ $rc = 0 ] && ! grep -q "calibrating" a2.err && [ "$(cal a2.json source)" = 
    && [ "$(cal a2.json d_a0_2_t0)" = "$(cal a1.json d_a0_2_t0)" ] && [ "$(field "$E" wall_s)" = "$W" ]; then
   ok "auto again: read from the cache (no calibration; D $(cal a2.json d_a0_2_t0))"
 else bad "auto cached: rc $rc source $(cal a2.json source): $(tr '\n' '|' < a2.err | cut -c1-300)"; fi
+"$PELOID" check s.cfg > sd.out 2> sd.err; rc=$?
+if [ $rc = 0 ] && ! grep -q "calibrating" sd.err && grep -q "calibration: --calibrate stored: the colloid D measured, .*read from the cache" sd.err; then
+  ok "check (default stored) with the calibration in the cache: reads it"
+else bad "check stored cached: rc $rc: $(tr '\n' '|' < sd.err | cut -c1-300)"; fi
 
 # 3. always: a fresh calibration over the entry, the same bits
 sleep 0.05
