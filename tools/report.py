@@ -412,6 +412,9 @@ def error_table(obs, lines):
         val = f"{v['value']:.5g} ± {v['stderr']:.2g}" + ("" if v["unit"] in ("1", "") else f" {v['unit']}")
         if "unit_si" in v and v["unit_si"] != "1":  # a physical scene: the SI value beside
             val += f" = {v['value_si']:.5g} ± {v['stderr_si']:.2g} {v['unit_si']}"
+            if "stderr_total_si" in v:  # t0 rests on the calibrated colloid D: its error, then both combined
+                val += (f" ± {v['stderr_mapping_si']:.2g} (calibration of t0) = ± {v['stderr_total_si']:.2g} "
+                        f"{v['unit_si']} combined")
         win = (f"{v['average_from_time']:.4g} {v['average_from_time_unit']} (step {v['average_from_step']}, "
                f"{v['window_source']})" if "window_source" in v else "-")
         lines.append(f"| {k} | {val} | {win} | {pts} | {tgt} |")

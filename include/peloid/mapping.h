@@ -385,6 +385,12 @@ struct json_t *pl_mapping_diffusion_json(const pl_mapping_t *m);
  * object {"mode", "source", "relative_error", ...}; both empty / NULL when
  * the scene was loaded without a calibration decision (source NONE). */
 void pl_mapping_calibration_line(const pl_mapping_t *m, char *buf, size_t n);
+/* The relative error of t0 that the colloid D it is matched on carries: the
+ * calibration's d_inf_se / d_inf, or the theory's stated error (NaN: not
+ * known); 0 when t0 does not rest on a measured or theoretical colloid D
+ * (kinematic matching, an SRD step given in seconds, Brownian dynamics'
+ * exact Stokes D).  An SI value in a unit t0^p carries |p| times it. */
+double pl_mapping_t0_relative_error(const pl_mapping_t *m);
 struct json_t *pl_mapping_calibration_json(const pl_mapping_t *m);
 
 /* The audit's warnings (not its notes) of a physical scene, one line each

@@ -23,6 +23,14 @@ static const struct {
 /* Ratios that are already dimensionless. */
 static const char *const dimensionless[] = {"1", "R", "1/R"};
 
+/* The power of t0 in model unit `model` (0 when not in the table). */
+static int time_power(const char *model)
+{
+    for (size_t k = 0; k < sizeof units / sizeof *units; ++k)
+        if (!strcmp(model, units[k].model)) return units[k].pt;
+    return 0;
+}
+
 const char *pl_obs_si_unit(const char *model, const pl_mapping_t *m, double *to_si)
 {
     for (size_t k = 0; k < sizeof dimensionless / sizeof *dimensionless; ++k)
@@ -143,7 +151,9 @@ static int parameters(hid_t file, const pl_mapping_t *m)
     if (ex != 0) return ex < 0 ? -1 : 0;
     hid_t g = pl_h5_group(file, "parameters");
     if (g < 0) return -1;
+    const double t0_rel = pl_mapping_t0_relative_error(m);
     int bad = pl_h5_attr_doubles(g, "a0_m", &m->a0, 1) || pl_h5_attr_doubles(g, "t0_s", &m->t0, 1) ||
+              (isfinite(t0_rel) && pl_h5_attr_doubles(g, "t0_relative_error", &t0_rel, 1)) ||
               pl_h5_attr_doubles(g, "m_f_kg", &m->m_f, 1) || pl_h5_attr_doubles(g, "kT_J", &m->kT_model, 1) ||
               pl_h5_attr_vlstr(g, "meaning", "model units in SI (kT_J = m_f a0^2/t0^2, the model energy); "
                                              "a dataset X in a model unit has X_si = X * to_si");
@@ -177,8 +187,12 @@ int pl_obs_si_h5(hid_t file, const pl_mapping_t *m)
 /* The keys of an entry that are in the entry's unit. */
 static const char *const in_unit[] = {"value", "stderr", "theory", "ideal_gas", "nominal", "apparent_value"};
 
-/* key_si = key * f for each key of in_unit present as a number in e. */
-static void convert(pl_json_t *b, json_t *e, double f)
+/* key_si = key * f for each key of in_unit present as a number in e; with
+ * a value and its stderr, the mapping's share of the SI value's error
+ * (stderr_mapping_si = |p| x t0's relative error x |value_si|, p the power
+ * of t0 in the unit: t0 rests on the calibrated colloid D) and both combined
+ * (stderr_total_si, in quadrature: independent). */
+static void convert(pl_json_t *b, json_t *e, double f, int pt, double t0_rel)
 {
     for (size_t k = 0; k < sizeof in_unit / sizeof *in_unit; ++k) {
         json_t *v = json_object_get(e, in_unit[k]);
@@ -187,6 +201,11 @@ static void convert(pl_json_t *b, json_t *e, double f)
         snprintf(key, sizeof key, "%s_si", in_unit[k]);
         pl_json_real(b, e, key, json_number_value(v) * f);
     }
+    json_t *v = json_object_get(e, "value"), *se = json_object_get(e, "stderr");
+    if (pt == 0 || !(t0_rel > 0.0) || !isfinite(t0_rel) || !json_is_number(v) || !json_is_number(se)) return;
+    const double map = fabs((double)pt) * t0_rel * fabs(json_number_value(v) * f), run = json_number_value(se) * f;
+    pl_json_real(b, e, "stderr_mapping_si", map);
+    pl_json_real(b, e, "stderr_total_si", sqrt(run * run + map * map));
 }
 
 /* A number or array of numbers under key `stem`_t0 (`stem`_a0) gets its
@@ -238,11 +257,13 @@ void pl_obs_si_json(pl_json_t *b, json_t *all, const pl_mapping_t *m)
     const char *si = unit ? pl_obs_si_unit(unit, m, &f) : NULL;
     if (si && !json_object_get(all, "unit_si")) {
         pl_json_str(b, all, "unit_si", si);
-        convert(b, all, f);
+        const int pt = time_power(unit);
+        const double t0_rel = pl_mapping_t0_relative_error(m);
+        convert(b, all, f, pt, t0_rel);
         size_t i;
         json_t *p;
         if (strcmp(si, "1")) /* a dimensionless series is its own SI one */
-            json_array_foreach(json_object_get(all, "se_vs_time"), i, p) convert(b, p, f);
+            json_array_foreach(json_object_get(all, "se_vs_time"), i, p) convert(b, p, f, 0, 0.0);
     }
     suffixed(b, all, m);
     const char *key;

@@ -7,7 +7,10 @@
  *     and `model_unit` (U); /parameters holds a0_m, t0_s, m_f_kg, kT_J.
  *   summary.json "observables": an entry with `unit` gets `unit_si` and
  *     value_si, stderr_si, ... (each of its values in that unit, also in the
- *     se_vs_time points); a key K_t0 (K_a0) gets K_s (K_m).
+ *     se_vs_time points), and where the unit holds t0 and t0 rests on a
+ *     calibrated (or theoretical) colloid D, stderr_mapping_si (the share
+ *     of t0's relative error, pl_mapping_t0_relative_error) and
+ *     stderr_total_si (both in quadrature); a key K_t0 (K_a0) gets K_s (K_m).
  * Model units map through a0, t0, m_f and the model energy kT_model = m_f
  * a0^2 / t0^2 (Hecht Sec. VII.B), so that stress, shear rate and viscosity
  * stay consistent (sigma = eta gamma_dot in Pa, Pa s, 1/s).  Private to the

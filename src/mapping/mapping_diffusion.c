@@ -67,6 +67,14 @@ static const char *mode_name(int mode)
                                          : "auto";
 }
 
+double pl_mapping_t0_relative_error(const pl_mapping_t *m)
+{
+    if (m->cg.srd_dt > 0 || m->cg.match != PL_MATCH_DIFFUSION) return 0.0; /* t0 is not the colloid D's */
+    const pl_mapping_calibration_t *c = &m->calib;
+    if (c->source == PL_CALSRC_THEORY) return c->theory_error;
+    return c->d_inf > 0 ? c->d_inf_se / c->d_inf : 0.0;
+}
+
 void pl_mapping_calibration_line(const pl_mapping_t *m, char *buf, size_t n)
 {
     const pl_mapping_calibration_t *c = &m->calib;

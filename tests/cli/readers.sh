@@ -279,7 +279,9 @@ PYEOF
 # observer; every /observables dataset in a model unit has a twin X_si in an
 # SI unit with X_si = X * to_si, to_si following from a0, t0, m_f of
 # /parameters (= summary.json units_si); every summary entry with a unit has
-# unit_si and value_si/stderr_si; a model scene keeps its model units only.
+# unit_si and value_si/stderr_si, and, where its unit holds t0, the share of
+# the calibration's relative error (stderr_mapping_si) and the combined
+# stderr_total_si; a model scene keeps its model units only.
 sed -e 's/^steps = 1000;/steps = 40;/' "$ROOT/scenes/pl_colloid_1um.cfg" > pls.cfg
 echo 'observe: { stress_interval = 5; };' >> pls.cfg
 "$PELOID" run pls.cfg --out pls --threads 2 2> pls.log || bad "physical stress run: $(tail -1 pls.log)"
@@ -299,6 +301,7 @@ def s(x): return x.decode() if isinstance(x, bytes) else x
 def factor(unit, a0, t0, mf):
     return eval(unit.replace("^", "**").replace(" ", "*"), {"a0": a0, "t0": t0, "m_f": mf, "kT": mf * a0**2 / t0**2})
 seen = set()
+nmapped = [0]
 for d in ("q", "pls"):
     js = json.load(open(d + "/summary.json"))
     u = js["units_si"]
@@ -332,6 +335,17 @@ for d in ("q", "pls"):
             assert e["unit_si"] in SI | {"1"}, e["unit"]
             for k in ("value", "stderr"):
                 assert math.isclose(e[k + "_si"], e[k] * fac, rel_tol=1e-12, abs_tol=1e-300), (k, e)
+            # t0 rests on the calibrated colloid D: an SI value in t0^p carries |p| x its relative error
+            # (summary.json calibration.relative_error), beside the run's SE and combined in quadrature
+            pt = 0 if e["unit"] in DIMLESS else round(math.log2(factor(e["unit"], a0, 2 * t0, mf) / fac))
+            rel = js.get("calibration", {}).get("relative_error") or 0.0
+            if pt and rel > 0 and "stderr" in e:
+                mapped = abs(pt) * rel * abs(e["value_si"])
+                assert math.isclose(e["stderr_mapping_si"], mapped, rel_tol=1e-9, abs_tol=1e-300), (e, mapped)
+                assert math.isclose(e["stderr_total_si"], math.hypot(e["stderr_si"], mapped), rel_tol=1e-9), e
+                nmapped[0] += 1
+            else:
+                assert "stderr_mapping_si" not in e and "stderr_total_si" not in e, e
         for k, v in e.items():  # times in t0 and lengths in a0 beside in s and m
             for mu, su, fac in (("_t0", "_s", t0), ("_a0", "_m", a0)):
                 if k.endswith(mu) and isinstance(v, (float, list)):
@@ -339,6 +353,7 @@ for d in ("q", "pls"):
         for v in e.values(): walk(v)
     walk(js["observables"])
 assert {"s", "m", "m^2", "m/s", "Pa", "Pa s"} <= seen, seen
+assert nmapped[0] >= 2, nmapped  # the quickstart's D and settling velocity at least
 q = json.load(open("q/summary.json"))["observables"]
 assert q["settling_velocity"]["unit_si"] == "m/s" and len(q["colloid_D"]["fit_window_s"]) == 2
 with h5py.File("ms/observables.h5") as f:
@@ -350,10 +365,11 @@ with h5py.File("ms/observables.h5") as f:
 assert "unit_si" not in json.dumps(json.load(open("ms/summary.json"))["observables"])
 PYEOF
 "$PELOID" report q > /dev/null && "$PELOID" report pls > /dev/null && "$PELOID" report ms > /dev/null && \
-  grep -q "^| settling_velocity | .* a0/t0 = .* m/s |" q/report.md && grep -q "^| colloid_D | .* a0^2/t0 = .* m^2/s |" q/report.md && \
+  grep -q "^| settling_velocity | .* a0/t0 = .* m/s ± .* (calibration of t0) = ± .* m/s combined |" q/report.md && \
+  grep -q "^| colloid_D | .* a0^2/t0 = .* m^2/s ± .* (calibration of t0) = ± .* m^2/s combined |" q/report.md && \
   grep -q "^eta = .* Pa s " pls/report.md && grep -q "^pressure .* Pa " pls/report.md && \
   grep -q "^eta = .* m_f/(a0 t0) " ms/report.md && ! grep -q "Pa" ms/report.md \
-  && ok "peloid report: a physical scene's values in SI beside the model ones (plots in um, s, um/s, K, Pa), a model scene's in model units" \
+  && ok "peloid report: a physical scene's values in SI beside the model ones, with t0's calibration error and the combined SE (plots in um, s, um/s, K, Pa), a model scene's in model units" \
   || bad "report in SI: $(grep -h "settling\|colloid_D\|^eta\|^pressure" q/report.md pls/report.md ms/report.md)"
 
 # progress without a terminal (stderr is a file here)
