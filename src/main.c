@@ -48,6 +48,11 @@ static const char *const usage =
     "        stderr); always a calibration run, stored in the cache; never the coupling's\n"
     "        theory with its stated relative error, marked in params, the run's log and\n"
     "        summary.json \"calibration\" (t0 and every SI time then carry that error)\n"
+    "  run SCENE --replicas N [--out DIR] [--threads T] [--calibrate MODE]\n"
+    "        N runs of the scene with seeds seed + 0 .. N - 1 (DIR/p000r0 ...), run and\n"
+    "        resumed as a sweep runs a study; DIR/sweep.tsv, report.md and sweep.png give each\n"
+    "        observable pooled: the mean +- the SE between the replicas, beside the\n"
+    "        within-run SE and a flag where they disagree\n"
     "  check SCENE [--strict] [--allow-include-anywhere] [--calibrate MODE]\n"
     "        validate a scene without running it; a physical scene's audit warnings\n"
     "        (a dimensionless number out of the papers' range, an implausible input\n"
@@ -192,6 +197,30 @@ static int interrupted(const char *scene_path, unsigned flags, const pl_run_end_
     return 128 + sig;
 }
 
+static int sweep_study(pl_study_t *st, pl_sweep_opts_t *o, pl_err_t *err);
+
+/* `peloid run SCENE --replicas N`: the study of the scene's N seeds
+ * (pl_study_of_scene) run and pooled as `peloid sweep` runs a study. */
+static int run_replicas(const char *scene, int n, const char *out_dir, int threads, int calibrate)
+{
+    pl_sweep_opts_t o = {.point = -1, .progress_tty = isatty(2), .log = stderr, .interrupt = &interrupt_signal,
+                         .out_dir = out_dir, .threads = threads, .calibrate = pl_calibrate_mode_name(calibrate)};
+    pl_study_t *st = NULL;
+    pl_err_t err = {0, ""};
+    int rc = pl_study_of_scene(scene, n, out_dir, &st, &err);
+    if (!rc) rc = sweep_study(st, &o, &err);
+    char out[1024];
+    snprintf(out, sizeof out, "%s", st ? pl_study_out(st) : "");
+    pl_study_free(st);
+    if (rc == PL_ERR_INTERRUPTED) {
+        int sig = interrupt_signal < 0 ? -(int)interrupt_signal : (int)interrupt_signal;
+        fprintf(stderr, "peloid: run --replicas %d interrupted (%s); resume with: peloid run %s --replicas %d "
+                        "--out %s\n", n, signal_name(sig), scene, n, out_dir ? out_dir : out);
+        return 128 + sig;
+    }
+    return rc ? fail(&err) : 0;
+}
+
 static int cmd_run(int argc, char **argv)
 {
     pl_run_end_t end = {0, 0, ""};
@@ -199,7 +228,7 @@ static int cmd_run(int argc, char **argv)
                        .progress = isatty(2), .log = stderr, .restart_changed = NULL,
                        .interrupt = &interrupt_signal, .end = &end};
     unsigned flags = 0;
-    int strict = 0, rc;
+    int strict = 0, rc, replicas = 0, other = 0; /* other: an option --replicas cannot take */
     const char *scene_path = NULL;
     char msg[256];
     pl_calibrate_opts_t co = {.mode = PL_CALIBRATE_AUTO, .log = stderr, .terminal = o.progress};
@@ -207,8 +236,17 @@ static int cmd_run(int argc, char **argv)
         const char *a = argv[i];
         int has = i + 1 < argc;
         long long v;
+        other |= !strcmp(a, "--force") || !strcmp(a, "--restart") || !strcmp(a, "--restart-changed") ||
+                 !strcmp(a, "--steps") || !strcmp(a, "--strict") || !strcmp(a, "--allow-include-anywhere");
         if (!strcmp(a, "--force")) o.force = 1;
-        else if (!strcmp(a, "--calibrate")) {
+        else if (!strcmp(a, "--replicas") && has) {
+            if (parse_ll(argv[++i], 2, PL_STUDY_MAX_POINTS, &v)) {
+                snprintf(msg, sizeof msg, "run --replicas %.100s: expected an integer in 2..%d (the scene's seed "
+                         "+ 0 .. N - 1, pooled)", argv[i], PL_STUDY_MAX_POINTS);
+                return bad_usage(msg);
+            }
+            replicas = (int)v;
+        } else if (!strcmp(a, "--calibrate")) {
             if ((rc = calibrate_opt(has ? argv[++i] : NULL, &co.mode))) return rc;
         }
         else if (!strcmp(a, "--strict")) strict = 1;
@@ -238,6 +276,10 @@ static int cmd_run(int argc, char **argv)
         }
     }
     if (!scene_path) return bad_usage("run: missing SCENE");
+    if (replicas && other)
+        return bad_usage("run --replicas: allowed with --out, --threads and --calibrate only (a directory it wrote "
+                         "is resumed: finished replicas are skipped)");
+    if (replicas) return run_replicas(scene_path, replicas, o.out_dir, o.threads, co.mode);
     pl_err_t err = {0, ""};
     const int asked = o.threads;
     if (pl_threads_resolve(o.threads, &o.threads, &err)) return fail(&err);
@@ -316,13 +358,28 @@ static int cmd_report(int argc, char **argv)
     return PL_ERR_INPUT;
 }
 
+/* Runs a loaded study (o: the options but self and tools, filled here). */
+static int sweep_study(pl_study_t *st, pl_sweep_opts_t *o, pl_err_t *err)
+{
+    static char self[4096], tools[4096]; /* the options point here for the sweep's lifetime */
+    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (n <= 0) return pl_err_set(err, PL_ERR_INPUT, "sweep: cannot find the peloid executable (/proc/self/exe)");
+    self[n] = '\0';
+    o->self = self;
+    const char *t = getenv("PELOID_TOOLS");
+    snprintf(tools, sizeof tools, "%s", t && *t ? t : PL_TOOLS_DIR);
+    o->tools = tools;
+    catch_signals(on_sweep_signal);
+    return pl_sweep(st, o, err);
+}
+
 /* `peloid sweep STUDY`: the study's points as a process pool of `peloid run`
  * (src/sweep/sweep.c), or a Slurm job array. */
 static int cmd_sweep(int argc, char **argv)
 {
     pl_sweep_opts_t o = {.point = -1, .progress_tty = isatty(2), .log = stderr, .interrupt = &interrupt_signal};
     const char *path = NULL;
-    char msg[256], self[4096], tools[4096];
+    char msg[256];
     for (int i = 0; i < argc; ++i) {
         const char *a = argv[i];
         int has = i + 1 < argc;
@@ -354,20 +411,10 @@ static int cmd_sweep(int argc, char **argv)
     if (!path) return bad_usage("sweep: missing STUDY");
     if (o.slurm + o.collect_only + (o.point >= 0) > 1)
         return bad_usage("sweep: --slurm, --collect and --point exclude each other");
-    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-    if (n <= 0) return bad_usage("sweep: cannot find the peloid executable (/proc/self/exe)");
-    self[n] = '\0';
-    o.self = self;
-    const char *t = getenv("PELOID_TOOLS");
-    snprintf(tools, sizeof tools, "%s", t && *t ? t : PL_TOOLS_DIR);
-    o.tools = tools;
     pl_study_t *st = NULL;
     pl_err_t err = {0, ""};
     int rc = pl_study_load(path, &st, &err);
-    if (!rc) {
-        catch_signals(on_sweep_signal);
-        rc = pl_sweep(st, &o, &err);
-    }
+    if (!rc) rc = sweep_study(st, &o, &err);
     pl_study_free(st);
     if (rc == PL_ERR_INTERRUPTED) { /* one line: what stopped, how to resume; exit 128 + the first signal */
         int sig = interrupt_signal < 0 ? -(int)interrupt_signal : (int)interrupt_signal;
