@@ -180,7 +180,7 @@ validate: validate-physics
 	@echo "make validate: all suites passed, validation/REPORT.md regenerated"
 
 CLI_SUITES := cli omp_env self_contained restart_guard full_disk interrupt regression observers steinhardt stress readers sweep sweep_signals sweep_slurm studies_reduced calibration calibration_cache calibrate_modes \
-              b2_stickiness physical_refusals
+              b2_stickiness physical_refusals plan
 check-cli: $(BIN)
 	@set -e; for t in $(CLI_SUITES); do s=$$(date +%s); bash tests/$$t.sh ./$(BIN); \
 	  echo "   (tests/$$t.sh: $$(( $$(date +%s) - s )) s)"; done

@@ -61,6 +61,12 @@ static const char *const usage =
     "  params SCENE [--json] [--strict] [--allow-include-anywhere] [--calibrate MODE]\n"
     "        print the derived SRD parameters: lambda, nu_kin, nu_col, nu, eta, D_f,\n"
     "        Sc, tau_f (Padding & Louis 2006, Eqs. 4, 6, 9-15)\n"
+    "  plan SCENE --target REL [--calibrate MODE] [--allow-include-anywhere]\n"
+    "        a guide to the model for a physical scene's suspension: each coupling at its\n"
+    "        default resolution with its hydrodynamic radius R_h/R and calibration cost, the\n"
+    "        box against Hasimoto's correction, the MD settings, the run length, replicas and\n"
+    "        CPU time for a relative SE REL of the colloid D (0.05 or 5%; and of the settling\n"
+    "        velocity under gravity), and the recommended coupling\n"
     "  report OUTDIR    write OUTDIR/report.md with a plot of every observable the run\n"
     "                   measured (g(r), MSD and D, clusters, thermo) and the error-against-\n"
     "                   time table (tools/report.py with /usr/bin/python3; PELOID_TOOLS\n"
@@ -346,6 +352,57 @@ static int cmd_scene(int argc, char **argv, int params)
     return rc ? fail(&err) : 0;
 }
 
+/* --target REL: a relative SE as a fraction (0.05) or a percentage (5%),
+ * in (0, 0.5]; -1 for anything else. */
+static double parse_target(const char *v)
+{
+    char *end;
+    errno = 0;
+    double t = strtod(v, &end);
+    if (end != v && *end == '%' && end[1] == '\0') t /= 100.0, ++end;
+    return end == v || *end || errno || !(t > 0.0 && t <= 0.5) ? -1.0 : t;
+}
+
+/* `peloid plan SCENE --target REL`: a guide to the model for the scene's
+ * suspension (src/plan/advise.c). */
+static int cmd_plan(int argc, char **argv)
+{
+    const char *path = NULL;
+    double target = -2.0;
+    unsigned flags = 0;
+    int rc;
+    pl_calibrate_opts_t co = {.mode = PL_CALIBRATE_AUTO, .log = stderr, .terminal = isatty(2)};
+    char msg[256];
+    for (int i = 0; i < argc; ++i) {
+        if (!strcmp(argv[i], "--allow-include-anywhere")) flags |= PL_SCENE_INCLUDE_ANYWHERE;
+        else if (!strcmp(argv[i], "--calibrate")) {
+            if ((rc = calibrate_opt(i + 1 < argc ? argv[++i] : NULL, &co.mode))) return rc;
+        } else if (!strcmp(argv[i], "--target")) {
+            const char *v = i + 1 < argc ? argv[++i] : "(no value)";
+            if ((target = parse_target(v)) < 0) {
+                snprintf(msg, sizeof msg, "plan --target %.100s: expected the relative SE wanted of the colloid D, "
+                         "a number in (0, 0.5] or a percentage in (0%%, 50%%] (e.g. 0.05 or 5%%)", v);
+                return bad_usage(msg);
+            }
+        } else if (argv[i][0] != '-' && !path) path = argv[i];
+        else {
+            snprintf(msg, sizeof msg, "plan: unexpected argument '%.100s'", argv[i]);
+            return bad_usage(msg);
+        }
+    }
+    if (!path) return bad_usage("plan: missing SCENE");
+    if (target < 0) return bad_usage("plan: missing --target REL (the relative SE wanted of the colloid D, e.g. 5%)");
+    pl_err_t err = {0, ""};
+    int nthreads;
+    if (pl_threads_resolve(0, &nthreads, &err)) return fail(&err);
+    pl_scene_t *scene = malloc(sizeof *scene);
+    if (!scene) return PL_ERR_NOMEM;
+    rc = pl_scene_load_coupling_true(path, flags, PL_CALIBRATION_DIR, nthreads, &co, scene, &err);
+    if (!rc) rc = pl_plan_advise(scene, path, target, PL_CALIBRATION_DIR, stdout, &err);
+    free(scene);
+    return rc ? fail(&err) : 0;
+}
+
 /* `peloid report OUTDIR`: the plotting script of the tools directory. */
 static int cmd_report(int argc, char **argv)
 {
@@ -438,6 +495,7 @@ int main(int argc, char **argv)
     if (!strcmp(cmd, "params")) return cmd_scene(argc - 2, argv + 2, 1);
     if (!strcmp(cmd, "sweep")) return cmd_sweep(argc - 2, argv + 2);
     if (!strcmp(cmd, "report")) return cmd_report(argc - 2, argv + 2);
+    if (!strcmp(cmd, "plan")) return cmd_plan(argc - 2, argv + 2);
     if (!strcmp(cmd, "keys")) {
         pl_scene_print_reference(stdout);
         return 0;

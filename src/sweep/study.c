@@ -382,6 +382,19 @@ int pl_study_of_scene(const char *scene, int replicas, const char *out_dir, pl_s
     return study_load(scene, text, out, err);
 }
 
+int pl_study_scene_with(const char *scene, const char *key, const char *value, char **text, pl_err_t *err)
+{
+    const char *base = strrchr(scene, '/');
+    char study[1024];
+    snprintf(study, sizeof study, "scene = \"%.400s\";\npoints = { keys = [\"%.100s\"]; values = ( (%.200s) ); };\n",
+             base ? base + 1 : scene, key, value);
+    pl_study_t *st = NULL;
+    int rc = study_load(scene, study, &st, err);
+    if (!rc) rc = pl_study_point_scene(st, 0, NULL, text, err);
+    pl_study_free(st);
+    return rc;
+}
+
 void pl_study_free(pl_study_t *st)
 {
     if (!st) return;
