@@ -418,7 +418,7 @@ static int cmd_report(int argc, char **argv)
 /* Runs a loaded study (o: the options but self and tools, filled here). */
 static int sweep_study(pl_study_t *st, pl_sweep_opts_t *o, pl_err_t *err)
 {
-    static char self[4096], tools[4096]; /* the options point here for the sweep's lifetime */
+    char self[4096], tools[4096]; /* the options point here while pl_sweep runs */
     ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
     if (n <= 0) return pl_err_set(err, PL_ERR_INPUT, "sweep: cannot find the peloid executable (/proc/self/exe)");
     self[n] = '\0';

@@ -149,7 +149,7 @@ static void option_alt(const char *path, int k, const char *dir, option_t *o)
     free(text);
     if (rc) {
         o->ok = 0;
-        snprintf(o->why, sizeof o->why, "%s", s ? e.msg : "out of memory");
+        snprintf(o->why, sizeof o->why, "%.399s", s ? e.msg : "out of memory");
     } else {
         option_of(s, k, dir, o);
     }
