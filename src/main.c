@@ -50,6 +50,11 @@ static const char *const usage =
     "        summary.json \"calibration\" (t0 and every SI time then carry that error);\n"
     "        stored the shipped calibration or the cache, else the theory (never a run:\n"
     "        check's default)\n"
+    "  run SCENE --replicas N [--out DIR] [--threads T] [--calibrate MODE]\n"
+    "        N runs of the scene with seeds seed + 0 .. N - 1 (DIR/p000r0 ...), run and\n"
+    "        resumed as a sweep runs a study; DIR/sweep.tsv, report.md and sweep.png give each\n"
+    "        observable pooled: the mean +- the SE between the replicas, beside the\n"
+    "        within-run SE and a flag where they disagree\n"
     "  check SCENE [--strict] [--allow-include-anywhere] [--calibrate MODE]\n"
     "        validate a scene without running it, in seconds (--calibrate stored by\n"
     "        default: a suspension no calibration is stored for is checked with the\n"
@@ -60,6 +65,12 @@ static const char *const usage =
     "  params SCENE [--json] [--strict] [--allow-include-anywhere] [--calibrate MODE]\n"
     "        print the derived SRD parameters: lambda, nu_kin, nu_col, nu, eta, D_f,\n"
     "        Sc, tau_f (Padding & Louis 2006, Eqs. 4, 6, 9-15)\n"
+    "  plan SCENE --target REL [--calibrate MODE] [--allow-include-anywhere]\n"
+    "        a guide to the model for a physical scene's suspension: each coupling at its\n"
+    "        default resolution with its hydrodynamic radius R_h/R and calibration cost, the\n"
+    "        box against Hasimoto's correction, the MD settings, the run length, replicas and\n"
+    "        CPU time for a relative SE REL of the colloid D (0.05 or 5%; and of the settling\n"
+    "        velocity under gravity), and the recommended coupling\n"
     "  report OUTDIR    write OUTDIR/report.md with a plot of every observable the run\n"
     "                   measured (g(r), MSD and D, clusters, thermo) and the error-against-\n"
     "                   time table (tools/report.py with /usr/bin/python3; PELOID_TOOLS\n"
@@ -196,6 +207,30 @@ static int interrupted(const char *scene_path, unsigned flags, const pl_run_end_
     return 128 + sig;
 }
 
+static int sweep_study(pl_study_t *st, pl_sweep_opts_t *o, pl_err_t *err);
+
+/* `peloid run SCENE --replicas N`: the study of the scene's N seeds
+ * (pl_study_of_scene) run and pooled as `peloid sweep` runs a study. */
+static int run_replicas(const char *scene, int n, const char *out_dir, int threads, int calibrate)
+{
+    pl_sweep_opts_t o = {.point = -1, .progress_tty = isatty(2), .log = stderr, .interrupt = &interrupt_signal,
+                         .out_dir = out_dir, .threads = threads, .calibrate = pl_calibrate_mode_name(calibrate)};
+    pl_study_t *st = NULL;
+    pl_err_t err = {0, ""};
+    int rc = pl_study_of_scene(scene, n, out_dir, &st, &err);
+    if (!rc) rc = sweep_study(st, &o, &err);
+    char out[1024];
+    snprintf(out, sizeof out, "%s", st ? pl_study_out(st) : "");
+    pl_study_free(st);
+    if (rc == PL_ERR_INTERRUPTED) {
+        int sig = interrupt_signal < 0 ? -(int)interrupt_signal : (int)interrupt_signal;
+        fprintf(stderr, "peloid: run --replicas %d interrupted (%s); resume with: peloid run %s --replicas %d "
+                        "--out %s\n", n, signal_name(sig), scene, n, out_dir ? out_dir : out);
+        return 128 + sig;
+    }
+    return rc ? fail(&err) : 0;
+}
+
 static int cmd_run(int argc, char **argv)
 {
     pl_run_end_t end = {0, 0, ""};
@@ -203,7 +238,7 @@ static int cmd_run(int argc, char **argv)
                        .progress = isatty(2), .log = stderr, .restart_changed = NULL,
                        .interrupt = &interrupt_signal, .end = &end};
     unsigned flags = 0;
-    int strict = 0, rc;
+    int strict = 0, rc, replicas = 0, other = 0; /* other: an option --replicas cannot take */
     const char *scene_path = NULL;
     char msg[256];
     pl_calibrate_opts_t co = {.mode = PL_CALIBRATE_AUTO, .log = stderr, .terminal = o.progress};
@@ -211,8 +246,17 @@ static int cmd_run(int argc, char **argv)
         const char *a = argv[i];
         int has = i + 1 < argc;
         long long v;
+        other |= !strcmp(a, "--force") || !strcmp(a, "--restart") || !strcmp(a, "--restart-changed") ||
+                 !strcmp(a, "--steps") || !strcmp(a, "--strict") || !strcmp(a, "--allow-include-anywhere");
         if (!strcmp(a, "--force")) o.force = 1;
-        else if (!strcmp(a, "--calibrate")) {
+        else if (!strcmp(a, "--replicas") && has) {
+            if (parse_ll(argv[++i], 2, PL_STUDY_MAX_POINTS, &v)) {
+                snprintf(msg, sizeof msg, "run --replicas %.100s: expected an integer in 2..%d (the scene's seed "
+                         "+ 0 .. N - 1, pooled)", argv[i], PL_STUDY_MAX_POINTS);
+                return bad_usage(msg);
+            }
+            replicas = (int)v;
+        } else if (!strcmp(a, "--calibrate")) {
             if ((rc = calibrate_opt(has ? argv[++i] : NULL, &co.mode))) return rc;
         }
         else if (!strcmp(a, "--strict")) strict = 1;
@@ -242,6 +286,10 @@ static int cmd_run(int argc, char **argv)
         }
     }
     if (!scene_path) return bad_usage("run: missing SCENE");
+    if (replicas && other)
+        return bad_usage("run --replicas: allowed with --out, --threads and --calibrate only (a directory it wrote "
+                         "is resumed: finished replicas are skipped)");
+    if (replicas) return run_replicas(scene_path, replicas, o.out_dir, o.threads, co.mode);
     pl_err_t err = {0, ""};
     const int asked = o.threads;
     if (pl_threads_resolve(o.threads, &o.threads, &err)) return fail(&err);
@@ -311,6 +359,57 @@ static int cmd_scene(int argc, char **argv, int params)
     return rc ? fail(&err) : 0;
 }
 
+/* --target REL: a relative SE as a fraction (0.05) or a percentage (5%),
+ * in (0, 0.5]; -1 for anything else. */
+static double parse_target(const char *v)
+{
+    char *end;
+    errno = 0;
+    double t = strtod(v, &end);
+    if (end != v && *end == '%' && end[1] == '\0') t /= 100.0, ++end;
+    return end == v || *end || errno || !(t > 0.0 && t <= 0.5) ? -1.0 : t;
+}
+
+/* `peloid plan SCENE --target REL`: a guide to the model for the scene's
+ * suspension (src/plan/advise.c). */
+static int cmd_plan(int argc, char **argv)
+{
+    const char *path = NULL;
+    double target = -2.0;
+    unsigned flags = 0;
+    int rc;
+    pl_calibrate_opts_t co = {.mode = PL_CALIBRATE_AUTO, .log = stderr, .terminal = isatty(2)};
+    char msg[256];
+    for (int i = 0; i < argc; ++i) {
+        if (!strcmp(argv[i], "--allow-include-anywhere")) flags |= PL_SCENE_INCLUDE_ANYWHERE;
+        else if (!strcmp(argv[i], "--calibrate")) {
+            if ((rc = calibrate_opt(i + 1 < argc ? argv[++i] : NULL, &co.mode))) return rc;
+        } else if (!strcmp(argv[i], "--target")) {
+            const char *v = i + 1 < argc ? argv[++i] : "(no value)";
+            if ((target = parse_target(v)) < 0) {
+                snprintf(msg, sizeof msg, "plan --target %.100s: expected the relative SE wanted of the colloid D, "
+                         "a number in (0, 0.5] or a percentage in (0%%, 50%%] (e.g. 0.05 or 5%%)", v);
+                return bad_usage(msg);
+            }
+        } else if (argv[i][0] != '-' && !path) path = argv[i];
+        else {
+            snprintf(msg, sizeof msg, "plan: unexpected argument '%.100s'", argv[i]);
+            return bad_usage(msg);
+        }
+    }
+    if (!path) return bad_usage("plan: missing SCENE");
+    if (target < 0) return bad_usage("plan: missing --target REL (the relative SE wanted of the colloid D, e.g. 5%)");
+    pl_err_t err = {0, ""};
+    int nthreads;
+    if (pl_threads_resolve(0, &nthreads, &err)) return fail(&err);
+    pl_scene_t *scene = malloc(sizeof *scene);
+    if (!scene) return PL_ERR_NOMEM;
+    rc = pl_scene_load_coupling_true(path, flags, PL_CALIBRATION_DIR, nthreads, &co, scene, &err);
+    if (!rc) rc = pl_plan_advise(scene, path, target, PL_CALIBRATION_DIR, stdout, &err);
+    free(scene);
+    return rc ? fail(&err) : 0;
+}
+
 /* `peloid report OUTDIR`: the plotting script of the tools directory. */
 static int cmd_report(int argc, char **argv)
 {
@@ -323,13 +422,28 @@ static int cmd_report(int argc, char **argv)
     return PL_ERR_INPUT;
 }
 
+/* Runs a loaded study (o: the options but self and tools, filled here). */
+static int sweep_study(pl_study_t *st, pl_sweep_opts_t *o, pl_err_t *err)
+{
+    char self[4096], tools[4096]; /* the options point here while pl_sweep runs */
+    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (n <= 0) return pl_err_set(err, PL_ERR_INPUT, "sweep: cannot find the peloid executable (/proc/self/exe)");
+    self[n] = '\0';
+    o->self = self;
+    const char *t = getenv("PELOID_TOOLS");
+    snprintf(tools, sizeof tools, "%s", t && *t ? t : PL_TOOLS_DIR);
+    o->tools = tools;
+    catch_signals(on_sweep_signal);
+    return pl_sweep(st, o, err);
+}
+
 /* `peloid sweep STUDY`: the study's points as a process pool of `peloid run`
  * (src/sweep/sweep.c), or a Slurm job array. */
 static int cmd_sweep(int argc, char **argv)
 {
     pl_sweep_opts_t o = {.point = -1, .progress_tty = isatty(2), .log = stderr, .interrupt = &interrupt_signal};
     const char *path = NULL;
-    char msg[256], self[4096], tools[4096];
+    char msg[256];
     for (int i = 0; i < argc; ++i) {
         const char *a = argv[i];
         int has = i + 1 < argc;
@@ -361,20 +475,10 @@ static int cmd_sweep(int argc, char **argv)
     if (!path) return bad_usage("sweep: missing STUDY");
     if (o.slurm + o.collect_only + (o.point >= 0) > 1)
         return bad_usage("sweep: --slurm, --collect and --point exclude each other");
-    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-    if (n <= 0) return bad_usage("sweep: cannot find the peloid executable (/proc/self/exe)");
-    self[n] = '\0';
-    o.self = self;
-    const char *t = getenv("PELOID_TOOLS");
-    snprintf(tools, sizeof tools, "%s", t && *t ? t : PL_TOOLS_DIR);
-    o.tools = tools;
     pl_study_t *st = NULL;
     pl_err_t err = {0, ""};
     int rc = pl_study_load(path, &st, &err);
-    if (!rc) {
-        catch_signals(on_sweep_signal);
-        rc = pl_sweep(st, &o, &err);
-    }
+    if (!rc) rc = sweep_study(st, &o, &err);
     pl_study_free(st);
     if (rc == PL_ERR_INTERRUPTED) { /* one line: what stopped, how to resume; exit 128 + the first signal */
         int sig = interrupt_signal < 0 ? -(int)interrupt_signal : (int)interrupt_signal;
@@ -398,6 +502,7 @@ int main(int argc, char **argv)
     if (!strcmp(cmd, "params")) return cmd_scene(argc - 2, argv + 2, 1);
     if (!strcmp(cmd, "sweep")) return cmd_sweep(argc - 2, argv + 2);
     if (!strcmp(cmd, "report")) return cmd_report(argc - 2, argv + 2);
+    if (!strcmp(cmd, "plan")) return cmd_plan(argc - 2, argv + 2);
     if (!strcmp(cmd, "keys")) {
         pl_scene_print_reference(stdout);
         return 0;

@@ -253,7 +253,18 @@ def plot_msd(f, obs, u, outdir, lines):
     lines += ["## Colloid MSD and D", "", "![MSD](msd.png)", ""]
 
 
-def plot_clusters(f, obs, u, outdir, lines):
+def bond_rule(summary):
+    """The cluster observer's bond rule as the run used it: the mapping's line where a physical scene states
+    it (observe.clusters_gap in a0 and m, given or derived from the pair potential), else the scene's keys."""
+    o = (summary.get("scene") or {}).get("observe") or {}
+    if o.get("clusters_bond") == "energy":
+        return f"pair energy below \u2212{o.get('clusters_energy')} kT (observe.clusters_bond = \"energy\")"
+    prov = ((summary.get("mapping") or {}).get("colloid") or {}).get("derived_keys") or []
+    line = next((x for x in prov if isinstance(x, str) and x.startswith("observe.clusters_gap")), None)
+    return line or f"surface gap below observe.clusters_gap = {o.get('clusters_gap')} a0"
+
+
+def plot_clusters(f, obs, u, outdir, lines, summary=None):
     fig, axs = plt.subplots(3, 1, figsize=(6, 6), sharex=True)
     for ax, name in zip(axs, ("cluster_number", "largest_cluster", "mean_cluster_size")):
         g = f["observables/" + name]
@@ -268,7 +279,7 @@ def plot_clusters(f, obs, u, outdir, lines):
     fig.tight_layout()
     fig.savefig(os.path.join(outdir, "clusters.png"), dpi=120)
     plt.close(fig)
-    lines += ["## Clusters", "", "![clusters](clusters.png)", ""]
+    lines += ["## Clusters", "", f"Bond: {bond_rule(summary or {})}.", "", "![clusters](clusters.png)", ""]
 
 
 def plot_vdist(f, obs, outdir, lines):
@@ -452,7 +463,7 @@ def plot_observables(h5, summary, obs, u, outdir, lines):
         if "colloid_cff" in have:
             plot_cff(f, obs, u, outdir, lines)
         if "cluster_number" in have:
-            plot_clusters(f, obs, u, outdir, lines)
+            plot_clusters(f, obs, u, outdir, lines, summary)
         if "cluster_bonds_primary" in have:
             plot_bonds(f, obs, u, outdir, lines)
         if "colloid_phi_z" in have:

@@ -20,6 +20,9 @@ OUT/ID/summary.json and OUT/status/ID.tsv, and writes
   OUT/sweep.png   the study's plot{}: y (one panel per observable) against x,
                   one line per value of `series`, error bars = SE; without
                   plot{}: every observable against the first swept key.
+  OUT/report.md   per point its keys and each observable's value +- SE in its
+                  unit; with replicas the pooled mean +- the SE between them,
+                  the within-run SE, ratio and flag (tools/sweep_report.py)
 
 A physical study (its points' summary.json has "units_si"): every column of
 sweep.tsv is in SI with its unit in the header, the model value beside it
@@ -39,7 +42,10 @@ within-run SE / sqrt(N), NAME_se_flag ok / high / low when the two disagree
 beyond the 95 % interval of their ratio), OUT/sweep_replicas.tsv one row
 per run as sweep.tsv has without replicas (plus replica and seed), and
 sweep.json "pooled" the pooled rows; sweep.png draws the pooled means with
-the SE between replicas.
+the SE between replicas (thin bars) and the within-run SE (thick bars), a
+flagged point ringed in red.  A study without swept keys (`peloid run SCENE
+--replicas N`) draws each replica's value against its number with the
+pooled mean and its SE band.
 """
 import json
 import math
@@ -52,8 +58,10 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker  # noqa: E402
 
 from sweep_pool import pool  # noqa: E402
+from sweep_report import lines as report_lines  # noqa: E402
 
 # Observables that count colloids: in a physical study given as fractions of N.
 CLUSTER_SIZES = ("largest_cluster", "mean_cluster_size")
@@ -255,9 +263,10 @@ def mathtext(unit):
 
 
 def drawn(rows, physical, pooled):
-    """Each row's {observable: (value, SE, axis label)} as sweep.png draws it: a model-unit study its values;
-    a physical one its SI column in the drawn units (DRAWN: \u00b5m, \u00b5m\u00b2/s, ...); pooled rows their mean
-    with the SE between replicas."""
+    """Each row's {observable: (value, SE, axis label, within-run SE, flag)} as sweep.png draws it: a
+    model-unit study its values; a physical one its SI column in the drawn units (DRAWN: \u00b5m,
+    \u00b5m\u00b2/s, ...); pooled rows their mean with the SE between replicas, the within-run SE of the mean
+    and the flag (tools/sweep_pool.py); a run's row its SE as within-run SE and no flag."""
     out = []
     for r in rows:
         d = {}
@@ -265,20 +274,59 @@ def drawn(rows, physical, pooled):
             for name, cs in r["columns"].items():
                 c, u = cs[0]
                 q = r["pooled"][name][c]
-                d[name] = (q["mean"], q["se"], u if physical else r["model_unit"].get(name, ""))
+                d[name] = (q["mean"], q["se"], u if physical else r["model_unit"].get(name, ""), q["se_within"],
+                           q["flag"])
         else:
             for name, vs in row_views(r, physical).items():
                 _, u, v, e = vs[0]
-                d[name] = (v, e, u if physical else r["observables"][name]["unit"])
-        for name, (v, e, u) in list(d.items()):
+                d[name] = (v, e, u if physical else r["observables"][name]["unit"], e, "")
+        for name, (v, e, u, w, flag) in list(d.items()):
             if not physical:
-                d[name] = (v, e, f"{name} [{u}]" if u and u != "1" else name)
+                d[name] = (v, e, f"{name} [{u}]" if u and u != "1" else name, w, flag)
                 continue
             f, shown = DRAWN.get(u, (1.0, mathtext(u or "1")))
             label = f"{name} / N" if name in CLUSTER_SIZES and u == "1" else name
-            d[name] = (scaled(v, 1.0 / f), scaled(e, 1.0 / f), f"{label} [{shown}]" if shown != "1" else label)
+            d[name] = (scaled(v, 1.0 / f), scaled(e, 1.0 / f), f"{label} [{shown}]" if shown != "1" else label,
+                       scaled(w, 1.0 / f), flag)
         out.append(d)
     return out
+
+
+def _finite0(e):
+    return e if isinstance(e, (int, float)) and not isinstance(e, bool) and math.isfinite(e) else 0.0
+
+
+def plot_replicas(study, runs, pooled, path, physical):
+    """sweep.png of a study without swept keys (`peloid run SCENE --replicas N`): per observable each
+    replica's value with its within-run SE against its replica number, the pooled mean as a line and the
+    SE between the replicas as a band around it, the flag in the legend."""
+    p = pooled[0]
+    per = drawn(runs, physical, False)
+    mine = drawn([p], physical, True)[0]
+    spec = study.get("plot") or {}
+    ys = spec.get("y") or [n for n in p["pooled"]][:6]
+    ys = [ys] if isinstance(ys, str) else ys
+    fig, axes = plt.subplots(len(ys), 1, figsize=(6, 3.0 * len(ys)), squeeze=False)
+    for ax, y in zip(axes[:, 0], ys):
+        pts = [(r["replica"], d[y]) for r, d in zip(runs, per) if r["status"] == "ok" and y in d
+               and isinstance(d[y][0], (int, float))]
+        if not pts or y not in mine or not isinstance(mine[y][0], (int, float)):
+            ax.text(0.5, 0.5, f"no finished replica has {y}", ha="center", va="center", transform=ax.transAxes)
+            continue
+        m, se, label, w, flag = mine[y]
+        ax.errorbar([k for k, _ in pts], [d[0] for _, d in pts], yerr=[_finite0(d[1]) for _, d in pts], fmt="o",
+                    ms=4, capsize=3, color="C0", label="replica ± its within-run SE")
+        ax.axhline(m, color="C1", lw=1.2, label=f"mean ± SE between replicas (flag: {flag or 'n/a'})")
+        ax.axhspan(m - _finite0(se), m + _finite0(se), color="C1", alpha=0.25)
+        ax.set_xlabel("replica (seed = the scene's seed + replica)")
+        ax.xaxis.set_major_locator(matplotlib.ticker.MaxNLocator(integer=True))
+        ax.set_ylabel(label)
+        ax.legend(fontsize=7)
+    axes[0, 0].set_title(f"{study['study']}: {p['replicas_ok']}/{len(runs)} replicas ok; "
+                         "flag: within-run SE against the scatter", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
 
 
 def plot(study, rows, path, units, physical=False, pooled=False):
@@ -309,10 +357,15 @@ def plot(study, rows, path, units, physical=False, pooled=False):
             rs.sort(key=lambda rd: rd[0]["params"][x])
             xv = [r["params"][x] for r, _ in rs]
             yv = [d[y][0] for _, d in rs]
-            ev = [d[y][1] for _, d in rs]
-            ev = [e if isinstance(e, (int, float)) and math.isfinite(e) else 0.0 for e in ev]
-            ax.errorbar(xv, yv, yerr=ev, fmt="o-", ms=4, capsize=3,
-                        label=f"{series} = {label}" if series else None)
+            ev = [_finite0(d[y][1]) for _, d in rs]
+            line = ax.errorbar(xv, yv, yerr=ev, fmt="o-", ms=4, capsize=3,
+                               label=f"{series} = {label}" if series else None)
+            if pooled:  # the within-run SE of the mean as a thick inner bar; a flagged point ringed in red
+                ax.errorbar(xv, yv, yerr=[_finite0(d[y][3]) for _, d in rs], fmt="none", lw=4, alpha=0.35,
+                            color=line[0].get_color())
+                bad = [(x_, y_) for x_, y_, (_, d) in zip(xv, yv, rs) if d[y][4] in ("high", "low")]
+                if bad:
+                    ax.plot(*zip(*bad), "o", ms=11, mfc="none", mec="red", mew=1.5)
         ylabel = next((d[y][2] for _, d in ok if y in d), y)
         ax.set_xlabel(f"{x} [{mathtext(xunit) if physical else xunit}]" if xunit else x)
         ax.set_ylabel(ylabel)
@@ -330,8 +383,8 @@ def plot(study, rows, path, units, physical=False, pooled=False):
         nrep = study.get("replicas")
         flagged = sum(any(q["flag"] in ("high", "low") for q in r["pooled"].get(y, {}).values()) for r in rows
                       for y in ys)
-        bars = (f"{nrep} replicas each\nmean, error bars: SE between the replicas"
-                + (f" ({flagged} disagree with the within-run SE)" if flagged else ""))
+        bars = (f"{nrep} replicas each\nmean, thin bars: SE between the replicas, thick: within-run SE"
+                + (f" ({flagged} ringed in red disagree)" if flagged else ""))
     axes[0, 0].set_title(f"sweep {study['study']}: {len(ok)}/{len(rows)} points ok"
                          + (f", {failed} failed" if failed else "") + ", " + bars, fontsize=10)
     fig.tight_layout()
@@ -381,13 +434,18 @@ def main():
         pass  # a Slurm array (--point, --collect) plans nothing
     json.dump(doc, open(tmp, "w"), indent=1)
     os.replace(tmp, os.path.join(out, "sweep.json"))
-    plot(study, pooled or rows, os.path.join(out, "sweep.png"), units, physical, bool(pooled))
+    if pooled and not study["keys"]:
+        plot_replicas(study, rows, pooled, os.path.join(out, "sweep.png"), physical)
+    else:
+        plot(study, pooled or rows, os.path.join(out, "sweep.png"), units, physical, bool(pooled))
+    write("report.md", report_lines(study, rows, pooled, units, physical, replicas,
+                                    lambda r: row_views(r, physical)))
     ok = sum(r["status"] == "ok" for r in rows)
     failed = sum(r["status"] == "failed" for r in rows)
     stopped = sum(r["status"] == "interrupted" for r in rows)
     print(f"peloid sweep {study['study']}: {ok} ok, {failed} failed, {stopped} interrupted, "
           f"{len(rows) - ok - failed - stopped} pending -> "
-          f"{out}/sweep.tsv, {'sweep_replicas.tsv, ' if pooled else ''}sweep.json, sweep.png", file=sys.stderr)
+          f"{out}/sweep.tsv, {'sweep_replicas.tsv, ' if pooled else ''}sweep.json, sweep.png, report.md", file=sys.stderr)
 
 
 if __name__ == "__main__":

@@ -280,6 +280,9 @@ typedef struct {
     double sound_speed;       /* m/s */
     double mean_free_path;    /* m */
     double self_diffusion;    /* m^2/s */
+    /* the observers' lengths in SI (0: not given; src/mapping/mapping_observe.c) */
+    double clusters_gap, rdf_rmax, steinhardt_rmax; /* m */
+    double sq_qmax;           /* 1/m */
 } pl_scene_physical_t;
 
 typedef struct {
@@ -352,6 +355,24 @@ int pl_mapping_scene_apply(struct pl_scene *scene, pl_err_t *err);
  * (naming it and the physical keys it comes from) and a pair term without
  * its material constants. */
 int pl_mapping_colloids_apply(struct pl_scene *scene, pl_err_t *err);
+/* The observers' length keys of a physical scene (src/mapping/mapping_observe.c):
+ * physical.clusters_gap, rdf_rmax, steinhardt_rmax (m) and sq_qmax (1/m)
+ * become observe.<same> in a0 (1/a0); a different observe value given beside
+ * one is refused; with the gap cluster observer on and no gap given,
+ * observe.clusters_gap is derived from the pair potential
+ * (pl_mapping_bond_gap).  Each choice is a provenance line (params,
+ * summary.json mapping.derived_keys).  After pl_mapping_colloids_apply. */
+int pl_mapping_observe_apply(struct pl_scene *scene, pl_err_t *err);
+/* The bond gap of the scene's colloid pair potential (a0, colloids of the
+ * scene's radius R): the largest surface gap h in (0, cut-off) at which the
+ * conservative pair energy U(2R + h) <= -e_bond (kT_ref), so that a pair
+ * closer than that is bound by more than e_bond, in the primary minimum or,
+ * where it is that deep, the secondary one.  Scanned in steps of 1e-3 R
+ * from the cut-off inwards, then bisected to 1e-9 R.  *h gets -1 when U
+ * never reaches -e_bond beyond contact; a pair set-up error is returned. */
+int pl_mapping_bond_gap(const struct pl_scene *scene, double e_bond, double *h, pl_err_t *err);
+/* A provenance line of a derived key (pl_mapping_colloid_t.prov). */
+void pl_mapping_prov(pl_mapping_colloid_t *c, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 /* Warnings (IMPLAUSIBLE) for physical{} values outside the plausible range
  * of a liquid suspension, each naming the likely unit mistake

@@ -104,4 +104,21 @@ void pl_calibrate_theory(const pl_scene_t *scene, pl_mapping_calibration_t *cal)
 int pl_scene_load_coupling_true(const char *path, unsigned flags, const char *shipped_dir, int nthreads,
                                 const pl_calibrate_opts_t *o, pl_scene_t *scene, pl_err_t *err);
 
+/* Row k of the shipped calibrations (src/plan/calibrate_mode.c): the
+ * coupling (PL_COUPLE_*), the file key (calibration-<key>.json), the scene
+ * that reads it and D_measured / D_theory; -1 past the last row. */
+int pl_calibrate_shipped(int k, int *method, const char **key, const char **scene, double *ratio);
+
+/* `peloid plan SCENE --target REL` (src/plan/advise.c): for the physical
+ * scene (loaded, calibrated as the caller chose) the couplings at their
+ * default resolution with their hydrodynamic radius R_h/R (this scene's
+ * mapping; the others from their theory scaled by the shipped calibrations'
+ * D_measured / D_theory) and calibration cost, the box against Hasimoto's
+ * correction, the MD settings, and the run length and CPU time for a
+ * relative SE `target` of the colloid D (and of the settling velocity under
+ * gravity), with the recommendation.  path: the scene's file (the other
+ * couplings are loaded from it with coarse_graining.coupling set). */
+int pl_plan_advise(const pl_scene_t *scene, const char *path, double target, const char *shipped_dir, FILE *out,
+                   pl_err_t *err);
+
 #endif

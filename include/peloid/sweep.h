@@ -22,6 +22,15 @@ typedef struct pl_study pl_study_t;
  * allowed: ...". */
 int pl_study_load(const char *path, pl_study_t **out, pl_err_t *err);
 void pl_study_free(pl_study_t *study);
+/* The study of `replicas` runs of one scene (`peloid run SCENE --replicas
+ * N`): no swept key, seeds the scene's seed + 0 .. N - 1, its out out_dir
+ * (NULL: out/<the scene's name>), named as the scene's run; replicas out of
+ * 2..PL_STUDY_MAX_POINTS is refused ("replicas"). */
+int pl_study_of_scene(const char *scene, int replicas, const char *out_dir, pl_study_t **out, pl_err_t *err);
+/* The scene at path `scene` with one key set (key "section.key", value as
+ * scene text, e.g. "\"II\""), as libconfig text (malloc'd, the caller
+ * frees): what a study's point with that value runs (`peloid plan`). */
+int pl_study_scene_with(const char *scene, const char *key, const char *value, char **text, pl_err_t *err);
 
 /* The runs of the study: its points times its replicas (study key
  * `replicas`, default 1).  Every k below is a run: replica k % replicas of

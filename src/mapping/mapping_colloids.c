@@ -29,8 +29,7 @@
 
 #define OFF(m) offsetof(pl_scene_t, m)
 
-static void prov(pl_mapping_colloid_t *c, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void prov(pl_mapping_colloid_t *c, const char *fmt, ...)
+void pl_mapping_prov(pl_mapping_colloid_t *c, const char *fmt, ...)
 {
     if (c->nprov >= (int)(sizeof c->prov / sizeof c->prov[0])) return;
     va_list ap;
@@ -217,11 +216,11 @@ static int mts_derive(pl_scene_t *s, const pl_colloid_pair_params_t *p, const pl
     }
     cs->slow_gap = hin;
     cs->slow_interval = k;
-    prov(c, "colloids.slow_gap = %.6g (derived: coarse_graining.multiple_time_stepping, the outer edge of the "
+    pl_mapping_prov(c, "colloids.slow_gap = %.6g (derived: coarse_graining.multiple_time_stepping, the outer edge of the "
             "well of the DLVO secondary minimum at gap %.4g a0 (its inflection point); the DLVO force beyond it moves "
             "to the outer step up to the gap %.6g a0)",
          hin, hm, pl_pair_slow_hout(hin));
-    prov(c, "colloids.slow_interval = %lld (derived: coarse_graining.multiple_time_stepping; the slow share's "
+    pl_mapping_prov(c, "colloids.slow_interval = %lld (derived: coarse_graining.multiple_time_stepping; the slow share's "
             "stiffness %.4g kT/a0^2 at gap %.4g a0 lasts %.3g outer steps per collision time at %lld MD "
             "steps per SRD step (>= colloids.min_contact_steps = %g); at most a quarter of %lld)",
          k, kmax, h_at, tc / ((double)k * dt / (double)nfl), nfl, cs->min_contact_steps, nfl);
@@ -260,7 +259,7 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
         char bar[64] = "none", sec[64] = "none"; /* the potential need not have them */
         if (isfinite(info.barrier_u)) snprintf(bar, sizeof bar, "%.4g kT at gap %.4g a0", info.barrier_u, info.barrier_h);
         if (isfinite(info.secmin_u)) snprintf(sec, sizeof sec, "%.4g kT at gap %.4g a0", info.secmin_u, info.secmin_h);
-        prov(c, "DLVO potential (Hecht Eqs. 1-2, parabolic primary minimum of Sec. II): primary minimum -%g kT "
+        pl_mapping_prov(c, "DLVO potential (Hecht Eqs. 1-2, parabolic primary minimum of Sec. II): primary minimum -%g kT "
                 "at gap %.4g a0 (matched at %.4g a0, curvature %.4g kT/a0^2); barrier %s; secondary minimum %s; "
                 "cut-off gap %.4g a0",
              cs->dlvo.primary_depth, info.h0, info.hm, info.curvature, bar, sec, info.hcut);
@@ -365,7 +364,7 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
     mp->map.md_dt = mp->map.dt / (double)n;
     c->md_substeps = n;
     c->md_dt = dt / (double)n;
-    prov(c, "colloids.substeps = %lld (derived: %s)", n, c->substeps_reason);
+    pl_mapping_prov(c, "colloids.substeps = %lld (derived: %s)", n, c->substeps_reason);
     /* adaptive substeps: the mapping's own MD step is the floor */
     long long nmin = n_map < n ? n_map : n;
     if (refuse(s, err, OFF(colloids.min_substeps), "colloids.min_substeps",
@@ -374,7 +373,7 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
         return PL_ERR_INPUT;
     cs->min_substeps = nmin;
     if (cs->adaptive_substeps)
-        prov(c, "colloids.min_substeps = %lld (derived: the mapping's MD step; adaptive substeps run %lld .. %lld "
+        pl_mapping_prov(c, "colloids.min_substeps = %lld (derived: the mapping's MD step; adaptive substeps run %lld .. %lld "
                 "per collision step, the stiffest contact the pairs present can reach with their energy + "
                 "colloids.adaptive_margin = %g kT)", nmin, nmin, n, cs->adaptive_margin);
     return 0;
@@ -560,31 +559,31 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     c->hertz_K = cs->hertz.K;
     c->lub_viscosity = eta;
 
-    prov(c, "colloids.count = %lld (derived: phi V / (4/3 pi R^3) in the box used, %d x %d x %d a0; phi "
+    pl_mapping_prov(c, "colloids.count = %lld (derived: phi V / (4/3 pi R^3) in the box used, %d x %d x %d a0; phi "
             "given %g, realised %.5g)",
          c->n_colloids, s->box.cells[0], s->box.cells[1], s->box.cells[2], c->phi_given, c->phi_realised);
-    prov(c, "colloids.radius = %.6g a0 (derived: R / a0, a0 = %s R)", cs->radius,
+    pl_mapping_prov(c, "colloids.radius = %.6g a0 (derived: R / a0, a0 = %s R)", cs->radius,
          given(s, OFF(mapping.cg.cell_size)) ? "coarse_graining.cell_size" : "the coupling's default");
-    prov(c, "colloids.mass_density = %.6g m_f/a0^3 (derived: gamma rho_p / rho_f, Hecht Sec. VII.B): M = %.6g "
+    pl_mapping_prov(c, "colloids.mass_density = %.6g m_f/a0^3 (derived: gamma rho_p / rho_f, Hecht Sec. VII.B): M = %.6g "
             "m_f, I = 2/5 M R^2 = %.6g m_f a0^2",
          cs->mass_density, M, c->inertia);
-    prov(c, "colloids.gravity = [0, 0, %.6g] a0/t0^2 (derived: Hecht Eq. 31, weight minus buoyancy)", g);
-    prov(c, "colloids.temperature = 1 kT_model (derived: the model energy unit)");
-    prov(c, "colloids.pairs = \"%s\" (%s)", cs->pairs, pairs_src);
+    pl_mapping_prov(c, "colloids.gravity = [0, 0, %.6g] a0/t0^2 (derived: Hecht Eq. 31, weight minus buoyancy)", g);
+    pl_mapping_prov(c, "colloids.temperature = 1 kT_model (derived: the model energy unit)");
+    pl_mapping_prov(c, "colloids.pairs = \"%s\" (%s)", cs->pairs, pairs_src);
     if (mask & PL_CT_DLVO)
-        prov(c, "dlvo: psi0 = %.6g mV, kappa = %.6g /m (%s), hamaker = %.6g J, eps_r = %.6g (%s), z = %g, "
+        pl_mapping_prov(c, "dlvo: psi0 = %.6g mV, kappa = %.6g /m (%s), hamaker = %.6g J, eps_r = %.6g (%s), z = %g, "
                 "T = %g K, length_unit = a0 = %.6g m (derived: Hecht Eqs. 1-2)",
              cs->dlvo.psi0_mV, mp->kappa, given(s, OFF(mapping.physical.kappa)) ? "given" : "Debye-Hueckel",
              ph->hamaker, ph->permittivity,
              given(s, OFF(mapping.physical.permittivity)) ? "given" : "water at T, Malmberg & Maryott",
              cs->dlvo.z, ph->temperature, m->a0);
-    if (mask & PL_CT_HERTZ) prov(c, "hertz.K = %.6g kT/a0^2.5 (%s)", K, K_src);
-    prov(c, "lubrication.viscosity = %.6g m_f/(a0 t0) (derived: eta = gamma nu_model, Hecht Eq. 4%s)", eta,
+    if (mask & PL_CT_HERTZ) pl_mapping_prov(c, "hertz.K = %.6g kT/a0^2.5 (%s)", K, K_src);
+    pl_mapping_prov(c, "lubrication.viscosity = %.6g m_f/(a0 t0) (derived: eta = gamma nu_model, Hecht Eq. 4%s)", eta,
          (mask & PL_CT_LUB) ? "" : "; lubrication not in colloids.pairs");
-    prov(c, "coupling.method = \"%s\" (derived: coarse_graining.coupling = \"%s\")", pl_couple_model_name(method),
-         pl_couple_physical_name(mp->cg.coupling));
+    pl_mapping_prov(c, "coupling.method = \"%s\" (derived: coarse_graining.coupling = \"%s\")",
+                    pl_couple_model_name(method), pl_couple_physical_name(mp->cg.coupling));
     if (method == PL_COUPLE_POTENTIAL)
-        prov(c, "coupling.sigma_cf = %.6g a0 = R, epsilon_cf = %g kT (derived: PL Eq. 17 with PL Sec. VII's choices: "
+        pl_mapping_prov(c, "coupling.sigma_cf = %.6g a0 = R, epsilon_cf = %g kT (derived: PL Eq. 17 with PL Sec. VII's choices: "
                 "the hydrodynamic radius a ~ sigma_cf, PL Table VI; 2.5 kT, PL Sec. III.C); wca: epsilon = %g kT, n = "
                 "%g, sigma_rule = \"pl\" (PL Eq. 16, sigma_cc against spurious depletion, PL Sec. III.C.1; where "
                 "colloids.pairs has wca)",

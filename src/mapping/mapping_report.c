@@ -62,14 +62,16 @@ void pl_mapping_print_text(const pl_mapping_t *m, const pl_mapping_colloid_t *c,
             cg->srd_dt > 0 ? ", SRD step given" : "");
     fprintf(f, "  units: a0 = %.4g m, t0 = %.4g s, m_f = %.4g kg, kT_model = %.4g J\n", m->a0, m->t0, m->m_f,
             m->kT_model);
-    fprintf(f, "  energy scale kT_real/kT_model = %.4g (Lambda = rho_m/kT: real %.4g, model %.4g s^2/m^5)\n",
-            m->energy_scale, m->lambda_real, m->lambda_model);
-    fprintf(f, "  SRD: gamma = %g, lambda = %g a0, dt = %.4g s = %g t0, nu = %.4g a0^2/t0 (nu dt/a0^2 = %.4f)"
-               " = %.4g m^2/s (real %.4g)\n",
-            cg->gamma, cg->lambda, m->dt, cg->lambda, m->nu_sim, m->nu_coeff, m->model.nu, m->real.nu);
+    /* Model values in model units, real ones in SI; where they differ, their ratio (never a model value in SI) */
+    fprintf(f, "  energy scale kT_real/kT_model = %.4g (Hecht Sec. VII.B: the model suspension is colder by this, "
+               "its Lambda = rho_m/kT larger by it; real Lambda = %.4g s^2/m^5)\n",
+            m->energy_scale, m->lambda_real);
+    fprintf(f, "  SRD: gamma = %g, lambda = %g a0, dt = %.4g s = %g t0, nu = %.4g a0^2/t0 (nu dt/a0^2 = %.4f); "
+               "real nu = %.4g m^2/s, model/real = %.4g\n",
+            cg->gamma, cg->lambda, m->dt, cg->lambda, m->nu_sim, m->nu_coeff, m->real.nu, m->model.nu / m->real.nu);
     fprintf(f, "  colloid: R = %.4g a0, mass = %.4g m_f, gravity %.4g m/s^2 (real) = %.4g a0/t0^2 in the model "
-               "(Hecht Eq. 31), A_H = %.4g J in the model\n",
-            m->sigma, m->mass_sim, m->real.g, m->g_sim, m->model.hamaker);
+               "(Hecht Eq. 31)\n",
+            m->sigma, m->mass_sim, m->real.g, m->g_sim);
     if (c)
         fprintf(f, "           A_H = %.4g kT, Coulomb prefactor (Hecht Eq. 1) = %.4g kT/a0, kappa = %.4g /a0, "
                    "l = %.4g a0, colloids = %lld\n",
@@ -86,11 +88,13 @@ void pl_mapping_print_text(const pl_mapping_t *m, const pl_mapping_colloid_t *c,
     const char *title[2] = {"time scales (Hecht Tables II-IV)", "time scales (PL Table III)"};
     for (int k = 0; k < 2; ++k) {
         int n = k == 0 ? hecht_rows(m, rows) : pl_rows(m, rows);
-        fprintf(f, "  %-34s %12s %12s %12s %12s\n", title[k], "real [s]", "model [s]", "SRD steps", "MD steps");
+        fprintf(f, "  %-34s %12s %12s %12s %12s %12s\n", title[k], "real [s]", "model [t0]", "model/real",
+                "SRD steps", "MD steps");
         for (int i = 0; i < n; ++i) {
             fprintf(f, "    %-8s %-23s", rows[i].name, rows[i].src);
             num(f, rows[i].real);
-            num(f, rows[i].model);
+            num(f, rows[i].model / m->t0);
+            num(f, rows[i].model / rows[i].real);
             num(f, rows[i].model / m->dt);
             num(f, rows[i].model / m->md_dt);
             fprintf(f, "\n");

@@ -292,7 +292,7 @@ int pl_mapping_scene_apply(pl_scene_t *s, pl_err_t *err)
     c->primary_minimum = r.l_min / m->a0;
     c->md_dt = m->md_dt / m->t0;
     c->md_substeps = m->md_substeps;
-    if (pl_mapping_colloids_apply(s, err)) return PL_ERR_INPUT;
+    if (pl_mapping_colloids_apply(s, err) || pl_mapping_observe_apply(s, err)) return PL_ERR_INPUT;
     pl_mapping_plausible(s, &mp->map);
     pl_mapping_sediment_audit(s, &mp->map);
     if (mp->cg.strict && pl_mapping_nwarnings(m) > 0) {

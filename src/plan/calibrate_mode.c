@@ -36,6 +36,16 @@ static const struct {
     {PL_COUPLE_POTENTIAL, "a20491e8dee69f67", "tests/calibration/pl_potential_settle.cfg", 0.87220891},
 };
 
+int pl_calibrate_shipped(int k, int *method, const char **key, const char **scene, double *ratio)
+{
+    if (k < 0 || k >= (int)(sizeof THEORY_ROWS / sizeof THEORY_ROWS[0])) return -1;
+    *method = THEORY_ROWS[k].method;
+    *key = THEORY_ROWS[k].key;
+    *scene = THEORY_ROWS[k].scene;
+    *ratio = THEORY_ROWS[k].ratio;
+    return 0;
+}
+
 static const char *const MODE_NAMES[] = {[PL_CALIBRATE_AUTO] = "auto", [PL_CALIBRATE_NEVER] = "never",
                                          [PL_CALIBRATE_ALWAYS] = "always", [PL_CALIBRATE_STORED] = "stored"};
 enum { NMODES = sizeof MODE_NAMES / sizeof MODE_NAMES[0] };

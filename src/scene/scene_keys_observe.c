@@ -20,7 +20,7 @@ static const pl_key_t observe_keys[] = {
     {"rdf_bins", PL_KEY_INT, OFF(rdf_bins), 1, 1e6, 0, NULL, 200, NULL, "-", "g(r) bins over [0, rdf_rmax)"},
     {"rdf_rmax", PL_KEY_REAL, OFF(rdf_rmax), 0, 1e6, 0, NULL, 0, NULL, "a0",
      "largest distance of g(r) (0: half the shortest periodic box edge, or the box edge with walls on all "
-     "axes but z); else above contact (2 x the smallest radius)"},
+     "axes but z); else above contact (2 x the smallest radius); a physical scene may give it in m as physical.rdf_rmax"},
     {"rdf_size_classes", PL_KEY_INT, OFF(rdf_size_classes), 0, 16, 0, NULL, 0, NULL, "-",
      "partial g_ab(r) of size classes (0: off; k in 2..16): the colloids ranked by radius (ties by index) and "
      "cut into k classes of equal count, class floor(rank k / N); every class pair a <= b, normalised by its "
@@ -34,7 +34,7 @@ static const pl_key_t observe_keys[] = {
      "first step S(q) samples"},
     {"sq_bins", PL_KEY_INT, OFF(sq_bins), 1, 1e6, 0, NULL, 100, NULL, "-", "S(q) bins over [0, sq_qmax)"},
     {"sq_qmax", PL_KEY_REAL, OFF(sq_qmax), 0, 1e3, 0, NULL, 0, NULL, "1/a0",
-     "largest |q| of S(q) (0: 4 pi / colloids.radius, past the first peak near 2 pi / (2R))"},
+     "largest |q| of S(q) (0: 4 pi / colloids.radius, past the first peak near 2 pi / (2R)); a physical scene may give it in 1/m as physical.sq_qmax"},
     {"msd_interval", PL_KEY_INT, OFF(msd_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "colloid mean-squared displacement of the unwrapped positions every this many steps (0: off), by a "
      "multiple-tau correlator (16 points per level, factor 2) up to the run length; D from its slope"},
@@ -60,7 +60,9 @@ static const pl_key_t observe_keys[] = {
     {"clusters_start", PL_KEY_INT, OFF(clusters_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "first step the clusters are counted"},
     {"clusters_gap", PL_KEY_REAL, OFF(clusters_gap), -1e6, 1e6, 0, NULL, 0.1, NULL, "a0",
-     "two colloids are bonded when their surface gap r - R_i - R_j is below this (clusters_bond = \"gap\")"},
+     "two colloids are bonded when their surface gap r - R_i - R_j is below this (clusters_bond = \"gap\"); "
+     "a physical scene takes it in m as physical.clusters_gap, and with neither given derives it from the pair "
+     "potential (the largest gap bound by more than clusters_energy; peloid params states it)"},
     {"clusters_bond", PL_KEY_CHOICE, OFF(clusters_bond), 0, 0, 0, bond_choices, PL_BOND_GAP, NULL, "-",
      "the bond rule of the cluster observer: \"gap\" (surface gap below clusters_gap) or \"energy\" (the "
      "conservative pair energy of colloids.pairs below -clusters_energy; a bond closer than the DLVO barrier "
@@ -93,7 +95,7 @@ static const pl_key_t observe_keys[] = {
      "collision steps", "first step the Steinhardt order samples"},
     {"steinhardt_rmax", PL_KEY_REAL, OFF(steinhardt_rmax), 0, 1e6, PL_KEY_FP_SET, NULL, 0, NULL, "a0",
      "neighbour cut-off of the Steinhardt order (needed with steinhardt_interval > 0; e.g. the first minimum "
-     "of g(r)), above contact (2 x the smallest radius) and at most half the periodic box edge"},
+     "of g(r)), above contact (2 x the smallest radius) and at most half the periodic box edge; a physical scene may give it in m as physical.steinhardt_rmax"},
     {"stress_interval", PL_KEY_INT, OFF(stress_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "fluid stress (momentum flux) tensor, kinetic + collisional parts, accumulated every step and written "
      "as its mean over every this many steps (0: off); the shear viscosity from the Green-Kubo sum of the "

@@ -66,6 +66,17 @@ static const pl_key_t physical_keys[] = {
      "m", "molecular mean free path of the solvent (real Kn; water ~3e-10, PL Table IV)"},
     {"self_diffusion", PL_KEY_REAL, P(self_diffusion), 0, 1, PL_KEY_MIN_OPEN, NULL, 2.35e-9, NULL,
      "m^2/s", "self-diffusion coefficient of a solvent molecule (real Sc; water 2.35e-9, PL Table IV)"},
+    {"clusters_gap", PL_KEY_REAL, P(clusters_gap), -1e-3, 1e-3, PL_KEY_FP_SET, NULL, 0, NULL,
+     "m", "observe.clusters_gap in SI: two colloids are bonded when their surface gap is below this (0: not "
+          "given; with the gap cluster observer on and neither given, derived from the pair potential: the "
+          "largest gap at which the pair energy is below -observe.clusters_energy, i.e. bound in the primary "
+          "minimum, or in the secondary one where that is as deep; peloid params states it)"},
+    {"rdf_rmax", PL_KEY_REAL, P(rdf_rmax), 0, 1, PL_KEY_FP_SET, NULL, 0, NULL,
+     "m", "observe.rdf_rmax in SI (0: not given)"},
+    {"steinhardt_rmax", PL_KEY_REAL, P(steinhardt_rmax), 0, 1, PL_KEY_FP_SET, NULL, 0, NULL,
+     "m", "observe.steinhardt_rmax in SI (0: not given)"},
+    {"sq_qmax", PL_KEY_REAL, P(sq_qmax), 0, 1e12, PL_KEY_FP_SET, NULL, 0, NULL,
+     "1/m", "observe.sq_qmax in SI (0: not given)"},
 };
 
 static const pl_key_t cg_keys[] = {

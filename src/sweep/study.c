@@ -297,28 +297,35 @@ static int read_study(pl_study_t *st, pl_err_t *err)
     if (out) snprintf(st->out, sizeof st->out, "%s", out);
     else snprintf(st->out, sizeof st->out, "out/%s", st->name);
     config_setting_t *grid = config_setting_get_member(root, "grid"), *pts = config_setting_get_member(root, "points");
+    config_setting_t *replicas = config_setting_get_member(root, "replicas");
     if (grid && pts) return fail_at(st, pts, err, "points", "given with grid; allowed: grid or points, not both");
-    if (!grid && !pts)
-        return fail_at(st, NULL, err, "grid", "missing; allowed: grid = ( { key = \"...\"; values = [...]; } ) or "
-                       "points = { keys = [...]; values = ( (...), ... ); }");
-    rc = grid ? read_grid(st, grid, err) : read_points(st, pts, err);
+    if (!grid && !pts && !replicas)
+        return fail_at(st, NULL, err, "grid", "missing; allowed: grid = ( { key = \"...\"; values = [...]; } ), "
+                       "points = { keys = [...]; values = ( (...), ... ); }, or replicas = N alone (the base scene "
+                       "N times)");
+    if (grid || pts) rc = grid ? read_grid(st, grid, err) : read_points(st, pts, err);
+    else st->npoints = 1; /* the base scene alone: its replicas */
     if (!rc) rc = pl_study_check_unique(st, err);
     config_setting_t *plot = config_setting_get_member(root, "plot");
     if (!rc && plot) rc = read_plot(st, plot, err);
     if (!rc && plot) rc = pl_study_check_plot(st, NULL, -1, err);
-    config_setting_t *replicas = config_setting_get_member(root, "replicas");
     if (!rc && replicas) rc = read_replicas(st, replicas, err);
+    if (!rc && !grid && !pts && st->replicas < 2)
+        rc = fail_at(st, replicas, err, "replicas", "1 without grid or points runs the base scene once; allowed: "
+                     "replicas = N > 1 alone, or a grid or points");
     return rc;
 }
 
-int pl_study_load(const char *path, pl_study_t **out, pl_err_t *err)
+/* Reads the study at `path`, or, when `text` is given, the study `text`
+ * labelled `path` (pl_study_of_scene). */
+static int study_load(const char *path, const char *text, pl_study_t **out, pl_err_t *err)
 {
     *out = NULL;
     pl_study_t *st = calloc(1, sizeof *st);
     if (!st) return pl_err_set(err, PL_ERR_NOMEM, "out of memory reading the study");
     snprintf(st->path, sizeof st->path, "%s", path);
     st->replicas = 1;
-    int rc = pl_scene_text_read(&st->stext, path, 0, err);
+    int rc = text ? pl_scene_text_string(&st->stext, text, path, err) : pl_scene_text_read(&st->stext, path, 0, err);
     if (!rc) {
         config_init(&st->scfg);
         st->have_s = 1;
@@ -334,6 +341,11 @@ int pl_study_load(const char *path, pl_study_t **out, pl_err_t *err)
     if (!rc && !scene) rc = pl_err_set(err, PL_ERR_NOMEM, "out of memory reading the study");
     if (!rc) rc = pl_scene_load(st->base, scene, err); /* the base scene alone: the loader's message */
     if (!rc) st->seed0 = scene->run.seed;
+    if (!rc && text && safe_name(scene->run.name)) { /* a scene's replicas: named, and written, as its run */
+        snprintf(st->name, sizeof st->name, "%s", scene->run.name);
+        if (!config_setting_get_member(config_root_setting(&st->scfg), "out"))
+            snprintf(st->out, sizeof st->out, "out/%s", st->name);
+    }
     free(scene);
     if (!rc) rc = pl_scene_text_read(&st->btext, st->base, 0, err);
     if (!rc) {
@@ -348,6 +360,39 @@ int pl_study_load(const char *path, pl_study_t **out, pl_err_t *err)
     }
     *out = st;
     return 0;
+}
+
+int pl_study_load(const char *path, pl_study_t **out, pl_err_t *err) { return study_load(path, NULL, out, err); }
+
+int pl_study_of_scene(const char *scene, int replicas, const char *out_dir, pl_study_t **out, pl_err_t *err)
+{
+    const char *base = strrchr(scene, '/');
+    char text[5 * PATH_MAX], q[2][2 * PATH_MAX + 1];
+    const char *raw[2] = {base ? base + 1 : scene, out_dir ? out_dir : ""};
+    for (int i = 0; i < 2; ++i) { /* libconfig strings: \ and \" escaped */
+        size_t n = 0;
+        for (const char *c = raw[i]; *c && n + 2 < sizeof q[i]; ++c) {
+            if (*c == '"' || *c == '\\') q[i][n++] = '\\';
+            q[i][n++] = *c;
+        }
+        q[i][n] = '\0';
+    }
+    snprintf(text, sizeof text, "scene = \"%s\";\n%s%s%sreplicas = %d;\n", q[0], out_dir ? "out = \"" : "",
+             out_dir ? q[1] : "", out_dir ? "\";\n" : "", replicas);
+    return study_load(scene, text, out, err);
+}
+
+int pl_study_scene_with(const char *scene, const char *key, const char *value, char **text, pl_err_t *err)
+{
+    const char *base = strrchr(scene, '/');
+    char study[1024];
+    snprintf(study, sizeof study, "scene = \"%.400s\";\npoints = { keys = [\"%.100s\"]; values = ( (%.200s) ); };\n",
+             base ? base + 1 : scene, key, value);
+    pl_study_t *st = NULL;
+    int rc = study_load(scene, study, &st, err);
+    if (!rc) rc = pl_study_point_scene(st, 0, NULL, text, err);
+    pl_study_free(st);
+    return rc;
 }
 
 void pl_study_free(pl_study_t *st)
@@ -519,6 +564,7 @@ int pl_study_check_points(pl_study_t *st, const char *out_dir, pl_sweep_cost_t *
         if (!rc && cost) pl_sweep_point_cost(scene, &cost[k]);
         free(text);
         if (!rc && (rc = pl_study_check_plot(st, scene, k / st->replicas, err))) break; /* names its own line */
+        if (rc && st->naxes == 0) break; /* a scene's replicas: the loader's line names the scene */
         if (rc) { /* name the study line of the values, the point, then the loader's line */
             char vals[512] = "", v[128], inner[1024];
             int line = st->ax[0].line, fl;

@@ -15,7 +15,9 @@
 # sizes as fractions of N); replicas = 3 runs seeds seed + 0..2 of each point
 # and pools them (mean, SE between replicas, within-run SE, flag), refused
 # beside a swept seed; the pooling passes its unit test on synthetic
-# replicas of known variance (tools/test_sweep_pool.py).
+# replicas of known variance (tools/test_sweep_pool.py); `peloid run SCENE
+# --replicas N` pools N seeds of one scene into sweep.tsv and report.md, a
+# bad N refused.
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 PY=/usr/bin/python3
@@ -334,6 +336,43 @@ print("    p000: D = %s +- %s (between) / %s (within), %s" % tuple(pts[0][c] for
 PY
 then ok "replicas = 3: 6 runs (seeds 11-13 per point), one pooled row per point: mean, SE between, within-run SE, flag"
 else bad "replicas (rc $rc): $(tail -1 rep.err)"; fi
+
+# 12b. peloid run SCENE --replicas N: the scene's seeds 11..14 as a study of
+#      one point, pooled into sweep.tsv, report.md (mean +- SE between the
+#      replicas beside the within-run SE and the flag) and sweep.png; a bad N
+#      or an option a replica set cannot take is refused (exit 2), nothing written
+"$PELOID" run bd.cfg --replicas 4 --out out/runrep 2> runrep.err; rc=$?
+if [ $rc = 0 ] && $PY - <<'PY'
+import math, statistics
+runs = [l.rstrip("\n").split("\t") for l in open("out/runrep/sweep_replicas.tsv")]
+hr = runs[0]; runs = [dict(zip(hr, r)) for r in runs[1:]]
+assert [(r["id"], r["seed"]) for r in runs] == [("p000r%d" % k, str(11 + k)) for k in range(4)], runs
+pts = [l.rstrip("\n").split("\t") for l in open("out/runrep/sweep.tsv")]
+p = dict(zip(pts[0], pts[1]))
+assert len(pts) == 2 and p["id"] == "p000" and p["replicas"] == "4", pts
+xs = [float(r["colloid_D"]) for r in runs]
+mean, se = statistics.fmean(xs), statistics.stdev(xs) / 2
+assert abs(float(p["colloid_D"]) - mean) < 1e-12 * mean and abs(float(p["colloid_D_se"]) - se) < 1e-12 * se, p
+rep = open("out/runrep/report.md").read()
+row = [l for l in rep.splitlines() if l.startswith("| colloid_D |")]
+assert len(row) == 1 and "\u00b1" in row[0] and p["colloid_D_se_flag"] in row[0], rep
+cells = [c.strip() for c in row[0].strip("|").split("|")]
+m, s = (float(v) for v in cells[2].split("\u00b1"))
+# the SE to two significant digits, the mean to its place
+assert abs(m - mean) <= 0.1 * se and abs(s - se) <= 0.05 * se, (cells, mean, se)
+assert abs(float(cells[3]) - float(p["colloid_D_se_within"])) < 0.005 * float(p["colloid_D_se_within"]), cells
+import os; assert os.path.getsize("out/runrep/sweep.png") > 5000
+print("    report.md:", row[0])
+PY
+then ok "run --replicas 4: seeds 11-14, pooled row (mean, SE between) in sweep.tsv and report.md beside the within-run SE and flag"
+else bad "run --replicas (rc $rc): $(tail -1 runrep.err)"; fi
+for a in "--replicas 1" "--replicas 2x" "--replicas 100001" "--replicas 3 --steps 10" "--replicas 3 --restart x.h5"; do
+  # shellcheck disable=SC2086
+  "$PELOID" run bd.cfg $a --out out/runbad 2> runbad.err; rc=$?
+  if [ $rc = 2 ] && [ ! -e out/runbad ] && [ "$(grep -c 'peloid: error:' runbad.err)" = 1 ] && grep -q -- "--replicas" runbad.err
+  then ok "run bd.cfg $a: refused (exit 2, one line, nothing written)"
+  else bad "run bd.cfg $a: rc $rc, $(head -1 runbad.err)"; fi
+done
 
 # 13. the pooling on synthetic replicas of known variance
 if $PY "$ROOT/tools/test_sweep_pool.py" > pool.out 2>&1; then
