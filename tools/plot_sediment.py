@@ -31,6 +31,7 @@ import sys
 import numpy as np
 
 import h5md_colloids
+from system_title import system_title
 
 
 def load(outdir):
@@ -153,19 +154,6 @@ def main():
     png = a.png or os.path.join(a.outdir, "sediment.png")
     fig.savefig(png, dpi=110)
     print("  wrote %s" % png)
-
-
-def system_title(summ):
-    """The system a plot shows: the scene's name and, for a physical scene,
-    its radius, volume fraction, salt and coupling."""
-    sc = summ.get("scene", {})
-    t = str(sc.get("name", ""))
-    ph, cg = sc.get("physical"), sc.get("coarse_graining")
-    if summ.get("units_si") and ph and cg:
-        salt = (f"I = {ph['ionic_strength'] * 1e3:.3g} mM" if ph.get("ionic_strength", 0) > 0
-                else f"1/κ = {1e9 / ph['kappa']:.3g} nm" if ph.get("kappa", 0) > 0 else "no salt given")
-        t += f": R = {ph['radius'] * 1e6:.3g} µm, φ = {ph['volume_fraction']:.3g}, {salt}, coupling {cg['coupling']}"
-    return t
 
 
 if __name__ == "__main__":

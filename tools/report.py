@@ -45,6 +45,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+from system_title import system_title  # noqa: E402
 
 
 class Units:
@@ -55,6 +56,7 @@ class Units:
     def __init__(self, summary):
         u = summary.get("units_si")
         self.physical = bool(u)
+        self.title = system_title(summary)
         if not u:
             self.f = {k: (1.0, n) for k, n in MODEL.items()}
             return
@@ -69,6 +71,14 @@ class Units:
 
     def name(self, kind):
         return self.f[kind][1]
+
+
+def save(fig, u, outdir, name):
+    """Writes the figure; a physical scene's carries the system it shows (material, R, phi, salt, coupling)."""
+    if u.physical:
+        fig.suptitle(u.title, fontsize=9)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, name), dpi=120)
 
 
 MODEL = {"len": "a0", "time": "t0", "area": "a0²", "vel": "a0/t0", "D": "a0²/t0", "invlen": "1/a0",
@@ -100,8 +110,7 @@ def plot_rdf(f, summary, u, outdir, lines):
     ax.set_ylabel("g(r)")
     ax.set_title(f"colloid g(r), {int(g['samples'][()])} samples")
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "rdf.png"), dpi=120)
+    save(fig, u, outdir, "rdf.png")
     plt.close(fig)
     lines += ["## Colloid g(r)", "", "![g(r)](rdf.png)", ""]
 
@@ -119,8 +128,7 @@ def plot_rdf_classes(f, u, outdir, lines):
     ax.set_ylabel("g_ab(r)")
     ax.set_title(f"g(r) per size class (radius rank, R in {u.name('len')}), {int(g['samples'][()])} samples")
     ax.legend(fontsize=6)
-    fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "rdf_classes.png"), dpi=120)
+    save(fig, u, outdir, "rdf_classes.png")
     plt.close(fig)
     lines += ["## Colloid g(r) per size class", "", "![g_ab(r)](rdf_classes.png)", ""]
 
@@ -139,8 +147,7 @@ def plot_sq(f, obs, u, outdir, lines):
                  + (f"; peak {e['value']:.3g} ± {e['stderr']:.2g} at q = {u('invlen', e['q']):.3g} {u.name('invlen')}"
                     if e else ""), fontsize=9)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "sq.png"), dpi=120)
+    save(fig, u, outdir, "sq.png")
     plt.close(fig)
     lines += ["## Colloid S(q)", "", "![S(q)](sq.png)", ""]
 
@@ -163,8 +170,7 @@ def plot_cff(f, obs, u, outdir, lines):
     ax.set_ylabel("C_FF(t) / C_FF(0)")
     ax.set_title("fluid-force autocorrelation (step-mean force)", fontsize=9)
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "cff.png"), dpi=120)
+    save(fig, u, outdir, "cff.png")
     plt.close(fig)
     lines += ["## Fluid-force autocorrelation C_FF", "", "![C_FF](cff.png)", ""]
 
@@ -210,8 +216,7 @@ def plot_bonds(f, obs, u, outdir, lines):
     ax.set_xlabel(f"time [{u.name('time')}]")
     ax.set_ylabel("bonds")
     ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "bonds.png"), dpi=120)
+    save(fig, u, outdir, "bonds.png")
     plt.close(fig)
     lines += ["## Bonds by pair energy", "", "![bonds](bonds.png)", ""]
 
@@ -247,8 +252,7 @@ def plot_msd(f, obs, u, outdir, lines):
         ax.set_xlabel(f"lag [{u.name('time')}]")
         ax.set_ylabel(f"D(t) [{u.name('D')}]")
         ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "msd.png"), dpi=120)
+    save(fig, u, outdir, "msd.png")
     plt.close(fig)
     lines += ["## Colloid MSD and D", "", "![MSD](msd.png)", ""]
 
@@ -276,13 +280,12 @@ def plot_clusters(f, obs, u, outdir, lines, summary=None):
             ax.legend(fontsize=7)
         ax.set_ylabel(name.replace("_", " "), fontsize=8)
     axs[-1].set_xlabel(f"time [{u.name('time')}]")
-    fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "clusters.png"), dpi=120)
+    save(fig, u, outdir, "clusters.png")
     plt.close(fig)
     lines += ["## Clusters", "", f"Bond: {bond_rule(summary or {})}.", "", "![clusters](clusters.png)", ""]
 
 
-def plot_vdist(f, obs, outdir, lines):
+def plot_vdist(f, obs, u, outdir, lines):
     names = [n for n in ("fluid_velocity_distribution", "colloid_velocity_distribution") if n in f["observables"]]
     fig, ax = plt.subplots(figsize=(6, 4))
     edges = np.linspace(-4, 4, 61)
@@ -303,8 +306,7 @@ def plot_vdist(f, obs, outdir, lines):
     ax.set_xlabel("(v - <v>) sqrt(M / kT)")
     ax.set_ylabel("probability density")
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "vdist.png"), dpi=120)
+    save(fig, u, outdir, "vdist.png")
     plt.close(fig)
     lines += ["## Velocity distributions", "", "![velocity distributions](vdist.png)", ""]
 
@@ -348,8 +350,7 @@ def plot_sediment(f, obs, u, outdir, lines):
     axs[1].set_xlabel(f"time [{u.name('time')}]")
     axs[1].set_ylabel(f"height [{u.name('len')}]")
     axs[1].legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "sediment_phi.png"), dpi=120)
+    save(fig, u, outdir, "sediment_phi.png")
     plt.close(fig)
     lines += ["## Sedimentation", "", "![phi(z, t)](sediment_phi.png)", ""] + text
 
@@ -367,8 +368,7 @@ def plot_viscosity(f, obs, u, outdir, lines):
     ax.set_xlabel(f"truncation lag [{u.name('time')}]")
     ax.set_ylabel(f"eta [{u.name('visc')}]")
     ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "viscosity.png"), dpi=120)
+    save(fig, u, outdir, "viscosity.png")
     plt.close(fig)
     lines += ["## Fluid shear viscosity (Green-Kubo)", "", "![viscosity](viscosity.png)", ""]
     if e:
@@ -398,8 +398,7 @@ def plot_thermo(outdir, u, lines):
         ax.plot(data["time_s"] if si else data["time"], u("len", data[c]) if c == "c_zcm" else data[c], lw=0.8)
         ax.set_ylabel(label, fontsize=8)
     axs[-1, 0].set_xlabel("time [s]" if si else "time [t0]")
-    fig.tight_layout()
-    fig.savefig(os.path.join(outdir, "thermo.png"), dpi=120)
+    save(fig, u, outdir, "thermo.png")
     plt.close(fig)
     lines += ["## Thermo", "", "![thermo](thermo.png)", ""]
 
@@ -469,7 +468,7 @@ def plot_observables(h5, summary, obs, u, outdir, lines):
         if "colloid_phi_z" in have:
             plot_sediment(f, obs, u, outdir, lines)
         if "fluid_velocity_distribution" in have or "colloid_velocity_distribution" in have:
-            plot_vdist(f, obs, outdir, lines)
+            plot_vdist(f, obs, u, outdir, lines)
         if "fluid_viscosity_gk" in have:
             plot_viscosity(f, obs, u, outdir, lines)
 
