@@ -61,6 +61,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import matplotlib.ticker  # noqa: E402
 
 from sweep_pool import pool  # noqa: E402
+from system_title import system_title  # noqa: E402
 from sweep_report import lines as report_lines  # noqa: E402
 
 # Observables that count colloids: in a physical study given as fractions of N.
@@ -120,6 +121,7 @@ def load_point(out, p):
                     row["observables"][name].update({k: o[k] for k in ("value_si", "stderr_si", "unit_si") if k in o})
             if "units_si" in s:  # a physical scene: its colloids, the N of the cluster fractions
                 row["units_si"] = True
+                row["system"] = {"scene": s.get("scene"), "units_si": s["units_si"]}  # the plot's title
                 count = ((s.get("scene") or {}).get("colloids") or {}).get("count")
                 row["colloids"] = count if isinstance(count, int) and count > 0 else None
     for k in ("point", "replica", "seed"):
@@ -221,6 +223,9 @@ def pool_points(rows, physical):
               "threads": first["threads"], "pooled": {}}
         if bad and bad["status"] != "failed" and ok:
             pr["message"] = f"{len(ok)}/{len(rs)} replicas ok, {bad['id']} {bad['status']}"
+        system = next((r["system"] for r in ok if r.get("system")), None)
+        if system:
+            pr["system"] = system
         vs = [row_views(r, physical) for r in ok]
         pr["columns"] = layout(ok, physical)
         pr["model_unit"] = {n: o["unit"] for r in ok for n, o in r["observables"].items()}
@@ -296,6 +301,14 @@ def _finite0(e):
     return e if isinstance(e, (int, float)) and not isinstance(e, bool) and math.isfinite(e) else 0.0
 
 
+def title_system(fig, study, rows):
+    """A physical study's figure names the system (R, phi, salt, coupling; the swept keys as varied)."""
+    src = next((r["system"] for r in rows if r.get("system")), None)
+    if src:
+        name = dict(src, scene=dict(src.get("scene") or {}, name=study["study"]))
+        fig.suptitle(system_title(name, varied=set(study.get("keys") or ())), fontsize=9)
+
+
 def plot_replicas(study, runs, pooled, path, physical):
     """sweep.png of a study without swept keys (`peloid run SCENE --replicas N`): per observable each
     replica's value with its within-run SE against its replica number, the pooled mean as a line and the
@@ -324,6 +337,7 @@ def plot_replicas(study, runs, pooled, path, physical):
         ax.legend(fontsize=7)
     axes[0, 0].set_title(f"{study['study']}: {p['replicas_ok']}/{len(runs)} replicas ok; "
                          "flag: within-run SE against the scatter", fontsize=10)
+    title_system(fig, study, runs)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -387,6 +401,7 @@ def plot(study, rows, path, units, physical=False, pooled=False):
                 + (f" ({flagged} ringed in red disagree)" if flagged else ""))
     axes[0, 0].set_title(f"sweep {study['study']}: {len(ok)}/{len(rows)} points ok"
                          + (f", {failed} failed" if failed else "") + ", " + bars, fontsize=10)
+    title_system(fig, study, rows)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
