@@ -398,7 +398,7 @@ def plot(study, rows, path, units, physical=False, pooled=False):
         flagged = sum(any(q["flag"] in ("high", "low") for q in r["pooled"].get(y, {}).values()) for r in rows
                       for y in ys)
         bars = (f"{nrep} replicas each\nmean, thin bars: SE between the replicas, thick: within-run SE"
-                + (f" ({flagged} ringed in red disagree)" if flagged else ""))
+                + (f"\n{flagged} ringed in red: the two SEs disagree" if flagged else ""))
     axes[0, 0].set_title(f"sweep {study['study']}: {len(ok)}/{len(rows)} points ok"
                          + (f", {failed} failed" if failed else "") + ", " + bars, fontsize=10)
     title_system(fig, study, rows)
