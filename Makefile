@@ -159,7 +159,7 @@ check-build: $(CHECK_BIN) $(BIN)
 # The long physics validations (each several minutes on 2 cores) run in
 # `make validate-physics`; `make validate` runs them, then the paper studies
 # (make studies, ~40 min on 2 cores) and regenerates validation/REPORT.md;
-# `make check` runs everything else.  CI runs check and validate-physics (the
+# `make check` runs everything else (test_mpc_viscosity short; here in full).  CI runs check and validate-physics (the
 # studies would take its total past 60 min).
 VALIDATE_TESTS := test_coupling_drag test_coupling_wall test_coupling_vacf test_coupling_depletion test_coupling_thermal
 VALIDATE_BIN := $(patsubst %,$(BUILD)/tests/%,$(VALIDATE_TESTS))
@@ -169,8 +169,9 @@ check-unit: $(CHECK_BIN)
 	@set -e; for t in $(CHECK_BIN); do echo "== $$t"; s=$$(date +%s); $$t --jobs 1; \
 	  echo "   ($$t: $$(( $$(date +%s) - s )) s)"; done
 
-validate-physics: $(VALIDATE_BIN) $(BIN)
+validate-physics: $(VALIDATE_BIN) $(BUILD)/tests/test_mpc_viscosity $(BIN)
 	@set -e; for t in $(VALIDATE_BIN); do echo "== $$t"; $$t --jobs 1; done
+	@echo "== test_mpc_viscosity (full: 3 % at two parameter sets)"; MPC_VISC_FULL=1 $(BUILD)/tests/test_mpc_viscosity --jobs 1
 	@bash tests/stress.sh ./$(BIN) 80000
 	@bash tests/calibration_potential.sh ./$(BIN)
 	@bash tests/calibration_coupling1.sh ./$(BIN)

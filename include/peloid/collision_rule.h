@@ -38,6 +38,7 @@ typedef struct pl_collision_rule {
                         * coupling II's colloid cells); -1: not a rotation rule */
     int thermostat;    /* the rule sets the temperature itself (no thermostat.type besides none) */
     int positions;     /* the kernel reads the particle positions */
+    int angular;       /* the collision keeps each cell's angular momentum about its centre of mass */
 } pl_collision_rule_t;
 
 /* Row `rule` (the scene's srd.rule, an index into the rows); NULL outside. */

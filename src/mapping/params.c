@@ -123,8 +123,12 @@ void pl_params_print(const pl_scene_t *sc, FILE *out)
     for (int d = 0; d < 2; ++d)
         shear[d] = (sc->box.wall_velocity[1][d] - sc->box.wall_velocity[0][d]) / sc->box.cells[2];
     fprintf(out, "SRD fluid of scene %s (units: a0 = 1, m_f = 1, kT_ref = 1)\n", sc->path);
-    fprintf(out, "  gamma = %g particles/cell, dt = %g, alpha = %g deg (%s), kT = %g\n", sc->fluid.density,
-            sc->srd.dt, hecht ? 90.0 : sc->srd.alpha_deg, rule->name, kT);
+    if (srd)
+        fprintf(out, "  gamma = %g particles/cell, dt = %g, alpha = %g deg (%s), kT = %g\n", sc->fluid.density,
+                sc->srd.dt, hecht ? 90.0 : sc->srd.alpha_deg, rule->name, kT);
+    else /* no rotation: srd.alpha unused */
+        fprintf(out, "  gamma = %g particles/cell, dt = %g (%s), kT = %g\n", sc->fluid.density, sc->srd.dt,
+                rule->name, kT);
     if (hecht)
         fprintf(out, "  note: hecht_axes rotates by 90 deg whatever srd.alpha says: viscosity from "
                      "Hecht Eq. 28, f_kin and f_col as PL Eqs. 9-10 would need them\n");
