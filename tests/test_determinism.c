@@ -32,6 +32,7 @@ static const char *scenes[] = {
     "seed = 47;\nbox: { cells = [6, 5, 7]; walls_z = \"slip\"; };\n" /* MPC-AT (a thermostat itself) */
     "fluid: { density = 4.0; body_force = [0.01, 0.0, 0.0]; temperature = 0.9; };\n"
     "srd: { dt = 0.3; rule = \"mpc_at\"; };\noutput: { track_fluid = true; };\n",
+    "seed = 48;\nbox: { cells = [5, 6, 4]; };\nfluid: { density = 5.0; };\nsrd: { dt = 0.5; rule = \"mpc_at_a\"; };\n",
 };
 
 Test(determinism, thread_count_does_not_change_results)

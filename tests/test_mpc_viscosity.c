@@ -1,26 +1,33 @@
 /* The viscosity of the MPC-AT rules (srd.rule = "mpc_at", "mpc_at_a")
- * against their published expressions (the rows' theory: src/fluid/
- * rule_mpc_at*.c), measured by steady Kolmogorov flow as tests/
- * test_viscosity.c measures SRD's: a kick F sin(k z) each step, nu = F /
- * (k^2 <a>) from the time-averaged amplitude a = (2/N) sum v_x sin(k z)
- * after 3 momentum-diffusion times 1/(nu k^2).  The rules are thermostats
- * themselves: no other thermostat removes the viscous heating.
+ * against their rows' theories (src/fluid/rule_mpc_at.c: the published
+ * MPC-AT expressions; src/fluid/rule_mpc_at_a.c: derived there, the
+ * published +a ones could not be read), measured by steady Kolmogorov flow
+ * as tests/test_viscosity.c measures SRD's: a kick F sin(k z) each step,
+ * nu = F / (k^2 <a>) from the time-averaged amplitude a = (2/N) sum v_x
+ * sin(k z) after 3 momentum-diffusion times 1/(nu k^2).  The rules are
+ * thermostats themselves: no other thermostat removes the viscous heating.
  *
- * Statistical error: 16 consecutive blocks of the averaging window of 20
- * relaxation times 1/(nu k^2) (8 blocks of 8 in the short runs: a block
- * no shorter than the relaxation time, or the blocks are correlated and
- * the SE too small) give the standard error SE.  Bound: 3 % of the
- * theory, and 3 SE < 3 % so that the bound is about the physics, not the
- * noise (the full runs: MPC_VISC_FULL=1, make validate-physics).  Without
- * it (make check) a short run in a smaller box checks the same within 4 SE
- * (SE ~ 2 %): it separates mpc_at from mpc_at_a (their viscosities differ
- * by 40 % at lambda = 0.1) but is no 3 % statement.
+ * Statistical error: 16 consecutive blocks of the averaging window of ntau
+ * (20 or 40) relaxation times 1/(nu k^2) (8 blocks of 8 in the short runs:
+ * a block no shorter than the relaxation time, or the blocks are
+ * correlated and the SE too small) give the standard error SE.  Bound: 3 %
+ * of the theory, and 3 SE < 3 % so that the bound is about the physics,
+ * not the noise (the full runs: MPC_VISC_FULL=1, make validate-physics).
+ * Without it (make check) short mpc_at runs in smaller boxes check the
+ * same within 4 SE (SE ~ 2-3 %, required < 5 %): no 3 % statement; the
+ * mpc_at_a runs need long boxes (their viscosity depends on the
+ * wavelength: +9 +- 2.5 % in a 16-cell box at gamma 10, lambda 0.05) and
+ * run in make validate-physics only; make check tests +a through the
+ * angular momentum (tests/test_collision_rules.c).
  *
- * Parameter sets: gamma = 5, lambda = 0.1 and gamma = 10, lambda = 0.05
- * (the collisional part is 79-98 % of nu).  At lambda = 1, gamma = 10,
- * where the kinetic part is 89 %, MPC-AT measured 0.7082 +- 0.0036 against
- * 0.6861 (+3.2 %) in an 8x8x64 box: a Knudsen effect of k lambda = 0.1 as
- * SRD shows too (tests/test_viscosity.c), or the theory's; not a test. */
+ * Parameter sets: mpc_at at gamma = 5, lambda = 0.1 and gamma = 10,
+ * lambda = 0.05 (collisional part 90 and 98 % of nu); mpc_at_a at gamma =
+ * 10, lambda = 0.05 (collisional, 95 %) and gamma = 10, lambda = 1
+ * (kinetic, 95 %; validate-physics only: the box must be 8 x 8 x 64).
+ * Measured, not tested: mpc_at at gamma = 10, lambda = 1 (8 x 8 x 64):
+ * 0.7082 +- 0.0036 against 0.6861 (+3.2 %), a Knudsen effect of k lambda =
+ * 0.1 or the theory's; mpc_at_a at gamma = 5, lambda = 0.1 (12 x 12 x 24):
+ * 0.3807 +- 0.0042 against the derived 0.350 (+8.7 %), not understood. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -86,19 +93,33 @@ static void check_viscosity(const char *rule, double lambda, double gamma, int L
         cr_assert_lt(3.0 * sem / th.nu, 0.03, "statistical error %.3g too large to test 3%%", sem / th.nu);
         cr_assert_lt(fabs(rel), 0.03, "nu = %.4f +- %.4f vs %.4f", mean, sem, th.nu);
     } else {
-        cr_assert_lt(sem / th.nu, 0.03, "statistical error %.3g too large", sem / th.nu);
+        cr_assert_lt(sem / th.nu, 0.05, "statistical error %.3g too large", sem / th.nu);
         cr_assert_lt(fabs(rel), 4.0 * sem / th.nu, "nu = %.4f +- %.4f vs %.4f", mean, sem, th.nu);
     }
     pl_sim_free(sim);
 }
 
-/* make check: short; make validate-physics sets MPC_VISC_FULL=1 */
-#define RUN(rule, lambda, gamma, Lxy_full, Lz_full, Lxy_quick, Lz_quick)                                          \
+/* make check: short (8 relaxation times, 8 blocks); make validate-physics
+ * sets MPC_VISC_FULL=1 (ntau relaxation times, 16 blocks) */
+#define RUN(rule, lambda, gamma, Lxy_full, Lz_full, ntau, Lxy_quick, Lz_quick)                                    \
     do {                                                                                                         \
         PL_SKIP_IF_QUICK("a viscosity run");                                                                     \
-        if (full_run()) check_viscosity(rule, lambda, gamma, Lxy_full, Lz_full, 20, 16);                          \
+        if (full_run()) check_viscosity(rule, lambda, gamma, Lxy_full, Lz_full, ntau, 16);                        \
         else check_viscosity(rule, lambda, gamma, Lxy_quick, Lz_quick, 8, 8);                                     \
     } while (0)
 
-Test(mpc_viscosity, mpc_at_small_lambda, .timeout = 900) { RUN("mpc_at", 0.1, 5.0, 12, 32, 6, 16); }
-Test(mpc_viscosity, mpc_at_dense, .timeout = 900) { RUN("mpc_at", 0.05, 10.0, 8, 32, 4, 16); }
+Test(mpc_viscosity, mpc_at_small_lambda, .timeout = 3600) { RUN("mpc_at", 0.1, 5.0, 16, 24, 40, 8, 16); }
+Test(mpc_viscosity, mpc_at_dense, .timeout = 3600) { RUN("mpc_at", 0.05, 10.0, 12, 24, 40, 4, 16); }
+Test(mpc_viscosity, mpc_at_a_dense, .timeout = 3600)
+{
+    /* the short run's 4 x 4 x 16 box measured +9 +- 2.5 %: +a's viscosity depends on the wavelength more
+     * than MPC-AT's (k a = 0.39 there, 0.26 here); a 24-cell box is too long for make check */
+    if (!full_run()) cr_skip_test("MPC_VISC_FULL=1 only (make validate-physics)");
+    RUN("mpc_at_a", 0.05, 10.0, 8, 24, 40, 4, 16);
+}
+Test(mpc_viscosity, mpc_at_a_kinetic, .timeout = 3600)
+{
+    /* lambda = 1 needs a box of 8 x 8 x 64 (a smaller one measured MPC-AT 18 % high): validate-physics only */
+    if (!full_run()) cr_skip_test("MPC_VISC_FULL=1 only (make validate-physics)");
+    RUN("mpc_at_a", 1.0, 10.0, 8, 64, 20, 4, 32);
+}
