@@ -170,7 +170,8 @@ check-build: $(CHECK_BIN) $(BIN)
 # The long physics validations (each several minutes on 2 cores) run in
 # `make validate-physics`; `make validate` runs them, then the paper studies
 # (make studies, ~40 min on 2 cores) and regenerates validation/REPORT.md;
-# `make check` runs everything else.  CI runs check and validate-physics (the
+# `make check` runs everything else (tests/physics/test_mpc_viscosity short; here in full, MPC_VISC_FULL=1).
+# CI runs check and validate-physics (the
 # studies would take its total past 60 min).
 VALIDATE_BIN := $(call test_bins,$(VAL_SRC))
 CHECK_BIN := $(call test_bins,$(UNIT_SRC) $(PHYS_SRC))
@@ -179,8 +180,9 @@ check-unit: $(CHECK_BIN)
 	@set -e; for t in $(CHECK_BIN); do echo "== $$t"; s=$$(date +%s); $$t --jobs 1; \
 	  echo "   ($$t: $$(( $$(date +%s) - s )) s)"; done
 
-validate-physics: $(VALIDATE_BIN) $(BIN)
+validate-physics: $(VALIDATE_BIN) $(BUILD)/tests/test_mpc_viscosity $(BIN)
 	@set -e; for t in $(VALIDATE_BIN); do echo "== $$t"; $$t --jobs 1; done
+	@echo "== test_mpc_viscosity (full: 3 % at two parameter sets)"; MPC_VISC_FULL=1 $(BUILD)/tests/test_mpc_viscosity --jobs 1
 	@bash tests/cli/stress.sh ./$(BIN) 80000
 	@set -e; for t in $(wildcard tests/validation/*.sh); do bash $$t ./$(BIN); done
 	@echo "make validate-physics: all suites passed"

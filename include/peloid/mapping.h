@@ -38,7 +38,6 @@ enum { PL_MATCH_DIFFUSION = 0, PL_MATCH_KINEMATIC = 1 };
 enum { PL_BOUNDARY_STICK = 0, PL_BOUNDARY_SLIP = 1 };
 /* Viscosity formula: Hecht Eq. 28 (rotation by +-90 deg about a coordinate
  * axis) or PL Eqs. 9-12 (rotation by alpha about a random axis). */
-enum { PL_VISC_HECHT28 = 0, PL_VISC_PL = 1 };
 
 /* ---- SRD transport (PL Eqs. 6, 9-15; Hecht Eq. 28) ------------------- */
 /* In units a0, t0, m_f; lambda = dt/t0, gamma = particles per cell. */
@@ -46,8 +45,10 @@ double pl_mapping_nu_kin(double lambda, double gamma, double alpha);    /* PL Eq
 double pl_mapping_nu_col(double lambda, double gamma, double alpha);    /* PL Eq. 10 */
 double pl_mapping_d_fluid(double lambda, double gamma, double alpha);   /* PL Eq. 6 */
 double pl_mapping_nu_hecht(double lambda, double gamma);                /* Hecht Eq. 28 */
-/* Kinematic viscosity nu/nu0 for the given formula (PL_VISC_*). */
-double pl_mapping_nu(int formula, double lambda, double gamma, double alpha);
+/* Kinematic viscosity nu/nu0 of collision rule `rule` (srd.rule: its row's theory). */
+double pl_mapping_nu(int rule, double lambda, double gamma, double alpha);
+/* Fluid self-diffusion D_f/(a0^2/t0) of collision rule `rule` (its row's theory). */
+double pl_mapping_d_fluid_rule(int rule, double lambda, double gamma, double alpha);
 /* Enskog friction of a colloid of radius sigma and mass mc (units a0, m_f, kT,
  * t0): PL Eq. 40 (slip); stick multiplies by the rough-sphere factor
  * (1 + 2k)/(1 + k), k = 2/5 (see mapping_srd.c). */
@@ -118,7 +119,7 @@ enum { PL_CALSRC_NONE = 0, PL_CALSRC_SHIPPED, PL_CALSRC_CACHE, PL_CALSRC_RUN, PL
 typedef struct {
     int coupling;       /* PL_COUPLE_* (coupling_scene.h) */
     int match;          /* PL_MATCH_*: which time is kept (fixes t0) */
-    int viscosity;      /* PL_VISC_* */
+    int viscosity;      /* the collision rule whose theory gives nu (srd.rule, peloid/collision_rule.h) */
     int boundary;       /* PL_BOUNDARY_*: Stokes 6 pi (stick) or 4 pi (slip) */
     int enskog;         /* add the Enskog friction in parallel (PL Eq. 41) */
     int fluid_gravity;  /* gravity also on the fluid (else Hecht Eq. 31) */

@@ -21,6 +21,8 @@ typedef enum {
     PL_RNG_THERMOSTAT = 5,
     PL_RNG_WALL_GHOST = 6,
     PL_RNG_WALL_THERMAL = 7,
+    PL_RNG_ANDERSEN = 8,          /* MPC-AT relative velocities (peloid/mpc_at.h); counter (step, cell,
+                                     rank in the cell) */
     /* colloids */
     PL_RNG_BD_NOISE = 17,         /* Brownian displacements (kernels/colloid_bd.c) */
     PL_RNG_COLLOID_PLACE = 18,    /* random placement attempts */

@@ -114,7 +114,8 @@ typedef struct {
     int rule;            /* PL_RULE_* */
     double cos_a, sin_a; /* rotation angle (random_axis rule) */
     uint64_t seed, step;
-    double kT_target;    /* Heyes thermostat target kT* (pl_srd_collide_heyes) */
+    double kT_target;    /* Heyes thermostat target kT* (pl_srd_collide_heyes); the bath kT of a
+                          * collision rule that is itself a thermostat (peloid/collision_rule.h) */
     double heyes_eps;
     /* walls: virtual particles fill cells cut by a no-slip wall */
     int wall_ghosts;

@@ -16,12 +16,18 @@ typedef struct {
     double c_s;      /* ideal-gas speed of sound sqrt(5 kT / 3 m) */
 } pl_srd_theory_t;
 
-/* gamma: particles per cell, rule: PL_RULE_*, alpha in radians (the
- * random-axis rule's angle; PL_RULE_HECHT_AXES rotates by 90 deg and uses
- * Hecht Eq. 28 for the viscosity), dt: collision step, kT. */
+/* gamma: particles per cell, rule: the collision rule's row (srd.rule,
+ * peloid/collision_rule.h; PL_RULE_* for the SRD rows), alpha in radians
+ * (the random-axis rule's angle; rules without an angle ignore it), dt:
+ * collision step, kT.  The row's theory gives nu_kin, nu_col and D_f. */
 void pl_srd_theory(double gamma, int rule, double alpha, double dt, double kT, pl_srd_theory_t *out);
 
 double pl_srd_f_kin(double gamma, double alpha);
+/* The SRD rows' theories (peloid/collision_rule.h): PL Eqs. 6, 9-12 for a
+ * rotation by alpha about a random axis; Hecht Eq. 28 (and PL Eq. 6 at 90
+ * deg) for +-90 deg about the coordinate axes, whatever alpha is. */
+void pl_srd_theory_random_axis(double gamma, double alpha, double nu0, pl_srd_theory_t *out);
+void pl_srd_theory_hecht(double gamma, double alpha, double nu0, pl_srd_theory_t *out);
 double pl_srd_f_col(double gamma, double alpha);
 
 /* Friction of a slip sphere of radius sigma_cf in an SRD fluid of gamma

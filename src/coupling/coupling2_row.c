@@ -6,6 +6,7 @@
 #include <math.h>
 
 #include "peloid/coupling_row.h"
+#include "peloid/collision_rule.h"
 #include "peloid/mapping.h"
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/sim.h"
@@ -20,7 +21,7 @@
 double pl_coupling2_friction(const pl_scene_t *scene, double mass)
 {
     double gamma = scene->fluid.density;
-    double cos_a = scene->srd.rule == PL_RULE_HECHT_AXES ? 0.0 : cos(scene->srd.alpha_deg * PL_PI / 180.0);
+    double cos_a = pl_collision_rule(scene->srd.rule)->srd_rotation == PL_RULE_HECHT_AXES ? 0.0 : cos(scene->srd.alpha_deg * PL_PI / 180.0);
     double mu = mass * gamma / (mass + gamma);
     return 2.0 / 3.0 * (1.0 - cos_a) * mu / scene->srd.dt;
 }

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "peloid/real.h" /* PL_PI */
+#include "peloid/collision_rule.h"
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
 #include "peloid/sim.h"
@@ -232,7 +233,7 @@ int pl_coupling2_create(const pl_coupling_t *cp, const pl_sim_t *sim, pl_couplin
     pl_coupling2_state_t *s = calloc(1, sizeof *s);
     if (!s) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling");
     pl_coupling2_params_t *p = &s->p;
-    p->rule = sc->srd.rule;
+    p->rule = pl_collision_rule(sc->srd.rule)->srd_rotation; /* a rotation rule (fluid_validate) */
     p->cos_a = cos(sc->srd.alpha_deg * PL_PI / 180.0);
     p->sin_a = sin(sc->srd.alpha_deg * PL_PI / 180.0);
     p->seed = cp->seed;

@@ -5,9 +5,11 @@
  * kinetic energy, tracked MSD, wall stresses; for physical scenes time in s
  * and the temperature in K).  PL Eqs. 3, 13, A1-A2; Hecht Eqs. 12, 33. */
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 #include "peloid/real.h" /* PL_PI */
+#include "peloid/collision_rule.h"
 #include "peloid/coupling.h"
 #include "peloid/mapping.h"
 #include "peloid/module.h"
@@ -79,11 +81,12 @@ static void collide_params(const pl_sim_t *sim, pl_collide_params_t *p)
 {
     const pl_scene_t *sc = &sim->scene;
     memset(p, 0, sizeof *p);
-    p->rule = sc->srd.rule;
+    p->rule = pl_collision_rule(sc->srd.rule)->srd_rotation;
     p->cos_a = cos(sc->srd.alpha_deg * PL_PI / 180.0);
     p->sin_a = sin(sc->srd.alpha_deg * PL_PI / 180.0);
     p->seed = (uint64_t)sc->run.seed;
-    p->kT_target = sc->thermostat.temperature;
+    p->kT_target = pl_scene_kT(sc); /* the Heyes target (thermostat.temperature when Heyes runs), or the
+                                     * bath of a rule that is itself a thermostat (fluid.temperature) */
     p->heyes_eps = sc->thermostat.heyes_epsilon;
     double kT_wall;
     p->wall_ghosts = pl_sim_wall_ghosts(sim, &p->ghost_density, &kT_wall);
@@ -117,12 +120,13 @@ static void collide_guard(pl_sim_t *sim)
     sim->guard_bad_step = sim->step;
 }
 
+/* ctx: the collision rule's row (peloid/collision_rule.h) */
 static int stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
     (void)err;
+    const pl_collision_rule_t *rule = ctx;
     collide_guard(sim);
-    pl_srd_collide(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum, sim->nthreads);
+    rule->collide(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum, sim->nthreads);
     collide_sums(sim, &sim->collide);
     return 0;
 }
@@ -131,10 +135,10 @@ static int stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
  * variant on multiples of thermostat.interval. */
 static int stage_collide_heyes(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
     (void)err;
+    const pl_collision_rule_t *rule = ctx;
     collide_guard(sim);
-    pl_srd_collide_heyes(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum, sim->nthreads);
+    rule->collide_heyes(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum, sim->nthreads);
     collide_sums(sim, &sim->collide);
     return 0;
 }
@@ -189,8 +193,10 @@ static int fluid_stages(pl_sim_t *sim, pl_err_t *err)
     if ((rc = pl_sim_add_stage(sim, &stream, err))) return rc;
     if ((rc = pl_sim_add_stage(sim, &sort, err))) return rc;
     collide_params(sim, &sim->collide);
-    pl_stage_t plain = {.name = "collide", .fn = stage_collide, .slot = PL_SLOT_COLLIDE};
-    pl_stage_t heyes = {.name = "collide+heyes", .fn = stage_collide_heyes, .slot = PL_SLOT_COLLIDE};
+    /* the row's validate refused the Heyes thermostat where collide_heyes is NULL */
+    void *rule = (void *)pl_collision_rule(sc->srd.rule);
+    pl_stage_t plain = {.name = "collide", .fn = stage_collide, .ctx = rule, .slot = PL_SLOT_COLLIDE};
+    pl_stage_t heyes = {.name = "collide+heyes", .fn = stage_collide_heyes, .ctx = rule, .slot = PL_SLOT_COLLIDE};
     if ((rc = pl_sim_add_collide_stage(sim, &plain, &heyes, err))) return rc;
     if (sc->thermostat.type == PL_THERMO_RESCALE) {
         pl_stage_t r = {.name = "thermostat-rescale", .fn = stage_rescale, .interval = sc->thermostat.interval,
@@ -309,8 +315,33 @@ static int fluid_create(pl_sim_t *sim, pl_err_t *err)
     return 0;
 }
 
+/* The collision rule's own check (peloid/collision_rule.h), and those every
+ * rule gets: a rule without a Heyes kernel refuses the Heyes thermostat, a
+ * rule that is a thermostat refuses a second one, coupling II needs a
+ * rotation rule. */
+static int fluid_validate(const pl_scene_t *sc, pl_err_t *err)
+{
+    const pl_collision_rule_t *rule = pl_collision_rule(sc->srd.rule);
+    const int t = sc->thermostat.type;
+    if (rule->thermostat && t != PL_THERMO_NONE)
+        return pl_scene_fail(sc, err, offsetof(pl_scene_t, thermostat.type), "thermostat.type",
+                             "a thermostat with srd.rule = \"%s\", which is itself one (it draws the relative "
+                             "velocities at fluid.temperature); allowed: \"none\"", rule->name);
+    if (t == PL_THERMO_HEYES && !rule->collide_heyes)
+        return pl_scene_fail(sc, err, offsetof(pl_scene_t, thermostat.type), "thermostat.type",
+                             "\"heyes\" with srd.rule = \"%s\", which has no Heyes collision; allowed: "
+                             "\"none\" or \"rescale\"", rule->name);
+    if (sc->coupling.method == PL_COUPLE_HECHT2 && rule->srd_rotation < 0)
+        return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.rule), "srd.rule",
+                             "\"%s\" with coupling II, which rotates the cells that hold colloids by the SRD "
+                             "rotation; allowed with coupling II: a rotation rule (random_axis, hecht_axes)",
+                             rule->name);
+    return rule->validate ? rule->validate(sc, err) : 0;
+}
+
 const pl_module_t pl_fluid_module = {
     .name = "fluid",
+    .validate_scene = fluid_validate,
     .create = fluid_create,
     .add_stages = fluid_stages,
     .thermo_columns = fluid_columns,

@@ -19,9 +19,7 @@ void pl_mapping_pl_colloid(double sigma, double rho_ratio, double v_sim, const p
     const double gamma = cg->gamma, lambda = cg->lambda;
     m->sigma = sigma;
     m->nu_sim = pl_mapping_nu(cg->viscosity, lambda, gamma, cg->alpha);
-    /* Hecht's rule rotates by 90 deg; PL Eq. 6 is evaluated at its angle. */
-    double alpha = cg->viscosity == PL_VISC_HECHT28 ? 0.5 * PL_PI : cg->alpha;
-    m->d_fluid_sim = pl_mapping_d_fluid(lambda, gamma, alpha);
+    m->d_fluid_sim = pl_mapping_d_fluid_rule(cg->viscosity, lambda, gamma, cg->alpha); /* the rule's own */
     m->mass_sim = rho_ratio * gamma * 4.0 / 3.0 * PL_PI * sigma * sigma * sigma; /* PL Table VI */
     double eta = gamma * m->nu_sim;                                   /* PL Eq. 13: eta = rho_f nu */
     double k = cg->boundary == PL_BOUNDARY_STICK ? 6.0 : 4.0;         /* PL Eq. 39 and below */

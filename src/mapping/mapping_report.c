@@ -8,10 +8,11 @@
 #include <stdio.h>
 
 #include "json_build.h"
+#include "peloid/collision_rule.h"
 #include "peloid/mapping.h"
 
 static const char *match_name(int m) { return m == PL_MATCH_DIFFUSION ? "diffusion" : "kinematic"; }
-static const char *visc_name(int v) { return v == PL_VISC_HECHT28 ? "Hecht Eq. 28" : "PL Eqs. 9-12"; }
+static const char *visc_name(int rule) { return pl_collision_rule(rule)->theory_ref; }
 
 static void num(FILE *f, double v)
 {

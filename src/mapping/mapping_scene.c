@@ -84,8 +84,8 @@ static void fill_inputs(const pl_scene_t *s, pl_mapping_system_t *r, pl_mapping_
     }
     cg->gamma = c->particles_per_cell;
     cg->lambda = c->mean_free_path;
-    /* The rotation rule of srd{} picks the viscosity formula. */
-    cg->viscosity = s->srd.rule == PL_RULE_HECHT_AXES ? PL_VISC_HECHT28 : PL_VISC_PL;
+    /* The collision rule of srd{} picks the viscosity formula: its row's theory. */
+    cg->viscosity = s->srd.rule;
     cg->alpha = s->srd.rule == PL_RULE_HECHT_AXES ? 0.5 * PL_PI : s->srd.alpha_deg * PL_PI / 180.0;
     cg->srd_dt = c->srd_dt;
     cg->md_dt = c->md_dt;

@@ -31,10 +31,15 @@ double pl_mapping_nu_hecht(double lambda, double gamma)
     return t.nu_col + t.nu_kin;
 }
 
-double pl_mapping_nu(int formula, double lambda, double gamma, double alpha)
+double pl_mapping_nu(int rule, double lambda, double gamma, double alpha)
 {
-    if (formula == PL_VISC_HECHT28) return pl_mapping_nu_hecht(lambda, gamma);
-    return pl_mapping_nu_kin(lambda, gamma, alpha) + pl_mapping_nu_col(lambda, gamma, alpha);
+    pl_srd_theory_t t = srd(lambda, gamma, rule, alpha); /* the rule's row */
+    return t.nu_kin + t.nu_col;
+}
+
+double pl_mapping_d_fluid_rule(int rule, double lambda, double gamma, double alpha)
+{
+    return srd(lambda, gamma, rule, alpha).D_f;
 }
 
 double pl_mapping_xi_enskog(double sigma, double mc, double gamma, int boundary)

@@ -7,6 +7,7 @@
 
 #include "peloid/real.h" /* PL_PI */
 #include "json_build.h"
+#include "peloid/collision_rule.h"
 #include "peloid/colloid.h"
 #include "peloid/observe_check.h"
 #include "peloid/run.h"
@@ -109,26 +110,37 @@ void pl_params_print(const pl_scene_t *sc, FILE *out)
     const double kT = pl_scene_kT(sc);
     pl_srd_theory_t t;
     pl_srd_theory_of(sc, &t);
-    const int hecht = sc->srd.rule == PL_RULE_HECHT_AXES;
+    const pl_collision_rule_t *rule = pl_collision_rule(sc->srd.rule);
+    const int hecht = rule->srd_rotation == PL_RULE_HECHT_AXES, srd = rule->srd_rotation >= 0;
+    /* the equation of each line: PL's, Hecht's, or the row's own theory */
+    const char *e_fk = hecht ? "Hecht Eq. 28" : srd ? "PL Eq. 11" : rule->theory_ref;
+    const char *e_fc = hecht ? "Hecht Eq. 28" : srd ? "PL Eq. 12" : rule->theory_ref;
+    const char *e_nk = hecht ? "Hecht Eq. 28" : srd ? "PL Eq. 9" : rule->theory_ref;
+    const char *e_nc = hecht ? "Hecht Eq. 28" : srd ? "PL Eq. 10" : rule->theory_ref;
     /* moving no-slip walls: nominal shear rate (u_top - u_bottom) / Lz (Hecht Sec. VIII.C) */
     const int sheared = sc->box.walls_z == PL_WALLS_NOSLIP;
     double shear[2];
     for (int d = 0; d < 2; ++d)
         shear[d] = (sc->box.wall_velocity[1][d] - sc->box.wall_velocity[0][d]) / sc->box.cells[2];
     fprintf(out, "SRD fluid of scene %s (units: a0 = 1, m_f = 1, kT_ref = 1)\n", sc->path);
-    fprintf(out, "  gamma = %g particles/cell, dt = %g, alpha = %g deg (%s), kT = %g\n", sc->fluid.density,
-            sc->srd.dt, hecht ? 90.0 : sc->srd.alpha_deg, hecht ? "hecht_axes" : "random_axis", kT);
+    if (srd)
+        fprintf(out, "  gamma = %g particles/cell, dt = %g, alpha = %g deg (%s), kT = %g\n", sc->fluid.density,
+                sc->srd.dt, hecht ? 90.0 : sc->srd.alpha_deg, rule->name, kT);
+    else /* no rotation: srd.alpha unused */
+        fprintf(out, "  gamma = %g particles/cell, dt = %g (%s), kT = %g\n", sc->fluid.density, sc->srd.dt,
+                rule->name, kT);
     if (hecht)
         fprintf(out, "  note: hecht_axes rotates by 90 deg whatever srd.alpha says: viscosity from "
                      "Hecht Eq. 28, f_kin and f_col as PL Eqs. 9-10 would need them\n");
+    if (!srd) fprintf(out, "  note: %s: %s\n", rule->name, rule->doc);
     fprintf(out, "  lambda   = %-12.6g mean free path / a0            (PL Eq. 4)\n", t.lambda);
-    fprintf(out, "  f_kin    = %-12.6g                                 (%s)\n", t.f_kin, hecht ? "Hecht Eq. 28" : "PL Eq. 11");
-    fprintf(out, "  f_col    = %-12.6g                                 (%s)\n", t.f_col, hecht ? "Hecht Eq. 28" : "PL Eq. 12");
-    fprintf(out, "  nu_kin   = %-12.6g a0^2/t0 kinetic viscosity      (%s)\n", t.nu_kin, hecht ? "Hecht Eq. 28" : "PL Eq. 9");
-    fprintf(out, "  nu_col   = %-12.6g a0^2/t0 collisional viscosity  (%s)\n", t.nu_col, hecht ? "Hecht Eq. 28" : "PL Eq. 10");
+    fprintf(out, "  f_kin    = %-12.6g                                 (%s)\n", t.f_kin, e_fk);
+    fprintf(out, "  f_col    = %-12.6g                                 (%s)\n", t.f_col, e_fc);
+    fprintf(out, "  nu_kin   = %-12.6g a0^2/t0 kinetic viscosity      (%s)\n", t.nu_kin, e_nk);
+    fprintf(out, "  nu_col   = %-12.6g a0^2/t0 collisional viscosity  (%s)\n", t.nu_col, e_nc);
     fprintf(out, "  nu       = %-12.6g a0^2/t0 kinematic viscosity\n", t.nu);
     fprintf(out, "  eta      = %-12.6g sqrt(m kT)/a0^2 shear viscosity (PL Eqs. 14-15)\n", t.eta);
-    fprintf(out, "  D_f      = %-12.6g a0^2/t0 fluid self-diffusion   (PL Eq. 6)\n", t.D_f);
+    fprintf(out, "  D_f      = %-12.6g a0^2/t0 fluid self-diffusion   (%s)\n", t.D_f, srd ? "PL Eq. 6" : rule->theory_ref);
     fprintf(out, "  Sc       = %-12.6g nu / D_f Schmidt number        (PL Eq. 26)\n", t.Sc);
     fprintf(out, "  tau_f    = %-12.6g t0  a0^2/nu, momentum diffusion over one cell\n", t.tau_f);
     fprintf(out, "  c_s      = %-12.6g a0/t0 speed of sound sqrt(5kT/3m)\n", t.c_s);

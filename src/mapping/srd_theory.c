@@ -2,6 +2,7 @@
  * Eq. 28 (+-90 deg about the coordinate axes); friction of a slip sphere: PL
  * Eqs. 40-43 and the Hasimoto finite-size correction. */
 #include "peloid/real.h" /* PL_PI */
+#include "peloid/collision_rule.h"
 #include "peloid/scene.h"
 #include "peloid/srd_theory.h"
 
@@ -19,35 +20,48 @@ double pl_srd_f_col(double g, double a)
     return (1.0 - cos(a)) * (1.0 - 1.0 / g + exp(-g) / g);
 }
 
+/* PL Eq. 6, the fluid self-diffusion of a rotation by a: a collision keeps
+ * on average 1/3 of a relative velocity under both SRD rules at 90 deg (the
+ * axis component whole, the two others rotated by 90 deg), so the velocity
+ * memory is the same for the axes rule */
+static double srd_d_fluid(double g, double a, double nu0, double lambda)
+{
+    return nu0 * lambda * (3.0 / (2.0 * (1.0 - cos(a))) * (g / (g - 1.0)) - 0.5);
+}
+
+void pl_srd_theory_random_axis(double g, double a, double nu0, pl_srd_theory_t *o)
+{
+    o->f_kin = pl_srd_f_kin(g, a);
+    o->f_col = pl_srd_f_col(g, a);
+    o->nu_kin = nu0 * o->lambda / 3.0 * o->f_kin;        /* PL Eq. 9 */
+    o->nu_col = nu0 / (18.0 * o->lambda) * o->f_col;     /* PL Eq. 10 */
+    o->D_f = srd_d_fluid(g, a, nu0, o->lambda);
+}
+
+void pl_srd_theory_hecht(double g, double a, double nu0, pl_srd_theory_t *o)
+{
+    /* Hecht Eq. 28, exact for +-90 deg about the coordinate axes:
+     *   nu = a^2/(18 dt) (1 - (1 - e^-M)/M) + kT dt/(4 m_f) (M + 2)/(M - 1).
+     * (The paper typesets the kinetic term garbled; this reading gives
+     * its Eq. 29, 0.3052 a^2/dt for M = 2.5, lambda = 0.6.)  The
+     * collisional part is PL Eq. 10 at 90 deg; the kinetic part is not
+     * PL Eq. 9's: a fixed axis keeps the stress component about it. */
+    (void)a;
+    o->nu_kin = nu0 * (o->lambda / 4.0 * (g + 2.0) / (g - 1.0));
+    o->nu_col = nu0 * ((1.0 - (1.0 - exp(-g)) / g) / (18.0 * o->lambda));
+    o->f_kin = 3.0 * o->nu_kin / (nu0 * o->lambda); /* as PL Eq. 9 would need */
+    o->f_col = 18.0 * o->lambda * o->nu_col / nu0;
+    o->D_f = srd_d_fluid(g, 0.5 * PL_PI, nu0, o->lambda);
+}
+
 void pl_srd_theory(double g, int rule, double a, double dt, double kT, pl_srd_theory_t *o)
 {
     /* units: t0 = a0 sqrt(m/kT) with m = a0 = 1 */
     double t0 = 1.0 / sqrt(kT), nu0 = sqrt(kT);
     o->lambda = dt / t0;                                     /* PL Eq. 4 */
-    if (rule == PL_RULE_HECHT_AXES) {
-        /* Hecht Eq. 28, exact for +-90 deg about the coordinate axes:
-         *   nu = a^2/(18 dt) (1 - (1 - e^-M)/M) + kT dt/(4 m_f) (M + 2)/(M - 1).
-         * (The paper typesets the kinetic term garbled; this reading gives
-         * its Eq. 29, 0.3052 a^2/dt for M = 2.5, lambda = 0.6.)  The
-         * collisional part is PL Eq. 10 at 90 deg; the kinetic part is not
-         * PL Eq. 9's: a fixed axis keeps the stress component about it. */
-        a = 0.5 * PL_PI;
-        o->nu_kin = nu0 * (o->lambda / 4.0 * (g + 2.0) / (g - 1.0));
-        o->nu_col = nu0 * ((1.0 - (1.0 - exp(-g)) / g) / (18.0 * o->lambda));
-        o->f_kin = 3.0 * o->nu_kin / (nu0 * o->lambda); /* as PL Eq. 9 would need */
-        o->f_col = 18.0 * o->lambda * o->nu_col / nu0;
-    } else {
-        o->f_kin = pl_srd_f_kin(g, a);
-        o->f_col = pl_srd_f_col(g, a);
-        o->nu_kin = nu0 * o->lambda / 3.0 * o->f_kin;        /* PL Eq. 9 */
-        o->nu_col = nu0 / (18.0 * o->lambda) * o->f_col;     /* PL Eq. 10 */
-    }
+    pl_collision_rule(rule)->theory(g, a, nu0, o);          /* the rule's row */
     o->nu = o->nu_kin + o->nu_col;
     o->eta = g * o->nu;                                      /* PL Eqs. 14-15 */
-    /* PL Eq. 6; for the axes rule too: a collision keeps on average 1/3 of a
-     * relative velocity under both rules at 90 deg (the axis component whole,
-     * the two others rotated by 90 deg), so the velocity memory is the same */
-    o->D_f = nu0 * o->lambda * (3.0 / (2.0 * (1.0 - cos(a))) * (g / (g - 1.0)) - 0.5);
     o->Sc = o->nu / o->D_f;                                  /* PL Eq. 26 */
     o->tau_f = 1.0 / o->nu;
     o->c_s = sqrt(5.0 * kT / 3.0);

@@ -13,6 +13,7 @@
 #include "peloid/h5.h"
 #include "peloid/io.h"
 #include "peloid/observer.h"
+#include "peloid/collision_rule.h"
 #include "peloid/real.h"
 #include "peloid/srd_theory.h"
 #include "stress_priv.h"
@@ -178,8 +179,7 @@ static json_t *viscosity_entry(pl_json_t *b, const pl_stress_t *o, const pl_sim_
     pl_json_str(b, e, "unit", "m_f/(a0 t0)");
     pl_json_int(b, e, "samples", (long long)(o->couette ? o->sigma.n : o->eta.n));
     pl_json_real(b, e, "theory", theory);
-    pl_json_str(b, e, "theory_source",
-                sc->srd.rule == PL_RULE_HECHT_AXES ? "Hecht Eq. 28" : "PL Eqs. 9-15");
+    pl_json_str(b, e, "theory_source", pl_collision_rule(sc->srd.rule)->theory_ref);
     pl_json_real(b, e, "kinematic_value", v / sc->fluid.density);
     pl_json_real(b, e, "kinematic_stderr", se / sc->fluid.density);
     if (sc->mapping.enabled) { /* m_f / (a0 t0) -> Pa s */

@@ -5,6 +5,7 @@
 #include <float.h>
 #include <stddef.h>
 
+#include "peloid/collision_rule.h" /* pl_collision_rule_names */
 #include "peloid/scene.h"
 
 #define OFF(member) offsetof(pl_scene_t, member)
@@ -13,7 +14,6 @@
 
 static const char *const walls_choices[] = {"none", "noslip", "slip", NULL};
 static const char *const vel_choices[] = {"gaussian", "uniform", NULL};
-static const char *const rule_choices[] = {"random_axis", "hecht_axes", NULL};
 static const char *const thermo_choices[] = {"none", "heyes", "rescale", NULL};
 
 static const pl_key_t run_keys[] = {
@@ -56,8 +56,9 @@ static const pl_key_t fluid_keys[] = {
 static const pl_key_t srd_keys[] = {
     {"dt", PL_KEY_REAL, OFF(srd.dt), 0, 1e3, PL_KEY_MIN_OPEN, NULL, 0.1, NULL,
      "t0", "collision time step Delta t_c; lambda = dt sqrt(kT/m_f) (PL Eq. 4)"},
-    {"rule", PL_KEY_CHOICE, OFF(srd.rule), 0, 0, 0, rule_choices, PL_RULE_RANDOM_AXIS, NULL,
-     "-", "random_axis: rotate by alpha about a random axis (PL Eq. 3); hecht_axes: "
+    {"rule", PL_KEY_CHOICE, OFF(srd.rule), 0, 0, 0, pl_collision_rule_names, PL_RULE_RANDOM_AXIS, NULL,
+     "-", "collision rule by name, a row of src/fluid/collision_rules.c whose own file (src/fluid/rule_*.c) "
+          "states its equations. random_axis: rotate by alpha about a random axis (PL Eq. 3); hecht_axes: "
           "+-90 deg about one of the 3 coordinate axes (Hecht Sec. III)"},
     {"alpha", PL_KEY_REAL, OFF(srd.alpha_deg), 0, 180, PL_KEY_MIN_OPEN, NULL, 130, NULL,
      "degrees", "rotation angle of the random_axis rule"},

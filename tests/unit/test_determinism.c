@@ -3,7 +3,8 @@
  * restart + N steps, bitwise.  Every feature that touches the state is on:
  * grid shift, no-slip walls with virtual particles, body force, Heyes or
  * rescale thermostat, tracking, fields; x/y walls (a capillary, and a box
- * closed on every axis). */
+ * closed on every axis); the collision rules other than the SRD rotation
+ * (peloid/collision_rule.h), which draw per particle. */
 #include <criterion/criterion.h>
 #include <stdio.h>
 #include <string.h>
@@ -28,6 +29,10 @@ static const char *scenes[] = {
     "seed = 46;\nbox: { cells = [6, 5, 4]; walls_xy = \"slip\"; walls_z = \"noslip\"; };\n"
     "fluid: { density = 5.0; body_force = [0.01, -0.02, 0.01]; };\nsrd: { dt = 0.8; rule = \"hecht_axes\"; };\n"
     "thermostat: { type = \"rescale\"; };\noutput: { track_fluid = true; };\n",
+    "seed = 47;\nbox: { cells = [6, 5, 7]; walls_z = \"slip\"; };\n" /* MPC-AT (a thermostat itself) */
+    "fluid: { density = 4.0; body_force = [0.01, 0.0, 0.0]; temperature = 0.9; };\n"
+    "srd: { dt = 0.3; rule = \"mpc_at\"; };\noutput: { track_fluid = true; };\n",
+    "seed = 48;\nbox: { cells = [5, 6, 4]; };\nfluid: { density = 5.0; };\nsrd: { dt = 0.5; rule = \"mpc_at_a\"; };\n",
 };
 
 Test(determinism, thread_count_does_not_change_results)

@@ -39,7 +39,7 @@ static pl_mapping_cg_t coupling1(void)
     pl_mapping_cg_t c = {0};
     c.coupling = PL_COUPLE_HECHT1;
     c.match = PL_MATCH_DIFFUSION;
-    c.viscosity = PL_VISC_HECHT28;
+    c.viscosity = PL_RULE_HECHT_AXES; /* the rule whose theory gives nu: Hecht Eq. 28 */
     c.boundary = PL_BOUNDARY_STICK;
     c.cell_over_R = 0.5;
     c.gamma = 2.5;

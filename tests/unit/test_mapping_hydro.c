@@ -50,7 +50,7 @@ static pl_mapping_cg_t cg_of(int coupling, int boundary, double d, double d_se)
     pl_mapping_cg_t c = {0};
     c.coupling = coupling;
     c.match = PL_MATCH_DIFFUSION;
-    c.viscosity = PL_VISC_PL;
+    c.viscosity = PL_RULE_RANDOM_AXIS; /* PL Eqs. 9-12 */
     c.boundary = boundary;
     c.gamma = 5.0;
     c.lambda = 0.1;

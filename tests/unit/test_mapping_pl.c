@@ -18,7 +18,7 @@ static pl_mapping_cg_t pl_choice(void)
 {
     pl_mapping_cg_t c = {0};
     c.match = PL_MATCH_DIFFUSION;
-    c.viscosity = PL_VISC_PL;
+    c.viscosity = PL_RULE_RANDOM_AXIS; /* PL Eqs. 9-12 */
     c.boundary = PL_BOUNDARY_STICK; /* Table VI: stick-boundary colloid */
     c.enskog = 1;                   /* Table VI includes the Enskog friction */
     c.gamma = 5;

@@ -1,0 +1,119 @@
+/* A cell's angular momentum kept through a collision (the "+a" of MPC-AT+a
+ * and SRD+a: Noguchi, Kikuchi & Gompper, EPL 78, 10005 (2007); Noguchi &
+ * Gompper, PRE 78, 016706 (2008)): after the collision each particle gets
+ *   v_i += Pi^-1 [sum_j m r_j x (v_j - v_j')] x r_i,
+ * r_j the position relative to the centre of mass r_c of the cell's
+ * particles (unwrapped across a periodic boundary in the shifted grid), v
+ * before and v' after the collision, Pi = sum_j m (r_j^2 I - r_j r_j^T) their
+ * moment-of-inertia tensor about r_c.  The rigid rotation gives back the
+ * angular momentum the collision took (sum r x (w x r) = Pi w) and no
+ * momentum (sum r_j = 0).  A cell of 2 particles, or collinear ones, has a
+ * singular Pi: its angular momentum is perpendicular to the line, where
+ * Pi = (tr Pi / 2) (I - n n^T), so w = 2 Delta L / tr Pi.  m = 1. */
+#ifndef PELOID_CELL_ANGULAR_H
+#define PELOID_CELL_ANGULAR_H
+
+#include "peloid/srd_kernels.h"
+
+typedef struct {
+    double rc[3]; /* centre of mass, relative to the cell's first particle */
+    double L[3];  /* angular momentum about rc before the collision */
+} pl_cell_angular_t;
+
+/* Position of particle i relative to particle s (the cell's first): the
+ * nearest image along periodic axes (a cell is one a0 wide). */
+static inline void pl_cell_rel(const pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t i, double x[3])
+{
+    for (int d = 0; d < 3; ++d) {
+        double a = (double)f->r[d][i] - (double)f->r[d][s];
+        const double L = g->L[d];
+        if (g->walls[d] == PL_WALLS_NONE) a = a > 0.5 * L ? a - L : a < -0.5 * L ? a + L : a;
+        x[d] = a;
+    }
+}
+
+/* Angular momentum of particles [s, e) about rc (relative to particle s). */
+static inline void pl_cell_L(const pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t e, const double rc[3],
+                             double L[3])
+{
+    L[0] = L[1] = L[2] = 0.0;
+    for (size_t i = s; i < e; ++i) {
+        double x[3];
+        pl_cell_rel(f, g, s, i, x);
+        const double a = x[0] - rc[0], b = x[1] - rc[1], c = x[2] - rc[2];
+        const double vx = f->v[0][i], vy = f->v[1][i], vz = f->v[2][i];
+        L[0] += b * vz - c * vy;
+        L[1] += c * vx - a * vz;
+        L[2] += a * vy - b * vx;
+    }
+}
+
+/* Before the collision of particles [s, e): their centre of mass and
+ * angular momentum. */
+static inline void pl_cell_angular_before(const pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t e,
+                                          pl_cell_angular_t *a)
+{
+    double R[3] = {0.0, 0.0, 0.0};
+    for (size_t i = s; i < e; ++i) {
+        double x[3];
+        pl_cell_rel(f, g, s, i, x);
+        R[0] += x[0]; R[1] += x[1]; R[2] += x[2];
+    }
+    for (int d = 0; d < 3; ++d) a->rc[d] = R[d] / (double)(e - s);
+    pl_cell_L(f, g, s, e, a->rc, a->L);
+}
+
+/* After the collision: the rigid rotation that gives back the angular
+ * momentum a->L. */
+static inline void pl_cell_angular_restore(pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t e,
+                                           const pl_cell_angular_t *a)
+{
+    double L[3], S[6] = {0, 0, 0, 0, 0, 0}; /* S = sum r r^T: xx yy zz xy xz yz */
+    pl_cell_L(f, g, s, e, a->rc, L);
+    for (size_t i = s; i < e; ++i) {
+        double x[3];
+        pl_cell_rel(f, g, s, i, x);
+        const double p = x[0] - a->rc[0], q = x[1] - a->rc[1], r = x[2] - a->rc[2];
+        S[0] += p * p; S[1] += q * q; S[2] += r * r;
+        S[3] += p * q; S[4] += p * r; S[5] += q * r;
+    }
+    const double tr = S[0] + S[1] + S[2];
+    /* Pi = tr(S) I - S */
+    const double a00 = tr - S[0], a11 = tr - S[1], a22 = tr - S[2], a01 = -S[3], a02 = -S[4], a12 = -S[5];
+    const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
+    const double c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
+    const double det = a00 * c00 + a01 * c01 + a02 * c02, t3 = tr * tr * tr; /* tr Pi = 2 tr S */
+    const double dL[3] = {a->L[0] - L[0], a->L[1] - L[1], a->L[2] - L[2]};
+    double w[3];
+    if (det > 1e-9 * t3) { /* Pi^-1 = adj(Pi) / det */
+        w[0] = (c00 * dL[0] + c01 * dL[1] + c02 * dL[2]) / det;
+        w[1] = (c01 * dL[0] + c11 * dL[1] + c12 * dL[2]) / det;
+        w[2] = (c02 * dL[0] + c12 * dL[1] + c22 * dL[2]) / det;
+    } else if (tr > 0.0) { /* 2 particles or collinear ones */
+        for (int d = 0; d < 3; ++d) w[d] = dL[d] / tr; /* 2 dL / tr Pi, tr Pi = 2 tr S */
+    } else {
+        return; /* all at one point: no angular momentum to keep */
+    }
+    for (size_t i = s; i < e; ++i) {
+        double x[3];
+        pl_cell_rel(f, g, s, i, x);
+        const double p = x[0] - a->rc[0], q = x[1] - a->rc[1], r = x[2] - a->rc[2];
+        f->v[0][i] = (pl_real)(f->v[0][i] + (w[1] * r - w[2] * q));
+        f->v[1][i] = (pl_real)(f->v[1][i] + (w[2] * p - w[0] * r));
+        f->v[2][i] = (pl_real)(f->v[2][i] + (w[0] * q - w[1] * p));
+    }
+}
+
+/* sum (v - u)^2 of particles [s, e) (u their mean velocity). */
+static inline double pl_cell_relative_sum2(const pl_fluid_t *f, size_t s, size_t e)
+{
+    double P[3] = {0.0, 0.0, 0.0}, S = 0.0;
+    for (size_t i = s; i < e; ++i)
+        for (int d = 0; d < 3; ++d) {
+            P[d] += f->v[d][i];
+            S += (double)f->v[d][i] * f->v[d][i];
+        }
+    return S - (P[0] * P[0] + P[1] * P[1] + P[2] * P[2]) / (double)(e - s);
+}
+
+#endif

