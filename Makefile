@@ -225,7 +225,7 @@ check-asan: | deps
 # The studies of issue 16 (studies/*.cfg, each a `peloid sweep`; resumable:
 # a finished point is not run again) and validation/REPORT.md from their
 # outputs in out/studies/.
-.PHONY: studies validation-report validation-verdicts validation-update
+.PHONY: studies validation-report validation-verdicts validation-update validation-notes
 STUDIES := studies/hecht_fig9_kappa.cfg studies/hecht_fig9_kappa_replica.cfg studies/hecht_fig9_kappa_1s.cfg \
            studies/hecht_fig9_bonds.cfg studies/hecht_fig5_rdf.cfg studies/hecht_fig4_rz.cfg studies/hecht_fig14_msd.cfg \
            studies/pl_fig6_drag.cfg studies/accuracy_viscosity.cfg \
@@ -248,6 +248,9 @@ validation-verdicts:
 # out/studies), the notes and the verdicts; the other rows kept.
 validation-update:
 	$(PYTHON) tools/validation_report.py --update $(ENTRIES) out/studies validation/REPORT.md
+# Only the notes (NOTES in tools/validation_report.py), every row kept.
+validation-notes:
+	$(PYTHON) tools/validation_report.py --notes-only out/studies validation/REPORT.md
 
 bench: $(BENCH_BIN)
 	@mkdir -p bench/out

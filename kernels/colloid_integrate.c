@@ -69,3 +69,11 @@ void pl_colloid_ext_forces(const pl_colloid_ext_params_t *p, size_t n, const dou
 #pragma omp parallel for schedule(static) num_threads(nthreads) if (n >= PL_COLLOID_OMP_MIN)
     for (size_t i = 0; i < n; ++i) pl_colloid_ext_one(p, rf, n, i, x, y, z, zu, rad, mass, fx, fy, fz, epot);
 }
+
+void pl_colloid_displace(size_t n, const double box[3], const int periodic[3], double *restrict x,
+                         double *restrict y, double *restrict z, int32_t *restrict ix, int32_t *restrict iy,
+                         int32_t *restrict iz, const double *restrict dx, const double *restrict dy,
+                         const double *restrict dz)
+{
+    for (size_t i = 0; i < n; ++i) pl_colloid_move_one(i, 1.0, box, periodic, x, y, z, ix, iy, iz, dx, dy, dz);
+}

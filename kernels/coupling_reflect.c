@@ -30,25 +30,51 @@
  * N_max times (Hecht Sec. IV); a particle still inside after that is left
  * where it is and counted as a truncation.
  *
+ * The colloid's response within the step (sequential impulses): each event
+ * is a two-body collision of the particle with the colloid that sees the
+ * colloid velocity (V, W) the events before it on that colloid left, in the
+ * colloid's effective masses mu_n, mu_t, so it keeps the pair's canonical
+ * distribution; and a colloid whose velocity changed by dv at the time s
+ * before the end of the step (s from the placement: the time after the
+ * contact) ends the step displaced by dv s from where the MD moved it, as
+ * in an event-driven run.  Which particles hit is decided against those
+ * moved end positions: a particle is inside when it is inside a colloid
+ * at its moved position, so the found list holds the particles inside
+ * spheres enlarged by the largest move (the caller's margin, cb), and a
+ * found particle not (yet) inside waits for the next pass in case later
+ * events move the colloid onto it.  With the velocities as the step found
+ * them (or the events decided against the MD's end positions) the friction
+ * would act explicitly: colloids hotter than the fluid by ~xi dt / 2M
+ * (validation/REPORT.md).  The events of a step run in the order the
+ * particles met their colloids (entry_time: the time within the step on
+ * the paths the MD and the streaming took), so that an event sees the
+ * velocity and position of the colloid the earlier ones left, as in an
+ * event-driven run; ties (the particles met only after the colloid moved,
+ * and Hecht method i's) in the order of hash(seed, PL_RNG_REFLECT_ORDER,
+ * step, particle).  Not a spatial order: in the counting sort's (z-major)
+ * order the lower events pushed the colloid up before the upper ones met
+ * it, and colloids drifted towards -z (tests/physics/test_coupling_momentum.c).
+ * The order is a function of the particles' state, the same for any
+ * thread count.
+ *
  * Race freedom and determinism: the detection is parallel over the
  * static chunks of the streaming (normally inside the streaming itself,
  * pl_coupling_find_block on each block just streamed: the same list, see
- * src/coupling/coupling_stages.c); the reflections (few) then run in
- * particle order, each particle's cell moved in the histogram row of the
- * thread that streamed it, so the counting sort stays consistent and the
- * result is bitwise the same for any thread count.  Every event reads the
- * colloids' velocities as the step found them (c: src/coupling/
- * coupling_stages.c freezes them; the order of the events would otherwise
- * enter the rule, and the counting sort's z-major order made colloids
- * drift) and adds its impulse to vel; the impulses on one colloid add up
- * in particle order, so with several threads (and no walls) each thread
- * takes the events of its block of colloids, in particle order
- * (parallel_events); a particle reflected into a second colloid would tie
- * two blocks, and the step then runs the serial loop instead.  Random numbers: Philox (seed,
- * PL_RNG_REFLECT), counter (step, particle index, reflection number); particle indices
- * are those of the last (thread-independent) counting sort. */
+ * src/coupling/coupling_stages.c); the reflections (few) then run in that
+ * order, each particle's cell moved in the histogram row of the thread that
+ * streamed it, so the counting sort stays consistent and the result is
+ * bitwise the same for any thread count.  A colloid's velocity and end
+ * position depend only on its own events, in that order, so with several
+ * threads (and no walls) each thread takes the events of its block of
+ * colloids, in order (parallel_events); a particle near a second
+ * colloid would tie two blocks, and the step then runs the serial loop
+ * instead.  Random
+ * numbers: Philox (seed, PL_RNG_REFLECT), counter (step, particle index,
+ * reflection number); particle indices are those of the last
+ * (thread-independent) counting sort. */
 #include <math.h>
 #include <omp.h>
+#include <stdlib.h>
 
 #include "peloid/coupling_kernels.h"
 #include "peloid/rng.h"
@@ -69,10 +95,11 @@ static inline void cross(const double a[3], const double b[3], double o[3])
 
 /* One reflection of a particle at relative position p (inside colloid k)
  * with velocity v: writes the impulse J on the particle, its new relative
- * position p and the contact point cpt (from the centre). */
-static void reflect_one(const pl_coupling1_params_t *prm, const pl_coupling_colloids_t *c,
-                        int32_t k, uint64_t idx, uint64_t nref, double p[3], const double v[3],
-                        double J[3], double cpt[3])
+ * position p and the contact point cpt (from the centre); returns the time
+ * from the contact to the end of the step. */
+static double reflect_one(const pl_coupling1_params_t *prm, const pl_coupling_colloids_t *c,
+                          int32_t k, uint64_t idx, uint64_t nref, double p[3], const double v[3],
+                          double J[3], double cpt[3])
 {
     const double R = c->rad[k], M = c->mass[k], V[3] = {c->vx[k], c->vy[k], c->vz[k]};
     const double W[3] = {c->wx[k], c->wy[k], c->wz[k]};
@@ -128,33 +155,106 @@ static void reflect_one(const pl_coupling1_params_t *prm, const pl_coupling_coll
     /* just outside the surface, then the rest of the time relative to the
      * colloid's new velocity V - J/M */
     for (int d = 0; d < 3; ++d) p[d] = cpt[d] * (1.0 + 1e-12) + (w[d] + J[d] * (1.0 + 1.0 / M)) * s;
+    return s;
 }
 
-/* Reflects particle i (inside colloid k, relative position p) up to
- * N_max times, kicking the colloids as it goes; returns 1 on truncation. */
-static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *prm,
-                            const pl_coupling_colloids_t *c, double *const vel[6],
-                            const uint32_t *cstart, const int32_t *clist, size_t i, int32_t k,
-                            double p[3], uint32_t *restrict h, uint64_t *restrict cnt, int par)
+/* The events' view of the colloids: c (true radii, the corrected end
+ * positions x, y, z = pos, the live velocities), cb (the positions the MD
+ * left and the enlarged radii the detection and cstart, clist used), disp
+ * (3 x n: pos - cb's position) and the largest |disp| of each colloid
+ * (cb->rad - c->rad). */
+typedef struct {
+    pl_coupling_colloids_t c;
+    const pl_coupling_colloids_t *cb;
+    double *pos[3], *disp;
+    const uint32_t *cstart;
+    const int32_t *clist;
+    int move; /* 0: pinned colloids, no displacement */
+} events_t;
+
+/* r inside the enlarged sphere of a colloid other than k (cb: fixed
+ * during the events, so threads may read it). */
+static int near_other(const events_t *e, const pl_grid_t *g, const double r[3], int32_t k)
 {
+    const uint32_t cell = pl_coupling_cell_of(g, r[0], r[1], r[2]);
+    const pl_coupling_colloids_t *cb = e->cb;
+    for (uint32_t q = e->cstart[cell]; q < e->cstart[cell + 1]; ++q) {
+        const int32_t o = e->clist[q];
+        if (o == k) continue;
+        double d[3] = {r[0] - cb->x[o], r[1] - cb->y[o], r[2] - cb->z[o]};
+        for (int a = 0; a < 3; ++a)
+            if (g->walls[a] == PL_WALLS_NONE) d[a] -= g->L[a] * nearbyint(d[a] / g->L[a]);
+        if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < cb->rad[o] * cb->rad[o]) return 1;
+    }
+    return 0;
+}
+
+/* The colloid whose corrected sphere holds r (p: r - its corrected centre),
+ * or -1: serial, the first of r's cell list; par, colloid k only, and -2
+ * when r is near another (the pass must give up: that colloid's events
+ * belong to another thread). */
+static int32_t inside_now(const events_t *e, const pl_grid_t *g, const double r[3], double p[3], int32_t k, int par)
+{
+    if (!par) return pl_coupling_inside_cells(&e->c, g, e->cstart, e->clist, r, p);
+    if (k < 0 || near_other(e, g, r, k)) return -2;
+    double d[3] = {r[0] - e->c.x[k], r[1] - e->c.y[k], r[2] - e->c.z[k]};
+    for (int a = 0; a < 3; ++a)
+        if (g->walls[a] == PL_WALLS_NONE) d[a] -= g->L[a] * nearbyint(d[a] / g->L[a]);
+    if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] >= e->c.rad[k] * e->c.rad[k]) return -1;
+    for (int a = 0; a < 3; ++a) p[a] = d[a];
+    return k;
+}
+
+/* Colloid k's velocity changed by dv at the time s before the end of the
+ * step: its end position moves by dv s (at most the margin cb->rad -
+ * c->rad from where the MD left it; beyond, scaled back). */
+static void displace(const events_t *e, int32_t k, const double dv[3], double s)
+{
+    if (!e->move) return;
+    const size_t n = e->c.n;
+    double *D = e->disp, dd = 0.0;
+    for (int d = 0; d < 3; ++d) {
+        D[(size_t)d * n + (size_t)k] += dv[d] * s;
+        dd += D[(size_t)d * n + (size_t)k] * D[(size_t)d * n + (size_t)k];
+    }
+    const double m = (e->cb->rad[k] - e->c.rad[k]) * (1.0 - 1e-9);
+    if (dd > m * m)
+        for (int d = 0; d < 3; ++d) D[(size_t)d * n + (size_t)k] *= m / sqrt(dd);
+    e->pos[0][k] = e->cb->x[k] + D[(size_t)k];
+    e->pos[1][k] = e->cb->y[k] + D[n + (size_t)k];
+    e->pos[2][k] = e->cb->z[k] + D[2 * n + (size_t)k];
+}
+
+/* Reflects particle i (inside colloid k, relative position p), its
+ * reflections this step counted in *nref, up to N_max, kicking the
+ * colloids and moving their end positions as it goes; returns 1 on
+ * truncation, -1 (par only) when it met another colloid's events (nothing
+ * of i written). */
+static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *prm,
+                            const events_t *e, double *const vel[6], size_t i, int32_t k, double p[3],
+                            uint32_t *restrict h, uint64_t *restrict cnt, int par, uint16_t *nref_io)
+{
+    const pl_coupling_colloids_t *c = &e->c;
     const int32_t k_first = k;
     const double L[3] = {g->L[0], g->L[1], g->L[2]};
     double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]};
     const double r_old[3] = {r[0], r[1], r[2]};
     double v[3] = {f->v[0][i], f->v[1][i], f->v[2][i]};
-    int nref = 0;
+    int nref = *nref_io;
     while (k >= 0 && nref < prm->max_refl) {
-        double J[3], cpt[3], l[3];
-        reflect_one(prm, c, k, i, (uint64_t)nref, p, v, J, cpt);
+        double J[3], cpt[3], l[3], dv[3];
+        const double s = reflect_one(prm, c, k, i, (uint64_t)nref, p, v, J, cpt);
         const double M = c->mass[k], I = c->inertia[k];
         for (int d = 0; d < 3; ++d) {
             v[d] += J[d];
-            vel[d][k] -= J[d] / M; /* momentum: exactly what the particle gains */
+            dv[d] = -J[d] / M;
+            vel[d][k] += dv[d]; /* momentum: exactly what the particle gains */
         }
         if (prm->boundary != PL_BOUND_SLIP) { /* angular momentum: -c x J */
             cross(cpt, J, l);
             for (int d = 0; d < 3; ++d) vel[3 + d][k] -= l[d] / I;
         }
+        displace(e, k, dv, s);
         for (int d = 0; d < 3; ++d) r[d] = (d == 0 ? c->x[k] : d == 1 ? c->y[k] : c->z[k]) + p[d];
         for (int d = 0; d < 3; ++d) {
             if (g->walls[d] == PL_WALLS_NONE) {
@@ -166,19 +266,20 @@ static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling
                 double dp[3] = {0.0, 0.0, 0.0};
                 dp[d] = -2.0 * v[d];
                 if (g->walls[d] == PL_WALLS_NOSLIP) /* bounce-back in the wall's frame, as streaming does */
-                    for (int e = 0; e < 3; ++e) dp[e] = 2.0 * ((d == 2 ? prm->wall_u[top][e] : 0.0) - v[e]);
-                for (int e = 0; e < 3; ++e) v[e] += dp[e];
+                    for (int q = 0; q < 3; ++q) dp[q] = 2.0 * ((d == 2 ? prm->wall_u[top][q] : 0.0) - v[q]);
+                for (int q = 0; q < 3; ++q) v[q] += dp[q];
                 if (prm->wall_acc) pl_wall_acc_add(prm->wall_acc, pl_wall_slot(d, top), dp);
             }
         }
         cnt[0]++;
         nref++;
-        k = pl_coupling_inside_cells(c, g, cstart, clist, r, p);
-        /* par: events of other colloids run concurrently; one inside a
-         * second colloid would need that colloid's velocity at this point
-         * of the particle order (nothing of i written yet) */
-        if (par && k >= 0 && k != k_first && nref < prm->max_refl) return -1;
+        /* par: events of other colloids run concurrently; one near a
+         * second colloid would need that colloid's state at this point of
+         * the order (nothing of i written yet) */
+        k = inside_now(e, g, r, p, k_first, par);
+        if (k == -2) return -1;
     }
+    *nref_io = (uint16_t)nref;
     if (f->tracked)
         for (int d = 0; d < 3; ++d) {
             double dd = r[d] - r_old[d];
@@ -225,82 +326,154 @@ static inline void band_check(pl_fluid_t *f, int t, int nthreads, size_t ncells,
     if (pl_fluid_band_out(f->cell[i], lo, len, (uint32_t)ncells)) pl_fluid_band_overflow(f);
 }
 
-/* The events with the colloids split between the threads: thread t takes,
- * in particle order, the particles found inside a colloid of its static
- * block of colloids, so each colloid sees the same events in the same
- * order as in the serial loop, with the same random numbers (keyed by
- * step, particle, reflection).  A particle whose reflection puts it inside
- * another colloid stops the pass: every particle handled is put back
- * (saved state), the colloid velocities too, and the caller runs the serial
- * loop.  Only without walls (no wall impulses to sum).  Returns 0 when done,
- * -1 when it gave up. */
-static int parallel_events(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *prm,
-                           const pl_coupling_colloids_t *c, double *const vel[6], const uint32_t *cstart,
-                           const int32_t *clist, uint32_t *hist, int nthreads, const uint32_t *found,
-                           uint64_t *counts, pl_coupling1_scratch_t *sc)
+static int cmp_pair(const void *a, const void *b)
 {
-    const size_t nc = c->n;
-    size_t total = 0;
-    for (int t = 0; t < nthreads; ++t) total += counts[(size_t)t * 8 + 2];
-    if (total > sc->cap || 6 * nc > sc->vcap) {
-        sc->need = total;
-        return -1;
+    const uint64_t *x = a, *y = b;
+    return x[0] != y[0] ? (x[0] > y[0]) - (x[0] < y[0]) : (x[1] > y[1]) - (x[1] < y[1]);
+}
+
+/* The thread whose static chunk of the streaming (pl_chunk) holds particle i. */
+static int chunk_owner(size_t n, int nthreads, size_t i)
+{
+    int t = (int)((double)i * nthreads / (double)n);
+    if (t >= nthreads) t = nthreads - 1;
+    for (size_t lo, hi;;) {
+        pl_chunk(n, t, nthreads, &lo, &hi);
+        if (i < lo) --t;
+        else if (i >= hi) ++t;
+        else return t;
     }
+}
+
+/* The time within the step at which the particle at r (velocity v) met
+ * the colloid it is inside as the MD left it (cb's centres, true radius,
+ * the velocities before the events), as a fraction of the step: 1 for a
+ * particle outside it (in the margin: met, if at all, once the events have
+ * moved the colloid), 1/2 when its path does not cross the surface within
+ * the step (placed as Hecht method i). */
+static double entry_time(const events_t *e, const pl_grid_t *g, const pl_coupling1_params_t *prm,
+                         const double r[3], const double v[3])
+{
+    double p[3];
+    const int32_t k = pl_coupling_inside_cells(&e->c, g, e->cstart, e->clist, r, p);
+    if (k < 0) return 1.0;
+    const double R = e->c.rad[k], w[3] = {v[0] - e->c.vx[k], v[1] - e->c.vy[k], v[2] - e->c.vz[k]};
+    const double ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2], pw = p[0] * w[0] + p[1] * w[1] + p[2] * w[2];
+    const double disc = pw * pw - ww * (p[0] * p[0] + p[1] * p[1] + p[2] * p[2] - R * R);
+    const double s = ww > 0.0 && disc >= 0.0 ? (pw + sqrt(disc)) / ww : -1.0;
+    return s > 0.0 && s <= prm->dt ? 1.0 - s / prm->dt : 0.5;
+}
+
+/* The step's events in order (see the file header): by the time each
+ * particle met its colloid (entry_time, 2^-32 steps), then by the key
+ * hash(seed, PL_RNG_REFLECT_ORDER, step, particle), then by particle;
+ * sc->idx[j] the particle, sc->owner[j] the thread whose histogram row
+ * holds its cell, for j < total.  The keys are found in parallel over the
+ * threads' lists (e: no event yet, the colloids where the MD left them);
+ * the sort is serial (events are few). */
+static void order_events(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *prm, const events_t *e,
+                         int nthreads, const uint32_t *found, const uint64_t *counts, size_t total,
+                         pl_coupling1_scratch_t *sc)
+{
+#pragma omp parallel for schedule(static) num_threads(nthreads)
+    for (int t = 0; t < nthreads; ++t) {
+        size_t lo, hi, j = 0;
+        pl_chunk(f->n, t, nthreads, &lo, &hi);
+        for (int u = 0; u < t; ++u) j += counts[(size_t)u * 8 + 2];
+        const size_t nt = counts[(size_t)t * 8 + 2];
+        for (size_t s = 0; s < nt; ++s) {
+            const uint64_t i = found[lo + s];
+            const double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, v[3] = {f->v[0][i], f->v[1][i], f->v[2][i]};
+            const double tq = ldexp(entry_time(e, g, prm, r, v), 32);
+            philox4x64_ctr_t ctr = {{prm->step, i, 0, 0}};
+            philox4x64_key_t key = {{prm->seed, PL_RNG_REFLECT_ORDER}};
+            sc->key[2 * (j + s)] = (tq >= 0x1p32 ? 0xffffffffu : (uint64_t)tq) << 32 | philox4x64(ctr, key).v[0] >> 32;
+            sc->key[2 * (j + s) + 1] = i;
+        }
+    }
+    qsort(sc->key, total, 2 * sizeof *sc->key, cmp_pair);
+    for (size_t j = 0; j < total; ++j) {
+        sc->idx[j] = (uint32_t)sc->key[2 * j + 1];
+        sc->owner[j] = chunk_owner(f->n, nthreads, sc->idx[j]);
+    }
+}
+
+/* Passes over the events in order: a particle found (inside an
+ * enlarged sphere) but outside every moved one waits for the next pass,
+ * and a particle reflected may be inside again after later events moved
+ * its colloid onto it (it is reflected again then, up to N_max in all);
+ * at most NPASS passes (a later pass rarely finds one).  sc->done[j]:
+ * particle j's reflections so far. */
+enum { NPASS = 4 };
+
+/* The events with the colloids split between the threads: thread t takes,
+ * in order, the particles found inside the enlarged sphere of a
+ * colloid of its static block of colloids (the first of the particle's
+ * cell list), so each colloid sees the same events in the same order as in
+ * the serial loop, with the same random numbers (keyed by step, particle,
+ * reflection).  A particle near a second colloid stops the pass: every
+ * particle handled is put back (saved state), the colloid velocities too,
+ * and the caller runs the serial loop.  Only without walls (no wall
+ * impulses to sum).  Returns 0 when done, -1 when it gave up. */
+static int parallel_events(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *prm, const events_t *e,
+                           double *const vel[6], uint32_t *hist, int nthreads, size_t total, uint64_t *counts,
+                           pl_coupling1_scratch_t *sc)
+{
+    const size_t nc = e->c.n;
     for (int j = 0; j < 6; ++j) /* the colloid velocities before, to put back */
         for (size_t k = 0; k < nc; ++k) sc->vsave[(size_t)j * nc + k] = vel[j][k];
     int gave_up = 0;
     uint64_t cnt[2] = {0, 0};
 #pragma omp parallel num_threads(nthreads) reduction(+ : cnt[:2])
     {
-        /* the first colloid of each listed particle (flat list, particle
-         * order), in parallel */
+        /* the colloid of each particle, in parallel (cb does not change) */
 #pragma omp for schedule(static)
-        for (int t = 0; t < nthreads; ++t) {
-            size_t lo, hi, j = 0;
-            pl_chunk(f->n, t, nthreads, &lo, &hi);
-            for (int u = 0; u < t; ++u) j += counts[(size_t)u * 8 + 2];
-            const size_t nt = counts[(size_t)t * 8 + 2];
-            for (size_t s = 0; s < nt; ++s, ++j) {
-                if (s + PF < nt) prefetch_particle(f, found[lo + s + PF]);
-                const size_t i = found[lo + s];
-                const double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]};
-                double q[3];
-                sc->idx[j] = (uint32_t)i;
-                sc->owner[j] = t;
-                sc->k[j] = pl_coupling_inside_cells(c, g, cstart, clist, r, q);
-                sc->done[j] = 0;
-            }
+        for (size_t j = 0; j < total; ++j) {
+            const size_t i = sc->idx[j];
+            const double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]};
+            double q[3];
+            sc->k[j] = pl_coupling_inside_cells(e->cb, g, e->cstart, e->clist, r, q);
         }
         const int T = omp_get_num_threads(), me = omp_get_thread_num();
         const int32_t k0 = (int32_t)(nc * (size_t)me / (size_t)T), k1 = (int32_t)(nc * (size_t)(me + 1) / (size_t)T);
         uint64_t mine[2] = {0, 0};
-        for (size_t j = 0; j < total; ++j) {
-            const int32_t k = sc->k[j];
-            if ((k < 0 ? 0 : k) < k0 || (k < 0 ? 0 : k) >= k1) continue; /* none (k < 0): colloid 0's thread */
-            int stop;
+        int more = 1, quit = 0;
+        for (int pass = 0; pass < NPASS && more && !quit; ++pass) {
+            more = 0;
+            for (size_t j = 0; j < total; ++j) {
+                const int32_t k = sc->k[j];
+                if (k < k0 || k >= k1 || sc->done[j] >= prm->max_refl) continue; /* k < 0: inside none */
 #pragma omp atomic read
-            stop = gave_up;
-            if (stop) break;
-            const size_t i = sc->idx[j];
-            double *sv = sc->state + 7 * j;
-            for (int d = 0; d < 3; ++d) {
-                sv[d] = f->r[d][i];
-                sv[3 + d] = f->v[d][i];
-            }
-            sv[6] = (double)f->cell[i];
-            const double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]};
-            double q[3];
-            pl_coupling_inside_cells(c, g, cstart, clist, r, q);
-            const int rc = reflect_particle(f, g, prm, c, vel, cstart, clist, i, k, q,
-                                            hist + (size_t)sc->owner[j] * g->ncells, mine, 1);
-            band_check(f, sc->owner[j], nthreads, g->ncells, i);
-            if (rc < 0) {
+                quit = gave_up;
+                if (quit) break;
+                const size_t i = sc->idx[j];
+                const double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]};
+                double q[3];
+                const int32_t kin = inside_now(e, g, r, q, k, 1);
+                int rc = -1;
+                if (kin == -1) continue;
+                double *sv = sc->state + 7 * j;
+                if (kin >= 0) {
+                    if (!sc->done[j]) {
+                        for (int d = 0; d < 3; ++d) {
+                            sv[d] = f->r[d][i];
+                            sv[3 + d] = f->v[d][i];
+                        }
+                        sv[6] = (double)f->cell[i];
+                    }
+                    rc = reflect_particle(f, g, prm, e, vel, i, kin, q, hist + (size_t)sc->owner[j] * g->ncells, mine,
+                                          1, &sc->done[j]);
+                    band_check(f, sc->owner[j], nthreads, g->ncells, i);
+                }
+                if (rc < 0) {
 #pragma omp atomic write
-                gave_up = 1;
-                break;
+                    gave_up = 1;
+                    quit = 1;
+                    break;
+                }
+                mine[1] += (uint64_t)rc;
+                more = 1;
             }
-            sc->done[j] = 1;
-            mine[1] += (uint64_t)rc;
         }
         cnt[0] += mine[0];
         cnt[1] += mine[1];
@@ -331,37 +504,63 @@ static int parallel_events(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1
     return -1;
 }
 
-void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *p,
-                          const pl_coupling_colloids_t *c, double *const vel[6],
-                          const uint32_t *cstart, const int32_t *clist, uint32_t *hist, int nthreads,
-                          uint32_t *found, uint64_t *counts, pl_coupling1_scratch_t *sc, int detected)
+size_t pl_coupling1_found(const uint64_t *counts, int nthreads)
 {
-    /* Detection, in parallel: thread t lists the particles of its static
-     * chunk (the one of the streaming) found inside a colloid, from the
-     * cells the streaming binned them into (the colloids near each cell:
-     * cstart, clist); usually done inside the streaming already. */
-    if (!detected) pl_coupling_find_binned(f, g, c, cstart, clist, nthreads, found, counts);
-    /* The events, serially in particle order: each sees the colloid velocity
-     * left by the one before (collisions are sequential impulses; with a
-     * stale velocity light colloids would overheat), and the order does not
-     * depend on the thread count. */
+    size_t total = 0;
+    for (int t = 0; t < nthreads; ++t) total += counts[(size_t)t * 8 + 2];
+    return total;
+}
+
+/* The events' view (events_t) with no displacement yet. */
+static void events_start(events_t *e, const pl_coupling_colloids_t *c, const pl_coupling_colloids_t *cb,
+                         const uint32_t *cstart, const int32_t *clist, pl_coupling1_scratch_t *sc, int move)
+{
+    const size_t n = c->n;
+    *e = (events_t){.c = *c, .cb = cb, .disp = sc->disp, .cstart = cstart, .clist = clist, .move = move};
+    const double *x0[3] = {cb->x, cb->y, cb->z};
+    for (int d = 0; d < 3; ++d) {
+        e->pos[d] = sc->pos + (size_t)d * n;
+        for (size_t k = 0; k < n; ++k) {
+            e->pos[d][k] = x0[d][k];
+            sc->disp[(size_t)d * n + k] = 0.0;
+        }
+    }
+    e->c.x = e->pos[0];
+    e->c.y = e->pos[1];
+    e->c.z = e->pos[2];
+}
+
+void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *p,
+                          const pl_coupling_colloids_t *c, const pl_coupling_colloids_t *cb, double *const vel[6],
+                          const uint32_t *cstart, const int32_t *clist, uint32_t *hist, int nthreads,
+                          const uint32_t *found, uint64_t *counts, pl_coupling1_scratch_t *sc)
+{
+    const size_t total = pl_coupling1_found(counts, nthreads);
+    events_t e;
+    events_start(&e, c, cb, cstart, clist, sc, p->move);
+    order_events(f, g, p, &e, nthreads, found, counts, total, sc);
+    for (size_t j = 0; j < total; ++j) sc->done[j] = 0;
     counts[0] = counts[1] = 0;
-    if (sc && nthreads > 1 && !g->any_walls && !f->tracked && !p->wall_acc && c->n >= 2 &&
-        !parallel_events(f, g, p, c, vel, cstart, clist, hist, nthreads, found, counts, sc))
+    if (nthreads > 1 && !g->any_walls && !f->tracked && !p->wall_acc && c->n >= 2 &&
+        !parallel_events(f, g, p, &e, vel, hist, nthreads, total, counts, sc))
         return;
-    for (int t = 0; t < nthreads; ++t) {
-        size_t lo, hi;
-        pl_chunk(f->n, t, nthreads, &lo, &hi);
-        uint32_t *h = hist + (size_t)t * g->ncells;
-        const size_t nt = counts[(size_t)t * 8 + 2];
-        for (size_t j = 0; j < nt; ++j) {
-            if (j + PF < nt) prefetch_particle(f, found[lo + j + PF]);
-            size_t i = found[lo + j];
+    events_start(&e, c, cb, cstart, clist, sc, p->move);
+    for (size_t j = 0; j < total; ++j) sc->done[j] = 0;
+    int more = 1;
+    for (int pass = 0; pass < NPASS && more; ++pass) {
+        more = 0;
+        for (size_t j = 0; j < total; ++j) {
+            if (sc->done[j] >= p->max_refl) continue;
+            if (pass == 0 && j + PF < total) prefetch_particle(f, sc->idx[j + PF]);
+            const size_t i = sc->idx[j];
+            const int t = sc->owner[j];
             double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, q[3];
-            int32_t k = pl_coupling_inside_cells(c, g, cstart, clist, r, q);
-            counts[1] += (uint64_t)reflect_particle(f, g, p, c, vel, cstart, clist, i, k, q, h,
-                                                    counts, 0);
+            const int32_t k = inside_now(&e, g, r, q, -1, 0);
+            if (k < 0) continue;
+            counts[1] += (uint64_t)reflect_particle(f, g, p, &e, vel, i, k, q, hist + (size_t)t * g->ncells, counts, 0,
+                                                    &sc->done[j]);
             band_check(f, t, nthreads, g->ncells, i);
+            more = 1;
         }
     }
 }

@@ -546,6 +546,11 @@ void pl_colloid_kick(size_t n, double h, const double *mass, const double *inert
                      const double *ty, const double *tz, double *vx, double *vy, double *vz,
                      double *wx, double *wy, double *wz, int nthreads);
 
+/* x += dx (a move of the colloids' positions outside the MD: coupling I's
+ * events), wrapped into the box with image counts; serial (few colloids). */
+void pl_colloid_displace(size_t n, const double box[3], const int periodic[3], double *x, double *y, double *z,
+                         int32_t *ix, int32_t *iy, int32_t *iz, const double *dx, const double *dy,
+                         const double *dz);
 /* Drift (PL Eq. 18 / Hecht Eq. 7 after the half kick) and quaternion update
  * (Hecht Eq. 10), positions wrapped into the box with image counts. */
 void pl_colloid_drift(size_t n, double dt, const double box[3], const int periodic[3],

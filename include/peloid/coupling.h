@@ -55,8 +55,8 @@ typedef struct pl_coupling1_state {
     pl_coupling_find_ctx_t find_ctx; /* the detection inside the streaming */
     uint64_t *cell_mask; /* (grid ncells + 63) / 64: the cells with candidates */
     long long armed_step; /* the step whose streaming detects (-1: none) */
-    double *vstart;      /* 6 x colloids: their velocities at the start of the reflections */
-    size_t vstart_cap;   /* colloids vstart holds */
+    double *rad_big;     /* colloids: radius + the margin of the end positions' move */
+    size_t rad_cap;      /* colloids rad_big holds */
     unsigned long long events, truncations; /* since the start of this run */
 } pl_coupling1_state_t;
 

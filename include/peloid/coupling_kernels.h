@@ -78,39 +78,51 @@ typedef struct {
     double wall_u[2][3]; /* z wall velocities (bottom, top): a particle pushed through a
                           * no-slip wall (grid->walls) bounces back in the wall's frame */
     int64_t *wall_acc;   /* NULL, or the wall impulses (fixed point, PL_WALL_ACC_N slots) */
+    int move;            /* the events move the colloids' end positions (0: pinned colloids) */
 } pl_coupling1_params_t;
 
 /* After stream+bin: every fluid particle found inside a colloid is moved out
  * and given a new velocity (Hecht Sec. IV), up to max_refl times; the colloid
- * velocities vel = {vx, vy, vz, wx, wy, wz} (the arrays c points to) receive
- * the opposite impulse and angular impulse.  The particle's cell index and
- * the histogram row of the thread that streamed it (static chunks pl_chunk,
- * as in the streaming) are updated, so the counting sort that follows stays
- * consistent.  found: n scratch indices.  counts[0] events (reflections),
- * counts[1] truncations (still inside after max_refl). */
+ * velocities vel = {vx, vy, vz, wx, wy, wz} (the arrays c points to: each
+ * event sees the velocity the ones before it left) receive the opposite
+ * impulse and angular impulse, the events in the order of
+ * coupling_reflect.c.  An event that changes a colloid's velocity by dv at
+ * the time s before the end of the step moves the colloid's end position
+ * by dv s (p->move; at most the margin cb->rad - c->rad); a particle is
+ * inside when it is inside a colloid at its moved end position, so found
+ * and cstart, clist come from cb: the positions the MD left, radii
+ * enlarged by the margin.  sc->disp returns the displacements (3 x c->n,
+ * x then y then z) for the caller to add to the colloid positions.  The
+ * particle's cell index and the histogram row of the thread that streamed
+ * it (static chunks pl_chunk, as in the streaming) are updated, so the
+ * counting sort that follows stays consistent.  found, counts: the
+ * particles found inside cb (pl_coupling_find_binned or
+ * pl_coupling_find_block); counts[0] events (reflections), counts[1]
+ * truncations (still inside after max_refl). */
 typedef struct {
-    size_t cap;       /* particles found inside that idx, owner, k, done, state hold */
+    size_t cap;       /* events that key, idx, owner, k, done, state hold */
     size_t vcap;      /* doubles of vsave (6 x colloids) */
-    size_t need;      /* set when cap was too small for this step's events */
-    uint32_t *idx;    /* cap each: the particle, its streaming thread, first colloid, */
-    int32_t *owner;   /* whether its events are done, and */
+    uint64_t *key;    /* 2 x cap: the sort key and particle; cap each: the particle, its streaming thread, */
+    uint32_t *idx;    /* its colloid in cb, whether it is done, and */
+    int32_t *owner;
     int32_t *k;
-    unsigned char *done;
+    uint16_t *done;   /* reflections so far */
     double *state;    /* 7 x cap: its r, v and cell before them */
     double *vsave;    /* vcap: the colloid velocities before the events */
+    double *pos, *disp; /* vcap / 2 each: the colloids' moved end positions and displacements */
     unsigned long long parallel, gave_up; /* steps done in parallel; given up (a second colloid) */
 } pl_coupling1_scratch_t;
 
-/* sc (NULL: serial only): scratch for the events in parallel (more than
- * one thread, two or more colloids, no walls, no displacement tracking);
- * too small for a step's events (sc->need then says how many) that step
- * runs serially.  The result is the same bits either way.  detected: found
- * and counts already hold the particles inside (pl_coupling_find_block ran
- * in this step's streaming); else the kernel finds them. */
+/* The number of particles the detection found (counts of
+ * pl_coupling_find_binned): sc must hold that many events and 6 values per
+ * colloid.  With more than one thread, two or more colloids, no walls and
+ * no displacement tracking the events run in parallel over blocks of
+ * colloids; the result is the same bits either way. */
+size_t pl_coupling1_found(const uint64_t *counts, int nthreads);
 void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *p,
-                          const pl_coupling_colloids_t *c, double *const vel[6], const uint32_t *cstart,
-                          const int32_t *clist, uint32_t *hist, int nthreads, uint32_t *found, uint64_t *counts,
-                          pl_coupling1_scratch_t *sc, int detected);
+                          const pl_coupling_colloids_t *c, const pl_coupling_colloids_t *cb, double *const vel[6],
+                          const uint32_t *cstart, const int32_t *clist, uint32_t *hist, int nthreads,
+                          const uint32_t *found, uint64_t *counts, pl_coupling1_scratch_t *sc);
 
 /* ---- coupling II: colloids in the collision (coupling_collide.c) ------- */
 typedef struct {

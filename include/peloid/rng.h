@@ -35,6 +35,7 @@ typedef enum {
     PL_RNG_COUPLE2_THERMOSTAT = 33, /* coupling II Heyes factor */
     PL_RNG_REFLECT = 34,          /* coupling I thermal wall velocities (Hecht Eq. 13) */
     PL_RNG_FLUID_REPLACE = 35,    /* fluid particles moved out of colloids at start */
+    PL_RNG_REFLECT_ORDER = 36,    /* coupling I order of a step's events; counter (step, particle) */
 } pl_rng_purpose_t;
 
 typedef struct {

@@ -12,6 +12,7 @@
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/collision_rule.h"
 #include "peloid/colloid.h"
+#include "peloid/colloid_kernels.h"
 #include "peloid/coupling.h"
 #include "peloid/sim.h"
 
@@ -50,32 +51,38 @@ int pl_coupling1_create(const pl_coupling_t *cp, const pl_sim_t *sim, pl_couplin
 
 static void scratch_free(pl_coupling1_scratch_t *sc)
 {
+    free(sc->key);
     free(sc->idx);
     free(sc->owner);
     free(sc->k);
     free(sc->done);
     free(sc->state);
     free(sc->vsave);
+    free(sc->pos);
+    free(sc->disp);
     const unsigned long long par = sc->parallel, gave = sc->gave_up;
     memset(sc, 0, sizeof *sc);
     sc->parallel = par;
     sc->gave_up = gave;
 }
 
-/* Room for n particles' events and nc colloids (0: out of memory; the
- * events then run serially, the same bits). */
+/* Room for n events and nc colloids; 0 when out of memory. */
 static int scratch_grow(pl_coupling1_scratch_t *sc, size_t n, size_t nc)
 {
     if (n <= sc->cap && 6 * nc <= sc->vcap) return 1;
     scratch_free(sc);
     const size_t cap = n + n / 2 + 256;
+    sc->key = malloc(2 * cap * sizeof *sc->key);
     sc->idx = malloc(cap * sizeof *sc->idx);
     sc->owner = malloc(cap * sizeof *sc->owner);
     sc->k = malloc(cap * sizeof *sc->k);
-    sc->done = malloc(cap);
+    sc->done = malloc(cap * sizeof *sc->done);
     sc->state = malloc(7 * cap * sizeof *sc->state);
     sc->vsave = malloc((6 * nc + 1) * sizeof *sc->vsave);
-    if (!sc->idx || !sc->owner || !sc->k || !sc->done || !sc->state || !sc->vsave) {
+    sc->pos = malloc((3 * nc + 1) * sizeof *sc->pos);
+    sc->disp = malloc((3 * nc + 1) * sizeof *sc->disp);
+    if (!sc->key || !sc->idx || !sc->owner || !sc->k || !sc->done || !sc->state || !sc->vsave || !sc->pos ||
+        !sc->disp) {
         scratch_free(sc);
         return 0;
     }
@@ -87,8 +94,8 @@ static int scratch_grow(pl_coupling1_scratch_t *sc, size_t n, size_t nc)
 void pl_coupling1_free(pl_coupling1_state_t *s)
 {
     if (!s) return;
-    free(s->vstart);
     pl_coupling_lookup_free(&s->lk);
+    free(s->rad_big);
     pl_free(s->found);
     pl_free(s->counts);
     pl_free(s->cstart);
@@ -116,6 +123,32 @@ static int cell_candidates(pl_coupling1_state_t *s, const pl_grid_t *g, const pl
     }
 }
 
+/* How far the events may move a colloid's end position, in thermal
+ * displacements dt sqrt(kT/M): the step's kicks add up to about
+ * sqrt(3 kT/M), moving the end position by about half of that times dt, so
+ * 4 leaves ~5 of those typical moves (beyond it the move is cut,
+ * kernels/coupling_reflect.c). */
+#define PL_C1_MARGIN 4.0
+
+/* The colloids as the detection sees them: radii enlarged by the margin
+ * the events may move their end positions (none for pinned colloids). */
+static int enlarged_view(pl_coupling1_state_t *s, const pl_colloid_t *c, int pinned, pl_coupling_colloids_t *v,
+                         pl_err_t *err)
+{
+    if (s->rad_cap < c->n) {
+        free(s->rad_big);
+        s->rad_cap = 0;
+        if (!(s->rad_big = malloc((c->n + 1) * sizeof *s->rad_big)))
+            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling I radii");
+        s->rad_cap = c->n;
+    }
+    for (size_t k = 0; k < c->n; ++k)
+        s->rad_big[k] = c->rad[k] + (pinned ? 0.0 : PL_C1_MARGIN * s->p.dt * sqrt(s->p.kT / c->mass[k]));
+    *v = pl_coupling_view(c);
+    v->rad = s->rad_big;
+    return 0;
+}
+
 /* Coupling I before stream+bin (after the colloid MD): the colloids near
  * each collision cell under the shift this step's streaming draws (the same
  * draw: a function of seed and step), and the detection armed to run inside
@@ -130,8 +163,9 @@ int pl_coupling_stage_reflect_cells(pl_sim_t *sim, void *ctx, pl_err_t *err)
     const pl_scene_t *sc = &sim->scene;
     pl_grid_t g = sim->grid;
     pl_grid_draw_shift(&g, (uint64_t)sc->run.seed, (uint64_t)sim->step, sc->srd.grid_shift);
-    const pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
-    int rc = cell_candidates(s, &g, &v, sim->nthreads, err);
+    pl_coupling_colloids_t v;
+    int rc = enlarged_view(s, sim->colloids, cp->pinned, &v, err);
+    if (!rc) rc = cell_candidates(s, &g, &v, sim->nthreads, err);
     if (rc) return rc;
     pl_coupling_cell_mask(s->cstart, g.ncells, s->cell_mask);
     memset(s->counts, 0, (size_t)sim->nthreads * 8 * sizeof *s->counts);
@@ -146,16 +180,11 @@ int pl_coupling_stage_reflect_cells(pl_sim_t *sim, void *ctx, pl_err_t *err)
 }
 
 /* Coupling I after stream+bin: reflections with their impulses on the
- * colloids, event counters.  Every event of the step sees the colloids'
- * velocities (V, W) as the step found them; the impulses add up on the
- * colloids in particle order.  An event that saw the velocity the events
- * before it left (as until 2026-12-05) made the rule depend on the order
- * of the events, which is the counting sort's (z, then y, then x): the
- * lower events, handled first, had pushed the colloid up before the upper
- * ones met it, so the upper ones met it faster and pushed it down harder;
- * a free colloid drifted at ~0.01 a0/t0 (a fifth of its thermal speed)
- * towards -z and -y, and a pinned one held a fluid stream of ~0.03 a0/t0
- * (tests/physics/test_coupling_momentum.c). */
+ * colloids, event counters, and the colloids' end positions moved as their
+ * velocities changed during the step.  Each event sees the colloid
+ * velocity and end position the events before it left, the events of a
+ * step in the order the particles met the colloids, ties in a random order
+ * that is a function of (seed, step, particle) (kernels/coupling_reflect.c). */
 int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)ctx;
@@ -163,42 +192,32 @@ int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_coupling1_state_t *s = cp->c1;
     pl_colloid_t *c = sim->colloids;
     s->p.step = (uint64_t)sim->step;
-    pl_coupling_colloids_t v = pl_coupling_view(c);
-    if (s->vstart_cap < c->n) {
-        free(s->vstart);
-        s->vstart_cap = 0;
-        if (!(s->vstart = malloc(6 * (c->n + 1) * sizeof *s->vstart)))
-            return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the colloid velocities of the coupling");
-        s->vstart_cap = c->n;
-    }
-    {
-        const double *live[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
-        for (int j = 0; j < 6; ++j) memcpy(s->vstart + (size_t)j * c->n, live[j], c->n * sizeof *s->vstart);
-        v.vx = s->vstart;
-        v.vy = s->vstart + c->n;
-        v.vz = s->vstart + 2 * c->n;
-        v.wx = s->vstart + 3 * c->n;
-        v.wy = s->vstart + 4 * c->n;
-        v.wz = s->vstart + 5 * c->n;
-    }
+    s->p.move = !cp->pinned;
+    const pl_coupling_colloids_t v = pl_coupling_view(c);
+    pl_coupling_colloids_t vb;
+    int rc = enlarged_view(s, c, cp->pinned, &vb, err);
+    if (rc) return rc;
     /* the streaming ran the detection armed for it (it clears the hook),
      * else the colloids near each collision cell of the binning now */
     const int detected = s->armed_step == sim->step && !sim->stream_hook;
     s->armed_step = -1;
     if (!detected) {
-        int rc = cell_candidates(s, &sim->grid, &v, cp->nthreads, err);
-        if (rc) return rc;
+        if ((rc = cell_candidates(s, &sim->grid, &vb, cp->nthreads, err))) return rc;
+        pl_coupling_find_binned(&sim->fluid, &sim->grid, &vb, s->cstart, s->clist, cp->nthreads, s->found,
+                                s->counts);
     }
+    pl_coupling1_scratch_t *sc = &s->events_scratch;
+    if (!scratch_grow(sc, pl_coupling1_found(s->counts, cp->nthreads), c->n))
+        return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling I events");
     double *const vel[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
     int64_t wall[PL_WALL_ACC_N] = {0};
     s->p.wall_acc = sim->wall_acc ? wall : NULL;
-    pl_coupling1_scratch_t *sc = &s->events_scratch;
-    sc->need = 0;
-    pl_coupling1_reflect(&sim->fluid, &sim->grid, &s->p, &v, vel, s->cstart, s->clist, sim->hist, cp->nthreads,
-                         s->found, s->counts, sc, detected);
-    if (sc->need || sc->vcap < 6 * c->n) /* room for the next step's events (else serial) */
-        scratch_grow(sc, sc->need, c->n);
+    pl_coupling1_reflect(&sim->fluid, &sim->grid, &s->p, &v, &vb, vel, s->cstart, s->clist, sim->hist,
+                         cp->nthreads, s->found, s->counts, sc);
     s->p.wall_acc = NULL;
+    if (s->p.move) /* the colloids where the events left them */
+        pl_colloid_displace(c->n, c->box, c->periodic, c->x, c->y, c->z, c->ix, c->iy, c->iz, sc->disp,
+                            sc->disp + c->n, sc->disp + 2 * c->n);
     if (sim->wall_acc) pl_sim_wall_add(sim, wall);
     s->events += s->counts[0];
     s->truncations += s->counts[1];

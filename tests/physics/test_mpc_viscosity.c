@@ -2,7 +2,7 @@
  * against their rows' theories (src/fluid/rule_mpc_at.c: the published
  * MPC-AT expressions; src/fluid/rule_mpc_at_a.c: derived there, the
  * published +a ones could not be read), measured by steady Kolmogorov flow
- * as tests/test_viscosity.c measures SRD's: a kick F sin(k z) each step,
+ * as tests/physics/test_viscosity.c measures SRD's: a kick F sin(k z) each step,
  * nu = F / (k^2 <a>) from the time-averaged amplitude a = (2/N) sum v_x
  * sin(k z) after 3 momentum-diffusion times 1/(nu k^2).  The rules are
  * thermostats themselves: no other thermostat removes the viscous heating.
@@ -18,7 +18,7 @@
  * mpc_at_a runs need long boxes (their viscosity depends on the
  * wavelength: +9 +- 2.5 % in a 16-cell box at gamma 10, lambda 0.05) and
  * run in make validate-physics only; make check tests +a through the
- * angular momentum (tests/test_collision_rules.c).
+ * angular momentum (tests/unit/test_collision_rules.c).
  *
  * Parameter sets: mpc_at at gamma = 5, lambda = 0.1 and gamma = 10,
  * lambda = 0.05 (collisional part 90 and 98 % of nu); mpc_at_a at gamma =

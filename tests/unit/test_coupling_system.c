@@ -118,7 +118,9 @@ Test(coupling_system, gravity_compensated_centre_of_mass_at_rest, .timeout = 120
         cr_log_info("%s gravity: max |P|/sqrt(M) = %.3g, colloid v_z - fluid v_z = %.4g", cases[k],
                     worst, vrel);
         cr_expect_lt(worst, 1e-9, "%s: centre of mass moves: |P|/sqrt(M) = %.3g", cases[k], worst);
-        cr_expect_lt(vrel, -1e-3, "%s: colloids do not sediment (v_rel = %.3g)", cases[k], vrel);
+        /* quick (sanitizer) runs: 20 steps, the mean of 8 colloids' thermal v_z (~0.02) hides the settling */
+        if (!pl_test_quick())
+            cr_expect_lt(vrel, -1e-3, "%s: colloids do not sediment (v_rel = %.3g)", cases[k], vrel);
     }
 }
 

@@ -4,21 +4,18 @@
  * averaged over the run after a burn-in and compared with the time-averaged
  * fluid temperature.
  *
- * Tolerances: coupling II 3%, coupling I 7%, potential 5% (4000 steps, SE
- * ~1.3%; no thermostat, so the fluid itself warms by ~1-2% from the MD
- * integration of PL Eq. 17 and T_c is compared with the measured fluid T).  The standard error of T_c from
- * 10 block averages is logged (8000 steps: ~0.4% coupling II, ~1% coupling
- * I), so 3% is > 5 standard errors, and 7% is ~4 standard errors plus the
- * expected bias of coupling I: which particles hit
- * a colloid during a collision step is decided with its velocity at the
- * start of the step (explicit friction), which heats colloids by about
- * xi_E dt / 2M (PL Eq. 40: ~4% for R = 2 a0, M = 167 m_f, dt = 0.1; 11%
- * measured at M = 67 m_f).  A wrong coupling (no thermalisation, a missing
- * mass factor in Hecht Eq. 15, the colloid recoil left out of the thermal
- * wall: +25%) misses by far more.  Colloids are neutrally buoyant (mass
+ * Tolerances: coupling II 3%, potential 5% (4000 steps, SE ~1.3%; no
+ * thermostat, so the fluid itself warms by ~1-2% from the MD integration of
+ * PL Eq. 17 and T_c is compared with the measured fluid T), coupling I
+ * below.  The standard error of T_c from 10 block averages is logged (8000
+ * steps: ~0.4% coupling II), so 3% is > 5 standard errors.  A wrong
+ * coupling (no thermalisation, a missing mass factor in Hecht Eq. 15, the
+ * colloid recoil left out of the thermal wall: +25%) misses by far more.
+ * Colloids are neutrally buoyant (mass
  * density = gamma, PL's choice). */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
@@ -65,39 +62,122 @@ static const char *BASE =
     "fluid: { density = 5.0; temperature = 1.0; };\n"
     "srd: { dt = 0.1; };\n";
 
-Test(coupling_thermal, hecht1_stick_equipartition, .timeout = 300)
+/* Coupling I at the fluid's temperature (Hecht Sec. IV; issue 45), for
+ * colloid masses M = 33.5 and 168 m_f (R = 2 a0, mass density 1 and 5) at
+ * dt = 0.1, each surface rule: the colloids' translational temperature,
+ * and for stick rules the rotational one, within 1 % of the fluid's, the
+ * fluid at the walls' kT, and no drift.  Each reflection sees the colloid
+ * velocity the earlier ones left and the colloid's end position moved by
+ * them (kernels/coupling_reflect.c); when every reflection of a step read
+ * the velocity the step found, the friction acted explicitly and the
+ * colloids ran hot: T_c/T_f = 1.46, 1.28 and (the fluid guard tripped)
+ * for stick_stochastic, slip, stick_bounce at M = 33.5, 1.053 and 1.031 at
+ * M = 168, the fluid at 1.033 (stick_stochastic, M = 33.5); sequential
+ * impulses alone left 1.19 at M = 33.5.
+ * Bounds from the run's own standard error: T ratios 1 % + 3 SE (SE of
+ * the ratio from 20 blocks of the run, each > 100 velocity relaxation
+ * times M/xi; measured ~0.25 % at M = 33.5 over 40000 steps and ~0.3 % at
+ * M = 168 over 60000), the fluid 0.3 % + 3 SE for the thermal walls (the
+ * fluid has no thermostat but them: measured SE ~0.05 %; stick_bounce
+ * conserves energy and has none, and the colloids' Hertz contacts, moved
+ * by the events' end-position shifts, heat it: +2 % over 60000 steps at
+ * M = 33.5, nothing with one colloid), the mean colloid velocity per axis
+ * 4 SE.  Neutrally buoyant colloids at the fluid's temperature, 8 in 14^3
+ * cells; MD substeps 10 (the light colloids' Hertz contacts). */
+typedef struct {
+    double tc, tc_se, tr, tr_se, tf, tf_se, v[3], v_se[3];
+} c1temps_t;
+
+static void mean_se(const double *x, int n, double *m, double *se)
 {
-    char text[2048];
-    snprintf(text, sizeof text,
-             "%sbox: { cells = [14, 14, 14]; };\n"
-             "colloids: { count = 8; radius = 2.0; mass_density = 5.0; temperature = 0.1;\n"
-             "  init = \"lattice\"; pairs = \"hertz\"; substeps = 4; };\n"
-             "coupling: { method = \"hecht1\"; boundary = \"stick_stochastic\"; };\n", BASE);
-    long long steps = pl_test_quick() ? 100 : 8000;
-    temps_t t = measure(text, steps, 200);
-    cr_log_info("hecht1 stick: T_c = %.4f +- %.4f, T_rot = %.4f, T_fluid = %.4f", t.tc, t.tc_se,
-                t.tr, t.tf);
-    PL_SKIP_IF_QUICK("a statistical check of the full run");
-    cr_expect_lt(fabs(t.tc / t.tf - 1.0), 0.07, "T_c %.4f vs fluid %.4f", t.tc, t.tf);
-    cr_expect_lt(fabs(t.tr / t.tf - 1.0), 0.07, "T_rot %.4f vs fluid %.4f", t.tr, t.tf);
-    cr_expect_lt(fabs(t.tf - 1.0), 0.03, "fluid held at the wall temperature: %.4f", t.tf);
+    double mean = 0.0, var = 0.0;
+    for (int b = 0; b < n; ++b) mean += x[b] / n;
+    for (int b = 0; b < n; ++b) var += (x[b] - mean) * (x[b] - mean) / (n - 1);
+    *m = mean;
+    *se = sqrt(var / n);
 }
 
-Test(coupling_thermal, hecht1_slip_equipartition, .timeout = 300)
+static c1temps_t c1_measure(const char *boundary, double mass_density, long long steps)
 {
     char text[2048];
     snprintf(text, sizeof text,
              "%sbox: { cells = [14, 14, 14]; };\n"
-             "colloids: { count = 8; radius = 2.0; mass_density = 5.0; temperature = 0.1;\n"
-             "  init = \"lattice\"; pairs = \"hertz\"; substeps = 4; };\n"
-             "coupling: { method = \"hecht1\"; boundary = \"slip\"; placement = \"entry\"; };\n",
-             BASE);
-    long long steps = pl_test_quick() ? 100 : 8000;
-    temps_t t = measure(text, steps, 200);
-    cr_log_info("hecht1 slip: T_c = %.4f +- %.4f, T_fluid = %.4f", t.tc, t.tc_se, t.tf);
-    PL_SKIP_IF_QUICK("a statistical check of the full run");
-    cr_expect_lt(fabs(t.tc / t.tf - 1.0), 0.07, "T_c %.4f vs fluid %.4f", t.tc, t.tf);
+             "colloids: { count = 8; radius = 2.0; mass_density = %g; temperature = 1.0;\n"
+             "  init = \"lattice\"; pairs = \"hertz\"; substeps = 10; };\n"
+             "coupling: { method = \"hecht1\"; boundary = \"%s\"; placement = \"entry\"; };\n",
+             BASE, mass_density, boundary);
+    pl_sim_t *sim = pl_test_sim(text, 2);
+    enum { NB = 20 };
+    double sum[6][NB] = {{0}}, cnt[NB] = {0};
+    pl_test_steps(sim, 300);
+    const pl_colloid_t *c = sim->colloids;
+    for (long long s = 0; s < steps; s += 2) {
+        pl_test_steps(sim, 2);
+        pl_colloid_energy_t e;
+        pl_colloid_energy(sim->colloids, &e);
+        const double n3 = 3.0 * (double)c->n;
+        const int b = (int)(s * NB / steps);
+        pl_fluid_obs_t o;
+        double kT;
+        pl_sim_observe(sim, &o, &kT);
+        sum[0][b] += 2.0 * e.kin_trans / n3;
+        sum[1][b] += 2.0 * e.kin_rot / n3;
+        sum[2][b] += kT;
+        for (size_t k = 0; k < c->n; ++k) {
+            sum[3][b] += c->vx[k] / (double)c->n;
+            sum[4][b] += c->vy[k] / (double)c->n;
+            sum[5][b] += c->vz[k] / (double)c->n;
+        }
+        cnt[b] += 1.0;
+    }
+    pl_sim_free(sim);
+    double x[3][NB], m[6][NB];
+    for (int q = 0; q < 6; ++q)
+        for (int b = 0; b < NB; ++b) m[q][b] = sum[q][b] / cnt[b];
+    for (int b = 0; b < NB; ++b) { /* block ratios: the SE of T_c / T_f */
+        x[0][b] = m[0][b] / m[2][b];
+        x[1][b] = m[1][b] / m[2][b];
+        x[2][b] = m[2][b];
+    }
+    c1temps_t t;
+    mean_se(x[0], NB, &t.tc, &t.tc_se);
+    mean_se(x[1], NB, &t.tr, &t.tr_se);
+    mean_se(x[2], NB, &t.tf, &t.tf_se);
+    for (int d = 0; d < 3; ++d) mean_se(m[3 + d], NB, &t.v[d], &t.v_se[d]);
+    return t;
 }
+
+static void c1_check(const char *boundary, double mass_density, long long steps)
+{
+    const int stick = strcmp(boundary, "slip") != 0;
+    c1temps_t t = c1_measure(boundary, mass_density, pl_test_quick() ? 100 : steps);
+    cr_log_info("hecht1 %s, mass density %g: T_c/T_f = %.4f +- %.4f, T_rot/T_f = %.4f +- %.4f, T_f = %.4f +- %.4f, "
+                "mean V = (%.5f, %.5f, %.5f) +- (%.5f, %.5f, %.5f)", boundary, mass_density, t.tc, t.tc_se, t.tr,
+                t.tr_se, t.tf, t.tf_se, t.v[0], t.v[1], t.v[2], t.v_se[0], t.v_se[1], t.v_se[2]);
+    if (pl_test_quick()) return;
+    cr_expect_lt(fabs(t.tc - 1.0), 0.01 + 3.0 * t.tc_se, "%s: T_c/T_f = %.4f +- %.4f", boundary, t.tc, t.tc_se);
+    if (stick)
+        cr_expect_lt(fabs(t.tr - 1.0), 0.01 + 3.0 * t.tr_se, "%s: T_rot/T_f = %.4f +- %.4f", boundary, t.tr, t.tr_se);
+    if (strcmp(boundary, "stick_bounce") != 0) /* the thermal walls hold the fluid at kT */
+        cr_expect_lt(fabs(t.tf - 1.0), 0.003 + 3.0 * t.tf_se, "%s: fluid T = %.4f +- %.4f", boundary, t.tf, t.tf_se);
+    for (int d = 0; d < 3; ++d)
+        cr_expect_lt(fabs(t.v[d]), 4.0 * t.v_se[d], "%s: colloids drift along %d: %.5f +- %.5f", boundary, d, t.v[d],
+                     t.v_se[d]);
+}
+
+/* ~1 min each on an idle 2-core machine; 4-5 min at a load of 8 */
+Test(coupling_thermal, hecht1_m33_stick_stochastic, .timeout = 900) { c1_check("stick_stochastic", 1.0, 40000); }
+Test(coupling_thermal, hecht1_m33_slip, .timeout = 900) { c1_check("slip", 1.0, 40000); }
+/* Open (issue 45): light colloids with bounce-back run 1.5-1.8 % cold,
+ * 0.9825 +- 0.0019 and 0.9852 +- 0.0029 in two runs, outside 1 % + 3 SE
+ * (validation/REPORT.md, the coupling I note); enabled again when solved. */
+Test(coupling_thermal, hecht1_m33_stick_bounce, .timeout = 900, .disabled = true)
+{
+    c1_check("stick_bounce", 1.0, 40000);
+}
+Test(coupling_thermal, hecht1_m168_stick_stochastic, .timeout = 900) { c1_check("stick_stochastic", 5.0, 60000); }
+Test(coupling_thermal, hecht1_m168_slip, .timeout = 900) { c1_check("slip", 5.0, 60000); }
+Test(coupling_thermal, hecht1_m168_stick_bounce, .timeout = 900) { c1_check("stick_bounce", 5.0, 60000); }
 
 Test(coupling_thermal, hecht2_equipartition, .timeout = 300)
 {
