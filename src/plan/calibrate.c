@@ -471,12 +471,8 @@ int pl_calibrate(const pl_scene_t *sc, const char *shipped_dir, int nthreads, co
     pl_calcache_dir(dir, sizeof dir);
     pl_path_join(path, sizeof path, dir, name);
     if (o->mode == PL_CALIBRATE_STORED) { /* read what is there, measure nothing, take no lock */
-        if (from_cache(path, &e, PL_CALSRC_CACHE, cal, why, sizeof why) != PL_CALCACHE_OK) {
-            memset(cal, 0, sizeof *cal);
-            cal->source = PL_CALSRC_THEORY;
-            cal->d_theory = sc->mapping.map.d_col_theory;
-            pl_calibrate_theory(sc, cal);
-        }
+        if (from_cache(path, &e, PL_CALSRC_CACHE, cal, why, sizeof why) != PL_CALCACHE_OK)
+            memset(cal, 0, sizeof *cal); /* source NONE: nothing stored (the caller takes the theory) */
         free(c);
         cal->mode = o->mode;
         return 0;

@@ -93,16 +93,18 @@ int pl_scene_load_coupling_true(const char *path, unsigned flags, const char *sh
     if (rc || !scene->mapping.enabled) return rc;
     if (!pl_calibration_needed(scene)) return pl_scene_load_flags(path, flags, scene, err);
     pl_mapping_calibration_t cal;
-    if (o->mode == PL_CALIBRATE_NEVER) { /* d_inf 0: the mapping keeps the theory's D, final (as STORED with
-                                            * nothing stored: pl_calibrate) */
+    memset(&cal, 0, sizeof cal);
+    if (o->mode != PL_CALIBRATE_NEVER &&
+        (rc = pl_calibrate(scene, shipped_dir, nthreads > 0 ? nthreads : omp_get_max_threads(), o, &cal, err)))
+        return rc;
+    /* never, or stored with nothing stored (pl_calibrate left source NONE):
+     * d_inf 0, the mapping keeps the theory's D, final */
+    if (o->mode == PL_CALIBRATE_NEVER || cal.source == PL_CALSRC_NONE) {
         memset(&cal, 0, sizeof cal);
-        cal.mode = PL_CALIBRATE_NEVER;
+        cal.mode = o->mode;
         cal.source = PL_CALSRC_THEORY;
         cal.d_theory = scene->mapping.map.d_col_theory;
         pl_calibrate_theory(scene, &cal);
-    } else if ((rc = pl_calibrate(scene, shipped_dir, nthreads > 0 ? nthreads : omp_get_max_threads(), o, &cal,
-                                  err))) {
-        return rc;
     }
     return pl_scene_load_calibrated(path, flags, &cal, scene, err);
 }
