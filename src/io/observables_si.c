@@ -145,13 +145,12 @@ static int write_twin(hid_t obs, const char *name, const char *unit, const pl_ma
 }
 
 /* /parameters: the mapping's units in SI, read to convert any model value. */
-static int parameters(hid_t file, const pl_mapping_t *m)
+static int parameters(hid_t file, const pl_mapping_t *m, double t0_rel)
 {
     htri_t ex = H5Lexists(file, "parameters", H5P_DEFAULT);
     if (ex != 0) return ex < 0 ? -1 : 0;
     hid_t g = pl_h5_group(file, "parameters");
     if (g < 0) return -1;
-    const double t0_rel = pl_mapping_t0_relative_error(m);
     int bad = pl_h5_attr_doubles(g, "a0_m", &m->a0, 1) || pl_h5_attr_doubles(g, "t0_s", &m->t0, 1) ||
               (isfinite(t0_rel) && pl_h5_attr_doubles(g, "t0_relative_error", &t0_rel, 1)) ||
               pl_h5_attr_doubles(g, "m_f_kg", &m->m_f, 1) || pl_h5_attr_doubles(g, "kT_J", &m->kT_model, 1) ||
@@ -161,7 +160,7 @@ static int parameters(hid_t file, const pl_mapping_t *m)
     return bad ? -1 : 0;
 }
 
-int pl_obs_si_h5(hid_t file, const pl_mapping_t *m)
+int pl_obs_si_h5(hid_t file, const pl_mapping_t *m, double t0_rel)
 {
     hid_t obs = H5Gopen2(file, "observables", H5P_DEFAULT);
     if (obs < 0) return -1;
@@ -179,7 +178,7 @@ int pl_obs_si_h5(hid_t file, const pl_mapping_t *m)
     }
     free(l.name);
     if (H5Gclose(obs) < 0) bad = 1;
-    return bad || parameters(file, m) ? -1 : 0;
+    return bad || parameters(file, m, t0_rel) ? -1 : 0;
 }
 
 /* ---- summary.json ------------------------------------------------------ */
@@ -243,12 +242,12 @@ static void suffixed(pl_json_t *b, json_t *e, const pl_mapping_t *m)
     json_decref(add);
 }
 
-void pl_obs_si_json(pl_json_t *b, json_t *all, const pl_mapping_t *m)
+void pl_obs_si_json(pl_json_t *b, json_t *all, const pl_mapping_t *m, double t0_rel)
 {
     if (json_is_array(all)) {
         size_t i;
         json_t *v;
-        json_array_foreach(all, i, v) pl_obs_si_json(b, v, m);
+        json_array_foreach(all, i, v) pl_obs_si_json(b, v, m, t0_rel);
         return;
     }
     if (!json_is_object(all)) return;
@@ -258,7 +257,6 @@ void pl_obs_si_json(pl_json_t *b, json_t *all, const pl_mapping_t *m)
     if (si && !json_object_get(all, "unit_si")) {
         pl_json_str(b, all, "unit_si", si);
         const int pt = time_power(unit);
-        const double t0_rel = pl_mapping_t0_relative_error(m);
         convert(b, all, f, pt, t0_rel);
         size_t i;
         json_t *p;
@@ -268,5 +266,5 @@ void pl_obs_si_json(pl_json_t *b, json_t *all, const pl_mapping_t *m)
     suffixed(b, all, m);
     const char *key;
     json_t *v;
-    json_object_foreach(all, key, v) if (strcmp(key, "se_vs_time")) pl_obs_si_json(b, v, m);
+    json_object_foreach(all, key, v) if (strcmp(key, "se_vs_time")) pl_obs_si_json(b, v, m, t0_rel);
 }

@@ -9,7 +9,8 @@
  *     value_si, stderr_si, ... (each of its values in that unit, also in the
  *     se_vs_time points), and where the unit holds t0 and t0 rests on a
  *     calibrated (or theoretical) colloid D, stderr_mapping_si (the share
- *     of t0's relative error, pl_mapping_t0_relative_error) and
+ *     of t0's relative error t0_rel, pl_mapping_t0_relative_error, which
+ *     the caller passes: io calls nothing of the mapping) and
  *     stderr_total_si (both in quadrature); a key K_t0 (K_a0) gets K_s (K_m).
  * Model units map through a0, t0, m_f and the model energy kT_model = m_f
  * a0^2 / t0^2 (Hecht Sec. VII.B), so that stress, shear rate and viscosity
@@ -30,10 +31,10 @@ const char *pl_obs_si_unit(const char *model, const pl_mapping_t *m, double *to_
 
 /* Adds the SI twins of every dataset under file's /observables that has a
  * model unit and lacks its twin, and /parameters (once); 0 or -1. */
-int pl_obs_si_h5(hid_t file, const pl_mapping_t *m);
+int pl_obs_si_h5(hid_t file, const pl_mapping_t *m, double t0_rel);
 
 /* Adds unit_si and the SI values to every entry with a unit in
  * summary.json's "observables" section `all` (recursively). */
-void pl_obs_si_json(pl_json_t *b, json_t *all, const pl_mapping_t *m);
+void pl_obs_si_json(pl_json_t *b, json_t *all, const pl_mapping_t *m, double t0_rel);
 
 #endif

@@ -322,7 +322,7 @@ static int write_h5(const pl_sim_t *sim, const pl_observe_t *o, const char *path
     for (int k = 0; !bad && k < NOBS; ++k)
         if (o->st[k]) bad |= ROW(k)->write(obs, sim, o->st[k]) != 0;
     if (obs >= 0 && H5Gclose(obs) < 0) bad = 1;
-    if (!bad && sim->scene.mapping.enabled) bad = pl_obs_si_h5(f, &sim->scene.mapping.map) != 0;
+    if (!bad && sim->scene.mapping.enabled) bad = pl_obs_si_h5(f, &sim->scene.mapping.map, pl_mapping_t0_relative_error(&sim->scene.mapping.map)) != 0;
     return pl_obs_h5_commit(f, bad, tmp, path, "observables", err);
 }
 

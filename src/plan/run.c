@@ -198,7 +198,7 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
     pl_json_set(&b, doc, "thermo_units", units);
     json_t *obs = json_object_get(doc, "observables"); /* every module's entries are in: their SI side */
     b.prefix = "observables";
-    if (obs && sim->scene.mapping.enabled) pl_obs_si_json(&b, obs, &sim->scene.mapping.map);
+    if (obs && sim->scene.mapping.enabled) pl_obs_si_json(&b, obs, &sim->scene.mapping.map, pl_mapping_t0_relative_error(&sim->scene.mapping.map));
     if (b.failed) return err->code;
     FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
     if (!f) return PL_ERR_IO;
