@@ -34,9 +34,8 @@
 
 #include "peloid/collision_rule.h"
 #include "peloid/srd_theory.h"
+#include "kolmogorov.h"
 #include "support.h"
-
-enum { MAXBLOCKS = 16 };
 
 static int rule_index(const char *name)
 {
@@ -48,7 +47,7 @@ static int rule_index(const char *name)
 
 static int full_run(void) { return getenv("MPC_VISC_FULL") && strcmp(getenv("MPC_VISC_FULL"), "0"); }
 
-static void check_viscosity(const char *rule, double lambda, double gamma, int Lxy, int Lz, double ntau, int NBLOCKS)
+static void check_viscosity(const char *rule, double lambda, double gamma, int Lxy, int Lz, double ntau, int nblocks)
 {
     pl_srd_theory_t th;
     pl_srd_theory(gamma, rule_index(rule), 0.0, lambda, 1.0, &th);
@@ -58,35 +57,12 @@ static void check_viscosity(const char *rule, double lambda, double gamma, int L
              "srd: { dt = %g; rule = \"%s\"; };\n",
              Lxy, Lxy, Lz, gamma, lambda, rule);
     pl_sim_t *sim = pl_test_sim(scene, 2);
-    const double k = 2.0 * M_PI / Lz, A = 0.25, F = A * th.nu * k * k; /* target amplitude ~ A */
-    const double tau = 1.0 / (th.nu * k * k);
-    const long long n_eq = (long long)(3.0 * tau / lambda), n_avg = (long long)(ntau * tau / lambda);
-    const long long per_block = n_avg / NBLOCKS;
-    double block[MAXBLOCKS] = {0};
-    for (long long s = 0; s < n_eq + NBLOCKS * per_block; ++s) {
-        pl_real *vx = sim->fluid.v[0], *z = sim->fluid.r[2];
-#pragma omp parallel for schedule(static) num_threads(sim->nthreads)
-        for (size_t i = 0; i < sim->fluid.n; ++i) vx[i] += (pl_real)(F * lambda * sin(k * z[i]));
-        pl_test_steps(sim, 1);
-        if (s < n_eq || s % 4) continue;
-        vx = sim->fluid.v[0]; /* the sort swapped the arrays */
-        z = sim->fluid.r[2];
-        double a = 0.0;
-#pragma omp parallel for schedule(static) num_threads(sim->nthreads) reduction(+ : a)
-        for (size_t i = 0; i < sim->fluid.n; ++i) a += vx[i] * sin(k * z[i]);
-        block[(s - n_eq) / per_block] += 2.0 * a / (double)sim->fluid.n / (double)((per_block + 3) / 4);
-    }
-    double sum = 0, sum2 = 0;
-    for (int b = 0; b < NBLOCKS; ++b) {
-        double nu = F / (k * k * block[b]);
-        sum += nu;
-        sum2 += nu * nu;
-    }
-    double mean = sum / NBLOCKS, sem = sqrt((sum2 / NBLOCKS - mean * mean) / (NBLOCKS - 1));
+    double mean, sem;
+    const long long steps = pl_test_kolmogorov_nu(sim, th.nu, Lz, lambda, ntau, nblocks, &mean, &sem);
     double rel = mean / th.nu - 1.0;
     printf("viscosity %s lambda=%g gamma=%g box %dx%dx%d, %lld steps: nu = %.4f +- %.4f (%s: %.4f = kin %.4f + col "
            "%.4f), deviation %+.2f%% +- %.2f%%\n",
-           rule, lambda, gamma, Lxy, Lxy, Lz, n_eq + NBLOCKS * per_block, mean, sem,
+           rule, lambda, gamma, Lxy, Lxy, Lz, steps, mean, sem,
            pl_collision_rule(rule_index(rule))->theory_ref, th.nu, th.nu_kin, th.nu_col, 100 * rel,
            100 * sem / th.nu);
     if (full_run()) {

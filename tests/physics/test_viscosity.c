@@ -19,6 +19,7 @@
 #include <stdio.h>
 
 #include "peloid/srd_theory.h"
+#include "kolmogorov.h"
 #include "support.h"
 
 enum { NBLOCKS = 16 };
@@ -33,31 +34,8 @@ static void check_viscosity(double lambda, double gamma, int rule, double alpha_
              "srd: { dt = %g; alpha = %g; rule = \"%s\"; };\nthermostat: { type = \"rescale\"; };\n",
              Lxy, Lxy, Lz, gamma, lambda, alpha_deg, rule == PL_RULE_HECHT_AXES ? "hecht_axes" : "random_axis");
     pl_sim_t *sim = pl_test_sim(scene, 2);
-    const double k = 2.0 * M_PI / Lz, A = 0.25, F = A * th.nu * k * k; /* target amplitude ~ A */
-    const double tau = 1.0 / (th.nu * k * k);
-    const long long n_eq = (long long)(3.0 * tau / lambda), n_avg = (long long)(ntau * tau / lambda);
-    const long long per_block = n_avg / NBLOCKS;
-    double block[NBLOCKS] = {0};
-    for (long long s = 0; s < n_eq + NBLOCKS * per_block; ++s) {
-        pl_real *vx = sim->fluid.v[0], *z = sim->fluid.r[2];
-#pragma omp parallel for schedule(static) num_threads(sim->nthreads)
-        for (size_t i = 0; i < sim->fluid.n; ++i) vx[i] += (pl_real)(F * lambda * sin(k * z[i]));
-        pl_test_steps(sim, 1);
-        if (s < n_eq || s % 4) continue;
-        vx = sim->fluid.v[0]; /* the sort swapped the arrays */
-        z = sim->fluid.r[2];
-        double a = 0.0;
-#pragma omp parallel for schedule(static) num_threads(sim->nthreads) reduction(+ : a)
-        for (size_t i = 0; i < sim->fluid.n; ++i) a += vx[i] * sin(k * z[i]);
-        block[(s - n_eq) / per_block] += 2.0 * a / (double)sim->fluid.n / (double)((per_block + 3) / 4);
-    }
-    double sum = 0, sum2 = 0;
-    for (int b = 0; b < NBLOCKS; ++b) {
-        double nu = F / (k * k * block[b]);
-        sum += nu;
-        sum2 += nu * nu;
-    }
-    double mean = sum / NBLOCKS, sem = sqrt((sum2 / NBLOCKS - mean * mean) / (NBLOCKS - 1));
+    double mean, sem;
+    pl_test_kolmogorov_nu(sim, th.nu, Lz, lambda, ntau, NBLOCKS, &mean, &sem);
     double rel = mean / th.nu - 1.0;
     printf("viscosity rule=%d lambda=%g gamma=%g alpha=%g box %dx%dx%d: nu = %.4f +- %.4f (PL: %.4f = kin %.4f + col "
            "%.4f), deviation %+.2f%% +- %.2f%%\n",
