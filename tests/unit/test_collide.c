@@ -10,47 +10,9 @@
 #include "peloid/srd_kernels.h"
 #include "peloid/srd_rules.h"
 
-typedef struct {
-    pl_fluid_t f;
-    pl_grid_t g;
-    uint32_t *hist, *start;
-    double *block;
-    int nthreads;
-} box_t;
+#include "srd_box.h"
 
-static void make_box(box_t *b, int L, double gamma, int nthreads)
-{
-    pl_err_t err;
-    int Ls[3] = {L, L, L};
-    pl_grid_init(&b->g, Ls, (const int[3]){PL_WALLS_NONE, PL_WALLS_NONE, PL_WALLS_NONE});
-    size_t n = (size_t)(gamma * L * L * L);
-    b->nthreads = nthreads;
-    cr_assert_eq(pl_fluid_create(n, 0, nthreads, &b->f, &err), 0);
-    for (size_t i = 0; i < n; ++i) {
-        pl_rand4_t r = pl_rng_uniform4(99, 1, 0, i, 0), q = pl_rng_uniform4(99, 2, 0, i, 0);
-        for (int d = 0; d < 3; ++d) {
-            b->f.r[d][i] = (pl_real)(r.u[d] * L);
-            b->f.v[d][i] = (pl_real)(2.0 * q.u[d] - 1.0 + 0.3 * d); /* a mean flow too */
-        }
-    }
-    b->hist = pl_alloc((size_t)nthreads * b->g.ncells * sizeof(uint32_t), nthreads);
-    b->start = pl_alloc((b->g.ncells + 1) * sizeof(uint32_t), nthreads);
-    b->block = pl_alloc(2 * (b->g.ncells / PL_CELL_BLOCK + 1) * sizeof(double), nthreads);
-    pl_grid_draw_shift(&b->g, 5, 0, 1);
-    pl_srd_bin(&b->f, &b->g, b->hist, nthreads);
-    pl_srd_sort(&b->f, b->hist, b->start, b->g.ncells, nthreads);
-    pl_fluid_swap(&b->f);
-}
-
-static void free_box(box_t *b)
-{
-    pl_fluid_free(&b->f);
-    pl_free(b->hist);
-    pl_free(b->start);
-    pl_free(b->block);
-}
-
-static void cell_sums(const box_t *b, size_t c, double P[3], double *K, double *scale)
+static void cell_sums(const pl_test_box_t *b, size_t c, double P[3], double *K, double *scale)
 {
     P[0] = P[1] = P[2] = *K = *scale = 0.0;
     for (size_t i = b->start[c]; i < b->start[c + 1]; ++i)
@@ -64,8 +26,8 @@ static void cell_sums(const box_t *b, size_t c, double P[3], double *K, double *
 
 static void check_conservation(int rule, int heyes)
 {
-    box_t b;
-    make_box(&b, 6, 5.0, 2);
+    pl_test_box_t b;
+    pl_test_box_make(&b, 6, 5.0, 2);
     size_t nc = b.g.ncells;
     double (*P0)[3] = malloc(nc * sizeof *P0), *K0 = malloc(nc * sizeof *K0);
     for (size_t c = 0; c < nc; ++c) {
@@ -97,7 +59,7 @@ static void check_conservation(int rule, int heyes)
     if (heyes) cr_assert_gt(changed_K, (int)nc / 10, "the thermostat should change many cells' energy");
     free(P0);
     free(K0);
-    free_box(&b);
+    pl_test_box_free(&b);
 }
 
 Test(collide, random_axis_conserves_cell_momentum_and_energy) { check_conservation(PL_RULE_RANDOM_AXIS, 0); }
@@ -111,8 +73,8 @@ Test(collide, heyes_keeps_cell_momentum_hecht) { check_conservation(PL_RULE_HECH
  * <cos> = cos a + (1 - cos a)/3.  Tolerance: 5 standard errors of the mean. */
 static void check_angle(int rule, double alpha_deg)
 {
-    box_t b;
-    make_box(&b, 8, 2.0, 1);
+    pl_test_box_t b;
+    pl_test_box_make(&b, 8, 2.0, 1);
     double ca = cos(alpha_deg * M_PI / 180.0);
     size_t nc = b.g.ncells;
     double sum = 0, sum2 = 0;
@@ -156,7 +118,7 @@ static void check_angle(int rule, double alpha_deg)
     double mean = sum / (double)cnt, sem = sqrt((sum2 / (double)cnt - mean * mean) / (double)cnt);
     double expect = ca + (1.0 - ca) / 3.0;
     cr_assert(fabs(mean - expect) < 5.0 * sem, "<cos> = %.5f +- %.5f, expected %.5f", mean, sem, expect);
-    free_box(&b);
+    pl_test_box_free(&b);
 }
 
 Test(collide, random_axis_angle_statistics) { check_angle(PL_RULE_RANDOM_AXIS, 130.0); }

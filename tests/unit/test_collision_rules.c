@@ -30,50 +30,12 @@
 #include "peloid/scene.h"
 #include "peloid/srd_kernels.h"
 
+#include "srd_box.h"
+
 /* round-off of a sum of a cell's terms in pl_real */
 #define TOL (64.0 * (sizeof(pl_real) == sizeof(float) ? (double)FLT_EPSILON : DBL_EPSILON))
 
-typedef struct {
-    pl_fluid_t f;
-    pl_grid_t g;
-    uint32_t *hist, *start;
-    double *block;
-    int nthreads;
-} box_t;
-
-static void make_box(box_t *b, int L, double gamma, int nthreads)
-{
-    pl_err_t err;
-    int Ls[3] = {L, L, L};
-    pl_grid_init(&b->g, Ls, (const int[3]){PL_WALLS_NONE, PL_WALLS_NONE, PL_WALLS_NONE});
-    size_t n = (size_t)(gamma * L * L * L);
-    b->nthreads = nthreads;
-    cr_assert_eq(pl_fluid_create(n, 0, nthreads, &b->f, &err), 0);
-    for (size_t i = 0; i < n; ++i) {
-        pl_rand4_t r = pl_rng_uniform4(99, 1, 0, i, 0), q = pl_rng_uniform4(99, 2, 0, i, 0);
-        for (int d = 0; d < 3; ++d) {
-            b->f.r[d][i] = (pl_real)(r.u[d] * L);
-            b->f.v[d][i] = (pl_real)(2.0 * q.u[d] - 1.0 + 0.3 * d); /* a mean flow too */
-        }
-    }
-    b->hist = pl_alloc((size_t)nthreads * b->g.ncells * sizeof(uint32_t), nthreads);
-    b->start = pl_alloc((b->g.ncells + 1) * sizeof(uint32_t), nthreads);
-    b->block = pl_alloc(2 * (b->g.ncells / PL_CELL_BLOCK + 1) * sizeof(double), nthreads);
-    pl_grid_draw_shift(&b->g, 5, 0, 1); /* cells straddle the periodic boundary */
-    pl_srd_bin(&b->f, &b->g, b->hist, nthreads);
-    pl_srd_sort(&b->f, b->hist, b->start, b->g.ncells, nthreads);
-    pl_fluid_swap(&b->f);
-}
-
-static void free_box(box_t *b)
-{
-    pl_fluid_free(&b->f);
-    pl_free(b->hist);
-    pl_free(b->start);
-    pl_free(b->block);
-}
-
-static void collide(box_t *b, const pl_collision_rule_t *rule, uint64_t step)
+static void collide(pl_test_box_t *b, const pl_collision_rule_t *rule, uint64_t step)
 {
     pl_collide_params_t p = {0};
     p.rule = rule->srd_rotation >= 0 ? rule->srd_rotation : 0;
@@ -88,7 +50,7 @@ static void collide(box_t *b, const pl_collision_rule_t *rule, uint64_t step)
 /* Momentum P, angular momentum L about the centre of mass (positions
  * unwrapped to the cell's first particle), and the scales |v| and |r||v|
  * summed, of cell c. */
-static void cell_moments(const box_t *b, size_t c, double P[3], double L[3], double *sp, double *sl)
+static void cell_moments(const pl_test_box_t *b, size_t c, double P[3], double L[3], double *sp, double *sl)
 {
     const size_t s = b->start[c], e = b->start[c + 1];
     double R[3] = {0, 0, 0}, (*r)[3] = malloc((e - s + 1) * sizeof *r);
@@ -116,8 +78,8 @@ static void cell_moments(const box_t *b, size_t c, double P[3], double L[3], dou
 
 static void check_row(const pl_collision_rule_t *rule)
 {
-    box_t b;
-    make_box(&b, 6, 5.0, 2);
+    pl_test_box_t b;
+    pl_test_box_make(&b, 6, 5.0, 2);
     const size_t nc = b.g.ncells;
     double (*P0)[3] = malloc(nc * sizeof *P0), (*L0)[3] = malloc(nc * sizeof *L0);
     for (size_t c = 0; c < nc; ++c) {
@@ -149,7 +111,7 @@ static void check_row(const pl_collision_rule_t *rule)
                      big, cells3);
     free(P0);
     free(L0);
-    free_box(&b);
+    pl_test_box_free(&b);
 }
 
 Test(collision_rules, every_row_conserves_momentum_and_angular_momentum_as_it_says)
@@ -166,22 +128,22 @@ Test(collision_rules, every_row_conserves_momentum_and_angular_momentum_as_it_sa
 Test(collision_rules, same_bits_at_1_2_3_threads)
 {
     for (int k = 0; pl_collision_rule(k); ++k) {
-        box_t b[3];
+        pl_test_box_t b[3];
         for (int t = 0; t < 3; ++t) {
-            make_box(&b[t], 6, 5.0, t + 1);
+            pl_test_box_make(&b[t], 6, 5.0, t + 1);
             collide(&b[t], pl_collision_rule(k), 7);
         }
         for (int t = 1; t < 3; ++t)
             for (int d = 0; d < 3; ++d)
                 cr_assert_eq(memcmp(b[t].f.v[d], b[0].f.v[d], b[0].f.n * sizeof(pl_real)), 0,
                              "%s: %d threads differ from 1", pl_collision_rule(k)->name, t + 1);
-        for (int t = 0; t < 3; ++t) free_box(&b[t]);
+        for (int t = 0; t < 3; ++t) pl_test_box_free(&b[t]);
     }
 }
 
 /* A new grid shift and sort before collision s, as a run would (the rigid
  * rotation that +a keeps only relaxes when cells change members). */
-static void reshuffle(box_t *b, uint64_t s)
+static void reshuffle(pl_test_box_t *b, uint64_t s)
 {
     pl_grid_draw_shift(&b->g, 5, s, 1);
     pl_srd_bin(&b->f, &b->g, b->hist, b->nthreads);
@@ -196,8 +158,8 @@ Test(collision_rules, a_thermostat_rule_sets_the_temperature)
     for (int k = 0; pl_collision_rule(k); ++k) {
         const pl_collision_rule_t *rule = pl_collision_rule(k);
         if (!rule->thermostat) continue;
-        box_t b;
-        make_box(&b, 8, 5.0, 1); /* one thread: 4 parallel regions a collision cost more than they save here */
+        pl_test_box_t b;
+        pl_test_box_make(&b, 8, 5.0, 1); /* one thread: 4 parallel regions a collision cost more than they save here */
         double est[K], mean = 0.0, var = 0.0, dof_mean = 0.0, blk[NB] = {0};
         for (int s = 0; s < BURN + K; ++s) {
             reshuffle(&b, (uint64_t)s + 1);
@@ -226,7 +188,7 @@ Test(collision_rules, a_thermostat_rule_sets_the_temperature)
         if (!rule->angular)
             cr_assert_lt(fabs(var / var_th - 1.0), 4.0 * sqrt(2.0 / (K - 1)), "%s: variance %.3g vs %.3g",
                          rule->name, var, var_th);
-        free_box(&b);
+        pl_test_box_free(&b);
     }
 }
 
