@@ -112,7 +112,10 @@ typedef struct {
  * theory (d_col_theory) with its stated error; STORED the shipped set or the
  * cache, else the theory with its stated error (never a run: check's
  * default, so that a scene is checked in seconds). */
-enum { PL_CALIBRATE_AUTO = 0, PL_CALIBRATE_NEVER = 1, PL_CALIBRATE_ALWAYS = 2, PL_CALIBRATE_STORED = 3 };
+enum { PL_CALIBRATE_AUTO = 0, PL_CALIBRATE_NEVER = 1, PL_CALIBRATE_ALWAYS = 2, PL_CALIBRATE_STORED = 3,
+       PL_CALIBRATE_NMODES };
+/* Its --calibrate word ("?" for none of them). */
+const char *pl_calibrate_mode_name(int mode);
 enum { PL_CALSRC_NONE = 0, PL_CALSRC_SHIPPED, PL_CALSRC_CACHE, PL_CALSRC_RUN, PL_CALSRC_THEORY };
 
 /* ---- coarse-graining choices ------------------------------------------ */

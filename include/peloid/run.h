@@ -86,8 +86,7 @@ typedef struct {
     double progress_s; /* > 0: seconds between progress lines off a terminal */
 } pl_calibrate_opts_t;
 /* "never", "auto", "always", "stored" -> PL_CALIBRATE_*; -1 for anything else. */
-int pl_calibrate_mode_parse(const char *s, int *mode);
-const char *pl_calibrate_mode_name(int mode);
+int pl_calibrate_mode_parse(const char *s, int *mode); /* names: pl_calibrate_mode_name (mapping.h) */
 /* The colloid D of the scene's model fluid and colloid, from
  * shipped_dir/calibration-<key>.json, else the user's cache, else a
  * calibration run (nthreads), cached; with PL_CALIBRATE_ALWAYS a calibration

@@ -59,12 +59,12 @@ static const char *source_name(int s)
     return s >= 0 && s < (int)(sizeof SOURCE_NAMES / sizeof SOURCE_NAMES[0]) ? SOURCE_NAMES[s] : "?";
 }
 
-static const char *mode_name(int mode)
+const char *pl_calibrate_mode_name(int mode)
 {
-    return mode == PL_CALIBRATE_NEVER    ? "never"
-           : mode == PL_CALIBRATE_ALWAYS ? "always"
-           : mode == PL_CALIBRATE_STORED ? "stored"
-                                         : "auto";
+    static const char *const names[PL_CALIBRATE_NMODES] = {[PL_CALIBRATE_AUTO] = "auto", [PL_CALIBRATE_NEVER] = "never",
+                                                           [PL_CALIBRATE_ALWAYS] = "always",
+                                                           [PL_CALIBRATE_STORED] = "stored"};
+    return mode >= 0 && mode < PL_CALIBRATE_NMODES ? names[mode] : "?";
 }
 
 double pl_mapping_t0_relative_error(const pl_mapping_t *m)
@@ -91,7 +91,7 @@ void pl_mapping_calibration_line(const pl_mapping_t *m, char *buf, size_t n)
                                                   "measures it here" : "");
     else
         snprintf(buf, n, "calibration: --calibrate %s: the colloid D measured, %.5g +- %.2g a0^2/t0 (relative "
-                 "error %.2g), %s %s", mode_name(c->mode), c->d_inf, c->d_inf_se, c->d_inf_se / c->d_inf,
+                 "error %.2g), %s %s", pl_calibrate_mode_name(c->mode), c->d_inf, c->d_inf_se, c->d_inf_se / c->d_inf,
                  c->source == PL_CALSRC_RUN ? "run now, stored in" : "read from the", c->source == PL_CALSRC_RUN
                  ? (c->cache[0] ? c->cache : "nowhere") : c->source == PL_CALSRC_SHIPPED ? "shipped set" : "cache");
 }
@@ -102,7 +102,7 @@ json_t *pl_mapping_calibration_json(const pl_mapping_t *m)
     if (c->source == PL_CALSRC_NONE) return NULL;
     json_t *o = json_object();
     const int th = c->source == PL_CALSRC_THEORY;
-    json_object_set_new(o, "mode", json_string(mode_name(c->mode)));
+    json_object_set_new(o, "mode", json_string(pl_calibrate_mode_name(c->mode)));
     json_object_set_new(o, "source", json_string(source_name(c->source)));
     json_object_set_new(o, "d_a0_2_t0", json_real(m->d_col_sim));
     if (th && !isfinite(c->theory_error)) { /* no shipped calibration of this coupling */

@@ -46,23 +46,14 @@ int pl_calibrate_shipped(int k, int *method, const char **key, const char **scen
     return 0;
 }
 
-static const char *const MODE_NAMES[] = {[PL_CALIBRATE_AUTO] = "auto", [PL_CALIBRATE_NEVER] = "never",
-                                         [PL_CALIBRATE_ALWAYS] = "always", [PL_CALIBRATE_STORED] = "stored"};
-enum { NMODES = sizeof MODE_NAMES / sizeof MODE_NAMES[0] };
-
 int pl_calibrate_mode_parse(const char *s, int *mode)
 {
-    for (int k = 0; s && k < NMODES; ++k)
-        if (!strcmp(s, MODE_NAMES[k])) {
+    for (int k = 0; s && k < PL_CALIBRATE_NMODES; ++k)
+        if (!strcmp(s, pl_calibrate_mode_name(k))) {
             *mode = k;
             return 0;
         }
     return -1;
-}
-
-const char *pl_calibrate_mode_name(int mode)
-{
-    return mode >= 0 && mode < NMODES ? MODE_NAMES[mode] : "?";
 }
 
 void pl_calibrate_theory(const pl_scene_t *sc, pl_mapping_calibration_t *cal)
