@@ -162,7 +162,7 @@ run: $(BIN)
 NPROC := $(shell nproc 2>/dev/null || echo 1)
 check: | deps
 	@$(MAKE) --no-print-directory -j$(NPROC) check-build
-	@$(MAKE) --no-print-directory check-unit check-cli check-asan
+	@$(MAKE) --no-print-directory -j$(NPROC) --output-sync=target check-suites
 	@echo "make check: all suites passed"
 check-build: $(CHECK_BIN) $(BIN)
 	@$(MAKE) --no-print-directory $(ASAN_MAKE) $(patsubst %,build-asan/tests/%,$(ASAN_TESTS)) build-asan/bin/peloid
@@ -219,6 +219,27 @@ check-asan: | deps
 	@set -e; for t in $(ASAN_TESTS); do s=$$(date +%s); \
 	  echo "== asan $$t"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$$t --jobs 1; \
 	  echo "   (asan $$t: $$(( $$(date +%s) - s )) s)"; done
+	@echo "== asan bin/peloid on tests/bad_scenes"
+	@ASAN_OPTIONS=detect_leaks=1 bash tests/support/bad_scenes.sh build-asan/bin/peloid
+
+# make check runs its suites $(NPROC) at a time (most use one core), each
+# suite's output printed whole when it ends (--output-sync); the longest
+# first, so that the lanes end together.  check-unit, check-cli and
+# check-asan run the same suites one after the other.
+SLOW_SUITES := tests/cli/studies_reduced.sh tests/cli/observers.sh tests/cli/cli.sh tests/cli/sweep.sh \
+               tests/cli/stress.sh tests/cli/regression.sh
+CHECK_RUNS := $(patsubst %,check-run/%,$(SLOW_SUITES) $(filter-out $(SLOW_SUITES),$(CLI_SUITES)) $(CHECK_BIN)) \
+              $(patsubst %,check-run-asan/%,$(ASAN_TESTS)) check-run-asan-bad-scenes
+.PHONY: check-suites check-run-asan-bad-scenes
+check-suites: $(CHECK_RUNS)
+check-run/%.sh: $(BIN)
+	@s=$$(date +%s); bash $*.sh ./$(BIN); echo "   ($*.sh: $$(( $$(date +%s) - s )) s)"
+check-run/$(BUILD)/tests/%: $(BUILD)/tests/%
+	@echo "== $<"; s=$$(date +%s); $< --jobs 1; echo "   ($<: $$(( $$(date +%s) - s )) s)"
+check-run-asan/%:
+	@s=$$(date +%s); echo "== asan $*"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$* --jobs 1; \
+	  echo "   (asan $*: $$(( $$(date +%s) - s )) s)"
+check-run-asan-bad-scenes:
 	@echo "== asan bin/peloid on tests/bad_scenes"
 	@ASAN_OPTIONS=detect_leaks=1 bash tests/support/bad_scenes.sh build-asan/bin/peloid
 
