@@ -82,14 +82,17 @@ void pl_mapping_hecht_times(const pl_mapping_system_t *s, pl_mapping_hecht_times
 /* ---- the colloid diffusion a coupling realises ------------------------- */
 /* A calibration run of the model (src/plan/calibrate.c): n_colloids free
  * colloids in a periodic cube of `box` cells, `steps` collision steps; the
- * MSD slope gives d_box +- d_box_se (a0^2/t0, kT = 1), and the periodic
- * images' correction (Hasimoto 1959: + 2.837 kT / (6 pi eta L)) the
- * unbounded d_inf, which sets t0 when time is matched on diffusion.
+ * MSD slope gives d_box +- d_box_se (a0^2/t0, kT = 1); the hydrodynamic
+ * tail the slope's lags miss in the box (pl_srd_tail_missed) gives the box's
+ * long-time D, and the periodic images' correction (Hasimoto 1959: + 2.837
+ * kT / (6 pi eta L)) the unbounded d_inf, which sets t0 when time is matched
+ * on diffusion.
  * d_inf = 0: none (the theory of the coupling is used, unverified). */
 typedef struct {
     double d_inf, d_inf_se;   /* a0^2/t0 */
     double d_box, d_box_se;   /* as measured in the calibration box */
-    double hasimoto;          /* the correction added, a0^2/t0 */
+    double hasimoto;          /* the periodic images' correction added, a0^2/t0 */
+    double tail;              /* the hydrodynamic tail beyond the slope's lags, added (pl_srd_tail_missed) */
     double d_theory;          /* the coupling's theory it replaces, a0^2/t0 */
     double phi;               /* colloid volume fraction of the calibration box */
     long long steps;

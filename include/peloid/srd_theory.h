@@ -58,6 +58,21 @@ double pl_srd_xi_hasimoto(double xi_inf, double eta, double L);
  * colloid loses in a periodic cube of side L (times kT: the lost D). */
 double pl_srd_hasimoto_mobility(double eta, double L);
 
+/* The hydrodynamic long-time tail a colloid's mean-squared displacement
+ * misses at finite lags in a periodic cube of side L (Alder & Wainwright
+ * 1970; Hansen & McDonald Sec. 8.6): each axis of the velocity
+ * autocorrelation decays through the fluid's transverse modes k = 2 pi n / L
+ * (n != 0, zero total momentum) as
+ *   C(s) = (2/3) kT / (rho L^3) sum_k exp(-a k^2 s),   a = nu + D,
+ * which is (2/3) (kT / rho) [4 pi a s]^-3/2 for L -> infinity.  The slope of
+ * the MSD between lags t1 < t2 is the mean of D(t) = int_0^t C over [t1, t2];
+ * it lies below the box's long-time D by the mean of int_t^inf C ds:
+ *   (2/3) kT / (rho L^3) sum_k (e^{-a k^2 t1} - e^{-a k^2 t2}) / (a^2 k^4 (t2 - t1)).
+ * This is that amount (the box's long-time D minus the slope; Hasimoto's
+ * correction then takes the box's long-time D to the unbounded one).  rho:
+ * the fluid's mass density (gamma m_f / a0^3). */
+double pl_srd_tail_missed(double kT, double rho, double a, double L, double t1, double t2);
+
 /* pl_srd_theory of a scene's fluid: its fluid.density, srd.rule, srd.alpha,
  * srd.dt and kT (pl_scene_kT). */
 struct pl_scene;

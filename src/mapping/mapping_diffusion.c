@@ -137,9 +137,9 @@ void pl_mapping_diffusion_print(const pl_mapping_t *m, FILE *f)
             m->cg.match == PL_MATCH_DIFFUSION && m->cg.srd_dt <= 0 ? " (time matched on it)" : "");
     if (c->d_inf > 0)
         fprintf(f, "    calibration: %d colloid(s) in %d^3 periodic cells (phi %.3g), %lld steps: D_box = %.5g +- %.2g, "
-                   "+ %.4g periodic images (Hasimoto); the coupling's theory 1/xi = %.5g (measured/theory %.3g); %s "
-                   "%s\n",
-                c->n_colloids, c->box, c->phi, c->steps, c->d_box, c->d_box_se, c->hasimoto, c->d_theory,
+                   "+ %.4g hydrodynamic tail beyond the lags, + %.4g periodic images (Hasimoto); the coupling's theory "
+                   "1/xi = %.5g (measured/theory %.3g); %s %s\n",
+                c->n_colloids, c->box, c->phi, c->steps, c->d_box, c->d_box_se, c->tail, c->hasimoto, c->d_theory,
                 c->d_inf / c->d_theory, c->wall_s > 0 ? "run now, cached in" : "read from", c->cache);
     char line[800];
     pl_mapping_calibration_line(m, line, sizeof line);
@@ -173,6 +173,7 @@ json_t *pl_mapping_diffusion_json(const pl_mapping_t *m)
         json_object_set_new(k, "d_inf_a0_2_t0", json_real(c->d_inf));
         json_object_set_new(k, "d_inf_se_a0_2_t0", json_real(c->d_inf_se));
         json_object_set_new(k, "d_box_a0_2_t0", json_real(c->d_box));
+        json_object_set_new(k, "tail_a0_2_t0", json_real(c->tail));
         json_object_set_new(k, "hasimoto_a0_2_t0", json_real(c->hasimoto));
         json_object_set_new(k, "colloids", json_integer(c->n_colloids));
         json_object_set_new(k, "box_cells", json_integer(c->box));

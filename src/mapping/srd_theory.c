@@ -91,6 +91,24 @@ double pl_srd_xi_hasimoto(double xi_inf, double eta, double L)
     return 1.0 / (1.0 / xi_inf - pl_srd_hasimoto_mobility(eta, L));
 }
 
+double pl_srd_tail_missed(double kT, double rho, double a, double L, double t1, double t2)
+{
+    if (!(t2 > t1 && t1 > 0 && a > 0 && L > 0 && rho > 0 && isfinite(L))) return 0.0;
+    /* the terms fall as e^{-a k^2 t1}: |n| up to where that is below e^-40 */
+    const double k1 = 2.0 * PL_PI / L;
+    const int nmax = (int)ceil(sqrt(40.0 / (a * t1)) / k1);
+    double sum = 0.0;
+    for (int i = -nmax; i <= nmax; ++i)
+        for (int j = -nmax; j <= nmax; ++j)
+            for (int l = -nmax; l <= nmax; ++l) {
+                const int n2 = i * i + j * j + l * l;
+                if (n2 == 0) continue;
+                const double x = a * k1 * k1 * n2; /* a k^2 */
+                sum += (exp(-x * t1) - exp(-x * t2)) / (x * x);
+            }
+    return 2.0 / 3.0 * kT / (rho * L * L * L) * sum / (t2 - t1);
+}
+
 void pl_srd_theory_of(const struct pl_scene *sc, pl_srd_theory_t *out)
 {
     pl_srd_theory(sc->fluid.density, sc->srd.rule, sc->srd.alpha_deg * PL_PI / 180.0, sc->srd.dt, pl_scene_kT(sc),

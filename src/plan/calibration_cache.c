@@ -6,10 +6,14 @@
  * a device or /dev/zero where an entry should be cannot hang or exhaust a
  * run), and an entry is used only when it is the measurement of this
  * parameter set: the plan its key hashes (box, steps, colloids), the
- * numbers the code derives (phi, the periodic images' D, 1 - c phi) to
- * READ_RTOL, d_inf = (d_box + hasimoto) / concentration / kT (as cal_run
- * computes it) to READ_RTOL, a standard error below the value, and d_inf
- * within THEORY_FACTOR of the coupling's theory D either way.
+ * numbers the code derives (phi, the periodic images' D, the hydrodynamic
+ * tail beyond the lags, 1 - c phi) to READ_RTOL, d_inf = (d_box + tail +
+ * hasimoto) / concentration / kT (as cal_run computes it) to READ_RTOL, a
+ * standard error below the value, and d_inf within THEORY_FACTOR of the
+ * coupling's theory D either way.  An entry written before the tail was
+ * added (no "tail": d_inf = (d_box + hasimoto) / concentration / kT) is
+ * checked as written, then given the tail and its d_inf derived again: its
+ * measurement, d_box, is the same.
  *
  * Locking: flock(2) on "<entry>.lock", which the kernel releases when its
  * holder exits, however it ends.  The holder records "pid P host H since T"
@@ -37,6 +41,7 @@
 
 #include "calibration_cache.h"
 #include "peloid/io.h"
+#include "peloid/srd_theory.h"
 
 enum { CACHE_MAX_BYTES = 1 << 16 };
 /* The measured D of valid scenes lies between 0.85 and ~800 times the
@@ -97,6 +102,11 @@ int pl_calcache_dir_prepare(const char *dir, char *why, size_t nwhy)
     return 0;
 }
 
+double pl_calcache_tail(const pl_calcache_expect_t *e, double d_box)
+{
+    return pl_srd_tail_missed(e->kT, e->rho, e->nu + d_box / e->kT, (double)e->box, e->t1, e->t2);
+}
+
 /* |a - b| <= READ_RTOL |b| */
 static int near(double a, double b) { return fabs(a - b) <= READ_RTOL * fabs(b); }
 
@@ -147,11 +157,20 @@ static int entry_check(json_t *j, const pl_calcache_expect_t *e, pl_mapping_cali
             snprintf(why, nwhy, "'%s' = %.17g is not the %.17g this parameter set gives", name[k], got[k], ref[k]);
             return -1;
         }
-    const double d = (c->d_box + c->hasimoto) / c->concentration / e->kT;
-    if (!near(c->d_inf, d)) {
-        snprintf(why, nwhy, "'d_inf' = %.17g is not (d_box + hasimoto) / concentration = %.17g", c->d_inf, d);
+    const double tail = pl_calcache_tail(e, c->d_box);
+    v = json_object_get(j, "tail"); /* absent: an entry from before the tail (checked as written, then derived) */
+    if (v && !(json_is_number(v) && near(json_number_value(v), tail))) {
+        snprintf(why, nwhy, "'tail' is not the %.17g this parameter set gives", tail);
         return -1;
     }
+    const double d = (c->d_box + (v ? tail : 0.0) + c->hasimoto) / c->concentration / e->kT;
+    if (!near(c->d_inf, d)) {
+        snprintf(why, nwhy, "'d_inf' = %.17g is not (d_box%s + hasimoto) / concentration = %.17g", c->d_inf,
+                 v ? " + tail" : "", d);
+        return -1;
+    }
+    c->tail = tail;
+    c->d_inf = (c->d_box + tail + c->hasimoto) / c->concentration / e->kT;
     return 0;
 }
 
@@ -208,6 +227,7 @@ int pl_calcache_write(const char *path, const pl_mapping_calibration_t *c, const
     bad = bad || json_object_set_new(j, "n_colloids", json_integer(c->n_colloids)) ||
           json_object_set_new(j, "box", json_integer(c->box)) || json_object_set_new(j, "steps", json_integer(c->steps));
     if (c->concentration != 1.0) bad = bad || json_object_set_new(j, "concentration", json_real(c->concentration));
+    bad = bad || json_object_set_new(j, "tail", json_real(c->tail));
     char *text = bad ? NULL : json_dumps(j, JSON_INDENT(2) | JSON_REAL_PRECISION(17));
     json_decref(j);
     if (!text) {

@@ -20,9 +20,15 @@ enum { PL_CALCACHE_VERSION = 1 }; /* the "version" of an entry, hashed into its 
  * (phi, the periodic images' D, 1 - c phi, kT) and the theory's D. */
 typedef struct {
     double kT, d_theory, hasimoto, phi, concentration;
+    double nu, rho, t1, t2; /* the fluid's kinematic viscosity and mass density, the lags of the slope (t0) */
     int box, n_colloids;
     long long steps;
 } pl_calcache_expect_t;
+
+/* The hydrodynamic tail the slope over the lags [t1, t2] misses in the
+ * calibration box (pl_srd_tail_missed with a = nu + d_box / kT): cal_run adds
+ * it, the reader checks it. */
+double pl_calcache_tail(const pl_calcache_expect_t *e, double d_box);
 
 /* Results of pl_calcache_read and pl_calcache_lock. */
 enum { PL_CALCACHE_OK = 0, PL_CALCACHE_ABSENT = 1, PL_CALCACHE_BAD = 2 };

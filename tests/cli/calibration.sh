@@ -71,7 +71,7 @@ f=$(ls "$T"/cq/calibration-*.json 2>/dev/null | head -1)
 if [ -n "$f" ] && [ -f "$ROOT/calibration/$(basename "$f")" ] && $PY - "$f" "$ROOT/calibration/$(basename "$f")" <<'PY'
 import json, sys
 a, b = (json.load(open(p)) for p in sys.argv[1:])
-keys = ["d_inf", "d_inf_se", "d_box", "d_box_se", "hasimoto", "n_colloids", "box", "steps"]
+keys = ["d_inf", "d_inf_se", "d_box", "d_box_se", "tail", "hasimoto", "n_colloids", "box", "steps"]
 sys.exit(0 if all(a[k] == b[k] for k in keys) else 1)
 PY
 then ok "calibration/$(basename "$f") (shipped) = a fresh calibration, bit for bit"

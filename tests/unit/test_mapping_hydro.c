@@ -14,7 +14,9 @@
  *
  * Hard core: PL's sigma_cc rule at sigma_cf = R, eps = 2.5 kT, n = 24 gives
  * sigma_cc = 2^{7/6} R (Sec. III.C.1), so phi_c = phi 2^{1/2}; DLVO beside
- * that WCA is refused naming the key that switched it on. */
+ * that WCA is refused naming the key that switched it on.
+ *
+ * The hydrodynamic tail of the calibration: see tail_unbounded below. */
 #include <jansson.h>
 #include <math.h>
 #include <string.h>
@@ -23,6 +25,7 @@
 
 #include "peloid/mapping.h"
 #include "peloid/scene.h"
+#include "peloid/srd_theory.h"
 
 #define REL_EQ(a, b) (fabs((a) / (b) - 1.0) <= 1e-9)
 
@@ -229,4 +232,44 @@ Test(hydro, potential_dlvo_refused)
                                       "12.0e-6]; };\ncoarse_graining: { coupling = \"potential\"; };\n",
                                       "p.cfg", &scene, &err),
                  0, "%s", err.msg);
+}
+
+/* The hydrodynamic tail a calibration's MSD slope misses in its periodic box
+ * (pl_srd_tail_missed, src/plan/calibrate.c).  Independent of its lattice
+ * sum: (1) where the box is much wider than the fluid's diffusion length
+ * sqrt(a t2), the unbounded tail (2/3)(kT/rho)(4 pi a)^-3/2 4 / (sqrt t1 +
+ * sqrt t2) exceeds it by the box's cut-off, which is Hasimoto's periodic
+ * images' share kT 2.837297 / (6 pi rho a L) (a = nu: eta = rho a), up to
+ * O(a t / L^2): Richardson's (4 c(2L) - c(L)) / 3 of c = (unbounded - box) 6
+ * pi rho a L / kT is 2.837297 to 1e-3 (measured 2.8373 at L = 16, 32; the
+ * O(L^-2) term 3 % at L = 16); a factor 2/3 -> 1 (all three polarisations),
+ * a lost k = 0 exclusion or a wrong k spacing misses by far more.  (2) Once
+ * every mode has decayed (t1 = 40 L^2 / (4 pi^2 a)) nothing is missed (below
+ * 1e-12 of the t1 = 1 value), and the tail is linear in kT / rho. */
+static double tail_unbounded(double a, double t1, double t2)
+{
+    return 2.0 / 3.0 * pow(4.0 * M_PI * a, -1.5) * 4.0 / (sqrt(t1) + sqrt(t2));
+}
+
+Test(hydro, tail_is_hasimoto_in_a_wide_box)
+{
+    const double a = 1.0, t1 = 1.0, t2 = 3.0, H = 2.837297;
+    double c[2];
+    for (int k = 0; k < 2; ++k) {
+        const double L = 32.0 * (k + 1);
+        c[k] = (tail_unbounded(a, t1, t2) - pl_srd_tail_missed(1.0, 1.0, a, L, t1, t2)) * 6.0 * M_PI * a * L;
+    }
+    const double rich = (4.0 * c[1] - c[0]) / 3.0;
+    cr_expect(fabs(rich / H - 1.0) < 1e-3, "Richardson limit %.6f (L 32: %.6f, L 64: %.6f) vs Hasimoto %.6f", rich,
+              c[0], c[1], H);
+}
+
+Test(hydro, tail_decays_and_scales)
+{
+    const double L = 16.0, a = 0.5, late = 40.0 * L * L / (4.0 * M_PI * M_PI * a);
+    const double t = pl_srd_tail_missed(1.0, 10.0, a, L, 1.0, 3.0);
+    cr_expect(t > 0.0);
+    cr_expect(pl_srd_tail_missed(1.0, 10.0, a, L, late, 3.0 * late) < 1e-12 * t);
+    cr_expect(REL_EQ(pl_srd_tail_missed(2.0, 5.0, a, L, 1.0, 3.0), 4.0 * t));
+    cr_expect_eq(pl_srd_tail_missed(1.0, 10.0, a, L, 3.0, 1.0), 0.0); /* t2 <= t1: none */
 }
