@@ -5,20 +5,24 @@
 # 16^3 periodic cells; src/plan/calibrate.c), run here as an ordinary model
 # scene for PL_CALW_SEEDS seeds (6) x PL_CALW_STEPS steps (40000: 10000 t0),
 # colloids.h5 read with h5py alone:
-#  1. D is flat across lag windows once the hydrodynamic tail the window
-#     misses is added (pl_srd_tail_missed): these runs' slope over the
-#     calibration's window [6, 18] t0 plus the shipped calibration's tail
-#     agrees with their long-lag slopes over [50, 150] and [150, 450] t0
-#     (where the box's modes have decayed: the tail left is below 1e-5)
-#     within 3 combined SE, and so does the shipped calibration's d_box +
-#     tail (its SE 1.9 %).  Measured (8 seeds, 2026-12-06): [6, 18] t0
-#     0.03693 +- 0.00006, + tail 0.00089 = 0.03783; [18, 54] 0.03813 +-
-#     0.00010; [50, 150] 0.03817 +- 0.00021; [150, 450] 0.03805 +- 0.00043;
-#     [400, 1200] 0.03788 +- 0.00062: the corrected window is 0.8 +- 0.5 %
-#     below the long lags (1.6 SE), without the tail 3.1 % (-4.6 SE: the
-#     check fails).  A residual rise of ~1 % between [6, 18] and [18, 54] t0
-#     is beyond the asymptotic tail (3.7 SE): the velocity's relaxation at
-#     6 t0 is not purely hydrodynamic yet.
+#  1. The shipped calibration's d_box + tail (the tail the window misses,
+#     pl_srd_tail_missed) agrees with these runs' long-lag slopes over [50,
+#     150] and [150, 450] t0 (where the box's modes have decayed: the tail
+#     left is below 1e-5) within 3 combined SE (its own SE 1.8 %).
+#     Reported beside it, not asserted: these runs' slope over the
+#     calibration's window [6, 18] t0 plus the tail against the long lags.
+#     Measured (8 seeds, 2026-12-06): [6, 18] t0 0.03693 +- 0.00006, + tail
+#     0.00089 = 0.03783; [18, 54] 0.03813 +- 0.00010; [50, 150] 0.03817 +-
+#     0.00021; [150, 450] 0.03805 +- 0.00043; [400, 1200] 0.03788 +-
+#     0.00062: the corrected window is 0.8 +- 0.5 % below the long lags,
+#     without the tail 3.2 %.  The residual is real: the corrected slope
+#     still rises by ~1 % between [6, 18] and [18, 54] t0 (3.7 SE), beyond
+#     the asymptotic tail (the velocity's relaxation at 6 t0 is not purely
+#     hydrodynamic yet), so "flat within SE" holds for the calibration's own
+#     SE, not for that of these long runs, and a bound on it here would fail
+#     one run in ten; a later window would need every shipped calibration
+#     remeasured.  The tail itself is tested against Hasimoto's limit in
+#     tests/unit/test_mapping_hydro.c.
 #  2. The calibration's SE (8 blocks of origins of one 2880-step run) is
 #     honest: cut into runs of the calibration's length, the scatter of their
 #     [6, 18] t0 slopes over the RMS of their 8-block SEs is within 0.7-1.4
@@ -95,9 +99,12 @@ wl = np.array([1 / s ** 2 for m, s in long]); dl = sum(w * m for w, (m, s) in zi
 sl = wl.sum() ** -0.5
 corr = dbox + tail
 z = (corr - dl) / np.hypot(se_cal, sl); z0 = (dbox - dl) / np.hypot(se_cal, sl)
-zw = (win[(6, 18)][0] + tail - dl) / np.hypot(win[(6, 18)][1], sl)
-print("flat|%d|shipped d_box %.5f + tail %.5f = %.5f +- %.5f vs long lags %.5f +- %.5f ([50, 150] %.5f, [150, 450] %.5f t0): %+.1f SE (without the tail %+.1f SE); these runs' [6, 18] t0 %.5f + tail: %+.1f SE"
-      % (abs(z) < 3 and abs(zw) < 3, dbox, tail, corr, se_cal, dl, sl, long[0][0], long[1][0], z, z0, win[(6, 18)][0], zw))
+rel_cal = se_cal / cal["d_inf_a0_2_t0"]  # the calibration's relative SE
+rw = (win[(6, 18)][0] + tail) / dl - 1; rw0 = win[(6, 18)][0] / dl - 1
+print("note|-|these runs' [6, 18] t0 slope %.5f + tail %.5f vs their long lags %.5f +- %.5f ([50, 150] %.5f, [150, 450] %.5f t0): %+.1f %% (without the tail %+.1f %%; the calibration's SE %.1f %%)"
+      % ( win[(6, 18)][0], tail, dl, sl, long[0][0], long[1][0], 100 * rw, 100 * rw0, 100 * rel_cal))
+print("cal|%d|shipped d_box %.5f + tail %.5f = %.5f +- %.5f vs the long lags: %+.1f SE (without the tail %+.1f SE; bound 3)"
+      % (abs(z) < 3, dbox, tail, corr, se_cal, z, z0))
 n = int(round(720.0 / dt)) + 1  # the calibration's length: 2880 steps
 ds, ses = [], []
 for r, t in runs:
@@ -111,7 +118,8 @@ PY
 ) || bad "analysis failed: $out"
 while IFS='|' read -r what good msg; do
   [ -z "$what" ] && continue
-  if [ "$good" = 1 ]; then ok "$msg"; else bad "$msg"; fi
+  if [ "$what" = note ]; then echo "  note $msg"
+  elif [ "$good" = 1 ]; then ok "$msg"; else bad "$msg"; fi
 done <<< "$out"
 echo "calibration windows: $pass passed, $fail failed"
 [ $fail -eq 0 ]
