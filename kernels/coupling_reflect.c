@@ -45,17 +45,11 @@
  * events move the colloid onto it.  With the velocities as the step found
  * them (or the events decided against the MD's end positions) the friction
  * would act explicitly: colloids hotter than the fluid by ~xi dt / 2M
- * (validation/REPORT.md).  The events of a step run in the order the
- * particles met their colloids (entry_time: the time within the step on
- * the paths the MD and the streaming took), so that an event sees the
- * velocity and position of the colloid the earlier ones left, as in an
- * event-driven run; ties (the particles met only after the colloid moved,
- * and Hecht method i's) in the order of hash(seed, PL_RNG_REFLECT_ORDER,
- * step, particle).  Not a spatial order: in the counting sort's (z-major)
- * order the lower events pushed the colloid up before the upper ones met
- * it, and colloids drifted towards -z (tests/physics/test_coupling_momentum.c).
- * The order is a function of the particles' state, the same for any
- * thread count.
+ * (validation/REPORT.md).  The events of a step run in event-driven
+ * order (kernels/coupling_order.c): each colloid takes next, of its
+ * events not yet run, the one whose particle met it first on the path the
+ * events before left it, so that an event sees the velocity and position
+ * of the colloid the earlier ones left, as in an event-driven run.
  *
  * Race freedom and determinism: the detection is parallel over the
  * static chunks of the streaming (normally inside the streaming itself,
@@ -66,10 +60,9 @@
  * bitwise the same for any thread count.  A colloid's velocity and end
  * position depend only on its own events, in that order, so with several
  * threads (and no walls) each thread takes the events of its block of
- * colloids, in order (parallel_events); a particle near a second
- * colloid would tie two blocks, and the step then runs the serial loop
- * instead.  Random
- * numbers: Philox (seed, PL_RNG_REFLECT), counter (step, particle index,
+ * colloids, each colloid's in its order (parallel_events); a particle near
+ * a second colloid would tie two blocks, and the step then runs the serial
+ * loop instead.  Random numbers: Philox (seed, PL_RNG_REFLECT), counter (step, particle index,
  * reflection number); particle indices are those of the last
  * (thread-independent) counting sort. */
 #include <math.h>
@@ -79,6 +72,8 @@
 #include "peloid/coupling_kernels.h"
 #include "peloid/rng.h"
 #include "peloid/srd_kernels.h"
+
+#include "coupling_events.h"
 
 static inline double wrap(double x, double L)
 {
@@ -158,23 +153,9 @@ static double reflect_one(const pl_coupling1_params_t *prm, const pl_coupling_co
     return s;
 }
 
-/* The events' view of the colloids: c (true radii, the corrected end
- * positions x, y, z = pos, the live velocities), cb (the positions the MD
- * left and the enlarged radii the detection and cstart, clist used), disp
- * (3 x n: pos - cb's position) and the largest |disp| of each colloid
- * (cb->rad - c->rad). */
-typedef struct {
-    pl_coupling_colloids_t c;
-    const pl_coupling_colloids_t *cb;
-    double *pos[3], *disp;
-    const uint32_t *cstart;
-    const int32_t *clist;
-    int move; /* 0: pinned colloids, no displacement */
-} events_t;
-
 /* r inside the enlarged sphere of a colloid other than k (cb: fixed
  * during the events, so threads may read it). */
-static int near_other(const events_t *e, const pl_grid_t *g, const double r[3], int32_t k)
+static int near_other(const pl_c1_events_t *e, const pl_grid_t *g, const double r[3], int32_t k)
 {
     const uint32_t cell = pl_coupling_cell_of(g, r[0], r[1], r[2]);
     const pl_coupling_colloids_t *cb = e->cb;
@@ -193,7 +174,8 @@ static int near_other(const events_t *e, const pl_grid_t *g, const double r[3], 
  * or -1: serial, the first of r's cell list; par, colloid k only, and -2
  * when r is near another (the pass must give up: that colloid's events
  * belong to another thread). */
-static int32_t inside_now(const events_t *e, const pl_grid_t *g, const double r[3], double p[3], int32_t k, int par)
+static int32_t inside_now(const pl_c1_events_t *e, const pl_grid_t *g, const double r[3], double p[3], int32_t k,
+                          int par)
 {
     if (!par) return pl_coupling_inside_cells(&e->c, g, e->cstart, e->clist, r, p);
     if (k < 0 || near_other(e, g, r, k)) return -2;
@@ -208,7 +190,7 @@ static int32_t inside_now(const events_t *e, const pl_grid_t *g, const double r[
 /* Colloid k's velocity changed by dv at the time s before the end of the
  * step: its end position moves by dv s (at most the margin cb->rad -
  * c->rad from where the MD left it; beyond, scaled back). */
-static void displace(const events_t *e, int32_t k, const double dv[3], double s)
+static void displace(const pl_c1_events_t *e, int32_t k, const double dv[3], double s)
 {
     if (!e->move) return;
     const size_t n = e->c.n;
@@ -231,7 +213,7 @@ static void displace(const events_t *e, int32_t k, const double dv[3], double s)
  * truncation, -1 (par only) when it met another colloid's events (nothing
  * of i written). */
 static int reflect_particle(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *prm,
-                            const events_t *e, double *const vel[6], size_t i, int32_t k, double p[3],
+                            const pl_c1_events_t *e, double *const vel[6], size_t i, int32_t k, double p[3],
                             uint32_t *restrict h, uint64_t *restrict cnt, int par, uint16_t *nref_io)
 {
     const pl_coupling_colloids_t *c = &e->c;
@@ -326,78 +308,6 @@ static inline void band_check(pl_fluid_t *f, int t, int nthreads, size_t ncells,
     if (pl_fluid_band_out(f->cell[i], lo, len, (uint32_t)ncells)) pl_fluid_band_overflow(f);
 }
 
-static int cmp_pair(const void *a, const void *b)
-{
-    const uint64_t *x = a, *y = b;
-    return x[0] != y[0] ? (x[0] > y[0]) - (x[0] < y[0]) : (x[1] > y[1]) - (x[1] < y[1]);
-}
-
-/* The thread whose static chunk of the streaming (pl_chunk) holds particle i. */
-static int chunk_owner(size_t n, int nthreads, size_t i)
-{
-    int t = (int)((double)i * nthreads / (double)n);
-    if (t >= nthreads) t = nthreads - 1;
-    for (size_t lo, hi;;) {
-        pl_chunk(n, t, nthreads, &lo, &hi);
-        if (i < lo) --t;
-        else if (i >= hi) ++t;
-        else return t;
-    }
-}
-
-/* The time within the step at which the particle at r (velocity v) met
- * the colloid it is inside as the MD left it (cb's centres, true radius,
- * the velocities before the events), as a fraction of the step: 1 for a
- * particle outside it (in the margin: met, if at all, once the events have
- * moved the colloid), 1/2 when its path does not cross the surface within
- * the step (placed as Hecht method i). */
-static double entry_time(const events_t *e, const pl_grid_t *g, const pl_coupling1_params_t *prm,
-                         const double r[3], const double v[3])
-{
-    double p[3];
-    const int32_t k = pl_coupling_inside_cells(&e->c, g, e->cstart, e->clist, r, p);
-    if (k < 0) return 1.0;
-    const double R = e->c.rad[k], w[3] = {v[0] - e->c.vx[k], v[1] - e->c.vy[k], v[2] - e->c.vz[k]};
-    const double ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2], pw = p[0] * w[0] + p[1] * w[1] + p[2] * w[2];
-    const double disc = pw * pw - ww * (p[0] * p[0] + p[1] * p[1] + p[2] * p[2] - R * R);
-    const double s = ww > 0.0 && disc >= 0.0 ? (pw + sqrt(disc)) / ww : -1.0;
-    return s > 0.0 && s <= prm->dt ? 1.0 - s / prm->dt : 0.5;
-}
-
-/* The step's events in order (see the file header): by the time each
- * particle met its colloid (entry_time, 2^-32 steps), then by the key
- * hash(seed, PL_RNG_REFLECT_ORDER, step, particle), then by particle;
- * sc->idx[j] the particle, sc->owner[j] the thread whose histogram row
- * holds its cell, for j < total.  The keys are found in parallel over the
- * threads' lists (e: no event yet, the colloids where the MD left them);
- * the sort is serial (events are few). */
-static void order_events(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *prm, const events_t *e,
-                         int nthreads, const uint32_t *found, const uint64_t *counts, size_t total,
-                         pl_coupling1_scratch_t *sc)
-{
-#pragma omp parallel for schedule(static) num_threads(nthreads)
-    for (int t = 0; t < nthreads; ++t) {
-        size_t lo, hi, j = 0;
-        pl_chunk(f->n, t, nthreads, &lo, &hi);
-        for (int u = 0; u < t; ++u) j += counts[(size_t)u * 8 + 2];
-        const size_t nt = counts[(size_t)t * 8 + 2];
-        for (size_t s = 0; s < nt; ++s) {
-            const uint64_t i = found[lo + s];
-            const double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, v[3] = {f->v[0][i], f->v[1][i], f->v[2][i]};
-            const double tq = ldexp(entry_time(e, g, prm, r, v), 32);
-            philox4x64_ctr_t ctr = {{prm->step, i, 0, 0}};
-            philox4x64_key_t key = {{prm->seed, PL_RNG_REFLECT_ORDER}};
-            sc->key[2 * (j + s)] = (tq >= 0x1p32 ? 0xffffffffu : (uint64_t)tq) << 32 | philox4x64(ctr, key).v[0] >> 32;
-            sc->key[2 * (j + s) + 1] = i;
-        }
-    }
-    qsort(sc->key, total, 2 * sizeof *sc->key, cmp_pair);
-    for (size_t j = 0; j < total; ++j) {
-        sc->idx[j] = (uint32_t)sc->key[2 * j + 1];
-        sc->owner[j] = chunk_owner(f->n, nthreads, sc->idx[j]);
-    }
-}
-
 /* Passes over the events in order: a particle found (inside an
  * enlarged sphere) but outside every moved one waits for the next pass,
  * and a particle reflected may be inside again after later events moved
@@ -415,7 +325,46 @@ enum { NPASS = 4 };
  * particle handled is put back (saved state), the colloid velocities too,
  * and the caller runs the serial loop.  Only without walls (no wall
  * impulses to sum).  Returns 0 when done, -1 when it gave up. */
-static int parallel_events(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *prm, const events_t *e,
+/* One event of the parallel loop (particle of event j, candidate colloid
+ * k): 1 when reflected, 0 when not inside k's moved sphere, -1 when it met
+ * another colloid (give up).  *trunc counts a truncation. */
+static int par_event(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *prm, const pl_c1_events_t *e,
+                     double *const vel[6], uint32_t *hist, int nthreads, pl_coupling1_scratch_t *sc, size_t j,
+                     uint64_t mine[2])
+{
+    const int32_t k = sc->k[j];
+    const size_t i = sc->idx[j];
+    const double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]};
+    double q[3];
+    const int32_t kin = inside_now(e, g, r, q, k, 1);
+    if (kin == -1) return 0;
+    if (kin < 0) return -1;
+    double *sv = sc->state + 7 * j;
+    if (!sc->done[j]) {
+        for (int d = 0; d < 3; ++d) {
+            sv[d] = f->r[d][i];
+            sv[3 + d] = f->v[d][i];
+        }
+        sv[6] = (double)f->cell[i];
+    }
+    const int rc = reflect_particle(f, g, prm, e, vel, i, kin, q, hist + (size_t)sc->owner[j] * g->ncells, mine, 1,
+                                    &sc->done[j]);
+    band_check(f, sc->owner[j], nthreads, g->ncells, i);
+    if (rc < 0) return -1;
+    mine[1] += (uint64_t)rc;
+    return 1;
+}
+
+/* The events with the colloids split between the threads: thread t takes
+ * the chains (sc->k, sc->next) of the colloids of its static block, each
+ * colloid's events chosen as in the serial loop (next_event), then the
+ * further passes in order, so each colloid sees the same events in the
+ * same order as in the serial loop, with the same random numbers (keyed by
+ * step, particle, reflection).  A particle near a second colloid stops the
+ * pass: every particle handled is put back (saved state), the colloid
+ * velocities too, and the caller runs the serial loop.  Only without walls
+ * (no wall impulses to sum).  Returns 0 when done, -1 when it gave up. */
+static int parallel_events(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *prm, const pl_c1_events_t *e,
                            double *const vel[6], uint32_t *hist, int nthreads, size_t total, uint64_t *counts,
                            pl_coupling1_scratch_t *sc)
 {
@@ -426,53 +375,35 @@ static int parallel_events(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1
     uint64_t cnt[2] = {0, 0};
 #pragma omp parallel num_threads(nthreads) reduction(+ : cnt[:2])
     {
-        /* the colloid of each particle, in parallel (cb does not change) */
-#pragma omp for schedule(static)
-        for (size_t j = 0; j < total; ++j) {
-            const size_t i = sc->idx[j];
-            const double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]};
-            double q[3];
-            sc->k[j] = pl_coupling_inside_cells(e->cb, g, e->cstart, e->clist, r, q);
-        }
         const int T = omp_get_num_threads(), me = omp_get_thread_num();
         const int32_t k0 = (int32_t)(nc * (size_t)me / (size_t)T), k1 = (int32_t)(nc * (size_t)(me + 1) / (size_t)T);
         uint64_t mine[2] = {0, 0};
         int more = 1, quit = 0;
         for (int pass = 0; pass < NPASS && more && !quit; ++pass) {
             more = 0;
-            for (size_t j = 0; j < total; ++j) {
+            for (size_t j = 0; j < total && !quit; ++j) {
                 const int32_t k = sc->k[j];
                 if (k < k0 || k >= k1 || sc->done[j] >= prm->max_refl) continue; /* k < 0: inside none */
+                if (pass == 0 && sc->taken[j]) continue;
 #pragma omp atomic read
                 quit = gave_up;
                 if (quit) break;
-                const size_t i = sc->idx[j];
-                const double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]};
-                double q[3];
-                const int32_t kin = inside_now(e, g, r, q, k, 1);
-                int rc = -1;
-                if (kin == -1) continue;
-                double *sv = sc->state + 7 * j;
-                if (kin >= 0) {
-                    if (!sc->done[j]) {
-                        for (int d = 0; d < 3; ++d) {
-                            sv[d] = f->r[d][i];
-                            sv[3 + d] = f->v[d][i];
-                        }
-                        sv[6] = (double)f->cell[i];
+                int rc = 0;
+                if (pass == 0) { /* colloid k's chain, in its event order */
+                    for (int64_t b; rc >= 0 && (b = pl_coupling1_next_event(e, g, prm, f, sc, j)) >= 0;) {
+                        sc->taken[b] = 1;
+                        rc = par_event(f, g, prm, e, vel, hist, nthreads, sc, (size_t)b, mine);
+                        more |= rc > 0;
                     }
-                    rc = reflect_particle(f, g, prm, e, vel, i, kin, q, hist + (size_t)sc->owner[j] * g->ncells, mine,
-                                          1, &sc->done[j]);
-                    band_check(f, sc->owner[j], nthreads, g->ncells, i);
+                } else {
+                    rc = par_event(f, g, prm, e, vel, hist, nthreads, sc, j, mine);
+                    more |= rc > 0;
                 }
                 if (rc < 0) {
 #pragma omp atomic write
                     gave_up = 1;
                     quit = 1;
-                    break;
                 }
-                mine[1] += (uint64_t)rc;
-                more = 1;
             }
         }
         cnt[0] += mine[0];
@@ -511,12 +442,12 @@ size_t pl_coupling1_found(const uint64_t *counts, int nthreads)
     return total;
 }
 
-/* The events' view (events_t) with no displacement yet. */
-static void events_start(events_t *e, const pl_coupling_colloids_t *c, const pl_coupling_colloids_t *cb,
+/* The events' view (pl_c1_events_t) with no displacement yet. */
+static void events_start(pl_c1_events_t *e, const pl_coupling_colloids_t *c, const pl_coupling_colloids_t *cb,
                          const uint32_t *cstart, const int32_t *clist, pl_coupling1_scratch_t *sc, int move)
 {
     const size_t n = c->n;
-    *e = (events_t){.c = *c, .cb = cb, .disp = sc->disp, .cstart = cstart, .clist = clist, .move = move};
+    *e = (pl_c1_events_t){.c = *c, .cb = cb, .disp = sc->disp, .cstart = cstart, .clist = clist, .move = move};
     const double *x0[3] = {cb->x, cb->y, cb->z};
     for (int d = 0; d < 3; ++d) {
         e->pos[d] = sc->pos + (size_t)d * n;
@@ -530,37 +461,53 @@ static void events_start(events_t *e, const pl_coupling_colloids_t *c, const pl_
     e->c.z = e->pos[2];
 }
 
+/* One event of the serial loop: particle of event j reflected when it is
+ * inside a colloid's moved sphere; returns whether it was. */
+static int serial_event(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *p, const pl_c1_events_t *e,
+                        double *const vel[6], uint32_t *hist, int nthreads, uint64_t *counts,
+                        pl_coupling1_scratch_t *sc, size_t j)
+{
+    const size_t i = sc->idx[j];
+    const int t = sc->owner[j];
+    double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, q[3];
+    const int32_t k = inside_now(e, g, r, q, -1, 0);
+    if (k < 0) return 0;
+    counts[1] += (uint64_t)reflect_particle(f, g, p, e, vel, i, k, q, hist + (size_t)t * g->ncells, counts, 0,
+                                            &sc->done[j]);
+    band_check(f, t, nthreads, g->ncells, i);
+    return 1;
+}
+
 void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_params_t *p,
                           const pl_coupling_colloids_t *c, const pl_coupling_colloids_t *cb, double *const vel[6],
                           const uint32_t *cstart, const int32_t *clist, uint32_t *hist, int nthreads,
                           const uint32_t *found, uint64_t *counts, pl_coupling1_scratch_t *sc)
 {
     const size_t total = pl_coupling1_found(counts, nthreads);
-    events_t e;
+    pl_c1_events_t e;
     events_start(&e, c, cb, cstart, clist, sc, p->move);
-    order_events(f, g, p, &e, nthreads, found, counts, total, sc);
-    for (size_t j = 0; j < total; ++j) sc->done[j] = 0;
+    pl_coupling1_order(f, g, p, &e, nthreads, found, counts, total, sc);
+    pl_coupling1_chains(f, g, &e, nthreads, total, sc);
     counts[0] = counts[1] = 0;
     if (nthreads > 1 && !g->any_walls && !f->tracked && !p->wall_acc && c->n >= 2 &&
         !parallel_events(f, g, p, &e, vel, hist, nthreads, total, counts, sc))
         return;
     events_start(&e, c, cb, cstart, clist, sc, p->move);
-    for (size_t j = 0; j < total; ++j) sc->done[j] = 0;
+    for (size_t j = 0; j < total; ++j) sc->done[j] = sc->taken[j] = 0;
     int more = 1;
     for (int pass = 0; pass < NPASS && more; ++pass) {
         more = 0;
         for (size_t j = 0; j < total; ++j) {
-            if (sc->done[j] >= p->max_refl) continue;
+            if (sc->done[j] >= p->max_refl || (pass == 0 && sc->taken[j])) continue;
             if (pass == 0 && j + PF < total) prefetch_particle(f, sc->idx[j + PF]);
-            const size_t i = sc->idx[j];
-            const int t = sc->owner[j];
-            double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, q[3];
-            const int32_t k = inside_now(&e, g, r, q, -1, 0);
-            if (k < 0) continue;
-            counts[1] += (uint64_t)reflect_particle(f, g, p, &e, vel, i, k, q, hist + (size_t)t * g->ncells, counts, 0,
-                                                    &sc->done[j]);
-            band_check(f, t, nthreads, g->ncells, i);
-            more = 1;
+            if (pass > 0 || sc->k[j] < 0) {
+                more |= serial_event(f, g, p, &e, vel, hist, nthreads, counts, sc, j);
+                continue;
+            }
+            for (int64_t b; (b = pl_coupling1_next_event(&e, g, p, f, sc, j)) >= 0;) { /* colloid sc->k[j]'s chain */
+                sc->taken[b] = 1;
+                more |= serial_event(f, g, p, &e, vel, hist, nthreads, counts, sc, (size_t)b);
+            }
         }
     }
 }

@@ -106,10 +106,13 @@ typedef struct {
     uint32_t *idx;    /* its colloid in cb, whether it is done, and */
     int32_t *owner;
     int32_t *k;
+    int64_t *next;    /* the next event of the same colloid k, -1 at the end */
+    uint8_t *taken;   /* chosen by the colloid's event order (pass 0) */
     uint16_t *done;   /* reflections so far */
     double *state;    /* 7 x cap: its r, v and cell before them */
     double *vsave;    /* vcap: the colloid velocities before the events */
     double *pos, *disp; /* vcap / 2 each: the colloids' moved end positions and displacements */
+    int64_t *head;    /* vcap / 6: each colloid's first event */
     unsigned long long parallel, gave_up; /* steps done in parallel; given up (a second colloid) */
 } pl_coupling1_scratch_t;
 

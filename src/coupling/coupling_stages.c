@@ -55,6 +55,9 @@ static void scratch_free(pl_coupling1_scratch_t *sc)
     free(sc->idx);
     free(sc->owner);
     free(sc->k);
+    free(sc->next);
+    free(sc->taken);
+    free(sc->head);
     free(sc->done);
     free(sc->state);
     free(sc->vsave);
@@ -76,13 +79,16 @@ static int scratch_grow(pl_coupling1_scratch_t *sc, size_t n, size_t nc)
     sc->idx = malloc(cap * sizeof *sc->idx);
     sc->owner = malloc(cap * sizeof *sc->owner);
     sc->k = malloc(cap * sizeof *sc->k);
+    sc->next = malloc(cap * sizeof *sc->next);
+    sc->taken = malloc(cap * sizeof *sc->taken);
+    sc->head = malloc((nc + 1) * sizeof *sc->head);
     sc->done = malloc(cap * sizeof *sc->done);
     sc->state = malloc(7 * cap * sizeof *sc->state);
     sc->vsave = malloc((6 * nc + 1) * sizeof *sc->vsave);
     sc->pos = malloc((3 * nc + 1) * sizeof *sc->pos);
     sc->disp = malloc((3 * nc + 1) * sizeof *sc->disp);
-    if (!sc->key || !sc->idx || !sc->owner || !sc->k || !sc->done || !sc->state || !sc->vsave || !sc->pos ||
-        !sc->disp) {
+    if (!sc->key || !sc->idx || !sc->owner || !sc->k || !sc->next || !sc->taken || !sc->head || !sc->done ||
+        !sc->state || !sc->vsave || !sc->pos || !sc->disp) {
         scratch_free(sc);
         return 0;
     }
