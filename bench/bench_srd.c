@@ -8,7 +8,7 @@
  * Byte model (bytes of particle state each kernel must read + write per
  * particle; D = sizeof(pl_real), 8 for double, 4 for float; write-allocate
  * not counted, the STREAM convention):
- *   plan (src/plan/sim.c)
+ *   plan (src/core/sim.c)
  *     stream+bin   read r, v (6D), write r (3D), write cell index (4)      9D + 4
  *                  (no body force: v is not written back, srd_stream.c)
  *     sort         read cell (4), r, v (6D); write twins r', v' (6D)       12D + 4

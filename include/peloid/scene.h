@@ -229,7 +229,7 @@ enum { PL_SCENE_INCLUDE_ANYWHERE = 1u, PL_SCENE_PROVISIONAL = 2u };
 int pl_scene_load_flags(const char *path, unsigned flags, pl_scene_t *scene, pl_err_t *err);
 
 /* Same, with the colloid diffusion a calibration run measured for the
- * scene's coupling and resolution (src/plan/calibrate.c), which the unit
+ * scene's coupling and resolution (src/app/calibrate.c), which the unit
  * mapping then matches instead of the coupling's theory (NULL: theory). */
 int pl_scene_load_calibrated(const char *path, unsigned flags, const pl_mapping_calibration_t *calib,
                              pl_scene_t *scene, pl_err_t *err);

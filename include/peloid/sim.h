@@ -25,7 +25,7 @@ typedef enum {
 
 /* Where a stage runs within its phase: the plan is ordered by (phase,
  * slot), stages of one slot in the order they were added (module order,
- * src/plan/modules.c).  The step's data flow: colloid MD, then the fluid's
+ * src/core/modules.c).  The step's data flow: colloid MD, then the fluid's
  * stream, sort and collision with the couplings' stages around them. */
 typedef enum {
     /* PL_PHASE_STEP */
@@ -192,7 +192,7 @@ void pl_sim_observe(const pl_sim_t *sim, pl_fluid_obs_t *obs, double *kT);
 /* ---- fluid guard (src/fluid/fluid_guard.c) ---------------------------------- */
 /* The guard stage runs every step, after the collision and thermostat: the
  * speeds and the O(1) checks every step, the positions too every
- * PL_FLUID_GUARD_SCAN_INTERVAL steps and before every output (src/plan/run.c). */
+ * PL_FLUID_GUARD_SCAN_INTERVAL steps and before every output (src/app/run.c). */
 enum { PL_FLUID_GUARD_INTERVAL = 1, PL_FLUID_GUARD_SCAN_INTERVAL = 10 };
 /* Speed bound: PL_FLUID_GUARD_SIGMAS thermal speeds sqrt(kT_max / m_f) plus
  * twice the fastest wall or imposed flow (a bounce-back off a wall moving

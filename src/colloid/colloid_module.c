@@ -8,6 +8,7 @@
 
 #include "checkpoint_h5.h"
 #include "json_build.h"
+#include "peloid/checkpoint.h"
 #include "peloid/colloid.h"
 #include "peloid/module.h"
 
@@ -151,7 +152,7 @@ static int colloid_summary(const pl_sim_t *sim, json_t *doc, pl_err_t *err)
     return b.failed ? err->code : 0;
 }
 
-/* Group /colloids of the checkpoint (src/io/checkpoint_colloid.c). */
+/* Group /colloids of the checkpoint (src/colloid/checkpoint_colloid.c). */
 static int colloid_ckpt_write(int64_t f, const pl_sim_t *sim)
 {
     return sim->colloids ? pl_ckpt_colloid_write((hid_t)f, sim->colloids) : 0;

@@ -23,7 +23,7 @@
  * velocity, and positions stay finite and in the box by induction (finite
  * r + finite v dt, wrapped or reflected).  The positions themselves (the
  * full 48 B) every PL_FLUID_GUARD_SCAN_INTERVAL steps and before every thermo
- * row, checkpoint and fields file (src/plan/run.c), so nothing non-finite reaches
+ * row, checkpoint and fields file (src/app/run.c), so nothing non-finite reaches
  * an output.  Costs: README "Fluid guard". */
 #include <math.h>
 #include <stdio.h>

@@ -148,7 +148,7 @@ int pl_outdir_lock(const char *dir, int *fd, pl_err_t *err)
 }
 
 /* Every file peloid writes into an output directory: `peloid run`
- * (src/plan/run.c, the observers' observables.h5) and `peloid report`
+ * (src/app/run.c, the observers' observables.h5) and `peloid report`
  * (tools/report.py, tools/plot_sediment.py). */
 static const char *const outdir_names[] = {
     "scene.cfg", "thermo.tsv", "summary.json", "checkpoint.h5", "colloids.h5", "colloids.xyz", "fields.h5",

@@ -32,6 +32,7 @@
 #include "json_build.h"
 #include "observables_out.h"
 #include "observables_si.h"
+#include "peloid/checkpoint.h"
 #include "peloid/coupling.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
@@ -371,7 +372,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
 
 /* ---- checkpoint -------------------------------------------------------- */
 
-/* Group /observe of the checkpoint (src/io/checkpoint_observe.c gives it the
+/* Group /observe of the checkpoint (src/observe/checkpoint_observe.c gives it the
  * observer fingerprint): everything the observers accumulated, so that a
  * restarted run's observables equal those of the uninterrupted run bitwise.
  * The objects are read back as they were (correlators with the levels the

@@ -2,10 +2,10 @@
  * N steps equals 2N steps bitwise.  Random numbers are counter based (keyed
  * by step), so the state is positions, velocities (in their sorted order:
  * the stable sort depends on it), tracking arrays, step, field accumulators,
- * with colloids the group /colloids (src/io/checkpoint_colloid.c), the wall
- * and coupling run counters (src/io/checkpoint_coupling.c), and with
+ * with colloids the group /colloids (src/colloid/checkpoint_colloid.c), the wall
+ * and coupling run counters (src/coupling/checkpoint_coupling.c), and with
  * observers their accumulated state, /observe and /stress (written by their
- * modules; fingerprint of the observe section: src/io/checkpoint_observe.c;
+ * modules; fingerprint of the observe section: src/observe/checkpoint_observe.c;
  * absent in older files, which still load: the observers start afresh).
  * Written atomically (pl_atomic_commit); the HDF5 helpers (checksummed 1-d
  * datasets, attributes) are in src/io/checkpoint_h5.c.
@@ -13,7 +13,7 @@
  *
  * Nothing read is trusted (format 2): the root attribute format_version must
  * be PL_CKPT_FORMAT, every dataset carries its FNV-1a checksum
- * ("fnv1a64"), the scene fingerprint must match (src/io/checkpoint_scene.c),
+ * ("fnv1a64"), the scene fingerprint must match (src/core/checkpoint_scene.c),
  * and every array is range-checked before the first kernel sees it
  * (finite; positions inside the box; velocities within the fluid guard's
  * one-cell-per-step bound; ids a permutation; counts >= 0). */
@@ -27,6 +27,7 @@
 #include <unistd.h>
 
 #include "checkpoint_h5.h"
+#include "peloid/checkpoint.h"
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
 #include "peloid/h5.h"

@@ -16,6 +16,7 @@
 
 #include "json_build.h"
 #include "observables_si.h"
+#include "peloid/checkpoint.h"
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
 #include "peloid/io.h"

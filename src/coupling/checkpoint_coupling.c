@@ -15,6 +15,7 @@
 #include <math.h>
 
 #include "checkpoint_h5.h"
+#include "peloid/checkpoint.h"
 #include "peloid/coupling.h"
 #include "peloid/sim.h"
 

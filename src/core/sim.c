@@ -1,5 +1,5 @@
 /* Simulation object: state allocation, the plan and the step loop.  The
- * plan is the ordered list of stages the modules (src/plan/modules.c) add, each
+ * plan is the ordered list of stages the modules (src/core/modules.c) add, each
  * with its interval and slot; a stage the scene does not need is not in the
  * plan (DESIGN.md "Scene -> plan").  pl_sim_step walks it: the step stages,
  * step + 1, the after-step stages (observers, writers). */
