@@ -167,9 +167,9 @@ static int fused_step(pl_sim_t *sim, pl_err_t *err, double sec[3])
     pl_grid_draw_shift(&sim->grid, (uint64_t)sc->run.seed, (uint64_t)sim->step, sc->srd.grid_shift);
     pl_stream_params_t p;
     pl_sim_stream_params(sim, &p);
-    pl_srd_stream_count(&sim->fluid, &sim->grid, &p, sim->hist, sim->nthreads);
+    pl_srd_stream_count(&sim->fluid, &sim->grid, &p, sim->srd->hist, sim->nthreads);
     double t1 = omp_get_wtime();
-    pl_srd_stream_sort(&sim->fluid, &sim->grid, &p, sim->hist, sim->cell_start, sim->nthreads);
+    pl_srd_stream_sort(&sim->fluid, &sim->grid, &p, sim->srd->hist, sim->srd->cell_start, sim->nthreads);
     pl_fluid_swap(&sim->fluid);
     double t2 = omp_get_wtime();
     int rc = 0;

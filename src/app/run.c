@@ -160,8 +160,8 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
     pl_json_real(&b, doc, "wall_seconds", wall);
     pl_json_real(&b, doc, "cpu_seconds", cpu); /* the step loop's process CPU time, all threads */
     pl_json_real(&b, doc, "particle_updates_per_second", wall > 0 ? updates / wall : 0.0);
-    if (sim->field_acc) /* 0: no sample was taken, no fields.h5 */
-        pl_json_int(&b, doc, "field_samples", sim->field_samples);
+    if (sim->srd->field_acc) /* 0: no sample was taken, no fields.h5 */
+        pl_json_int(&b, doc, "field_samples", sim->srd->field_samples);
     json_t *st = json_object();
     b.prefix = "stage_seconds";
     for (int k = 0; k < sim->nstages; ++k) pl_json_real(&b, st, sim->stages[k].name, sim->stages[k].seconds);
@@ -491,10 +491,10 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
         if (rc) goto done;
     }
     if ((rc = write_checkpoint(&w, sim, err))) goto done;
-    if (sim->field_acc && sim->field_samples == 0) {
+    if (sim->srd->field_acc && sim->srd->field_samples == 0) {
         pl_progress_note(pg, "no field sample was taken (output.fields_start = %lld, last step %lld): "
                              "fields.h5 not written", scene->output.fields_start, sim->step);
-    } else if (sim->field_acc) {
+    } else if (sim->srd->field_acc) {
         pl_path_join(path, sizeof path, w.dir, "fields.h5");
         if ((rc = pl_fields_write(sim, path, err))) goto done;
     }

@@ -30,7 +30,7 @@ static void coupling_destroy(pl_sim_t *sim)
 static int add(pl_sim_t *sim, const char *name, pl_stage_fn fn, long long interval, pl_stage_slot_t slot,
                pl_err_t *err)
 {
-    pl_stage_t s = {.name = name, .fn = fn, .interval = interval, .slot = slot};
+    pl_stage_t s = {.name = name, .fn = fn, .ctx = sim->coupling, .interval = interval, .slot = slot};
     return pl_sim_add_stage(sim, &s, err);
 }
 
