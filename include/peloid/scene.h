@@ -19,7 +19,9 @@
 #include "peloid/mapping.h"
 
 enum { PL_VEL_GAUSSIAN = 0, PL_VEL_UNIFORM = 1 };
-enum { PL_THERMO_NONE = 0, PL_THERMO_HEYES = 1, PL_THERMO_RESCALE = 2 };
+/* thermostat.type: the index of a thermostat row (peloid/thermostat.h);
+ * row 0 is none */
+enum { PL_THERMO_NONE = 0 };
 
 /* Largest number of steps of a run (run.steps and --steps). */
 #define PL_STEPS_MAX 1000000000000000LL
@@ -67,7 +69,7 @@ typedef struct {
 } pl_scene_srd_t;
 
 typedef struct {
-    int type;           /* PL_THERMO_* */
+    int type;           /* its row (peloid/thermostat.h); PL_THERMO_NONE: none */
     double temperature; /* target kT* */
     double heyes_epsilon;
     long long interval; /* act every `interval` collision steps */

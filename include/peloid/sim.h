@@ -128,11 +128,13 @@ void pl_sim_free(pl_sim_t *sim);
  * there (writers and observers register theirs after the simulation is
  * built); PL_ERR_INTERNAL when the plan is full. */
 int pl_sim_add_stage(pl_sim_t *sim, const pl_stage_t *stage, pl_err_t *err);
-/* A collision stage in its two variants: with the Heyes thermostat
- * (Hecht Sec. III) `heyes` every thermostat.interval steps and `plain` on
- * the others, else `plain` every step (the fluid's collision and coupling
- * II's share this choice). */
-int pl_sim_add_collide_stage(pl_sim_t *sim, const pl_stage_t *plain, const pl_stage_t *heyes, pl_err_t *err);
+/* A collision stage in its two variants: with a thermostat that runs
+ * inside the collision (its row's in_collision: Heyes, Hecht Sec. VIII.B)
+ * `in_collision` every thermostat.interval steps and `plain` on the others,
+ * else `plain` every step (the fluid's collision and coupling II's share
+ * this choice; src/fluid/thermostats.c). */
+int pl_sim_add_collide_stage(pl_sim_t *sim, const pl_stage_t *plain, const pl_stage_t *in_collision,
+                             pl_err_t *err);
 
 /* Whether stage s runs when the state is at step `step`. */
 int pl_sim_stage_due(const pl_sim_t *sim, const pl_stage_t *s, long long step);

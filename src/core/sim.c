@@ -32,18 +32,6 @@ int pl_sim_add_stage(pl_sim_t *sim, const pl_stage_t *stage, pl_err_t *err)
     return 0;
 }
 
-int pl_sim_add_collide_stage(pl_sim_t *sim, const pl_stage_t *plain, const pl_stage_t *heyes, pl_err_t *err)
-{
-    if (sim->scene.thermostat.type != PL_THERMO_HEYES) return pl_sim_add_stage(sim, plain, err);
-    const long long k = sim->scene.thermostat.interval;
-    pl_stage_t p = *plain, h = *heyes;
-    p.interval = 1;
-    p.except = k;
-    h.interval = k;
-    int rc = k > 1 ? pl_sim_add_stage(sim, &p, err) : 0;
-    return rc ? rc : pl_sim_add_stage(sim, &h, err);
-}
-
 /* ---- lifetime ---------------------------------------------------------- */
 
 int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_t *err)

@@ -1,7 +1,7 @@
 /* The SRD fluid module (peloid/module.h): its stages (streaming with
  * binning, counting sort, collision with or without the Heyes thermostat,
- * the rescaling thermostat, the fluid guard, field sampling, the guard's
- * scan before an output) and its thermo columns (temperature, momentum,
+ * the thermostat row's stages (peloid/thermostat.h), the fluid guard, field
+ * sampling, the guard's scan before an output) and its thermo columns (temperature, momentum,
  * kinetic energy, tracked MSD, wall stresses; for physical scenes time in s
  * and the temperature in K).  PL Eqs. 3, 13, A1-A2; Hecht Eqs. 12, 33. */
 #include <math.h>
@@ -12,6 +12,7 @@
 #include "peloid/collision_rule.h"
 #include "peloid/mapping.h"
 #include "peloid/module.h"
+#include "peloid/thermostat.h"
 
 /* ---- stages ------------------------------------------------------------ */
 
@@ -143,17 +144,6 @@ static int stage_collide_heyes(pl_sim_t *sim, void *ctx, pl_err_t *err)
     return 0;
 }
 
-static int stage_rescale(pl_sim_t *sim, void *ctx, pl_err_t *err)
-{
-    (void)err;
-    pl_srd_t *fs = ctx;
-    if (fs->last_kT_meas <= 0.0) return 0;
-    double factor = sqrt(sim->scene.thermostat.temperature / fs->last_kT_meas); /* PL App. A */
-    pl_srd_rescale(&sim->fluid, fs->cell_start, sim->grid.ncells, factor, sim->nthreads);
-    fs->last_kT_meas = sim->scene.thermostat.temperature;
-    return 0;
-}
-
 static int stage_fields(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)err;
@@ -179,15 +169,12 @@ static int fluid_stages(pl_sim_t *sim, pl_err_t *err)
     if ((rc = pl_sim_add_stage(sim, &stream, err))) return rc;
     if ((rc = pl_sim_add_stage(sim, &sort, err))) return rc;
     collide_params(sim, fs, &fs->collide);
-    /* the row's validate refused the Heyes thermostat where collide_heyes is NULL */
+    /* the Heyes row's validate refused a rule whose collide_heyes is NULL */
     pl_stage_t plain = {.name = "collide", .fn = stage_collide, .ctx = fs, .slot = PL_SLOT_COLLIDE};
     pl_stage_t heyes = {.name = "collide+heyes", .fn = stage_collide_heyes, .ctx = fs, .slot = PL_SLOT_COLLIDE};
     if ((rc = pl_sim_add_collide_stage(sim, &plain, &heyes, err))) return rc;
-    if (sc->thermostat.type == PL_THERMO_RESCALE) {
-        pl_stage_t r = {.name = "thermostat-rescale", .fn = stage_rescale, .ctx = fs,
-                        .interval = sc->thermostat.interval, .slot = PL_SLOT_THERMOSTAT};
-        if ((rc = pl_sim_add_stage(sim, &r, err))) return rc;
-    }
+    const pl_thermostat_t *thermostat = pl_thermostat(sc->thermostat.type);
+    if (thermostat->add_stages && (rc = thermostat->add_stages(sim, fs, err))) return rc;
     /* last before anything samples or moves the fluid again: nothing
      * non-finite reaches an output or the next stream */
     pl_stage_t g = {.name = "fluid-guard", .fn = pl_fluid_guard_stage, .ctx = fs,
@@ -294,22 +281,20 @@ static void fluid_columns(const pl_sim_t *sim, pl_thermo_table_t *t)
  * colloids and the coupling find the fluid made. */
 static int fluid_create(pl_sim_t *sim, pl_err_t *err) { return pl_fluid_state_create(sim, err); }
 
-/* The collision rule's own check (peloid/collision_rule.h), and those every
- * rule gets: a rule without a Heyes kernel refuses the Heyes thermostat, a
- * rule that is a thermostat refuses a second one, coupling II needs a
- * rotation rule. */
+/* The collision rule's and the thermostat's own checks
+ * (peloid/collision_rule.h, peloid/thermostat.h), and those every rule
+ * gets: a rule that is a thermostat refuses a second one, coupling II needs
+ * a rotation rule. */
 static int fluid_validate(const pl_scene_t *sc, pl_err_t *err)
 {
     const pl_collision_rule_t *rule = pl_collision_rule(sc->srd.rule);
-    const int t = sc->thermostat.type;
-    if (rule->thermostat && t != PL_THERMO_NONE)
+    const pl_thermostat_t *thermostat = pl_thermostat(sc->thermostat.type);
+    if (rule->thermostat && sc->thermostat.type != PL_THERMO_NONE)
         return pl_scene_fail(sc, err, offsetof(pl_scene_t, thermostat.type), "thermostat.type",
                              "a thermostat with srd.rule = \"%s\", which is itself one (it draws the relative "
                              "velocities at fluid.temperature); allowed: \"none\"", rule->name);
-    if (t == PL_THERMO_HEYES && !rule->collide_heyes)
-        return pl_scene_fail(sc, err, offsetof(pl_scene_t, thermostat.type), "thermostat.type",
-                             "\"heyes\" with srd.rule = \"%s\", which has no Heyes collision; allowed: "
-                             "\"none\" or \"rescale\"", rule->name);
+    int rc = thermostat->validate ? thermostat->validate(sc, err) : 0;
+    if (rc) return rc;
     if (sc->coupling.method == PL_COUPLE_HECHT2 && rule->srd_rotation < 0)
         return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.rule), "srd.rule",
                              "\"%s\" with coupling II, which rotates the cells that hold colloids by the SRD "
