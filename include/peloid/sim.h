@@ -46,6 +46,7 @@ typedef enum {
     /* PL_PHASE_AFTER */
     PL_SLOT_OUTPUT_GUARD = 10, /* the fluid guard's scan of a state about to be written */
     PL_SLOT_OBSERVE = 20,      /* observers sample the completed step */
+    PL_SLOT_FRAMES = 25,       /* trajectory frames (with what the observers found) */
     PL_SLOT_WRITE = 30,        /* writers: trajectory, thermo, checkpoint */
 } pl_stage_slot_t;
 
@@ -99,7 +100,12 @@ struct pl_sim {
     long long stream_pre_hook_step;
     /* colloids (NULL without; src/colloid_*.c) */
     struct pl_colloid *colloids;
-    struct pl_colloid_traj *colloid_traj; /* opened by the run loop when wanted */
+    /* per-colloid ids another component offers every trajectory frame
+     * (the clusters observer's cluster ids; pl_traj_ids_fn of
+     * peloid/colloid.h), NULL: none; the trajectory writer
+     * (src/app/writer_colloids.c) adds them */
+    const int32_t *(*frame_ids)(void *ctx, long long step, int compute);
+    void *frame_ids_ctx;
     /* colloid-solvent coupling (NULL without; src/coupling*.c) */
     struct pl_coupling *coupling;
     /* observers (NULL without; src/observe/observe_module.c) */

@@ -19,25 +19,16 @@ static int colloid_create(pl_sim_t *sim, pl_err_t *err)
 
 static void colloid_destroy(pl_sim_t *sim)
 {
-    pl_colloid_traj_close(sim->colloid_traj, NULL);
-    sim->colloid_traj = NULL;
     pl_colloid_free(sim->colloids);
     sim->colloids = NULL;
 }
 
 /* Colloid MD: colloids.substeps MD steps of dt_MD = srd.dt / substeps.
- * ctx: the colloids (both stages). */
+ * ctx: the colloids. */
 static int stage_colloid_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     pl_colloid_t *c = ctx;
     return pl_colloid_advance(c, sim->step, err);
-}
-
-static int stage_colloid_traj(pl_sim_t *sim, void *ctx, pl_err_t *err)
-{
-    const pl_colloid_t *c = ctx;
-    if (!sim->colloid_traj) return 0;
-    return pl_colloid_traj_write(sim->colloid_traj, c, sim->step, (double)sim->step * sim->scene.srd.dt, err);
 }
 
 static int colloid_stages(pl_sim_t *sim, pl_err_t *err)
@@ -45,12 +36,6 @@ static int colloid_stages(pl_sim_t *sim, pl_err_t *err)
     int rc;
     const pl_scene_t *sc = &sim->scene;
     if (!sim->colloids) return 0;
-    if (sc->colloids.trajectory_interval > 0) {
-        pl_stage_t t = {.name = "colloid-trajectory", .fn = stage_colloid_traj, .ctx = sim->colloids,
-                        .interval = sc->colloids.trajectory_interval, .phase = PL_PHASE_AFTER,
-                        .at_start = 1, .at_end = 1, .writes = 1, .slot = PL_SLOT_WRITE};
-        if ((rc = pl_sim_add_stage(sim, &t, err))) return rc;
-    }
     /* pinned colloids do not move; the potential coupling runs the
      * colloid MD together with the fluid near them */
     if (!pl_coupling_moves_colloids(sc, sim->fluid.n)) {

@@ -39,6 +39,7 @@
 #include "peloid/module.h"
 #include "peloid/observe_check.h"
 #include "peloid/observer.h"
+#include "peloid/outputs.h"
 
 enum { NFRAC = PL_OBS_NFRAC };
 #define fractions pl_obs_fractions
@@ -348,7 +349,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
     pl_observe_t *o = sim->observe;
     if (!o) return 0;
     char path[4096];
-    pl_path_join(path, sizeof path, dir, "observables.h5");
+    pl_path_join(path, sizeof path, dir, pl_outputs[PL_OUT_OBSERVABLES].name);
     int rc = write_h5(sim, o, path, err);
     if (rc) return rc;
     pl_json_t b = {err, path, "observables", 0};
