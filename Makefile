@@ -28,10 +28,13 @@ BUILD    ?= build
 CFLAGS_ALL = -std=c11 $(OPTFLAGS) $(WARN) -fno-common -ffp-contract=off -fopenmp -D_GNU_SOURCE \
              -Iinclude -I$(BUILD)/gen -Isrc/io -Isrc/scene $(shell pkg-config --cflags $(PKGS) 2>/dev/null) $(DEFS)
 LDLIBS_ALL = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lm -fopenmp
-# src/ by module: scene (input), mapping (units), fluid (SRD), colloid,
-# coupling, observe (observers and their statistics), io (files), plan (the
-# simulation, its modules table, the run); src/main.c the driver.
-LIB_SRC  := $(wildcard src/*/*.c) $(wildcard kernels/*.c)
+# src/ by layer (README "Layout"): core (the step, its stages and plan, the
+# module table, whole-simulation checkpoints); the components fluid, colloid,
+# coupling, observe; scene (input), mapping (units), io (HDF5, JSON and
+# atomic-file helpers); app (run, calibrate, advise, sweep and study, and
+# src/app/main.c, the command line, which is not in the library).
+MAIN_SRC := src/app/main.c
+LIB_SRC  := $(filter-out $(MAIN_SRC),$(wildcard src/*/*.c)) $(wildcard kernels/*.c)
 LIB_OBJ  := $(patsubst %.c,$(BUILD)/%.o,$(LIB_SRC))
 LIB      := $(BUILD)/libpeloid.a
 BIN      := bin/peloid
@@ -129,13 +132,13 @@ $(LIB): $(LIB_OBJ)
 	@echo "  AR      $@"
 	@ar rcs $@ $^
 
-$(BIN): $(BUILD)/src/main.o $(LIB)
+$(BIN): $(BUILD)/src/app/main.o $(LIB)
 	@mkdir -p bin
 	@echo "  LD      $@"
 	@$(CC) $(CFLAGS_ALL) -o $@ $^ $(LDLIBS_ALL)
 
 # The CLI of another build (the sanitizer build: build-asan/bin/peloid).
-$(BUILD)/bin/peloid: $(BUILD)/src/main.o $(LIB)
+$(BUILD)/bin/peloid: $(BUILD)/src/app/main.o $(LIB)
 	@mkdir -p $(dir $@)
 	@echo "  LD      $@"
 	@$(CC) $(CFLAGS_ALL) -o $@ $^ $(LDLIBS_ALL)
@@ -277,7 +280,7 @@ bench: $(BENCH_BIN)
 	@mkdir -p bench/out
 	@set -e; for b in $(BENCH_BIN); do $$b; done
 
-# The shipped calibrations (calibration/*.json, src/plan/calibrate.c): the
+# The shipped calibrations (calibration/*.json, src/app/calibrate.c): the
 # colloid diffusion of coupling I/II at the resolution of every shipped
 # physical scene and study base, measured afresh.
 .PHONY: calibrations

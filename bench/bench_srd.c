@@ -8,7 +8,7 @@
  * Byte model (bytes of particle state each kernel must read + write per
  * particle; D = sizeof(pl_real), 8 for double, 4 for float; write-allocate
  * not counted, the STREAM convention):
- *   plan (src/plan/sim.c)
+ *   plan (src/core/sim.c)
  *     stream+bin   read r, v (6D), write r (3D), write cell index (4)      9D + 4
  *                  (no body force: v is not written back, srd_stream.c)
  *     sort         read cell (4), r, v (6D); write twins r', v' (6D)       12D + 4
@@ -167,9 +167,9 @@ static int fused_step(pl_sim_t *sim, pl_err_t *err, double sec[3])
     pl_grid_draw_shift(&sim->grid, (uint64_t)sc->run.seed, (uint64_t)sim->step, sc->srd.grid_shift);
     pl_stream_params_t p;
     pl_sim_stream_params(sim, &p);
-    pl_srd_stream_count(&sim->fluid, &sim->grid, &p, sim->hist, sim->nthreads);
+    pl_srd_stream_count(&sim->fluid, &sim->grid, &p, sim->srd->hist, sim->nthreads);
     double t1 = omp_get_wtime();
-    pl_srd_stream_sort(&sim->fluid, &sim->grid, &p, sim->hist, sim->cell_start, sim->nthreads);
+    pl_srd_stream_sort(&sim->fluid, &sim->grid, &p, sim->srd->hist, sim->srd->cell_start, sim->nthreads);
     pl_fluid_swap(&sim->fluid);
     double t2 = omp_get_wtime();
     int rc = 0;

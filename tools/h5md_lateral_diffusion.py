@@ -59,7 +59,7 @@ def check_mapped(run, window):
     """(ok, line): the lateral D of RUN/colloids.h5 against the mapping's D in the run's box."""
     s = json.load(open(run + "/summary.json"))["mapping"]
     cd, tauP = s["colloid_diffusion"], s["hecht_times"]["tau_P"]["model_s"]
-    # the calibration's window (src/plan/calibrate.c: 4-12 x 2 M D_theory) or Hecht's tau_P
+    # the calibration's window (src/app/calibrate.c: 4-12 x 2 M D_theory) or Hecht's tau_P
     tv = 2 * tauP * cd["d_theory_a0_2_t0"] / cd["d_a0_2_t0"] if window == "calibration" else tauP
     d, se, nf, t1, t2 = lateral_d(run + "/colloids.h5", 4 * tv, 12 * tv)
     ref = cd["d_box_m2_s"]

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The table and plot of a sweep (peloid sweep, src/sweep/sweep.c):
+"""The table and plot of a sweep (peloid sweep, src/app/sweep.c):
 
     /usr/bin/python3 tools/sweep_collect.py OUT     (or: peloid sweep STUDY --collect)
 

@@ -66,7 +66,7 @@ typedef struct pl_colloid {
     long long md_step;
     double e0;             /* energy at the start (drift guard) */
     /* forces and torques carry over between steps (velocity Verlet's second
-     * half kick, Brownian step): checkpointed too (src/io/checkpoint_colloid.c) */
+     * half kick, Brownian step): checkpointed too (src/colloid/checkpoint_colloid.c) */
     double *fx, *fy, *fz, *tx, *ty, *tz;
     /* per-step scratch, rebuilt by the next force evaluation */
     double *zu, *epot;

@@ -2,7 +2,7 @@
  * stages of the coupling need, built from the scene: a common part and the
  * state of the one method in use.  Kernels: coupling_kernels.h.
  *
- * Plan (src/plan/sim.c): colloid-md (not with the potential coupling, whose
+ * Plan (src/core/sim.c): colloid-md (not with the potential coupling, whose
  * MD stage moves the colloids), [potential-select], stream+bin,
  * [potential-md | coupling1-reflect], sort, [coupling2-save], collide,
  * [coupling2-collide], thermostat, [flow-hold], [drift-removal].
@@ -26,7 +26,7 @@ struct pl_colloid;
  * the one method in use; the other method pointers are NULL.  Each method's
  * state is allocated, used and freed by that method's file (coupling.c only
  * clears the colloid interiors through it at the start); the structs are
- * public because the checkpoint (src/io/checkpoint_coupling.c: the run
+ * public because the checkpoint (src/coupling/checkpoint_coupling.c: the run
  * counters only, the rest is rebuilt from the scene or before each use) and
  * the tests read them.  Kernels see none of them, only their arrays and
  * parameter structs. */

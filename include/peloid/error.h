@@ -1,5 +1,5 @@
 /* Error reporting: fallible functions return int (0 = ok) and write one line
- * into a pl_err_t; only src/main.c prints it and picks the exit code
+ * into a pl_err_t; only src/app/main.c prints it and picks the exit code
  * (STYLE.md 8, DESIGN.md "Errors"). */
 #ifndef PELOID_ERROR_H
 #define PELOID_ERROR_H

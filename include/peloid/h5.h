@@ -22,7 +22,7 @@ int pl_h5_write(hid_t parent, const char *name, hid_t type, int rank, const hsiz
 /* Silences HDF5's automatic error-stack printing (our one-line messages
  * instead). */
 void pl_h5_quiet(void);
-/* Once at program start, before any other HDF5 call (src/main.c): no HDF5
+/* Once at program start, before any other HDF5 call (src/app/main.c): no HDF5
  * exit handler (it crashes after a failed H5Fclose), no automatic error
  * printing. */
 void pl_h5_init_process(void);

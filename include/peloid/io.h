@@ -1,5 +1,5 @@
-/* Output files: directory handling, atomic writes, checkpoints, fields,
- * thermo log, summary.  All writers go through a temporary name and rename()
+/* Output files: directory handling, atomic writes, fields, thermo log,
+ * summary (the checkpoint: peloid/checkpoint.h).  All writers go through a temporary name and rename()
  * so a crash never leaves a half-written file under the final name. */
 #ifndef PELOID_IO_H
 #define PELOID_IO_H
@@ -58,23 +58,6 @@ int pl_file_commit(FILE *f, const char *tmp, const char *path, pl_err_t *err);
 /* A byte copy of file src written atomically to path. */
 int pl_file_copy(const char *src, const char *path, pl_err_t *err);
 
-/* HDF5 checkpoint of the complete dynamic state: fluid (src/io/checkpoint.c)
- * and colloids (src/io/checkpoint_colloid.c). */
-int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err);
-/* Loads a checkpoint into a sim created from the same scene: the format
- * version, every dataset's checksum, the scene's seed, box, particle and
- * colloid counts and every physics key of the scene fingerprint must match,
- * and every value must be in range (else PL_ERR_INPUT, nothing changed that
- * the caller keeps).  `changed`: comma-separated scene keys allowed to
- * differ (--restart-changed), or NULL. */
-int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, pl_err_t *err);
-/* pl_checkpoint_restart with no key allowed to change. */
-int pl_checkpoint_read(pl_sim_t *sim, const char *path, pl_err_t *err);
-/* The step checkpoint `path` holds (*step); -1 when it cannot be read. */
-int pl_checkpoint_step(const char *path, long long *step);
-/* PL_ERR_INPUT unless every comma-separated name in `list` is a scene key
- * ("srd.dt", top-level keys without a section: "seed"). */
-int pl_checkpoint_changed_keys_valid(const char *list, pl_err_t *err);
 /* fsync of `path` (dir = 0) or of the directory holding it (dir = 1);
  * 0, or -1 with errno. */
 int pl_fsync_path(const char *path, int dir);

@@ -80,7 +80,7 @@ typedef struct {
 void pl_mapping_hecht_times(const pl_mapping_system_t *s, pl_mapping_hecht_times_t *t);
 
 /* ---- the colloid diffusion a coupling realises ------------------------- */
-/* A calibration run of the model (src/plan/calibrate.c): n_colloids free
+/* A calibration run of the model (src/app/calibrate.c): n_colloids free
  * colloids in a periodic cube of `box` cells, `steps` collision steps; the
  * MSD slope gives d_box +- d_box_se (a0^2/t0, kT = 1); the hydrodynamic
  * tail the slope's lags miss in the box (pl_srd_tail_missed) gives the box's
@@ -100,7 +100,7 @@ typedef struct {
     double wall_s;            /* wall time of the run (0: read from a cache) */
     double concentration;     /* 1 - c phi of the calibration box (PL Sec. VI.C; 1: not corrected) */
     char cache[640];          /* the cache file it was read from or written to */
-    /* provenance (src/plan/calibrate_mode.c), for every output: the mode the
+    /* provenance (src/app/calibrate_mode.c), for every output: the mode the
      * run asked for (PL_CALIBRATE_*), where d_inf came from (PL_CALSRC_*;
      * NONE: the scene was loaded without asking, e.g. a model scene), and
      * for PL_CALSRC_THEORY the theory's stated relative error with the

@@ -2,7 +2,7 @@
  * colloids, the colloid-solvent couplings, the observers.  Each registers
  * here, in one table row, what it adds to a run; its own file holds its
  * stages, its thermo columns and its summary entries.  Adding a module (a
- * coupling) is its file plus one row of pl_modules (src/plan/modules.c);
+ * coupling) is its file plus one row of pl_modules (src/core/modules.c);
  * adding an observable is its file plus one row of the observer table
  * (peloid/observer.h, src/observe/observers.c).  Where a module's stages run in a step is their slot
  * (pl_stage_slot_t, peloid/sim.h). */

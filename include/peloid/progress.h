@@ -1,4 +1,4 @@
-/* Run progress for a person watching (src/io/progress.c).  The library does not
+/* Run progress for a person watching (src/app/progress.c).  The library does not
  * print: the driver hands in the stream (its stderr) and whether it is a
  * terminal.  On a terminal one line is rewritten in place; otherwise a plain
  * line goes out every interval_s seconds of wall time (batch logs). */

@@ -10,7 +10,9 @@
 #include <stdio.h>
 
 #include "peloid/error.h"
+#include "peloid/params.h"
 #include "peloid/scene.h"
+#include "peloid/threads.h"
 
 /* Where a run ended (pl_run_opts_t.end): for the driver's resume hint. */
 typedef struct {
@@ -43,42 +45,14 @@ typedef struct {
 
 int pl_run(const pl_scene_t *scene, const pl_run_opts_t *opts, pl_err_t *err);
 
-/* The most OpenMP threads a run or check uses (--threads, OMP_NUM_THREADS). */
-#define PL_THREADS_MAX 4096
-
-/* The thread count of a run: `requested` (--threads) when > 0, else the
- * OpenMP default (OMP_NUM_THREADS, else the CPUs); above PL_THREADS_MAX
- * PL_ERR_INPUT naming --threads or OMP_NUM_THREADS (src/plan/threads.c). */
-int pl_threads_resolve(int requested, int *nthreads, pl_err_t *err);
-/* The cores hwloc reports (0: unknown): more threads than cores only slow a
- * run down (its results do not depend on the count). */
-int pl_threads_cores(void);
-
-/* `peloid params`: derived SRD parameters (PL Eqs. 4, 6, 9-15) as text. */
-void pl_params_print(const pl_scene_t *scene, FILE *out);
-
-/* The same as a jansson object (summary.json "derived"); a non-finite value
- * is PL_ERR_INPUT naming the key. */
-struct json_t;
-int pl_params_json(const pl_scene_t *scene, struct json_t **out, pl_err_t *err);
-
-/* `peloid check`: what `run` validates short of running: the thread count
- * of a run without --threads (OMP_NUM_THREADS), the derived values (finite),
- * the mapping report, the colloid placement (init file, overlaps). */
-int pl_run_check(const pl_scene_t *scene, pl_err_t *err);
-
-/* `peloid params --json`: the object above, or {"srd": ..., "mapping": ...}
- * for a scene with physical{} (strict: audit warnings are errors). */
-int pl_params_write_json(const pl_scene_t *scene, FILE *out, int strict, pl_err_t *err);
-
-/* Coupling-true time (src/plan/calibrate.c).  Whether a scene's mapping
+/* Coupling-true time (src/app/calibrate.c).  Whether a scene's mapping
  * needs the measured colloid D: a physical scene with coupling I or II. */
 int pl_calibration_needed(const pl_scene_t *scene);
 /* How a run, check or params gets the colloid D (--calibrate) and where a
  * calibration run reports: before it starts, its size and an estimate of its
  * duration (extrapolated from its first steps), then progress lines (percent,
  * elapsed, ETA) every progress_s seconds, or one line rewritten in place on a
- * terminal (src/io/progress.c). */
+ * terminal (src/app/progress.c). */
 typedef struct {
     int mode;          /* PL_CALIBRATE_* (mapping.h) */
     FILE *log;         /* NULL: silent */
@@ -95,7 +69,7 @@ int pl_calibrate_mode_parse(const char *s, int *mode); /* names: pl_calibrate_mo
 int pl_calibrate(const pl_scene_t *scene, const char *shipped_dir, int nthreads, const pl_calibrate_opts_t *o,
                  pl_mapping_calibration_t *cal, pl_err_t *err);
 /* The coupling theory's relative error (PL_CALSRC_THEORY fields of cal) for
- * the scene's coupling (src/plan/calibrate_mode.c). */
+ * the scene's coupling (src/app/calibrate_mode.c). */
 void pl_calibrate_theory(const pl_scene_t *scene, pl_mapping_calibration_t *cal);
 /* pl_scene_load_flags, then, where needed, pl_calibrate (or, with
  * PL_CALIBRATE_NEVER, the theory) and the scene loaded again with that D
@@ -103,12 +77,12 @@ void pl_calibrate_theory(const pl_scene_t *scene, pl_mapping_calibration_t *cal)
 int pl_scene_load_coupling_true(const char *path, unsigned flags, const char *shipped_dir, int nthreads,
                                 const pl_calibrate_opts_t *o, pl_scene_t *scene, pl_err_t *err);
 
-/* Row k of the shipped calibrations (src/plan/calibrate_mode.c): the
+/* Row k of the shipped calibrations (src/app/calibrate_mode.c): the
  * coupling (PL_COUPLE_*), the file key (calibration-<key>.json), the scene
  * that reads it and D_measured / D_theory; -1 past the last row. */
 int pl_calibrate_shipped(int k, int *method, const char **key, const char **scene, double *ratio);
 
-/* `peloid plan SCENE --target REL` (src/plan/advise.c): for the physical
+/* `peloid plan SCENE --target REL` (src/app/advise.c): for the physical
  * scene (loaded, calibrated as the caller chose) the couplings at their
  * default resolution with their hydrodynamic radius R_h/R (this scene's
  * mapping; the others from their theory scaled by the shipped calibrations'

@@ -19,7 +19,9 @@
 #include "peloid/mapping.h"
 
 enum { PL_VEL_GAUSSIAN = 0, PL_VEL_UNIFORM = 1 };
-enum { PL_THERMO_NONE = 0, PL_THERMO_HEYES = 1, PL_THERMO_RESCALE = 2 };
+/* thermostat.type: the index of a thermostat row (peloid/thermostat.h);
+ * row 0 is none */
+enum { PL_THERMO_NONE = 0 };
 
 /* Largest number of steps of a run (run.steps and --steps). */
 #define PL_STEPS_MAX 1000000000000000LL
@@ -67,7 +69,7 @@ typedef struct {
 } pl_scene_srd_t;
 
 typedef struct {
-    int type;           /* PL_THERMO_* */
+    int type;           /* its row (peloid/thermostat.h); PL_THERMO_NONE: none */
     double temperature; /* target kT* */
     double heyes_epsilon;
     long long interval; /* act every `interval` collision steps */
@@ -229,7 +231,7 @@ enum { PL_SCENE_INCLUDE_ANYWHERE = 1u, PL_SCENE_PROVISIONAL = 2u };
 int pl_scene_load_flags(const char *path, unsigned flags, pl_scene_t *scene, pl_err_t *err);
 
 /* Same, with the colloid diffusion a calibration run measured for the
- * scene's coupling and resolution (src/plan/calibrate.c), which the unit
+ * scene's coupling and resolution (src/app/calibrate.c), which the unit
  * mapping then matches instead of the coupling's theory (NULL: theory). */
 int pl_scene_load_calibrated(const char *path, unsigned flags, const pl_mapping_calibration_t *calib,
                              pl_scene_t *scene, pl_err_t *err);

@@ -11,11 +11,13 @@
 #include "peloid/fluid.h"
 #include "peloid/grid.h"
 #include "peloid/scene.h"
+#include "peloid/srd.h"
 #include "peloid/srd_kernels.h"
 
 typedef struct pl_sim pl_sim_t;
-/* A stage acts on the simulation; ctx is the registering module's own
- * state (writers: their open files; observers: their accumulators). */
+/* A stage acts on the simulation; ctx is the registering component's own
+ * state (the fluid's pl_srd_t, the colloids, the coupling, an observer's
+ * accumulators, the stopping rule's settings), which every stage uses. */
 typedef int (*pl_stage_fn)(pl_sim_t *sim, void *ctx, pl_err_t *err);
 
 typedef enum {
@@ -25,7 +27,7 @@ typedef enum {
 
 /* Where a stage runs within its phase: the plan is ordered by (phase,
  * slot), stages of one slot in the order they were added (module order,
- * src/plan/modules.c).  The step's data flow: colloid MD, then the fluid's
+ * src/core/modules.c).  The step's data flow: colloid MD, then the fluid's
  * stream, sort and collision with the couplings' stages around them. */
 typedef enum {
     /* PL_PHASE_STEP */
@@ -44,6 +46,7 @@ typedef enum {
     /* PL_PHASE_AFTER */
     PL_SLOT_OUTPUT_GUARD = 10, /* the fluid guard's scan of a state about to be written */
     PL_SLOT_OBSERVE = 20,      /* observers sample the completed step */
+    PL_SLOT_FRAMES = 25,       /* trajectory frames (with what the observers found) */
     PL_SLOT_WRITE = 30,        /* writers: trajectory, thermo, checkpoint */
 } pl_stage_slot_t;
 
@@ -68,24 +71,22 @@ struct pl_sim {
     pl_scene_t scene;
     int nthreads;
     long long step;   /* completed collision steps */
-    /* fluid */
+    /* the fluid: its particles and grid, the view every component reads;
+     * the rest of its state is its component's (peloid/srd.h) */
     pl_fluid_t fluid;
     pl_grid_t grid;
-    uint32_t *hist;       /* nthreads x ncells */
-    uint32_t *cell_start; /* ncells + 1 */
-    /* no particle moved since the last sort: the fluid is in collision-cell
-     * order under grid.shift, with cell_start (0 after creation or restart) */
-    int fluid_sorted;
-    double *block_sum;    /* 2 x ceil(ncells / PL_CELL_BLOCK) */
-    double *obs_scratch;  /* pl_srd_observe_scratch(n) */
-    double last_kT_meas;  /* PL Eq. A1 temperature of the last collision */
-    pl_collide_params_t collide; /* fixed when the plan is built; the stage sets the step */
+    struct pl_srd *srd;   /* src/fluid/fluid_state.c */
     double wall_u[2][3];  /* wall velocities (bottom, top): box.wall_velocity_* */
-    /* walls: impulse the walls gave fluid (and colloids) since step 0,
-     * (bottom z wall, top z wall, the x/y walls together) x (x, y, z);
-     * checkpointed.  The wall stress (PL Eq. 13). */
+    /* an acceleration of the fluid besides fluid.body_force that another
+     * component asks for (the coupling's gravity compensation, Hecht Sec.
+     * VIII.A (iii)); 0 without */
+    double fluid_accel[3];
+    /* the wall-impulse sink (src/fluid/fluid_walls.c, pl_sim_wall_add): impulse
+     * the walls gave fluid (and colloids) since step 0, (bottom z wall, top
+     * z wall, the x/y walls together) x (x, y, z); checkpointed.  The wall
+     * stress (PL Eq. 13). */
     double wall_impulse[3][3];
-    int64_t *wall_acc;    /* nthreads x PL_WALL_ACC_STRIDE (streaming bounces) */
+    int wall_acc_overflow; /* a fixed-point wall impulse sum overflowed (guard) */
     /* a pass the streaming of step stream_hook_step runs on what it streamed
      * (pl_stream_params_t.hook), set by a stage before it (coupling I's
      * detection); the streaming clears stream_hook once it ran it */
@@ -97,21 +98,14 @@ struct pl_sim {
     pl_stream_hook_fn stream_pre_hook;
     void *stream_pre_hook_ctx;
     long long stream_pre_hook_step;
-    double *wall_dp;      /* PL_WALL_ACC_N x blocks (virtual particles of the collision) */
-    int wall_acc_overflow; /* a fixed-point wall impulse sum overflowed (guard) */
-    /* fluid guard bounds (pl_fluid_guard_setup, src/fluid/fluid_guard.c) */
-    double guard_vmax;             /* largest speed allowed */
-    /* the collision's per-block speed flags (pl_collide_params_t.guard_bad)
-     * and the step whose collision wrote them (-1: none) */
-    unsigned char *guard_bad;
-    long long guard_bad_step;
-    double guard_kT_lo, guard_kT_hi; /* kT_cell band with a thermostat (else 0, inf) */
-    /* time-averaged fields */
-    int64_t *field_acc;   /* 4 x L0 L1 L2, fixed point */
-    long long field_samples;
     /* colloids (NULL without; src/colloid_*.c) */
     struct pl_colloid *colloids;
-    struct pl_colloid_traj *colloid_traj; /* opened by the run loop when wanted */
+    /* per-colloid ids another component offers every trajectory frame
+     * (the clusters observer's cluster ids; pl_traj_ids_fn of
+     * peloid/colloid.h), NULL: none; the trajectory writer
+     * (src/app/writer_colloids.c) adds them */
+    const int32_t *(*frame_ids)(void *ctx, long long step, int compute);
+    void *frame_ids_ctx;
     /* colloid-solvent coupling (NULL without; src/coupling*.c) */
     struct pl_coupling *coupling;
     /* observers (NULL without; src/observe/observe_module.c) */
@@ -140,11 +134,13 @@ void pl_sim_free(pl_sim_t *sim);
  * there (writers and observers register theirs after the simulation is
  * built); PL_ERR_INTERNAL when the plan is full. */
 int pl_sim_add_stage(pl_sim_t *sim, const pl_stage_t *stage, pl_err_t *err);
-/* A collision stage in its two variants: with the Heyes thermostat
- * (Hecht Sec. III) `heyes` every thermostat.interval steps and `plain` on
- * the others, else `plain` every step (the fluid's collision and coupling
- * II's share this choice). */
-int pl_sim_add_collide_stage(pl_sim_t *sim, const pl_stage_t *plain, const pl_stage_t *heyes, pl_err_t *err);
+/* A collision stage in its two variants: with a thermostat that runs
+ * inside the collision (its row's in_collision: Heyes, Hecht Sec. VIII.B)
+ * `in_collision` every thermostat.interval steps and `plain` on the others,
+ * else `plain` every step (the fluid's collision and coupling II's share
+ * this choice; src/fluid/thermostats.c). */
+int pl_sim_add_collide_stage(pl_sim_t *sim, const pl_stage_t *plain, const pl_stage_t *in_collision,
+                             pl_err_t *err);
 
 /* Whether stage s runs when the state is at step `step`. */
 int pl_sim_stage_due(const pl_sim_t *sim, const pl_stage_t *s, long long step);
@@ -192,7 +188,7 @@ void pl_sim_observe(const pl_sim_t *sim, pl_fluid_obs_t *obs, double *kT);
 /* ---- fluid guard (src/fluid/fluid_guard.c) ---------------------------------- */
 /* The guard stage runs every step, after the collision and thermostat: the
  * speeds and the O(1) checks every step, the positions too every
- * PL_FLUID_GUARD_SCAN_INTERVAL steps and before every output (src/plan/run.c). */
+ * PL_FLUID_GUARD_SCAN_INTERVAL steps and before every output (src/app/run.c). */
 enum { PL_FLUID_GUARD_INTERVAL = 1, PL_FLUID_GUARD_SCAN_INTERVAL = 10 };
 /* Speed bound: PL_FLUID_GUARD_SIGMAS thermal speeds sqrt(kT_max / m_f) plus
  * twice the fastest wall or imposed flow (a bounce-back off a wall moving
@@ -211,9 +207,19 @@ void pl_fluid_guard_setup(pl_sim_t *sim);
  * beyond guard_vmax, kT_cell outside the band, or an overflowed wall impulse
  * accumulator. */
 int pl_fluid_guard_stage(pl_sim_t *sim, void *ctx, pl_err_t *err);
+/* The scan before an output (PL_SLOT_OUTPUT_GUARD): positions too, unless
+ * the guard stage scanned this state already. */
+int pl_fluid_output_guard_stage(pl_sim_t *sim, void *ctx, pl_err_t *err);
 /* The same checks on the current state outside the plan (before an output,
  * after a restart); scan = 0 leaves out the positions. */
 int pl_fluid_guard_check(const pl_sim_t *sim, long long step, int scan, pl_err_t *err);
+
+/* The fluid component's state from sim->scene: grid, particles (initial
+ * state below), sim->srd, the guard's bounds; PL_ERR_NOMEM naming what is
+ * missing; and its release (src/fluid/fluid_state.c; the fluid module's
+ * create and destroy). */
+int pl_fluid_state_create(pl_sim_t *sim, pl_err_t *err);
+void pl_fluid_state_free(pl_sim_t *sim);
 
 /* Initial fluid: uniform positions, uniform or Gaussian velocities with zero
  * total momentum and exactly the scene temperature (src/fluid/fluid_init.c), on

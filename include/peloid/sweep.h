@@ -1,8 +1,8 @@
 /* Parameter sweeps (`peloid sweep STUDY.cfg`): a study names a base scene
  * and a grid (cartesian product) or an explicit list of values over scene
  * keys; each point is the base scene with those keys set, run as its own
- * `peloid run` process (src/sweep/sweep.c), or as one task of a Slurm job
- * array.  The study file is libconfig, read like a scene (src/sweep/study.c). */
+ * `peloid run` process (src/app/sweep.c), or as one task of a Slurm job
+ * array.  The study file is libconfig, read like a scene (src/app/study.c). */
 #ifndef PELOID_SWEEP_H
 #define PELOID_SWEEP_H
 
@@ -90,7 +90,7 @@ typedef struct {
     volatile sig_atomic_t *interrupt;
 } pl_sweep_opts_t;
 
-/* The throughput plan of a sweep (src/sweep/sweep_plan.c).  What a point
+/* The throughput plan of a sweep (src/app/sweep_plan.c).  What a point
  * costs, from its scene (pl_sweep_point_cost): its run's memory estimate
  * (pl_scene_memory_bytes) and the most threads it gains from, by the rule
  * of thumb of README "Parameter sweeps": max(1, fluid particles / 131072,

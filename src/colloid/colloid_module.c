@@ -8,6 +8,7 @@
 
 #include "checkpoint_h5.h"
 #include "json_build.h"
+#include "peloid/checkpoint.h"
 #include "peloid/colloid.h"
 #include "peloid/module.h"
 
@@ -18,25 +19,16 @@ static int colloid_create(pl_sim_t *sim, pl_err_t *err)
 
 static void colloid_destroy(pl_sim_t *sim)
 {
-    pl_colloid_traj_close(sim->colloid_traj, NULL);
-    sim->colloid_traj = NULL;
     pl_colloid_free(sim->colloids);
     sim->colloids = NULL;
 }
 
-/* Colloid MD: colloids.substeps MD steps of dt_MD = srd.dt / substeps. */
+/* Colloid MD: colloids.substeps MD steps of dt_MD = srd.dt / substeps.
+ * ctx: the colloids. */
 static int stage_colloid_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
-    return pl_colloid_advance(sim->colloids, sim->step, err);
-}
-
-static int stage_colloid_traj(pl_sim_t *sim, void *ctx, pl_err_t *err)
-{
-    (void)ctx;
-    if (!sim->colloid_traj) return 0;
-    return pl_colloid_traj_write(sim->colloid_traj, sim->colloids, sim->step,
-                                 (double)sim->step * sim->scene.srd.dt, err);
+    pl_colloid_t *c = ctx;
+    return pl_colloid_advance(c, sim->step, err);
 }
 
 static int colloid_stages(pl_sim_t *sim, pl_err_t *err)
@@ -44,16 +36,11 @@ static int colloid_stages(pl_sim_t *sim, pl_err_t *err)
     int rc;
     const pl_scene_t *sc = &sim->scene;
     if (!sim->colloids) return 0;
-    if (sc->colloids.trajectory_interval > 0) {
-        pl_stage_t t = {.name = "colloid-trajectory", .fn = stage_colloid_traj,
-                        .interval = sc->colloids.trajectory_interval, .phase = PL_PHASE_AFTER,
-                        .at_start = 1, .at_end = 1, .writes = 1, .slot = PL_SLOT_WRITE};
-        if ((rc = pl_sim_add_stage(sim, &t, err))) return rc;
-    }
     /* pinned colloids do not move; the potential coupling runs the
      * colloid MD together with the fluid near them */
     if (!pl_coupling_moves_colloids(sc, sim->fluid.n)) {
-        pl_stage_t md = {.name = "colloid-md", .fn = stage_colloid_md, .slot = PL_SLOT_COLLOID_MD, .colloid_md = 1};
+        pl_stage_t md = {.name = "colloid-md", .fn = stage_colloid_md, .ctx = sim->colloids,
+                         .slot = PL_SLOT_COLLOID_MD, .colloid_md = 1};
         if ((rc = pl_sim_add_stage(sim, &md, err))) return rc;
     }
     return 0;
@@ -151,7 +138,7 @@ static int colloid_summary(const pl_sim_t *sim, json_t *doc, pl_err_t *err)
     return b.failed ? err->code : 0;
 }
 
-/* Group /colloids of the checkpoint (src/io/checkpoint_colloid.c). */
+/* Group /colloids of the checkpoint (src/colloid/checkpoint_colloid.c). */
 static int colloid_ckpt_write(int64_t f, const pl_sim_t *sim)
 {
     return sim->colloids ? pl_ckpt_colloid_write((hid_t)f, sim->colloids) : 0;

@@ -8,6 +8,7 @@
  * checkpoint read it whatever the method; the colloid lookup is not: each of
  * the two methods that use one keeps its own, with its own radii. */
 #include <stdlib.h>
+#include <string.h>
 
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
@@ -75,6 +76,7 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         double M = 0.0;
         for (size_t k = 0; k < nc; ++k) M += col->mass[k];
         for (int d = 0; d < 3; ++d) cp->fluid_accel[d] = -sc->colloids.gravity[d] * M / (double)sim->fluid.n;
+        memcpy(sim->fluid_accel, cp->fluid_accel, sizeof sim->fluid_accel); /* the streaming's */
     }
     /* coupled colloids exchange energy with the fluid: no NVE drift guard */
     if (cp->method != PL_COUPLE_NONE) sim->colloids->nve = 0;

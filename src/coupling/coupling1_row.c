@@ -22,10 +22,10 @@ static void free_state(pl_coupling_t *cp)
 
 static int add_stages(pl_sim_t *sim, pl_err_t *err)
 {
-    pl_stage_t cells = {.name = "coupling1-cells", .fn = pl_coupling_stage_reflect_cells, .interval = 1,
-                        .slot = PL_SLOT_PRE_STREAM};
-    pl_stage_t reflect = {.name = "coupling1-reflect", .fn = pl_coupling_stage_reflect, .interval = 1,
-                          .slot = PL_SLOT_POST_STREAM};
+    pl_stage_t cells = {.name = "coupling1-cells", .fn = pl_coupling_stage_reflect_cells, .ctx = sim->coupling,
+                        .interval = 1, .slot = PL_SLOT_PRE_STREAM};
+    pl_stage_t reflect = {.name = "coupling1-reflect", .fn = pl_coupling_stage_reflect, .ctx = sim->coupling,
+                          .interval = 1, .slot = PL_SLOT_POST_STREAM};
     int rc = pl_sim_add_stage(sim, &cells, err);
     return rc ? rc : pl_sim_add_stage(sim, &reflect, err);
 }

@@ -6,6 +6,7 @@
  * fluid's.  Hecht Secs. IV-V, VIII.A; PL Secs. III, V. */
 #include "checkpoint_h5.h"
 #include "json_build.h"
+#include "peloid/checkpoint.h"
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
 #include "peloid/coupling_row.h"
@@ -29,7 +30,7 @@ static void coupling_destroy(pl_sim_t *sim)
 static int add(pl_sim_t *sim, const char *name, pl_stage_fn fn, long long interval, pl_stage_slot_t slot,
                pl_err_t *err)
 {
-    pl_stage_t s = {.name = name, .fn = fn, .interval = interval, .slot = slot};
+    pl_stage_t s = {.name = name, .fn = fn, .ctx = sim->coupling, .interval = interval, .slot = slot};
     return pl_sim_add_stage(sim, &s, err);
 }
 
@@ -72,7 +73,7 @@ static void coupling_columns(const pl_sim_t *sim, pl_thermo_table_t *t)
 }
 
 /* /wall_impulse (walls) and group /coupling: the run counters
- * (src/io/checkpoint_coupling.c); written for any scene with walls. */
+ * (src/coupling/checkpoint_coupling.c); written for any scene with walls. */
 static int coupling_ckpt_write(int64_t f, const pl_sim_t *sim) { return pl_ckpt_coupling_write((hid_t)f, sim); }
 
 static int coupling_ckpt_read(int64_t f, pl_sim_t *sim, const char *path, pl_err_t *err)

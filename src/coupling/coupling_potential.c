@@ -272,8 +272,7 @@ static int gather_selection(pl_sim_t *sim, pl_coupling_potential_state_t *ps, co
  * (the first step, after a restart) the full scan here. */
 int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
-    const pl_coupling_t *cp = sim->coupling;
+    const pl_coupling_t *cp = ctx;
     pl_coupling_potential_state_t *ps = cp->pot;
     pl_fluid_t *f = &sim->fluid;
     const pl_colloid_t *c = sim->colloids;
@@ -290,7 +289,7 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
     const pl_coupling_reach_t reach = particle_reach(sim, rc);
     ps->budget = reach.budget;
     pl_coupling_colloids_t v = sel_view(ps, c);
-    if (sim->fluid_sorted) { /* the same list, from the cells near colloids */
+    if (sim->srd->sorted) { /* the same list, from the cells near colloids */
         for (;;) {
             size_t need = pl_coupling_cell_candidates(&sim->grid, &v, ps->axis_buf, ps->gap_buf, ps->cstart, ps->clist,
                                                       ps->clist_cap, cp->nthreads);
@@ -301,7 +300,7 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
         memset(ps->counts, 0, (size_t)cp->nthreads * 8 * sizeof *ps->counts);
         ps->sel_ctx = (pl_coupling_select_ctx_t){.f = f, .g = &sim->grid, .c = v, .reach = reach,
                                                  .cstart = ps->cstart, .clist = ps->clist,
-                                                 .cell_start = sim->cell_start, .nthreads = cp->nthreads,
+                                                 .cell_start = sim->srd->cell_start, .nthreads = cp->nthreads,
                                                  .found = ps->found, .found_cell = ps->found_cell,
                                                  .counts = ps->counts, .stage = ps->stage};
         sim->stream_pre_hook = pl_coupling_select_block;
@@ -430,8 +429,7 @@ static void mean_force_add(pl_coupling_potential_state_t *ps, size_t n, double h
 
 int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
-    pl_coupling_t *cp = sim->coupling;
+    pl_coupling_t *cp = ctx;
     pl_coupling_potential_state_t *ps = cp->pot;
     pl_colloid_t *c = sim->colloids;
     pl_fluid_t *f = &sim->fluid;
@@ -447,8 +445,8 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_stream_params_t sp;
     pl_sim_stream_params(sim, &sp);
     const pl_coupling_near_t nb = near_view(ps, &sim->fluid);
-    if (f->tracked || sim->wall_acc)
-        pl_coupling_potential_unstream(&nb, f, &sim->grid, sim->wall_acc ? &sp : NULL, cp->nthreads, sacc);
+    if (f->tracked || sim->srd->wall_acc)
+        pl_coupling_potential_unstream(&nb, f, &sim->grid, sim->srd->wall_acc ? &sp : NULL, cp->nthreads, sacc);
     const double dtm = c->dt, h = 0.5 * dtm;
     /* PL Eqs. 18-19, velocity Verlet; the particles' kick - drift - forces -
      * kick of each MD step regrouped as forces - kick (- kick - drift of the
@@ -489,11 +487,11 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
     if (cp->pinned) cp->pinned_time += sc->srd.dt;
     if (ps->cf_mean)
         for (size_t k = 0; k < 3 * c->n; ++k) ps->cf_mean[k] /= (double)c->substeps * dtm;
-    if (sim->wall_acc) {
+    if (sim->srd->wall_acc) {
         for (int k = 0; k < PL_WALL_ACC_N; ++k) wacc[k] -= sacc[k];
         pl_sim_wall_add(sim, wacc);
     }
     /* the selected particles back, wrapped, into their new cells */
-    pl_coupling_potential_scatter(&nb, f, &sim->grid, sim->hist, cp->nthreads);
+    pl_coupling_potential_scatter(&nb, f, &sim->grid, sim->srd->hist, cp->nthreads);
     return 0;
 }

@@ -163,8 +163,7 @@ static int enlarged_view(pl_coupling1_state_t *s, const pl_colloid_t *c, int pin
  * the fluid step).  The colloids do not move until the reflections. */
 int pl_coupling_stage_reflect_cells(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
-    pl_coupling_t *cp = sim->coupling;
+    pl_coupling_t *cp = ctx;
     pl_coupling1_state_t *s = cp->c1;
     const pl_scene_t *sc = &sim->scene;
     pl_grid_t g = sim->grid;
@@ -193,8 +192,7 @@ int pl_coupling_stage_reflect_cells(pl_sim_t *sim, void *ctx, pl_err_t *err)
  * that is a function of (seed, step, particle) (kernels/coupling_reflect.c). */
 int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
-    pl_coupling_t *cp = sim->coupling;
+    pl_coupling_t *cp = ctx;
     pl_coupling1_state_t *s = cp->c1;
     pl_colloid_t *c = sim->colloids;
     s->p.step = (uint64_t)sim->step;
@@ -217,14 +215,14 @@ int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling I events");
     double *const vel[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
     int64_t wall[PL_WALL_ACC_N] = {0};
-    s->p.wall_acc = sim->wall_acc ? wall : NULL;
-    pl_coupling1_reflect(&sim->fluid, &sim->grid, &s->p, &v, &vb, vel, s->cstart, s->clist, sim->hist,
+    s->p.wall_acc = sim->srd->wall_acc ? wall : NULL;
+    pl_coupling1_reflect(&sim->fluid, &sim->grid, &s->p, &v, &vb, vel, s->cstart, s->clist, sim->srd->hist,
                          cp->nthreads, s->found, s->counts, sc);
     s->p.wall_acc = NULL;
     if (s->p.move) /* the colloids where the events left them */
         pl_colloid_displace(c->n, c->box, c->periodic, c->x, c->y, c->z, c->ix, c->iy, c->iz, sc->disp,
                             sc->disp + c->n, sc->disp + 2 * c->n);
-    if (sim->wall_acc) pl_sim_wall_add(sim, wall);
+    if (sim->srd->wall_acc) pl_sim_wall_add(sim, wall);
     s->events += s->counts[0];
     s->truncations += s->counts[1];
     if (cp->pinned) pl_coupling_absorb_pinned(cp, c, sim->scene.srd.dt);
@@ -301,8 +299,7 @@ void pl_coupling2_free(pl_coupling2_state_t *s)
  * occupied cells saved. */
 int pl_coupling_stage_save(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
-    const pl_coupling_t *cp = sim->coupling;
+    const pl_coupling_t *cp = ctx;
     pl_coupling2_state_t *s = cp->c2;
     const pl_colloid_t *c = sim->colloids;
     for (size_t k = 0; k < c->n; ++k)
@@ -315,7 +312,7 @@ int pl_coupling_stage_save(pl_sim_t *sim, void *ctx, pl_err_t *err)
             s->occ_cell[nocc] = cell;
             s->occ_col[nocc] = (int32_t)q;
             s->occ_save[nocc] = nsave;
-            nsave += sim->cell_start[cell + 1] - sim->cell_start[cell];
+            nsave += sim->srd->cell_start[cell + 1] - sim->srd->cell_start[cell];
             nocc++;
         }
         s->col_idx[q] = (int32_t)(s->keys[q] & 0xffffffffu);
@@ -330,24 +327,23 @@ int pl_coupling_stage_save(pl_sim_t *sim, void *ctx, pl_err_t *err)
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling II buffer");
     }
     pl_coupling2_cells_t oc = {s->nocc, s->occ_cell, s->occ_save, s->occ_col, s->col_idx};
-    pl_coupling2_save(&sim->fluid, sim->cell_start, &oc, s->vsave, cp->nthreads);
+    pl_coupling2_save(&sim->fluid, sim->srd->cell_start, &oc, s->vsave, cp->nthreads);
     return 0;
 }
 
 /* Coupling II after the fluid collision: the occupied cells again, with the
  * colloids (Hecht Eq. 15). */
-static int collide(pl_sim_t *sim, int heyes)
+static int collide(pl_sim_t *sim, pl_coupling_t *cp, int heyes)
 {
-    pl_coupling_t *cp = sim->coupling;
     pl_coupling2_state_t *s = cp->c2;
     pl_colloid_t *c = sim->colloids;
     s->p.step = (uint64_t)sim->step;
     pl_coupling2_cells_t oc = {s->nocc, s->occ_cell, s->occ_save, s->occ_col, s->col_idx};
     if (heyes)
-        pl_coupling2_collide_heyes(&s->p, &oc, &sim->grid, sim->cell_start, s->vsave, &sim->fluid, c->mass,
+        pl_coupling2_collide_heyes(&s->p, &oc, &sim->grid, sim->srd->cell_start, s->vsave, &sim->fluid, c->mass,
                                    c->vx, c->vy, c->vz, cp->nthreads);
     else
-        pl_coupling2_collide(&s->p, &oc, &sim->grid, sim->cell_start, s->vsave, &sim->fluid, c->mass, c->vx,
+        pl_coupling2_collide(&s->p, &oc, &sim->grid, sim->srd->cell_start, s->vsave, &sim->fluid, c->mass, c->vx,
                              c->vy, c->vz, cp->nthreads);
     /* the walls' push in the occupied cells, replacing the fluid kernel's
      * count there; summed in cell order (deterministic) */
@@ -359,22 +355,20 @@ static int collide(pl_sim_t *sim, int heyes)
 
 int pl_coupling_stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
     (void)err;
-    return collide(sim, 0);
+    return collide(sim, ctx, 0);
 }
 
 int pl_coupling_stage_collide_heyes(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
     (void)err;
-    return collide(sim, 1);
+    return collide(sim, ctx, 1);
 }
 
 void pl_coupling_total_momentum(const pl_sim_t *sim, double p[3], double *mass)
 {
     pl_fluid_obs_t o;
-    pl_srd_observe(&sim->fluid, sim->obs_scratch, &o, sim->nthreads);
+    pl_srd_observe(&sim->fluid, sim->srd->obs_scratch, &o, sim->nthreads);
     double M = (double)sim->fluid.n;
     for (int d = 0; d < 3; ++d) p[d] = o.momentum[d];
     const pl_colloid_t *c = sim->colloids;
@@ -391,15 +385,15 @@ void pl_coupling_total_momentum(const pl_sim_t *sim, double p[3], double *mass)
  * subtracted from every velocity. */
 int pl_coupling_stage_drift(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
     (void)err;
+    const pl_coupling_t *cp = ctx;
     double P[3], M;
     pl_coupling_total_momentum(sim, P, &M);
     const double u[3] = {P[0] / M, P[1] / M, P[2] / M};
     /* v + (-u) rounds as v - u does (IEEE 754 subtraction is the addition
      * of the negated operand): the same bits */
     const double du[3] = {-u[0], -u[1], -u[2]};
-    pl_srd_velocity_add(&sim->fluid, du, sim->nthreads);
+    pl_srd_velocity_add(&sim->fluid, du, cp->nthreads);
     pl_colloid_t *c = sim->colloids;
     for (size_t k = 0; c && k < c->n; ++k) {
         c->vx[k] -= u[0];
@@ -411,14 +405,14 @@ int pl_coupling_stage_drift(pl_sim_t *sim, void *ctx, pl_err_t *err)
 
 int pl_coupling_stage_flow(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
     (void)err;
+    const pl_coupling_t *cp = ctx;
     pl_fluid_obs_t o;
     pl_fluid_t *f = &sim->fluid;
-    pl_srd_observe(f, sim->obs_scratch, &o, sim->nthreads);
+    pl_srd_observe(f, sim->srd->obs_scratch, &o, cp->nthreads);
     double u[3];
     for (int d = 0; d < 3; ++d)
         u[d] = sim->scene.coupling.flow_velocity[d] - o.momentum[d] / (double)f->n;
-    pl_srd_velocity_add(f, u, sim->nthreads);
+    pl_srd_velocity_add(f, u, cp->nthreads);
     return 0;
 }

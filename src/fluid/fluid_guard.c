@@ -23,7 +23,7 @@
  * velocity, and positions stay finite and in the box by induction (finite
  * r + finite v dt, wrapped or reflected).  The positions themselves (the
  * full 48 B) every PL_FLUID_GUARD_SCAN_INTERVAL steps and before every thermo
- * row, checkpoint and fields file (src/plan/run.c), so nothing non-finite reaches
+ * row, checkpoint and fields file (src/app/run.c), so nothing non-finite reaches
  * an output.  Costs: README "Fluid guard". */
 #include <math.h>
 #include <stdio.h>
@@ -42,13 +42,13 @@ void pl_fluid_guard_setup(pl_sim_t *sim)
     }
     const double *fv = sc->coupling.flow_velocity;
     u = fmax(u, sqrt(fv[0] * fv[0] + fv[1] * fv[1] + fv[2] * fv[2]));
-    sim->guard_vmax = fmax(PL_FLUID_GUARD_SIGMAS * sqrt(kT) + 2.0 * u, 1.0 / sc->srd.dt);
-    sim->guard_kT_lo = 0.0;
-    sim->guard_kT_hi = INFINITY;
+    sim->srd->guard_vmax = fmax(PL_FLUID_GUARD_SIGMAS * sqrt(kT) + 2.0 * u, 1.0 / sc->srd.dt);
+    sim->srd->guard_kT_lo = 0.0;
+    sim->srd->guard_kT_hi = INFINITY;
     if (sc->thermostat.type != PL_THERMO_NONE) {
         const double t0 = sc->fluid.temperature, ts = sc->thermostat.temperature;
-        sim->guard_kT_lo = fmin(t0, ts) / PL_FLUID_GUARD_KT_FACTOR;
-        sim->guard_kT_hi = fmax(t0, ts) * PL_FLUID_GUARD_KT_FACTOR;
+        sim->srd->guard_kT_lo = fmin(t0, ts) / PL_FLUID_GUARD_KT_FACTOR;
+        sim->srd->guard_kT_hi = fmax(t0, ts) * PL_FLUID_GUARD_KT_FACTOR;
     }
 }
 
@@ -61,9 +61,9 @@ static const char *const axis[3] = {"x", "y", "z"};
  * particle is always flagged (a flag without one is possible: the collision
  * tests each cell's sum of v^2); particles are in cell order, so the first
  * flagged block with a failing particle holds the lowest failing index. */
-static long long speeds_from_collision(const pl_sim_t *sim)
+static long long speeds_from_collision(const pl_sim_t *sim, const pl_srd_t *fs)
 {
-    if (sim->guard_bad_step != sim->step) return -1;
+    if (fs->guard_bad_step != sim->step) return -1;
     for (int k = 0; k < sim->nstages; ++k) {
         const pl_stage_t *s = &sim->stages[k];
         if (s->phase == PL_PHASE_STEP && s->slot > PL_SLOT_COLLIDE && s->slot < PL_SLOT_GUARD &&
@@ -71,18 +71,19 @@ static long long speeds_from_collision(const pl_sim_t *sim)
             return -1;
     }
     const size_t nc = sim->grid.ncells, nb = (nc + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
-    const double vmax = sim->guard_vmax;
+    const double vmax = fs->guard_vmax;
     for (size_t b = 0; b < nb; ++b) {
-        if (!sim->guard_bad[b]) continue;
+        if (!fs->guard_bad[b]) continue;
         const size_t c1 = (b + 1) * PL_CELL_BLOCK < nc ? (b + 1) * PL_CELL_BLOCK : nc;
-        const size_t lo = sim->cell_start[b * PL_CELL_BLOCK], hi = sim->cell_start[c1];
+        const size_t lo = fs->cell_start[b * PL_CELL_BLOCK], hi = fs->cell_start[c1];
         const size_t i = pl_srd_guard_scan_speeds(&sim->fluid, lo, hi, vmax * vmax);
         if (i < hi) return (long long)i;
     }
     return (long long)sim->fluid.n;
 }
 
-static int guard_check(const pl_sim_t *sim, long long step, int scan, int fused, pl_err_t *err)
+static int guard_check(const pl_sim_t *sim, const pl_srd_t *fs, long long step, int scan, int fused,
+                       pl_err_t *err)
 {
     const pl_fluid_t *f = &sim->fluid;
     const pl_scene_t *sc = &sim->scene;
@@ -91,8 +92,8 @@ static int guard_check(const pl_sim_t *sim, long long step, int scan, int fused,
                           "guard wall_impulse: step %lld: the fixed-point wall impulse sum of one step left "
                           "+-2^62 (2^-%d units); bound 2^62; lower box.wall_velocity_* or srd.dt (the fluid "
                           "is running away)", step, PL_FIELD_FIXED_SHIFT);
-    const double vmax = sim->guard_vmax;
-    const long long from_collision = !scan && fused ? speeds_from_collision(sim) : -1;
+    const double vmax = fs->guard_vmax;
+    const long long from_collision = !scan && fused ? speeds_from_collision(sim, fs) : -1;
     size_t i = from_collision >= 0 ? (size_t)from_collision
                                    : pl_srd_guard_scan(f, sc->box.cells, vmax * vmax, scan, sim->nthreads);
     if (i < f->n) {
@@ -121,29 +122,43 @@ static int guard_check(const pl_sim_t *sim, long long step, int scan, int fused,
                           "a0/srd.dt); lower srd.dt, box.wall_velocity_*, fluid.body_force or add a thermostat",
                           step, i, s, s * sc->srd.dt, vmax, PL_FLUID_GUARD_SIGMAS);
     }
-    const double kT = sim->last_kT_meas;
-    if (!isfinite(kT) || (kT > 0.0 && kT < sim->guard_kT_lo) || kT > sim->guard_kT_hi)
+    const double kT = fs->last_kT_meas;
+    if (!isfinite(kT) || (kT > 0.0 && kT < fs->guard_kT_lo) || kT > fs->guard_kT_hi)
         return pl_err_set(err, PL_ERR_GUARD,
                           "guard fluid_temperature: step %lld: all %zu fluid particles: kT_cell = %.4g ran "
                           "away from the thermostat target %g; bound [%g, %g] (factor %g around fluid and "
                           "target temperature); raise thermostat.heyes_epsilon or lower thermostat.interval, "
                           "srd.dt or the energy input (walls, body force)", step, f->n, kT,
-                          sc->thermostat.temperature, sim->guard_kT_lo, sim->guard_kT_hi,
+                          sc->thermostat.temperature, fs->guard_kT_lo, fs->guard_kT_hi,
                           PL_FLUID_GUARD_KT_FACTOR);
     return 0;
 }
 
 int pl_fluid_guard_check(const pl_sim_t *sim, long long step, int scan, pl_err_t *err)
 {
-    return guard_check(sim, step, scan, 0, err);
+    return guard_check(sim, sim->srd, step, scan, 0, err);
 }
 
+/* ctx: the fluid's state (peloid/srd.h) */
 int pl_fluid_guard_stage(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
     /* the stage runs inside step `step` -> step + 1: it checks the state
      * the thermo row of step + 1 would show; positions every
      * PL_FLUID_GUARD_SCAN_INTERVAL steps (the run loop adds a scan before
      * every output) */
-    return guard_check(sim, sim->step + 1, (sim->step + 1) % PL_FLUID_GUARD_SCAN_INTERVAL == 0, 1, err);
+    return guard_check(sim, ctx, sim->step + 1, (sim->step + 1) % PL_FLUID_GUARD_SCAN_INTERVAL == 0, 1, err);
+}
+
+/* After-step stage: before any output is written, the fluid guard's
+ * particle scan on the state it writes (the fluid-guard stage scanned this
+ * state already on multiples of its scan interval).  ctx: as above. */
+int pl_fluid_output_guard_stage(pl_sim_t *sim, void *ctx, pl_err_t *err)
+{
+    if (sim->step % PL_FLUID_GUARD_SCAN_INTERVAL == 0) return 0;
+    for (int k = 0; k < sim->nstages; ++k) {
+        const pl_stage_t *s = &sim->stages[k];
+        if (s->phase == PL_PHASE_AFTER && s->writes && pl_sim_stage_due(sim, s, sim->step))
+            return guard_check(sim, ctx, sim->step, 1, 0, err);
+    }
+    return 0;
 }

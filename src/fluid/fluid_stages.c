@@ -1,7 +1,7 @@
 /* The SRD fluid module (peloid/module.h): its stages (streaming with
  * binning, counting sort, collision with or without the Heyes thermostat,
- * the rescaling thermostat, the fluid guard, field sampling, the guard's
- * scan before an output) and its thermo columns (temperature, momentum,
+ * the thermostat row's stages (peloid/thermostat.h), the fluid guard, field
+ * sampling, the guard's scan before an output) and its thermo columns (temperature, momentum,
  * kinetic energy, tracked MSD, wall stresses; for physical scenes time in s
  * and the temperature in K).  PL Eqs. 3, 13, A1-A2; Hecht Eqs. 12, 33. */
 #include <math.h>
@@ -10,9 +10,9 @@
 
 #include "peloid/real.h" /* PL_PI */
 #include "peloid/collision_rule.h"
-#include "peloid/coupling.h"
 #include "peloid/mapping.h"
 #include "peloid/module.h"
+#include "peloid/thermostat.h"
 
 /* ---- stages ------------------------------------------------------------ */
 
@@ -22,20 +22,21 @@ void pl_sim_stream_params(const pl_sim_t *sim, pl_stream_params_t *p)
     memset(p, 0, sizeof *p);
     p->dt = sc->srd.dt;
     for (int d = 0; d < 3; ++d) /* + Hecht Sec. VIII.A (iii) compensation */
-        p->accel[d] = sc->fluid.body_force[d] + (sim->coupling ? sim->coupling->fluid_accel[d] : 0.0);
+        p->accel[d] = sc->fluid.body_force[d] + sim->fluid_accel[d];
     memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
 }
 
+/* ctx of every fluid stage: the fluid's state (peloid/srd.h) */
 static int stage_stream(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
     (void)err;
+    pl_srd_t *fs = ctx;
     const pl_scene_t *sc = &sim->scene;
-    sim->fluid_sorted = 0;
+    fs->sorted = 0;
     pl_grid_draw_shift(&sim->grid, (uint64_t)sc->run.seed, (uint64_t)sim->step, sc->srd.grid_shift);
     pl_stream_params_t p;
     pl_sim_stream_params(sim, &p);
-    p.wall_acc = sim->wall_acc; /* NULL without walls */
+    p.wall_acc = fs->wall_acc; /* NULL without walls */
     if (sim->stream_hook && sim->stream_hook_step == sim->step) {
         p.hook = sim->stream_hook;
         p.hook_ctx = sim->stream_hook_ctx;
@@ -44,13 +45,13 @@ static int stage_stream(pl_sim_t *sim, void *ctx, pl_err_t *err)
         p.pre_hook = sim->stream_pre_hook;
         p.pre_hook_ctx = sim->stream_pre_hook_ctx;
     }
-    pl_srd_stream_bin(&sim->fluid, &sim->grid, &p, sim->hist, sim->nthreads);
+    pl_srd_stream_bin(&sim->fluid, &sim->grid, &p, fs->hist, sim->nthreads);
     sim->stream_hook = sim->stream_pre_hook = NULL; /* ran (or stale) */
-    if (sim->wall_acc) { /* integer sums: the same for any thread count */
+    if (fs->wall_acc) { /* integer sums: the same for any thread count */
         int64_t acc[PL_WALL_ACC_N] = {0};
         for (int t = 0; t < sim->nthreads; ++t)
             for (int k = 0; k < PL_WALL_ACC_N; ++k) {
-                const int64_t a = sim->wall_acc[(size_t)t * PL_WALL_ACC_STRIDE + (size_t)k];
+                const int64_t a = fs->wall_acc[(size_t)t * PL_WALL_ACC_STRIDE + (size_t)k];
                 if (acc[k] == PL_WALL_ACC_OVERFLOW) continue;
                 if (a == PL_WALL_ACC_OVERFLOW || __builtin_add_overflow(acc[k], a, &acc[k]))
                     acc[k] = PL_WALL_ACC_OVERFLOW;
@@ -67,21 +68,21 @@ static int stage_stream(pl_sim_t *sim, void *ctx, pl_err_t *err)
  * (bench/RESULTS.md); bench_srd times both pipelines. */
 static int stage_sort(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
     (void)err;
-    pl_srd_sort(&sim->fluid, sim->hist, sim->cell_start, sim->grid.ncells, sim->nthreads);
+    pl_srd_t *fs = ctx;
+    pl_srd_sort(&sim->fluid, fs->hist, fs->cell_start, sim->grid.ncells, sim->nthreads);
     pl_fluid_swap(&sim->fluid);
-    sim->fluid_sorted = 1;
+    fs->sorted = 1;
     return 0;
 }
 
 /* The collision's parameters, fixed for the run: computed once when the
  * plan is built (only the step changes). */
-static void collide_params(const pl_sim_t *sim, pl_collide_params_t *p)
+static void collide_params(const pl_sim_t *sim, const pl_srd_t *fs, pl_collide_params_t *p)
 {
     const pl_scene_t *sc = &sim->scene;
     memset(p, 0, sizeof *p);
-    p->rule = pl_collision_rule(sc->srd.rule)->srd_rotation;
+    p->rule = fs->rule->srd_rotation;
     p->cos_a = cos(sc->srd.alpha_deg * PL_PI / 180.0);
     p->sin_a = sin(sc->srd.alpha_deg * PL_PI / 180.0);
     p->seed = (uint64_t)sc->run.seed;
@@ -92,42 +93,42 @@ static void collide_params(const pl_sim_t *sim, pl_collide_params_t *p)
     p->wall_ghosts = pl_sim_wall_ghosts(sim, &p->ghost_density, &kT_wall);
     p->kT_wall = kT_wall;
     memcpy(p->wall_u, sim->wall_u, sizeof p->wall_u);
-    p->wall_dp = p->wall_ghosts ? sim->wall_dp : NULL;
+    p->wall_dp = p->wall_ghosts ? fs->wall_dp : NULL;
 }
 
 /* PL Eqs. A1-A2 and the virtual particles' push, summed in block order
  * (deterministic) */
-static void collide_sums(pl_sim_t *sim, const pl_collide_params_t *p)
+static void collide_sums(pl_sim_t *sim, pl_srd_t *fs, const pl_collide_params_t *p)
 {
     size_t nb = (sim->grid.ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
     for (size_t b = 0; p->wall_dp && b < nb; ++b) pl_sim_wall_add_momentum(sim, p->wall_dp + PL_WALL_ACC_N * b);
     double s2 = 0.0, dof = 0.0;
     for (size_t b = 0; b < nb; ++b) {
-        s2 += sim->block_sum[2 * b];
-        dof += sim->block_sum[2 * b + 1];
+        s2 += fs->block_sum[2 * b];
+        dof += fs->block_sum[2 * b + 1];
     }
-    sim->last_kT_meas = dof > 0 ? s2 / dof : 0.0;
+    fs->last_kT_meas = dof > 0 ? s2 / dof : 0.0;
 }
 
 /* The step, and the fluid guard's speed test done inside the collision
  * (src/fluid/fluid_guard.c uses the flags when nothing moved the fluid
  * between the collision and the guard). */
-static void collide_guard(pl_sim_t *sim)
+static void collide_guard(const pl_sim_t *sim, pl_srd_t *fs)
 {
-    sim->collide.step = (uint64_t)sim->step;
-    sim->collide.guard_bad = sim->guard_bad;
-    sim->collide.guard_vmax2 = sim->guard_vmax * sim->guard_vmax;
-    sim->guard_bad_step = sim->step;
+    fs->collide.step = (uint64_t)sim->step;
+    fs->collide.guard_bad = fs->guard_bad;
+    fs->collide.guard_vmax2 = fs->guard_vmax * fs->guard_vmax;
+    fs->guard_bad_step = sim->step;
 }
 
-/* ctx: the collision rule's row (peloid/collision_rule.h) */
+/* The collision by the rule's kernel (fs->rule, peloid/collision_rule.h). */
 static int stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)err;
-    const pl_collision_rule_t *rule = ctx;
-    collide_guard(sim);
-    rule->collide(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum, sim->nthreads);
-    collide_sums(sim, &sim->collide);
+    pl_srd_t *fs = ctx;
+    collide_guard(sim, fs);
+    fs->rule->collide(&sim->fluid, &sim->grid, fs->cell_start, &fs->collide, fs->block_sum, sim->nthreads);
+    collide_sums(sim, fs, &fs->collide);
     return 0;
 }
 
@@ -136,46 +137,20 @@ static int stage_collide(pl_sim_t *sim, void *ctx, pl_err_t *err)
 static int stage_collide_heyes(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)err;
-    const pl_collision_rule_t *rule = ctx;
-    collide_guard(sim);
-    rule->collide_heyes(&sim->fluid, &sim->grid, sim->cell_start, &sim->collide, sim->block_sum, sim->nthreads);
-    collide_sums(sim, &sim->collide);
-    return 0;
-}
-
-static int stage_rescale(pl_sim_t *sim, void *ctx, pl_err_t *err)
-{
-    (void)ctx;
-    (void)err;
-    if (sim->last_kT_meas <= 0.0) return 0;
-    double factor = sqrt(sim->scene.thermostat.temperature / sim->last_kT_meas); /* PL App. A */
-    pl_srd_rescale(&sim->fluid, sim->cell_start, sim->grid.ncells, factor, sim->nthreads);
-    sim->last_kT_meas = sim->scene.thermostat.temperature;
+    pl_srd_t *fs = ctx;
+    collide_guard(sim, fs);
+    fs->rule->collide_heyes(&sim->fluid, &sim->grid, fs->cell_start, &fs->collide, fs->block_sum, sim->nthreads);
+    collide_sums(sim, fs, &fs->collide);
     return 0;
 }
 
 static int stage_fields(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
     (void)err;
+    pl_srd_t *fs = ctx;
     if (sim->step < sim->scene.output.fields_start) return 0;
-    pl_srd_fields_accumulate(&sim->fluid, sim->grid.L, sim->field_acc, sim->nthreads);
-    sim->field_samples++;
-    return 0;
-}
-
-/* After-step stage: before any output is written, the fluid guard's
- * particle scan on the state it writes (the fluid-guard stage scanned this
- * state already on multiples of its scan interval). */
-static int stage_output_guard(pl_sim_t *sim, void *ctx, pl_err_t *err)
-{
-    (void)ctx;
-    if (sim->step % PL_FLUID_GUARD_SCAN_INTERVAL == 0) return 0;
-    for (int k = 0; k < sim->nstages; ++k) {
-        const pl_stage_t *s = &sim->stages[k];
-        if (s->phase == PL_PHASE_AFTER && s->writes && pl_sim_stage_due(sim, s, sim->step))
-            return pl_fluid_guard_check(sim, sim->step, 1, err);
-    }
+    pl_srd_fields_accumulate(&sim->fluid, sim->grid.L, fs->field_acc, sim->nthreads);
+    fs->field_samples++;
     return 0;
 }
 
@@ -184,32 +159,29 @@ static int fluid_stages(pl_sim_t *sim, pl_err_t *err)
 {
     int rc;
     const pl_scene_t *sc = &sim->scene;
+    pl_srd_t *fs = sim->srd;
     if (sim->fluid.n == 0) return 0;
-    pl_stage_t og = {.name = "output-guard", .fn = stage_output_guard, .phase = PL_PHASE_AFTER,
-                     .slot = PL_SLOT_OUTPUT_GUARD};
-    pl_stage_t stream = {.name = "stream+bin", .fn = stage_stream, .slot = PL_SLOT_STREAM};
-    pl_stage_t sort = {.name = "sort", .fn = stage_sort, .slot = PL_SLOT_SORT};
+    pl_stage_t og = {.name = "output-guard", .fn = pl_fluid_output_guard_stage, .ctx = fs,
+                     .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OUTPUT_GUARD};
+    pl_stage_t stream = {.name = "stream+bin", .fn = stage_stream, .ctx = fs, .slot = PL_SLOT_STREAM};
+    pl_stage_t sort = {.name = "sort", .fn = stage_sort, .ctx = fs, .slot = PL_SLOT_SORT};
     if ((rc = pl_sim_add_stage(sim, &og, err))) return rc;
     if ((rc = pl_sim_add_stage(sim, &stream, err))) return rc;
     if ((rc = pl_sim_add_stage(sim, &sort, err))) return rc;
-    collide_params(sim, &sim->collide);
-    /* the row's validate refused the Heyes thermostat where collide_heyes is NULL */
-    void *rule = (void *)pl_collision_rule(sc->srd.rule);
-    pl_stage_t plain = {.name = "collide", .fn = stage_collide, .ctx = rule, .slot = PL_SLOT_COLLIDE};
-    pl_stage_t heyes = {.name = "collide+heyes", .fn = stage_collide_heyes, .ctx = rule, .slot = PL_SLOT_COLLIDE};
+    collide_params(sim, fs, &fs->collide);
+    /* the Heyes row's validate refused a rule whose collide_heyes is NULL */
+    pl_stage_t plain = {.name = "collide", .fn = stage_collide, .ctx = fs, .slot = PL_SLOT_COLLIDE};
+    pl_stage_t heyes = {.name = "collide+heyes", .fn = stage_collide_heyes, .ctx = fs, .slot = PL_SLOT_COLLIDE};
     if ((rc = pl_sim_add_collide_stage(sim, &plain, &heyes, err))) return rc;
-    if (sc->thermostat.type == PL_THERMO_RESCALE) {
-        pl_stage_t r = {.name = "thermostat-rescale", .fn = stage_rescale, .interval = sc->thermostat.interval,
-                        .slot = PL_SLOT_THERMOSTAT};
-        if ((rc = pl_sim_add_stage(sim, &r, err))) return rc;
-    }
+    const pl_thermostat_t *thermostat = pl_thermostat(sc->thermostat.type);
+    if (thermostat->add_stages && (rc = thermostat->add_stages(sim, fs, err))) return rc;
     /* last before anything samples or moves the fluid again: nothing
      * non-finite reaches an output or the next stream */
-    pl_stage_t g = {.name = "fluid-guard", .fn = pl_fluid_guard_stage, .interval = PL_FLUID_GUARD_INTERVAL,
-                    .slot = PL_SLOT_GUARD};
+    pl_stage_t g = {.name = "fluid-guard", .fn = pl_fluid_guard_stage, .ctx = fs,
+                    .interval = PL_FLUID_GUARD_INTERVAL, .slot = PL_SLOT_GUARD};
     if ((rc = pl_sim_add_stage(sim, &g, err))) return rc;
     if (sc->output.fields_interval > 0) {
-        pl_stage_t f = {.name = "fields", .fn = stage_fields, .interval = sc->output.fields_interval,
+        pl_stage_t f = {.name = "fields", .fn = stage_fields, .ctx = fs, .interval = sc->output.fields_interval,
                         .slot = PL_SLOT_SAMPLE};
         if ((rc = pl_sim_add_stage(sim, &f, err))) return rc;
     }
@@ -231,7 +203,7 @@ static double v_kT(const pl_thermo_sample_t *s, int a)
 static double v_kT_cell(const pl_thermo_sample_t *s, int a)
 {
     (void)a;
-    return s->sim->last_kT_meas;
+    return s->sim->srd->last_kT_meas;
 }
 static double v_momentum(const pl_thermo_sample_t *s, int d) { return s->fluid.momentum[d]; }
 static double v_kinetic(const pl_thermo_sample_t *s, int a)
@@ -305,32 +277,24 @@ static void fluid_columns(const pl_sim_t *sim, pl_thermo_table_t *t)
         pl_thermo_add(t, side_wall_cols, NCOL(side_wall_cols));
 }
 
-/* The fluid's arrays and grid belong to every simulation (pl_sim_create
- * makes them); the module's own state is the fluid guard's bounds, which
- * depend on the scene alone. */
-static int fluid_create(pl_sim_t *sim, pl_err_t *err)
-{
-    (void)err;
-    pl_fluid_guard_setup(sim);
-    return 0;
-}
+/* The fluid's state (src/fluid/fluid_state.c): the first module, so the
+ * colloids and the coupling find the fluid made. */
+static int fluid_create(pl_sim_t *sim, pl_err_t *err) { return pl_fluid_state_create(sim, err); }
 
-/* The collision rule's own check (peloid/collision_rule.h), and those every
- * rule gets: a rule without a Heyes kernel refuses the Heyes thermostat, a
- * rule that is a thermostat refuses a second one, coupling II needs a
- * rotation rule. */
+/* The collision rule's and the thermostat's own checks
+ * (peloid/collision_rule.h, peloid/thermostat.h), and those every rule
+ * gets: a rule that is a thermostat refuses a second one, coupling II needs
+ * a rotation rule. */
 static int fluid_validate(const pl_scene_t *sc, pl_err_t *err)
 {
     const pl_collision_rule_t *rule = pl_collision_rule(sc->srd.rule);
-    const int t = sc->thermostat.type;
-    if (rule->thermostat && t != PL_THERMO_NONE)
+    const pl_thermostat_t *thermostat = pl_thermostat(sc->thermostat.type);
+    if (rule->thermostat && sc->thermostat.type != PL_THERMO_NONE)
         return pl_scene_fail(sc, err, offsetof(pl_scene_t, thermostat.type), "thermostat.type",
                              "a thermostat with srd.rule = \"%s\", which is itself one (it draws the relative "
                              "velocities at fluid.temperature); allowed: \"none\"", rule->name);
-    if (t == PL_THERMO_HEYES && !rule->collide_heyes)
-        return pl_scene_fail(sc, err, offsetof(pl_scene_t, thermostat.type), "thermostat.type",
-                             "\"heyes\" with srd.rule = \"%s\", which has no Heyes collision; allowed: "
-                             "\"none\" or \"rescale\"", rule->name);
+    int rc = thermostat->validate ? thermostat->validate(sc, err) : 0;
+    if (rc) return rc;
     if (sc->coupling.method == PL_COUPLE_HECHT2 && rule->srd_rotation < 0)
         return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.rule), "srd.rule",
                              "\"%s\" with coupling II, which rotates the cells that hold colloids by the SRD "
@@ -343,6 +307,7 @@ const pl_module_t pl_fluid_module = {
     .name = "fluid",
     .validate_scene = fluid_validate,
     .create = fluid_create,
+    .destroy = pl_fluid_state_free,
     .add_stages = fluid_stages,
     .thermo_columns = fluid_columns,
 };

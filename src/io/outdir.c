@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include "peloid/io.h"
+#include "peloid/outputs.h"
 
 void pl_path_join(char *buf, size_t n, const char *dir, const char *name)
 {
@@ -147,22 +148,13 @@ int pl_outdir_lock(const char *dir, int *fd, pl_err_t *err)
     return 0;
 }
 
-/* Every file peloid writes into an output directory: `peloid run`
- * (src/plan/run.c, the observers' observables.h5) and `peloid report`
- * (tools/report.py, tools/plot_sediment.py). */
-static const char *const outdir_names[] = {
-    "scene.cfg", "thermo.tsv", "summary.json", "checkpoint.h5", "colloids.h5", "colloids.xyz", "fields.h5",
-    "fields.xdmf", "observables.h5", "report.md", "rdf.png", "rdf_classes.png", "sq.png", "cff.png",
-    "bonds.png", "msd.png", "clusters.png", "vdist.png", "sediment_phi.png", "viscosity.png", "thermo.png",
-    "sediment.png", "colloids_init.txt", "pair_table.txt"};
-
 int pl_outdir_clean(const char *dir, pl_err_t *err)
 {
     char path[PATH_MAX + 32];
     struct stat st;
-    for (size_t k = 0; k < sizeof outdir_names / sizeof *outdir_names; ++k)
+    for (size_t k = 0; pl_outputs[k].name; ++k) /* every file peloid writes there (peloid/outputs.h) */
         for (int tmp = 0; tmp < 2; ++tmp) {
-            snprintf(path, sizeof path, "%s/%s%s", dir, outdir_names[k], tmp ? ".tmp" : "");
+            snprintf(path, sizeof path, "%s/%s%s", dir, pl_outputs[k].name, tmp ? ".tmp" : "");
             /* a run writes regular files; a link or device placed under such
              * a name is not an earlier run's */
             if (lstat(path, &st) || !S_ISREG(st.st_mode)) continue;
@@ -196,7 +188,7 @@ static long long echo_value(FILE *f, const char *sec, const char *key)
 int pl_outdir_resume_check(const char *dir, long long first, pl_err_t *err)
 {
     char path[PATH_MAX + 32], tmp[PATH_MAX + 40];
-    snprintf(path, sizeof path, "%s/scene.cfg", dir);
+    snprintf(path, sizeof path, "%s/%s", dir, pl_outputs[PL_OUT_SCENE].name);
     FILE *f = fopen(path, "r");
     long long traj = 0, xyz = 0, count = 0;
     if (f) {
@@ -210,9 +202,11 @@ int pl_outdir_resume_check(const char *dir, long long first, pl_err_t *err)
         int wanted;
         const char *why;
     } out[] = {
-        {"thermo.tsv", 1, "its rows"},
-        {"colloids.h5", count > 0 && traj > 0, "its frames (scene.cfg: colloids.trajectory_interval > 0)"},
-        {"colloids.xyz", count > 0 && traj > 0 && xyz, "its frames (scene.cfg: output.colloids_xyz = true)"},
+        {pl_outputs[PL_OUT_THERMO].name, 1, "its rows"},
+        {pl_outputs[PL_OUT_COLLOIDS].name, count > 0 && traj > 0,
+         "its frames (scene.cfg: colloids.trajectory_interval > 0)"},
+        {pl_outputs[PL_OUT_COLLOIDS_XYZ].name, count > 0 && traj > 0 && xyz,
+         "its frames (scene.cfg: output.colloids_xyz = true)"},
     };
     for (size_t k = 0; k < sizeof out / sizeof out[0]; ++k) {
         if (!out[k].wanted) continue;

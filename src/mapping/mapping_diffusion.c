@@ -1,6 +1,6 @@
 /* The colloid diffusion coefficient the unit mapping matches (DESIGN.md
  * "Units and mapping": never claim a match that was not verified): where it
- * comes from (a calibration run of the coupling, src/plan/calibrate.c, or
+ * comes from (a calibration run of the coupling, src/app/calibrate.c, or
  * the coupling's theory, PL Eqs. 39-41), its standard error, how far it is
  * from that theory, and what the scene's own periodic box leaves of it
  * (Hasimoto 1959, PL Eq. 43: D_L = D - 2.837 kT / (6 pi eta L)). */

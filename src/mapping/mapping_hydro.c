@@ -3,7 +3,7 @@
  *
  * The colloid's friction is xi = kT / D with D its unbounded diffusion
  * coefficient (PL Eq. 54): the calibrated D where a calibration measured it
- * (src/plan/calibrate.c), else the coupling's theory (PL Eqs. 39-41).  A
+ * (src/app/calibrate.c), else the coupling's theory (PL Eqs. 39-41).  A
  * sphere of radius R_h in a fluid of shear viscosity eta = rho_f nu (PL Eq.
  * 13, nu of PL Eqs. 9-12 or Hecht Eq. 28) has xi = k pi eta R_h, k = 6 for a
  * stick and 4 for a slip surface (PL Eq. 39), so

@@ -10,8 +10,9 @@
 #include "peloid/collision_rule.h"
 #include "peloid/colloid.h"
 #include "peloid/observe_check.h"
-#include "peloid/run.h"
+#include "peloid/params.h"
 #include "peloid/srd_theory.h"
+#include "peloid/threads.h"
 
 
 int pl_params_json(const pl_scene_t *sc, struct json_t **out, pl_err_t *err)

@@ -84,6 +84,8 @@ static int check(const pl_scene_t *sc, pl_err_t *err)
     return 0;
 }
 
+static const int32_t *traj_ids(void *ctx, long long step, int compute);
+
 static int create(pl_obs_run_t *run, void **state, pl_err_t *err)
 {
     cl_obs_t *o = calloc(1, sizeof *o);
@@ -92,6 +94,9 @@ static int create(pl_obs_run_t *run, void **state, pl_err_t *err)
     for (int k = 0; k < NCV; ++k) pl_blocking_init(&o->cb[k]);
     o->ids_step = -1;
     *state = o;
+    /* the trajectory's frames carry the cluster ids (src/app/writer_colloids.c) */
+    run->sim->frame_ids = traj_ids;
+    run->sim->frame_ids_ctx = o;
     return 0;
 }
 
@@ -200,14 +205,6 @@ static const int32_t *traj_ids(void *ctx, long long step, int compute)
         if (!compute || step != sim->step || clusters_now(sim, o, &ignore)) return NULL;
     }
     return pl_cluster_ids(o->cl);
-}
-
-/* The trajectory (opened after the plan) gets the cluster ids before its
- * first frame (the writers' slot follows the observers'). */
-static int begin(pl_obs_run_t *run, void *state, pl_err_t *err)
-{
-    pl_sim_t *sim = run->sim;
-    return sim->colloid_traj ? pl_colloid_traj_cluster_ids(sim->colloid_traj, traj_ids, state, err) : 0;
 }
 
 static int obs_write(int64_t obs_, const pl_sim_t *sim, void *state)
@@ -362,7 +359,7 @@ const pl_observer_t pl_observer_clusters = {
     .interval = offsetof(pl_scene_observe_t, clusters_interval),
     .start = offsetof(pl_scene_observe_t, clusters_start), .interval_key = "observe.clusters_interval",
     .start_key = "observe.clusters_start", .at_start = 1, .need = 1,
-    .check = check, .create = create, .begin = begin, .sample = sample, .write = obs_write, .summary = summary,
+    .check = check, .create = create, .sample = sample, .write = obs_write, .summary = summary,
     .meta_slot = 8, .nmeta = 2, .ckpt_meta = ckpt_meta, .ckpt_head = ckpt_head, .ckpt_write = ckpt_write,
     .ckpt_read = ckpt_read, .resume = resume, .free = obs_free, .estimates = estimates, .nestimates = NCV,
 };

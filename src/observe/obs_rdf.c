@@ -12,6 +12,7 @@
 #include "checkpoint_h5.h"
 #include "json_build.h"
 #include "observables_out.h"
+#include "peloid/colloid.h"
 #include "peloid/h5.h"
 #include "peloid/observer.h"
 #include "peloid/rdf.h"

@@ -32,12 +32,14 @@
 #include "json_build.h"
 #include "observables_out.h"
 #include "observables_si.h"
+#include "peloid/checkpoint.h"
 #include "peloid/coupling.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
 #include "peloid/module.h"
 #include "peloid/observe_check.h"
 #include "peloid/observer.h"
+#include "peloid/outputs.h"
 
 enum { NFRAC = PL_OBS_NFRAC };
 #define fractions pl_obs_fractions
@@ -347,7 +349,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
     pl_observe_t *o = sim->observe;
     if (!o) return 0;
     char path[4096];
-    pl_path_join(path, sizeof path, dir, "observables.h5");
+    pl_path_join(path, sizeof path, dir, pl_outputs[PL_OUT_OBSERVABLES].name);
     int rc = write_h5(sim, o, path, err);
     if (rc) return rc;
     pl_json_t b = {err, path, "observables", 0};
@@ -371,7 +373,7 @@ static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t 
 
 /* ---- checkpoint -------------------------------------------------------- */
 
-/* Group /observe of the checkpoint (src/io/checkpoint_observe.c gives it the
+/* Group /observe of the checkpoint (src/observe/checkpoint_observe.c gives it the
  * observer fingerprint): everything the observers accumulated, so that a
  * restarted run's observables equal those of the uninterrupted run bitwise.
  * The objects are read back as they were (correlators with the levels the

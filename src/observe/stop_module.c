@@ -16,11 +16,11 @@
 #include "json_build.h"
 #include "peloid/module.h"
 
+/* ctx: the rule's settings (stop{}), both stages */
 static int stage_stop(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
     (void)err;
-    const pl_scene_stop_t *st = &sim->scene.stop;
+    const pl_scene_stop_t *st = ctx;
     double v, se;
     if (sim->step % st->check_interval == 0 && pl_observe_estimate(sim, st->observable, &v, &se) && v != 0.0 &&
         se <= st->rel_error * fabs(v)) {
@@ -34,12 +34,12 @@ static int stage_stop(pl_sim_t *sim, void *ctx, pl_err_t *err)
 /* The wall-time limit, checked every step (a clock read). */
 static int stage_wall(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
-    (void)ctx;
     (void)err;
-    if (!sim->stop_requested && omp_get_wtime() - sim->run_wall_start >= sim->scene.stop.max_wall_s) {
+    const pl_scene_stop_t *st = ctx;
+    if (!sim->stop_requested && omp_get_wtime() - sim->run_wall_start >= st->max_wall_s) {
         sim->stop_requested = 1;
         snprintf(sim->stop_reason, sizeof sim->stop_reason, "stop.max_wall_s = %g s of wall time reached",
-                 sim->scene.stop.max_wall_s);
+                 st->max_wall_s);
     }
     return 0;
 }
@@ -49,13 +49,13 @@ static int stop_stages(pl_sim_t *sim, pl_err_t *err)
     int rc;
     const pl_scene_stop_t *st = &sim->scene.stop;
     if (strcmp(st->observable, "none") && sim->observe) {
-        pl_stage_t s = {.name = "stop-rule", .fn = stage_stop, .interval = st->check_interval,
-                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE};
+        pl_stage_t s = {.name = "stop-rule", .fn = stage_stop, .ctx = &sim->scene.stop,
+                        .interval = st->check_interval, .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE};
         if ((rc = pl_sim_add_stage(sim, &s, err))) return rc;
     }
     if (st->max_wall_s > 0) {
-        pl_stage_t s = {.name = "stop-wall", .fn = stage_wall, .interval = 1, .phase = PL_PHASE_AFTER,
-                        .slot = PL_SLOT_OBSERVE};
+        pl_stage_t s = {.name = "stop-wall", .fn = stage_wall, .ctx = &sim->scene.stop, .interval = 1,
+                        .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE};
         if ((rc = pl_sim_add_stage(sim, &s, err))) return rc;
     }
     return 0;

@@ -69,6 +69,7 @@
 #include "observables_si.h"
 #include "peloid/blocking.h"
 #include "checkpoint_h5.h"
+#include "peloid/checkpoint.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
 #include "peloid/module.h"
@@ -448,7 +449,7 @@ static void stress_begin(pl_stress_t *o, const pl_sim_t *sim, double t0)
     }
 }
 
-/* Group /stress (src/io/checkpoint_observe.c gives it the observer
+/* Group /stress (src/observe/checkpoint_observe.c gives it the observer
  * fingerprint): meta (int64, SCK_* below), reals (the output window, the
  * last wall impulse; no clock reading, as in /observe), the Green-Kubo ring and correlation sums,
  * the blocking accumulators, the error-against-time points, the time series. */

@@ -14,6 +14,7 @@
 #include "peloid/io.h"
 #include "peloid/observer.h"
 #include "peloid/collision_rule.h"
+#include "peloid/outputs.h"
 #include "peloid/real.h"
 #include "peloid/srd_theory.h"
 #include "stress_priv.h"
@@ -199,7 +200,7 @@ int pl_stress_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
     pl_stress_t *o = sim->stress;
     if (!o) return 0;
     char path[4096];
-    pl_path_join(path, sizeof path, dir, "observables.h5");
+    pl_path_join(path, sizeof path, dir, pl_outputs[PL_OUT_OBSERVABLES].name);
     int rc = write_h5(sim, o, path, err);
     if (rc) return rc;
     pl_json_t b = {err, path, "observables", 0};

@@ -7,6 +7,7 @@
 
 #include "peloid/collision_rule.h" /* pl_collision_rule_names */
 #include "peloid/scene.h"
+#include "peloid/thermostat.h" /* pl_thermostat_names */
 
 #define OFF(member) offsetof(pl_scene_t, member)
 #define N(a) (sizeof(a) / sizeof((a)[0]))
@@ -14,7 +15,6 @@
 
 static const char *const walls_choices[] = {"none", "noslip", "slip", NULL};
 static const char *const vel_choices[] = {"gaussian", "uniform", NULL};
-static const char *const thermo_choices[] = {"none", "heyes", "rescale", NULL};
 
 static const pl_key_t run_keys[] = {
     {"name", PL_KEY_STRING, OFF(run.name), 0, 0, PL_KEY_SAFE_NAME, NULL, 0, "",
@@ -67,7 +67,7 @@ static const pl_key_t srd_keys[] = {
 };
 
 static const pl_key_t thermostat_keys[] = {
-    {"type", PL_KEY_CHOICE, OFF(thermostat.type), 0, 0, 0, thermo_choices, PL_THERMO_NONE, NULL,
+    {"type", PL_KEY_CHOICE, OFF(thermostat.type), 0, 0, 0, pl_thermostat_names, PL_THERMO_NONE, NULL,
      "-", "none; heyes: Monte Carlo cell thermostat (Hecht Eq. 33); rescale: cell-"
           "relative rescaling to the global T (PL Appendix A, Eqs. A1-A2)"},
     {"temperature", PL_KEY_REAL, OFF(thermostat.temperature), 0, 1e6, PL_KEY_MIN_OPEN, NULL, 1, NULL,

@@ -1,7 +1,7 @@
 /* Scene schema of the observers: section `observe` (colloid g(r), colloid
  * MSD and diffusion coefficient, clusters; Hecht Sec. IX, PL Sec. VI).  No
  * key here changes the trajectory: the checkpoint's scene fingerprint leaves
- * the section out (src/io/checkpoint_scene.c). */
+ * the section out (src/core/checkpoint_scene.c). */
 #include <stddef.h>
 
 #include "peloid/scene.h"

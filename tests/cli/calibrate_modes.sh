@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# --calibrate never|auto|always (src/plan/calibrate_mode.c, src/plan/calibrate.c).
+# --calibrate never|auto|always (src/app/calibrate_mode.c, src/app/calibrate.c).
 # The calibrating scene is tests/cli/calibration_cache.sh's coarse coupling II
 # scene (320 steps of a 16^3 box, ~0.3 s), with output.progress_s = 0.02 so
 # that its calibration prints progress lines; PELOID_CACHE is a fresh folder
@@ -24,7 +24,7 @@
 #     nothing written;
 #  5. sweep --calibrate never reaches its points' runs (summary.json of the
 #     point) and the Slurm script;
-#  6. the theory's stated error: the ratios of src/plan/calibrate_mode.c
+#  6. the theory's stated error: the ratios of src/app/calibrate_mode.c
 #     equal measured / theory of `peloid params --json` of the scenes named
 #     there (shipped calibrations), and the relative error never states is
 #     their RMS per coupling.
@@ -157,7 +157,7 @@ unset PELOID_NO_SHIPPED_CALIBRATION
 if $PY - "$PELOID" "$ROOT" <<'PY'
 import json, math, re, subprocess, sys
 peloid, root = sys.argv[1], sys.argv[2]
-src = open(root + "/src/plan/calibrate_mode.c").read()
+src = open(root + "/src/app/calibrate_mode.c").read()
 rows = re.findall(r'\{PL_COUPLE_(\w+), "([0-9a-f]{16})", "([^"]+)", ([0-9.]+)\}', src)
 assert len(rows) >= 3, rows
 by = {}

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Coupling-true time (src/plan/calibrate.c, src/mapping/mapping_diffusion.c):
+# Coupling-true time (src/app/calibrate.c, src/mapping/mapping_diffusion.c):
 #  - a calibration is bitwise the same at 1 and 2 threads, fresh or read
 #    back from the cache, and the shipped calibration/ file of the quickstart
 #    is what the code computes now;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The calibration cache can never cost a run (src/plan/calibration_cache.c,
-# src/plan/calibrate.c).  The scene is coupling II at a coarse resolution
+# The calibration cache can never cost a run (src/app/calibration_cache.c,
+# src/app/calibrate.c).  The scene is coupling II at a coarse resolution
 # whose calibration takes ~0.3 s (3 particles per cell, mean free path 0.5,
 # a neutrally buoyant colloid: 320 steps of a 16^3 box), so every case runs a
 # real calibration; each run is `peloid params --json`, which calibrates and

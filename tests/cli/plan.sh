@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# peloid plan SCENE --target REL (src/plan/advise.c): the guide to choosing
+# peloid plan SCENE --target REL (src/app/advise.c): the guide to choosing
 # the model for the shipped quickstart suspension (coupling II, its shipped
 # calibration) prints each coupling with its hydrodynamic radius, marks the
 # scene's own, recommends the coupling whose measured R_h/R is nearest 1

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# peloid sweep (src/sweep/): a 4-point grid over a tiny Brownian scene (16
+# peloid sweep (src/app/): a 4-point grid over a tiny Brownian scene (16
 # colloids, 300 steps, ~0.05 s a point) runs and is collected into
 # sweep.{tsv,json,png}; a re-run skips the finished points; a point whose
 # value trips a guard at run time fails alone and is recorded with its exit

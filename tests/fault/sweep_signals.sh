@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# peloid sweep and signals (src/sweep/sweep.c, src/main.c): a SIGTERM to the
+# peloid sweep and signals (src/app/sweep.c, src/app/main.c): a SIGTERM to the
 # sweep is forwarded to its running points (each in its own process group),
 # which stop at a checkpoint; the sweep writes sweep.tsv (status
 # "interrupted"), prints one line and exits 143, and no `peloid run` outlives

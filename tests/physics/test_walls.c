@@ -60,14 +60,14 @@ Test(walls, poiseuille_between_noslip_walls, .timeout = 300)
     size_t L2 = (size_t)L * (size_t)L, L3 = L2 * (size_t)Lz;
     double nu[NB], slip[NB];
     for (int b = 0; b < NB; ++b) {
-        memset(sim->field_acc, 0, 4 * L3 * sizeof(int64_t));
+        memset(sim->srd->field_acc, 0, 4 * L3 * sizeof(int64_t));
         pl_test_steps(sim, per);
         double v[64];
         for (int k = 0; k < Lz; ++k) {
             double cnt = 0, px = 0;
             for (size_t c = (size_t)k * L2; c < (size_t)(k + 1) * L2; ++c) {
-                cnt += (double)sim->field_acc[c];
-                px += (double)sim->field_acc[L3 + c] / (double)(1LL << PL_FIELD_FIXED_SHIFT);
+                cnt += (double)sim->srd->field_acc[c];
+                px += (double)sim->srd->field_acc[L3 + c] / (double)(1LL << PL_FIELD_FIXED_SHIFT);
             }
             v[k] = px / cnt;
         }

@@ -26,6 +26,7 @@
 #include <stdio.h>
 #include <unistd.h>
 
+#include "peloid/checkpoint.h"
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
 #include "peloid/io.h"

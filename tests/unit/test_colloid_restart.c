@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <unistd.h>
 
+#include "peloid/checkpoint.h"
 #include "peloid/colloid.h"
 #include "peloid/io.h"
 #include "support.h"

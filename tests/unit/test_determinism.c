@@ -10,6 +10,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "peloid/checkpoint.h"
 #include "peloid/io.h"
 #include "support.h"
 

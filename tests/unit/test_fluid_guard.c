@@ -70,7 +70,7 @@ Test(fluid_guard, speed_lowest_index_any_threads)
 {
     for (int t = 1; t <= 3; ++t) {
         pl_sim_t *sim = pl_test_sim(FLUID, t);
-        cr_assert(sim->guard_vmax == 20.0, "bound %g", sim->guard_vmax);
+        cr_assert(sim->srd->guard_vmax == 20.0, "bound %g", sim->srd->guard_vmax);
         sim->fluid.v[0][2000] = (pl_real)25.0;
         sim->fluid.v[0][1500] = (pl_real)30.0;
         sim->fluid.v[0][100] = (pl_real)19.0;
@@ -96,7 +96,7 @@ Test(fluid_guard, speed_flags_of_the_collision)
         sim->fluid.v[2][777] = (pl_real)1e3;
         pl_err_t err, full;
         cr_assert_eq(pl_sim_step(sim, &err), PL_ERR_GUARD);
-        cr_expect_eq(sim->guard_bad_step, sim->step, "the flags of this step's collision were used");
+        cr_expect_eq(sim->srd->guard_bad_step, sim->step, "the flags of this step's collision were used");
         cr_expect(strstr(err.msg, "guard fluid_speed: step 3: fluid particle"), "%d: %s", t, err.msg);
         cr_expect_eq(pl_fluid_guard_check(sim, sim->step + 1, 0, &full), PL_ERR_GUARD);
         cr_expect_str_eq(err.msg, full.msg);
@@ -146,15 +146,15 @@ Test(fluid_guard, temperature_band)
 {
     pl_sim_t *sim = pl_test_sim("seed = 3;\nbox: { cells = [8, 8, 8]; };\nfluid: { temperature = 2.0; };\n"
                                 "thermostat: { type = \"heyes\"; temperature = 1.0; };\n", 1);
-    cr_expect(fabs(sim->guard_kT_lo - 0.1) < 1e-15 && fabs(sim->guard_kT_hi - 20.0) < 1e-15);
+    cr_expect(fabs(sim->srd->guard_kT_lo - 0.1) < 1e-15 && fabs(sim->srd->guard_kT_hi - 20.0) < 1e-15);
     pl_err_t err;
-    sim->last_kT_meas = 19.0;
+    sim->srd->last_kT_meas = 19.0;
     cr_expect_eq(pl_fluid_guard_check(sim, 1, 1, &err), 0);
-    sim->last_kT_meas = 21.0;
+    sim->srd->last_kT_meas = 21.0;
     cr_expect_eq(pl_fluid_guard_check(sim, 1, 1, &err), PL_ERR_GUARD);
     cr_expect(strstr(err.msg, "guard fluid_temperature: step 1") && strstr(err.msg, "bound [0.1, 20]"), "%s",
               err.msg);
-    sim->last_kT_meas = NAN;
+    sim->srd->last_kT_meas = NAN;
     cr_expect_eq(pl_fluid_guard_check(sim, 1, 1, &err), PL_ERR_GUARD);
     pl_sim_free(sim);
 }

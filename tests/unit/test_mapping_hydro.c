@@ -235,7 +235,7 @@ Test(hydro, potential_dlvo_refused)
 }
 
 /* The hydrodynamic tail a calibration's MSD slope misses in its periodic box
- * (pl_srd_tail_missed, src/plan/calibrate.c).  Independent of its lattice
+ * (pl_srd_tail_missed, src/app/calibrate.c).  Independent of its lattice
  * sum: (1) where the box is much wider than the fluid's diffusion length
  * sqrt(a t2), the unbounded tail (2/3)(kT/rho)(4 pi a)^-3/2 4 / (sqrt t1 +
  * sqrt t2) exceeds it by the box's cut-off, which is Hasimoto's periodic

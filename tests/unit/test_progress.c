@@ -1,4 +1,4 @@
-/* Progress reporting (src/io/progress.c): the library prints only to the stream
+/* Progress reporting (src/app/progress.c): the library prints only to the stream
  * it is given; a log (non-terminal) gets plain lines at the interval and no
  * carriage return; the end names the files with their sizes; notes close the
  * terminal line first. */

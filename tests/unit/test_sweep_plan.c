@@ -1,4 +1,4 @@
-/* The throughput plan of `peloid sweep` (pl_sweep_plan, src/sweep/sweep_plan.c):
+/* The throughput plan of `peloid sweep` (pl_sweep_plan, src/app/sweep_plan.c):
  * jobs x threads, the cores of each job and the memory bound for several
  * (points, cores, topology) combinations; the points' cost from their
  * scenes; the memory estimate's bytes per fluid particle against the fluid's

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Coupling-true time of coupling I (src/plan/calibrate.c: 8 colloids per box
+# Coupling-true time of coupling I (src/app/calibrate.c: 8 colloids per box
 # at phi <= 0.02, PL's WCA between them, 1 - 1.8315 phi and Hasimoto divided
 # out; several minutes on 2 cores, so in `make validate-physics`, not `make
 # check`): a dilute physical suspension at Hecht Table I's resolution (the

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Coupling-true time of PL's potential coupling (src/plan/calibrate.c,
+# Coupling-true time of PL's potential coupling (src/app/calibrate.c,
 # src/mapping/mapping_colloids.c; several minutes on 2 cores, so in `make
 # validate-physics`, not `make check`):
 # a dilute physical suspension (phi = 0.02, PL's WCA repulsion, no gravity, periodic)

@@ -2,7 +2,7 @@
 # Is the coupling-true-time calibration converged and as sure as it says
 # (issue 45)?  The model of scenes/quickstart.cfg (coupling II, gamma 10,
 # lambda 0.25, R 0.62 a0, M 39) in its calibration box (32 free colloids,
-# 16^3 periodic cells; src/plan/calibrate.c), run here as an ordinary model
+# 16^3 periodic cells; src/app/calibrate.c), run here as an ordinary model
 # scene for PL_CALW_SEEDS seeds (6) x PL_CALW_STEPS steps (40000: 10000 t0),
 # colloids.h5 read with h5py alone:
 #  1. The shipped calibration's d_box + tail (the tail the window misses,
@@ -77,7 +77,7 @@ def load(p):
     L = np.diag(c["box/edges/value"][0])  # the edge vectors (H5MD: a 3 x 3 matrix per frame)
     return c["position/value"][()] + c["image/value"][()] * L, c["position/time"][()]
 
-def blocks(r, dt, t1, t2, nb=8):  # as src/plan/calibrate.c: 8 blocks of origins
+def blocks(r, dt, t1, t2, nb=8):  # as src/app/calibrate.c: 8 blocks of origins
     l1, l2 = int(round(t1 / dt)), int(round(t2 / dt)); last = len(r) - 1 - l2
     b = []
     for k in range(nb):

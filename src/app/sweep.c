@@ -1,4 +1,4 @@
-/* `peloid sweep`: the points of a study (src/sweep/study.c) as independent
+/* `peloid sweep`: the points of a study (src/app/study.c) as independent
  * `peloid run` processes, a process pool of `jobs` processes with `threads`
  * OpenMP threads each, each process bound to cores of its own (pl_sweep_plan),
  * resumable, or as a Slurm job array.
@@ -38,6 +38,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "peloid/checkpoint.h"
 #include "peloid/io.h"
 #include "peloid/sweep.h"
 #include "sweep_priv.h"

@@ -43,17 +43,17 @@
  * concurrent sweep points run it once), and read-only in the project's
  * calibration/ directory for the shipped scenes (`make calibrations`; not
  * read with PELOID_NO_SHIPPED_CALIBRATION set).  Entries are checked on
- * reading (src/plan/calibration_cache.c): a bad shipped one is refused (a
+ * reading (src/app/calibration_cache.c): a bad shipped one is refused (a
  * bug), a bad cached one recalibrated and overwritten; a cache that cannot
  * store the result or a lock not released in time costs this run a
  * calibration and a warning, never the run.  The
  * run is bitwise deterministic, so a cached and a fresh calibration agree
  * to the last bit (tests/cli/calibration.sh).  --calibrate always skips the
  * shipped set and the cache on reading and replaces the entry; never is
- * src/plan/calibrate_mode.c.  A run that has to measure says so before it
+ * src/app/calibrate_mode.c.  A run that has to measure says so before it
  * starts (its size), times its first steps (CAL_PROBE_FRACTION of them, or
  * CAL_PROBE_S of wall time, whichever comes first) and extrapolates them to
- * an estimated duration, then reports progress (src/io/progress.c). */
+ * an estimated duration, then reports progress (src/app/progress.c). */
 #include <errno.h>
 #include <fcntl.h>
 #include <jansson.h>
@@ -388,7 +388,7 @@ static int cal_run(const pl_scene_t *sc, const cal_plan_t *p, int nthreads, cons
     return 0;
 }
 
-/* ---- the cache (src/plan/calibration_cache.c) ---------------------------- */
+/* ---- the cache (src/app/calibration_cache.c) ---------------------------- */
 
 /* The entry at path into *cal when it passes the checks (cal->cache names
  * it, this run paid nothing); else the reader's result, with why. */
@@ -515,7 +515,7 @@ int pl_calibrate(const pl_scene_t *sc, const char *shipped_dir, int nthreads, co
         char about[400];
         snprintf(about, sizeof about,
                  "peloid coupling-%s calibration: gamma %g, lambda %g, rule %d, alpha %g, radius %.17g a0, mass "
-                 "density %.17g m_f/a0^3; D in a0^2/t0 at kT = 1 (src/plan/calibrate.c)",
+                 "density %.17g m_f/a0^3; D in a0^2/t0 at kT = 1 (src/app/calibrate.c)",
                  cname(sc), sc->fluid.density, sc->srd.dt, sc->srd.rule,
                  sc->srd.alpha_deg, sc->colloids.radius, sc->colloids.mass_density);
         if (pl_calcache_write(path, cal, about, why, sizeof why) == 0)

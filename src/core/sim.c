@@ -1,5 +1,5 @@
-/* Simulation object: state allocation, the plan and the step loop.  The
- * plan is the ordered list of stages the modules (src/plan/modules.c) add, each
+/* Simulation object: the modules' state, the plan and the step loop.  The
+ * plan is the ordered list of stages the modules (src/core/modules.c) add, each
  * with its interval and slot; a stage the scene does not need is not in the
  * plan (DESIGN.md "Scene -> plan").  pl_sim_step walks it: the step stages,
  * step + 1, the after-step stages (observers, writers). */
@@ -32,18 +32,6 @@ int pl_sim_add_stage(pl_sim_t *sim, const pl_stage_t *stage, pl_err_t *err)
     return 0;
 }
 
-int pl_sim_add_collide_stage(pl_sim_t *sim, const pl_stage_t *plain, const pl_stage_t *heyes, pl_err_t *err)
-{
-    if (sim->scene.thermostat.type != PL_THERMO_HEYES) return pl_sim_add_stage(sim, plain, err);
-    const long long k = sim->scene.thermostat.interval;
-    pl_stage_t p = *plain, h = *heyes;
-    p.interval = 1;
-    p.except = k;
-    h.interval = k;
-    int rc = k > 1 ? pl_sim_add_stage(sim, &p, err) : 0;
-    return rc ? rc : pl_sim_add_stage(sim, &h, err);
-}
-
 /* ---- lifetime ---------------------------------------------------------- */
 
 int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_t *err)
@@ -60,40 +48,7 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
      * threads.  No process-wide thread count is set: every kernel and
      * pl_alloc are given sim->nthreads (num_threads clauses). */
     pl_threads_bind(sim->nthreads);
-    int walls[3];
-    pl_scene_box_walls(&scene->box, walls);
-    pl_grid_init(&sim->grid, scene->box.cells, walls);
-    double volume = (double)scene->box.cells[0] * scene->box.cells[1] * scene->box.cells[2];
-    size_t n = (size_t)llround(scene->fluid.density * volume);
-    rc = pl_fluid_create(n, scene->output.track_fluid, sim->nthreads, &sim->fluid, err);
-    if (rc) {
-        free(sim);
-        return rc;
-    }
-    size_t nc = sim->grid.ncells, L3 = (size_t)scene->box.cells[0] * (size_t)scene->box.cells[1] *
-                                          (size_t)scene->box.cells[2];
-    size_t nb = (nc + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
-    sim->hist = pl_alloc((size_t)sim->nthreads * nc * sizeof(uint32_t), sim->nthreads);
-    sim->cell_start = pl_alloc((nc + 1) * sizeof(uint32_t), sim->nthreads);
-    sim->block_sum = pl_alloc(2 * nb * sizeof(double), sim->nthreads);
-    sim->guard_bad = pl_alloc(nb, sim->nthreads);
-    sim->guard_bad_step = -1;
-    sim->obs_scratch = pl_alloc(pl_srd_observe_scratch(n) * sizeof(double), sim->nthreads);
-    if (scene->output.fields_interval > 0) sim->field_acc = pl_alloc(4 * L3 * sizeof(int64_t), sim->nthreads);
-    /* the momentum each wall exchanges (wall stress) */
-    const int any_walls = sim->grid.any_walls;
-    if (any_walls) {
-        sim->wall_acc = pl_alloc((size_t)sim->nthreads * PL_WALL_ACC_STRIDE * sizeof(int64_t), sim->nthreads);
-        sim->wall_dp = pl_alloc(PL_WALL_ACC_N * nb * sizeof(double), sim->nthreads);
-    }
-    memcpy(sim->wall_u, scene->box.wall_velocity, sizeof sim->wall_u); /* shear, Hecht Sec. VIII.C */
-    if (!sim->hist || !sim->cell_start || !sim->block_sum || !sim->guard_bad || !sim->obs_scratch ||
-        (scene->output.fields_interval > 0 && !sim->field_acc) || (any_walls && (!sim->wall_acc || !sim->wall_dp))) {
-        pl_sim_free(sim);
-        return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cell arrays (%zu cells)", nc);
-    }
-    pl_fluid_init(&sim->fluid, scene, sim->nthreads);
-    for (int m = 0; pl_modules[m]; ++m) /* colloids, then the coupling between them and the fluid */
+    for (int m = 0; pl_modules[m]; ++m) /* the fluid, the colloids, then the coupling between them */
         if (pl_modules[m]->create && (rc = pl_modules[m]->create(sim, err))) {
             pl_sim_free(sim);
             return rc;
@@ -112,19 +67,10 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
 void pl_sim_free(pl_sim_t *sim)
 {
     if (!sim) return;
-    pl_fluid_free(&sim->fluid);
     int nm = 0;
     while (pl_modules[nm]) ++nm;
     for (int m = nm - 1; m >= 0; --m) /* the coupling before the colloids it refers to */
         if (pl_modules[m]->destroy) pl_modules[m]->destroy(sim);
-    pl_free(sim->hist);
-    pl_free(sim->cell_start);
-    pl_free(sim->block_sum);
-    pl_free(sim->guard_bad);
-    pl_free(sim->obs_scratch);
-    pl_free(sim->field_acc);
-    pl_free(sim->wall_acc);
-    pl_free(sim->wall_dp);
     free(sim);
 }
 
@@ -187,18 +133,4 @@ int pl_sim_step(pl_sim_t *sim, pl_err_t *err)
             return rc;
     }
     return 0;
-}
-
-void pl_sim_observe(const pl_sim_t *sim, pl_fluid_obs_t *obs, double *kT)
-{
-    pl_srd_observe(&sim->fluid, sim->obs_scratch, obs, sim->nthreads);
-    /* kT = sum m (v - V)^2 / (3 (N - 1)), V the centre-of-mass velocity */
-    size_t n = sim->fluid.n;
-    if (n < 2) {
-        *kT = 0.0;
-        return;
-    }
-    double p2 = 0.0;
-    for (int d = 0; d < 3; ++d) p2 += obs->momentum[d] * obs->momentum[d];
-    *kT = (2.0 * obs->kinetic - p2 / (double)n) / (3.0 * (double)(n - 1));
 }

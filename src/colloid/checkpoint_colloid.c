@@ -15,6 +15,7 @@
 #include <stdio.h>
 
 #include "checkpoint_h5.h"
+#include "peloid/checkpoint.h"
 #include "peloid/colloid_kernels.h"
 
 enum { NPOS = 16, NFORCE = 6, NIMG = 3 };

@@ -1,6 +1,7 @@
-/* The run: build the simulation, open the outputs, add the writers to the
- * plan, walk it, then the final checkpoint, fields, each module's outputs
- * and the summary.  Order matters for "nothing written on bad input": the
+/* The run: build the simulation, open the outputs (its own thermo.tsv and
+ * scene.cfg, then the writer rows of src/app/writers.c), add the writers to
+ * the plan, walk it, then the writers' last writes (trajectory, checkpoint,
+ * fields), each module's outputs and the summary.  Order matters for "nothing written on bad input": the
  * scene is validated, the sim built and any restart checkpoint read before
  * the output directory is created. */
 #include <dirent.h>
@@ -16,6 +17,7 @@
 
 #include "json_build.h"
 #include "observables_si.h"
+#include "peloid/checkpoint.h"
 #include "peloid/colloid.h"
 #include "peloid/coupling.h"
 #include "peloid/io.h"
@@ -25,6 +27,7 @@
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"
 #include "peloid/thermo.h"
+#include "peloid/writer.h"
 #include "peloid_build.h" /* PL_GIT_REV, PL_CFLAGS (generated) */
 
 typedef struct {
@@ -58,19 +61,6 @@ static int stage_thermo(pl_sim_t *sim, void *ctx, pl_err_t *err)
         return pl_err_set(err, PL_ERR_IO, "%s: writing the row of step %lld failed: %s", w->thermo_path, sim->step,
                           errno ? strerror(errno) : "stream error");
     return 0;
-}
-
-static int write_checkpoint(const writer_t *w, const pl_sim_t *sim, pl_err_t *err)
-{
-    char path[PATH_MAX];
-    pl_path_join(path, sizeof path, w->dir, "checkpoint.h5");
-    return pl_checkpoint_write(sim, path, err);
-}
-
-/* Writer stage: checkpoint.h5 every output.checkpoint_interval steps. */
-static int stage_checkpoint(pl_sim_t *sim, void *ctx, pl_err_t *err)
-{
-    return write_checkpoint(ctx, sim, err);
 }
 
 /* The plan moves colloids by MD (not pinned): MD steps/s is worth showing. */
@@ -148,7 +138,7 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
     pl_topology_summary(topo, sizeof topo);
     double updates = (double)(sim->step - first) * (double)sim->fluid.n;
     pl_json_t b = {err, path, "", 0};
-    pl_path_join(path, sizeof path, w->dir, "summary.json");
+    pl_path_join(path, sizeof path, w->dir, pl_outputs[PL_OUT_SUMMARY].name);
     pl_json_int(&b, doc, "threads", sim->nthreads);
     pl_json_str(&b, doc, "topology", topo);
     pl_json_int(&b, doc, "fluid_particles", (long long)sim->fluid.n);
@@ -159,8 +149,8 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
     pl_json_real(&b, doc, "wall_seconds", wall);
     pl_json_real(&b, doc, "cpu_seconds", cpu); /* the step loop's process CPU time, all threads */
     pl_json_real(&b, doc, "particle_updates_per_second", wall > 0 ? updates / wall : 0.0);
-    if (sim->field_acc) /* 0: no sample was taken, no fields.h5 */
-        pl_json_int(&b, doc, "field_samples", sim->field_samples);
+    if (sim->srd->field_acc) /* 0: no sample was taken, no fields.h5 */
+        pl_json_int(&b, doc, "field_samples", sim->srd->field_samples);
     json_t *st = json_object();
     b.prefix = "stage_seconds";
     for (int k = 0; k < sim->nstages; ++k) pl_json_real(&b, st, sim->stages[k].name, sim->stages[k].seconds);
@@ -213,8 +203,8 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
 /* The copy of colloids.init_file in the run directory: the directory holds
  * everything its scene.cfg needs, so that scene.cfg loads back (and a
  * restart from the directory works) wherever the original file went. */
-#define INIT_COPY "colloids_init.txt"
-#define TABLE_COPY "pair_table.txt" /* the same for colloids.table_file */
+#define INIT_COPY (pl_outputs[PL_OUT_INIT_COPY].name)
+#define TABLE_COPY (pl_outputs[PL_OUT_TABLE_COPY].name) /* the same for colloids.table_file */
 
 static int uses_init_file(const pl_scene_t *sc) { return sc->colloids.count > 0 && sc->colloids.init == PL_CINIT_FILE; }
 static int uses_table_file(const pl_scene_t *sc) { return sc->colloids.count > 0 && sc->colloids.table_file[0]; }
@@ -256,15 +246,16 @@ static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *e
         free(echo);
         return rc;
     }
-    pl_path_join(path, sizeof path, w->dir, "scene.cfg");
+    pl_path_join(path, sizeof path, w->dir, pl_outputs[PL_OUT_SCENE].name);
     FILE *f = pl_file_begin(path, tmp, sizeof tmp, err);
     if (!f) {
         free(echo);
         return PL_ERR_IO;
     }
     fprintf(f, "# effective scene of %s (every key, defaults filled in)\n", sc->path);
-    if (uses_init_file(sc)) fprintf(f, "# colloids.init_file: %s copied as " INIT_COPY "\n", sc->colloids.init_file);
-    if (uses_table_file(sc)) fprintf(f, "# colloids.table_file: %s copied as " TABLE_COPY "\n", sc->colloids.table_file);
+    if (uses_init_file(sc)) fprintf(f, "# colloids.init_file: %s copied as %s\n", sc->colloids.init_file, INIT_COPY);
+    if (uses_table_file(sc))
+        fprintf(f, "# colloids.table_file: %s copied as %s\n", sc->colloids.table_file, TABLE_COPY);
     pl_scene_print(echo, f);
     free(echo);
     errno = 0;
@@ -277,33 +268,25 @@ static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *e
     return pl_file_commit(f, tmp, path, err);
 }
 
-/* The writers join the plan as after-step stages: thermo rows every
- * output.thermo_interval steps, on the start state and on the last;
- * checkpoints every output.checkpoint_interval steps. */
-static int add_writers(pl_sim_t *sim, writer_t *w, pl_err_t *err)
+/* The thermo rows join the plan as an after-step stage: every
+ * output.thermo_interval steps, on the start state and on the last (the
+ * writer rows' stages follow: src/app/writers.c). */
+static int add_thermo(pl_sim_t *sim, writer_t *w, pl_err_t *err)
 {
     const pl_scene_t *sc = &sim->scene;
     pl_stage_t thermo = {.name = "thermo", .fn = stage_thermo, .ctx = w, .interval = sc->output.thermo_interval,
                          .phase = PL_PHASE_AFTER, .slot = PL_SLOT_WRITE, .at_start = 1, .at_end = 1, .writes = 1};
-    int rc = pl_sim_add_stage(sim, &thermo, err);
-    if (!rc && sc->output.checkpoint_interval > 0) {
-        pl_stage_t ck = {.name = "checkpoint", .fn = stage_checkpoint, .ctx = w,
-                         .interval = sc->output.checkpoint_interval, .phase = PL_PHASE_AFTER,
-                         .slot = PL_SLOT_WRITE, .writes = 1};
-        rc = pl_sim_add_stage(sim, &ck, err);
-    }
-    return rc;
+    return pl_sim_add_stage(sim, &thermo, err);
 }
 
 /* Walks the plan from the present step to `last` (or to the step the
- * stopping rule ends it at).  Before each step the colloid trajectory holds
- * the state, so that a guard stop inside the step writes the last good
- * frame.  The driver's signal flag is polled between steps: a signal during
- * a step ends the run when that step is complete. */
-static int loop(pl_sim_t *sim, writer_t *w, pl_progress_t *pg, long long last,
+ * stopping rule ends it at).  Before each step the writers hold what a
+ * guard stop inside the step writes (the colloid trajectory: the last good
+ * frame).  The driver's signal flag is polled between steps: a signal
+ * during a step ends the run when that step is complete. */
+static int loop(pl_sim_t *sim, writer_t *w, const pl_writers_t *ws, pl_progress_t *pg, long long last,
                 const volatile sig_atomic_t *interrupt, pl_err_t *err)
 {
-    const pl_scene_t *sc = &sim->scene;
     w->t_last_row = omp_get_wtime();
     w->step_last_row = sim->step;
     int rc = pl_sim_begin(sim, last, err);
@@ -314,34 +297,32 @@ static int loop(pl_sim_t *sim, writer_t *w, pl_progress_t *pg, long long last,
             snprintf(why, sizeof why, "interrupted by signal %d", w->interrupted);
             return pl_sim_end_here(sim, why, err);
         }
-        if (sim->colloid_traj)
-            pl_colloid_traj_hold(sim->colloid_traj, sim->colloids, sim->step, (double)sim->step * sc->srd.dt);
+        pl_writers_hold(sim, ws);
         rc = pl_sim_step(sim, err);
-        if (rc == PL_ERR_GUARD && sim->colloid_traj) pl_colloid_traj_write_held(sim->colloid_traj, sim->colloids, NULL);
+        if (rc == PL_ERR_GUARD) pl_writers_guard_stop(sim, ws);
         pl_progress_update(pg, sim->step);
     }
     return rc;
 }
 
 /* The files the run leaves in its directory, read from the directory (what
- * the writers wrote, not a list kept beside them): the usual ones in their
- * usual order, then any other by name; not the lock or a *.tmp. */
+ * the writers wrote, not a list kept beside them): those the list of
+ * outputs names as listed (peloid/outputs.h) in its order, then any other
+ * by name; not the lock or a *.tmp. */
 static void list_outputs(pl_progress_t *pg, const char *dir)
 {
-    static const char *const usual[] = {"scene.cfg",     INIT_COPY,     "thermo.tsv",     "colloids.h5",
-                                        "colloids.xyz",  "fields.h5",   "fields.xdmf",    "observables.h5",
-                                        "checkpoint.h5", "summary.json"};
-    const size_t nusual = sizeof usual / sizeof *usual;
+    size_t nlisted = 0;
+    while (pl_outputs[nlisted].name && pl_outputs[nlisted].listed) ++nlisted;
     struct dirent **e = NULL;
     const int n = scandir(dir, &e, NULL, alphasort);
-    for (size_t pass = 0; pass <= nusual; ++pass) /* pass < nusual: usual[pass]; then the others */
+    for (size_t pass = 0; pass <= nlisted; ++pass) /* pass < nlisted: pl_outputs[pass]; then the others */
         for (int k = 0; k < n; ++k) {
             const char *name = e[k]->d_name;
             const size_t len = strlen(name);
             if (name[0] == '.' || e[k]->d_type == DT_DIR || (len > 4 && !strcmp(name + len - 4, ".tmp"))) continue;
             size_t u = 0;
-            while (u < nusual && strcmp(name, usual[u])) ++u;
-            if (pass < nusual ? u == pass : u == nusual) pl_progress_file(pg, dir, name);
+            while (u < nlisted && strcmp(name, pl_outputs[u].name)) ++u;
+            if (pass < nlisted ? u == pass : u == nlisted) pl_progress_file(pg, dir, name);
         }
     for (int k = 0; k < n; ++k) free(e[k]);
     free(e);
@@ -370,6 +351,9 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     long long last = 0; /* the step the run ends at */
     writer_t w;
     memset(&w, 0, sizeof w);
+    pl_writers_t ws;
+    memset(&ws, 0, sizeof ws);
+    pl_writer_out_t wout = {.dir = w.dir};
     int rc = pl_sim_create(scene, o->threads, &sim, err);
     if (rc) return rc;
     if (o->restart_changed && !o->restart) {
@@ -426,28 +410,14 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     if ((rc = pl_outdir_lock(w.dir, &lock_fd, err))) goto done;
     if (!in_place && (rc = pl_outdir_clean(w.dir, err))) goto done;
     if (in_place && (rc = pl_outdir_resume_check(w.dir, first, err))) goto done;
-    char path[PATH_MAX];
-    pl_path_join(w.thermo_path, sizeof w.thermo_path, w.dir, "thermo.tsv");
+    pl_path_join(w.thermo_path, sizeof w.thermo_path, w.dir, pl_outputs[PL_OUT_THERMO].name);
     /* first: a thermo.tsv to continue in place with other columns is refused before anything is written */
     if ((rc = pl_thermo_open(&w.columns, w.thermo_path, in_place ? first : -1, &w.thermo, err))) goto done;
     if ((rc = write_scene_echo(&w, &sim->scene, err))) goto done;
-    if ((rc = add_writers(sim, &w, err))) goto done;
-    if (sim->colloids && scene->colloids.trajectory_interval > 0) {
-        const pl_mapping_t *m = &scene->mapping.map;
-        char xyz[PATH_MAX];
-        pl_path_join(path, sizeof path, w.dir, "colloids.h5");
-        pl_path_join(xyz, sizeof xyz, w.dir, "colloids.xyz");
-        pl_colloid_traj_params_t tp = {.a0_m = scene->mapping.enabled ? m->a0 : 0.0,
-                                       .t0_s = scene->mapping.enabled ? m->t0 : 0.0,
-                                       .m_f_kg = scene->mapping.enabled ? m->m_f : 0.0,
-                                       .mass_kg = scene->mapping.enabled
-                                                      ? m->real.kT / (pl_scene_kT(scene) * m->a0 * m->a0 / (m->t0 * m->t0))
-                                                      : 0.0,
-                                       .frame_dt = (double)scene->colloids.trajectory_interval * scene->srd.dt,
-                                       .xyz_path = scene->output.colloids_xyz ? xyz : NULL, .overwrite = 1,
-                                       .resume = in_place, .keep_before = first};
-        if ((rc = pl_colloid_traj_open(path, sim->colloids, &tp, &sim->colloid_traj, err))) goto done;
-    }
+    if ((rc = add_thermo(sim, &w, err))) goto done;
+    wout.in_place = in_place;
+    wout.first = first;
+    if ((rc = pl_writers_open(sim, &wout, &ws, err))) goto done;
     FILE *log = o->log; /* the driver's stream; NULL: quiet */
     if (log) pl_mapping_warnings_print(scene, log); /* after every refusal: a refused run prints one line */
     const int cores = log ? pl_threads_cores() : 0;
@@ -470,8 +440,9 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                                .fluid_n = (double)sim->fluid.n,
                                .md_per_step = colloid_md_moves(sim) ? (double)scene->colloids.substeps : 0.0};
     pg = pl_progress_create(&pp);
+    wout.pg = pg;
     double t0 = omp_get_wtime(), c0 = process_cpu_seconds();
-    rc = loop(sim, &w, pg, last, o->interrupt, err);
+    rc = loop(sim, &w, &ws, pg, last, o->interrupt, err);
     double wall = omp_get_wtime() - t0, cpu = process_cpu_seconds() - c0;
     errno = 0;
     int thermo_bad = fflush(w.thermo) != 0 || fsync(fileno(w.thermo)) != 0;
@@ -484,19 +455,8 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
                         strerror(thermo_errno ? thermo_errno : errno));
         goto done;
     }
-    if (sim->colloid_traj) { /* the final state is the last frame (the stage's at_end) */
-        rc = pl_colloid_traj_close(sim->colloid_traj, err);
-        sim->colloid_traj = NULL;
-        if (rc) goto done;
-    }
-    if ((rc = write_checkpoint(&w, sim, err))) goto done;
-    if (sim->field_acc && sim->field_samples == 0) {
-        pl_progress_note(pg, "no field sample was taken (output.fields_start = %lld, last step %lld): "
-                             "fields.h5 not written", scene->output.fields_start, sim->step);
-    } else if (sim->field_acc) {
-        pl_path_join(path, sizeof path, w.dir, "fields.h5");
-        if ((rc = pl_fields_write(sim, path, err))) goto done;
-    }
+    /* the writers' last writes: trajectory frame, checkpoint, fields */
+    if ((rc = pl_writers_finish(sim, &ws, &wout, err))) goto done;
     for (int m = 0; pl_modules[m]; ++m) /* each module's outputs and measured values */
         if (pl_modules[m]->finish && (rc = pl_modules[m]->finish(sim, w.dir, summary, err))) goto done;
     rc = write_summary(&w, summary, sim, first, wall, cpu, err);
@@ -521,7 +481,8 @@ done:
     pl_progress_free(pg);
     if (w.thermo) fclose(w.thermo);
     json_decref(summary);
-    pl_sim_free(sim);           /* closes a trajectory left open */
+    pl_writers_close(&ws);      /* a trajectory left open keeps its frames */
+    pl_sim_free(sim);
     if (lock_fd >= 0) close(lock_fd); /* the directory is free when every output is closed */
     return rc;
 }

@@ -25,6 +25,7 @@
 #include <string.h>
 
 #include "checkpoint_h5.h"
+#include "peloid/checkpoint.h"
 #include "peloid/colloid.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"

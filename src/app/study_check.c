@@ -1,4 +1,4 @@
-/* Checks of a study that read it whole (src/sweep/study.c reads it): no
+/* Checks of a study that read it whole (src/app/study.c reads it): no
  * point twice.  A grid value given twice on one axis, or two equal rows of
  * points{}, would run the same scene twice under two ids (twice the cost,
  * and a table whose rows look like independent samples); the study is

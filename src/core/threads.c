@@ -22,7 +22,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
-#include "peloid/run.h"
+#include "peloid/threads.h"
 
 /* The least stack of an OpenMP worker thread: the shipped scenes need up
  * to 48 KiB at 2 threads (OMP_STACKSIZE=32K fails on scenes/hecht_fig14.cfg,

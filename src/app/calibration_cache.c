@@ -1,4 +1,4 @@
-/* The calibration cache of src/plan/calibrate.c: one JSON file per
+/* The calibration cache of src/app/calibrate.c: one JSON file per
  * parameter set, "calibration-<key>.json", in the cache folder or in the
  * project's calibration/ directory (shipped, read-only).
  *

@@ -1,7 +1,7 @@
-/* --calibrate never|auto|always (src/main.c): how a physical scene gets the
+/* --calibrate never|auto|always (src/app/main.c): how a physical scene gets the
  * colloid D its time unit is matched on, and the scene loader that applies
  * it.  auto: the shipped calibration or the cache, else a calibration run
- * (src/plan/calibrate.c); always: a calibration run whatever is stored;
+ * (src/app/calibrate.c); always: a calibration run whatever is stored;
  * never: the coupling's theory, 1 / xi_sim (PL Eqs. 39-41, Hecht Eq. 28),
  * with the relative error below, marked in every output (params, the run's
  * log, summary.json "calibration", src/mapping/mapping_diffusion.c).

@@ -1,4 +1,4 @@
-/* The text forms of a study (src/sweep/study.c): errors at a setting's file
+/* The text forms of a study (src/app/study.c): errors at a setting's file
  * and line, a point's value of an axis, and a libconfig settings tree
  * written back as text (a point's scene), shared by the study's reader and
  * its checks (study_check.c). */

@@ -1,5 +1,5 @@
-/* The calibration cache (src/plan/calibration_cache.c): where the
- * coupling-true-time calibrations of src/plan/calibrate.c are kept, how an
+/* The calibration cache (src/app/calibration_cache.c): where the
+ * coupling-true-time calibrations of src/app/calibrate.c are kept, how an
  * entry is read and checked, written, and locked against a second process
  * measuring the same.  Nothing here may cost a run: every failure comes back
  * as a reason (one line, in why) that the caller turns into a warning, except

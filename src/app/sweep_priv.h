@@ -1,5 +1,5 @@
 /* What the files of `peloid sweep` share (sweep.c runs the points,
- * sweep_slurm.c writes the Slurm job array); nothing outside src/sweep/
+ * sweep_slurm.c writes the Slurm job array); nothing outside src/app/
  * sees it. */
 #ifndef PELOID_SWEEP_PRIV_H
 #define PELOID_SWEEP_PRIV_H

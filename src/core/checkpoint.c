@@ -2,10 +2,10 @@
  * N steps equals 2N steps bitwise.  Random numbers are counter based (keyed
  * by step), so the state is positions, velocities (in their sorted order:
  * the stable sort depends on it), tracking arrays, step, field accumulators,
- * with colloids the group /colloids (src/io/checkpoint_colloid.c), the wall
- * and coupling run counters (src/io/checkpoint_coupling.c), and with
+ * with colloids the group /colloids (src/colloid/checkpoint_colloid.c), the wall
+ * and coupling run counters (src/coupling/checkpoint_coupling.c), and with
  * observers their accumulated state, /observe and /stress (written by their
- * modules; fingerprint of the observe section: src/io/checkpoint_observe.c;
+ * modules; fingerprint of the observe section: src/observe/checkpoint_observe.c;
  * absent in older files, which still load: the observers start afresh).
  * Written atomically (pl_atomic_commit); the HDF5 helpers (checksummed 1-d
  * datasets, attributes) are in src/io/checkpoint_h5.c.
@@ -13,7 +13,7 @@
  *
  * Nothing read is trusted (format 2): the root attribute format_version must
  * be PL_CKPT_FORMAT, every dataset carries its FNV-1a checksum
- * ("fnv1a64"), the scene fingerprint must match (src/io/checkpoint_scene.c),
+ * ("fnv1a64"), the scene fingerprint must match (src/core/checkpoint_scene.c),
  * and every array is range-checked before the first kernel sees it
  * (finite; positions inside the box; velocities within the fluid guard's
  * one-cell-per-step bound; ids a permutation; counts >= 0). */
@@ -27,8 +27,8 @@
 #include <unistd.h>
 
 #include "checkpoint_h5.h"
+#include "peloid/checkpoint.h"
 #include "peloid/colloid.h"
-#include "peloid/coupling.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
 #include "peloid/module.h"
@@ -60,7 +60,7 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
     long long meta[8] = {sim->step, sc->run.seed, (long long)fl->n, sc->box.cells[0], sc->box.cells[1],
                          sc->box.cells[2], fl->tracked, (long long)sizeof(pl_real)};
     long long ncol = sim->colloids ? (long long)sim->colloids->n : 0;
-    long long samples = sim->field_samples;
+    long long samples = sim->srd->field_samples;
     long long version = PL_CKPT_FORMAT;
     int bad = pl_ckpt_attr_i64(f, "format_version", &version, 1, 1);
     bad |= pl_ckpt_attr_i64(f, "peloid_checkpoint", meta, 8, 1);
@@ -77,16 +77,16 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
         if (fl->tracked) bad |= pl_ckpt_write_1d(g, dnames[d], H5T_NATIVE_DOUBLE, fl->disp[d], fl->n);
     }
     if (fl->tracked && g >= 0) bad |= pl_ckpt_write_1d(g, "id", H5T_NATIVE_UINT32, fl->id, fl->n);
-    if (sim->field_acc) {
+    if (sim->srd->field_acc) {
         size_t L3 = (size_t)sc->box.cells[0] * (size_t)sc->box.cells[1] * (size_t)sc->box.cells[2];
-        bad |= pl_ckpt_write_1d(f, "field_accumulator", H5T_NATIVE_INT64, sim->field_acc, 4 * L3);
+        bad |= pl_ckpt_write_1d(f, "field_accumulator", H5T_NATIVE_INT64, sim->srd->field_acc, 4 * L3);
     }
     if (g >= 0) H5Gclose(g);
     else bad = 1;
     for (int m = 0; pl_modules[m]; ++m) /* each module's items (colloids, coupling) */
         if (pl_modules[m]->checkpoint_write) bad |= pl_modules[m]->checkpoint_write(f, sim) != 0;
     /* kT_cell of the last collision: the thermo row at the restart step */
-    bad |= pl_ckpt_write_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, &sim->last_kT_meas, 1);
+    bad |= pl_ckpt_write_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, &sim->srd->last_kT_meas, 1);
     if (bad) {
         char why[256];
         pl_h5_error_text(why, sizeof why); /* before H5Fclose clears the stack */
@@ -103,7 +103,7 @@ static int check_fluid(const pl_sim_t *sim, const char *path, pl_err_t *err)
 {
     const pl_fluid_t *fl = &sim->fluid;
     const pl_scene_t *sc = &sim->scene;
-    const double vmax = sim->guard_vmax; /* the fluid guard's speed bound */
+    const double vmax = sim->srd->guard_vmax; /* the fluid guard's speed bound */
     for (size_t i = 0; i < fl->n; ++i) {
         double v2 = 0.0;
         for (int d = 0; d < 3; ++d) {
@@ -139,18 +139,18 @@ static int check_fluid(const pl_sim_t *sim, const char *path, pl_err_t *err)
         }
         free(seen);
     }
-    if (sim->field_acc) {
+    if (sim->srd->field_acc) {
         size_t L3 = (size_t)sc->box.cells[0] * (size_t)sc->box.cells[1] * (size_t)sc->box.cells[2];
         for (size_t c = 0; c < L3; ++c)
-            if (sim->field_acc[c] < 0)
+            if (sim->srd->field_acc[c] < 0)
                 return pl_err_set(err, PL_ERR_INPUT, "%s: field_accumulator count of cell %zu is negative (%lld)",
-                                  path, c, (long long)sim->field_acc[c]);
+                                  path, c, (long long)sim->srd->field_acc[c]);
     }
-    if (sim->field_samples < 0 || sim->field_samples > sim->step)
+    if (sim->srd->field_samples < 0 || sim->srd->field_samples > sim->step)
         return pl_err_set(err, PL_ERR_INPUT, "%s: field_samples = %lld; allowed 0 .. step %lld", path,
-                          sim->field_samples, sim->step);
-    if (!(sim->last_kT_meas >= 0.0 && isfinite(sim->last_kT_meas)))
-        return pl_err_set(err, PL_ERR_INPUT, "%s: kT_cell = %g; allowed finite >= 0", path, sim->last_kT_meas);
+                          sim->srd->field_samples, sim->step);
+    if (!(sim->srd->last_kT_meas >= 0.0 && isfinite(sim->srd->last_kT_meas)))
+        return pl_err_set(err, PL_ERR_INPUT, "%s: kT_cell = %g; allowed finite >= 0", path, sim->srd->last_kT_meas);
     return 0;
 }
 
@@ -171,7 +171,7 @@ int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, 
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: cannot open checkpoint (missing or not HDF5)", path);
         goto out;
     }
-    sim->fluid_sorted = 0; /* cell_start is not stored */
+    sim->srd->sorted = 0; /* cell_start is not stored */
     long long meta[8];
     pl_fluid_t *fl = &sim->fluid;
     const pl_scene_t *sc = &sim->scene;
@@ -238,7 +238,7 @@ int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, 
                  changed);
     }
     sim->step = meta[0];
-    if (pl_ckpt_attr_i64(f, "field_samples", &sim->field_samples, 1, 0)) {
+    if (pl_ckpt_attr_i64(f, "field_samples", &sim->srd->field_samples, 1, 0)) {
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: unreadable attribute field_samples", path);
         goto close;
     }
@@ -254,15 +254,15 @@ int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, 
     }
     if (!rc && fl->tracked) rc = pl_ckpt_read_1d(g, "id", H5T_NATIVE_UINT32, fl->id, fl->n, path, err);
     H5Gclose(g);
-    if (!rc && sim->field_acc) {
+    if (!rc && sim->srd->field_acc) {
         size_t L3 = (size_t)sc->box.cells[0] * (size_t)sc->box.cells[1] * (size_t)sc->box.cells[2];
         if (H5Lexists(f, "field_accumulator", H5P_DEFAULT) > 0)
-            rc = pl_ckpt_read_1d(f, "field_accumulator", H5T_NATIVE_INT64, sim->field_acc, 4 * L3, path, err);
+            rc = pl_ckpt_read_1d(f, "field_accumulator", H5T_NATIVE_INT64, sim->srd->field_acc, 4 * L3, path, err);
         else
-            sim->field_samples = 0;
+            sim->srd->field_samples = 0;
     }
     if (!rc && H5Lexists(f, "kT_cell", H5P_DEFAULT) > 0)
-        rc = pl_ckpt_read_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, &sim->last_kT_meas, 1, path, err);
+        rc = pl_ckpt_read_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, &sim->srd->last_kT_meas, 1, path, err);
     if (!rc) rc = check_fluid(sim, path, err);
     for (int m = 0; !rc && pl_modules[m]; ++m)
         if (pl_modules[m]->checkpoint_read) rc = pl_modules[m]->checkpoint_read(f, sim, path, err);

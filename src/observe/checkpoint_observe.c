@@ -6,12 +6,13 @@
  * may change the observers: with the same fingerprint they resume, with
  * another, or from a checkpoint without the group (written before peloid
  * saved observer state), or after --restart-changed (the physics changed:
- * src/io/checkpoint.c), they start afresh and sim->observe_note says why. */
+ * src/core/checkpoint.c), they start afresh and sim->observe_note says why. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "checkpoint_h5.h"
+#include "peloid/checkpoint.h"
 #include "peloid/h5.h"
 #include "peloid/sim.h"
 

@@ -167,7 +167,7 @@ static void on_signal(int sig)
 /* `peloid sweep`: a first signal is noted (S), a second turns the flag
  * negative (-S, the first's number kept for the exit code); the sweep polls
  * the flag, forwards the first to its points and kills them at the second
- * (src/sweep/sweep.c), so this handler cannot exit itself. */
+ * (src/app/sweep.c), so this handler cannot exit itself. */
 static void on_sweep_signal(int sig)
 {
     interrupt_signal = interrupt_signal > 0 ? -interrupt_signal : interrupt_signal < 0 ? interrupt_signal : sig;
@@ -371,7 +371,7 @@ static double parse_target(const char *v)
 }
 
 /* `peloid plan SCENE --target REL`: a guide to the model for the scene's
- * suspension (src/plan/advise.c). */
+ * suspension (src/app/advise.c). */
 static int cmd_plan(int argc, char **argv)
 {
     const char *path = NULL;
@@ -438,7 +438,7 @@ static int sweep_study(pl_study_t *st, pl_sweep_opts_t *o, pl_err_t *err)
 }
 
 /* `peloid sweep STUDY`: the study's points as a process pool of `peloid run`
- * (src/sweep/sweep.c), or a Slurm job array. */
+ * (src/app/sweep.c), or a Slurm job array. */
 static int cmd_sweep(int argc, char **argv)
 {
     pl_sweep_opts_t o = {.point = -1, .progress_tty = isatty(2), .log = stderr, .interrupt = &interrupt_signal};

@@ -1,5 +1,5 @@
-/* The study's representation, shared by the files of src/sweep/ that read
- * and check it (study.c, study_check.c); nothing outside src/sweep/ sees it. */
+/* The study's representation, shared by the files of src/app/ that read
+ * and check it (study.c, study_check.c); nothing outside src/app/ sees it. */
 #ifndef PELOID_SWEEP_STUDY_PRIV_H
 #define PELOID_SWEEP_STUDY_PRIV_H
 
