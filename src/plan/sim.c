@@ -79,6 +79,7 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
     sim->guard_bad = pl_alloc(nb, sim->nthreads);
     sim->guard_bad_step = -1;
     sim->obs_scratch = pl_alloc(pl_srd_observe_scratch(n) * sizeof(double), sim->nthreads);
+    if (scene->srd.sort_interval > 1) sim->fluid.order = pl_alloc(n * sizeof(uint32_t), sim->nthreads);
     if (scene->output.fields_interval > 0) sim->field_acc = pl_alloc(4 * L3 * sizeof(int64_t), sim->nthreads);
     /* the momentum each wall exchanges (wall stress) */
     const int any_walls = sim->grid.any_walls;
@@ -88,6 +89,7 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
     }
     memcpy(sim->wall_u, scene->box.wall_velocity, sizeof sim->wall_u); /* shear, Hecht Sec. VIII.C */
     if (!sim->hist || !sim->cell_start || !sim->block_sum || !sim->guard_bad || !sim->obs_scratch ||
+        (scene->srd.sort_interval > 1 && !sim->fluid.order) ||
         (scene->output.fields_interval > 0 && !sim->field_acc) || (any_walls && (!sim->wall_acc || !sim->wall_dp))) {
         pl_sim_free(sim);
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cell arrays (%zu cells)", nc);
