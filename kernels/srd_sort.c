@@ -210,7 +210,7 @@ static void scatter(pl_fluid_t *f, const pl_drift_t *drift, uint32_t *restrict h
 }
 
 /* The index sort's scatter (pl_srd_sort_index): slot h[cell[i]]++ takes
- * particle i, 4 B where the full scatter moves 52. */
+ * particle i: it writes 4 B per particle where the full scatter writes 52. */
 static void scatter_index(const uint32_t *restrict cell, uint32_t *restrict order, uint32_t *restrict h,
                           size_t lo, size_t hi)
 {

@@ -66,7 +66,7 @@ static int stage_stream(pl_sim_t *sim, void *ctx, pl_err_t *err)
  * kernels are latency bound, it measured slower at 1 thread and equal at 2
  * (bench/RESULTS.md); bench_srd times both pipelines. */
 /* srd.sort_interval = k > 1: the arrays are reordered on multiples of k
- * only; in between the same stable sort is done on an index (4 B moved per
+ * only; in between the same stable sort is done on an index (8 B moved per
  * particle instead of 100) and the collision reads through it.  The cells'
  * members are the same, their order within a cell is that of the arrays
  * (the last full sort's), so the sums of a cell round differently than with
