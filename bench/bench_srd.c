@@ -19,7 +19,13 @@
  *     stream+sort  read r, v (6D), drift, write the twins r', v' (6D)      12D
  *     collide      as above                                                 6D
  *     step                                                                24D
- * = 224 B / 192 B (double), 116 B / 96 B (float).  Cell arrays (per-thread
+   srd.sort_interval = k (lines "kK:*", --sort-interval K): the full sort on
+   one step in k, the index sort (read cell 4, write the slot's index 4) on
+   the others, whose collision also reads the index (4); the mean over k:
+     sort         (12D + 4) / k + 8 (1 - 1/k)
+     collide      6D + 4 (1 - 1/k)
+ * = 224 B / 192 B (double), 116 B / 96 B (float); with k = 8 the step is
+ * 9D + 4 + 1.5D + 7.5 + 6D + 3.5 = 147 B (double).  Cell arrays (per-thread
  * histograms, cell_start: O(nthreads x ncells) words, ~ 0.4 (3 nthreads + 2)
  * B per particle at 10 per cell) are left out of the model: they are part of
  * the overhead the measurement shows against it.
@@ -31,7 +37,7 @@
  * min and max as the spread.
  *
  * Usage: bench_srd [--quick] [--sizes 16,64,120] [--threads N | --thread-list 1,2,4]
- *                  [--reps R] [--rep-seconds S] [--out DIR] [--no-stream]
+ *                  [--reps R] [--rep-seconds S] [--out DIR] [--no-stream] [--sort-interval K]
  *                  (PL_BENCH_QUICK=1 = --quick; --help prints this) */
 #include <math.h>
 #include <omp.h>
@@ -48,7 +54,8 @@ enum { MAX_SIZES = 8, MAX_REPS = 32, MAX_KERN = PL_MAX_STAGES + 1, MAX_TLIST = 6
 
 static const char usage[] =
     "usage: bench_srd [--quick] [--sizes 16,64,120] [--threads N | --thread-list 1,2,4]\n"
-    "                 [--reps R] [--rep-seconds S] [--out DIR] [--no-stream]\n"
+    "                 [--reps R] [--rep-seconds S] [--out DIR] [--no-stream] [--sort-interval K]\n"
+    "  --sort-interval K also the plan with srd.sort_interval = K (lines kK:*; K > 1)\n"
     "  --threads N       thread sweep 1..N (default: the CPUs)\n"
     "  --thread-list L   these thread counts only (comma-separated)\n"
     "  --reps R          repetitions per case, median and min..max (3..32; default 5, quick 3)\n"
@@ -62,7 +69,19 @@ typedef struct {
     double rep_seconds; /* target duration of one repetition */
     const char *outdir;
     int no_stream; /* skip the triad (A/B runs of kernels only) */
+    int sort_interval; /* > 1: also the plan with srd.sort_interval = this */
 } options_t;
+
+/* Byte model of a plan stage at srd.sort_interval k (see the file
+ * comment); 0 when unknown. */
+static double model_bytes_k(const char *stage, int k)
+{
+    const double D = (double)sizeof(pl_real), f = 1.0 / k;
+    if (!strcmp(stage, "sort")) return (12 * D + 4) * f + 8 * (1 - f);
+    if (!strcmp(stage, "collide")) return 6 * D + 4 * (1 - f);
+    if (!strcmp(stage, "stream+bin")) return 9 * D + 4;
+    return 0.0;
+}
 
 /* Byte model of a plan stage (see the file comment); 0 when unknown. */
 static double model_bytes(const char *stage)
@@ -97,6 +116,7 @@ static void parse(int argc, char **argv, options_t *o)
     o->rep_seconds = quick ? 0.15 : 0.4;
     o->outdir = "bench/out";
     o->no_stream = 0;
+    o->sort_interval = 1;
     o->ntl = 0;
     for (int i = 1; i < argc; ++i) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -118,6 +138,8 @@ static void parse(int argc, char **argv, options_t *o)
             o->reps = atoi(argv[++i]);
         } else if (!strcmp(argv[i], "--no-stream")) {
             o->no_stream = 1;
+        } else if (!strcmp(argv[i], "--sort-interval") && i + 1 < argc) {
+            o->sort_interval = atoi(argv[++i]);
         } else if (!strcmp(argv[i], "--out") && i + 1 < argc) {
             o->outdir = argv[++i];
         }
@@ -213,11 +235,13 @@ static void print_loadavg(const char *when)
 }
 
 /* Runs one (size, threads) case: the plan (each stage and the whole step),
- * then the stream-in-scatter pipeline; prints one line per kernel. */
-static int run_case(const options_t *o, int L, int nt, double stream_gbs, FILE *tsv)
+ * then the stream-in-scatter pipeline; prints one line per kernel.  k > 1:
+ * the plan with srd.sort_interval = k only (lines "kK:*"). */
+static int run_case(const options_t *o, int L, int nt, double stream_gbs, FILE *tsv, int sort_k)
 {
     pl_scene_t sc;
     hoomd_scene(&sc, L);
+    sc.srd.sort_interval = sort_k;
     pl_err_t err;
     memset(&err, 0, sizeof err);
     pl_sim_t *sim;
@@ -233,6 +257,7 @@ static int run_case(const options_t *o, int L, int nt, double stream_gbs, FILE *
     double per_step = omp_get_wtime() - t0;
     long steps = (long)ceil(o->rep_seconds / (per_step > 1e-7 ? per_step : 1e-7));
     if (steps < 2) steps = 2;
+    steps = (steps + sort_k - 1) / sort_k * sort_k; /* whole sort intervals */
     const int nk = sim->nstages + 1; /* every stage, then the whole step */
     double ns[MAX_KERN][MAX_REPS], nf[4][MAX_REPS];
     int rc = 0;
@@ -245,7 +270,7 @@ static int run_case(const options_t *o, int L, int nt, double stream_gbs, FILE *
         ns[nk - 1][r] = 1e9 * wall / (double)steps / n;
     }
     /* the pure-fluid plan: stream+bin, sort, collide and the fluid's guards */
-    int fused = !rc;
+    int fused = !rc && sort_k == 1;
     for (int k = 0; k < sim->nstages; ++k) {
         const char *nm = sim->stages[k].name;
         if (strcmp(nm, "stream+bin") && strcmp(nm, "sort") && strcmp(nm, "collide") &&
@@ -266,12 +291,18 @@ static int run_case(const options_t *o, int L, int nt, double stream_gbs, FILE *
         return 1;
     }
     const double ab = (double)alloc_bytes(sim);
-    double step_bytes = 0.0;
-    for (int k = 0; k < sim->nstages; ++k) step_bytes += model_bytes(sim->stages[k].name);
-    for (int k = 0; k < nk; ++k) {
-        const char *name = k < sim->nstages ? sim->stages[k].name : "step";
-        print_line(tsv, name, L, nt, n, ns[k], o->reps, k < sim->nstages ? model_bytes(name) : step_bytes,
-                   ab, stream_gbs, steps);
+    double step_bytes = 0.0, stage_mb[MAX_KERN];
+    for (int j = 0; j < sim->nstages; ++j) {
+        stage_mb[j] = sort_k > 1 ? model_bytes_k(sim->stages[j].name, sort_k) : model_bytes(sim->stages[j].name);
+        step_bytes += stage_mb[j];
+    }
+    for (int j = 0; j < nk; ++j) {
+        char name[64];
+        const char *stage = j < sim->nstages ? sim->stages[j].name : "step";
+        if (sort_k > 1) snprintf(name, sizeof name, "k%d:%s", sort_k, stage);
+        else snprintf(name, sizeof name, "%s", stage);
+        print_line(tsv, name, L, nt, n, ns[j], o->reps, j < sim->nstages ? stage_mb[j] : step_bytes, ab, stream_gbs,
+                   steps);
     }
     if (fused) {
         const char *names[4] = {"count", "stream+sort", "collide+guards", "step"};
@@ -338,7 +369,8 @@ int main(int argc, char **argv)
         for (int k = 0; k < o.ntl; ++k) {
             double lo, hi;
             double sg = o.no_stream ? NAN : bench_stream_triad(n_stream, o.tlist[k], 3, &lo, &hi);
-            rc |= run_case(&o, o.sizes[s], o.tlist[k], sg, tsv);
+            rc |= run_case(&o, o.sizes[s], o.tlist[k], sg, tsv, 1);
+            if (o.sort_interval > 1) rc |= run_case(&o, o.sizes[s], o.tlist[k], sg, tsv, o.sort_interval);
         }
     fclose(tsv);
     print_loadavg("end");

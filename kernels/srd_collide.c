@@ -36,6 +36,15 @@
 #include "peloid/srd_kernels.h"
 #include "peloid/srd_rules.h"
 
+/* q, opaque to the vectoriser: the index loops below stay scalar (the
+ * AVX-512 gathers and scatters GCC would emit for 10 elements are slower
+ * than scalar loads and stores on the development machine's Zen 4). */
+static inline size_t scalar_index(size_t q)
+{
+    __asm__("" : "+r"(q));
+    return q;
+}
+
 /* Heyes's factor of a cell from its draw (seed, PL_RNG_THERMOSTAT, step,
  * cell, 0), lane `lane` of u. */
 static double heyes_zeta(const pl_collide_params_t *p, size_t M, double K, double u[4][PL_RNG_LANES], size_t lane)
@@ -46,12 +55,22 @@ static double heyes_zeta(const pl_collide_params_t *p, size_t M, double K, doubl
 /* One block of PL_CELL_BLOCK cells.  HEYES is a constant at each call
  * site, so each entry point below compiles its own loop (the thermostat
  * costs nothing in the steps that do not apply it). */
+/* IDX (a constant too): slot i of the cells is particle p->order[i] (the
+ * arrays keep the order of the last full sort, srd.sort_interval) rather
+ * than particle i. */
 static inline __attribute__((always_inline)) void collide_block(pl_real *restrict vx, pl_real *restrict vy,
                                                                 pl_real *restrict vz, const pl_grid_t *g,
                                                                 const uint32_t *cell_start,
                                                                 const pl_collide_params_t *p, double *block_sum,
-                                                                size_t b, const int HEYES)
+                                                                size_t b, const int HEYES, const int IDX)
 {
+    const uint32_t *restrict ord = p->order;
+    const size_t n = IDX ? cell_start[g->ncells] : 0;
+    enum { PF = 64 }; /* IDX: prefetch distance in slots */
+    /* IDX: slot i's particle, in scalar loops (not the AVX-512 gathers and
+     * scatters GCC would emit for ~10 elements; nor a local copy of the
+     * cell, whose vector loads stall on store forwarding) */
+#define AT(i) (IDX ? scalar_index(ord[i]) : (i))
     static const double at_rest[3] = {0.0, 0.0, 0.0};
     const size_t ncells = g->ncells;
     double sum2 = 0.0, dof = 0.0, wdp[PL_WALL_ACC_N] = {0.0};
@@ -83,17 +102,25 @@ static inline __attribute__((always_inline)) void collide_block(pl_real *restric
         if (M + (size_t)ng < 2) {
             if (GUARD)
                 for (size_t i = s; i < e; ++i) {
-                    const double x = vx[i], y = vy[i], z = vz[i];
+                    const size_t q = AT(i);
+                    const double x = vx[q], y = vy[q], z = vz[q];
                     bad |= !(x * x + y * y + z * z <= vmax2);
                 }
             continue;
         }
         double P[3] = {0.0, 0.0, 0.0}, S = 0.0; /* one pass: momentum and sum v^2 */
         for (size_t i = s; i < e; ++i) {
-            P[0] += vx[i];
-            P[1] += vy[i];
-            P[2] += vz[i];
-            S += (double)vx[i] * vx[i] + (double)vy[i] * vy[i] + (double)vz[i] * vz[i];
+            if (IDX && i + PF < n) { /* the slots' particles lie in a few runs: their lines ahead */
+                const size_t qp = ord[i + PF];
+                __builtin_prefetch(vx + qp, 1, 3);
+                __builtin_prefetch(vy + qp, 1, 3);
+                __builtin_prefetch(vz + qp, 1, 3);
+            }
+            const size_t q = AT(i);
+            P[0] += vx[q];
+            P[1] += vy[q];
+            P[2] += vz[q];
+            S += (double)vx[q] * vx[q] + (double)vy[q] * vy[q] + (double)vz[q] * vz[q];
         }
         double u[3], ur[3];
         for (int d = 0; d < 3; ++d) ur[d] = P[d] / (double)M;
@@ -116,10 +143,11 @@ static inline __attribute__((always_inline)) void collide_block(pl_real *restric
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 3; ++j) R[i][j] = Rb[3 * i + j][lane] * zeta;
         for (size_t i = s; i < e; ++i) {
-            double a = vx[i] - u[0], bb = vy[i] - u[1], cc = vz[i] - u[2];
-            vx[i] = (pl_real)(u[0] + R[0][0] * a + R[0][1] * bb + R[0][2] * cc);
-            vy[i] = (pl_real)(u[1] + R[1][0] * a + R[1][1] * bb + R[1][2] * cc);
-            vz[i] = (pl_real)(u[2] + R[2][0] * a + R[2][1] * bb + R[2][2] * cc);
+            const size_t q = AT(i);
+            double a = vx[q] - u[0], bb = vy[q] - u[1], cc = vz[q] - u[2];
+            vx[q] = (pl_real)(u[0] + R[0][0] * a + R[0][1] * bb + R[0][2] * cc);
+            vy[q] = (pl_real)(u[1] + R[1][0] * a + R[1][1] * bb + R[1][2] * cc);
+            vz[q] = (pl_real)(u[2] + R[2][0] * a + R[2][1] * bb + R[2][2] * cc);
         }
         /* GUARD, cells without virtual particles: sum v'^2 = M u^2 +
          * zeta^2 K2 (P = M u), which bounds every particle's v'^2; a
@@ -135,8 +163,9 @@ static inline __attribute__((always_inline)) void collide_block(pl_real *restric
         } else { /* the real particles' own mean moved: measure again */
             double Q[3] = {0.0, 0.0, 0.0}, S1 = 0.0;
             for (size_t i = s; i < e; ++i) {
-                Q[0] += vx[i]; Q[1] += vy[i]; Q[2] += vz[i];
-                S1 += (double)vx[i] * vx[i] + (double)vy[i] * vy[i] + (double)vz[i] * vz[i];
+                const size_t q = AT(i);
+                Q[0] += vx[q]; Q[1] += vy[q]; Q[2] += vz[q];
+                S1 += (double)vx[q] * vx[q] + (double)vy[q] * vy[q] + (double)vz[q] * vz[q];
             }
             if (GUARD) bad |= !(S1 <= 0.99 * vmax2);
             const int slot = wall >= 0 ? wall : 2; /* the z wall's push, or the x/y walls' */
@@ -151,6 +180,7 @@ static inline __attribute__((always_inline)) void collide_block(pl_real *restric
     block_sum[2 * b + 1] = dof;
     if (p->wall_dp)
         for (size_t k = 0; k < PL_WALL_ACC_N; ++k) p->wall_dp[PL_WALL_ACC_N * b + k] = wdp[k];
+#undef AT
 }
 
 /* Cells are independent; blocks of cells give fixed-order partial sums. */
@@ -159,7 +189,10 @@ void pl_srd_collide(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_star
 {
     const size_t nblocks = (g->ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
 #pragma omp parallel for schedule(static) num_threads(nthreads)
-    for (size_t b = 0; b < nblocks; ++b) collide_block(f->v[0], f->v[1], f->v[2], g, cell_start, p, block_sum, b, 0);
+    for (size_t b = 0; b < nblocks; ++b) {
+        if (p->order) collide_block(f->v[0], f->v[1], f->v[2], g, cell_start, p, block_sum, b, 0, 1);
+        else collide_block(f->v[0], f->v[1], f->v[2], g, cell_start, p, block_sum, b, 0, 0);
+    }
 }
 
 void pl_srd_collide_heyes(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cell_start,
@@ -167,7 +200,10 @@ void pl_srd_collide_heyes(pl_fluid_t *f, const pl_grid_t *g, const uint32_t *cel
 {
     const size_t nblocks = (g->ncells + PL_CELL_BLOCK - 1) / PL_CELL_BLOCK;
 #pragma omp parallel for schedule(static) num_threads(nthreads)
-    for (size_t b = 0; b < nblocks; ++b) collide_block(f->v[0], f->v[1], f->v[2], g, cell_start, p, block_sum, b, 1);
+    for (size_t b = 0; b < nblocks; ++b) {
+        if (p->order) collide_block(f->v[0], f->v[1], f->v[2], g, cell_start, p, block_sum, b, 1, 1);
+        else collide_block(f->v[0], f->v[1], f->v[2], g, cell_start, p, block_sum, b, 1, 0);
+    }
 }
 
 void pl_srd_rescale(pl_fluid_t *f, const uint32_t *cell_start, size_t ncells, double factor, int nthreads)

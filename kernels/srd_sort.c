@@ -10,7 +10,9 @@
  * in order.  No atomics, and the result is the stable sort by cell, hence
  * independent of the thread count.  The sorted particles are left in the
  * twin arrays (r_alt, v_alt, ...): the caller swaps them in (pl_fluid_swap),
- * so that a kernel calls nothing of src/.
+ * so that a kernel calls nothing of src/.  The index sort (srd.sort_interval)
+ * is the same stable sort with the scatter writing each slot's particle
+ * index into f->order instead of moving the particles.
  *
  * The prefix sum is parallel: part t sums its block of cells, the block
  * totals are added up (nthreads terms), then every part writes the slots of
@@ -207,6 +209,14 @@ static void scatter(pl_fluid_t *f, const pl_drift_t *drift, uint32_t *restrict h
     }
 }
 
+/* The index sort's scatter (pl_srd_sort_index): slot h[cell[i]]++ takes
+ * particle i: it writes 4 B per particle where the full scatter writes 52. */
+static void scatter_index(const uint32_t *restrict cell, uint32_t *restrict order, uint32_t *restrict h,
+                          size_t lo, size_t hi)
+{
+    for (size_t i = lo; i < hi; ++i) order[h[cell[i]]++] = (uint32_t)i;
+}
+
 /* The counts of [lo, hi) into the whole row h again (a count fell outside a
  * band): the cells the scatter will use, f->cell or the drift's. */
 static void recount(const pl_fluid_t *f, const pl_drift_t *drift, uint32_t *restrict h, size_t ncells,
@@ -234,8 +244,10 @@ static void recount(const pl_fluid_t *f, const pl_drift_t *drift, uint32_t *rest
     }
 }
 
+/* index_only: the permutation into f->order, the arrays and the bands left
+ * as they are (the arrays keep the order the bands were set for). */
 static void sort(pl_fluid_t *f, const pl_drift_t *drift, uint32_t *hist, uint32_t *cell_start,
-                 size_t ncells, int nthreads)
+                 size_t ncells, int nthreads, int index_only)
 {
     uint32_t part[nthreads];            /* particles in each thread's block of cells */
     uint32_t blo[nthreads], blen[nthreads]; /* the bands the rows were counted in */
@@ -278,17 +290,26 @@ static void sort(pl_fluid_t *f, const pl_drift_t *drift, uint32_t *hist, uint32_
         PL_FOR_PART(t, nthreads) {
             size_t lo, hi;
             pl_chunk(f->n, t, nthreads, &lo, &hi);
+            if (index_only) {
+                scatter_index(f->cell, f->order, hist + (size_t)t * ncells, lo, hi);
+                continue;
+            }
             scatter(f, drift, hist + (size_t)t * ncells, lo, hi);
             if (banded) next_band(&f->bands, cell_start, ncells, lo, hi, &f->bands.lo[t], &f->bands.len[t]);
         }
     }
-    f->bands.threads = banded ? nthreads : 0;
+    if (!index_only) f->bands.threads = banded ? nthreads : 0;
     f->bands.overflow = 0;
 }
 
 void pl_srd_sort(pl_fluid_t *f, uint32_t *hist, uint32_t *cell_start, size_t ncells, int nthreads)
 {
-    sort(f, NULL, hist, cell_start, ncells, nthreads);
+    sort(f, NULL, hist, cell_start, ncells, nthreads, 0);
+}
+
+void pl_srd_sort_index(pl_fluid_t *f, uint32_t *hist, uint32_t *cell_start, size_t ncells, int nthreads)
+{
+    sort(f, NULL, hist, cell_start, ncells, nthreads, 1);
 }
 
 void pl_srd_stream_sort(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_params_t *p,
@@ -296,5 +317,5 @@ void pl_srd_stream_sort(pl_fluid_t *f, const pl_grid_t *g, const pl_stream_param
 {
     pl_drift_t c;
     pl_drift_init(&c, g, p, 1);
-    sort(f, &c, hist, cell_start, g->ncells, nthreads);
+    sort(f, &c, hist, cell_start, g->ncells, nthreads, 0);
 }

@@ -48,6 +48,9 @@ typedef struct pl_fluid {
     uint32_t *id, *id_alt;
     double *disp[3], *disp_alt[3];
     uint32_t *cell; /* per particle: collision cell of the current step */
+    uint32_t *order; /* srd.sort_interval > 1 only (else NULL): the index sort's slot j is particle
+                      * order[j]; scratch, rebuilt every step; the owner allocates it (pl_alloc),
+                      * pl_fluid_free frees it */
     pl_fluid_bands_t bands; /* the counting sort's scratch, not state */
 } pl_fluid_t;
 

@@ -66,6 +66,8 @@ typedef struct {
     int rule;         /* PL_RULE_* */
     double alpha_deg; /* rotation angle for the random-axis rule */
     int grid_shift;   /* random shift of the cell grid each step (bool) */
+    long long sort_interval; /* full sort every this many steps; between, an index sort (1: every step);
+                              * the last member: the calibration key hashes the ones before it */
 } pl_scene_srd_t;
 
 typedef struct {

@@ -22,6 +22,9 @@ typedef struct pl_srd {
     /* no particle moved since the last sort: the fluid is in collision-cell
      * order under grid.shift, with cell_start (0 after creation or restart) */
     int sorted;
+    /* this step's sort was the index sort (srd.sort_interval): cell c is the
+     * particles fluid.order[cell_start[c] .. cell_start[c+1]) */
+    int indexed;
     double *block_sum;    /* 2 x ceil(ncells / PL_CELL_BLOCK) */
     double *obs_scratch;  /* pl_srd_observe_scratch(n) */
     double last_kT_meas;  /* PL Eq. A1 temperature of the last collision */

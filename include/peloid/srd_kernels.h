@@ -92,6 +92,13 @@ void pl_srd_stream_count(pl_fluid_t *fluid, const pl_grid_t *grid,
 void pl_srd_sort(pl_fluid_t *fluid, uint32_t *hist, uint32_t *cell_start, size_t ncells,
                  int nthreads);
 
+/* The same stable sort by cell, of an index only: slot j is particle
+ * fluid->order[j] and cell_start as after pl_srd_sort, but the particle
+ * arrays keep their order (no swap follows).  srd.sort_interval: the steps
+ * between two full sorts, whose collision reads through the index. */
+void pl_srd_sort_index(pl_fluid_t *fluid, uint32_t *hist, uint32_t *cell_start, size_t ncells,
+                       int nthreads);
+
 /* Second half of the stream-in-scatter step: pl_srd_sort in which each
  * particle is drifted (bitwise as pl_srd_stream_bin would drift it) on its
  * way into the twin arrays.  hist: from pl_srd_stream_count with the same
@@ -128,6 +135,9 @@ typedef struct {
                                * the block's cells has !(v^2 <= guard_vmax2) after the
                                * collision (the fluid guard's speed test, fused) */
     double guard_vmax2;
+    const uint32_t *order; /* NULL: cell c is particles [cell_start[c], cell_start[c+1]); else slots
+                            * of them, slot j being particle order[j] (pl_srd_sort_index; read by
+                            * the SRD rules' kernel only) */
 } pl_collide_params_t;
 
 /* Fixed-order reductions are done over blocks of this many cells. */

@@ -58,6 +58,7 @@
 #include <fcntl.h>
 #include <jansson.h>
 #include <math.h>
+#include <stddef.h>
 #include <omp.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -185,7 +186,10 @@ static uint64_t cal_key(const pl_scene_t *c, const cal_plan_t *p)
     h = fnv(h, &v, sizeof v);
     h = fnv(h, p, sizeof *p);
     h = fnv(h, &c->fluid, sizeof c->fluid);
-    h = fnv(h, &c->srd, sizeof c->srd);
+    /* srd.sort_interval (the last member) left out: a calibration runs a
+     * coupling, which refuses any value but 1, and the keys of the shipped
+     * calibrations stay those written before the key existed */
+    h = fnv(h, &c->srd, offsetof(pl_scene_srd_t, sort_interval));
     h = fnv(h, &c->thermostat, sizeof c->thermostat);
     h = fnv(h, &c->coupling, sizeof c->coupling);
     const pl_scene_colloids_t *k = &c->colloids;

@@ -34,7 +34,7 @@ void pl_fluid_free(pl_fluid_t *f)
         pl_free(f->r[d]); pl_free(f->v[d]); pl_free(f->r_alt[d]); pl_free(f->v_alt[d]);
         pl_free(f->disp[d]); pl_free(f->disp_alt[d]);
     }
-    pl_free(f->id); pl_free(f->id_alt); pl_free(f->cell);
+    pl_free(f->id); pl_free(f->id_alt); pl_free(f->cell); pl_free(f->order);
     memset(f, 0, sizeof *f);
 }
 
@@ -79,7 +79,7 @@ void pl_fluid_swap(pl_fluid_t *f)
 
 size_t pl_fluid_bytes(const pl_fluid_t *f)
 {
-    size_t b = 2 * 6 * sizeof(pl_real) + sizeof(uint32_t);
+    size_t b = 2 * 6 * sizeof(pl_real) + sizeof(uint32_t) + (f->order ? sizeof(uint32_t) : 0);
     if (f->tracked) b += 2 * (3 * sizeof(double) + sizeof(uint32_t));
     return b;
 }

@@ -74,6 +74,7 @@ static long long speeds_from_collision(const pl_sim_t *sim, const pl_srd_t *fs)
     const double vmax = fs->guard_vmax;
     for (size_t b = 0; b < nb; ++b) {
         if (!fs->guard_bad[b]) continue;
+        if (fs->indexed) return -1; /* a block's particles are not a range: scan them all */
         const size_t c1 = (b + 1) * PL_CELL_BLOCK < nc ? (b + 1) * PL_CELL_BLOCK : nc;
         const size_t lo = fs->cell_start[b * PL_CELL_BLOCK], hi = fs->cell_start[c1];
         const size_t i = pl_srd_guard_scan_speeds(&sim->fluid, lo, hi, vmax * vmax);

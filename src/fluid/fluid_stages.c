@@ -66,10 +66,26 @@ static int stage_stream(pl_sim_t *sim, void *ctx, pl_err_t *err)
  * 248 B per particle), but on the 2-core development machine, where these
  * kernels are latency bound, it measured slower at 1 thread and equal at 2
  * (bench/RESULTS.md); bench_srd times both pipelines. */
+/* srd.sort_interval = k > 1: the arrays are reordered on multiples of k
+ * only; in between the same stable sort is done on an index (8 B moved per
+ * particle instead of 100) and the collision reads through it.  The cells'
+ * members are the same, their order within a cell is that of the arrays
+ * (the last full sort's), so the sums of a cell round differently than with
+ * k = 1: another trajectory, the same statistics (tests/physics/
+ * test_sort_interval.c).  For a given k it is deterministic: both sorts are
+ * stable sorts of a thread-independent array order, and the step number
+ * alone says which one runs, so a restart continues bitwise too. */
 static int stage_sort(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {
     (void)err;
     pl_srd_t *fs = ctx;
+    const long long k = sim->scene.srd.sort_interval;
+    fs->indexed = k > 1 && sim->step % k != 0;
+    if (fs->indexed) {
+        pl_srd_sort_index(&sim->fluid, fs->hist, fs->cell_start, sim->grid.ncells, sim->nthreads);
+        fs->sorted = 0;
+        return 0;
+    }
     pl_srd_sort(&sim->fluid, fs->hist, fs->cell_start, sim->grid.ncells, sim->nthreads);
     pl_fluid_swap(&sim->fluid);
     fs->sorted = 1;
@@ -118,6 +134,7 @@ static void collide_guard(const pl_sim_t *sim, pl_srd_t *fs)
     fs->collide.step = (uint64_t)sim->step;
     fs->collide.guard_bad = fs->guard_bad;
     fs->collide.guard_vmax2 = fs->guard_vmax * fs->guard_vmax;
+    fs->collide.order = fs->indexed ? sim->fluid.order : NULL;
     fs->guard_bad_step = sim->step;
 }
 
@@ -300,6 +317,17 @@ static int fluid_validate(const pl_scene_t *sc, pl_err_t *err)
                              "\"%s\" with coupling II, which rotates the cells that hold colloids by the SRD "
                              "rotation; allowed with coupling II: a rotation rule (random_axis, hecht_axes)",
                              rule->name);
+    if (sc->srd.sort_interval > 1) { /* what reads the cells as contiguous arrays */
+        const int coupled = sc->coupling.method != PL_COUPLE_NONE && sc->colloids.count > 0;
+        const char *why = rule->collide != pl_srd_collide
+                              ? "the rule's kernel reads each cell's particles contiguous (only random_axis and "
+                                "hecht_axes read through the index)"
+                          : coupled ? "a coupling reads the fluid in cell order"
+                                    : NULL;
+        if (why)
+            return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.sort_interval), "srd.sort_interval",
+                                 "%lld: %s; allowed here: 1", sc->srd.sort_interval, why);
+    }
     return rule->validate ? rule->validate(sc, err) : 0;
 }
 

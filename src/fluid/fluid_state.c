@@ -58,6 +58,7 @@ int pl_fluid_state_create(pl_sim_t *sim, pl_err_t *err)
     s->guard_bad = pl_alloc(nb, sim->nthreads);
     s->guard_bad_step = -1;
     s->obs_scratch = pl_alloc(pl_srd_observe_scratch(n) * sizeof(double), sim->nthreads);
+    if (scene->srd.sort_interval > 1) sim->fluid.order = pl_alloc(n * sizeof(uint32_t), sim->nthreads);
     if (scene->output.fields_interval > 0) s->field_acc = pl_alloc(4 * L3 * sizeof(int64_t), sim->nthreads);
     /* the momentum each wall exchanges (wall stress) */
     const int any_walls = sim->grid.any_walls;
@@ -67,6 +68,7 @@ int pl_fluid_state_create(pl_sim_t *sim, pl_err_t *err)
     }
     memcpy(sim->wall_u, scene->box.wall_velocity, sizeof sim->wall_u); /* shear, Hecht Sec. VIII.C */
     if (!s->hist || !s->cell_start || !s->block_sum || !s->guard_bad || !s->obs_scratch ||
+        (scene->srd.sort_interval > 1 && !sim->fluid.order) ||
         (scene->output.fields_interval > 0 && !s->field_acc) || (any_walls && (!s->wall_acc || !s->wall_dp)))
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the cell arrays (%zu cells)", nc);
     pl_fluid_init(&sim->fluid, scene, sim->nthreads);

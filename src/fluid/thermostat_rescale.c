@@ -4,6 +4,7 @@
  * PL Eq. A1 temperature of the last collision (PL Appendix A, Eqs. A1-A2;
  * kernel pl_srd_rescale, kernels/srd_collide.c). */
 #include <math.h>
+#include <stddef.h>
 
 #include "peloid/sim.h"
 #include "peloid/thermostat.h"
@@ -20,6 +21,17 @@ static int stage_rescale(pl_sim_t *sim, void *ctx, pl_err_t *err)
     return 0;
 }
 
+/* The rescaling reads each cell's particles as one range of the arrays: not
+ * between the full sorts of srd.sort_interval (the index sort's steps). */
+static int validate(const pl_scene_t *sc, pl_err_t *err)
+{
+    if (sc->srd.sort_interval > 1)
+        return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.sort_interval), "srd.sort_interval",
+                             "%lld: thermostat.type = \"rescale\" reads each cell's particles contiguous; allowed "
+                             "here: 1", sc->srd.sort_interval);
+    return 0;
+}
+
 static int add_stages(pl_sim_t *sim, pl_srd_t *fs, pl_err_t *err)
 {
     pl_stage_t r = {.name = "thermostat-rescale", .fn = stage_rescale, .ctx = fs,
@@ -31,5 +43,6 @@ const pl_thermostat_t pl_thermostat_rescale = {
     .name = "rescale",
     .doc = "cell-relative rescaling to the global T (PL Appendix A, Eqs. A1-A2)",
     .keys = "thermostat.temperature, thermostat.interval",
+    .validate = validate,
     .add_stages = add_stages,
 };

@@ -237,3 +237,47 @@ Test(sort, team_of_one_takes_every_part)
             pl_free(ref_start);
         }
 }
+
+/* The index sort (srd.sort_interval) is the same stable sort as the full
+ * one: cell_start equal, and slot j's particle order[j] is the particle the
+ * full sort put at slot j, for 1..3 threads, after one full sort (bands in
+ * use) and from the random first order.  Fails if the index were built
+ * from another count or not stably. */
+Test(sort, index_sort_is_the_full_sort_permutation)
+{
+    const size_t n = 20000;
+    for (int presorted = 0; presorted <= 1; ++presorted)
+        for (int t = 1; t <= 3; ++t) {
+            pl_fluid_t f;
+            pl_grid_t g;
+            uint32_t *start;
+            fill(&f, &g, n, 7);
+            f.order = pl_alloc(n * sizeof(uint32_t), t);
+            if (presorted) { /* a full sort, then the particles move a little under a new shift */
+                sort_with(t, &f, &g, &start);
+                pl_free(start);
+                for (size_t i = 0; i < n; ++i) /* up to 0.3 cells along x, wrapped */
+                    f.r[0][i] = (pl_real)fmod(f.r[0][i] + 0.3 * sin((double)i) + g.L[0], g.L[0]);
+                pl_grid_draw_shift(&g, 1, 1, 1);
+            }
+            uint32_t *hist = pl_alloc((size_t)t * g.ncells * sizeof(uint32_t), t);
+            uint32_t *istart = pl_alloc((g.ncells + 1) * sizeof(uint32_t), t);
+            start = pl_alloc((g.ncells + 1) * sizeof(uint32_t), t);
+            pl_srd_bin(&f, &g, hist, t);
+            pl_srd_sort_index(&f, hist, istart, g.ncells, t);
+            uint32_t *id_before = pl_alloc(n * sizeof(uint32_t), 1);
+            memcpy(id_before, f.id, n * sizeof(uint32_t));
+            pl_srd_bin(&f, &g, hist, t);
+            pl_srd_sort(&f, hist, start, g.ncells, t);
+            pl_fluid_swap(&f);
+            cr_assert_eq(memcmp(start, istart, (g.ncells + 1) * sizeof *start), 0, "cell_start, %d threads", t);
+            for (size_t j = 0; j < n; ++j)
+                cr_assert_eq(id_before[f.order[j]], f.id[j], "slot %zu: index %u, full sort id %u (%d threads)", j,
+                             id_before[f.order[j]], f.id[j], t);
+            pl_free(id_before);
+            pl_free(hist);
+            pl_free(istart);
+            pl_free(start);
+            pl_fluid_free(&f);
+        }
+}
