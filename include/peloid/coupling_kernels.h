@@ -100,7 +100,7 @@ typedef struct {
  * pl_coupling_find_block); counts[0] events (reflections), counts[1]
  * truncations (still inside after max_refl). */
 typedef struct {
-    size_t cap;       /* events that key, idx, owner, k, done, state hold */
+    size_t cap;       /* events that key, idx, owner, k, next, taken, done, state hold */
     size_t vcap;      /* doubles of vsave (6 x colloids) */
     uint64_t *key;    /* 2 x cap: the sort key and particle; cap each: the particle, its streaming thread, */
     uint32_t *idx;    /* its colloid in cb, whether it is done, and */
@@ -112,7 +112,7 @@ typedef struct {
     double *state;    /* 7 x cap: its r, v and cell before them */
     double *vsave;    /* vcap: the colloid velocities before the events */
     double *pos, *disp; /* vcap / 2 each: the colloids' moved end positions and displacements */
-    int64_t *head;    /* vcap / 6: each colloid's first event */
+    int64_t *head;    /* vcap / 6 + 1: each colloid's first event (scratch of the chains) */
     unsigned long long parallel, gave_up; /* steps done in parallel; given up (a second colloid) */
 } pl_coupling1_scratch_t;
 
