@@ -236,11 +236,11 @@ CHECK_RUNS := $(patsubst %,check-run/%,$(SLOW_SUITES) $(filter-out $(SLOW_SUITES
 .PHONY: check-suites check-run-asan-bad-scenes
 check-suites: $(CHECK_RUNS)
 check-run/%.sh: $(BIN)
-	@s=$$(date +%s); bash $*.sh ./$(BIN); echo "   ($*.sh: $$(( $$(date +%s) - s )) s)"
+	@set -e; s=$$(date +%s); bash $*.sh ./$(BIN); echo "   ($*.sh: $$(( $$(date +%s) - s )) s)"
 check-run/$(BUILD)/tests/%: $(BUILD)/tests/%
-	@echo "== $<"; s=$$(date +%s); $< --jobs 1; echo "   ($<: $$(( $$(date +%s) - s )) s)"
+	@set -e; echo "== $<"; s=$$(date +%s); $< --jobs 1; echo "   ($<: $$(( $$(date +%s) - s )) s)"
 check-run-asan/%:
-	@s=$$(date +%s); echo "== asan $*"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$* --jobs 1; \
+	@set -e; s=$$(date +%s); echo "== asan $*"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$* --jobs 1; \
 	  echo "   (asan $*: $$(( $$(date +%s) - s )) s)"
 check-run-asan-bad-scenes:
 	@echo "== asan bin/peloid on tests/bad_scenes"
