@@ -179,9 +179,7 @@ check-build: $(CHECK_BIN) $(BIN)
 VALIDATE_BIN := $(call test_bins,$(VAL_SRC))
 CHECK_BIN := $(call test_bins,$(UNIT_SRC) $(PHYS_SRC))
 
-check-unit: $(CHECK_BIN)
-	@set -e; for t in $(CHECK_BIN); do echo "== $$t"; s=$$(date +%s); $$t --jobs 1; \
-	  echo "   ($$t: $$(( $$(date +%s) - s )) s)"; done
+check-unit: $(patsubst %,check-run/%,$(CHECK_BIN)) # the recipes of make check's lanes, one after another
 
 validate-physics: $(VALIDATE_BIN) $(BUILD)/tests/test_mpc_viscosity $(BIN)
 	@set -e; for t in $(VALIDATE_BIN); do echo "== $$t"; $$t --jobs 1; done
@@ -197,9 +195,7 @@ validate: validate-physics
 # (tests/fault/fault_trials.sh, minutes of signals at random moments, runs in
 # make fault-trials only)
 CLI_SUITES := $(wildcard tests/cli/*.sh) $(filter-out tests/fault/fault_trials.sh,$(wildcard tests/fault/*.sh))
-check-cli: $(BIN)
-	@set -e; for t in $(CLI_SUITES); do s=$$(date +%s); bash $$t ./$(BIN); \
-	  echo "   ($$t: $$(( $$(date +%s) - s )) s)"; done
+check-cli: $(patsubst %,check-run/%,$(CLI_SUITES))
 
 # The fault trials in one command (CI runs it): signals at random moments
 # then resume in place (tests/fault/fault_trials.sh), concurrent runs and sweeps
@@ -219,16 +215,12 @@ ASAN_MAKE = BUILD=build-asan \
   OPTFLAGS="-O1 -g -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all"
 check-asan: | deps
 	@$(MAKE) --no-print-directory $(ASAN_MAKE) $(patsubst %,build-asan/tests/%,$(ASAN_TESTS)) build-asan/bin/peloid
-	@set -e; for t in $(ASAN_TESTS); do s=$$(date +%s); \
-	  echo "== asan $$t"; ASAN_OPTIONS=detect_leaks=1 PL_QUICK=1 build-asan/tests/$$t --jobs 1; \
-	  echo "   (asan $$t: $$(( $$(date +%s) - s )) s)"; done
-	@echo "== asan bin/peloid on tests/bad_scenes"
-	@ASAN_OPTIONS=detect_leaks=1 bash tests/support/bad_scenes.sh build-asan/bin/peloid
+	@$(MAKE) --no-print-directory $(patsubst %,check-run-asan/%,$(ASAN_TESTS)) check-run-asan-bad-scenes
 
 # make check runs its suites $(NPROC) at a time (most use one core), each
 # suite's output printed whole when it ends (--output-sync); the longest
 # first, so that the lanes end together.  check-unit, check-cli and
-# check-asan run the same suites one after the other.
+# check-asan run the same recipes one after the other.
 SLOW_SUITES := tests/cli/studies_reduced.sh tests/cli/observers.sh tests/cli/cli.sh tests/cli/sweep.sh \
                tests/cli/stress.sh tests/cli/regression.sh
 CHECK_RUNS := $(patsubst %,check-run/%,$(SLOW_SUITES) $(filter-out $(SLOW_SUITES),$(CLI_SUITES)) $(CHECK_BIN)) \
