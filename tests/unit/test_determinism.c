@@ -39,8 +39,8 @@ static const char *scenes[] = {
     "fluid: { density = 4.0; body_force = [0.01, 0.0, 0.0]; };\n"
     "srd: { dt = 0.3; alpha = 120.0; sort_interval = 3; };\nthermostat: { type = \"heyes\"; heyes_epsilon = 0.2; };\n"
     "output: { track_fluid = true; fields_interval = 3; };\n",
-    "seed = 50;\nbox: { cells = [7, 6, 5]; walls_xy = \"slip\"; };\nfluid: { density = 6.0; };\n"
-    "srd: { dt = 1.0; rule = \"hecht_axes\"; sort_interval = 4; };\n",
+    ("seed = 50;\nbox: { cells = [7, 6, 5]; walls_xy = \"slip\"; };\nfluid: { density = 6.0; };\n"
+     "srd: { dt = 1.0; rule = \"hecht_axes\"; sort_interval = 4; };\n"),
 };
 
 Test(determinism, thread_count_does_not_change_results)
