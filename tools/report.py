@@ -326,11 +326,12 @@ def plot_sediment(f, obs, u, outdir, lines):
     e = obs.get("settling_velocity")
     if e and e.get("plateau", True):  # the window's mean means something only when it is steady
         vs, vse = u("vel", e["value"]), u("vel", e["stderr"])
+        down = -1.0 if e.get("positive") == "down" else 1.0  # dz/dt before the sign was stated (issue 45)
         t0, src = window_start(f["observables/settling_velocity"], e, u)
         k = 0 if t0 is None else int(np.searchsorted(ht, t0))
         tw = ht[k:]
-        axs[1].plot(tw, hv[k] + vs * (tw - ht[k]), "r--", lw=0.8,
-                    label=f"mean v = {vs:.4g} ± {vse:.2g} {u.name('vel')}" + (f" from {t0:.3g} {u.name('time')} ({src})" if t0 is not None and src != "whole run" else ""))
+        axs[1].plot(tw, hv[k] + down * vs * (tw - ht[k]), "r--", lw=0.8,
+                    label=f"mean settling v = {down * -vs:.4g} ± {vse:.2g} {u.name('vel')}" + (f" from {t0:.3g} {u.name('time')} ({src})" if t0 is not None and src != "whole run" else ""))
     ini, text = obs.get("initial_settling_velocity"), []
     if ini and "value" in ini:  # the homogeneous fall: its window and the references
         k = min(int(ini["samples"]), len(ht) - 1)

@@ -156,7 +156,19 @@ int pl_mapping_derive(const pl_mapping_system_t *real, const pl_mapping_solvent_
         h->tau_S = 2.0 * R / h->v_s;                        /* Hecht Eq. 17 */
     }
     h->Pe = h->tau_D / h->tau_S;
-    m->g_sim = mo->g * t0 * t0 / m->a0;
+    /* In model units g = v_S xi / M_eff = v_sim / (D_sim M_eff) (kT = 1).
+     * With t0 matched on D (Hecht Eq. 30), v_sim / D_sim = v_S a0 / D_real:
+     * the model gravity does not depend on the calibrated D, and computed
+     * so it keeps every bit when only the calibration changes (a restart
+     * with another srd.grid_shift does not see colloids.gravity change by
+     * the rounding of a t0 round trip). */
+    if (mo->g > 0 && !(cg->srd_dt > 0) && cg->match != PL_MATCH_KINEMATIC) {
+        const double D_real = real->kT / (6.0 * PL_PI * real->nu * real->rho_f * R); /* as time_unit() */
+        m->g_sim = m->hecht_real.v_s * m->a0 /
+                   (D_real * m->mass_sim * (cg->fluid_gravity ? 1.0 - real->rho_f / real->rho_p : 1.0));
+    } else {
+        m->g_sim = mo->g * t0 * t0 / m->a0;
+    }
 
     double v_model = isfinite(m->hecht_model.tau_S) ? m->hecht_model.v_s : solvent->flow_velocity;
     m->v_sim = v_model * t0 / m->a0;

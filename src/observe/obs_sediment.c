@@ -1,9 +1,16 @@
 /* Observer sedimentation (peloid/observer.h row "sedimentation"): the
  * colloid volume fraction phi(z) (exact sphere slices), the mean (unwrapped)
  * height h, <v_z> of the colloids; the settling velocity between samples,
- * (h_k - h_{k-1}) / dt minus the fluid's mean velocity, whose blocking
- * average over the analysis window (peloid/window.h) is the (hindered) settling velocity of Hecht Eq. 37
- * (Richardson-Zaki) in a homogeneous suspension. */
+ * -((h_k - h_{k-1}) / dt - the fluid's mean v_z), whose blocking average
+ * over the analysis window (peloid/window.h) is the (hindered) settling
+ * velocity of Hecht Eq. 37 (Richardson-Zaki) in a homogeneous suspension.
+ *
+ * Sign: gravity points along -z, and every settling velocity the observer
+ * writes (the series, its summary entry and estimates, the initial settling
+ * velocity of sediment_fit.c) is positive down, the series marked so by its
+ * attribute `positive` = "down" and the entries by "positive": "down".  The
+ * state keeps dz/dt (s_vel, s_vb: the checkpoint's bytes); the outputs negate
+ * it.  colloid_vz stays the z component (up positive). */
 #include <hdf5.h>
 #include <jansson.h>
 #include <math.h>
@@ -24,8 +31,8 @@ typedef struct {
     pl_obs_run_t *run;
     size_t s_bins, s_n, s_cap;
     long long *s_step;
-    double *s_phi, *s_height, *s_vz, *s_vel; /* s_vel[k]: from heights k-1, k (k >= 1) */
-    pl_blocking_t s_vb;                      /* settling velocity */
+    double *s_phi, *s_height, *s_vz, *s_vel; /* s_vel[k]: dz/dt from heights k-1, k (k >= 1) */
+    pl_blocking_t s_vb;                      /* of s_vel (dz/dt) */
 } sed_obs_t;
 
 static int create(pl_obs_run_t *run, void **state, pl_err_t *err)
@@ -124,6 +131,14 @@ static int sample(pl_obs_run_t *run, void *state, pl_err_t *err)
     return 0;
 }
 
+/* The n settling samples from dz/dt, positive down (NULL: out of memory). */
+static double *down_positive(const double *dzdt, size_t n)
+{
+    double *v = malloc((n ? n : 1) * sizeof *v);
+    for (size_t k = 0; v && k < n; ++k) v[k] = -dzdt[k];
+    return v;
+}
+
 static int obs_write(int64_t obs_, const pl_sim_t *sim, void *state)
 {
     const sed_obs_t *o = state;
@@ -132,9 +147,16 @@ static int obs_write(int64_t obs_, const pl_sim_t *sim, void *state)
     if (o->s_n == 0) return 0;
     int bad = pl_obs_series(obs, "colloid_height", o->s_n, o->s_step, dt, o->s_height, "a0") != 0;
     if (o->s_n > 1) {
-        bad |= pl_obs_series(obs, "settling_velocity", o->s_n - 1, o->s_step + 1, dt, o->s_vel + 1, "a0/t0") != 0;
-        const pl_window_t w = pl_obs_window(o->run, o->s_step + 1, o->s_vel + 1, o->s_n - 1);
-        if (!bad) bad |= pl_obs_window_h5(obs, "settling_velocity", sim, &w) != 0;
+        double *v = down_positive(o->s_vel + 1, o->s_n - 1);
+        bad |= !v || pl_obs_series(obs, "settling_velocity", o->s_n - 1, o->s_step + 1, dt, v, "a0/t0") != 0;
+        if (!bad) {
+            const pl_window_t w = pl_obs_window(o->run, o->s_step + 1, v, o->s_n - 1);
+            bad |= pl_obs_window_h5(obs, "settling_velocity", sim, &w) != 0;
+            hid_t g = H5Gopen2(obs, "settling_velocity", H5P_DEFAULT);
+            bad |= g < 0 || pl_h5_attr_str(g, "positive", "down") != 0;
+            if (g >= 0 && H5Gclose(g) < 0) bad = 1;
+        }
+        free(v);
     }
     bad |= pl_obs_series(obs, "colloid_vz", o->s_n, o->s_step, dt, o->s_vz, "a0/t0") != 0;
     hid_t g = pl_h5_group(obs, "colloid_phi_z");
@@ -162,14 +184,25 @@ static int obs_write(int64_t obs_, const pl_sim_t *sim, void *state)
 static int summary(pl_obs_sum_t *s, const pl_sim_t *sim, void *state)
 {
     const sed_obs_t *o = state;
+    if (o->s_n < 2) return 0;
+    double *v = down_positive(o->s_vel + 1, o->s_n - 1);
+    if (!v) return -1;
     if (o->s_n >= 3) {
         /* the average over the window of the stored velocities (s_vb holds
          * the whole run's, for se_vs_time and stop.observable) */
-        const pl_window_t w = pl_obs_window(o->run, o->s_step + 1, o->s_vel + 1, o->s_n - 1);
+        const pl_window_t w = pl_obs_window(o->run, o->s_step + 1, v, o->s_n - 1);
         uint64_t nw;
-        pl_blocking_result_t res = pl_window_blocking(o->s_vel + 1, o->s_n - 1, w.first, &nw);
+        pl_blocking_result_t res = pl_window_blocking(v, o->s_n - 1, w.first, &nw);
         if (nw >= 2 && isfinite(res.mean) && isfinite(res.se)) {
-            json_t *e = pl_obs_entry(s, 0, res.mean, res.se, res.n_indep, res.inefficiency, res.plateau, "a0/t0");
+            pl_obs_point_t pts[PL_OBS_NFRAC]; /* se_vs_time: the estimate's points (dz/dt) positive down */
+            for (int f = 0; f < PL_OBS_NFRAC; ++f) {
+                pts[f] = s->ept[f];
+                pts[f].value = -pts[f].value;
+            }
+            pl_obs_sum_t down = *s;
+            down.ept = pts;
+            json_t *e = pl_obs_entry(&down, 0, res.mean, res.se, res.n_indep, res.inefficiency, res.plateau, "a0/t0");
+            pl_json_str(s->b, e, "positive", "down");
             pl_json_int(s->b, e, "samples", (long long)nw);
             pl_obs_window_json(s->b, e, sim, &w);
             if (sim->scene.mapping.enabled) { /* a0/t0 -> m/s */
@@ -180,7 +213,8 @@ static int summary(pl_obs_sum_t *s, const pl_sim_t *sim, void *state)
             pl_json_set(s->b, s->all, "settling_velocity", e);
         }
     }
-    if (o->s_n >= 2) pl_sediment_summary(s->b, s->all, &sim->scene, o->s_vel + 1, o->s_step + 1, o->s_n - 1);
+    pl_sediment_summary(s->b, s->all, &sim->scene, v, o->s_step + 1, o->s_n - 1);
+    free(v);
     return 0;
 }
 
@@ -194,7 +228,7 @@ static void est_settling(const void *state, pl_obs_point_t *p)
     const pl_blocking_t *bl = o ? &o->s_vb : &none;
     pl_blocking_result_t r = pl_blocking_result(bl);
     p->valid = bl->n >= 2 && isfinite(r.mean) && isfinite(r.se);
-    p->value = r.mean;
+    p->value = r.mean; /* dz/dt, as the state (summary() negates it) */
     p->se = r.se;
     p->plateau = r.plateau;
 }

@@ -4,9 +4,9 @@
  * Eq. 16, with the friction the mapping matched) and Richardson-Zaki (Hecht
  * Eq. 37) at the scene's volume fraction.
  *
- * The samples are the velocities of the colloids' mean height between
- * consecutive observer samples, v_k = (h_k - h_{k-1}) / dt_k (less the
- * fluid's mean velocity); over samples a few colloid relaxation times apart
+ * The samples are the settling velocities of the colloids' mean height
+ * between consecutive observer samples, v_k = -(h_k - h_{k-1}) / dt_k (less
+ * the fluid's mean velocity; positive down, gravity along -z); over samples a few colloid relaxation times apart
  * they are independent (the mean height is a random walk with drift).  The
  * fall is homogeneous while the drift does not change: the window is the
  * longest prefix of the series whose first and second halves agree within 2
@@ -117,7 +117,7 @@ void pl_sediment_summary(pl_json_t *b, json_t *all, const pl_scene_t *sc, const 
     const double to_si = sc->mapping.enabled ? sc->mapping.map.a0 / sc->mapping.map.t0 : NAN;
     json_t *e = json_object();
     if (found) {
-        pl_json_real(b, e, "value", -f.value); /* falling: positive */
+        pl_json_real(b, e, "value", f.value);
         pl_json_real(b, e, "stderr", f.se);
         pl_json_int(b, e, "samples", (long long)f.window);
         pl_json_int(b, e, "first_step", step[0]);
@@ -134,11 +134,12 @@ void pl_sediment_summary(pl_json_t *b, json_t *all, const pl_scene_t *sc, const 
     pl_json_real_or_null(b, e, "stokes", vs);
     /* Richardson & Zaki 1954 for Re < 0.2: (1 - phi)^4.65; Hecht Eq. 37 */
     pl_json_real_or_null(b, e, "richardson_zaki_4.65", vs * pow(1.0 - phi, 4.65));
-    if (found && vs != 0.0) pl_json_real_or_null(b, e, "over_stokes", -f.value / vs);
+    pl_json_str(b, e, "positive", "down");
+    if (found && vs != 0.0) pl_json_real_or_null(b, e, "over_stokes", f.value / vs);
     if (vs == 0.0) pl_json_str(b, e, "note", "no gravity: no Stokes settling to compare with");
     if (sc->mapping.enabled) {
         if (found) {
-            pl_json_real(b, e, "value_m_per_s", -f.value * to_si);
+            pl_json_real(b, e, "value_m_per_s", f.value * to_si);
             pl_json_real(b, e, "stderr_m_per_s", f.se * to_si);
         }
         pl_json_real_or_null(b, e, "stokes_m_per_s", vs * to_si);

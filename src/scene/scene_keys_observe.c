@@ -79,8 +79,9 @@ static const pl_key_t observe_keys[] = {
      "first step the velocity distributions sample"},
     {"sediment_interval", PL_KEY_INT, OFF(sediment_interval), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "sedimentation every this many steps (0: off): the colloid volume-fraction profile phi(z) (exact sphere "
-     "slices), the mean height (unwrapped z) and the settling velocity <v_z> of the colloids relative to the "
-     "fluid's mean; its time average with the blocking SE is the (hindered) settling velocity of Hecht Eq. 37"},
+     "slices), the mean height (unwrapped z), <v_z> and the settling velocity of the colloids' mean height "
+     "relative to the fluid's mean (positive down); its time average with the blocking SE is the (hindered) "
+     "settling velocity of Hecht Eq. 37"},
     {"sediment_start", PL_KEY_INT, OFF(sediment_start), 0, 1e15, 0, NULL, 0, NULL, "collision steps",
      "first step the sedimentation observer samples"},
     {"sediment_bins", PL_KEY_INT, OFF(sediment_bins), 0, 1e6, 0, NULL, 0, NULL, "-",

@@ -34,7 +34,8 @@ RZ_FRAMES = [("volume", "zero volume flux, u (1 − φ): Richardson–Zaki's fra
 def rz_speed(summary, frame):
     """Settling speed and SE in the frame, from the point's summary.json."""
     v = summary["observables"]["settling_velocity"]
-    u, e = -v["value"], v["stderr"]  # settling is along -z
+    # positive down since it says so (issue 45); dz/dt (settling along -z) before
+    u, e = (v["value"] if v.get("positive") == "down" else -v["value"]), v["stderr"]
     col = summary["mapping"]["colloid"]
     if frame == "volume":
         f = 1.0 - col["volume_fraction_realised"]
@@ -164,7 +165,8 @@ def rz_precision(sw):
         for p in pts:
             s = p["summary"]
             h = h5py.File(os.path.join(sw["_out"], p["id"], "observables.h5"), "r")["observables/settling_velocity"]
-            series.append((s, h["step"][:], h["value"][:]))
+            down = h.attrs.get("positive", b"") in (b"down", "down")  # else dz/dt (outputs before issue 45)
+            series.append((s, h["step"][:], h["value"][:] * (-1.0 if down else 1.0)))
         for f in RZ_PREFIXES:
             ok, cpu = [], 0.0
             for s, step, val in series:
@@ -176,7 +178,9 @@ def rz_precision(sw):
                 ref = [q for q in s["observables"]["settling_velocity"].get("se_vs_time", [])
                        if abs(q["run_fraction"] - f) < 1e-9]
                 if ref:  # the observer's own prefix estimates: the same samples, so the same mean
-                    check.append((abs(-m - -ref[0]["value"]) / ref[0]["stderr"], e / ref[0]["stderr"]))
+                    rd = s["observables"]["settling_velocity"].get("positive") == "down"
+                    check.append((abs(-m - (ref[0]["value"] if rd else -ref[0]["value"])) / ref[0]["stderr"],
+                                  e / ref[0]["stderr"]))
             if all(q[1] > 0 for q in ok):
                 l, l_se, vinf, _, chi2 = rz_fit(ok)
                 fits.setdefault(pe, []).append({"f": f, "l": l, "se": l_se, "cpu": cpu, "chi2": chi2,
