@@ -112,11 +112,17 @@ static void colloid_describe(const pl_sim_t *sim, FILE *log)
     }
     if (sim->colloids->pair.terms & (PL_CT_WCA | PL_CT_DEPL)) {
         const pl_colloid_depl_info_t *d = &sim->colloids->depl;
-        fprintf(log, "peloid: colloid-colloid sigma_cc = %.6g a0 (%s); phi_cc = %.4g kT at twice the "
-                     "colloid-fluid cut-off %.6g a0; depletion potential at sigma_cc %.4g kT "
-                     "(PL Eqs. 22-23)%s\n",
-                d->sigma_cc, d->rule == PL_SIGMA_PL ? "wca.sigma_rule = pl, PL Sec. III.C.1" : "wca.sigma",
-                d->phi_match, d->d_match, d->phi_sigma, d->table_n ? "; compensated by depletion_comp" : "");
+        if (d->sigma_cc > 0)
+            fprintf(log, "peloid: colloid-colloid sigma_cc = %.6g a0 (%s); phi_cc = %.4g kT at twice the "
+                         "colloid-fluid cut-off %.6g a0; depletion potential at sigma_cc %.4g kT "
+                         "(PL Eqs. 22-23)%s\n",
+                    d->sigma_cc, d->rule == PL_SIGMA_PL ? "wca.sigma_rule = pl, PL Sec. III.C.1" : "wca.sigma",
+                    d->phi_match, d->d_match, d->phi_sigma, d->table_n ? "; compensated by depletion_comp" : "");
+        else /* no wca term: the colloids touch at 2R */
+            fprintf(log, "peloid: colloid-colloid contact at 2R = %.6g a0 (no wca term); depletion potential "
+                         "there %.4g kT, acting below twice the colloid-fluid cut-off %.6g a0 (PL Eqs. 22-23)%s\n",
+                    2.0 * sim->scene.colloids.radius, d->phi_sigma, d->d_match,
+                    d->table_n ? "; compensated by depletion_comp" : "");
     }
 }
 
@@ -132,7 +138,9 @@ static int colloid_summary(const pl_sim_t *sim, json_t *doc, pl_err_t *err)
     pl_json_str(&b, o, "sigma_rule", d->rule == PL_SIGMA_PL ? "pl" : "fixed");
     pl_json_real(&b, o, "d_match", d->d_match);
     pl_json_real(&b, o, "phi_cc_at_d_match", d->phi_match);
+    /* (no wca term: sigma_cc 0, the depletion at the contact 2R) */
     pl_json_real(&b, o, "depletion_at_sigma_cc", d->phi_sigma);
+    pl_json_real(&b, o, "depletion_at_distance", d->sigma_cc > 0 ? d->sigma_cc : 2.0 * sim->scene.colloids.radius);
     pl_json_set(&b, o, "depletion_comp", json_boolean(d->table_n));
     pl_json_set(&b, doc, "colloid_pairs", o);
     return b.failed ? err->code : 0;

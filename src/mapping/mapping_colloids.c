@@ -428,15 +428,17 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
                              "colloids the full weight, with buoyancy from the fluid's pressure, which "
                              "coupling II point colloids do not feel; allowed: false (Hecht Eq. 31: "
                              "weight minus buoyancy on the colloids alone)");
-    /* what the model derives, in model units */
     const char *pairs_src = "given";
     if (have && !given(s, OFF(colloids.pairs))) {
         int dlvo = given(s, OFF(mapping.physical.surface_potential)) || given(s, OFF(mapping.physical.hamaker));
         const int pot = mp->cg.coupling == PL_COUPLE_POTENTIAL; /* PL Eq. 16 as the contact repulsion */
-        snprintf(cs->pairs, sizeof cs->pairs, "%s", dlvo ? (pot ? "dlvo, wca" : "dlvo, hertz") : pot ? "wca" : "hertz");
-        pairs_src = dlvo  ? "derived: physical.surface_potential / hamaker given"
-                    : pot ? "derived: PL Eq. 16 WCA repulsion of the potential coupling (PL Sec. III.A)"
-                          : "derived: contact repulsion only";
+        /* potential + DLVO: contact at 2R, depletion compensated (mapping_potential.c) */
+        snprintf(cs->pairs, sizeof cs->pairs, "%s",
+                 dlvo ? (pot ? "dlvo, hertz, depletion_comp" : "dlvo, hertz") : pot ? "wca" : "hertz");
+        pairs_src = dlvo && pot ? "derived: DLVO given; contact at 2R, PL's depletion compensation (Sec. III.C.1)"
+                    : dlvo      ? "derived: physical.surface_potential / hamaker given"
+                    : pot       ? "derived: PL Eq. 16 WCA repulsion of the potential coupling (PL Sec. III.A)"
+                                : "derived: contact repulsion only";
     }
     unsigned mask = 0;
     char bad[128];
@@ -448,6 +450,11 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     const char *K_src = "";
     size_t pairs_off = given(s, OFF(colloids.pairs)) ? OFF(colloids.pairs) : OFF(mapping.physical.volume_fraction);
     const char *pairs_key = given(s, OFF(colloids.pairs)) ? "colloids.pairs" : "physical.volume_fraction";
+    if (!given(s, OFF(colloids.pairs)) && mp->cg.coupling == PL_COUPLE_POTENTIAL && (mask & PL_CT_DLVO)) { /* Hertz */
+        const int sp = given(s, OFF(mapping.physical.surface_potential));
+        pairs_off = sp ? OFF(mapping.physical.surface_potential) : OFF(mapping.physical.hamaker);
+        pairs_key = sp ? "physical.surface_potential" : "physical.hamaker";
+    }
     if (mask & PL_CT_DLVO) { /* colloids.pairs derived: blamed on the key that switched the term on */
         const int ham = given(s, OFF(mapping.physical.hamaker)), own = given(s, OFF(colloids.pairs));
         char miss[256] = "";

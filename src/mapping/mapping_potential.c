@@ -21,7 +21,13 @@
  * charged colloid a sphere of 1.12 R, and sigma_cc = 2R would leave the
  * spurious depletion well uncompensated (PL Sec. III.C.1): none of these is
  * the stated suspension, so the front end refuses DLVO with the potential
- * coupling's wca term, naming the key that switched DLVO on. */
+ * coupling's wca term, naming the key that switched DLVO on.  What is
+ * derived instead (src/mapping/mapping_colloids.c, when colloids.pairs is
+ * not given): "dlvo, hertz, depletion_comp", the contact at 2R by Hertz
+ * (Hecht Eq. 3, from the material constants) and PL's other remedy, the
+ * compensating potential -Phi_depl of PL Eqs. 22-23 (exact for the ideal SRD
+ * fluid in equilibrium), so the colloids are spheres of R: phi_c = phi and
+ * the DLVO gaps those of the stated surfaces. */
 #include <jansson.h>
 #include <math.h>
 #include <stdio.h>
@@ -66,9 +72,10 @@ int pl_mapping_potential_core(pl_scene_t *s, unsigned pairs, pl_err_t *err)
                              "switches the DLVO pair term on, but with coarse_graining.coupling = \"potential\" the "
                              "colloids repel by PL Eq. 16 with sigma_cc = %.4g R (PL's rule against spurious "
                              "depletion, Sec. III.C.1): DLVO gaps below %.4g m would be inside that hard core and the "
-                             "colloids would touch at the radius %.4g m instead of R = %.4g m; allowed: "
-                             "coarse_graining.coupling = \"I\" or \"II\" for a DLVO suspension, or the potential "
-                             "coupling without physical.surface_potential and physical.hamaker",
+                             "colloids would touch at the radius %.4g m instead of R = %.4g m; allowed: colloids.pairs = "
+                             "\"dlvo, hertz, depletion_comp\" (what the potential coupling derives with DLVO when "
+                             "colloids.pairs is not given: the contact at 2R and PL's compensating depletion "
+                             "potential), coarse_graining.coupling = \"I\" or \"II\", or no DLVO",
                              2.0 * core / R, (2.0 * core - 2.0 * R) * m->a0, core * m->a0, R * m->a0);
     }
     c->core_radius = core;

@@ -23,6 +23,7 @@
 
 #include "mapping_testutil.h"
 
+#include "peloid/colloid.h"
 #include "peloid/mapping.h"
 #include "peloid/scene.h"
 #include "peloid/srd_theory.h"
@@ -206,32 +207,56 @@ Test(hydro, potential_hard_core)
     cr_expect(strstr(w->text, "1.122 R") != NULL, "%s", w->text);
 }
 
-/* DLVO with the potential coupling's WCA is refused, naming the key that
- * switched DLVO on (the physical key, or colloids.pairs where given), the
- * coupling and sigma_cc */
-Test(hydro, potential_dlvo_refused)
+/* DLVO with the potential coupling (issue 45): never a silently resized
+ * colloid.  Derived (colloids.pairs not given): "dlvo, hertz,
+ * depletion_comp", the contact at 2R and PL's compensating depletion
+ * potential (PL Sec. III.C.1), so the hard core is R and phi_c = phi, no
+ * HARD_CORE_PHI warning; Hertz then needs the material constants (refused
+ * naming physical.young_modulus without them).  Given with the wca term
+ * ("dlvo, wca"): refused naming colloids.pairs, the coupling, sigma_cc and
+ * the derived alternative. */
+Test(hydro, potential_dlvo_derived_or_refused)
 {
     static pl_scene_t scene;
     const char *base = "physical: { radius = 1.0e-6; volume_fraction = 0.02; box = [12.0e-6, 12.0e-6, 12.0e-6];\n"
-                       "  hamaker = 1.0e-20; surface_potential = 0.05; ionic_strength = 0.001; };\n"
-                       "coarse_graining: { coupling = \"potential\"; };\n";
+                       "  hamaker = 1.0e-20; surface_potential = 0.05; ionic_strength = 0.001;%s };\n"
+                       "coarse_graining: { coupling = \"potential\"; };\n%s";
+    const char *material = " young_modulus = 3.4e9; poisson_ratio = 0.35;";
     char text[1024];
-    const char *extra[] = {"", "colloids: { pairs = \"dlvo, wca\"; };\n"};
-    const char *key[] = {"key 'physical.surface_potential'", "key 'colloids.pairs'"};
-    for (int i = 0; i < 2; ++i) {
-        pl_err_t err = {0, ""};
-        snprintf(text, sizeof text, "%s%s", base, extra[i]);
-        cr_expect_eq(pl_scene_load_string(text, "pd.cfg", &scene, &err), PL_ERR_INPUT, "accepted: %s", text);
-        cr_expect(strstr(err.msg, "pd.cfg:") && strstr(err.msg, key[i]) && strstr(err.msg, "sigma_cc = 2.245 R") &&
-                      strstr(err.msg, "coarse_graining.coupling = \"potential\""),
-                  "%s", err.msg);
-    }
-    /* without DLVO the same suspension loads */
     pl_err_t err = {0, ""};
+    snprintf(text, sizeof text, base, material, "");
+    cr_assert_eq(pl_scene_load_string(text, "pd.cfg", &scene, &err), 0, "%s", err.msg);
+    unsigned mask = 0;
+    char bad[64];
+    cr_assert_eq(pl_colloid_parse_pairs(scene.colloids.pairs, &mask, bad, sizeof bad), 0, "%s", scene.colloids.pairs);
+    cr_expect_eq(mask, PL_CT_DLVO | PL_CT_HERTZ | PL_CT_DEPL, "pairs \"%s\"", scene.colloids.pairs);
+    const pl_mapping_colloid_t *c = &scene.mapping.colloid;
+    cr_expect(REL_EQ(c->core_radius, scene.mapping.map.sigma), "core %.10g a0, R %.10g a0", c->core_radius,
+              scene.mapping.map.sigma);
+    cr_expect(REL_EQ(c->phi_core, c->phi_realised), "phi_c %.10g, phi %.10g", c->phi_core, c->phi_realised);
+    cr_expect(find_warn(&scene.mapping.map, "HARD_CORE_PHI") == NULL, "HARD_CORE_PHI warned");
+
+    /* the material constants missing: refused, naming them */
+    err = (pl_err_t){0, ""};
+    snprintf(text, sizeof text, base, "", "");
+    cr_expect_eq(pl_scene_load_string(text, "pm.cfg", &scene, &err), PL_ERR_INPUT, "accepted: %s", text);
+    cr_expect(strstr(err.msg, "pm.cfg:") && strstr(err.msg, "physical.young_modulus"), "%s", err.msg);
+
+    /* the wca term given beside DLVO: refused */
+    err = (pl_err_t){0, ""};
+    snprintf(text, sizeof text, base, material, "colloids: { pairs = \"dlvo, wca\"; };\n");
+    cr_expect_eq(pl_scene_load_string(text, "pw.cfg", &scene, &err), PL_ERR_INPUT, "accepted: %s", text);
+    cr_expect(strstr(err.msg, "pw.cfg:") && strstr(err.msg, "key 'colloids.pairs'") &&
+                  strstr(err.msg, "sigma_cc = 2.245 R") && strstr(err.msg, "coarse_graining.coupling = \"potential\"") &&
+                  strstr(err.msg, "dlvo, hertz, depletion_comp"),
+              "%s", err.msg);
+    /* without DLVO the same suspension loads with PL's wca core */
+    err = (pl_err_t){0, ""};
     cr_expect_eq(pl_scene_load_string("physical: { radius = 1.0e-6; volume_fraction = 0.02; box = [12.0e-6, 12.0e-6, "
                                       "12.0e-6]; };\ncoarse_graining: { coupling = \"potential\"; };\n",
                                       "p.cfg", &scene, &err),
                  0, "%s", err.msg);
+    cr_expect_str_eq(scene.colloids.pairs, "wca");
 }
 
 /* The hydrodynamic tail a calibration's MSD slope misses in its periodic box
