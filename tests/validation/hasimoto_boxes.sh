@@ -9,7 +9,11 @@
 # colloids.h5 read with h5py alone, the tail computed here, not by peloid.
 #
 # Estimator (the calibration's): the MSD's secant slope over lags [6, 18] t0,
-# 8 blocks of origins per run, the SE from the scatter between runs; plus
+# 8 blocks of origins per run (each 2500 steps or more, 625 t0: independent
+# for lags of 18 t0), the SE from the scatter of all blocks of a box's runs
+# (with 2 runs a scatter between runs would be an SE of 1 degree of
+# freedom; the calibration's 8-block SE was measured honest, 1.02 +- 0.07,
+# tests/validation/calibration_windows.sh); plus
 # the tail the window misses in a box of edge L, from the box's transverse
 # modes, (2/3) kT/(rho L^3) sum_{k != 0} (e^{-x t1} - e^{-x t2}) / (x^2 (t2 -
 # t1)), x = (nu + D) k^2: D_L = slope + tail, the long-time D in that box.
@@ -105,22 +109,22 @@ def slope(p, nb=8):  # the calibration's estimator: 8 blocks of origins, secant 
         a0 = r[k0:k1]
         s1 = ((r[k0 + l1:k1 + l1] - a0) ** 2).sum(-1); s2 = ((r[k0 + l2:k1 + l2] - a0) ** 2).sum(-1)
         b.append(((s2 - s1) / (6 * (l2 - l1) * dt)).mean())
-    return float(np.mean(b)), int(L[0])
+    return b, int(L[0])
 
 by = {}
 cpu = 0.0
 for nm in names:
-    d, L = slope(nm + "/colloids.h5")
-    by.setdefault(L, []).append(d)
+    b, L = slope(nm + "/colloids.h5")
+    by.setdefault(L, []).extend(b)
     cpu += json.load(open(nm + "/summary.json"))["cpu_seconds"]
 res = {}
 for L, ds in sorted(by.items()):
     ds = np.array(ds)
-    m, se = ds.mean(), ds.std(ddof=1) / math.sqrt(len(ds))
+    m, se = ds.mean(), ds.std(ddof=1) / math.sqrt(len(ds))  # the runs' blocks pooled
     tl = tail(L, m)
     DL = m + tl
     Dinf = DL + H * kT / (6 * math.pi * eta * L)
-    res[L] = (m, se, tl, DL, Dinf, len(ds))
+    res[L] = (m, se, tl, DL, Dinf, len(ds) // 8)
 (m16, s16, t16, D16, I16, n16), (m32, s32, t32, D32, I32, n32) = res[16], res[32]
 diff, sdiff = D16 - D32, math.hypot(s16, s32)
 pred = H * kT / (6 * math.pi * eta) * (1 / 16 - 1 / 32)

@@ -25,7 +25,7 @@ def section(line, commit):
         "γ = 10, λ = 0.25, α = 130°, R = 0.62 a0, M = 39 m_f) in its calibration box (32 free colloids, 16³ cells) "
         "and in one twice as wide at the same colloid density (256 colloids, 32³); colloids.h5 read with h5py; the "
         "calibration's estimator (MSD secant slope over [6, 18] t0, 8 blocks of origins) plus the tail the window "
-        "misses in that box (its transverse modes, computed by the script); SE from the scatter between runs.  "
+        "misses in that box (its transverse modes, computed by the script); SE from the scatter of the runs' blocks (8 a run).  "
         f"Rule, fixed before the runs: D_16 − D_32 against Hasimoto's kT 2.837/(6π η)(1/16 − 1/32) with ν of PL "
         f"Eqs. 9–12 ({nu:.4f} a0²/t0) within 3 SE.", "",
         "| box | runs | slope [6, 18] t0 | + tail | D_L (a0²/t0) | D_∞ = D_L + Hasimoto | R_h/R |",
