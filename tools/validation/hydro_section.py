@@ -26,15 +26,17 @@ def section(line, commit):
         "and in one twice as wide at the same colloid density (256 colloids, 32³); colloids.h5 read with h5py; the "
         "calibration's estimator (MSD secant slope over [6, 18] t0, 8 blocks of origins) plus the tail the window "
         "misses in that box (its transverse modes, computed by the script); SE from the scatter of the runs' blocks (8 a run).  "
-        f"Rule, fixed before the runs: D_16 − D_32 against Hasimoto's kT 2.837/(6π η)(1/16 − 1/32) with ν of PL "
-        f"Eqs. 9–12 ({nu:.4f} a0²/t0) within 3 SE.", "",
+        f"Rule, fixed before the runs: D_32 − D_16 against Hasimoto's kT 2.837/(6π η)(1/16 − 1/32) with ν of PL "
+        f"Eqs. 9–12 ({nu:.4f} a0²/t0) within 3 SE (its first version compared D_16 − D_32, which Hasimoto makes "
+        "negative, with that positive difference: a sign error of the check, mended after its first run; runs, "
+        "estimator and bound unchanged).", "",
         "| box | runs | slope [6, 18] t0 | + tail | D_L (a0²/t0) | D_∞ = D_L + Hasimoto | R_h/R |",
         "|---|---|---|---|---|---|---|",
         f"| 16³, 32 colloids | {n16} | {m16:.5f} ± {s16:.5f} | {t16:.5f} | {D16:.5f} | "
         f"{D16 + (pred * 2):.5f} ± {s16:.5f} | {rh16:.3f} |",
         f"| 32³, 256 colloids | {n32} | {m32:.5f} ± {s32:.5f} | {t32:.5f} | {D32:.5f} | "
         f"{D32 + pred:.5f} ± {s32:.5f} | {rh32:.3f} |", "",
-        f"**{verdict}**: D_16 − D_32 = {D16 - D32:.5f} ± {(s16 ** 2 + s32 ** 2) ** 0.5:.5f} against Hasimoto's "
+        f"**{verdict}**: D_32 − D_16 = {D32 - D16:.5f} ± {(s16 ** 2 + s32 ** 2) ** 0.5:.5f} against Hasimoto's "
         f"{pred:.5f} ({z:+.1f} SE).  Both boxes together: D_∞ = {Ic:.5f} ± {Is:.5f} a0²/t0 = {Isi:.4g} ± {Issi:.2g} "
         f"m²/s, R_h/R = {rhc:.3f} ± {rhc * Is / Ic:.3f} (the shipped calibration: D_∞ = {dcal:.5f} ± {dcal_se:.5f}, "
         f"R_h/R = {rhc * Ic / dcal:.3f}).  "
