@@ -112,7 +112,9 @@ void pl_params_print(const pl_scene_t *sc, FILE *out)
     pl_srd_theory_t t;
     pl_srd_theory_of(sc, &t);
     const pl_collision_rule_t *rule = pl_collision_rule(sc->srd.rule);
-    const int hecht = rule->srd_rotation == PL_RULE_HECHT_AXES, srd = rule->srd_rotation >= 0;
+    /* rot: a rotation by srd.alpha; srd: PL's or Hecht's equations (not a rotation rule with a theory of its own) */
+    const int hecht = rule->srd_rotation == PL_RULE_HECHT_AXES, rot = rule->srd_rotation >= 0,
+              srd = rot && !rule->angular;
     /* the equation of each line: PL's, Hecht's, or the row's own theory */
     const char *e_fk = hecht ? "Hecht Eq. 28" : srd ? "PL Eq. 11" : rule->theory_ref;
     const char *e_fc = hecht ? "Hecht Eq. 28" : srd ? "PL Eq. 12" : rule->theory_ref;
@@ -124,7 +126,7 @@ void pl_params_print(const pl_scene_t *sc, FILE *out)
     for (int d = 0; d < 2; ++d)
         shear[d] = (sc->box.wall_velocity[1][d] - sc->box.wall_velocity[0][d]) / sc->box.cells[2];
     fprintf(out, "SRD fluid of scene %s (units: a0 = 1, m_f = 1, kT_ref = 1)\n", sc->path);
-    if (srd)
+    if (rot)
         fprintf(out, "  gamma = %g particles/cell, dt = %g, alpha = %g deg (%s), kT = %g\n", sc->fluid.density,
                 sc->srd.dt, hecht ? 90.0 : sc->srd.alpha_deg, rule->name, kT);
     else /* no rotation: srd.alpha unused */

@@ -194,7 +194,7 @@ Test(collision_rules, a_thermostat_rule_sets_the_temperature)
 
 /* The scene picks a rule by name; a physical scene maps with the rule's
  * viscosity (its row's theory, not PL's); a rule that is itself a
- * thermostat refuses another. */
+ * thermostat refuses another; SRD+a refuses to run without one. */
 static int load(const char *rule, const char *extra, pl_scene_t *sc, pl_err_t *err)
 {
     char text[2048];
@@ -216,7 +216,14 @@ Test(collision_rules, scenes_pick_rows_by_name_and_map_with_their_viscosity)
     double nu_srd = 0.0;
     for (int k = 0; pl_collision_rule(k); ++k) {
         const pl_collision_rule_t *rule = pl_collision_rule(k);
-        cr_assert_eq(load(rule->name, "", sc, &err), 0, "%s: %s", rule->name, err.msg);
+        /* SRD+a changes the cells' energy: it needs the rescaling thermostat, and refuses to run without */
+        const int needs = !strcmp(rule->name, "srd_a");
+        if (needs) {
+            cr_assert_eq(load(rule->name, "", sc, &err), PL_ERR_INPUT, "%s without a thermostat", rule->name);
+            cr_assert(strstr(err.msg, "thermostat.type") && strstr(err.msg, "rescale"), "%s", err.msg);
+        }
+        cr_assert_eq(load(rule->name, needs ? "thermostat: { type = \"rescale\"; };\n" : "", sc, &err), 0, "%s: %s",
+                     rule->name, err.msg);
         cr_assert_eq(sc->srd.rule, k);
         pl_srd_theory_t th;
         pl_srd_theory(sc->fluid.density, k, sc->srd.alpha_deg * M_PI / 180.0, sc->srd.dt, 1.0, &th);

@@ -34,6 +34,8 @@ static const char *scenes[] = {
     "fluid: { density = 4.0; body_force = [0.01, 0.0, 0.0]; temperature = 0.9; };\n"
     "srd: { dt = 0.3; rule = \"mpc_at\"; };\noutput: { track_fluid = true; };\n",
     "seed = 48;\nbox: { cells = [5, 6, 4]; };\nfluid: { density = 5.0; };\nsrd: { dt = 0.5; rule = \"mpc_at_a\"; };\n",
+    ("seed = 51;\nbox: { cells = [6, 5, 4]; walls_z = \"slip\"; };\nfluid: { density = 5.0; };\n" /* SRD+a */
+     "srd: { dt = 0.3; rule = \"srd_a\"; alpha = 120.0; };\nthermostat: { type = \"rescale\"; };\n"),
     /* srd.sort_interval: the index sort between full sorts (a restart between two of them too) */
     "seed = 49;\nbox: { cells = [6, 5, 7]; walls_z = \"noslip\"; };\n"
     "fluid: { density = 4.0; body_force = [0.01, 0.0, 0.0]; };\n"

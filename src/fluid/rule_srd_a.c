@@ -1,0 +1,76 @@
+/* SRD+a, the SRD rotation that keeps each cell's angular momentum, as a
+ * collision-rule row (peloid/collision_rule.h): kernel kernels/srd_a.c
+ * (peloid/srd_rules.h, then peloid/cell_angular.h):
+ *   v_i' = u + R (v_i - u) + Pi^-1 [sum_j m r_j x (v_j - v_j^R)] x r_i,
+ * R the random-axis rotation by alpha of PL Eq. 3 (the cell's draw of the
+ * random_axis rule), v^R the rotated velocities, r about the cell's centre
+ * of mass in the shifted grid (Noguchi & Gompper, PRE 78, 016706 (2008);
+ * Goetze, Noguchi & Gompper, PRE 76, 046705 (2007): with it the stress
+ * tensor is symmetric and a rotating colloid feels the right torque).
+ *
+ * Transport coefficients, 3D, a0 = m = 1, M = gamma.  The published
+ * expressions could not be read where this was written; derived here:
+ *  - collisional: the collision's momentum change in a linear shear flow is
+ *    linear in v - v', and its mean over the random axis, (1 - <R>) (v - u)
+ *    = 2/3 (1 - cos alpha) (v - u), is that of MPC-AT (whose mean change is
+ *    v - u) times c = 2/3 (1 - cos alpha); the +a rotation is linear in the
+ *    same change, so SRD+a's collisional viscosity is c times MPC-AT+a's
+ *    (src/fluid/rule_mpc_at_a.c, X(M) = M - 1.92 + (2 + M) e^-M):
+ *      nu_col = (1 - cos alpha) a^2 X(M) / (36 dt M)
+ *    (the same c turns MPC-AT's (M - 1 + e^-M) / (12 M) into PL Eq. 10);
+ *    tested against a Kolmogorov flow in the collisional regime
+ *    (tests/physics/test_mpc_viscosity.c, validate-physics);
+ *  - kinetic and the fluid's self-diffusion: SRD's (PL Eqs. 9, 6), not
+ *    derived for +a (whose kept rigid rotation retains a little more of the
+ *    stress and of the velocity); at lambda = 0.05, gamma = 10 the kinetic
+ *    part is 3 % of nu.
+ * Not a thermostat, and not one that keeps the energy: the rigid rotation
+ * changes the cell's kinetic energy (the rule's validate asks for the
+ * rescaling thermostat). */
+#include <math.h>
+#include <stddef.h>
+
+#include "peloid/collision_rule.h"
+#include "peloid/scene.h"
+#include "peloid/srd_a.h"
+
+static void theory(double g, double alpha, double nu0, pl_srd_theory_t *o)
+{
+    pl_srd_theory_random_axis(g, alpha, nu0, o); /* kinetic part and D_f: SRD's (see above) */
+    o->nu_col = nu0 / o->lambda * (1.0 - cos(alpha)) * (g - 1.92 + (2.0 + g) * exp(-g)) / (36.0 * g);
+    o->f_col = 18.0 * o->lambda * o->nu_col / nu0; /* as PL Eq. 10 would need it */
+}
+
+static int validate(const pl_scene_t *sc, pl_err_t *err)
+{
+    if (sc->box.walls_z == PL_WALLS_NOSLIP || sc->box.walls_xy == PL_WALLS_NOSLIP)
+        return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.rule), "srd.rule",
+                             "\"srd_a\" with no-slip walls (box.walls_z or walls_xy = \"noslip\"): the virtual "
+                             "wall particles are the SRD kernel's only; allowed: periodic or slip walls");
+    if (sc->thermostat.type == PL_THERMO_NONE)
+        return pl_scene_fail(sc, err, offsetof(pl_scene_t, thermostat.type), "thermostat.type",
+                             "none with srd.rule = \"srd_a\": the rigid rotation that gives each cell its angular "
+                             "momentum back changes the cell's kinetic energy (without a thermostat the temperature "
+                             "drifts); allowed: \"rescale\"");
+    if (sc->coupling.method == PL_COUPLE_HECHT2)
+        return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.rule), "srd.rule",
+                             "\"srd_a\" with coupling II, which rotates the cells that hold colloids again "
+                             "without the angular-momentum rotation; allowed with coupling II: random_axis, "
+                             "hecht_axes");
+    return 0;
+}
+
+const pl_collision_rule_t pl_rule_srd_a = {
+    .name = "srd_a",
+    .doc = "SRD+a: random_axis followed by the rigid rotation that keeps each cell's angular momentum about its "
+           "centre of mass (Noguchi & Gompper 2008); needs a thermostat; periodic or slip walls; not with "
+           "coupling II",
+    .keys = "srd.alpha",
+    .theory_ref = "SRD+a: derived in src/fluid/rule_srd_a.c",
+    .theory = theory,
+    .validate = validate,
+    .collide = pl_srd_a_collide,
+    .srd_rotation = PL_RULE_RANDOM_AXIS,
+    .positions = 1,
+    .angular = 1,
+};
