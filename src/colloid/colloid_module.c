@@ -138,9 +138,9 @@ static int colloid_summary(const pl_sim_t *sim, json_t *doc, pl_err_t *err)
     pl_json_str(&b, o, "sigma_rule", d->rule == PL_SIGMA_PL ? "pl" : "fixed");
     pl_json_real(&b, o, "d_match", d->d_match);
     pl_json_real(&b, o, "phi_cc_at_d_match", d->phi_match);
-    /* (no wca term: sigma_cc 0, the depletion at the contact 2R) */
+    /* the depletion potential (kT) at sigma_cc, or at the contact 2R without a wca term (sigma_cc 0); where (a0) */
     pl_json_real(&b, o, "depletion_at_sigma_cc", d->phi_sigma);
-    pl_json_real(&b, o, "depletion_at_distance", d->sigma_cc > 0 ? d->sigma_cc : 2.0 * sim->scene.colloids.radius);
+    pl_json_real(&b, o, "depletion_evaluated_at", d->sigma_cc > 0 ? d->sigma_cc : 2.0 * sim->scene.colloids.radius);
     pl_json_set(&b, o, "depletion_comp", json_boolean(d->table_n));
     pl_json_set(&b, doc, "colloid_pairs", o);
     return b.failed ? err->code : 0;

@@ -13,7 +13,7 @@
     X(pl_rule_random_axis, "random_axis")                                                                          \
     X(pl_rule_hecht_axes, "hecht_axes")                                                                            \
     X(pl_rule_mpc_at, "mpc_at")                                                                                    \
-    X(pl_rule_mpc_at_a, "mpc_at_a")                                                                        \
+    X(pl_rule_mpc_at_a, "mpc_at_a")                                                                                \
     X(pl_rule_srd_a, "srd_a")
 
 #define DECL(row, name) extern const pl_collision_rule_t row; /* in the rule's own file */

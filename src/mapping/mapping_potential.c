@@ -25,9 +25,9 @@
  * derived instead (src/mapping/mapping_colloids.c, when colloids.pairs is
  * not given): "dlvo, hertz, depletion_comp", the contact at 2R by Hertz
  * (Hecht Eq. 3, from the material constants) and PL's other remedy, the
- * compensating potential -Phi_depl of PL Eqs. 22-23 (exact for the ideal SRD
- * fluid in equilibrium), so the colloids are spheres of R: phi_c = phi and
- * the DLVO gaps those of the stated surfaces. */
+ * compensating potential -Phi_depl of PL Eqs. 22-23 (approximate, as PL say:
+ * tests/validation/test_coupling_depletion.c), so the colloids are spheres
+ * of R: phi_c = phi and the DLVO gaps those of the stated surfaces. */
 #include <jansson.h>
 #include <math.h>
 #include <stdio.h>

@@ -186,7 +186,7 @@ static int summary(pl_obs_sum_t *s, const pl_sim_t *sim, void *state)
     const sed_obs_t *o = state;
     if (o->s_n < 2) return 0;
     double *v = down_positive(o->s_vel + 1, o->s_n - 1);
-    if (!v) return -1;
+    if (!v) return pl_err_set(s->b->err, PL_ERR_NOMEM, "out of memory for the sedimentation summary");
     if (o->s_n >= 3) {
         /* the average over the window of the stored velocities (s_vb holds
          * the whole run's, for se_vs_time and stop.observable) */

@@ -6,8 +6,9 @@
  *
  * The samples are the settling velocities of the colloids' mean height
  * between consecutive observer samples, v_k = -(h_k - h_{k-1}) / dt_k (less
- * the fluid's mean velocity; positive down, gravity along -z); over samples a few colloid relaxation times apart
- * they are independent (the mean height is a random walk with drift).  The
+ * the fluid's mean velocity; positive down, gravity along -z); over samples
+ * a few colloid relaxation times apart they are independent (the mean
+ * height is a random walk with drift).  The
  * fall is homogeneous while the drift does not change: the window is the
  * longest prefix of the series whose first and second halves agree within 2
  * combined standard errors (a z test; a settling layer slows the second
