@@ -1,9 +1,9 @@
 /* The SRD fluid as a component (issue 46): what the fluid module
  * (src/fluid/) creates and its stages take as their context.  The particle
  * arrays (pl_sim_t.fluid) and the grid (pl_sim_t.grid) are the view that the
- * other components read and move; of this state the couplings read the
- * sort's order (cell_start, sorted) and borrow hist, obs_scratch and
- * wall_acc as scratch of the same shape; the whole-simulation checkpoint
+ * other components read and move; of this state the couplings use the
+ * sort's order and borrow scratch of the fluid's shape through the ports
+ * below; the whole-simulation checkpoint
  * (src/core/checkpoint.c) writes the field accumulators and kT_cell, the
  * fields writer reads the accumulators.  The rest only the fluid touches. */
 #ifndef PELOID_SRD_H
@@ -42,5 +42,23 @@ typedef struct pl_srd {
     int64_t *field_acc;   /* 4 x L0 L1 L2, fixed point */
     long long field_samples;
 } pl_srd_t;
+
+/* The fluid's ports (issue 46): what another component may use of this
+ * state, by these functions and not by its fields (src/fluid/fluid_state.c).
+ *
+ * The collision cells of the present order, cell c being the particles
+ * cell_start[c] .. cell_start[c + 1] - 1: valid from this step's sort
+ * (PL_SLOT_SORT) until the particles move again; NULL when no particle
+ * order is valid (the particles moved since the last sort, or a restart). */
+const uint32_t *pl_srd_cells(const pl_srd_t *srd);
+/* Scratch of the fluid's shape another component may borrow between the
+ * fluid's own stages (their contents are not kept): nthreads x ncells
+ * counts, and pl_srd_observe_scratch(n) doubles. */
+uint32_t *pl_srd_scratch_counts(pl_srd_t *srd);
+double *pl_srd_scratch_observe(pl_srd_t *srd);
+/* Whether the walls' impulse is measured (no-slip walls): a component that
+ * moves fluid particles off a wall adds what they gave it through
+ * pl_sim_wall_add (the wall-impulse sink, peloid/sim.h). */
+int pl_srd_walls_measured(const pl_srd_t *srd);
 
 #endif

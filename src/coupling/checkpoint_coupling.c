@@ -22,7 +22,7 @@
 int pl_ckpt_coupling_write(hid_t f, const pl_sim_t *sim)
 {
     int bad = 0;
-    if (sim->srd->wall_acc) {
+    if (pl_srd_walls_measured(sim->srd)) {
         bad |= pl_ckpt_write_1d(f, "wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[0][0], 6);
         bad |= pl_ckpt_write_1d(f, "side_wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[2][0], 3);
     }

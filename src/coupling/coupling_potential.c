@@ -289,7 +289,8 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
     const pl_coupling_reach_t reach = particle_reach(sim, rc);
     ps->budget = reach.budget;
     pl_coupling_colloids_t v = sel_view(ps, c);
-    if (sim->srd->sorted) { /* the same list, from the cells near colloids */
+    const uint32_t *cells = pl_srd_cells(sim->srd);
+    if (cells) { /* the same list, from the cells near colloids */
         for (;;) {
             size_t need = pl_coupling_cell_candidates(&sim->grid, &v, ps->axis_buf, ps->gap_buf, ps->cstart, ps->clist,
                                                       ps->clist_cap, cp->nthreads);
@@ -300,7 +301,7 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
         memset(ps->counts, 0, (size_t)cp->nthreads * 8 * sizeof *ps->counts);
         ps->sel_ctx = (pl_coupling_select_ctx_t){.f = f, .g = &sim->grid, .c = v, .reach = reach,
                                                  .cstart = ps->cstart, .clist = ps->clist,
-                                                 .cell_start = sim->srd->cell_start, .nthreads = cp->nthreads,
+                                                 .cell_start = cells, .nthreads = cp->nthreads,
                                                  .found = ps->found, .found_cell = ps->found_cell,
                                                  .counts = ps->counts, .stage = ps->stage};
         sim->stream_pre_hook = pl_coupling_select_block;
@@ -445,8 +446,8 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_stream_params_t sp;
     pl_sim_stream_params(sim, &sp);
     const pl_coupling_near_t nb = near_view(ps, &sim->fluid);
-    if (f->tracked || sim->srd->wall_acc)
-        pl_coupling_potential_unstream(&nb, f, &sim->grid, sim->srd->wall_acc ? &sp : NULL, cp->nthreads, sacc);
+    const int walls = pl_srd_walls_measured(sim->srd);
+    if (f->tracked || walls) pl_coupling_potential_unstream(&nb, f, &sim->grid, walls ? &sp : NULL, cp->nthreads, sacc);
     const double dtm = c->dt, h = 0.5 * dtm;
     /* PL Eqs. 18-19, velocity Verlet; the particles' kick - drift - forces -
      * kick of each MD step regrouped as forces - kick (- kick - drift of the
@@ -487,11 +488,11 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
     if (cp->pinned) cp->pinned_time += sc->srd.dt;
     if (ps->cf_mean)
         for (size_t k = 0; k < 3 * c->n; ++k) ps->cf_mean[k] /= (double)c->substeps * dtm;
-    if (sim->srd->wall_acc) {
+    if (walls) {
         for (int k = 0; k < PL_WALL_ACC_N; ++k) wacc[k] -= sacc[k];
         pl_sim_wall_add(sim, wacc);
     }
     /* the selected particles back, wrapped, into their new cells */
-    pl_coupling_potential_scatter(&nb, f, &sim->grid, sim->srd->hist, cp->nthreads);
+    pl_coupling_potential_scatter(&nb, f, &sim->grid, pl_srd_scratch_counts(sim->srd), cp->nthreads);
     return 0;
 }

@@ -215,14 +215,15 @@ int pl_coupling_stage_reflect(pl_sim_t *sim, void *ctx, pl_err_t *err)
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling I events");
     double *const vel[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
     int64_t wall[PL_WALL_ACC_N] = {0};
-    s->p.wall_acc = sim->srd->wall_acc ? wall : NULL;
-    pl_coupling1_reflect(&sim->fluid, &sim->grid, &s->p, &v, &vb, vel, s->cstart, s->clist, sim->srd->hist,
+    s->p.wall_acc = pl_srd_walls_measured(sim->srd) ? wall : NULL;
+    pl_coupling1_reflect(&sim->fluid, &sim->grid, &s->p, &v, &vb, vel, s->cstart, s->clist,
+                         pl_srd_scratch_counts(sim->srd),
                          cp->nthreads, s->found, s->counts, sc);
     s->p.wall_acc = NULL;
     if (s->p.move) /* the colloids where the events left them */
         pl_colloid_displace(c->n, c->box, c->periodic, c->x, c->y, c->z, c->ix, c->iy, c->iz, sc->disp,
                             sc->disp + c->n, sc->disp + 2 * c->n);
-    if (sim->srd->wall_acc) pl_sim_wall_add(sim, wall);
+    if (pl_srd_walls_measured(sim->srd)) pl_sim_wall_add(sim, wall);
     s->events += s->counts[0];
     s->truncations += s->counts[1];
     if (cp->pinned) pl_coupling_absorb_pinned(cp, c, sim->scene.srd.dt);
@@ -302,6 +303,7 @@ int pl_coupling_stage_save(pl_sim_t *sim, void *ctx, pl_err_t *err)
     const pl_coupling_t *cp = ctx;
     pl_coupling2_state_t *s = cp->c2;
     const pl_colloid_t *c = sim->colloids;
+    const uint32_t *cells = pl_srd_cells(sim->srd); /* after the sort (PL_SLOT_PRE_COLLIDE) */
     for (size_t k = 0; k < c->n; ++k)
         s->keys[k] = (uint64_t)pl_coupling_cell_of(&sim->grid, c->x[k], c->y[k], c->z[k]) << 32 | k;
     qsort(s->keys, c->n, sizeof *s->keys, cmp_u64);
@@ -312,7 +314,7 @@ int pl_coupling_stage_save(pl_sim_t *sim, void *ctx, pl_err_t *err)
             s->occ_cell[nocc] = cell;
             s->occ_col[nocc] = (int32_t)q;
             s->occ_save[nocc] = nsave;
-            nsave += sim->srd->cell_start[cell + 1] - sim->srd->cell_start[cell];
+            nsave += cells[cell + 1] - cells[cell];
             nocc++;
         }
         s->col_idx[q] = (int32_t)(s->keys[q] & 0xffffffffu);
@@ -327,7 +329,7 @@ int pl_coupling_stage_save(pl_sim_t *sim, void *ctx, pl_err_t *err)
             return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the coupling II buffer");
     }
     pl_coupling2_cells_t oc = {s->nocc, s->occ_cell, s->occ_save, s->occ_col, s->col_idx};
-    pl_coupling2_save(&sim->fluid, sim->srd->cell_start, &oc, s->vsave, cp->nthreads);
+    pl_coupling2_save(&sim->fluid, cells, &oc, s->vsave, cp->nthreads);
     return 0;
 }
 
@@ -339,11 +341,12 @@ static int collide(pl_sim_t *sim, pl_coupling_t *cp, int heyes)
     pl_colloid_t *c = sim->colloids;
     s->p.step = (uint64_t)sim->step;
     pl_coupling2_cells_t oc = {s->nocc, s->occ_cell, s->occ_save, s->occ_col, s->col_idx};
+    const uint32_t *cells = pl_srd_cells(sim->srd); /* after the sort and the collision */
     if (heyes)
-        pl_coupling2_collide_heyes(&s->p, &oc, &sim->grid, sim->srd->cell_start, s->vsave, &sim->fluid, c->mass,
+        pl_coupling2_collide_heyes(&s->p, &oc, &sim->grid, cells, s->vsave, &sim->fluid, c->mass,
                                    c->vx, c->vy, c->vz, cp->nthreads);
     else
-        pl_coupling2_collide(&s->p, &oc, &sim->grid, sim->srd->cell_start, s->vsave, &sim->fluid, c->mass, c->vx,
+        pl_coupling2_collide(&s->p, &oc, &sim->grid, cells, s->vsave, &sim->fluid, c->mass, c->vx,
                              c->vy, c->vz, cp->nthreads);
     /* the walls' push in the occupied cells, replacing the fluid kernel's
      * count there; summed in cell order (deterministic) */
@@ -368,7 +371,7 @@ int pl_coupling_stage_collide_heyes(pl_sim_t *sim, void *ctx, pl_err_t *err)
 void pl_coupling_total_momentum(const pl_sim_t *sim, double p[3], double *mass)
 {
     pl_fluid_obs_t o;
-    pl_srd_observe(&sim->fluid, sim->srd->obs_scratch, &o, sim->nthreads);
+    pl_srd_observe(&sim->fluid, pl_srd_scratch_observe(sim->srd), &o, sim->nthreads);
     double M = (double)sim->fluid.n;
     for (int d = 0; d < 3; ++d) p[d] = o.momentum[d];
     const pl_colloid_t *c = sim->colloids;
@@ -409,7 +412,7 @@ int pl_coupling_stage_flow(pl_sim_t *sim, void *ctx, pl_err_t *err)
     const pl_coupling_t *cp = ctx;
     pl_fluid_obs_t o;
     pl_fluid_t *f = &sim->fluid;
-    pl_srd_observe(f, sim->srd->obs_scratch, &o, cp->nthreads);
+    pl_srd_observe(f, pl_srd_scratch_observe(sim->srd), &o, cp->nthreads);
     double u[3];
     for (int d = 0; d < 3; ++d)
         u[d] = sim->scene.coupling.flow_velocity[d] - o.momentum[d] / (double)f->n;

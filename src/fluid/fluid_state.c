@@ -89,3 +89,13 @@ void pl_sim_observe(const pl_sim_t *sim, pl_fluid_obs_t *obs, double *kT)
     for (int d = 0; d < 3; ++d) p2 += obs->momentum[d] * obs->momentum[d];
     *kT = (2.0 * obs->kinetic - p2 / (double)n) / (3.0 * (double)(n - 1));
 }
+
+/* ---- the fluid's ports (peloid/srd.h) ---------------------------------------- */
+
+const uint32_t *pl_srd_cells(const pl_srd_t *srd) { return srd->sorted ? srd->cell_start : NULL; }
+
+uint32_t *pl_srd_scratch_counts(pl_srd_t *srd) { return srd->hist; }
+
+double *pl_srd_scratch_observe(pl_srd_t *srd) { return srd->obs_scratch; }
+
+int pl_srd_walls_measured(const pl_srd_t *srd) { return srd->wall_acc != NULL; }
