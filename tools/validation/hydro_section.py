@@ -16,6 +16,7 @@ def section(line, commit):
     (m16, s16, t16, D16, m32, s32, t32, D32, pred, z, rh16, rh32, rhc, Ic, Is, cpu) = map(float, f[:16])
     n16, n32, wall = map(int, f[16:19])
     Isi, Issi, nu, dcal, dcal_se = float(f[19]), float(f[20]), float(f[21]), float(f[22]), float(f[23])
+    cells = [r.split(":") for r in f[24].split(",")] if len(f) > 24 and f[24] else []
     verdict = "agrees" if abs(z) < 3 else "disagrees"
     return [
         BEGIN, "",
@@ -45,12 +46,29 @@ def section(line, commit):
            if abs(z) < 3 else
            "The box dependence does not follow Hasimoto's correction with the fluid's viscosity: D_∞ and R_h "
            "depend on the box beyond the SE.  ")
-        + f"R_h/R = {rhc:.2f}: the coupling II colloid is a point to the fluid (Hecht Sec. VII.C), so a finer or "
-        "coarser cell does not make R_h = R without changing the colloid's mass and with it its friction; box "
-        "corrections, hindered settling and lubrication have the strength of a sphere of R_h.  Not run here: "
-        "coupling I and the potential coupling, and the collective settling (K, Richardson–Zaki: see "
-        "the Fig. 4 verdict above).", "",
-        END]
+        + f"R_h/R = {rhc:.2f}: box corrections, hindered settling and lubrication have the strength of a sphere "
+        "of R_h.  Not run here: coupling I and the potential coupling, and the collective settling (K, "
+        "Richardson–Zaki: see the Fig. 4 verdict above).", ""] + cell_lines(cells, rhc, rhc * Is / Ic) + [END]
+
+
+def cell_lines(cells, rhc, rse):
+    """R_h/R against the cell size (the script's second part), if measured."""
+    if not cells:
+        return []
+    top = max(float(r[1]) for r in cells)
+    d = [r for r in cells if abs(float(r[0]) - 1.61) < 0.01]  # the quickstart's own a0/R, 1.612
+    same = (f"  At the quickstart's own a0/R this fresh calibration (another seed stream: the cell size is given "
+            f"to three digits) reads {float(d[0][1]):.3f} ± {float(d[0][2]):.3f} against {rhc:.3f} ± {rse:.3f} "
+            f"from the long runs above ({(float(d[0][1]) - rhc) / float(d[0][2]):+.1f} SE of the calibration)."
+            if d and float(d[0][2]) > 0 else "")
+    return ["**R_h/R against the cell size** (reported, not a test): the quickstart with "
+            "`coarse_graining.cell_size` = a0/R set, each calibrated afresh (`peloid params --calibrate auto`, an "
+            "empty cache); the colloid's mass falls as (R/a0)³.", "",
+            "| a0/R | colloid mass (m_f) | R_h/R |", "|---|---|---|"] + [
+        f"| {r[0]} | {float(r[3]):.3g} | {float(r[1]):.3f} ± {float(r[2]):.3f} |" for r in cells] + [
+        "", f"The largest R_h/R is {top:.2f}: the coupling II colloid is a point to the fluid (Hecht Sec. VII.C), "
+        "and a coarser cell makes it lighter, so no cell size makes R_h = R; the factor is what `peloid params` "
+        "and `peloid plan` report." + same, ""]
 
 
 def main():
