@@ -67,8 +67,8 @@ def cell_lines(cells, rhc, rse):
             "| a0/R | colloid mass (m_f) | R_h/R |", "|---|---|---|"] + [
         f"| {r[0]} | {float(r[3]):.3g} | {float(r[1]):.3f} ± {float(r[2]):.3f} |" for r in cells] + [
         "", f"The largest R_h/R is {top:.2f}: the coupling II colloid is a point to the fluid (Hecht Sec. VII.C), "
-        "and a coarser cell makes it lighter, so no cell size makes R_h = R; the factor is what `peloid params` "
-        "and `peloid plan` report." + same, ""]
+        "a coarser cell makes it lighter, and R_h/R levels off as the cell grows: none of these cell sizes comes near "
+        "R_h = R; the factor is what `peloid params` and `peloid plan` report." + same, ""]
 
 
 def main():
