@@ -29,8 +29,8 @@ typedef struct pl_collision_rule {
      * *out from gamma, the angle alpha (radians; rules without one ignore
      * it), out->lambda (set) and nu0 = sqrt(kT / m) a0 */
     void (*theory)(double gamma, double alpha, double nu0, pl_srd_theory_t *out);
-    /* NULL, or the rule's own check of the scene (thermostats, walls,
-     * couplings it cannot run with); an error names the key */
+    /* NULL, or the rule's own check of the scene (what it needs besides the
+     * checks every rule gets from its flags below); an error names the key */
     int (*validate)(const struct pl_scene *scene, pl_err_t *err);
     pl_collide_fn collide;       /* the collision */
     pl_collide_fn collide_heyes; /* with the Heyes thermostat; NULL: the rule refuses it */
@@ -39,6 +39,8 @@ typedef struct pl_collision_rule {
     int thermostat;    /* the rule sets the temperature itself (no thermostat.type besides none) */
     int positions;     /* the kernel reads the particle positions */
     int angular;       /* the collision keeps each cell's angular momentum about its centre of mass */
+    int wall_ghosts;   /* the kernel fills cells cut by a no-slip wall with virtual particles (Lamura et
+                        * al. 2001); 0: the rule refuses no-slip walls (src/fluid/fluid_stages.c) */
 } pl_collision_rule_t;
 
 /* Row `rule` (the scene's srd.rule, an index into the rows); NULL outside. */

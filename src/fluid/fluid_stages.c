@@ -300,8 +300,10 @@ static int fluid_create(pl_sim_t *sim, pl_err_t *err) { return pl_fluid_state_cr
 
 /* The collision rule's and the thermostat's own checks
  * (peloid/collision_rule.h, peloid/thermostat.h), and those every rule
- * gets: a rule that is a thermostat refuses a second one, coupling II needs
- * a rotation rule. */
+ * gets from its flags: a rule that is a thermostat refuses a second one,
+ * coupling II needs a plain rotation rule (it rotates its colloids' cells
+ * again by the SRD rotation alone), no-slip walls need a kernel with their
+ * virtual particles. */
 static int fluid_validate(const pl_scene_t *sc, pl_err_t *err)
 {
     const pl_collision_rule_t *rule = pl_collision_rule(sc->srd.rule);
@@ -312,10 +314,10 @@ static int fluid_validate(const pl_scene_t *sc, pl_err_t *err)
                              "velocities at fluid.temperature); allowed: \"none\"", rule->name);
     int rc = thermostat->validate ? thermostat->validate(sc, err) : 0;
     if (rc) return rc;
-    if (sc->coupling.method == PL_COUPLE_HECHT2 && rule->srd_rotation < 0)
+    if (sc->coupling.method == PL_COUPLE_HECHT2 && (rule->srd_rotation < 0 || rule->angular))
         return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.rule), "srd.rule",
                              "\"%s\" with coupling II, which rotates the cells that hold colloids by the SRD "
-                             "rotation; allowed with coupling II: a rotation rule (random_axis, hecht_axes)",
+                             "rotation alone; allowed with coupling II: a rotation rule (random_axis, hecht_axes)",
                              rule->name);
     if (sc->srd.sort_interval > 1) { /* what reads the cells as contiguous arrays */
         const int coupled = sc->coupling.method != PL_COUPLE_NONE && sc->colloids.count > 0;
@@ -328,6 +330,10 @@ static int fluid_validate(const pl_scene_t *sc, pl_err_t *err)
             return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.sort_interval), "srd.sort_interval",
                                  "%lld: %s; allowed here: 1", sc->srd.sort_interval, why);
     }
+    if (!rule->wall_ghosts && (sc->box.walls_z == PL_WALLS_NOSLIP || sc->box.walls_xy == PL_WALLS_NOSLIP))
+        return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.rule), "srd.rule",
+                             "\"%s\" with no-slip walls (box.walls_z or walls_xy = \"noslip\"): the virtual wall "
+                             "particles are the SRD kernel's only; allowed: periodic or slip walls", rule->name);
     return rule->validate ? rule->validate(sc, err) : 0;
 }
 

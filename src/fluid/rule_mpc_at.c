@@ -23,11 +23,9 @@
  * velocity (its share of u), and sum (Delta r_y)^2 of a cell's particles
  * about their centre of mass averages (M - 1 + e^-M) a^2 / 12. */
 #include <math.h>
-#include <stddef.h>
 
 #include "peloid/collision_rule.h"
 #include "peloid/mpc_at.h"
-#include "peloid/scene.h"
 
 /* nu0 = sqrt(kT/m) a0; nu0 * lambda = kT dt / m, nu0 / lambda = a0^2 / dt */
 static void theory(double g, double alpha, double nu0, pl_srd_theory_t *o)
@@ -41,17 +39,6 @@ static void theory(double g, double alpha, double nu0, pl_srd_theory_t *o)
     o->D_f = nu0 * o->lambda * (g / fluct - 0.5);
 }
 
-/* No-slip walls fill their cells with virtual particles (Lamura et al.
- * 2001), which only the SRD kernel has. */
-static int validate(const pl_scene_t *sc, pl_err_t *err)
-{
-    if (sc->box.walls_z == PL_WALLS_NOSLIP || sc->box.walls_xy == PL_WALLS_NOSLIP)
-        return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.rule), "srd.rule",
-                             "\"mpc_at\" with no-slip walls (box.walls_z or walls_xy = \"noslip\"): the virtual "
-                             "wall particles are the SRD kernel's only; allowed: periodic or slip walls");
-    return 0;
-}
-
 const pl_collision_rule_t pl_rule_mpc_at = {
     .name = "mpc_at",
     .doc = "MPC with the Andersen thermostat: v_i' = u + xi_i - <xi>, xi_i Maxwell-Boltzmann at fluid.temperature "
@@ -60,7 +47,6 @@ const pl_collision_rule_t pl_rule_mpc_at = {
     .keys = "fluid.temperature",
     .theory_ref = "MPC-AT: Noguchi & Gompper 2008",
     .theory = theory,
-    .validate = validate,
     .collide = pl_mpc_at_collide,
     .srd_rotation = -1,
     .thermostat = 1,

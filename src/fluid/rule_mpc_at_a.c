@@ -41,11 +41,9 @@
  *    rotation (3 of the 3M degrees of freedom: 1/M): D = (kT dt / m)
  *    [M / (M - 2) - 1/2] (an estimate, not tested). */
 #include <math.h>
-#include <stddef.h>
 
 #include "peloid/collision_rule.h"
 #include "peloid/mpc_at_a.h"
-#include "peloid/scene.h"
 
 static void theory(double g, double alpha, double nu0, pl_srd_theory_t *o)
 {
@@ -57,15 +55,6 @@ static void theory(double g, double alpha, double nu0, pl_srd_theory_t *o)
     o->D_f = nu0 * o->lambda * (g / (g - 2.0) - 0.5);
 }
 
-static int validate(const pl_scene_t *sc, pl_err_t *err)
-{
-    if (sc->box.walls_z == PL_WALLS_NOSLIP || sc->box.walls_xy == PL_WALLS_NOSLIP)
-        return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.rule), "srd.rule",
-                             "\"mpc_at_a\" with no-slip walls (box.walls_z or walls_xy = \"noslip\"): the virtual "
-                             "wall particles are the SRD kernel's only; allowed: periodic or slip walls");
-    return 0;
-}
-
 const pl_collision_rule_t pl_rule_mpc_at_a = {
     .name = "mpc_at_a",
     .doc = "MPC-AT+a: mpc_at followed by the rigid rotation that keeps each cell's angular momentum about its "
@@ -73,7 +62,6 @@ const pl_collision_rule_t pl_rule_mpc_at_a = {
     .keys = "fluid.temperature",
     .theory_ref = "MPC-AT+a: derived in src/fluid/rule_mpc_at_a.c",
     .theory = theory,
-    .validate = validate,
     .collide = pl_mpc_at_a_collide,
     .srd_rotation = -1,
     .thermostat = 1,

@@ -16,6 +16,7 @@ const pl_collision_rule_t pl_rule_random_axis = {
     .collide = pl_srd_collide,
     .collide_heyes = pl_srd_collide_heyes,
     .srd_rotation = PL_RULE_RANDOM_AXIS,
+    .wall_ghosts = 1,
 };
 
 const pl_collision_rule_t pl_rule_hecht_axes = {
@@ -27,4 +28,5 @@ const pl_collision_rule_t pl_rule_hecht_axes = {
     .collide = pl_srd_collide,
     .collide_heyes = pl_srd_collide_heyes,
     .srd_rotation = PL_RULE_HECHT_AXES,
+    .wall_ghosts = 1,
 };

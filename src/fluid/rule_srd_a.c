@@ -43,20 +43,11 @@ static void theory(double g, double alpha, double nu0, pl_srd_theory_t *o)
 
 static int validate(const pl_scene_t *sc, pl_err_t *err)
 {
-    if (sc->box.walls_z == PL_WALLS_NOSLIP || sc->box.walls_xy == PL_WALLS_NOSLIP)
-        return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.rule), "srd.rule",
-                             "\"srd_a\" with no-slip walls (box.walls_z or walls_xy = \"noslip\"): the virtual "
-                             "wall particles are the SRD kernel's only; allowed: periodic or slip walls");
     if (sc->thermostat.type == PL_THERMO_NONE)
         return pl_scene_fail(sc, err, offsetof(pl_scene_t, thermostat.type), "thermostat.type",
                              "none with srd.rule = \"srd_a\": the rigid rotation that gives each cell its angular "
                              "momentum back changes the cell's kinetic energy (without a thermostat the temperature "
                              "drifts); allowed: \"rescale\"");
-    if (sc->coupling.method == PL_COUPLE_HECHT2)
-        return pl_scene_fail(sc, err, offsetof(pl_scene_t, srd.rule), "srd.rule",
-                             "\"srd_a\" with coupling II, which rotates the cells that hold colloids again "
-                             "without the angular-momentum rotation; allowed with coupling II: random_axis, "
-                             "hecht_axes");
     return 0;
 }
 
