@@ -58,8 +58,12 @@ static int check_inputs(const pl_mapping_system_t *r, const pl_mapping_cg_t *cg,
 }
 
 /* t0 from the chosen matching (or the SRD step given in seconds). */
-static double time_unit(const pl_mapping_system_t *r, const pl_mapping_cg_t *cg, const pl_mapping_t *m)
+/* t0; *D_matched: the real D it matches the model colloid's D to (0 when
+ * t0 comes from elsewhere) */
+static double time_unit(const pl_mapping_system_t *r, const pl_mapping_cg_t *cg, const pl_mapping_t *m,
+                        double *D_matched)
 {
+    *D_matched = 0.0;
     if (cg->srd_dt > 0) return cg->srd_dt / cg->lambda; /* PL Eq. 4 */
     if (cg->match == PL_MATCH_KINEMATIC) {
         /* PL example 2: tau_nu = R^2/nu equal in model and reality. */
@@ -67,8 +71,8 @@ static double time_unit(const pl_mapping_system_t *r, const pl_mapping_cg_t *cg,
     }
     /* Hecht Eq. 30 / PL example 1: the colloid diffusion coefficient (hence
      * tau_D and, with the same R, Pe) equals the real one (Hecht Eq. 18). */
-    double D_real = r->kT / (6.0 * PL_PI * r->nu * r->rho_f * r->radius);
-    return m->d_col_sim * m->a0 * m->a0 / D_real;
+    *D_matched = r->kT / (6.0 * PL_PI * r->nu * r->rho_f * r->radius);
+    return m->d_col_sim * m->a0 * m->a0 / *D_matched;
 }
 
 static void md_step(pl_mapping_t *m)
@@ -114,7 +118,8 @@ int pl_mapping_derive(const pl_mapping_system_t *real, const pl_mapping_solvent_
     m->sigma = R / m->a0;
     pl_mapping_pl_colloid(m->sigma, real->rho_p / real->rho_f, 0.0, cg, m);
 
-    double t0 = time_unit(real, cg, m);
+    double D_matched;
+    double t0 = time_unit(real, cg, m, &D_matched);
     m->t0 = t0;
     m->dt = cg->lambda * t0;                  /* PL Eq. 4 */
     m->nu_coeff = m->nu_sim * cg->lambda;     /* nu dt / a0^2, Hecht Eq. 29 */
@@ -134,9 +139,10 @@ int pl_mapping_derive(const pl_mapping_system_t *real, const pl_mapping_solvent_
      * g_model = v_S xi / M_eff.  Hecht Eq. 31: no gravity on the fluid, hence
      * no buoyancy, M_eff = M; with gravity on the fluid M_eff = M - M_f. */
     mo->buoyancy = cg->fluid_gravity ? 1 : 0;
+    const double m_eff = cg->fluid_gravity ? 1.0 - real->rho_f / real->rho_p : 1.0; /* M_eff / M */
     if (real->g > 0 && isfinite(m->hecht_real.v_s)) {
         const double xi = m->kT_model / (m->d_col_sim * m->a0 * m->a0 / t0); /* kg/s */
-        const double mass = m->mass_sim * m->m_f * (cg->fluid_gravity ? 1.0 - real->rho_f / real->rho_p : 1.0);
+        const double mass = m->mass_sim * m->m_f * m_eff;
         mo->g = m->hecht_real.v_s * xi / mass;
     } else {
         mo->g = 0.0;
@@ -162,10 +168,8 @@ int pl_mapping_derive(const pl_mapping_system_t *real, const pl_mapping_solvent_
      * so it keeps every bit when only the calibration changes (a restart
      * with another srd.grid_shift does not see colloids.gravity change by
      * the rounding of a t0 round trip). */
-    if (mo->g > 0 && !(cg->srd_dt > 0) && cg->match != PL_MATCH_KINEMATIC) {
-        const double D_real = real->kT / (6.0 * PL_PI * real->nu * real->rho_f * R); /* as time_unit() */
-        m->g_sim = m->hecht_real.v_s * m->a0 /
-                   (D_real * m->mass_sim * (cg->fluid_gravity ? 1.0 - real->rho_f / real->rho_p : 1.0));
+    if (mo->g > 0 && D_matched > 0) {
+        m->g_sim = m->hecht_real.v_s * m->a0 / (D_matched * m->mass_sim * m_eff);
     } else {
         m->g_sim = mo->g * t0 * t0 / m->a0;
     }
