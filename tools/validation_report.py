@@ -43,6 +43,7 @@ from validation.hecht_clusters import (fig14_msd, fig9_bonds, fig9_diagram, fig9
                                        reduced_fig9_bonds, reduced_fig9_diagram, reduced_fig9_kappa, reduced_fig9_phi)
 from validation.hecht_rdf import fig5_rdf, reduced_fig5_rdf
 from validation import hydro_section, verdicts
+import hindered_settling
 from validation.hecht_rz import fig4_rz, reduced_fig4_rz, rz_precision
 from validation.pl_drag import pl_drag_guide, pl_fig6_drag, reduced_pl_fig6_drag
 from validation.pl_fig10 import pl_fig10_vacf, reduced_pl_fig10_vacf
@@ -531,10 +532,12 @@ def main():
             lines += [f"![{s['name']}]({s['name']}.png)", ""]
     lines += NOTES + [""] + [d + "\n" for d in details]
     lines += verdict_lines(out, rdir) + [""]
-    # the sections other tools write between their markers (tools/validation/hydro_section.py), kept
+    # the sections other tools write between their markers (tools/validation/hydro_section.py,
+    # tools/hindered_settling.py), kept
     old = open(report).read() if os.path.exists(report) else ""
-    if hydro_section.BEGIN in old and hydro_section.END in old:
-        lines += [old[old.index(hydro_section.BEGIN):old.index(hydro_section.END) + len(hydro_section.END)], ""]
+    for begin, end in ((hydro_section.BEGIN, hydro_section.END), (hindered_settling.BEGIN, hindered_settling.END)):
+        if begin in old and end in old:
+            lines += [old[old.index(begin):old.index(end) + len(end)], ""]
     tmp = report + ".tmp"
     open(tmp, "w").write("\n".join(lines))
     os.replace(tmp, report)
