@@ -535,9 +535,10 @@ def main():
     # the sections other tools write between their markers (tools/validation/hydro_section.py,
     # tools/hindered_settling.py), kept
     old = open(report).read() if os.path.exists(report) else ""
-    for begin, end in ((hydro_section.BEGIN, hydro_section.END), (hindered_settling.BEGIN, hindered_settling.END)):
-        if begin in old and end in old:
-            lines += [old[old.index(begin):old.index(end) + len(end)], ""]
+    if hydro_section.BEGIN in old and hydro_section.END in old:
+        lines += [old[old.index(hydro_section.BEGIN):old.index(hydro_section.END) + len(hydro_section.END)], ""]
+    for sec in hindered_settling.sections(old):
+        lines += [sec, ""]
     tmp = report + ".tmp"
     open(tmp, "w").write("\n".join(lines))
     os.replace(tmp, report)
