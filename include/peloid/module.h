@@ -61,6 +61,16 @@ extern const pl_module_t pl_observe_module;  /* src/observe/observe_module.c */
 extern const pl_module_t pl_stop_module;     /* src/observe/stop_module.c */
 extern const pl_module_t pl_stress_module;  /* src/observe/stress_module.c */
 
+/* The state module m's create made (NULL: none), and setting it (create,
+ * destroy); m must be a row of pl_modules.  Only the module itself (and its
+ * own files) reads it: others use the functions it offers (src/core/modules.c). */
+void *pl_module_state(const pl_sim_t *sim, const pl_module_t *m);
+void pl_module_set_state(pl_sim_t *sim, const pl_module_t *m, void *state);
+
+/* Whether the observers run in this simulation (the stop rule and the stress
+ * observer's output ask; src/observe/observe_module.c). */
+int pl_observe_running(const pl_sim_t *sim);
+
 /* The present value and SE of the observers' estimate `name`
  * (stop.observable); 0 when it has none yet (src/observe/observe_module.c). */
 int pl_observe_estimate(const pl_sim_t *sim, const char *name, double *value, double *se);

@@ -65,7 +65,7 @@ typedef struct {
     double seconds;     /* wall time spent (profile in summary.json) */
 } pl_stage_t;
 
-enum { PL_MAX_STAGES = 32 };
+enum { PL_MAX_STAGES = 32, PL_MAX_MODULES = 8 };
 
 struct pl_sim {
     pl_scene_t scene;
@@ -106,11 +106,11 @@ struct pl_sim {
      * (src/app/writer_colloids.c) adds them */
     const int32_t *(*frame_ids)(void *ctx, long long step, int compute);
     void *frame_ids_ctx;
-    /* colloid-solvent coupling (NULL without; src/coupling*.c) */
-    struct pl_coupling *coupling;
-    /* observers (NULL without; src/observe/observe_module.c) */
-    struct pl_observe *observe;
-    struct pl_stress *stress; /* fluid stress observer (NULL without; src/observe/stress_module.c) */
+    /* what each module's create made (the coupling, the observers, the
+     * stress observer), one slot per row of pl_modules, NULL where it made
+     * none: read and written only by the module that owns it, through
+     * pl_module_state (peloid/module.h) */
+    void *module_state[PL_MAX_MODULES];
     /* restart: 1 when the observers resumed from the checkpoint, 0 when they
      * started afresh (observe_note says why), -1 when no restart */
     int observe_resumed;

@@ -22,9 +22,9 @@ static void free_state(pl_coupling_t *cp)
 
 static int add_stages(pl_sim_t *sim, pl_err_t *err)
 {
-    pl_stage_t cells = {.name = "coupling1-cells", .fn = pl_coupling_stage_reflect_cells, .ctx = sim->coupling,
+    pl_stage_t cells = {.name = "coupling1-cells", .fn = pl_coupling_stage_reflect_cells, .ctx = pl_coupling_of(sim),
                         .interval = 1, .slot = PL_SLOT_PRE_STREAM};
-    pl_stage_t reflect = {.name = "coupling1-reflect", .fn = pl_coupling_stage_reflect, .ctx = sim->coupling,
+    pl_stage_t reflect = {.name = "coupling1-reflect", .fn = pl_coupling_stage_reflect, .ctx = pl_coupling_of(sim),
                           .interval = 1, .slot = PL_SLOT_POST_STREAM};
     int rc = pl_sim_add_stage(sim, &cells, err);
     return rc ? rc : pl_sim_add_stage(sim, &reflect, err);
@@ -32,7 +32,7 @@ static int add_stages(pl_sim_t *sim, pl_err_t *err)
 
 static long long v_events(const pl_thermo_sample_t *s, int trunc)
 {
-    const pl_coupling1_state_t *c1 = s->sim->coupling->c1;
+    const pl_coupling1_state_t *c1 = pl_coupling_of(s->sim)->c1;
     return (long long)(trunc ? c1->truncations : c1->events);
 }
 static const pl_thermo_column_t columns[] = {

@@ -103,11 +103,11 @@ static void free_state(pl_coupling_t *cp)
 
 static int add_stages(pl_sim_t *sim, pl_err_t *err)
 {
-    pl_stage_t save = {.name = "coupling2-save", .fn = pl_coupling_stage_save, .ctx = sim->coupling,
+    pl_stage_t save = {.name = "coupling2-save", .fn = pl_coupling_stage_save, .ctx = pl_coupling_of(sim),
                        .interval = 1, .slot = PL_SLOT_PRE_COLLIDE};
-    pl_stage_t plain = {.name = "coupling2-collide", .fn = pl_coupling_stage_collide, .ctx = sim->coupling,
+    pl_stage_t plain = {.name = "coupling2-collide", .fn = pl_coupling_stage_collide, .ctx = pl_coupling_of(sim),
                         .slot = PL_SLOT_POST_COLLIDE};
-    pl_stage_t heyes = {.name = "coupling2-collide+heyes", .fn = pl_coupling_stage_collide_heyes, .ctx = sim->coupling,
+    pl_stage_t heyes = {.name = "coupling2-collide+heyes", .fn = pl_coupling_stage_collide_heyes, .ctx = pl_coupling_of(sim),
                         .slot = PL_SLOT_POST_COLLIDE};
     int rc = pl_sim_add_stage(sim, &save, err);
     return rc ? rc : pl_sim_add_collide_stage(sim, &plain, &heyes, err);

@@ -18,31 +18,36 @@ static int coupling_create(pl_sim_t *sim, pl_err_t *err)
     if (!sim->colloids || sim->fluid.n == 0 ||
         (sc->coupling.method == PL_COUPLE_NONE && sc->coupling.drift_interval <= 0))
         return 0;
-    return pl_coupling_create(sim, &sim->coupling, err);
+    pl_coupling_t *cp = NULL;
+    const int rc = pl_coupling_create(sim, &cp, err);
+    pl_module_set_state(sim, &pl_coupling_module, cp);
+    return rc;
 }
 
 static void coupling_destroy(pl_sim_t *sim)
 {
-    pl_coupling_free(sim->coupling);
-    sim->coupling = NULL;
+    pl_coupling_free(pl_coupling_of(sim));
+    pl_module_set_state(sim, &pl_coupling_module, NULL);
 }
+
+pl_coupling_t *pl_coupling_of(const pl_sim_t *sim) { return pl_module_state(sim, &pl_coupling_module); }
 
 static int add(pl_sim_t *sim, const char *name, pl_stage_fn fn, long long interval, pl_stage_slot_t slot,
                pl_err_t *err)
 {
-    pl_stage_t s = {.name = name, .fn = fn, .ctx = sim->coupling, .interval = interval, .slot = slot};
+    pl_stage_t s = {.name = name, .fn = fn, .ctx = pl_coupling_of(sim), .interval = interval, .slot = slot};
     return pl_sim_add_stage(sim, &s, err);
 }
 
 static int coupling_stages(pl_sim_t *sim, pl_err_t *err)
 {
     const pl_scene_t *sc = &sim->scene;
-    if (!sim->coupling) return 0;
-    const pl_coupling_row_t *row = pl_coupling_row(sim->coupling->method);
+    if (!pl_coupling_of(sim)) return 0;
+    const pl_coupling_row_t *row = pl_coupling_row(pl_coupling_of(sim)->method);
     int rc = row ? row->add_stages(sim, err) : 0;
     if (rc) return rc;
     const double *fv = sc->coupling.flow_velocity;
-    if (sim->coupling->pinned && (fv[0] != 0.0 || fv[1] != 0.0 || fv[2] != 0.0) &&
+    if (pl_coupling_of(sim)->pinned && (fv[0] != 0.0 || fv[1] != 0.0 || fv[2] != 0.0) &&
         (rc = add(sim, "flow-hold", pl_coupling_stage_flow, 1, PL_SLOT_CONSTRAIN, err)))
         return rc;
     /* momentum is not conserved with walls: nothing to remove */
@@ -54,7 +59,7 @@ static int coupling_stages(pl_sim_t *sim, pl_err_t *err)
 /* ---- thermo columns ------------------------------------------------------ */
 static double v_drag(const pl_thermo_sample_t *s, int d) /* mean force per pinned colloid so far */
 {
-    const pl_coupling_t *cp = s->sim->coupling;
+    const pl_coupling_t *cp = pl_coupling_of(s->sim);
     double k = cp->pinned_time > 0 ? 1.0 / (cp->pinned_time * (double)s->sim->colloids->n) : 0.0;
     return cp->impulse[d] * k;
 }
@@ -66,10 +71,10 @@ static const pl_thermo_column_t pinned_cols[] = {
 
 static void coupling_columns(const pl_sim_t *sim, pl_thermo_table_t *t)
 {
-    if (!sim->coupling) return;
-    const pl_coupling_row_t *row = pl_coupling_row(sim->coupling->method);
+    if (!pl_coupling_of(sim)) return;
+    const pl_coupling_row_t *row = pl_coupling_row(pl_coupling_of(sim)->method);
     if (row && row->ncolumns) pl_thermo_add(t, row->columns, row->ncolumns);
-    if (sim->coupling->pinned) pl_thermo_add(t, pinned_cols, 3);
+    if (pl_coupling_of(sim)->pinned) pl_thermo_add(t, pinned_cols, 3);
 }
 
 /* /wall_impulse (walls) and group /coupling: the run counters
@@ -81,7 +86,7 @@ static int coupling_ckpt_read(int64_t f, pl_sim_t *sim, const char *path, pl_err
     /* the colloid set-up the reader redoes knows nothing of the coupling:
      * coupled colloids exchange energy with the fluid, no NVE drift guard
      * (as pl_coupling_create decided) */
-    if (sim->colloids && sim->coupling && sim->coupling->method != PL_COUPLE_NONE) sim->colloids->nve = 0;
+    if (sim->colloids && pl_coupling_of(sim) && pl_coupling_of(sim)->method != PL_COUPLE_NONE) sim->colloids->nve = 0;
     return pl_ckpt_coupling_read((hid_t)f, sim, path, err);
 }
 
@@ -89,8 +94,8 @@ static int coupling_ckpt_read(int64_t f, pl_sim_t *sim, const char *path, pl_err
 static int coupling_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
 {
     (void)dir;
-    const pl_coupling_row_t *row = sim->coupling ? pl_coupling_row(sim->coupling->method) : NULL;
-    return row && row->finish ? row->finish(sim->coupling, sim, doc, err) : 0;
+    const pl_coupling_row_t *row = pl_coupling_of(sim) ? pl_coupling_row(pl_coupling_of(sim)->method) : NULL;
+    return row && row->finish ? row->finish(pl_coupling_of(sim), sim, doc, err) : 0;
 }
 
 const pl_module_t pl_coupling_module = {

@@ -185,7 +185,7 @@ static pl_coupling_reach_t particle_reach(const pl_sim_t *sim, double rc)
     const double T = sc->srd.dt;
     double g2 = 0.0, u = 0.0, cv2 = 0.0;
     for (int d = 0; d < 3; ++d) {
-        const double a = sc->fluid.body_force[d] + sim->coupling->fluid_accel[d]; /* the streaming's */
+        const double a = sc->fluid.body_force[d] + pl_coupling_of(sim)->fluid_accel[d]; /* the streaming's */
         g2 += a * a;
     }
     for (int w = 0; w < 2; ++w)
@@ -209,7 +209,7 @@ static pl_coupling_reach_t particle_reach(const pl_sim_t *sim, double rc)
 static int gather_selection(pl_sim_t *sim, pl_coupling_potential_state_t *ps, const uint32_t *cs,
                             const int32_t *cl, const pl_coupling_stage_t *stage, pl_err_t *err)
 {
-    const pl_coupling_t *cp = sim->coupling;
+    const pl_coupling_t *cp = pl_coupling_of(sim);
     const pl_colloid_t *c = sim->colloids;
     const pl_coupling_colloids_t v = sel_view(ps, c);
     size_t nn = 0, np = 0;
@@ -320,7 +320,7 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
 /* The MD step's start: the selection the streaming ran, gathered. */
 static int gather_armed(pl_sim_t *sim, pl_coupling_potential_state_t *ps, pl_err_t *err)
 {
-    const int nthreads = sim->coupling->nthreads;
+    const int nthreads = pl_coupling_of(sim)->nthreads;
     if (ps->armed_step != sim->step || sim->stream_pre_hook)
         return pl_err_set(err, PL_ERR_INTERNAL, "the potential coupling's selection did not run in the streaming of step %lld",
                           sim->step);

@@ -27,9 +27,9 @@ static void free_state(pl_coupling_t *cp)
 
 static int add_stages(pl_sim_t *sim, pl_err_t *err)
 {
-    pl_stage_t select = {.name = "potential-select", .fn = pl_coupling_stage_select, .ctx = sim->coupling,
+    pl_stage_t select = {.name = "potential-select", .fn = pl_coupling_stage_select, .ctx = pl_coupling_of(sim),
                          .interval = 1, .slot = PL_SLOT_PRE_STREAM};
-    pl_stage_t md = {.name = "potential-md", .fn = pl_coupling_stage_potential_md, .ctx = sim->coupling,
+    pl_stage_t md = {.name = "potential-md", .fn = pl_coupling_stage_potential_md, .ctx = pl_coupling_of(sim),
                      .slot = PL_SLOT_POST_STREAM,
                      .colloid_md = 1}; /* the colloids' MD, with the fluid near them (PL Sec. III) */
     int rc = pl_sim_add_stage(sim, &select, err);

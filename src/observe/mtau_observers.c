@@ -91,7 +91,7 @@ static int mtobs_create(pl_mtobs_t *m, const pl_sim_t *sim, int levels, pl_err_t
 int pl_mtobs_sample(pl_mtobs_t *m, pl_sim_t *sim, long long first, uint64_t expected, pl_err_t *err)
 {
     if (sim->step < pl_mtobs_start(&sim->scene.observe, m->which)) return 0;
-    if (m->which == PL_MTOBS_CFF && (sim->step <= first || !pl_coupling_mean_force(sim->coupling))) return 0;
+    if (m->which == PL_MTOBS_CFF && (sim->step <= first || !pl_coupling_mean_force(pl_coupling_of(sim)))) return 0;
     const double t0 = omp_get_wtime();
     const pl_colloid_t *c = sim->colloids;
     if (!m->c) {
@@ -106,7 +106,7 @@ int pl_mtobs_sample(pl_mtobs_t *m, pl_sim_t *sim, long long first, uint64_t expe
             for (size_t i = 0; i < c->n; ++i) m->u[d][i] = r[d][i] + (double)im[d][i] * c->box[d];
         x = m->u[0], y = m->u[1], z = m->u[2];
     } else if (m->which == PL_MTOBS_CFF) {
-        const double *f = pl_coupling_mean_force(sim->coupling);
+        const double *f = pl_coupling_mean_force(pl_coupling_of(sim));
         x = f, y = f + c->n, z = f + 2 * c->n;
     }
     pl_mtau_add(m->c, x, y, z, sim->nthreads);

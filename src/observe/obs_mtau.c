@@ -35,7 +35,7 @@ static int create_cff(pl_obs_run_t *run, void **state, pl_err_t *err)
 {
     int rc = create_which(run, state, PL_MTOBS_CFF, err);
     pl_sim_t *sim = run->sim;
-    if (!rc && sim->coupling) rc = pl_coupling_mean_force_on(sim->coupling, sim->colloids->n, err);
+    if (!rc && pl_coupling_of(sim)) rc = pl_coupling_mean_force_on(pl_coupling_of(sim), sim->colloids->n, err);
     return rc;
 }
 

@@ -68,6 +68,9 @@ typedef struct pl_observe {
     int nept_saved;
 } pl_observe_t;
 
+static pl_observe_t *observe_of(const pl_sim_t *sim) { return pl_module_state(sim, &pl_observe_module); }
+int pl_observe_running(const pl_sim_t *sim) { return observe_of(sim) != NULL; }
+
 int pl_obs_grow(void **p, size_t n, size_t cap, size_t sz)
 {
     void *q = realloc(*p, cap * sz);
@@ -114,7 +117,7 @@ static const pl_obs_estimate_t *estimate_named(const char *name, int *row)
 
 int pl_observe_estimate(const pl_sim_t *sim, const char *name, double *value, double *se)
 {
-    const pl_observe_t *o = sim->observe;
+    const pl_observe_t *o = observe_of(sim);
     int k;
     const pl_obs_estimate_t *e = estimate_named(name, &k);
     if (!o || !e || !o->st[k]) return 0;
@@ -128,7 +131,7 @@ int pl_observe_estimate(const pl_sim_t *sim, const char *name, double *value, do
 /* Row k on, with none of its estimates valid: why (n bytes). */
 static int row_unmeasured(const pl_sim_t *sim, int k, char *why, size_t n)
 {
-    const pl_observe_t *o = sim->observe;
+    const pl_observe_t *o = observe_of(sim);
     return o && o->st[k] && pl_obs_unmeasured(ROW(k), o->st[k], o->run.first, sim->step, why, n);
 }
 
@@ -188,18 +191,13 @@ int pl_observe_validate_scene(const pl_scene_t *sc, pl_err_t *err)
 
 static void observe_destroy(pl_sim_t *sim)
 {
-    pl_observe_t *o = sim->observe;
+    pl_observe_t *o = observe_of(sim);
     if (!o) return;
     for (int k = 0; o->st && k < NOBS; ++k)
         if (o->st[k]) ROW(k)->free(o->st[k]);
-    free(o->st);
-    free(o->wall);
-    free(o->est0);
-    free(o->ctx);
-    free(o->ept);
-    free(o->ept_saved);
-    free(o);
-    sim->observe = NULL;
+    void *owned[] = {o->st, o->wall, o->est0, o->ctx, o->ept, o->ept_saved, o};
+    for (size_t k = 0; k < sizeof owned / sizeof *owned; ++k) free(owned[k]);
+    pl_module_set_state(sim, &pl_observe_module, NULL);
 }
 
 static int observe_create(pl_sim_t *sim, pl_err_t *err)
@@ -209,7 +207,7 @@ static int observe_create(pl_sim_t *sim, pl_err_t *err)
     if (!sim->colloids || !any) return 0;
     pl_observe_t *o = calloc(1, sizeof *o);
     if (!o) return pl_err_set(err, PL_ERR_NOMEM, "out of memory for the observers");
-    sim->observe = o;
+    pl_module_set_state(sim, &pl_observe_module, o);
     o->run = (pl_obs_run_t){.sim = sim, .resume_step = -1};
     o->st = calloc((size_t)NOBS, sizeof *o->st);
     o->wall = calloc((size_t)NOBS, sizeof *o->wall);
@@ -292,7 +290,7 @@ static int stage_sample(pl_sim_t *sim, void *ctx, pl_err_t *err)
 
 static int observe_stages(pl_sim_t *sim, pl_err_t *err)
 {
-    pl_observe_t *o = sim->observe;
+    pl_observe_t *o = observe_of(sim);
     if (!o) return 0;
     pl_stage_t b = {.name = "observe-begin", .fn = stage_begin, .ctx = o, .interval = 1,
                     .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE, .at_start = 1};
@@ -346,7 +344,7 @@ json_t *pl_obs_entry(pl_obs_sum_t *s, int k, double value, double se, double n_i
 
 static int observe_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
 {
-    pl_observe_t *o = sim->observe;
+    pl_observe_t *o = observe_of(sim);
     if (!o) return 0;
     char path[4096];
     pl_path_join(path, sizeof path, dir, pl_outputs[PL_OUT_OBSERVABLES].name);
@@ -456,7 +454,7 @@ static void legacy_points(const pl_observe_t *o, ept_t (*pts)[NFRAC], ept_t (**b
 
 static int observe_ckpt_write(int64_t file, const pl_sim_t *sim)
 {
-    pl_observe_t *o = sim->observe;
+    pl_observe_t *o = observe_of(sim);
     if (!o) return 0;
     hid_t g = pl_ckpt_observe_group_write((hid_t)file, "observe", &sim->scene);
     if (g < 0) return -1;
@@ -546,7 +544,7 @@ static int observe_ckpt_read_group(hid_t g, pl_sim_t *sim, pl_observe_t *o, cons
  * another observe section, they start afresh (sim->observe_note). */
 static int observe_ckpt_read(int64_t file, pl_sim_t *sim, const char *path, pl_err_t *err)
 {
-    pl_observe_t *o = sim->observe;
+    pl_observe_t *o = observe_of(sim);
     if (!o) return 0;
     hid_t g = pl_ckpt_observe_group_open((hid_t)file, "observe", sim);
     if (g < 0) return 0;

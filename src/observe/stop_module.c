@@ -48,7 +48,7 @@ static int stop_stages(pl_sim_t *sim, pl_err_t *err)
 {
     int rc;
     const pl_scene_stop_t *st = &sim->scene.stop;
-    if (strcmp(st->observable, "none") && sim->observe) {
+    if (strcmp(st->observable, "none") && pl_observe_running(sim)) {
         pl_stage_t s = {.name = "stop-rule", .fn = stage_stop, .ctx = &sim->scene.stop,
                         .interval = st->check_interval, .phase = PL_PHASE_AFTER, .slot = PL_SLOT_OBSERVE};
         if ((rc = pl_sim_add_stage(sim, &s, err))) return rc;

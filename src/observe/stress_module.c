@@ -187,7 +187,7 @@ static int stress_create(pl_sim_t *sim, pl_err_t *err)
     pl_blocking_init(&o->pressure);
     pl_blocking_init(&o->sigma);
     pl_blocking_init(&o->rate);
-    sim->stress = o;
+    pl_module_set_state(sim, &pl_stress_module, o);
     if (!o->couette) return 0;
     const double *ub = sc->box.wall_velocity[0], *ut = sc->box.wall_velocity[1];
     o->du = hypot(ut[0] - ub[0], ut[1] - ub[1]);
@@ -202,7 +202,7 @@ static int stress_create(pl_sim_t *sim, pl_err_t *err)
 
 static void stress_destroy(pl_sim_t *sim)
 {
-    pl_stress_t *o = sim->stress;
+    pl_stress_t *o = pl_stress_of(sim);
     if (!o) return;
     free(o->scratch);
     free(o->ring);
@@ -214,7 +214,7 @@ static void stress_destroy(pl_sim_t *sim)
     free(o->ts_rate);
     free(o->ts_prof);
     free(o);
-    sim->stress = NULL;
+    pl_module_set_state(sim, &pl_stress_module, NULL);
 }
 
 
@@ -400,7 +400,7 @@ static int stage_couette(pl_sim_t *sim, void *ctx, pl_err_t *err)
 static int stress_stages(pl_sim_t *sim, pl_err_t *err)
 {
     int rc;
-    pl_stress_t *o = sim->stress;
+    pl_stress_t *o = pl_stress_of(sim);
     if (!o) return 0;
     if (o->couette) {
         pl_stage_t c = {.name = "stress-couette", .fn = stage_couette, .ctx = o, .interval = 1,
@@ -458,7 +458,7 @@ enum { SCK_FIRST, SCK_STARTED, SCK_NEXT_FRAC, SCK_RING_HEAD, SCK_RING_N, SCK_NCO
 
 static int stress_ckpt_write(int64_t file, const pl_sim_t *sim)
 {
-    const pl_stress_t *o = sim->stress;
+    const pl_stress_t *o = pl_stress_of(sim);
     if (!o) return 0;
     hid_t g = pl_ckpt_observe_group_write((hid_t)file, "stress", &sim->scene);
     if (g < 0) return -1;
@@ -573,7 +573,7 @@ static int stress_ckpt_read_group(hid_t g, pl_sim_t *sim, pl_stress_t *o, const 
 
 static int stress_ckpt_read(int64_t file, pl_sim_t *sim, const char *path, pl_err_t *err)
 {
-    pl_stress_t *o = sim->stress;
+    pl_stress_t *o = pl_stress_of(sim);
     if (!o) return 0;
     hid_t g = pl_ckpt_observe_group_open((hid_t)file, "stress", sim);
     if (g < 0) return 0;

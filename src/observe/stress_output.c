@@ -67,7 +67,7 @@ static int write_h5(const pl_sim_t *sim, const pl_stress_t *o, const char *path,
     pl_atomic_tmp(path, tmp, sizeof tmp);
     pl_h5_quiet();
     hid_t f;
-    if (sim->observe) { /* the observe module wrote observables.h5 of this run just before */
+    if (pl_observe_running(sim)) { /* the observe module wrote observables.h5 of this run just before */
         if (copy_file(path, tmp)) {
             remove(tmp);
             return pl_err_set(err, PL_ERR_IO, "%s: cannot copy the observables file", tmp);
@@ -197,7 +197,7 @@ const char *const pl_stress_entries[] = {"couette_viscosity", "fluid_viscosity",
 
 int pl_stress_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
 {
-    pl_stress_t *o = sim->stress;
+    pl_stress_t *o = pl_stress_of(sim);
     if (!o) return 0;
     char path[4096];
     pl_path_join(path, sizeof path, dir, pl_outputs[PL_OUT_OBSERVABLES].name);

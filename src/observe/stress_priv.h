@@ -10,6 +10,7 @@
 #include "observables_out.h"
 #include "peloid/blocking.h"
 #include "peloid/error.h"
+#include "peloid/module.h"
 #include "peloid/sim.h"
 #include "peloid/srd_kernels.h"
 
@@ -50,6 +51,9 @@ typedef struct pl_stress {
     int begun, have_first, nept_saved;
     pl_obs_point_t ept_saved[NFRAC];
 } pl_stress_t;
+
+/* The run's stress observer (NULL without): the stress module's state. */
+static inline pl_stress_t *pl_stress_of(const pl_sim_t *sim) { return pl_module_state(sim, &pl_stress_module); }
 
 /* The Green-Kubo estimate and SE of eta after what was sampled (res: the
  * blocking result); 0 when there is none. */

@@ -16,9 +16,9 @@ static inline double pl_test_pinned_force(pl_sim_t *sim, int axis, int nblocks, 
     double F[64], mean = 0.0, var = 0.0;
     cr_assert(nblocks >= 2 && nblocks <= 64, "pl_test_pinned_force: 2..64 blocks");
     for (int b = 0; b < nblocks; ++b) {
-        double p0 = sim->coupling->impulse[axis], t0 = sim->coupling->pinned_time;
+        double p0 = pl_coupling_of(sim)->impulse[axis], t0 = pl_coupling_of(sim)->pinned_time;
         pl_test_steps(sim, block);
-        F[b] = (sim->coupling->impulse[axis] - p0) / (sim->coupling->pinned_time - t0);
+        F[b] = (pl_coupling_of(sim)->impulse[axis] - p0) / (pl_coupling_of(sim)->pinned_time - t0);
         mean += F[b] / nblocks;
     }
     for (int b = 0; b < nblocks; ++b) var += (F[b] - mean) * (F[b] - mean) / (nblocks - 1);

@@ -67,7 +67,7 @@ static void assert_same(const pl_sim_t *a, const pl_sim_t *b, size_t s)
     const double *xb[] = {cb->x, cb->y, cb->z, cb->vx, cb->vy, cb->vz, cb->wx, cb->wy, cb->wz,
                           cb->q0, cb->q1, cb->q2, cb->q3, cb->fx, cb->fy, cb->fz};
     for (size_t k = 0; k < sizeof xa / sizeof *xa; ++k) SAME(xa[k], xb[k], m, "scene %zu: colloid array %zu", s, k);
-    const pl_coupling_t *pa = a->coupling, *pb = b->coupling;
+    const pl_coupling_t *pa = pl_coupling_of(a), *pb = pl_coupling_of(b);
     cr_assert_eq(pa->method, pb->method, "scene %zu: method", s);
     if (pa->c1) {
         cr_assert_eq(pa->c1->events, pb->c1->events, "scene %zu: events %llu / %llu", s, pa->c1->events,
@@ -86,7 +86,7 @@ static void assert_same(const pl_sim_t *a, const pl_sim_t *b, size_t s)
 /* The scenes really exercise what they are meant to (else the test proves little). */
 static void assert_exercised(const pl_sim_t *sim, size_t s)
 {
-    const pl_coupling_t *cp = sim->coupling;
+    const pl_coupling_t *cp = pl_coupling_of(sim);
     if (cp->method == PL_COUPLE_HECHT1) cr_assert_gt(cp->c1->events, 0, "scene %zu: no reflections", s);
     if (s == 0) cr_assert_gt(cp->c1->truncations, 0, "scene %zu: no truncations", s);
     if (cp->method == PL_COUPLE_POTENTIAL) cr_assert_gt(cp->pot->near_total, 0, "scene %zu: nothing selected", s);
@@ -96,7 +96,7 @@ static void assert_exercised(const pl_sim_t *sim, size_t s)
 
 static void poison(pl_sim_t *sim)
 {
-    pl_coupling_t *cp = sim->coupling;
+    pl_coupling_t *cp = pl_coupling_of(sim);
     if (cp->c1) cp->c1->events = cp->c1->truncations = 12345;
     if (cp->pot) cp->pot->near_total = 12345;
     for (int k = 0; k < 6; ++k) cp->impulse[k] = -7.0;

@@ -97,7 +97,7 @@ Test(coupling_scene, plan)
     cr_expect(has_stage(b, "drift-removal") && !has_stage(b, "coupling1-reflect"));
     pl_sim_free(b);
     pl_sim_t *c = pl_test_sim(COLL, 1);
-    cr_expect(c->coupling == NULL && !has_stage(c, "coupling1-reflect"));
+    cr_expect(pl_coupling_of(c) == NULL && !has_stage(c, "coupling1-reflect"));
     pl_sim_free(c);
 }
 
@@ -110,8 +110,8 @@ Test(coupling_scene, hecht1_starts_with_empty_colloids)
     size_t inside = 0;
     for (size_t i = 0; i < sim->fluid.n; ++i) {
         double r[3] = {sim->fluid.r[0][i], sim->fluid.r[1][i], sim->fluid.r[2][i]}, p[3];
-        inside += pl_coupling_inside(&v, sim->grid.L, sim->grid.walls, sim->coupling->c1->lk.start,
-                                     sim->coupling->c1->lk.list, r, p) >= 0;
+        inside += pl_coupling_inside(&v, sim->grid.L, sim->grid.walls, pl_coupling_of(sim)->c1->lk.start,
+                                     pl_coupling_of(sim)->c1->lk.list, r, p) >= 0;
     }
     cr_expect_eq(inside, 0, "%zu fluid particles start inside colloids", inside);
     pl_sim_free(sim);

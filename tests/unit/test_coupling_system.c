@@ -36,9 +36,9 @@ static void check_threads(const char *coupling)
     long long steps = pl_test_quick() ? 10 : 60;
     pl_sim_t *a = make("", coupling, "thermostat: { type = \"heyes\"; };\n", 1);
     pl_test_steps(a, steps);
-    if (a->coupling->method == PL_COUPLE_POTENTIAL) /* the blocked force sum is exercised */
-        cr_expect_geq(pl_coupling_wca_blocks(a->coupling->pot->nnear, a->colloids->n), 2,
-                      "%zu selected particles", a->coupling->pot->nnear);
+    if (pl_coupling_of(a)->method == PL_COUPLE_POTENTIAL) /* the blocked force sum is exercised */
+        cr_expect_geq(pl_coupling_wca_blocks(pl_coupling_of(a)->pot->nnear, a->colloids->n), 2,
+                      "%zu selected particles", pl_coupling_of(a)->pot->nnear);
     for (int t = 2; t <= 3; ++t) {
         pl_sim_t *b = make("", coupling, "thermostat: { type = \"heyes\"; };\n", t);
         pl_test_steps(b, steps);
@@ -55,8 +55,8 @@ static void check_threads(const char *coupling)
                   "%s, %d threads: colloid velocities differ", coupling, t);
         cr_expect(same(ca->wx, cb->wx, m) && same(ca->wy, cb->wy, m) && same(ca->wz, cb->wz, m),
                   "%s, %d threads: colloid angular velocities differ", coupling, t);
-        if (a->coupling->method == PL_COUPLE_HECHT1)
-            cr_expect_eq(a->coupling->c1->events, b->coupling->c1->events, "event counts differ");
+        if (pl_coupling_of(a)->method == PL_COUPLE_HECHT1)
+            cr_expect_eq(pl_coupling_of(a)->c1->events, pl_coupling_of(b)->c1->events, "event counts differ");
         pl_sim_free(b);
     }
     pl_sim_free(a);
@@ -319,8 +319,8 @@ Test(coupling_system, potential_with_no_particle_selected, .timeout = 60)
                               "coupling: { method = \"potential\"; sigma_cf = 0.5; epsilon_cf = 2.5; };\n",
                               1);
     pl_test_steps(s, 20);
-    cr_expect_eq(s->coupling->pot->nnear, 0, "the test wants an empty selection, got %zu particles",
-                 s->coupling->pot->nnear);
+    cr_expect_eq(pl_coupling_of(s)->pot->nnear, 0, "the test wants an empty selection, got %zu particles",
+                 pl_coupling_of(s)->pot->nnear);
     cr_expect(isfinite(s->colloids->x[0]) && isfinite(s->fluid.v[0][0]), "state not finite");
     pl_sim_free(s);
 }
@@ -334,17 +334,17 @@ Test(coupling_system, potential_counts_margin_exceeded, .timeout = 120)
     const char *cpl = "method = \"potential\"; sigma_cf = 2.0; epsilon_cf = 2.5;";
     pl_sim_t *a = make("", cpl, "", 1);
     pl_test_steps(a, 6);
-    cr_expect_eq(a->coupling->pot->force_calls, 6 * 5, "force evaluations %llu", a->coupling->pot->force_calls);
-    cr_expect_eq(a->coupling->pot->margin_exceeded, 0, "margin exceeded %llu times in an ordinary run",
-                 a->coupling->pot->margin_exceeded);
+    cr_expect_eq(pl_coupling_of(a)->pot->force_calls, 6 * 5, "force evaluations %llu", pl_coupling_of(a)->pot->force_calls);
+    cr_expect_eq(pl_coupling_of(a)->pot->margin_exceeded, 0, "margin exceeded %llu times in an ordinary run",
+                 pl_coupling_of(a)->pot->margin_exceeded);
     pl_sim_free(a);
     pl_sim_t *b = make("", cpl, "", 1);
-    b->coupling->pot->margin = 0.0;
+    pl_coupling_of(b)->pot->margin = 0.0;
     pl_test_steps(b, 6);
-    cr_expect_eq(b->coupling->pot->margin_exceeded, b->coupling->pot->force_calls,
-                 "zero margin: %llu of %llu evaluations counted", b->coupling->pot->margin_exceeded,
-                 b->coupling->pot->force_calls);
-    cr_expect_gt(b->coupling->pot->force_calls, 0);
+    cr_expect_eq(pl_coupling_of(b)->pot->margin_exceeded, pl_coupling_of(b)->pot->force_calls,
+                 "zero margin: %llu of %llu evaluations counted", pl_coupling_of(b)->pot->margin_exceeded,
+                 pl_coupling_of(b)->pot->force_calls);
+    cr_expect_gt(pl_coupling_of(b)->pot->force_calls, 0);
     pl_sim_free(b);
 }
 
@@ -373,9 +373,9 @@ Test(coupling_system, reflect_events_parallel_equal_serial, .timeout = 120)
             sim[t] = pl_test_sim(text, t + 1);
             pl_test_steps(sim[t], 8);
         }
-        const pl_coupling1_scratch_t *sc = &sim[1]->coupling->c1->events_scratch;
+        const pl_coupling1_scratch_t *sc = &pl_coupling_of(sim[1])->c1->events_scratch;
         if (s == 0) cr_expect_geq(sc->parallel, 7, "parallel event passes: %llu of 8 steps", sc->parallel);
-        cr_expect_gt(sim[0]->coupling->c1->events, 0, "scene %d: no reflection", s);
+        cr_expect_gt(pl_coupling_of(sim[0])->c1->events, 0, "scene %d: no reflection", s);
         for (int t = 1; t < 3; ++t) {
             const pl_fluid_t *a = &sim[0]->fluid, *b = &sim[t]->fluid;
             for (int d = 0; d < 3; ++d) {
@@ -388,11 +388,11 @@ Test(coupling_system, reflect_events_parallel_equal_serial, .timeout = 120)
             cr_assert(same(ca->vx, cb->vx, ca->n * sizeof *ca->vx) && same(ca->wz, cb->wz, ca->n * sizeof *ca->wz) &&
                           same(ca->x, cb->x, ca->n * sizeof *ca->x),
                       "scene %d, %d threads: colloids differ", s, t + 1);
-            cr_assert_eq(sim[0]->coupling->c1->events, sim[t]->coupling->c1->events);
-            cr_assert_eq(sim[0]->coupling->c1->truncations, sim[t]->coupling->c1->truncations);
+            cr_assert_eq(pl_coupling_of(sim[0])->c1->events, pl_coupling_of(sim[t])->c1->events);
+            cr_assert_eq(pl_coupling_of(sim[0])->c1->truncations, pl_coupling_of(sim[t])->c1->truncations);
         }
         fprintf(stderr, "reflect_events_parallel: scene %d: %llu events, 2 threads: %llu parallel passes, %llu given up\n",
-                s, sim[0]->coupling->c1->events, sc->parallel, sc->gave_up);
+                s, pl_coupling_of(sim[0])->c1->events, sc->parallel, sc->gave_up);
         for (int t = 0; t < 3; ++t) pl_sim_free(sim[t]);
     }
 }
