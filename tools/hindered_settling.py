@@ -260,8 +260,8 @@ def section(study, commit, png):
         f"{K_cal:.2f}; {nk} points, χ² = {k_chi2:.1f}) against 6.55 ({(K - K_BATCHELOR) / K_se:+.1f} SE, "
         f"{100 * (K / K_BATCHELOR - 1):+.0f} %); for information Rotne–Prager with excluded Stokeslets at "
         f"a_h/a = {rh:.3f}: {k_rp(rh):.2f} (5.5 at a_h = a).{core}  The points' own K (the table's "
-        "second-last column) falls with φ, so the rule's line through the origin is only as good as its χ²; "
-        f"the most dilute points give {pk(rows, box, 0.02)} at φ = 0.02 and {pk(rows, box, 0.05)} at φ = 0.05.",
+        f"second-last column): {pk(rows, box, 0.02)} at φ = 0.02, {pk(rows, box, 0.05)} at φ = 0.05, "
+        f"{pk(rows, box, 0.1)} at φ = 0.1 (the rule's line through the origin is as good as its χ²).",
         f"- **Richardson–Zaki's n: {vn}.**  n = {n:.2f} ± {n_se:.2f} over φ = {info['phi_n']} ({nn} points, "
         f"χ²/dof = {n_chi2:.1f}, v∞/U0 = {vinf / r0['U0']:.3f}) against 4.65 "
         f"({(n - N_RZ) / n_se:+.1f} SE, {100 * (n / N_RZ - 1):+.0f} %).",
@@ -269,7 +269,7 @@ def section(study, commit, png):
         f"at {len(rows) - len(h5_bad)} of {len(rows)} points; the two halves of the window agree within 3 SE at "
         f"{len(rows) - len(stat_bad)} of {len(rows)}.", hot,
         "",
-        f"The physical reason where it disagrees: the {info['coupling']} colloid moves fluid like a stick sphere "
+        f"The physical reason where it disagrees: the colloid of {info['coupling']} moves fluid like a stick sphere "
         f"of R_h = {rh:.2f} R ({info['reason']}), so every many-body hydrodynamic effect has that sphere's "
         "strength; Batchelor's and Richardson–Zaki's values are for R_h = R.  Coupling II, for comparison: "
         f"K = 2.18 ± 0.05, n = 2.25 ± 0.11 (the Fig. 4 verdict).  Not run: {info['missing']}.", "",
