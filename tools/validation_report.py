@@ -42,7 +42,7 @@ from validation.fluid_guides import accuracy_fluid_diffusion, accuracy_viscosity
 from validation.hecht_clusters import (fig14_msd, fig9_bonds, fig9_diagram, fig9_kappa, fig9_phi, reduced_fig14_msd,
                                        reduced_fig9_bonds, reduced_fig9_diagram, reduced_fig9_kappa, reduced_fig9_phi)
 from validation.hecht_rdf import fig5_rdf, reduced_fig5_rdf
-from validation import hydro_section, verdicts
+from validation import hydro_section, rotating_section, verdicts
 import hindered_settling
 from validation.hecht_rz import fig4_rz, reduced_fig4_rz, rz_precision
 from validation.pl_drag import pl_drag_guide, pl_fig6_drag, reduced_pl_fig6_drag
@@ -539,6 +539,8 @@ def main():
         lines += [old[old.index(hydro_section.BEGIN):old.index(hydro_section.END) + len(hydro_section.END)], ""]
     for sec in hindered_settling.sections(old):
         lines += [sec, ""]
+    if rotating_section.BEGIN in old and rotating_section.END in old:
+        lines += [old[old.index(rotating_section.BEGIN):old.index(rotating_section.END) + len(rotating_section.END)], ""]
     tmp = report + ".tmp"
     open(tmp, "w").write("\n".join(lines))
     os.replace(tmp, report)

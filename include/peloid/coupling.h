@@ -136,6 +136,7 @@ typedef struct pl_coupling {
      * this run */
     int pinned;
     double impulse[6], pinned_time;
+    double spin[3]; /* the pinned colloids' held angular velocity (coupling.pinned_spin) */
     /* the state of the method in use; NULL for the others */
     pl_coupling1_state_t *c1;
     pl_coupling2_state_t *c2;

@@ -36,6 +36,9 @@ typedef struct {
     double flow_velocity[3];   /* pinned: fluid mean velocity held at this value */
     double sigma_cf, epsilon_cf; /* PL Eq. 17 (sigma_cf 0: colloids.radius) */
     double max_settling_energy;  /* hecht2 + gravity: bound on M v_s^2 / kT (0: off) */
+    /* pinned, coupling I: angular velocity held at this value (torque); the
+     * last member: the calibration key hashes the members before it */
+    double pinned_spin[3];
 } pl_scene_coupling_t;
 
 #endif

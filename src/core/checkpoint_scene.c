@@ -130,6 +130,10 @@ static int at_default(const pl_key_t *k, const pl_scene_t *scene)
     case PL_KEY_BOOL:
     case PL_KEY_CHOICE: return *(const int *)base == (int)k->def;
     case PL_KEY_STRING: return !strcmp(base, k->def_str ? k->def_str : "");
+    case PL_KEY_REAL3: {
+        const double *v = (const double *)base;
+        return v[0] == k->def && v[1] == k->def && v[2] == k->def;
+    }
     default: return 0;
     }
 }

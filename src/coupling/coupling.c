@@ -32,6 +32,12 @@ int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err)
                         cs->flow_velocity[2] != 0.0))
         return pl_scene_fail(scene, err, OFF(coupling.flow_velocity), "coupling.flow_velocity",
                              "a held flow velocity needs coupling.pinned = true");
+    const double *sp = cs->pinned_spin;
+    if ((sp[0] != 0.0 || sp[1] != 0.0 || sp[2] != 0.0) && (!cs->pinned || cs->method != PL_COUPLE_HECHT1))
+        return pl_scene_fail(scene, err, OFF(coupling.pinned_spin), "coupling.pinned_spin",
+                             "[%g, %g, %g] needs coupling.pinned = true and coupling.method = \"hecht1\" "
+                             "(the only coupling whose surface carries the colloid's rotation to the fluid); "
+                             "allowed otherwise: [0, 0, 0]", sp[0], sp[1], sp[2]);
     if (!pl_colloid_integrator(scene->colloids.integrator)->inertial)
         return pl_scene_fail(scene, err, OFF(coupling.method), "coupling.method",
                              "colloids.integrator = \"brownian\" already stands for the solvent; "
@@ -81,9 +87,15 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
     /* coupled colloids exchange energy with the fluid: no NVE drift guard */
     if (cp->method != PL_COUPLE_NONE) sim->colloids->nve = 0;
     cp->pinned = cp->method != PL_COUPLE_NONE && sc->coupling.pinned;
-    if (cp->pinned) /* held fixed from the start */
-        for (size_t k = 0; k < nc; ++k)
-            col->vx[k] = col->vy[k] = col->vz[k] = col->wx[k] = col->wy[k] = col->wz[k] = 0.0;
+    if (cp->pinned) { /* held fixed from the start, turning at the held spin */
+        memcpy(cp->spin, sc->coupling.pinned_spin, sizeof cp->spin);
+        for (size_t k = 0; k < nc; ++k) {
+            col->vx[k] = col->vy[k] = col->vz[k] = 0.0;
+            col->wx[k] = cp->spin[0];
+            col->wy[k] = cp->spin[1];
+            col->wz[k] = cp->spin[2];
+        }
+    }
     const pl_coupling_row_t *row = pl_coupling_row(cp->method);
     int rc = row ? row->create(cp, sim, err) : 0;
     if (rc) {

@@ -57,7 +57,7 @@ static int coupling_stages(pl_sim_t *sim, pl_err_t *err)
 }
 
 /* ---- thermo columns ------------------------------------------------------ */
-static double v_drag(const pl_thermo_sample_t *s, int d) /* mean force per pinned colloid so far */
+static double v_drag(const pl_thermo_sample_t *s, int d) /* mean force (torque: d 3..5) per pinned colloid so far */
 {
     const pl_coupling_t *cp = pl_coupling_of(s->sim);
     double k = cp->pinned_time > 0 ? 1.0 / (cp->pinned_time * (double)s->sim->colloids->n) : 0.0;
@@ -67,14 +67,21 @@ static const pl_thermo_column_t pinned_cols[] = {
     {.name = "cpl_drag_x", .unit = "kT/a0", .value = v_drag, .arg = 0},
     {.name = "cpl_drag_y", .unit = "kT/a0", .value = v_drag, .arg = 1},
     {.name = "cpl_drag_z", .unit = "kT/a0", .value = v_drag, .arg = 2},
+    /* with a held spin (coupling.pinned_spin): the mean torque per colloid so far */
+    {.name = "cpl_torque_x", .unit = "kT", .value = v_drag, .arg = 3},
+    {.name = "cpl_torque_y", .unit = "kT", .value = v_drag, .arg = 4},
+    {.name = "cpl_torque_z", .unit = "kT", .value = v_drag, .arg = 5},
 };
+
+static int spins(const pl_coupling_t *cp) { return cp->spin[0] != 0.0 || cp->spin[1] != 0.0 || cp->spin[2] != 0.0; }
 
 static void coupling_columns(const pl_sim_t *sim, pl_thermo_table_t *t)
 {
-    if (!pl_coupling_of(sim)) return;
-    const pl_coupling_row_t *row = pl_coupling_row(pl_coupling_of(sim)->method);
+    const pl_coupling_t *cp = pl_coupling_of(sim);
+    if (!cp) return;
+    const pl_coupling_row_t *row = pl_coupling_row(cp->method);
     if (row && row->ncolumns) pl_thermo_add(t, row->columns, row->ncolumns);
-    if (pl_coupling_of(sim)->pinned) pl_thermo_add(t, pinned_cols, 3);
+    if (cp->pinned) pl_thermo_add(t, pinned_cols, spins(cp) ? 6 : 3);
 }
 
 /* /wall_impulse (walls) and group /coupling: the run counters

@@ -235,8 +235,9 @@ void pl_coupling_absorb_pinned(pl_coupling_t *cp, pl_colloid_t *c, double dt)
     for (size_t k = 0; k < c->n; ++k) { /* fixed order */
         double *v[6] = {c->vx, c->vy, c->vz, c->wx, c->wy, c->wz};
         for (int j = 0; j < 6; ++j) {
-            cp->impulse[j] += (j < 3 ? c->mass[k] : c->inertia[k]) * v[j][k];
-            v[j][k] = 0.0;
+            const double held = j < 3 ? 0.0 : cp->spin[j - 3];
+            cp->impulse[j] += (j < 3 ? c->mass[k] : c->inertia[k]) * (v[j][k] - held);
+            v[j][k] = held;
         }
     }
     cp->pinned_time += dt;

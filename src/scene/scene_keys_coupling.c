@@ -50,6 +50,10 @@ static const pl_key_t coupling_keys[] = {
      "a0 / t0", "pinned: the fluid's mean velocity is set to this value after every collision "
                 "step (the momentum the pinned colloids take is given back uniformly), so the "
                 "drag is measured at a set flow velocity v_inf (PL Eq. 39); 0: off"},
+    {"pinned_spin", PL_KEY_REAL3, OFF(pinned_spin), -1e3, 1e3, PL_KEY_FP_SET, NULL, 0, NULL,
+     "1 / t0", "pinned, coupling I: the colloids turn at this angular velocity, held after every "
+               "collision step; the mean torque the fluid exerts on them is written to thermo.tsv "
+               "(a stick sphere: -8 pi eta R^3 Omega); 0: held still"},
     {"sigma_cf", PL_KEY_REAL, OFF(sigma_cf), 0, 1e3, 0, NULL, 0, NULL,
      "a0", "potential: colloid-fluid diameter sigma_cf of PL Eq. 17 (0: colloids.radius)"},
     {"epsilon_cf", PL_KEY_REAL, OFF(epsilon_cf), 0, 1e6, PL_KEY_MIN_OPEN, NULL, 2.5, NULL,

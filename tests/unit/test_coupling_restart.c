@@ -8,7 +8,8 @@
  * fails the comparison even where it would be 0.  Scenes: hecht1 between
  * moving no-slip walls with N_max = 1 (truncations, particles pushed through
  * a wall), hecht2 with Heyes and drift removal, potential between moving
- * walls, pinned colloids under a held flow (hecht1 and potential),
+ * walls, pinned colloids under a held flow (hecht1, turning at a held
+ * spin, and potential),
  * potential with lubrication (its random partner on). */
 #include <criterion/criterion.h>
 #include <stdio.h>
@@ -34,7 +35,8 @@ static const char *scenes[] = {
     "seed = 32;\n" BASE "coupling: { method = \"hecht2\"; drift_interval = 3; };\n"
     "thermostat: { type = \"heyes\"; };\n",
     "seed = 33;\n" BASE "coupling: { method = \"potential\"; sigma_cf = 1.8; };\n",
-    "seed = 34;\n" BASE "coupling: { method = \"hecht1\"; pinned = true; flow_velocity = [0.1, 0.0, 0.0]; };\n",
+    "seed = 34;\n" BASE "coupling: { method = \"hecht1\"; pinned = true; flow_velocity = [0.1, 0.0, 0.0];\n"
+    "  pinned_spin = [0.0, 0.02, 0.05]; };\n",
     "seed = 35;\n" BASE "coupling: { method = \"potential\"; pinned = true; flow_velocity = [0.0, 0.1, 0.0]; };\n",
     /* potential with lubrication and its random partner (keyed by the MD
      * step: the step's forces recomputed at its start draw the same
@@ -91,6 +93,7 @@ static void assert_exercised(const pl_sim_t *sim, size_t s)
     if (s == 0) cr_assert_gt(cp->c1->truncations, 0, "scene %zu: no truncations", s);
     if (cp->method == PL_COUPLE_POTENTIAL) cr_assert_gt(cp->pot->near_total, 0, "scene %zu: nothing selected", s);
     if (cp->pinned) cr_assert(cp->pinned_time > 0 && cp->impulse[0] != 0.0, "scene %zu: no drag", s);
+    if (cp->spin[2] != 0.0) cr_assert(cp->impulse[5] * cp->spin[2] < 0.0, "scene %zu: no torque against the spin", s);
     if (walled[s]) cr_assert(sim->wall_impulse[1][0] != 0.0, "scene %zu: no wall impulse", s);
 }
 
