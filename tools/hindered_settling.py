@@ -20,6 +20,7 @@ import sys
 import numpy as np
 
 from h5md_lateral_diffusion import unwrapped
+from validation.report_section import write_section
 
 BEGIN = "<!-- hindered settling: {} (tools/hindered_settling.py) -->"  # .format(study name)
 END = "<!-- end of the hindered settling section: {} -->"
@@ -283,18 +284,8 @@ def main():
     png = os.path.join(os.path.dirname(report) or ".", os.path.basename(os.path.normpath(study)) + ".png")
     new = "\n".join(section(study, commit, png))
     print(new)
-    text = open(report).read() if os.path.exists(report) else ""
     name = os.path.basename(os.path.normpath(study))
-    begin, end = BEGIN.format(name), END.format(name)
-    if begin in text and end in text:
-        a, b = text.index(begin), text.index(end) + len(end)
-        text = text[:a] + new + text[b:]
-    else:
-        text = text.rstrip("\n") + "\n\n" + new + "\n"
-    tmp = report + ".tmp"
-    with open(tmp, "w") as f:
-        f.write(text)
-    os.replace(tmp, report)
+    write_section(report, BEGIN.format(name), END.format(name), new)
 
 
 if __name__ == "__main__":

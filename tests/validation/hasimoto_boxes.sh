@@ -182,8 +182,8 @@ while IFS='|' read -r what good msg; do
   elif [ "$good" = 1 ]; then ok "$msg"; else bad "$msg"; fi
 done <<< "$out"
 if [ -n "$MD" ] && [ -n "${mdline:-}" ]; then
-  $PY "$ROOT/tools/validation/hydro_section.py" "$MD" "$mdline" "$(git -C "$ROOT" rev-parse --short HEAD)" \
-    || bad "writing the section into $MD"
+  (cd "$ROOT/tools" && $PY -m validation.hydro_section "$MD" "$mdline" "$(git -C "$ROOT" rev-parse --short HEAD)" \
+    ) || bad "writing the section into $MD"
 fi
 echo "hasimoto: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -113,8 +113,8 @@ else
   bad "the runs do not resolve the two stresses ($p_plain - $p_asym < 6 x $rho_se): run longer (PL_ROT_STEPS)"
 fi
 if [ -n "$MD" ]; then
-  $PY "$ROOT/tools/validation/rotating_section.py" "$MD" "$line" "$(git -C "$ROOT" rev-parse --short HEAD)" "$cpu" "$STEPS" \
-    || bad "report section"
+  (cd "$ROOT/tools" && $PY -m validation.rotating_section "$MD" "$line" "$(git -C "$ROOT" rev-parse --short HEAD)" \
+    "$cpu" "$STEPS") || bad "report section"
 fi
 echo "rotating colloid: $pass passed, $fail failed ($cpu CPU-s)"
 [ $fail -eq 0 ]

@@ -3,9 +3,10 @@ the numbers tests/validation/hasimoto_boxes.sh measured (one '|'-separated line)
 (replaced where the report has it, else appended).  tools/validation_report.py keeps the section when it
 rewrites the report.
 
-    python3 tools/validation/hydro_section.py REPORT.md LINE COMMIT"""
-import os
+    cd tools && python3 -m validation.hydro_section REPORT.md LINE COMMIT"""
 import sys
+
+from validation.report_section import write_section
 
 BEGIN = "<!-- collective hydrodynamics: tests/validation/hasimoto_boxes.sh -->"
 END = "<!-- end of the collective hydrodynamics section -->"
@@ -73,18 +74,7 @@ def cell_lines(cells, rhc, rse):
 
 def main():
     report, line, commit = sys.argv[1], sys.argv[2], sys.argv[3]
-    text = open(report).read() if os.path.exists(report) else ""
-    new = "\n".join(section(line, commit))
-    if BEGIN in text and END in text:
-        a, b = text.index(BEGIN), text.index(END) + len(END)
-        text = text[:a] + new + text[b:]
-    else:
-        text = text.rstrip("\n") + "\n\n" + new + "\n"
-    tmp = report + ".tmp"
-    with open(tmp, "w") as f:
-        f.write(text)
-    os.replace(tmp, report)
-
+    write_section(report, BEGIN, END, "\n".join(section(line, commit)))
 
 if __name__ == "__main__":
     main()

@@ -3,9 +3,10 @@ validation/REPORT.md, from the numbers tests/validation/rotating_colloid.sh meas
 written between its markers (replaced where the report has it, else appended).  tools/validation_report.py keeps
 the section when it rewrites the report.
 
-    python3 tools/validation/rotating_section.py REPORT.md LINE COMMIT CPU STEPS"""
-import os
+    cd tools && python3 -m validation.rotating_section REPORT.md LINE COMMIT CPU STEPS"""
 import sys
+
+from validation.report_section import write_section
 
 BEGIN = "<!-- rotating colloid: tests/validation/rotating_colloid.sh -->"
 END = "<!-- end of the rotating colloid section -->"
@@ -43,18 +44,7 @@ def section(line, commit, cpu, steps):
 
 def main():
     report, line, commit, cpu, steps = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4]), float(sys.argv[5])
-    text = open(report).read() if os.path.exists(report) else ""
-    new = "\n".join(section(line, commit, cpu, steps))
-    if BEGIN in text and END in text:
-        a, b = text.index(BEGIN), text.index(END) + len(END)
-        text = text[:a] + new + text[b:]
-    else:
-        text = text.rstrip("\n") + "\n\n" + new + "\n"
-    tmp = report + ".tmp"
-    with open(tmp, "w") as f:
-        f.write(text)
-    os.replace(tmp, report)
-
+    write_section(report, BEGIN, END, "\n".join(section(line, commit, cpu, steps)))
 
 if __name__ == "__main__":
     main()
