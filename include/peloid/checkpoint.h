@@ -13,6 +13,8 @@
 #include "peloid/scene.h"
 #include "peloid/sim.h"
 
+struct pl_coupling; /* peloid/coupling.h */
+
 /* HDF5 checkpoint of the complete dynamic state: the fluid's
  * arrays (src/core/checkpoint.c), then each module's items in module order. */
 int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err);
@@ -53,11 +55,12 @@ int pl_ckpt_colloid_write(hid_t f, const pl_colloid_t *c);
 int pl_ckpt_colloid_read(hid_t f, pl_colloid_t *c, const pl_scene_t *scene, const char *path,
                          pl_err_t *err);
 
-/* Writes /wall_impulse (walls) and group /coupling (with a coupling): the run
- * counters (src/coupling/checkpoint_coupling.c). */
-int pl_ckpt_coupling_write(hid_t f, const struct pl_sim *sim);
+/* Writes /wall_impulse (walls) and group /coupling (with a coupling cp, the
+ * coupling module's state; NULL without): the run counters
+ * (src/coupling/checkpoint_coupling.c). */
+int pl_ckpt_coupling_write(hid_t f, const struct pl_sim *sim, const struct pl_coupling *cp);
 /* Reads them back; PL_ERR_INPUT naming what is missing. */
-int pl_ckpt_coupling_read(hid_t f, struct pl_sim *sim, const char *path, pl_err_t *err);
+int pl_ckpt_coupling_read(hid_t f, struct pl_sim *sim, struct pl_coupling *cp, const char *path, pl_err_t *err);
 
 /* Observer groups (src/observe/checkpoint_observe.c): creates group `name` with
  * the observer fingerprint (< 0 on failure). */

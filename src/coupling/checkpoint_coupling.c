@@ -19,14 +19,13 @@
 #include "peloid/coupling.h"
 #include "peloid/sim.h"
 
-int pl_ckpt_coupling_write(hid_t f, const pl_sim_t *sim)
+int pl_ckpt_coupling_write(hid_t f, const pl_sim_t *sim, const pl_coupling_t *cp)
 {
     int bad = 0;
     if (pl_srd_walls_measured(sim->srd)) {
         bad |= pl_ckpt_write_1d(f, "wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[0][0], 6);
         bad |= pl_ckpt_write_1d(f, "side_wall_impulse", H5T_NATIVE_DOUBLE, &sim->wall_impulse[2][0], 3);
     }
-    const pl_coupling_t *cp = pl_coupling_of(sim);
     if (!cp) return bad ? -1 : 0;
     hid_t g = pl_ckpt_group_create(f, "coupling");
     if (g < 0) return -1;
@@ -41,7 +40,7 @@ int pl_ckpt_coupling_write(hid_t f, const pl_sim_t *sim)
     return bad ? -1 : 0;
 }
 
-int pl_ckpt_coupling_read(hid_t f, pl_sim_t *sim, const char *path, pl_err_t *err)
+int pl_ckpt_coupling_read(hid_t f, pl_sim_t *sim, pl_coupling_t *cp, const char *path, pl_err_t *err)
 {
     const pl_scene_t *sc = &sim->scene;
     if (sc->box.walls_z != PL_WALLS_NONE && H5Lexists(f, "wall_impulse", H5P_DEFAULT) <= 0)
@@ -60,7 +59,6 @@ int pl_ckpt_coupling_read(hid_t f, pl_sim_t *sim, const char *path, pl_err_t *er
     for (int k = 0; k < 9; ++k)
         if (!isfinite(sim->wall_impulse[k / 3][k % 3]))
             return pl_err_set(err, PL_ERR_INPUT, "%s: wall impulse %d is not finite (corrupt checkpoint)", path, k);
-    pl_coupling_t *cp = pl_coupling_of(sim);
     if (!cp) return 0;
     hid_t g = H5Lexists(f, "coupling", H5P_DEFAULT) > 0 ? H5Gopen2(f, "coupling", H5P_DEFAULT) : -1;
     if (g < 0) return pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint has no /coupling group (the scene has a coupling)", path);

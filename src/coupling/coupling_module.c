@@ -86,7 +86,7 @@ static void coupling_columns(const pl_sim_t *sim, pl_thermo_table_t *t)
 
 /* /wall_impulse (walls) and group /coupling: the run counters
  * (src/coupling/checkpoint_coupling.c); written for any scene with walls. */
-static int coupling_ckpt_write(int64_t f, const pl_sim_t *sim) { return pl_ckpt_coupling_write((hid_t)f, sim); }
+static int coupling_ckpt_write(int64_t f, const pl_sim_t *sim) { return pl_ckpt_coupling_write((hid_t)f, sim, pl_coupling_of(sim)); }
 
 static int coupling_ckpt_read(int64_t f, pl_sim_t *sim, const char *path, pl_err_t *err)
 {
@@ -94,7 +94,7 @@ static int coupling_ckpt_read(int64_t f, pl_sim_t *sim, const char *path, pl_err
      * coupled colloids exchange energy with the fluid, no NVE drift guard
      * (as pl_coupling_create decided) */
     if (sim->colloids && pl_coupling_of(sim) && pl_coupling_of(sim)->method != PL_COUPLE_NONE) sim->colloids->nve = 0;
-    return pl_ckpt_coupling_read((hid_t)f, sim, path, err);
+    return pl_ckpt_coupling_read((hid_t)f, sim, pl_coupling_of(sim), path, err);
 }
 
 /* The method's summary.json entries (its row). */
