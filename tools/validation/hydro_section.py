@@ -49,7 +49,7 @@ def section(line, commit):
            "depend on the box beyond the SE.  ")
         + f"R_h/R = {rhc:.2f}: box corrections, hindered settling and lubrication have the strength of a sphere "
         "of R_h.  Not run here: coupling I and the potential coupling, and the collective settling (K, "
-        "Richardson–Zaki: see the Fig. 4 verdict above).", ""] + cell_lines(cells, rhc, rhc * Is / Ic) + [END]
+        "Richardson–Zaki: the Fig. 4 verdict above and the hindered-settling sections below).", ""] + cell_lines(cells, rhc, rhc * Is / Ic) + [END]
 
 
 def cell_lines(cells, rhc, rse):
