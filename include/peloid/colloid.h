@@ -151,6 +151,10 @@ double pl_colloid_pair_cutoff(const pl_colloid_pair_params_t *p, double rmax);
  * colloids.max_overlap is PL_ERR_INPUT. */
 int pl_colloid_create(const pl_scene_t *scene, int nthreads, pl_colloid_t **out, pl_err_t *err);
 void pl_colloid_free(pl_colloid_t *c);
+/* The colloids' port for a component that exchanges energy with them (a
+ * coupling): their energy is no longer conserved, so the NVE drift guard
+ * is off (src/colloid/colloid_state.c). */
+void pl_colloid_exchange_energy(pl_colloid_t *c);
 
 /* colloids.init_file read strictly into c's positions (and radii, from a
  * fourth column) for pl_colloid_create (src/colloid/colloid_init_file.c has

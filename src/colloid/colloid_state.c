@@ -486,3 +486,5 @@ void pl_colloid_momentum(const pl_colloid_t *c, double p[3], double l[3])
         l[2] += x * py - y * px + c->inertia[i] * c->wz[i];
     }
 }
+
+void pl_colloid_exchange_energy(pl_colloid_t *c) { c->nve = 0; }

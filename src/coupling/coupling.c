@@ -85,7 +85,7 @@ int pl_coupling_create(pl_sim_t *sim, pl_coupling_t **out, pl_err_t *err)
         memcpy(sim->fluid_accel, cp->fluid_accel, sizeof sim->fluid_accel); /* the streaming's */
     }
     /* coupled colloids exchange energy with the fluid: no NVE drift guard */
-    if (cp->method != PL_COUPLE_NONE) sim->colloids->nve = 0;
+    if (cp->method != PL_COUPLE_NONE) pl_colloid_exchange_energy(sim->colloids);
     cp->pinned = cp->method != PL_COUPLE_NONE && sc->coupling.pinned;
     if (cp->pinned) { /* held fixed from the start, turning at the held spin */
         memcpy(cp->spin, sc->coupling.pinned_spin, sizeof cp->spin);

@@ -93,7 +93,8 @@ static int coupling_ckpt_read(int64_t f, pl_sim_t *sim, const char *path, pl_err
     /* the colloid set-up the reader redoes knows nothing of the coupling:
      * coupled colloids exchange energy with the fluid, no NVE drift guard
      * (as pl_coupling_create decided) */
-    if (sim->colloids && pl_coupling_of(sim) && pl_coupling_of(sim)->method != PL_COUPLE_NONE) sim->colloids->nve = 0;
+    if (sim->colloids && pl_coupling_of(sim) && pl_coupling_of(sim)->method != PL_COUPLE_NONE)
+        pl_colloid_exchange_energy(sim->colloids);
     return pl_ckpt_coupling_read((hid_t)f, sim, pl_coupling_of(sim), path, err);
 }
 
