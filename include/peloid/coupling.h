@@ -200,11 +200,14 @@ int pl_coupling_mean_force_on(pl_coupling_t *cp, size_t ncolloids, pl_err_t *err
 /* That mean (3 x ncolloids, x block first), or NULL when not kept. */
 const double *pl_coupling_mean_force(const pl_coupling_t *cp);
 
-/* Pinned colloids: their velocities (changed by a coupling stage) are taken
- * back to zero and the momentum they had gained is added to cp->impulse. */
 /* The run's coupling (NULL without one): the coupling module's state
  * (src/coupling/coupling_module.c). */
 pl_coupling_t *pl_coupling_of(const struct pl_sim *sim);
+
+/* Pinned colloids: their velocities (changed by a coupling stage) are taken
+ * back to zero, their angular velocities to the held spin (cp->spin), and
+ * the momentum and angular momentum they had gained are added to
+ * cp->impulse. */
 void pl_coupling_absorb_pinned(pl_coupling_t *cp, struct pl_colloid *c, double dt);
 
 /* Total momentum of fluid + colloids (fixed-order sums) and total mass. */

@@ -42,12 +42,13 @@ static int add(pl_sim_t *sim, const char *name, pl_stage_fn fn, long long interv
 static int coupling_stages(pl_sim_t *sim, pl_err_t *err)
 {
     const pl_scene_t *sc = &sim->scene;
-    if (!pl_coupling_of(sim)) return 0;
-    const pl_coupling_row_t *row = pl_coupling_row(pl_coupling_of(sim)->method);
+    const pl_coupling_t *cp = pl_coupling_of(sim);
+    if (!cp) return 0;
+    const pl_coupling_row_t *row = pl_coupling_row(cp->method);
     int rc = row ? row->add_stages(sim, err) : 0;
     if (rc) return rc;
     const double *fv = sc->coupling.flow_velocity;
-    if (pl_coupling_of(sim)->pinned && (fv[0] != 0.0 || fv[1] != 0.0 || fv[2] != 0.0) &&
+    if (cp->pinned && (fv[0] != 0.0 || fv[1] != 0.0 || fv[2] != 0.0) &&
         (rc = add(sim, "flow-hold", pl_coupling_stage_flow, 1, PL_SLOT_CONSTRAIN, err)))
         return rc;
     /* momentum is not conserved with walls: nothing to remove */
@@ -93,17 +94,18 @@ static int coupling_ckpt_read(int64_t f, pl_sim_t *sim, const char *path, pl_err
     /* the colloid set-up the reader redoes knows nothing of the coupling:
      * coupled colloids exchange energy with the fluid, no NVE drift guard
      * (as pl_coupling_create decided) */
-    if (sim->colloids && pl_coupling_of(sim) && pl_coupling_of(sim)->method != PL_COUPLE_NONE)
-        pl_colloid_exchange_energy(sim->colloids);
-    return pl_ckpt_coupling_read((hid_t)f, sim, pl_coupling_of(sim), path, err);
+    pl_coupling_t *cp = pl_coupling_of(sim);
+    if (sim->colloids && cp && cp->method != PL_COUPLE_NONE) pl_colloid_exchange_energy(sim->colloids);
+    return pl_ckpt_coupling_read((hid_t)f, sim, cp, path, err);
 }
 
 /* The method's summary.json entries (its row). */
 static int coupling_finish(pl_sim_t *sim, const char *dir, json_t *doc, pl_err_t *err)
 {
     (void)dir;
-    const pl_coupling_row_t *row = pl_coupling_of(sim) ? pl_coupling_row(pl_coupling_of(sim)->method) : NULL;
-    return row && row->finish ? row->finish(pl_coupling_of(sim), sim, doc, err) : 0;
+    pl_coupling_t *cp = pl_coupling_of(sim);
+    const pl_coupling_row_t *row = cp ? pl_coupling_row(cp->method) : NULL;
+    return row && row->finish ? row->finish(cp, sim, doc, err) : 0;
 }
 
 const pl_module_t pl_coupling_module = {
