@@ -178,14 +178,14 @@ static int grow(void **buf, size_t *cap, size_t n, size_t sz)
  * (the margin's share for them) plus twice the flight of the fastest
  * colloid at its present speed.  A function of the state: the same
  * selection after a restart. */
-static pl_coupling_reach_t particle_reach(const pl_sim_t *sim, double rc)
+static pl_coupling_reach_t particle_reach(const pl_sim_t *sim, const pl_coupling_t *cp, double rc)
 {
     const pl_scene_t *sc = &sim->scene;
     const pl_colloid_t *c = sim->colloids;
     const double T = sc->srd.dt;
     double g2 = 0.0, u = 0.0, cv2 = 0.0;
     for (int d = 0; d < 3; ++d) {
-        const double a = sc->fluid.body_force[d] + pl_coupling_of(sim)->fluid_accel[d]; /* the streaming's */
+        const double a = sc->fluid.body_force[d] + cp->fluid_accel[d]; /* the streaming's */
         g2 += a * a;
     }
     for (int w = 0; w < 2; ++w)
@@ -206,10 +206,10 @@ static pl_coupling_reach_t particle_reach(const pl_sim_t *sim, double rc)
  * with their pairs into the buffers of the MD step, grown as needed; their
  * state from stage when the selection ran inside the streaming, else from
  * the fluid. */
-static int gather_selection(pl_sim_t *sim, pl_coupling_potential_state_t *ps, const uint32_t *cs,
-                            const int32_t *cl, const pl_coupling_stage_t *stage, pl_err_t *err)
+static int gather_selection(pl_sim_t *sim, const pl_coupling_t *cp, const uint32_t *cs, const int32_t *cl,
+                            const pl_coupling_stage_t *stage, pl_err_t *err)
 {
-    const pl_coupling_t *cp = pl_coupling_of(sim);
+    pl_coupling_potential_state_t *ps = cp->pot;
     const pl_colloid_t *c = sim->colloids;
     const pl_coupling_colloids_t v = sel_view(ps, c);
     size_t nn = 0, np = 0;
@@ -286,7 +286,7 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
     ps->lk_valid = 0;
     ps->far2 = 0.0;
     ps->armed_step = -1;
-    const pl_coupling_reach_t reach = particle_reach(sim, rc);
+    const pl_coupling_reach_t reach = particle_reach(sim, cp, rc);
     ps->budget = reach.budget;
     pl_coupling_colloids_t v = sel_view(ps, c);
     const uint32_t *cells = pl_srd_cells(sim->srd);
@@ -314,13 +314,14 @@ int pl_coupling_stage_select(pl_sim_t *sim, void *ctx, pl_err_t *err)
     if (rc2) return rc2;
     pl_coupling_find(f, &sim->grid, &v, &reach, ps->lk.start, ps->lk.list, cp->nthreads, ps->found, ps->found_cell,
                      ps->counts);
-    return gather_selection(sim, ps, (const uint32_t *)ps->lk.start /* offsets >= 0 */, ps->lk.list, NULL, err);
+    return gather_selection(sim, cp, (const uint32_t *)ps->lk.start /* offsets >= 0 */, ps->lk.list, NULL, err);
 }
 
 /* The MD step's start: the selection the streaming ran, gathered. */
-static int gather_armed(pl_sim_t *sim, pl_coupling_potential_state_t *ps, pl_err_t *err)
+static int gather_armed(pl_sim_t *sim, const pl_coupling_t *cp, pl_err_t *err)
 {
-    const int nthreads = pl_coupling_of(sim)->nthreads;
+    pl_coupling_potential_state_t *ps = cp->pot;
+    const int nthreads = cp->nthreads;
     if (ps->armed_step != sim->step || sim->stream_pre_hook)
         return pl_err_set(err, PL_ERR_INTERNAL, "the potential coupling's selection did not run in the streaming of step %lld",
                           sim->step);
@@ -330,7 +331,7 @@ static int gather_armed(pl_sim_t *sim, pl_coupling_potential_state_t *ps, pl_err
     if (missed)
         return pl_err_set(err, PL_ERR_INTERNAL, "the potential coupling's selection had no room for %llu particles",
                           (unsigned long long)missed);
-    return gather_selection(sim, ps, ps->cstart, ps->clist, ps->stage, err);
+    return gather_selection(sim, cp, ps->cstart, ps->clist, ps->stage, err);
 }
 
 /* Fluid forces on the selected particles and the colloids (the colloids'
@@ -435,7 +436,7 @@ int pl_coupling_stage_potential_md(pl_sim_t *sim, void *ctx, pl_err_t *err)
     pl_colloid_t *c = sim->colloids;
     pl_fluid_t *f = &sim->fluid;
     const pl_scene_t *sc = &sim->scene;
-    if (ps->armed_step >= 0 && gather_armed(sim, ps, err)) return err->code;
+    if (ps->armed_step >= 0 && gather_armed(sim, cp, err)) return err->code;
     double g[3];
     for (int d = 0; d < 3; ++d) g[d] = sc->fluid.body_force[d] + cp->fluid_accel[d];
     /* undo the free streaming of the selected particles, and the wall
