@@ -19,7 +19,7 @@ import sys
 
 import numpy as np
 
-from h5md_lateral_diffusion import unwrapped
+from h5md_settling import block_falls
 from validation.report_section import write_section
 
 BEGIN = "<!-- hindered settling: {} (tools/hindered_settling.py) -->"  # .format(study name)
@@ -63,25 +63,11 @@ def k_rp(x):
 
 
 def h5_slip(run, t_from, blocks=8):
-    """u from colloids.h5 alone over t >= t_from: (u, SE from `blocks` blocks, first half, second half, their SEs)."""
-    s = json.load(open(os.path.join(run, "summary.json")))
-    import h5py
-    with h5py.File(os.path.join(run, "colloids.h5"), "r") as f:
-        mass = f["particles/colloids/mass"][()]
-        m_f = float(f["parameters"].attrs["m_f"]) * float(f["parameters"].attrs["energy_scale"])
-    t, r = unwrapped(os.path.join(run, "colloids.h5"))
-    sel = t >= t_from
-    t, z = t[sel], r[sel, :, 2].mean(axis=1)
-    rel = 1.0 + mass.sum() / (s["fluid_particles"] * m_f)  # the fluid's counter-flow: total momentum zero
-
-    def fall(i0, i1):
-        return -(z[i1] - z[i0]) / (t[i1] - t[i0]) * rel
-
-    edges = np.linspace(0, len(t) - 1, blocks + 1).astype(int)
-    vb = np.array([fall(edges[b], edges[b + 1]) for b in range(blocks)])
+    """u from colloids.h5 alone over t >= t_from (tools/h5md_settling.py): (u, its SE from `blocks` blocks, the mean
+    of the first half of the blocks, of the second half, and the SE of each half)."""
+    vb, _ = block_falls(run, blocks, t_from)
     h = blocks // 2
-    se_half = vb.std(ddof=1) / math.sqrt(h)
-    return (fall(0, len(t) - 1), vb.std(ddof=1) / math.sqrt(blocks), vb[:h].mean(), vb[h:].mean(), se_half)
+    return vb.mean(), vb.std(ddof=1) / math.sqrt(blocks), vb[:h].mean(), vb[h:].mean(), vb.std(ddof=1) / math.sqrt(h)
 
 
 def points(study):
