@@ -27,16 +27,8 @@
 # one colloid per box in 5 replicas mapped this suspension 18-24 % faster
 # than it diffused (10 seeds x 6000 steps: -24 % +- 2 %).
 set -u
-PELOID=$(realpath "${1:-bin/peloid}")
-ROOT=$(realpath "$(dirname "$0")/../..")
-PY=/usr/bin/python3
-T=$(mktemp -d /tmp/peloid-calc1.XXXXXX)
-trap 'rm -rf "$T"' EXIT
-cd "$T"
+SUITE=calc1; source "$(dirname "$0")/../support/validation_suite.sh"
 export PELOID_CACHE=$T/cache
-pass=0; fail=0
-ok()  { pass=$((pass+1)); echo "  ok   $1"; }
-bad() { fail=$((fail+1)); echo "  FAIL $1"; }
 . "$ROOT/tests/support/calibrated_check.sh"
 echo "== coupling-true time of coupling I"
 

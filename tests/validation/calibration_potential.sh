@@ -19,16 +19,8 @@
 # miss in this box: 1.878e-13 +- 0.044e-13 against 1.927e-13 (-2.6 %, SE
 # 2.4 %; 2026-12-06).
 set -u
-PELOID=$(realpath "${1:-bin/peloid}")
-ROOT=$(realpath "$(dirname "$0")/../..")
-PY=/usr/bin/python3
-T=$(mktemp -d /tmp/peloid-calpot.XXXXXX)
-trap 'rm -rf "$T"' EXIT
-cd "$T"
+SUITE=calpot; source "$(dirname "$0")/../support/validation_suite.sh"
 export PELOID_CACHE=$T/cache
-pass=0; fail=0
-ok()  { pass=$((pass+1)); echo "  ok   $1"; }
-bad() { fail=$((fail+1)); echo "  FAIL $1"; }
 . "$ROOT/tests/support/calibrated_check.sh"
 echo "== coupling-true time of the potential coupling"
 

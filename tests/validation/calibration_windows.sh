@@ -30,17 +30,9 @@
 #     runs).  Measured (8 seeds, 104 runs): 1.02 +- 0.07.
 # ~4 CPU-min (1 thread per run, two at a time).
 set -u
-PELOID=$(realpath "${1:-bin/peloid}")
-ROOT=$(realpath "$(dirname "$0")/../..")
-PY=/usr/bin/python3
+SUITE=calw; source "$(dirname "$0")/../support/validation_suite.sh"
 SEEDS=${PL_CALW_SEEDS:-6}
 STEPS=${PL_CALW_STEPS:-40000}
-T=$(mktemp -d /tmp/peloid-calw.XXXXXX)
-trap 'rm -rf "$T"' EXIT
-cd "$T"
-pass=0; fail=0
-ok()  { pass=$((pass+1)); echo "  ok   $1"; }
-bad() { fail=$((fail+1)); echo "  FAIL $1"; }
 echo "== calibration: lag windows and its SE (coupling II, the quickstart's model)"
 "$PELOID" params --json "$ROOT/scenes/quickstart.cfg" > q.json 2> q.err || { bad "params quickstart: $(tail -1 q.err)"; exit 1; }
 for s in $(seq 1 "$SEEDS"); do

@@ -42,18 +42,8 @@
 # the steps.  With --md FILE the result is also written as a markdown
 # section into FILE between its markers (validation/REPORT.md).
 set -u
-PELOID=$(realpath "${1:-bin/peloid}")
-MD=""
-[ "${2:-}" = "--md" ] && MD=$(realpath "$3")
-ROOT=$(realpath "$(dirname "$0")/../..")
-PY=/usr/bin/python3
+SUITE=hasimoto; source "$(dirname "$0")/../support/validation_suite.sh"
 SCALE=${PL_HASI_SCALE:-1}
-T=$(mktemp -d /tmp/peloid-hasimoto.XXXXXX)
-trap 'rm -rf "$T"' EXIT
-cd "$T"
-pass=0; fail=0
-ok()  { pass=$((pass+1)); echo "  ok   $1"; }
-bad() { fail=$((fail+1)); echo "  FAIL $1"; }
 echo "== Hasimoto: the colloid D in two boxes (coupling II, the quickstart's model)"
 "$PELOID" params --json "$ROOT/scenes/quickstart.cfg" > q.json 2> q.err || { bad "params quickstart: $(tail -1 q.err)"; exit 1; }
 runs=()

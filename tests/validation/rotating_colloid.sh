@@ -33,18 +33,8 @@
 # ~6.5 CPU-min (the two runs side by side, one thread each).
 #   bash tests/validation/rotating_colloid.sh PELOID [--md REPORT.md]
 set -u
-PELOID=$(realpath "${1:-bin/peloid}")
-MD=""
-[ "${2:-}" = "--md" ] && MD=$(realpath "$3")
-ROOT=$(realpath "$(dirname "$0")/../..")
-PY=/usr/bin/python3
+SUITE=rot; source "$(dirname "$0")/../support/validation_suite.sh"
 STEPS=${PL_ROT_STEPS:-40000}
-T=$(mktemp -d /tmp/peloid-rot.XXXXXX)
-trap 'rm -rf "$T"' EXIT
-cd "$T"
-pass=0; fail=0
-ok()  { pass=$((pass+1)); echo "  ok   $1"; }
-bad() { fail=$((fail+1)); echo "  FAIL $1"; }
 echo "== rotating colloid: the torque with and without angular-momentum conservation (MPC-AT, MPC-AT+a)"
 for r in mpc_at mpc_at_a; do
   cat > $r.cfg <<CFG
