@@ -23,15 +23,15 @@ import numpy as np
 
 
 def unwrapped(path):
-    """(t in s, unwrapped positions in m [frame, colloid, axis]) of a colloids.h5."""
+    """(t in s, unwrapped positions in m [frame, colloid, axis]) of a colloids.h5 (of a model-unit run: t0, a0)."""
     with h5py.File(path, "r") as f:
         g = f["particles/colloids"]
-        u = {"nm": 1e-9, "um": 1e-6, "m": 1.0}
-        pu = g["position/value"].attrs["unit"]
+        u = {"nm": 1e-9, "um": 1e-6, "m": 1.0, "a0": 1.0}  # a model-unit run stays in a0 and t0
+        pu = g["position/value"].attrs.get("unit", "a0")  # H5MD: no unit attribute in a model-unit run
         pu = pu.decode() if isinstance(pu, bytes) else pu
-        tu = g["position/time"].attrs["unit"]
+        tu = g["position/time"].attrs.get("unit", "t0")
         tu = tu.decode() if isinstance(tu, bytes) else tu
-        ls, ts = u[pu], {"ps": 1e-12, "ns": 1e-9, "s": 1.0}[tu]
+        ls, ts = u[pu], {"ps": 1e-12, "ns": 1e-9, "s": 1.0, "t0": 1.0}[tu]
         x, img = g["position/value"][()] * ls, g["image/value"][()]
         t = g["position/time"][()] * ts
         L = np.diag(g["box/edges/value"][0]) * ls

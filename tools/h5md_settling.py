@@ -23,14 +23,14 @@ from h5md_lateral_diffusion import unwrapped
 
 def block_falls(d, blocks=16, t_from=-np.inf):
     """The colloids' mean fall (-z, m/s) relative to the fluid in `blocks` equal blocks of the frames at t >= t_from
-    (s), and the frame count: the box-frame fall times 1 + N M / N_f (total momentum zero)."""
+    (s), and the frame count: the box-frame fall times 1 + N M / N_f (total momentum zero).  A model-unit run: a0/t0."""
     with h5py.File(d + "/colloids.h5", "r") as f:  # kinetic masses: the model's times the energy scale, as m_f's
         m_c = f["particles/colloids/mass"][()].sum()
-        m_f = float(f["parameters"].attrs["m_f"]) * float(f["parameters"].attrs["energy_scale"])
+        m_f = float(f["parameters"].attrs["m_f"]) * float(f["parameters"].attrs.get("energy_scale", 1.0))
     t, r = unwrapped(d + "/colloids.h5")
     sel = t >= t_from
     t, z = t[sel], r[sel, :, 2]
-    k = len(t) // blocks
+    k = (len(t) - 1) // blocks  # the last block ends at the last frame (n - 1), n a multiple of blocks too
     vb = np.array([-(z[(b + 1) * k, :] - z[b * k, :]).mean() / (t[(b + 1) * k] - t[b * k]) for b in range(blocks)])
     rel = 1.0 + m_c / (json.load(open(d + "/summary.json"))["fluid_particles"] * m_f)  # the fluid's counter-flow
     return vb * rel, len(t)
