@@ -17,6 +17,10 @@ typedef double pl_real;
 /* The one spelling of pi. */
 #define PL_PI 3.14159265358979323846
 
+/* A 3-vector key (a flow velocity, a spin, a wall velocity) that is set: any
+ * component non-zero. */
+static inline int pl_vec3_nonzero(const double v[3]) { return v[0] != 0.0 || v[1] != 0.0 || v[2] != 0.0; }
+
 /* For a function whose products gcc's SLP vectoriser fuses into vfmaddsub
  * (pairs a b - c, a b + c, as in a quaternion product) despite
  * -ffp-contract=off, one rounding fewer than the source: without SLP the

@@ -28,12 +28,11 @@ int pl_coupling_validate_scene(const pl_scene_t *scene, pl_err_t *err)
         return pl_scene_fail(scene, err, OFF(coupling.method), "coupling.method",
                              "a coupling needs colloids (colloids.count > 0) and fluid "
                              "(fluid.density > 0); allowed without them: \"none\"");
-    if (!cs->pinned && (cs->flow_velocity[0] != 0.0 || cs->flow_velocity[1] != 0.0 ||
-                        cs->flow_velocity[2] != 0.0))
+    if (!cs->pinned && pl_vec3_nonzero(cs->flow_velocity))
         return pl_scene_fail(scene, err, OFF(coupling.flow_velocity), "coupling.flow_velocity",
                              "a held flow velocity needs coupling.pinned = true");
     const double *sp = cs->pinned_spin;
-    if ((sp[0] != 0.0 || sp[1] != 0.0 || sp[2] != 0.0) && (!cs->pinned || cs->method != PL_COUPLE_HECHT1))
+    if (pl_vec3_nonzero(sp) && (!cs->pinned || cs->method != PL_COUPLE_HECHT1))
         return pl_scene_fail(scene, err, OFF(coupling.pinned_spin), "coupling.pinned_spin",
                              "[%g, %g, %g] needs coupling.pinned = true and coupling.method = \"hecht1\" "
                              "(the only coupling whose surface carries the colloid's rotation to the fluid); "

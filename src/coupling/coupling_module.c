@@ -48,7 +48,7 @@ static int coupling_stages(pl_sim_t *sim, pl_err_t *err)
     int rc = row ? row->add_stages(sim, err) : 0;
     if (rc) return rc;
     const double *fv = sc->coupling.flow_velocity;
-    if (cp->pinned && (fv[0] != 0.0 || fv[1] != 0.0 || fv[2] != 0.0) &&
+    if (cp->pinned && pl_vec3_nonzero(fv) &&
         (rc = add(sim, "flow-hold", pl_coupling_stage_flow, 1, PL_SLOT_CONSTRAIN, err)))
         return rc;
     /* momentum is not conserved with walls: nothing to remove */
@@ -74,7 +74,7 @@ static const pl_thermo_column_t pinned_cols[] = {
     {.name = "cpl_torque_z", .unit = "kT", .value = v_drag, .arg = 5},
 };
 
-static int spins(const pl_coupling_t *cp) { return cp->spin[0] != 0.0 || cp->spin[1] != 0.0 || cp->spin[2] != 0.0; }
+static int spins(const pl_coupling_t *cp) { return pl_vec3_nonzero(cp->spin); }
 
 static void coupling_columns(const pl_sim_t *sim, pl_thermo_table_t *t)
 {

@@ -145,7 +145,7 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
         const double *u = b->wall_velocity[w];
         const char *key = w ? "box.wall_velocity_top" : "box.wall_velocity_bottom";
         size_t off = w ? OFF(box.wall_velocity[1]) : OFF(box.wall_velocity[0]);
-        if ((u[0] != 0.0 || u[1] != 0.0 || u[2] != 0.0) && b->walls_z != PL_WALLS_NOSLIP)
+        if (pl_vec3_nonzero(u) && b->walls_z != PL_WALLS_NOSLIP)
             return pl_scene_fail(scene, err, off, key,
                                  "[%g, %g, %g] needs box.walls_z = \"noslip\" (%s); allowed "
                                  "otherwise: [0, 0, 0]", u[0], u[1], u[2],
