@@ -22,7 +22,9 @@ static inline const char *pl_couple_physical_name(int m)
     return m == PL_COUPLE_HECHT1 ? "I" : m == PL_COUPLE_HECHT2 ? "II" : m == PL_COUPLE_POTENTIAL ? "potential" : "none";
 }
 /* PL_BOUND_* (surface rule) and PL_PLACE_* (placement) of coupling I: in
- * kernel_enums.h, shared with kernels/coupling_reflect.c. */
+ * kernel_enums.h, shared with kernels/coupling_reflect.c.  The surface
+ * rules' names (coupling.boundary), indexed by PL_BOUND_*, NULL-terminated: */
+extern const char *const pl_coupling_boundary_names[];
 
 typedef struct {
     int method;            /* PL_COUPLE_* */

@@ -27,10 +27,11 @@ void pl_study_free(pl_study_t *study);
  * (NULL: out/<the scene's name>), named as the scene's run; replicas out of
  * 2..PL_STUDY_MAX_POINTS is refused ("replicas"). */
 int pl_study_of_scene(const char *scene, int replicas, const char *out_dir, pl_study_t **out, pl_err_t *err);
-/* The scene at path `scene` with one key set (key "section.key", value as
+/* The scene at path `scene` with n keys set (keys "section.key", values as
  * scene text, e.g. "\"II\""), as libconfig text (malloc'd, the caller
- * frees): what a study's point with that value runs (`peloid plan`). */
-int pl_study_scene_with(const char *scene, const char *key, const char *value, char **text, pl_err_t *err);
+ * frees): what a study's point with those values runs (`peloid plan`). */
+int pl_study_scene_with(const char *scene, int n, const char *const *keys, const char *const *values, char **text,
+                        pl_err_t *err);
 
 /* The runs of the study: its points times its replicas (study key
  * `replicas`, default 1).  Every k below is a run: replica k % replicas of

@@ -14,7 +14,10 @@
  *     every many-body hydrodynamic effect (box correction, hindered
  *     settling, D(phi), lubrication) then has the stated sphere's strength.
  *     A resolution without a calibration costs one calibration run; the
- *     shipped ones' durations are their files' wall_s.
+ *     shipped ones' durations are their files' wall_s.  The matched
+ *     resolution (R_h/R = 0.95) of coupling I follows from the law a
+ *     resolution study measured for the scene's fluid (advise_match.c), its
+ *     cost from that scene loaded at that cell size.
  *  2. Box: a periodic box slows D by 2.837 R_h / L (Hasimoto 1959, PL Eq.
  *     43); the edge that keeps that below the target is L >= 2.837 R_h /
  *     target.  Walls slow it further (not corrected).
@@ -42,6 +45,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "advise_match.h"
 #include "peloid/run.h"
 #include "peloid/scene.h"
 #include "peloid/sweep.h"
@@ -71,6 +75,7 @@ typedef struct {
     double cal_s_lo, cal_s_hi; /* the shipped calibrations' wall seconds */
     double step_s, n_fluid;    /* CPU seconds per collision step */
     double real_s;             /* CPU seconds per second of real time (t0 of the measured D) */
+    double step_real_s;        /* real seconds per collision step, t0 of the theory's D */
     long long substeps, n;
 } option_t;
 
@@ -135,16 +140,21 @@ static void option_of(const pl_scene_t *s, int k, const char *dir, option_t *o)
     o->step_s = step_cost(s, k);
     /* t0 matches the model D to the real one: a measured D larger by D_meas / D_theory lengthens t0 by it */
     const double fix = m->cg.d_col_calibrated > 0 ? 1.0 : o->nshipped ? 2.0 * o->rh / (o->rh_lo + o->rh_hi) : 1.0;
-    o->real_s = o->step_s / (s->srd.dt * m->t0 * fix);
+    o->step_real_s = s->srd.dt * m->t0;
+    o->real_s = o->step_s / (o->step_real_s * fix);
 }
 
-static void option_alt(const char *path, int k, const char *dir, option_t *o)
+/* Coupling k at the scene's resolution, or at a0/R = cell_size where that is > 0. */
+static void option_alt(const char *path, int k, double cell_size, const char *dir, option_t *o)
 {
-    char value[32], *text = NULL;
+    char value[32], cell[32], *text = NULL;
     pl_err_t e = {0, ""};
     snprintf(value, sizeof value, "\"%s\"", COST[k].name);
+    snprintf(cell, sizeof cell, "%.17g", cell_size);
+    const char *const keys[] = {"coarse_graining.coupling", "coarse_graining.cell_size"};
+    const char *const values[] = {value, cell};
     pl_scene_t *s = malloc(sizeof *s);
-    int rc = s ? pl_study_scene_with(path, "coarse_graining.coupling", value, &text, &e) : PL_ERR_NOMEM;
+    int rc = s ? pl_study_scene_with(path, cell_size > 0 ? 2 : 1, keys, values, &text, &e) : PL_ERR_NOMEM;
     if (!rc) rc = pl_scene_load_string(text, path, s, &e);
     free(text);
     if (rc) {
@@ -181,6 +191,57 @@ static void hms(double s, char *buf, size_t n)
     else snprintf(buf, n, "%.3g h", s / 3600);
 }
 
+/* The resolution at which coupling I's colloid is hydrodynamically the stated
+ * sphere (R_h/R = 0.95), from the law measured for the scene's fluid
+ * (advise_match.c), with its CPU per second of real time (t0 of the law's
+ * D: the theory's R_h is 1, the law's 0.95). */
+static void matched(const pl_scene_t *s, const char *path, const char *dir, FILE *f)
+{
+    pl_advise_match_t mt;
+    pl_advise_match(s, dir, &mt);
+    if (s->coupling.method != PL_COUPLE_HECHT1) {
+        fprintf(f, "   matched R_h = R: measured for coupling I only (its colloid is a stick sphere whose deficit falls "
+                   "with the resolution); coupling II's colloids are points in the collision and the potential "
+                   "coupling's surface is slip: neither reaches R_h = R by the cell size (validation/REPORT.md)\n");
+        return;
+    }
+    if (!mt.found) {
+        fprintf(f, "   matched R_h = R: no resolution law measured for this scene's fluid (srd.rule, alpha, grid_shift, "
+                   "particles per cell, mean free path, coupling.boundary); the measured fluids: %s/rh_resolution-*.json "
+                   "(validation/REPORT.md)\n", dir);
+        return;
+    }
+    char pts[200] = "";
+    for (int i = 0; i < mt.npoints; ++i) {
+        size_t l = strlen(pts);
+        snprintf(pts + l, sizeof pts - l, "%s%.3g at %g", i ? ", " : "", mt.rh[i], mt.R[i]);
+    }
+    const double rho = s->mapping.enabled && s->fluid.density > 0 ? s->colloids.mass_density / s->fluid.density : NAN;
+    char mass[160] = "";
+    if (isfinite(rho) && fabs(rho / mt.rho_ratio - 1.0) > 0.01)
+        snprintf(mass, sizeof mass, "; measured at colloid/fluid density %.3g, this scene's is %.3g (the friction "
+                                    "moves by a few %% with the colloid mass)", mt.rho_ratio, rho);
+    fprintf(f, "   matched R_h = R (coupling I in this fluid, study %s: R_h/R = %s a0 measured%s):\n", mt.study, pts,
+            mass);
+    if (!mt.have_match) {
+        fprintf(f, "     not reached: %s\n", mt.reason);
+        return;
+    }
+    option_t o;
+    memset(&o, 0, sizeof o);
+    option_alt(path, coupling_index(PL_COUPLE_HECHT1), 1.0 / mt.R_match, dir, &o);
+    if (!o.ok) {
+        fprintf(f, "     R_h/R = 0.95 at R = %.3g +- %.2g a0; that scene does not load: %s\n", mt.R_match, mt.R_match_se,
+                o.why);
+        return;
+    }
+    char cpu[32];
+    hms(o.step_s / (o.step_real_s * o.rh / 0.95), cpu, sizeof cpu);
+    fprintf(f, "     R_h/R = 0.95 at R = %.3g +- %.2g a0: coarse_graining.cell_size = %.3g (%.3g x the fluid per colloid "
+               "of a0/R = 0.5); CPU per s of real time %s (t0 of the law's D)\n",
+            mt.R_match, mt.R_match_se, 1.0 / mt.R_match, pow(0.5 * mt.R_match, 3.0), cpu);
+}
+
 int pl_plan_advise(const pl_scene_t *s, const char *path, double target, const char *shipped_dir, FILE *f,
                    pl_err_t *err)
 {
@@ -195,7 +256,7 @@ int pl_plan_advise(const pl_scene_t *s, const char *path, double target, const c
     memset(opt, 0, sizeof opt);
     for (int k = 0; k < NC; ++k) {
         if (k == own) option_of(s, k, shipped_dir, &opt[k]);
-        else option_alt(path, k, shipped_dir, &opt[k]);
+        else option_alt(path, k, 0.0, shipped_dir, &opt[k]);
     }
     const double R = m->real.radius, a0 = m->a0, t0 = m->t0, D = m->d_col_sim, N = (double)s->colloids.count;
     fprintf(f, "Plan for %s: target relative SE %.3g %% (colloid D%s)\n", path, 100 * target,
@@ -257,6 +318,7 @@ int pl_plan_advise(const pl_scene_t *s, const char *path, double target, const c
         fprintf(f, "   cheapest: coupling %s (%.3g x less CPU per second of real time than %s): its D is matched by "
                    "the calibration, its many-body hydrodynamics are those of a sphere of R_h\n",
                 COST[cheap].name, opt[best].real_s / opt[cheap].real_s, COST[best].name);
+    matched(s, path, shipped_dir, f);
     /* 2. box */
     /* R_h as measured: this scene's calibration, else the shipped calibrations' (their mid-range), else theory */
     const option_t *mine = &opt[own];

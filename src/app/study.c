@@ -382,12 +382,18 @@ int pl_study_of_scene(const char *scene, int replicas, const char *out_dir, pl_s
     return study_load(scene, text, out, err);
 }
 
-int pl_study_scene_with(const char *scene, const char *key, const char *value, char **text, pl_err_t *err)
+int pl_study_scene_with(const char *scene, int n, const char *const *keys, const char *const *values, char **text,
+                        pl_err_t *err)
 {
     const char *base = strrchr(scene, '/');
-    char study[1024];
-    snprintf(study, sizeof study, "scene = \"%.400s\";\npoints = { keys = [\"%.100s\"]; values = ( (%.200s) ); };\n",
-             base ? base + 1 : scene, key, value);
+    char study[2048], k[640] = "", v[640] = "";
+    for (int i = 0; i < n; ++i) {
+        size_t lk = strlen(k), lv = strlen(v);
+        snprintf(k + lk, sizeof k - lk, "%s\"%.100s\"", i ? ", " : "", keys[i]);
+        snprintf(v + lv, sizeof v - lv, "%s%.200s", i ? ", " : "", values[i]);
+    }
+    snprintf(study, sizeof study, "scene = \"%.400s\";\npoints = { keys = [%s]; values = ( (%s) ); };\n",
+             base ? base + 1 : scene, k, v);
     pl_study_t *st = NULL;
     int rc = study_load(scene, study, &st, err);
     if (!rc) rc = pl_study_point_scene(st, 0, NULL, text, err);

@@ -11,7 +11,7 @@
 static const char *const method_choices[] = { /* indexed by PL_COUPLE_* */
     [PL_COUPLE_NONE] = "none", [PL_COUPLE_HECHT1] = "hecht1", [PL_COUPLE_HECHT2] = "hecht2",
     [PL_COUPLE_POTENTIAL] = "potential", NULL};
-static const char *const boundary_choices[] = {"slip", "stick_stochastic", "stick_bounce", NULL};
+const char *const pl_coupling_boundary_names[] = {"slip", "stick_stochastic", "stick_bounce", NULL};
 static const char *const placement_choices[] = {"nearest", "entry", NULL};
 
 static const pl_key_t coupling_keys[] = {
@@ -21,7 +21,7 @@ static const pl_key_t coupling_keys[] = {
           "collision of their cell with mass-weighted mean velocity (Hecht Sec. V, Eq. 15); "
           "potential: WCA colloid-fluid forces (PL Eq. 17), integrated at the MD step for the "
           "fluid particles near colloids (radial: slip, PL Sec. III.B)"},
-    {"boundary", PL_KEY_CHOICE, OFF(boundary), 0, 0, 0, boundary_choices,
+    {"boundary", PL_KEY_CHOICE, OFF(boundary), 0, 0, 0, pl_coupling_boundary_names,
      PL_BOUND_STICK_STOCHASTIC, NULL,
      "-", "hecht1 surface rule for the velocity g relative to the surface point: slip (new "
           "normal g from Hecht Eq. 13, tangential kept: no torque), stick_stochastic (normal "

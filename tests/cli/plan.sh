@@ -7,8 +7,10 @@
 # potential coupling's 0.54-0.55), names the cheapest, sizes the box by
 # Hasimoto's 2.837 R_h / L, and turns the colloid D's SE ~0.35/sqrt(N) into
 # the replicas the target needs (1 %: 8 runs of 173 colloids) with the
-# `peloid run --replicas` line; a bad --target, a missing one and a scene
-# without a physical{} suspension are refused with exit 2 and one line.
+# `peloid run --replicas` line, and names the matched resolution of coupling
+# I from the measured law of the scene's fluid; a bad --target, a missing one
+# and a scene without a physical{} suspension are refused with exit 2 and
+# one line.
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
@@ -42,6 +44,32 @@ else bad "plan quickstart: $(head -3 "$T/plan.err")"; sed 's/^/    /' "$T/plan.t
 "$PELOID" plan scenes/quickstart.cfg --target 0.05 > "$T/p5.txt" 2>&1 && grep -q "one run meets the target" "$T/p5.txt" \
   && ! grep -q -- "--replicas" "$T/p5.txt" && ok "plan --target 0.05: one run of 173 colloids (2.7 %) meets it" \
   || bad "plan --target 0.05: $(grep 'Run length' "$T/p5.txt")"
+
+# the matched resolution (src/app/advise_match.c): coupling I in Hecht's fluid (hecht_table1) reads the law of
+# calibration/rh_resolution-c1_hecht.json and names the cell size at R_h/R = 0.95 (checked here from the file's
+# b and c); the default fluid of a physical coupling I scene names its study and why it is not reached; a fluid
+# no study measured says so; coupling II says the matched mode is coupling I's
+"$PELOID" plan scenes/hecht_table1.cfg --target 5% > "$T/h.txt" 2>&1
+if /usr/bin/python3 - "$T/h.txt" calibration/rh_resolution-c1_hecht.json <<'PY'
+import json, re, sys
+t, d = open(sys.argv[1]).read(), json.load(open(sys.argv[2]))
+m = re.search(r"study c1_hecht: .*\n +R_h/R = 0\.95 at R = ([0-9.]+) \+- [0-9.e-]+ a0: coarse_graining.cell_size = ([0-9.]+)", t)
+assert m, t
+law = d["law"]
+R = law["c"] / (1 / 0.95 - 1 - law["b"])
+assert abs(float(m.group(1)) - R) < 0.01 * R and abs(float(m.group(2)) - 1 / R) < 0.01 / R, (m.groups(), R)
+PY
+then ok "plan hecht_table1: matched R_h = R at the law's R/a0 (calibration/rh_resolution-c1_hecht.json)"
+else bad "plan hecht_table1 matched: $(grep -A1 matched "$T/h.txt" | head -3)"; fi
+grep -v -e '^srd:' -e 'particles_per_cell' -e 'mean_free_path' scenes/hecht_table1.cfg > "$T/default_fluid.cfg"
+sed 's/particles_per_cell = 2.5;/particles_per_cell = 3.0;/' scenes/hecht_table1.cfg > "$T/other_fluid.cfg"
+"$PELOID" plan "$T/default_fluid.cfg" --target 5% --calibrate never > "$T/d.txt" 2>&1
+"$PELOID" plan "$T/other_fluid.cfg" --target 5% --calibrate never > "$T/o.txt" 2>&1
+if grep -q "study c1_default: R_h/R = " "$T/d.txt" && grep -q "not reached: " "$T/d.txt" \
+   && grep -q "no resolution law measured for this scene's fluid" "$T/o.txt" \
+   && grep -q "matched R_h = R: measured for coupling I only" "$T/p5.txt"; then
+  ok "plan: the default fluid names its study and why 0.95 is not reached; an unmeasured fluid and coupling II say so"
+else bad "plan matched lines: $(grep matched "$T/d.txt" "$T/o.txt" "$T/p5.txt" | head -4)"; fi
 
 for a in "--target 0" "--target -5%" "--target abc" "--target 60%" "--target 0.6" "--target 5%%" "--target" ""; do
   # shellcheck disable=SC2086

@@ -1,0 +1,82 @@
+/* The hydrodynamically matched resolution of coupling I for `peloid plan`
+ * (issue 45).  A coupling I colloid's friction is its Stokes friction in
+ * series with the finite friction of the fluid's collisions with its surface
+ * (PL Eqs. 40-41), so its hydrodynamic radius R_h falls short of R by a
+ * share that shrinks with the resolution R/a0.  A resolution study measured
+ * R/R_h - 1 = b + c a0/R for one fluid (tools/rh_resolution.py, rules
+ * validation/RULES_rh_resolution.md, its section of validation/REPORT.md)
+ * and wrote calibration/rh_resolution-STUDY.json: the fluid, the points,
+ * the law and the R/a0 at which R_h/R = 0.95 (or why none).  A scene's fluid
+ * matches a file when its collision rule, rotation angle, grid shift,
+ * particles per cell, mean free path and coupling I surface rule are the
+ * file's; the colloid's mass density is reported beside it (the friction
+ * depends on the colloid mass by a few per cent, the rules' pilot runs). */
+#include "advise_match.h"
+
+#include <dirent.h>
+#include <jansson.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "peloid/collision_rule.h"
+
+static int near(double a, double b) { return fabs(a - b) <= 1e-9 * fmax(fabs(a), fabs(b)); }
+
+static double num(json_t *o, const char *key) { return json_is_number(json_object_get(o, key)) ? json_number_value(json_object_get(o, key)) : NAN; }
+
+static const char *str(json_t *o, const char *key)
+{
+    const char *v = json_string_value(json_object_get(o, key));
+    return v ? v : "";
+}
+
+/* The scene's model fluid is the file's. */
+static int same_fluid(const pl_scene_t *s, json_t *fl)
+{
+    const pl_collision_rule_t *rule = pl_collision_rule(s->srd.rule);
+    const double lambda = s->srd.dt * sqrt(s->fluid.temperature); /* PL Eq. 4, m_f = 1 */
+    return rule && !strcmp(str(fl, "rule"), rule->name) && near(num(fl, "alpha_deg"), s->srd.alpha_deg) &&
+           json_is_boolean(json_object_get(fl, "grid_shift")) &&
+           json_is_true(json_object_get(fl, "grid_shift")) == (s->srd.grid_shift != 0) &&
+           near(num(fl, "particles_per_cell"), s->fluid.density) && near(num(fl, "mean_free_path"), lambda) &&
+           !strcmp(str(fl, "boundary"), pl_coupling_boundary_names[s->coupling.boundary]);
+}
+
+static void read_law(json_t *doc, const char *name, pl_advise_match_t *m)
+{
+    json_t *fl = json_object_get(doc, "fluid"), *pts = json_object_get(doc, "points");
+    snprintf(m->study, sizeof m->study, "%.*s", (int)(strlen(name) - strlen("rh_resolution-") - strlen(".json")),
+             name + strlen("rh_resolution-"));
+    m->found = 1;
+    m->rho_ratio = num(fl, "mass_density") / num(fl, "particles_per_cell");
+    size_t i;
+    json_t *p;
+    json_array_foreach(pts, i, p)
+    {
+        if (m->npoints >= PL_MATCH_MAX_POINTS) break;
+        m->R[m->npoints] = num(p, "R_over_a0");
+        m->rh[m->npoints++] = num(p, "rh_over_R");
+    }
+    m->R_match = num(doc, "matched_R_over_a0");
+    m->R_match_se = num(doc, "matched_R_over_a0_se");
+    m->have_match = isfinite(m->R_match) && m->R_match > 0;
+    snprintf(m->reason, sizeof m->reason, "%s", str(doc, "reason"));
+}
+
+void pl_advise_match(const pl_scene_t *s, const char *dir, pl_advise_match_t *m)
+{
+    memset(m, 0, sizeof *m);
+    DIR *d = s->coupling.method == PL_COUPLE_HECHT1 ? opendir(dir) : NULL;
+    struct dirent *e;
+    while (d && !m->found && (e = readdir(d))) {
+        const size_t n = strlen(e->d_name);
+        if (strncmp(e->d_name, "rh_resolution-", 14) || n < 20 || strcmp(e->d_name + n - 5, ".json")) continue;
+        char path[1400];
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        json_t *doc = json_load_file(path, 0, NULL);
+        if (doc && same_fluid(s, json_object_get(doc, "fluid"))) read_law(doc, e->d_name, m);
+        json_decref(doc);
+    }
+    if (d) closedir(d);
+}

@@ -1,0 +1,25 @@
+/* The hydrodynamically matched resolution of coupling I for `peloid plan`
+ * (src/app/advise_match.c). */
+#ifndef PELOID_ADVISE_MATCH_H
+#define PELOID_ADVISE_MATCH_H
+
+#include "peloid/scene.h"
+
+enum { PL_MATCH_MAX_POINTS = 8 };
+
+typedef struct {
+    int found;                  /* a measured law for this scene's fluid */
+    char study[64];             /* its study (the file's name after rh_resolution-) */
+    int have_match;             /* the law reaches R_h/R = 0.95 */
+    double R_match, R_match_se; /* R/a0 where R_h/R = 0.95, its SE */
+    int npoints;                /* the measured points */
+    double R[PL_MATCH_MAX_POINTS], rh[PL_MATCH_MAX_POINTS];
+    double rho_ratio;           /* the study's colloid over fluid mass density */
+    char reason[200];           /* without a match: why (the file's words) */
+} pl_advise_match_t;
+
+/* Reads the laws in dir (calibration/rh_resolution-*.json) and fills *m for
+ * the scene's fluid (m->found = 0: none measured for it). */
+void pl_advise_match(const pl_scene_t *s, const char *dir, pl_advise_match_t *m);
+
+#endif
