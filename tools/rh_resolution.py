@@ -32,17 +32,29 @@ BEGIN = "<!-- rh resolution: {} (tools/rh_resolution.py) -->"  # .format(study n
 END = "<!-- end of the rh resolution section: {} -->"
 STUDIES = {
     "rh_resolution_c1_hecht": dict(
+        departure=None,
         rerun="p000 (R = 2 a0) run again with the binary of 119db37: thermo.tsv (all but the timing column) and "
               "colloids.h5's positions bit for bit the same as the study's",
         short="Hecht's fluid", fluid="Hecht's fluid (scenes/hecht_table1.cfg: M = 2.5 per cell, λ = 0.6 a0, ±90° about the axes, no grid "
               "shift)", calibration="calibration/calibration-9aa595c8f7cdb515.json"),
     "rh_resolution_c1_default": dict(
+        departure=None,
         rerun="p000 (R = 2 a0) run again with the binary of 119db37: thermo.tsv (all but the timing column) bit for "
               "bit the same as the study's",
         short="the default fluid", fluid="the default fluid of a physical coupling I scene (5 per cell, λ = 0.1 a0, 130° about random axes, "
               "grid shift)", calibration=None),
     "rh_resolution_c1_default_a": dict(
-        rerun=None, short="the default fluid with SRD+a", fluid="the default fluid (5 per cell, λ = 0.1 a0, 130° about random axes, "
+        rerun=None, short="the default fluid with SRD+a",
+        departure="the R = 4 a0 point (p002) was stopped by the fluid guard at step 36103 of 180000 (a fluid particle "
+                  "at 21 a0/t0; the thermo temperature had risen to 1.07 while the thermostat's kT_cell was 1), so "
+                  "R4 and R6 rest on two points.  Found by it: SRD+a with the rescaling thermostat is not at "
+                  "equilibrium.  A pure SRD+a fluid of these parameters (32³ cells, no colloid, 6000 steps, "
+                  "checkpoint read with h5py) has its cell-relative temperature at 1.002 (what the thermostat "
+                  "holds) but the kinetic energy of its cells' mean velocities at 1.28 kT per degree of freedom, "
+                  "a velocity kurtosis of 4.1 (Maxwell: 3) and speeds up to 8.7 thermal speeds; random_axis, the "
+                  "same run: 1.002, 1.002, 3.0, 5.1.  The viscosity used for R_h is SRD+a's derived one, not "
+                  "measured in these runs; so R6's verdict is **not settled** until SRD+a's thermostat is mended",
+        fluid="the default fluid (5 per cell, λ = 0.1 a0, 130° about random axes, "
               "grid shift) with SRD+a, the rotation that keeps each cell's angular momentum (its own viscosity)",
         calibration=None),
 }
@@ -255,9 +267,15 @@ def section(study, commit, png):
         b, C = (fb[0][0], math.sqrt(fb[1][0, 0])) if fb else (float("nan"), float("nan"))
         v6 = ("supported" if (fa and fa[4] > 0.05) or (fb and abs(b) <= 2 * C) else
               "refuted" if fb and b > 3 * C else "not decided")
-        r6 = [f"- **R6, the default fluid's offset as SRD's antisymmetric stress: {v6}.**  With SRD+a form (b)'s "
-              f"offset is b = {b:.3f} ± {C:.3f} (the default fluid's SRD: b = 0.142 ± 0.022, RULES R6); form (a) "
-              f"{'accepted' if fa and fa[4] > 0.05 else 'rejected'}."]
+        if info["departure"]:
+            v6 = f"not settled ({v6} by the rule)"
+        off = f"form (b)'s offset is b = {b:.3f} ± {C:.3f}" if fb else "form (b) has too few points"
+        r6 = [f"- **R6, the default fluid's offset as SRD's antisymmetric stress: {v6}.**  With SRD+a {off} (the "
+              f"default fluid's SRD: b = 0.142 ± 0.022, RULES R6); form (a) "
+              f"{'accepted' if fa and fa[4] > 0.05 else 'rejected'}; at R = 2 and 3 a0 SRD+a's colloid has "
+              f"R_h/R {rows[0]['rh']:.3f} and {rows[1]['rh']:.3f} against SRD's 0.655 and 0.712."]
+    if info["departure"]:
+        r6.append(f"- **Departure, stated:** {info['departure']}.")
     return [
         BEGIN.format(name), "",
         f"## Coupling I's hydrodynamic radius against the resolution: {info['short']}", "",
@@ -295,6 +313,9 @@ def law_file(study, commit):
     fa, fb = fits(rows)
     choice = next((f for f in (fa, fb) if f and f[4] > 0.05), None)
     need = needed(choice) if choice else None
+    unsettled = STUDIES[name]["departure"]
+    if unsettled:  # a law a departure leaves not settled names no resolution
+        need = None
     law = None
     if choice:
         b, C, chi2, dof, p = choice
@@ -313,8 +334,11 @@ def law_file(study, commit):
         "law": law,
         "matched_R_over_a0": need[0] if need else None,
         "matched_R_over_a0_se": need[1] if need else None,
-        "reason": None if need else ("neither form of the law is acceptable over the measured resolutions" if not choice
-                                     else "the accepted law's offset b leaves R_h/R below 0.95 at any resolution"),
+        "settled": not unsettled,
+        "reason": None if need else (
+            "not settled: SRD+a with the rescaling thermostat is not at equilibrium (validation/REPORT.md)" if unsettled
+            else "neither form of the law is acceptable over the measured resolutions" if not choice
+            else "the accepted law's offset b leaves R_h/R below 0.95 at any resolution"),
     }
     path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "calibration", f"rh_resolution-{name[len('rh_resolution_'):]}.json")
     tmp = path + ".tmp"

@@ -224,7 +224,7 @@ static void matched(const pl_scene_t *s, const char *path, const char *dir, FILE
     fprintf(f, "   matched R_h = R (coupling I in this fluid, study %s: R_h/R = %s a0 measured%s):\n", mt.study, pts,
             mass);
     if (!mt.have_match) {
-        fprintf(f, "     not reached: %s\n", mt.reason);
+        fprintf(f, "     no matched resolution: %s\n", mt.reason);
         return;
     }
     option_t o;

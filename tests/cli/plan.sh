@@ -47,7 +47,7 @@ else bad "plan quickstart: $(head -3 "$T/plan.err")"; sed 's/^/    /' "$T/plan.t
 
 # the matched resolution (src/app/advise_match.c): coupling I in Hecht's fluid (hecht_table1) reads the law of
 # calibration/rh_resolution-c1_hecht.json and names the cell size at R_h/R = 0.95 (checked here from the file's
-# b and c); the default fluid of a physical coupling I scene names its study and why it is not reached; a fluid
+# b and c); the default fluid of a physical coupling I scene names its study and why it has no match; a fluid
 # no study measured says so; coupling II says the matched mode is coupling I's
 "$PELOID" plan scenes/hecht_table1.cfg --target 5% > "$T/h.txt" 2>&1
 if /usr/bin/python3 - "$T/h.txt" calibration/rh_resolution-c1_hecht.json <<'PY'
@@ -65,10 +65,10 @@ grep -v -e '^srd:' -e 'particles_per_cell' -e 'mean_free_path' scenes/hecht_tabl
 sed 's/particles_per_cell = 2.5;/particles_per_cell = 3.0;/' scenes/hecht_table1.cfg > "$T/other_fluid.cfg"
 "$PELOID" plan "$T/default_fluid.cfg" --target 5% --calibrate never > "$T/d.txt" 2>&1
 "$PELOID" plan "$T/other_fluid.cfg" --target 5% --calibrate never > "$T/o.txt" 2>&1
-if grep -q "study c1_default: R_h/R = " "$T/d.txt" && grep -q "not reached: " "$T/d.txt" \
+if grep -q "study c1_default: R_h/R = " "$T/d.txt" && grep -q "no matched resolution: the accepted law's offset" "$T/d.txt" \
    && grep -q "no resolution law measured for this scene's fluid" "$T/o.txt" \
    && grep -q "matched R_h = R: measured for coupling I only" "$T/p5.txt"; then
-  ok "plan: the default fluid names its study and why 0.95 is not reached; an unmeasured fluid and coupling II say so"
+  ok "plan: the default fluid names its study and why it has no matched resolution; an unmeasured fluid and coupling II say so"
 else bad "plan matched lines: $(grep matched "$T/d.txt" "$T/o.txt" "$T/p5.txt" | head -4)"; fi
 
 for a in "--target 0" "--target -5%" "--target abc" "--target 60%" "--target 0.6" "--target 5%%" "--target" ""; do
