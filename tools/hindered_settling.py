@@ -14,13 +14,12 @@ tools/validation_report.py to keep."""
 import json
 import math
 import os
-import subprocess
 import sys
 
 import numpy as np
 
 from h5md_settling import block_falls
-from validation.report_section import write_section
+from validation.report_section import sections_in, study_section_main
 
 BEGIN = "<!-- hindered settling: {} (tools/hindered_settling.py) -->"  # .format(study name)
 END = "<!-- end of the hindered settling section: {} -->"
@@ -49,12 +48,7 @@ HASIMOTO = 2.837
 
 def sections(text):
     """The hindered-settling sections in a report's text, each from its begin to its end marker."""
-    out = []
-    for name in STUDIES:
-        b, e = BEGIN.format(name), END.format(name)
-        if b in text and e in text:
-            out.append(text[text.index(b):text.index(e) + len(e)])
-    return out
+    return sections_in(text, STUDIES, BEGIN, END)
 
 
 def k_rp(x):
@@ -264,14 +258,7 @@ def section(study, commit, png):
 
 
 def main():
-    study, report = sys.argv[1], sys.argv[2]
-    commit = sys.argv[3] if len(sys.argv) > 3 else subprocess.run(
-        ["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
-    png = os.path.join(os.path.dirname(report) or ".", os.path.basename(os.path.normpath(study)) + ".png")
-    new = "\n".join(section(study, commit, png))
-    print(new)
-    name = os.path.basename(os.path.normpath(study))
-    write_section(report, BEGIN.format(name), END.format(name), new)
+    study_section_main(section, BEGIN, END, sys.argv)
 
 
 if __name__ == "__main__":

@@ -11,22 +11,21 @@ calibration's R_h/R beside the point at R = 2 a0 (R5).
 
     python3 tools/rh_resolution.py OUT/STUDY REPORT.md [COMMIT]     (prints the section; exit 0)
 
-STUDY is one of STUDIES (its name is the folder's).  It also writes calibration/rh_resolution-X.json (X: the study name after rh_resolution_): the
-fluid, the points and the law (or null, with the reason), which `peloid plan` reads to name the resolution a
-5 % match needs for a scene in that fluid (src/app/advise_match.c).  sections(text) lists the sections a report
-holds, for tools/validation_report.py to keep."""
+STUDY is one of STUDIES (its name is the folder's).  It also writes calibration/rh_resolution-X.json (X: the
+study's name after rh_resolution_): the fluid, the points and the law (or null, with the reason), which
+`peloid plan` reads to name the resolution a 5 % match needs for a scene in that fluid (src/app/advise_match.c).
+sections(text) lists the sections a report holds, for tools/validation_report.py to keep."""
 import glob
 import json
 import math
 import os
-import subprocess
 import sys
 
 import numpy as np
 from scipy import stats
 
 from h5md_settling import block_falls
-from validation.report_section import write_section
+from validation.report_section import sections_in, study_section_main
 
 BEGIN = "<!-- rh resolution: {} (tools/rh_resolution.py) -->"  # .format(study name)
 END = "<!-- end of the rh resolution section: {} -->"
@@ -35,13 +34,15 @@ STUDIES = {
         departure=None,
         rerun="p000 (R = 2 a0) run again with the binary of 119db37: thermo.tsv (all but the timing column) and "
               "colloids.h5's positions bit for bit the same as the study's",
-        short="Hecht's fluid", fluid="Hecht's fluid (scenes/hecht_table1.cfg: M = 2.5 per cell, λ = 0.6 a0, ±90° about the axes, no grid "
+        short="Hecht's fluid",
+        fluid="Hecht's fluid (scenes/hecht_table1.cfg: M = 2.5 per cell, λ = 0.6 a0, ±90° about the axes, no grid "
               "shift)", calibration="calibration/calibration-9aa595c8f7cdb515.json"),
     "rh_resolution_c1_default": dict(
         departure=None,
         rerun="p000 (R = 2 a0) run again with the binary of 119db37: thermo.tsv (all but the timing column) bit for "
               "bit the same as the study's",
-        short="the default fluid", fluid="the default fluid of a physical coupling I scene (5 per cell, λ = 0.1 a0, 130° about random axes, "
+        short="the default fluid",
+        fluid="the default fluid of a physical coupling I scene (5 per cell, λ = 0.1 a0, 130° about random axes, "
               "grid shift)", calibration=None),
     "rh_resolution_c1_default_a": dict(
         rerun=None, short="the default fluid with SRD+a",
@@ -57,6 +58,14 @@ STUDIES = {
         fluid="the default fluid (5 per cell, λ = 0.1 a0, 130° about random axes, "
               "grid shift) with SRD+a, the rotation that keeps each cell's angular momentum (its own viscosity)",
         calibration=None),
+    "rh_resolution_c1_mpc_at": dict(
+        departure=None, rerun=None, short="MPC-AT (γ 10, λ 0.05)",
+        fluid="a collisional MPC-AT fluid (10 per cell, λ = 0.05 a0, grid shift, Andersen thermostat: no angular "
+              "momentum kept)", calibration=None),
+    "rh_resolution_c1_mpc_at_a": dict(
+        departure=None, rerun=None, short="MPC-AT+a (γ 10, λ 0.05)",
+        fluid="a collisional MPC-AT+a fluid (10 per cell, λ = 0.05 a0, grid shift, Andersen thermostat, each cell's "
+              "angular momentum kept)", calibration=None),
 }
 MATCH = 0.05  # R3: |R_h/R - 1| <= 0.05 + 2 SE
 Y95 = 1.0 / 0.95 - 1.0  # R4: R/R_h - 1 at R_h/R = 0.95
@@ -64,12 +73,7 @@ Y95 = 1.0 / 0.95 - 1.0  # R4: R/R_h - 1 at R_h/R = 0.95
 
 def sections(text):
     """The rh-resolution sections in a report's text, each from its begin to its end marker."""
-    out = []
-    for name in STUDIES:
-        b, e = BEGIN.format(name), END.format(name)
-        if b in text and e in text:
-            out.append(text[text.index(b):text.index(e) + len(e)])
-    return out
+    return sections_in(text, STUDIES, BEGIN, END)
 
 
 def unbounded(xi_box, eta, L):
@@ -274,6 +278,23 @@ def section(study, commit, png):
               f"default fluid's SRD: b = 0.142 ± 0.022, RULES R6); form (a) "
               f"{'accepted' if fa and fa[4] > 0.05 else 'rejected'}; at R = 2 and 3 a0 SRD+a's colloid has "
               f"R_h/R {rows[0]['rh']:.3f} and {rows[1]['rh']:.3f} against SRD's 0.655 and 0.712."]
+    if name == "rh_resolution_c1_mpc_at_a":  # R7: against MPC-AT's offset
+        other = os.path.join(os.path.dirname(os.path.normpath(study)), "rh_resolution_c1_mpc_at")
+        ra = points(other) if os.path.isdir(other) else []
+        fat = fits(ra)[1] if len(ra) >= 3 else None
+        if fat and fb:
+            b_at, se_at = fat[0][0], math.sqrt(fat[1][0, 0])
+            b_a, se_a = fb[0][0], math.sqrt(fb[1][0, 0])
+            a_ok = (fa and fa[4] > 0.05) or abs(b_a) <= 2 * se_a
+            v7 = ("the antisymmetric stress accounts for the offset" if b_at > 3 * se_at and a_ok else
+                  "it does not" if b_a > 3 * se_a else "not decided")
+            rhs = ", ".join("%.3f" % r["rh"] for r in ra)
+            Rs = ", ".join("%g" % r["R"] for r in ra)
+            r6.append(f"- **R7, MPC-AT against MPC-AT+a: {v7}.**  Form (b)'s offset: MPC-AT b = {b_at:.3f} ± "
+                      f"{se_at:.3f} (R_h/R {rhs} at R = {Rs} a0), MPC-AT+a b = {b_a:.3f} ± {se_a:.3f}; MPC-AT+a's "
+                      f"form (a) {'accepted' if fa and fa[4] > 0.05 else 'rejected'}.")
+        else:
+            r6.append("- **R7, MPC-AT against MPC-AT+a:** not evaluated (both studies need their three points).")
     if info["departure"]:
         r6.append(f"- **Departure, stated:** {info['departure']}.")
     return [
@@ -305,7 +326,7 @@ def section(study, commit, png):
 
 
 def law_file(study, commit):
-    """calibration/rh_resolution-STUDY.json: what `peloid plan` needs (src/app/advise_match.c), written atomically."""
+    """calibration/rh_resolution-X.json: what `peloid plan` needs (src/app/advise_match.c), written atomically."""
     rows = points(study)
     name = os.path.basename(os.path.normpath(study))
     s = json.load(open(glob.glob(os.path.join(study, "p*", "summary.json"))[0]))
@@ -336,11 +357,12 @@ def law_file(study, commit):
         "matched_R_over_a0_se": need[1] if need else None,
         "settled": not unsettled,
         "reason": None if need else (
-            "not settled: SRD+a with the rescaling thermostat is not at equilibrium (validation/REPORT.md)" if unsettled
+            f"not settled: see the section of {name} in validation/REPORT.md" if unsettled
             else "neither form of the law is acceptable over the measured resolutions" if not choice
             else "the accepted law's offset b leaves R_h/R below 0.95 at any resolution"),
     }
-    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "calibration", f"rh_resolution-{name[len('rh_resolution_'):]}.json")
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "calibration",
+                        f"rh_resolution-{name[len('rh_resolution_'):]}.json")
     tmp = path + ".tmp"
     with open(tmp, "w") as f:
         json.dump(doc, f, indent=1)
@@ -349,14 +371,7 @@ def law_file(study, commit):
 
 
 def main():
-    study, report = sys.argv[1], sys.argv[2]
-    commit = sys.argv[3] if len(sys.argv) > 3 else subprocess.run(
-        ["git", "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
-    png = os.path.join(os.path.dirname(report) or ".", os.path.basename(os.path.normpath(study)) + ".png")
-    new = "\n".join(section(study, commit, png))
-    print(new)
-    name = os.path.basename(os.path.normpath(study))
-    write_section(report, BEGIN.format(name), END.format(name), new)
+    study, commit = study_section_main(section, BEGIN, END, sys.argv)
     law_file(study, commit)
 
 
