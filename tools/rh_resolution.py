@@ -215,9 +215,9 @@ def offset_note(fa, fb):
     if b <= 3 * se:
         return ""
     return (f"  In this fluid a part does not shrink with the resolution: b = {b:.3f} ± {se:.3f}, a limit "
-            f"R_h/R → {1 / (1 + b):.3f} as a0/R → 0 (extrapolated from the measured range).  Rule R6 tests whether "
-            "it is the antisymmetric collisional stress of SRD's rotation, which keeps no angular momentum "
-            "(the section of the same fluid with SRD+a).")
+            f"R_h/R → {1 / (1 + b):.3f} as a0/R → 0 (an extrapolation: over a factor 2 in R a constant and a "
+            "curvature in a0/R look alike).  Rules R6 and R7 test whether it is the antisymmetric collisional "
+            "stress of a rule that keeps no angular momentum (the SRD+a and MPC-AT+a sections).")
 
 
 def section(study, commit, png):
@@ -229,8 +229,9 @@ def section(study, commit, png):
     fa, fb = fits(rows)
     choice = next((f for f in (fa, fb) if f and f[4] > 0.05), None)
     need = needed(choice) if choice else None
-    plot(rows, fa, fb, need, png, f"Coupling I: R_h/R against the resolution, {info['short']}\n"
-                                  "one free colloid settling through a periodic cube of side 8 R")
+    plot(rows, fa, fb, None if info["departure"] else need, png,
+         f"Coupling I: R_h/R against the resolution, {info['short']}\n"
+         "one free colloid settling through a periodic cube of side 8 R")
     tab = ["| R/a0 | L/a0 | M (m_f) | Re | u (a0/t0), observer | u, colloids.h5 | halves | fluid kT | ξ_box | "
            "R_h/R | verdict (R3) |", "|---|---|---|---|---|---|---|---|---|---|---|"]
     bad = []
@@ -254,7 +255,8 @@ def section(study, commit, png):
         cells = 4.0 / 3.0 * math.pi * Rn ** 3
         law = (f"By the accepted form ({'(a)' if choice is fa else '(b)'}), R_h/R = 0.95 needs **R = {Rn:.1f} ± "
                f"{Rn_se:.1f} a0** (a0/R = {1 / Rn:.3f}): {cells:.0f} cells per colloid volume against 33.5 at "
-               f"R = 2 a0, {cells / 33.51:.0f}× the fluid per colloid at the same volume fraction.")
+               f"R = 2 a0, {cells / 33.51:.0f}× the fluid per colloid at the same volume fraction." +
+               ("  Not settled (the departure below): no resolution is read off." if info["departure"] else ""))
     cal = calibration_rh(info, rows)
     if cal:
         rc, rc_se, r2 = cal
