@@ -32,15 +32,16 @@ END = "<!-- end of the rh resolution section: {} -->"
 STUDIES = {
     "rh_resolution_c1_hecht": dict(
         departure=None,
-        rerun="p000 (R = 2 a0) run again with the binary of 119db37: thermo.tsv (all but the timing column) and "
-              "colloids.h5's positions bit for bit the same as the study's",
+        rerun="p000 (R = 2 a0) run again with a binary built on 119db37 with the C changes of 4af349f and "
+              "ee18494: thermo.tsv (all but the timing column) and colloids.h5's positions bit for bit the same as "
+              "the study's",
         short="Hecht's fluid",
         fluid="Hecht's fluid (scenes/hecht_table1.cfg: M = 2.5 per cell, λ = 0.6 a0, ±90° about the axes, no grid "
               "shift)", calibration="calibration/calibration-9aa595c8f7cdb515.json"),
     "rh_resolution_c1_default": dict(
         departure=None,
-        rerun="p000 (R = 2 a0) run again with the binary of 119db37: thermo.tsv (all but the timing column) bit for "
-              "bit the same as the study's",
+        rerun="p000 (R = 2 a0) run again with a binary built on 119db37 with the C changes of 4af349f and "
+              "ee18494: thermo.tsv (all but the timing column) bit for bit the same as the study's",
         short="the default fluid",
         fluid="the default fluid of a physical coupling I scene (5 per cell, λ = 0.1 a0, 130° about random axes, "
               "grid shift)", calibration=None),
