@@ -5,7 +5,8 @@
  * share that shrinks with the resolution R/a0.  A resolution study measured
  * R/R_h - 1 = b + c a0/R for one fluid (tools/rh_resolution.py, rules
  * validation/RULES_rh_resolution.md, its section of validation/REPORT.md)
- * and wrote calibration/rh_resolution-STUDY.json: the fluid, the points,
+ * and wrote calibration/rh_resolution-X.json (X: the study's name after
+ * rh_resolution_): the fluid, the points,
  * the law and the R/a0 at which R_h/R = 0.95 (or why none).  A scene's fluid
  * matches a file when its collision rule, rotation angle, grid shift,
  * particles per cell, mean free path and coupling I surface rule are the
@@ -23,7 +24,11 @@
 
 static int near(double a, double b) { return fabs(a - b) <= 1e-9 * fmax(fabs(a), fabs(b)); }
 
-static double num(json_t *o, const char *key) { return json_is_number(json_object_get(o, key)) ? json_number_value(json_object_get(o, key)) : NAN; }
+static double num(json_t *o, const char *key)
+{
+    json_t *v = json_object_get(o, key);
+    return json_is_number(v) ? json_number_value(v) : NAN;
+}
 
 static const char *str(json_t *o, const char *key)
 {
