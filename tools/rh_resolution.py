@@ -218,7 +218,10 @@ def offset_note(fa, fb):
     return (f"  In this fluid a part does not shrink with the resolution: b = {b:.3f} ± {se:.3f}, a limit "
             f"R_h/R → {1 / (1 + b):.3f} as a0/R → 0 (an extrapolation: over a factor 2 in R a constant and a "
             "curvature in a0/R look alike).  Rules R6 and R7 test whether it is the antisymmetric collisional "
-            "stress of a rule that keeps no angular momentum (the SRD+a and MPC-AT+a sections).")
+            "stress of a rule that keeps no angular momentum (the SRD+a and MPC-AT+a sections); a viscosity that "
+            "depends on the wavelength would also show here, as the flow around a colloid of a few cells is not "
+            "the long-wavelength flow the theory's η is for (tests/physics/test_mpc_viscosity.c notes such a "
+            "dependence for MPC-AT+a).")
 
 
 def section(study, commit, png):
@@ -310,7 +313,7 @@ def section(study, commit, png):
         f"(stick_stochastic surface, Al2O3's mass density) in {info['fluid']}, settling under a constant force "
         "through a periodic cube of side L = 8 R; ξ_box = M g / u, corrected to the unbounded fluid by Hasimoto's "
         "and Zick & Homsy's series for a periodic array (the χ³ term's radius and the frame of u: ≤ 0.8 %, not "
-        "added); R_h = ξ/(6πη) with the SRD theory's η." + (f"  Revision check: {info['rerun']}." if info["rerun"] else
+        "added); R_h = ξ/(6πη) with the collision rule's theory η (summary.json derived.eta)." + (f"  Revision check: {info['rerun']}." if info["rerun"] else
                                                            ""), ""] + tab + [
         "",
         f"- **Matched (R3):** {sum(1 for r in rows if abs(r['rh'] - 1) <= MATCH + 2 * r['rh_se'])} of {len(rows)} "
