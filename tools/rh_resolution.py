@@ -15,6 +15,7 @@ STUDY is one of STUDIES (its name is the folder's).  It also writes calibration/
 study's name after rh_resolution_): the fluid, the points and the law (or null, with the reason), which
 `peloid plan` reads to name the resolution a 5 % match needs for a scene in that fluid (src/app/advise_match.c).
 sections(text) lists the sections a report holds, for tools/validation_report.py to keep."""
+import functools
 import glob
 import json
 import math
@@ -90,7 +91,9 @@ def unbounded(xi_box, eta, L):
     return xi
 
 
+@functools.lru_cache(maxsize=None)
 def points(study):
+    """The study's finished points (read once per study: the section and the law file share them)."""
     rows = []
     for sp in sorted(glob.glob(os.path.join(study, "p*", "summary.json"))):
         run = os.path.dirname(sp)
@@ -138,6 +141,13 @@ def fits(rows):
         dof = len(x) - A.shape[1]
         out.append((b, C, chi2, dof, float(stats.chi2.sf(chi2, dof))))
     return out
+
+
+def law_of(rows):
+    """R4: the fits, the accepted form with fewer parameters (None: neither) and the R/a0 it names for 0.95."""
+    fa, fb = fits(rows)
+    choice = next((f for f in (fa, fb) if f and f[4] > 0.05), None)
+    return fa, fb, choice, needed(choice) if choice else None
 
 
 def needed(fit):
@@ -230,9 +240,7 @@ def section(study, commit, png):
     info = STUDIES[name]
     if len(rows) < 2:
         raise SystemExit(f"rh_resolution: {len(rows)} finished point(s) in {study}; the rules need two or more")
-    fa, fb = fits(rows)
-    choice = next((f for f in (fa, fb) if f and f[4] > 0.05), None)
-    need = needed(choice) if choice else None
+    fa, fb, choice, need = law_of(rows)
     plot(rows, fa, fb, None if info["departure"] else need, png,
          f"Coupling I: R_h/R against the resolution, {info['short']}\n"
          "one free colloid settling through a periodic cube of side 8 R")
@@ -337,9 +345,7 @@ def law_file(study, commit):
     name = os.path.basename(os.path.normpath(study))
     s = json.load(open(glob.glob(os.path.join(study, "p*", "summary.json"))[0]))
     sc = s["scene"]
-    fa, fb = fits(rows)
-    choice = next((f for f in (fa, fb) if f and f[4] > 0.05), None)
-    need = needed(choice) if choice else None
+    _, _, choice, need = law_of(rows)
     unsettled = STUDIES[name]["departure"]
     if unsettled:  # a law a departure leaves not settled names no resolution
         need = None

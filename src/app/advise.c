@@ -101,6 +101,14 @@ static double shipped_wall(const char *dir, const char *key)
     return w > 0 ? w : NAN;
 }
 
+/* CPU seconds per second of real time of an option whose measured D is `fix`
+ * times its theory's (t0 matches the model D to the real one: a larger
+ * measured D lengthens t0 by that factor). */
+static double cpu_per_real_s(const option_t *o, double fix)
+{
+    return o->step_s / (o->step_real_s * fix);
+}
+
 /* The measured factor range of coupling k's theory and its calibrations' durations. */
 static void shipped(int method, const char *dir, option_t *o)
 {
@@ -141,7 +149,7 @@ static void option_of(const pl_scene_t *s, int k, const char *dir, option_t *o)
     /* t0 matches the model D to the real one: a measured D larger by D_meas / D_theory lengthens t0 by it */
     const double fix = m->cg.d_col_calibrated > 0 ? 1.0 : o->nshipped ? 2.0 * o->rh / (o->rh_lo + o->rh_hi) : 1.0;
     o->step_real_s = s->srd.dt * m->t0;
-    o->real_s = o->step_s / (o->step_real_s * fix);
+    o->real_s = cpu_per_real_s(o, fix);
 }
 
 /* Coupling k at the scene's resolution, or at a0/R = cell_size where that is > 0. */
@@ -236,7 +244,7 @@ static void matched(const pl_scene_t *s, const char *path, const char *dir, FILE
         return;
     }
     char cpu[32];
-    hms(o.step_s / (o.step_real_s * o.rh / 0.95), cpu, sizeof cpu);
+    hms(cpu_per_real_s(&o, o.rh / 0.95), cpu, sizeof cpu); /* D_law / D_theory = R_h,theory / 0.95 R */
     fprintf(f, "     R_h/R = 0.95 at R = %.3g +- %.2g a0: coarse_graining.cell_size = %.3g (%.3g x the fluid per colloid "
                "of a0/R = 0.5); CPU per s of real time %s (t0 of the law's D)\n",
             mt.R_match, mt.R_match_se, 1.0 / mt.R_match, pow(0.5 * mt.R_match, 3.0), cpu);

@@ -22,6 +22,9 @@
 
 #include "peloid/collision_rule.h"
 
+#define LAW_PREFIX "rh_resolution-" /* the law files: LAW_PREFIX X ".json" */
+#define LAW_SUFFIX ".json"
+
 static int near(double a, double b) { return fabs(a - b) <= 1e-9 * fmax(fabs(a), fabs(b)); }
 
 static double num(json_t *o, const char *key)
@@ -51,8 +54,8 @@ static int same_fluid(const pl_scene_t *s, json_t *fl)
 static void read_law(json_t *doc, const char *name, pl_advise_match_t *m)
 {
     json_t *fl = json_object_get(doc, "fluid"), *pts = json_object_get(doc, "points");
-    snprintf(m->study, sizeof m->study, "%.*s", (int)(strlen(name) - strlen("rh_resolution-") - strlen(".json")),
-             name + strlen("rh_resolution-"));
+    snprintf(m->study, sizeof m->study, "%.*s", (int)(strlen(name) - strlen(LAW_PREFIX) - strlen(LAW_SUFFIX)),
+             name + strlen(LAW_PREFIX));
     m->found = 1;
     m->rho_ratio = num(fl, "mass_density") / num(fl, "particles_per_cell");
     size_t i;
@@ -76,7 +79,8 @@ void pl_advise_match(const pl_scene_t *s, const char *dir, pl_advise_match_t *m)
     struct dirent *e;
     while (d && !m->found && (e = readdir(d))) {
         const size_t n = strlen(e->d_name);
-        if (strncmp(e->d_name, "rh_resolution-", 14) || n < 20 || strcmp(e->d_name + n - 5, ".json")) continue;
+        const size_t lp = strlen(LAW_PREFIX), ls = strlen(LAW_SUFFIX);
+        if (n <= lp + ls || strncmp(e->d_name, LAW_PREFIX, lp) || strcmp(e->d_name + n - ls, LAW_SUFFIX)) continue;
         char path[1400];
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
         json_t *doc = json_load_file(path, 0, NULL);
