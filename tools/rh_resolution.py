@@ -234,6 +234,33 @@ def offset_note(fa, fb):
             "dependence for MPC-AT+a).")
 
 
+def point_table(rows):
+    """The points' table (R1-R3 per point) and the points R1 or R2 leaves not settled."""
+    tab = ["| R/a0 | L/a0 | M (m_f) | Re | u (a0/t0), observer | u, colloids.h5 | halves | fluid kT | ξ_box | "
+           "R_h/R | verdict (R3) |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+    bad = []
+    for r in rows:
+        v = matched(r)
+        if not settled(r):
+            v = "not settled (" + v + ")"
+            bad.append(r)
+        tab.append(f"| {r['R']:g} | {r['L']:g} | {r['M']:.0f} | {r['Re']:.2f} | {r['u']:.5f} ± {r['u_se']:.5f} | "
+                   f"{r['u5']:.5f} ± {r['u5_se']:.5f} | {r['h1']:.4f}, {r['h2']:.4f} | {r['kT']:.3f} | "
+                   f"{r['xi_box']:.1f} | **{r['rh']:.3f} ± {r['rh_se']:.3f}** | {v} |")
+    return tab, bad
+
+
+def matched(r):
+    """R3's verdict of one point."""
+    return "matched" if abs(r["rh"] - 1) <= MATCH + 2 * r["rh_se"] else "not matched"
+
+
+def settled(r):
+    """R1 (the h5py reading agrees with the observer) and R2 (the window's halves agree), each within 3 SE."""
+    return (abs(r["u5"] - r["u"]) <= 3 * math.hypot(r["u5_se"], r["u_se"]) and
+            abs(r["h1"] - r["h2"]) <= 3 * math.sqrt(2) * r["hse"])
+
+
 def section(study, commit, png):
     rows = points(study)
     name = os.path.basename(os.path.normpath(study))
@@ -244,19 +271,7 @@ def section(study, commit, png):
     plot(rows, fa, fb, None if info["departure"] else need, png,
          f"Coupling I: R_h/R against the resolution, {info['short']}\n"
          "one free colloid settling through a periodic cube of side 8 R")
-    tab = ["| R/a0 | L/a0 | M (m_f) | Re | u (a0/t0), observer | u, colloids.h5 | halves | fluid kT | ξ_box | "
-           "R_h/R | verdict (R3) |", "|---|---|---|---|---|---|---|---|---|---|---|"]
-    bad = []
-    for r in rows:
-        h5_ok = abs(r["u5"] - r["u"]) <= 3 * math.hypot(r["u5_se"], r["u_se"])
-        st_ok = abs(r["h1"] - r["h2"]) <= 3 * math.sqrt(2) * r["hse"]
-        v = "matched" if abs(r["rh"] - 1) <= MATCH + 2 * r["rh_se"] else "not matched"
-        if not (h5_ok and st_ok):
-            v = "not settled (" + v + ")"
-            bad.append(r)
-        tab.append(f"| {r['R']:g} | {r['L']:g} | {r['M']:.0f} | {r['Re']:.2f} | {r['u']:.5f} ± {r['u_se']:.5f} | "
-                   f"{r['u5']:.5f} ± {r['u5_se']:.5f} | {r['h1']:.4f}, {r['h2']:.4f} | {r['kT']:.3f} | "
-                   f"{r['xi_box']:.1f} | **{r['rh']:.3f} ± {r['rh_se']:.3f}** | {v} |")
+    tab, bad = point_table(rows)
     if choice is None:
         law = "Neither form of the law is acceptable (p ≤ 0.05): no resolution for a 5 % match is read off."
     elif need is None:
@@ -324,7 +339,7 @@ def section(study, commit, png):
         "added); R_h = ξ/(6πη) with the collision rule's theory η (summary.json derived.eta)." + (f"  Revision check: {info['rerun']}." if info["rerun"] else
                                                            ""), ""] + tab + [
         "",
-        f"- **Matched (R3):** {sum(1 for r in rows if abs(r['rh'] - 1) <= MATCH + 2 * r['rh_se'])} of {len(rows)} "
+        f"- **Matched (R3):** {sum(1 for r in rows if matched(r) == 'matched')} of {len(rows)} "
         "points within 5 % (+ 2 SE) of R.",
         f"- **The resolution law (R4):** {_fit_text('(a) through the origin', fa)}; "
         f"{_fit_text('(b) with an offset', fb)}.  {law}",
@@ -373,8 +388,21 @@ def law_file(study, commit):
             else "neither form of the law is acceptable over the measured resolutions" if not choice
             else "the accepted law's offset b leaves R_h/R below 0.95 at any resolution"),
     }
-    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "calibration",
+    path = law_path(name)
+    before = json.load(open(path)) if os.path.exists(path) else {}
+    if "check" in before:  # the run at the matched resolution (tools/rh_matched.py) stays
+        doc["check"] = before["check"]
+    write_json(path, doc)
+
+
+def law_path(name):
+    """calibration/rh_resolution-X.json of the study `name` (X: the name after rh_resolution_)."""
+    return os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "calibration",
                         f"rh_resolution-{name[len('rh_resolution_'):]}.json")
+
+
+def write_json(path, doc):
+    """doc into path, atomically (a temporary file renamed over it)."""
     tmp = path + ".tmp"
     with open(tmp, "w") as f:
         json.dump(doc, f, indent=1)

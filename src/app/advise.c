@@ -248,6 +248,9 @@ static void matched(const pl_scene_t *s, const char *path, const char *dir, FILE
     fprintf(f, "     R_h/R = 0.95 at R = %.3g +- %.2g a0: coarse_graining.cell_size = %.3g (%.3g x the fluid per colloid "
                "of a0/R = 0.5); CPU per s of real time %s (t0 of the law's D)\n",
             mt.R_match, mt.R_match_se, 1.0 / mt.R_match, pow(0.5 * mt.R_match, 3.0), cpu);
+    if (mt.checked)
+        fprintf(f, "     run at R = %g a0: R_h/R = %.3f +- %.3f, %s (validation/REPORT.md, rule R8)\n", mt.check_R,
+                mt.check_rh, mt.check_rh_se, mt.check_verdict);
 }
 
 int pl_plan_advise(const pl_scene_t *s, const char *path, double target, const char *shipped_dir, FILE *f,

@@ -11,7 +11,9 @@
  * matches a file when its collision rule, rotation angle, grid shift,
  * particles per cell, mean free path and coupling I surface rule are the
  * file's; the colloid's mass density is reported beside it (the friction
- * depends on the colloid mass by a few per cent, the rules' pilot runs). */
+ * depends on the colloid mass by a few per cent, the rules' pilot runs).
+ * Where the law's resolution was run (tools/rh_matched.py, rule R8), the
+ * file's "check" holds that run's R_h/R and verdict. */
 #include "advise_match.h"
 
 #include <dirent.h>
@@ -70,6 +72,15 @@ static void read_law(json_t *doc, const char *name, pl_advise_match_t *m)
     m->R_match_se = num(doc, "matched_R_over_a0_se");
     m->have_match = isfinite(m->R_match) && m->R_match > 0;
     snprintf(m->reason, sizeof m->reason, "%s", str(doc, "reason"));
+    json_t *chk = json_array_get(json_object_get(json_object_get(doc, "check"), "points"), 0);
+    if (chk) {
+        m->checked = 1;
+        m->check_R = num(chk, "R_over_a0");
+        m->check_rh = num(chk, "rh_over_R");
+        m->check_rh_se = num(chk, "rh_over_R_se");
+        snprintf(m->check_verdict, sizeof m->check_verdict, "%s%s", str(chk, "verdict"),
+                 json_is_false(json_object_get(chk, "settled")) ? " (not settled)" : "");
+    }
 }
 
 void pl_advise_match(const pl_scene_t *s, const char *dir, pl_advise_match_t *m)

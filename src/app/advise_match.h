@@ -16,6 +16,9 @@ typedef struct {
     double R[PL_MATCH_MAX_POINTS], rh[PL_MATCH_MAX_POINTS];
     double rho_ratio;           /* the study's colloid over fluid mass density */
     char reason[200];           /* without a match: why (the file's words) */
+    int checked;                /* a run at the law's matched resolution (the file's "check", R8) */
+    double check_R, check_rh, check_rh_se; /* its R/a0 and measured R_h/R with its SE */
+    char check_verdict[24];     /* "matched" or "not matched" (R3), "(not settled)" added where R1/R2 fail */
 } pl_advise_match_t;
 
 /* Reads the laws in dir (calibration/rh_resolution-*.json) and fills *m for
