@@ -63,17 +63,17 @@ static inline void pl_cell_angular_before(const pl_fluid_t *f, const pl_grid_t *
     pl_cell_L(f, g, s, e, a->rc, a->L);
 }
 
-/* After the collision: the rigid rotation that gives back the angular
- * momentum a->L. */
-static inline void pl_cell_angular_restore(pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t e,
-                                           const pl_cell_angular_t *a)
+/* The angular velocity w = Pi^-1 L of the rigid rotation of particles
+ * [s, e) about rc that carries angular momentum L (see above: 2 particles
+ * or collinear ones, w = 2 L / tr Pi); 0 when all sit at one point. */
+static inline int pl_cell_omega(const pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t e, const double rc[3],
+                                const double L[3], double w[3])
 {
-    double L[3], S[6] = {0, 0, 0, 0, 0, 0}; /* S = sum r r^T: xx yy zz xy xz yz */
-    pl_cell_L(f, g, s, e, a->rc, L);
+    double S[6] = {0, 0, 0, 0, 0, 0}; /* S = sum r r^T: xx yy zz xy xz yz */
     for (size_t i = s; i < e; ++i) {
         double x[3];
         pl_cell_rel(f, g, s, i, x);
-        const double p = x[0] - a->rc[0], q = x[1] - a->rc[1], r = x[2] - a->rc[2];
+        const double p = x[0] - rc[0], q = x[1] - rc[1], r = x[2] - rc[2];
         S[0] += p * p; S[1] += q * q; S[2] += r * r;
         S[3] += p * q; S[4] += p * r; S[5] += q * r;
     }
@@ -83,25 +83,41 @@ static inline void pl_cell_angular_restore(pl_fluid_t *f, const pl_grid_t *g, si
     const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
     const double c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
     const double det = a00 * c00 + a01 * c01 + a02 * c02, t3 = tr * tr * tr; /* tr Pi = 2 tr S */
-    const double dL[3] = {a->L[0] - L[0], a->L[1] - L[1], a->L[2] - L[2]};
-    double w[3];
     if (det > 1e-9 * t3) { /* Pi^-1 = adj(Pi) / det */
-        w[0] = (c00 * dL[0] + c01 * dL[1] + c02 * dL[2]) / det;
-        w[1] = (c01 * dL[0] + c11 * dL[1] + c12 * dL[2]) / det;
-        w[2] = (c02 * dL[0] + c12 * dL[1] + c22 * dL[2]) / det;
+        w[0] = (c00 * L[0] + c01 * L[1] + c02 * L[2]) / det;
+        w[1] = (c01 * L[0] + c11 * L[1] + c12 * L[2]) / det;
+        w[2] = (c02 * L[0] + c12 * L[1] + c22 * L[2]) / det;
     } else if (tr > 0.0) { /* 2 particles or collinear ones */
-        for (int d = 0; d < 3; ++d) w[d] = dL[d] / tr; /* 2 dL / tr Pi, tr Pi = 2 tr S */
+        for (int d = 0; d < 3; ++d) w[d] = L[d] / tr; /* 2 L / tr Pi, tr Pi = 2 tr S */
     } else {
-        return; /* all at one point: no angular momentum to keep */
+        return 0; /* all at one point: no angular momentum to keep */
     }
+    return 1;
+}
+
+/* Adds the rigid rotation w about rc to the velocities of particles [s, e). */
+static inline void pl_cell_add_rotation(pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t e, const double rc[3],
+                                        const double w[3])
+{
     for (size_t i = s; i < e; ++i) {
         double x[3];
         pl_cell_rel(f, g, s, i, x);
-        const double p = x[0] - a->rc[0], q = x[1] - a->rc[1], r = x[2] - a->rc[2];
+        const double p = x[0] - rc[0], q = x[1] - rc[1], r = x[2] - rc[2];
         f->v[0][i] = (pl_real)(f->v[0][i] + (w[1] * r - w[2] * q));
         f->v[1][i] = (pl_real)(f->v[1][i] + (w[2] * p - w[0] * r));
         f->v[2][i] = (pl_real)(f->v[2][i] + (w[0] * q - w[1] * p));
     }
+}
+
+/* After the collision: the rigid rotation that gives back the angular
+ * momentum a->L. */
+static inline void pl_cell_angular_restore(pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t e,
+                                           const pl_cell_angular_t *a)
+{
+    double L[3], w[3];
+    pl_cell_L(f, g, s, e, a->rc, L);
+    const double dL[3] = {a->L[0] - L[0], a->L[1] - L[1], a->L[2] - L[2]};
+    if (pl_cell_omega(f, g, s, e, a->rc, dL, w)) pl_cell_add_rotation(f, g, s, e, a->rc, w);
 }
 
 /* sum (v - u)^2 of particles [s, e) (u their mean velocity). */

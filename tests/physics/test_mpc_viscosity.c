@@ -33,7 +33,8 @@
  *
  * SRD+a (srd.rule = "srd_a", src/fluid/rule_srd_a.c, validate-physics
  * only): against random_axis at the same parameters, both with the
- * rescaling thermostat SRD+a needs, as the ratio of the viscosities (see
+ * rescaling thermostat (the forcing's viscous heat: SRD and SRD+a keep
+ * the energy), as the ratio of the viscosities (see
  * the test; it prints both viscosities, their theories and the ratio). */
 #include <math.h>
 #include <stdio.h>
@@ -120,7 +121,7 @@ Test(mpc_viscosity, mpc_at_a_kinetic, .timeout = 3600)
 Test(mpc_viscosity, srd_a_over_srd, .timeout = 3600)
 {
     /* SRD+a against SRD at the same gamma = 10, lambda = 0.05, alpha = 130 deg (collisional 97 %), box and
-     * thermostat (rescale: SRD+a needs one): the ratio of the viscosities against the ratio of the theories,
+     * thermostat (rescale: both keep the energy, the forcing heats them): the ratio of the viscosities against the ratio of the theories,
      * src/fluid/rule_srd_a.c's derived nu_col = 2/3 (1 - cos alpha) x MPC-AT+a's over PL Eq. 10.  The ratio,
      * not nu itself: at this lambda PL Eqs. 9-12 overestimate SRD's own nu by a few per cent (printed beside
      * it: the correlations of successive collisions the mean-field theory leaves out), and that part is
