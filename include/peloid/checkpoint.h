@@ -66,9 +66,9 @@ int pl_ckpt_coupling_read(hid_t f, struct pl_sim *sim, struct pl_coupling *cp, c
  * the observer fingerprint (< 0 on failure). */
 hid_t pl_ckpt_observe_group_write(hid_t f, const char *name, const pl_scene_t *sc);
 /* Opens group `name` when its fingerprint matches the scene's observe
- * section (sim->observe_resumed = 1); otherwise returns -1 with
- * sim->observe_resumed = 0 and sim->observe_note saying why (absent group,
- * changed observe section; or already 0: --restart-changed). */
+ * section (pl_sim_observers_resume); otherwise returns -1, the observers
+ * afresh with the reason (pl_sim_observers_afresh: absent group, changed
+ * observe section; or afresh already: --restart-changed). */
 hid_t pl_ckpt_observe_group_open(hid_t f, const char *name, struct pl_sim *sim);
 
 #endif

@@ -111,10 +111,12 @@ struct pl_sim {
      * none: read and written only by the module that owns it, through
      * pl_module_state (peloid/module.h) */
     void *module_state[PL_MAX_MODULES];
-    /* restart: 1 when the observers resumed from the checkpoint, 0 when they
-     * started afresh (observe_note says why), -1 when no restart */
-    int observe_resumed;
-    char observe_note[384];
+    /* a restart's outcome for the observers, core's own: written and read
+     * through pl_sim_observers_afresh / pl_sim_observers_resumed below */
+    struct {
+        int observers;  /* -1: no restart; 1: resumed from the checkpoint; 0: afresh, note says why */
+        char note[384];
+    } restart;
     /* plan */
     pl_stage_t stages[PL_MAX_STAGES];
     int nstages;
@@ -181,6 +183,15 @@ int pl_sim_wall_ghosts(const pl_sim_t *sim, double *density, double *kT_wall);
  * of a capillary together, -F / (2 (Lx + Ly) Lz): for flow along z, the mean
  * wall shear stress.  0 before the first step. */
 double pl_sim_wall_stress(const pl_sim_t *sim, int wall, int d);
+
+/* The restart's outcome for the observers (core's record, src/core/sim.c):
+ * pl_sim_observers_resume says an observer resumed from the checkpoint;
+ * pl_sim_observers_afresh that they start afresh and why (the first reason
+ * is kept; afresh stays afresh); pl_sim_observers_resumed is -1 without a
+ * restart, 1 resumed, 0 afresh with *why the reason (why NULL: not wanted). */
+void pl_sim_observers_resume(pl_sim_t *sim);
+void pl_sim_observers_afresh(pl_sim_t *sim, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+int pl_sim_observers_resumed(const pl_sim_t *sim, const char **why);
 
 /* Observables of the current state (fixed-order reductions). */
 void pl_sim_observe(const pl_sim_t *sim, pl_fluid_obs_t *obs, double *kT);

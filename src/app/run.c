@@ -431,7 +431,8 @@ int pl_run(const pl_scene_t *scene, const pl_run_opts_t *o, pl_err_t *err)
     char cal[800] = "";
     if (log && scene->mapping.enabled) pl_mapping_calibration_line(&scene->mapping.map, cal, sizeof cal);
     if (cal[0]) fprintf(log, "peloid: %s\n", cal);
-    if (log && sim->observe_resumed == 0) fprintf(log, "peloid: %s\n", sim->observe_note);
+    const char *afresh;
+    if (log && pl_sim_observers_resumed(sim, &afresh) == 0) fprintf(log, "peloid: %s\n", afresh);
     for (int m = 0; log && pl_modules[m]; ++m) /* what each module wants the user to know */
         if (pl_modules[m]->describe) pl_modules[m]->describe(sim, log);
     pl_progress_params_t pp = {.out = o->log, .terminal = o->progress, .interval_s = scene->output.progress_s,

@@ -232,10 +232,8 @@ int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, 
     }
     if ((rc = pl_ckpt_scene_check(f, sc, changed, path, err))) goto close;
     if (changed && *changed) { /* observers do not average over two physics: they start afresh */
-        sim->observe_resumed = 0;
-        snprintf(sim->observe_note, sizeof sim->observe_note,
-                 "--restart-changed %.200s: the physics changed, the observers start afresh at the restart step",
-                 changed);
+        pl_sim_observers_afresh(sim, "--restart-changed %.200s: the physics changed, the observers start afresh at "
+                                     "the restart step", changed);
     }
     sim->step = meta[0];
     if (pl_ckpt_attr_i64(f, "field_samples", &sim->srd->field_samples, 1, 0)) {

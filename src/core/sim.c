@@ -5,6 +5,7 @@
  * step + 1, the after-step stages (observers, writers). */
 #include <math.h>
 #include <omp.h> /* omp_get_wtime: the stages' profile */
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,7 +41,7 @@ int pl_sim_create(const pl_scene_t *scene, int nthreads, pl_sim_t **out, pl_err_
     int rc = pl_scene_memory_check(scene, nthreads > 0 ? nthreads : omp_get_max_threads(), err);
     if (rc) return rc;
     pl_sim_t *sim = calloc(1, sizeof *sim);
-    if (sim) sim->observe_resumed = -1;
+    if (sim) sim->restart.observers = -1;
     if (!sim) return pl_err_set(err, PL_ERR_NOMEM, "out of memory");
     sim->scene = *scene;
     sim->nthreads = nthreads > 0 ? nthreads : pl_threads_default();
@@ -133,4 +134,27 @@ int pl_sim_step(pl_sim_t *sim, pl_err_t *err)
             return rc;
     }
     return 0;
+}
+
+/* ---- the restart's outcome for the observers ----------------------------- */
+
+void pl_sim_observers_resume(pl_sim_t *sim)
+{
+    if (sim->restart.observers != 0) sim->restart.observers = 1;
+}
+
+void pl_sim_observers_afresh(pl_sim_t *sim, const char *fmt, ...)
+{
+    if (sim->restart.observers == 0) return; /* the first reason stands */
+    sim->restart.observers = 0;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(sim->restart.note, sizeof sim->restart.note, fmt, ap);
+    va_end(ap);
+}
+
+int pl_sim_observers_resumed(const pl_sim_t *sim, const char **why)
+{
+    if (why) *why = sim->restart.observers == 0 ? sim->restart.note : NULL;
+    return sim->restart.observers;
 }

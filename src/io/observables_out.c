@@ -90,9 +90,11 @@ json_t *pl_obs_summary_section(pl_json_t *b, json_t *doc, const struct pl_sim *s
     if (b->failed) return NULL;
     pl_json_int(b, all, "first_step", first);
     pl_json_int(b, all, "last_step", sim->step); /* < the scene's last step when the stopping rule ended the run */
-    if (sim->observe_resumed >= 0) { /* a restarted run: resumed from the checkpoint or afresh, and why */
-        pl_json_set(b, all, "resumed", json_boolean(sim->observe_resumed));
-        if (!sim->observe_resumed) pl_json_str(b, all, "reason", sim->observe_note);
+    const char *afresh;
+    const int resumed = pl_sim_observers_resumed(sim, &afresh);
+    if (resumed >= 0) { /* a restarted run: resumed from the checkpoint or afresh, and why */
+        pl_json_set(b, all, "resumed", json_boolean(resumed));
+        if (!resumed) pl_json_str(b, all, "reason", afresh);
     }
     return all;
 }

@@ -6,7 +6,8 @@
  * may change the observers: with the same fingerprint they resume, with
  * another, or from a checkpoint without the group (written before peloid
  * saved observer state), or after --restart-changed (the physics changed:
- * src/core/checkpoint.c), they start afresh and sim->observe_note says why. */
+ * src/core/checkpoint.c), they start afresh and the restart's record says
+ * why (pl_sim_observers_afresh). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,12 +51,10 @@ static void first_difference(const char *a, const char *b, char *key, size_t n)
 
 hid_t pl_ckpt_observe_group_open(hid_t f, const char *name, pl_sim_t *sim)
 {
-    if (sim->observe_resumed == 0) return -1; /* afresh already (--restart-changed, another group) */
+    if (pl_sim_observers_resumed(sim, NULL) == 0) return -1; /* afresh already (--restart-changed, another group) */
     if (H5Lexists(f, name, H5P_DEFAULT) <= 0) {
-        sim->observe_resumed = 0;
-        snprintf(sim->observe_note, sizeof sim->observe_note,
-                 "the checkpoint holds no observer state (/%s; written before peloid saved it, or without "
-                 "observers): the observers start afresh at the restart step", name);
+        pl_sim_observers_afresh(sim, "the checkpoint holds no observer state (/%s; written before peloid saved it, "
+                                     "or without observers): the observers start afresh at the restart step", name);
         return -1;
     }
     hid_t g = H5Gopen2(f, name, H5P_DEFAULT);
@@ -65,14 +64,12 @@ hid_t pl_ckpt_observe_group_open(hid_t f, const char *name, pl_sim_t *sim)
     if (!same) {
         char key[128];
         first_difference(mine ? mine : "", theirs ? theirs : "", key, sizeof key);
-        sim->observe_resumed = 0;
-        snprintf(sim->observe_note, sizeof sim->observe_note,
-                 "the observe section differs from the checkpoint's (first: %s): the observers start afresh at "
-                 "the restart step", key);
+        pl_sim_observers_afresh(sim, "the observe section differs from the checkpoint's (first: %s): the observers "
+                                     "start afresh at the restart step", key);
         H5Gclose(g);
         g = -1;
     } else {
-        if (sim->observe_resumed != 0) sim->observe_resumed = 1; /* one observer afresh: the run says so */
+        pl_sim_observers_resume(sim); /* unless one observer started afresh: the run says so */
     }
     free(mine);
     free(theirs);

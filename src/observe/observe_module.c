@@ -541,7 +541,7 @@ static int observe_ckpt_read_group(hid_t g, pl_sim_t *sim, pl_observe_t *o, cons
 }
 
 /* The observers' state from group /observe; without the group, or with
- * another observe section, they start afresh (sim->observe_note). */
+ * another observe section, they start afresh (pl_sim_observers_afresh). */
 static int observe_ckpt_read(int64_t file, pl_sim_t *sim, const char *path, pl_err_t *err)
 {
     pl_observe_t *o = observe_of(sim);
