@@ -43,6 +43,7 @@ from validation.hecht_clusters import (fig14_msd, fig9_bonds, fig9_diagram, fig9
                                        reduced_fig9_bonds, reduced_fig9_diagram, reduced_fig9_kappa, reduced_fig9_phi)
 from validation.hecht_rdf import fig5_rdf, reduced_fig5_rdf
 from validation import hydro_section, rotating_section, verdicts
+import fluid_equilibrium
 import hindered_settling
 import rh_matched
 import rh_resolution
@@ -535,7 +536,7 @@ def main():
     lines += NOTES + [""] + [d + "\n" for d in details]
     lines += verdict_lines(out, rdir) + [""]
     # the sections other tools write between their markers (tools/validation/hydro_section.py,
-    # tools/hindered_settling.py, tools/rh_resolution.py, tools/rh_matched.py), kept
+    # tools/hindered_settling.py, tools/rh_resolution.py, tools/rh_matched.py, tools/fluid_equilibrium.py), kept
     old = open(report).read() if os.path.exists(report) else ""
     if hydro_section.BEGIN in old and hydro_section.END in old:
         lines += [old[old.index(hydro_section.BEGIN):old.index(hydro_section.END) + len(hydro_section.END)], ""]
@@ -545,6 +546,8 @@ def main():
         lines += [sec, ""]
     if rotating_section.BEGIN in old and rotating_section.END in old:
         lines += [old[old.index(rotating_section.BEGIN):old.index(rotating_section.END) + len(rotating_section.END)], ""]
+    for sec in fluid_equilibrium.sections(old):
+        lines += [sec, ""]
     tmp = report + ".tmp"
     open(tmp, "w").write("\n".join(lines))
     os.replace(tmp, report)
