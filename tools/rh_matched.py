@@ -87,6 +87,7 @@ def section(study, commit, png):
     if not rows:
         raise SystemExit(f"rh_matched: no finished point in {study}")
     doc, path = law_of(name)
+    law_rel = os.path.relpath(path, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
     plot(rows, doc, png, "Coupling I at the matched resolution the law names, Hecht's fluid\n"
                          "one free colloid settling through a periodic cube of side 8 R")
     tab, bad = point_table(rows)
@@ -111,7 +112,7 @@ def section(study, commit, png):
         f"{', '.join(sorted({r['rev'] for r in rows}))}, one core of the 2-core machine) and `python3 "
         f"tools/rh_matched.py out/studies/{name} validation/REPORT.md` (section written at {commit}).  Rule R8 of "
         "validation/RULES_rh_resolution.md, committed with the study before its run: the resolution that the law "
-        f"of {doc['study']} (its section above; {os.path.relpath(path, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..'))}) names for R_h/R = 0.95, rounded to whole "
+        f"of {doc['study']} (its section above; {law_rel}) names for R_h/R = 0.95, rounded to whole "
         "cells, run instead of trusted.  The same colloid, fluid, data and R1–R3 as that study.", ""] + tab + [
         ""] + lines + [
         f"- **Read again from colloids.h5, stationary (R1, R2):** {len(rows) - len(bad)} of {len(rows)} points "

@@ -52,12 +52,11 @@ STUDIES = {
              "part of its relative velocities that is not the kept rigid rotation).  R6's first runs, with the "
              "earlier SRD+a, read 0.847 ± 0.012 and 0.900 ± 0.011 at R = 2, 3 a0; their R = 4 a0 point was stopped "
              "by the fluid guard, and a pure fluid of that rule with the rescaling thermostat was not at "
-             "equilibrium (its cells' mean velocities at 1.16 ± 0.05 kT, velocity kurtosis 3.83).  With the mended "
-             "rule a pure fluid of these parameters (32³ cells, 6000 steps, the rescaling thermostat; h5py on the "
-             "checkpoint, SE from 8 slabs) has its cells' mean velocities at 0.995 ± 0.005 kT and a velocity "
-             "kurtosis of 3.075 ± 0.006 (random_axis: 0.996 ± 0.005, 3.004 ± 0.007): near equilibrium, its "
-             "distribution's tails 2.5 % above Maxwell's in the fourth moment.  The viscosity used for R_h is "
-             "SRD+a's derived one (its ratio to SRD's checked by tests/physics/test_mpc_viscosity.c, +0.7 ± 0.7 %)",
+             "equilibrium (a pure fluid of these parameters, 32³ cells, 6000 steps, read with "
+             "tools/fluid_equilibrium.py: its cells' mean velocities at 1.16 ± 0.05 kT, velocity kurtosis "
+             "3.83 ± 0.02).  The mended rule's pure fluid is at equipartition with a kurtosis slightly above "
+             "Maxwell's (the section 'A pure fluid at equilibrium' below).  The viscosity used for R_h is SRD+a's derived one (its ratio to SRD's checked "
+             "by tests/physics/test_mpc_viscosity.c, +0.7 ± 0.7 %)",
         fluid="the default fluid (5 per cell, λ = 0.1 a0, 130° about random axes, "
               "grid shift) with SRD+a, the rotation that keeps each cell's angular momentum (its own viscosity)",
         calibration=None),
