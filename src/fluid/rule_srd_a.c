@@ -30,16 +30,15 @@
  * being kept), so that part is scaled back to its energy before the
  * collision; momentum and angular momentum are untouched by the scaling.
  * Like SRD, then, the rule keeps mass, momentum and energy and needs no
- * thermostat; it also keeps angular momentum.  The stationary state, read
- * from a pure fluid's checkpoint (gamma 5, lambda 0.1, 32^3 cells, 6000
- * steps): the cells' relative temperature and the energy of their mean
- * velocities at kT within 1 %, the velocity kurtosis 3.07 against SRD's
- * 3.00 (the scaled projection is not an orthogonal map of the non-rigid
- * velocities, so the cell's microcanonical measure is kept only nearly).
- * Before the scaling, the rigid rotation heated the fluid and a rescaling
- * thermostat could not bring it to equilibrium (the cells' mean velocities
- * at 1.16 kT, kurtosis 3.8).  The figures: validation/REPORT.md, the
- * SRD+a section of the resolution study. */
+ * thermostat; it also keeps angular momentum.  Its stationary state (a
+ * pure fluid's checkpoint read with h5py): the cells' relative and mean
+ * velocities at kT, the velocity distribution's fourth moment measurably
+ * above Maxwell's (the scaled projection is not an orthogonal map of the
+ * non-rigid velocities, so the cell's microcanonical measure is kept only
+ * nearly).  Before the scaling, the rigid rotation heated the fluid, and a
+ * rescaling thermostat could not bring it to equilibrium (the cells' mean
+ * velocities ran hot).  The figures: validation/REPORT.md, the SRD+a
+ * section of the resolution study. */
 #include <math.h>
 
 #include "peloid/collision_rule.h"
@@ -57,8 +56,8 @@ const pl_collision_rule_t pl_rule_srd_a = {
     .doc = "SRD+a: random_axis followed by the rigid rotation that keeps each cell's angular momentum about its "
            "centre of mass (Noguchi & Gompper 2008), each cell's energy kept by scaling the rest of its relative "
            "velocities back (no thermostat needed); periodic or slip walls; not with coupling II.  Its velocity "
-           "kurtosis is 3.07 against SRD's 3.00 (validation/REPORT.md, SRD+a section); mpc_at_a keeps angular "
-           "momentum with an exact Andersen thermostat",
+           "distribution departs slightly from Maxwell's (validation/REPORT.md, SRD+a section); mpc_at_a keeps "
+           "angular momentum with an exact Andersen thermostat",
     .keys = "srd.alpha",
     .theory_ref = "SRD+a: derived in src/fluid/rule_srd_a.c",
     .theory = theory,

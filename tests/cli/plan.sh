@@ -8,7 +8,7 @@
 # Hasimoto's 2.837 R_h / L, and turns the colloid D's SE ~0.35/sqrt(N) into
 # the replicas the target needs (1 %: 8 runs of 173 colloids) with the
 # `peloid run --replicas` line, and names the matched resolution of coupling
-# I from the measured law of the scene's fluid; a bad --target, a missing one
+# I from the measured law of the scene's fluid with the run made at it; a bad --target, a missing one
 # and a scene without a physical{} suspension are refused with exit 2 and
 # one line.
 set -u
@@ -61,6 +61,17 @@ assert abs(float(m.group(1)) - R) < 0.01 * R and abs(float(m.group(2)) - 1 / R) 
 PY
 then ok "plan hecht_table1: matched R_h = R at the law's R/a0 (calibration/rh_resolution-c1_hecht.json)"
 else bad "plan hecht_table1 matched: $(grep -A1 matched "$T/h.txt" | head -3)"; fi
+# the run at that resolution (rule R8, tools/rh_matched.py: the law file's "check") printed beside it, as the file has it
+if /usr/bin/python3 - "$T/h.txt" calibration/rh_resolution-c1_hecht.json <<'PY'
+import json, re, sys
+t, c = open(sys.argv[1]).read(), json.load(open(sys.argv[2]))["check"]["points"][0]
+m = re.search(r"\n +run at R = ([0-9.]+) a0: R_h/R = ([0-9.]+) \+- ([0-9.]+), (matched|not matched)", t)
+assert m, t
+assert (float(m.group(1)), m.group(4)) == (c["R_over_a0"], c["verdict"]), m.groups()
+assert abs(float(m.group(2)) - c["rh_over_R"]) < 6e-4 and abs(float(m.group(3)) - c["rh_over_R_se"]) < 6e-4, m.groups()
+PY
+then ok "plan hecht_table1: the run at the matched resolution and its verdict (the law file's check)"
+else bad "plan hecht_table1 run at the matched resolution: $(grep -A2 'R_h/R = 0.95' "$T/h.txt" | head -3)"; fi
 grep -v -e '^srd:' -e 'particles_per_cell' -e 'mean_free_path' scenes/hecht_table1.cfg > "$T/default_fluid.cfg"
 sed 's/particles_per_cell = 2.5;/particles_per_cell = 3.0;/' scenes/hecht_table1.cfg > "$T/other_fluid.cfg"
 "$PELOID" plan "$T/default_fluid.cfg" --target 5% --calibrate never > "$T/d.txt" 2>&1
