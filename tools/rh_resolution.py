@@ -47,7 +47,8 @@ STUDIES = {
         fluid="the default fluid of a physical coupling I scene (5 per cell, λ = 0.1 a0, 130° about random axes, "
               "grid shift)", calibration=None),
     "rh_resolution_c1_default_a": dict(
-        rerun=None, short="the default fluid with SRD+a", departure=None,
+        rerun="the runs' revision string reads 08d2d6e-dirty: the binary was built from the source committed as "
+              "2202939 before that commit", short="the default fluid with SRD+a", departure=None,
         note="these are R9's runs, with SRD+a as mended in 2202939 (each cell's kinetic energy kept by scaling the "
              "part of its relative velocities that is not the kept rigid rotation).  R6's first runs, with the "
              "earlier SRD+a, read 0.847 ± 0.012 and 0.900 ± 0.011 at R = 2, 3 a0; their R = 4 a0 point was stopped "
