@@ -16,7 +16,7 @@ import sys
 
 import numpy as np
 
-from rh_resolution import law_path, matched, point_table, points, settled, write_json
+from rh_resolution import finish_plot, law_path, matched, point_table, points, settled, write_json
 from validation.report_section import sections_in, study_section_main
 
 BEGIN = "<!-- rh matched: {} (tools/rh_matched.py) -->"  # .format(study name)
@@ -69,16 +69,7 @@ def plot(rows, doc, path, title):
     ax.plot(xx, 1.0 / (1.0 + law["b"] + law["c"] * xx), "C0-", lw=1,
             label=f"the law, R/R_h − 1 = {law['form']} (c = {law['c']:.3f}), fitted to the study's points")
     ax.axhspan(0.95, 1.05, color="0.85", label="matched: within 5 %")
-    ax.set_xlim(0.0, 0.55)
-    ax.set_ylim(0.7, 1.06)
-    ax.set_xlabel("a0 / R  (cell size over colloid radius)")
-    ax.set_ylabel("R_h / R  (stick sphere of the same friction)")
-    ax.set_title(title, fontsize=9)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=7.5, loc="lower left")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    finish_plot(fig, ax, (0.0, 0.55), (0.7, 1.06), title, path)
 
 
 def section(study, commit, png):

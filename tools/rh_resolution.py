@@ -197,8 +197,14 @@ def plot(rows, fa, fb, need, path, title):
     ax.axhspan(1 - MATCH, 1 + MATCH, color="0.85", label="matched: within 5 %")
     if need:
         ax.axvline(1.0 / need[0], color="k", lw=0.8, ls=":", label=f"R_h/R = 0.95 at a0/R = {1.0 / need[0]:.3f}")
-    ax.set_xlim(0.0, max(x) * 1.1)
-    ax.set_ylim(0.5, 1.08)
+    finish_plot(fig, ax, (0.0, max(x) * 1.1), (0.5, 1.08), title, path)
+
+
+def finish_plot(fig, ax, xlim, ylim, title, path):
+    """The axes of an R_h/R against a0/R plot (this tool's and tools/rh_matched.py's), saved to path."""
+    import matplotlib.pyplot as plt
+    ax.set_xlim(*xlim)
+    ax.set_ylim(*ylim)
     ax.set_xlabel("a0 / R  (cell size over colloid radius)")
     ax.set_ylabel("R_h / R  (stick sphere of the same friction)")
     ax.set_title(title, fontsize=9)
