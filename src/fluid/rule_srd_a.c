@@ -37,7 +37,8 @@
  * non-rigid velocities, so the cell's microcanonical measure is kept only
  * nearly).  Before the scaling, the rigid rotation heated the fluid, and a
  * rescaling thermostat could not bring it to equilibrium (the cells' mean
- * velocities ran hot).  The figures: validation/REPORT.md, the SRD+a
+ * velocities ran hot).  The figures: validation/REPORT.md, "A pure fluid
+ * at equilibrium" (tests/validation/fluid_equilibrium.sh) and the SRD+a
  * section of the resolution study. */
 #include <math.h>
 
@@ -56,8 +57,8 @@ const pl_collision_rule_t pl_rule_srd_a = {
     .doc = "SRD+a: random_axis followed by the rigid rotation that keeps each cell's angular momentum about its "
            "centre of mass (Noguchi & Gompper 2008), each cell's energy kept by scaling the rest of its relative "
            "velocities back (no thermostat needed); periodic or slip walls; not with coupling II.  Its velocity "
-           "distribution departs slightly from Maxwell's (validation/REPORT.md, SRD+a section); mpc_at_a keeps "
-           "angular momentum with an exact Andersen thermostat",
+           "distribution departs slightly from Maxwell's (validation/REPORT.md, a pure fluid at equilibrium); mpc_at_a "
+           "keeps angular momentum with an exact Andersen thermostat",
     .keys = "srd.alpha",
     .theory_ref = "SRD+a: derived in src/fluid/rule_srd_a.c",
     .theory = theory,
