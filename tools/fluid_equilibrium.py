@@ -9,6 +9,7 @@ along z.  Cells: the unit grid of the stored positions (the run's shifts do not 
 
 fluid_equilibrium.sh's rules: both temperatures within 3 SE of kT; the kurtosis within 3 SE of 3 for a rule that
 samples Maxwell's distribution exactly (random_axis); srd_a's within 0.1 of 3, the departure its row states."""
+import json
 import os
 import sys
 
@@ -44,7 +45,6 @@ def _stats(r, v, L):
 def measure(run):
     """(values, SEs) of (cell-relative T, cells' mean-velocity energy, kurtosis), the largest speed in thermal
     speeds, kT of the scene (summary.json's fluid temperature)."""
-    import json
     f = h5py.File(os.path.join(run, "checkpoint.h5"), "r")
     r = np.stack([f["fluid"][k][:] for k in "xyz"], 1)
     v = np.stack([f["fluid"]["v" + k][:] for k in "xyz"], 1)

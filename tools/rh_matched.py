@@ -16,7 +16,7 @@ import sys
 
 import numpy as np
 
-from rh_resolution import finish_plot, law_path, matched, point_table, points, settled, write_json
+from rh_resolution import array_mobility, finish_plot, law_path, matched, point_table, points, settled, write_json
 from validation.report_section import sections_in, study_section_main
 
 BEGIN = "<!-- rh matched: {} (tools/rh_matched.py) -->"  # .format(study name)
@@ -46,10 +46,8 @@ def predicted(law, R):
 
 def stokes_ratio(r):
     """The dilute sediment: u against Stokes's velocity for the radius R, F / (6 pi eta R), times the periodic
-    array's mobility at R (Hasimoto 1959, Zick & Homsy 1982: 1 - 1.7601 chi + chi^3 - 1.5593 chi^6,
-    chi = (4 pi/3)^(1/3) R/L); with its SE."""
-    chi = (4.0 * math.pi / 3.0) ** (1.0 / 3.0) * r["R"] / r["L"]
-    ref = r["F"] / (6.0 * math.pi * r["eta"] * r["R"]) * (1.0 - 1.7601 * chi + chi ** 3 - 1.5593 * chi ** 6)
+    array's mobility at R (rh_resolution.array_mobility); with its SE."""
+    ref = r["F"] / (6.0 * math.pi * r["eta"] * r["R"]) * array_mobility(r["R"], r["L"])
     return r["u"] / ref, r["u_se"] / ref
 
 

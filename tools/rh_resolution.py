@@ -56,8 +56,8 @@ STUDIES = {
              "equilibrium (a pure fluid of these parameters, 32³ cells, 6000 steps, read with "
              "tools/fluid_equilibrium.py: its cells' mean velocities at 1.16 ± 0.05 kT, velocity kurtosis "
              "3.83 ± 0.02).  The mended rule's pure fluid is at equipartition with a kurtosis slightly above "
-             "Maxwell's (the section 'A pure fluid at equilibrium' below).  The viscosity used for R_h is SRD+a's derived one (its ratio to SRD's checked "
-             "by tests/physics/test_mpc_viscosity.c, +0.7 ± 0.7 %)",
+             "Maxwell's (the section 'A pure fluid at equilibrium' below).  The viscosity used for R_h is SRD+a's "
+             "derived one (its ratio to SRD's checked by tests/physics/test_mpc_viscosity.c, +0.7 ± 0.7 %)",
         fluid="the default fluid (5 per cell, λ = 0.1 a0, 130° about random axes, "
               "grid shift) with SRD+a, the rotation that keeps each cell's angular momentum (its own viscosity)",
         calibration=None),
@@ -79,13 +79,19 @@ def sections(text):
     return sections_in(text, STUDIES, BEGIN, END)
 
 
+def array_mobility(radius, L):
+    """The mobility of a sphere of `radius` in a periodic cubic array of side L over the unbounded one's (Hasimoto
+    1959, Zick & Homsy 1982): 1 - 1.7601 chi + chi^3 - 1.5593 chi^6, chi = (4 pi/3)^(1/3) radius/L."""
+    chi = (4.0 * math.pi / 3.0) ** (1.0 / 3.0) * radius / L
+    return 1.0 - 1.7601 * chi + chi ** 3 - 1.5593 * chi ** 6
+
+
 def unbounded(xi_box, eta, L):
-    """xi in the unbounded fluid from xi_box of a sphere in a periodic cube of side L (Hasimoto 1959, Zick & Homsy
-    1982: xi_box / xi = 1 / (1 - 1.7601 chi + chi^3 - 1.5593 chi^6), chi = (4 pi/3)^(1/3) R_h/L), by iteration."""
+    """xi in the unbounded fluid from xi_box of a sphere in a periodic cube of side L: xi_box / xi =
+    1 / array_mobility(R_h, L), R_h = xi / (6 pi eta), by iteration."""
     xi = xi_box
     for _ in range(200):
-        chi = (4.0 * math.pi / 3.0) ** (1.0 / 3.0) * xi / (6.0 * math.pi * eta) / L
-        new = xi_box * (1.0 - 1.7601 * chi + chi ** 3 - 1.5593 * chi ** 6)
+        new = xi_box * array_mobility(xi / (6.0 * math.pi * eta), L)
         if abs(new - xi) < 1e-13 * xi:
             break
         xi = new
