@@ -5,8 +5,10 @@
  * (peloid/cell_angular.h; Noguchi & Gompper, PRE 78, 016706 (2008)),
  *   v_i' = u + R (v_i - u) + Pi^-1 [sum_j r_j x (v_j - u - R (v_j - u))] x r_i,
  * then the cell's kinetic energy brought back (energy_back below: the part
- * of v' - u that is not the kept rigid rotation scaled), cell by cell (peloid/cell_collide.h: blocks, fixed-order sums, the same
- * bits for any thread count). */
+ * of v' - u that is not the kept rigid rotation scaled), cell by cell
+ * (peloid/cell_collide.h: blocks, fixed-order sums, the same bits for any
+ * thread count).  The cell's inertia tensor is built once for both the
+ * restore and the kept rigid rotation. */
 #include <math.h>
 
 #include "peloid/cell_angular.h"
@@ -23,10 +25,8 @@ static inline void energy_back(pl_fluid_t *f, const pl_grid_t *g, size_t s, size
 {
     double A = 0.0, B = 0.0, C = 0.0; /* sum |d|^2, sum (w x r) . d, sum |w x r|^2 */
     for (size_t i = s; i < e; ++i) {
-        double x[3];
-        pl_cell_rel(f, g, s, i, x);
-        const double p = x[0] - rc[0], q = x[1] - rc[1], r = x[2] - rc[2];
-        const double o[3] = {w[1] * r - w[2] * q, w[2] * p - w[0] * r, w[0] * q - w[1] * p};
+        double o[3];
+        pl_cell_spin(f, g, s, i, rc, w, o);
         for (int d = 0; d < 3; ++d) {
             const double dv = (double)f->v[d][i] - u[d] - o[d];
             A += dv * dv;
@@ -38,10 +38,8 @@ static inline void energy_back(pl_fluid_t *f, const pl_grid_t *g, size_t s, size
     if (A <= 1e-12 * before2 || disc < 0.0) return; /* nothing but the rigid rotation (or no real root) */
     const double k = (sqrt(disc) - B) / A;
     for (size_t i = s; i < e; ++i) {
-        double x[3];
-        pl_cell_rel(f, g, s, i, x);
-        const double p = x[0] - rc[0], q = x[1] - rc[1], r = x[2] - rc[2];
-        const double o[3] = {w[1] * r - w[2] * q, w[2] * p - w[0] * r, w[0] * q - w[1] * p};
+        double o[3];
+        pl_cell_spin(f, g, s, i, rc, w, o);
         for (int d = 0; d < 3; ++d) f->v[d][i] = (pl_real)(u[d] + o[d] + k * ((double)f->v[d][i] - u[d] - o[d]));
     }
 }
@@ -51,8 +49,10 @@ static inline double srd_a_cell(pl_fluid_t *f, const pl_grid_t *g, const pl_coll
 {
     pl_cell_angular_t a;
     pl_cell_angular_before(f, g, s, e, &a);
+    pl_cell_inertia_t I;
+    pl_cell_inertia(f, g, s, e, a.rc, &I);
     double w[3] = {0.0, 0.0, 0.0}, R[3][3], P[3] = {0.0, 0.0, 0.0};
-    const int turns = pl_cell_omega(f, g, s, e, a.rc, a.L, w); /* the cell's rigid rotation, kept */
+    const int turns = pl_cell_inertia_solve(&I, a.L, w); /* the cell's rigid rotation, kept */
     pl_srd_rotation(p->rule, p->cos_a, p->sin_a, p->seed, PL_RNG_COLLIDE, p->step, c, R);
     for (size_t i = s; i < e; ++i)
         for (int d = 0; d < 3; ++d) P[d] += f->v[d][i];
@@ -65,7 +65,7 @@ static inline double srd_a_cell(pl_fluid_t *f, const pl_grid_t *g, const pl_coll
         f->v[1][i] = (pl_real)(u[1] + R[1][0] * x + R[1][1] * y + R[1][2] * z);
         f->v[2][i] = (pl_real)(u[2] + R[2][0] * x + R[2][1] * y + R[2][2] * z);
     }
-    pl_cell_angular_restore(f, g, s, e, &a);
+    pl_cell_angular_restore_with(f, g, s, e, &a, &I);
     if (turns) energy_back(f, g, s, e, a.rc, w, u, before2);
     return pl_cell_relative_sum2(f, s, e);
 }

@@ -63,11 +63,16 @@ static inline void pl_cell_angular_before(const pl_fluid_t *f, const pl_grid_t *
     pl_cell_L(f, g, s, e, a->rc, a->L);
 }
 
-/* The angular velocity w = Pi^-1 L of the rigid rotation of particles
- * [s, e) about rc that carries angular momentum L (see above: 2 particles
- * or collinear ones, w = 2 L / tr Pi); 0 when all sit at one point. */
-static inline int pl_cell_omega(const pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t e, const double rc[3],
-                                const double L[3], double w[3])
+/* The moment-of-inertia tensor Pi of particles [s, e) about rc, kept as
+ * what solving Pi w = L needs: its adjugate and determinant, and tr S
+ * (S = sum r r^T, tr Pi = 2 tr S) for 2 particles or collinear ones. */
+typedef struct {
+    double c00, c01, c02, c11, c12, c22; /* adj(Pi), symmetric */
+    double det, tr;
+} pl_cell_inertia_t;
+
+static inline void pl_cell_inertia(const pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t e, const double rc[3],
+                                   pl_cell_inertia_t *I)
 {
     double S[6] = {0, 0, 0, 0, 0, 0}; /* S = sum r r^T: xx yy zz xy xz yz */
     for (size_t i = s; i < e; ++i) {
@@ -80,44 +85,69 @@ static inline int pl_cell_omega(const pl_fluid_t *f, const pl_grid_t *g, size_t 
     const double tr = S[0] + S[1] + S[2];
     /* Pi = tr(S) I - S */
     const double a00 = tr - S[0], a11 = tr - S[1], a22 = tr - S[2], a01 = -S[3], a02 = -S[4], a12 = -S[5];
-    const double c00 = a11 * a22 - a12 * a12, c01 = a02 * a12 - a01 * a22, c02 = a01 * a12 - a02 * a11;
-    const double c11 = a00 * a22 - a02 * a02, c12 = a01 * a02 - a00 * a12, c22 = a00 * a11 - a01 * a01;
-    const double det = a00 * c00 + a01 * c01 + a02 * c02, t3 = tr * tr * tr; /* tr Pi = 2 tr S */
-    if (det > 1e-9 * t3) { /* Pi^-1 = adj(Pi) / det */
-        w[0] = (c00 * L[0] + c01 * L[1] + c02 * L[2]) / det;
-        w[1] = (c01 * L[0] + c11 * L[1] + c12 * L[2]) / det;
-        w[2] = (c02 * L[0] + c12 * L[1] + c22 * L[2]) / det;
-    } else if (tr > 0.0) { /* 2 particles or collinear ones */
-        for (int d = 0; d < 3; ++d) w[d] = L[d] / tr; /* 2 L / tr Pi, tr Pi = 2 tr S */
+    I->c00 = a11 * a22 - a12 * a12;
+    I->c01 = a02 * a12 - a01 * a22;
+    I->c02 = a01 * a12 - a02 * a11;
+    I->c11 = a00 * a22 - a02 * a02;
+    I->c12 = a01 * a02 - a00 * a12;
+    I->c22 = a00 * a11 - a01 * a01;
+    I->det = a00 * I->c00 + a01 * I->c01 + a02 * I->c02;
+    I->tr = tr;
+}
+
+/* The angular velocity w = Pi^-1 L of the rigid rotation that carries
+ * angular momentum L (see above: 2 particles or collinear ones,
+ * w = 2 L / tr Pi); 0 when all sit at one point. */
+static inline int pl_cell_inertia_solve(const pl_cell_inertia_t *I, const double L[3], double w[3])
+{
+    const double t3 = I->tr * I->tr * I->tr; /* tr Pi = 2 tr S */
+    if (I->det > 1e-9 * t3) { /* Pi^-1 = adj(Pi) / det */
+        w[0] = (I->c00 * L[0] + I->c01 * L[1] + I->c02 * L[2]) / I->det;
+        w[1] = (I->c01 * L[0] + I->c11 * L[1] + I->c12 * L[2]) / I->det;
+        w[2] = (I->c02 * L[0] + I->c12 * L[1] + I->c22 * L[2]) / I->det;
+    } else if (I->tr > 0.0) { /* 2 particles or collinear ones */
+        for (int d = 0; d < 3; ++d) w[d] = L[d] / I->tr; /* 2 L / tr Pi, tr Pi = 2 tr S */
     } else {
         return 0; /* all at one point: no angular momentum to keep */
     }
     return 1;
 }
 
-/* Adds the rigid rotation w about rc to the velocities of particles [s, e). */
-static inline void pl_cell_add_rotation(pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t e, const double rc[3],
-                                        const double w[3])
+/* w x (x_i - rc) of particle i (x_i relative to particle s). */
+static inline void pl_cell_spin(const pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t i, const double rc[3],
+                                const double w[3], double o[3])
 {
-    for (size_t i = s; i < e; ++i) {
-        double x[3];
-        pl_cell_rel(f, g, s, i, x);
-        const double p = x[0] - rc[0], q = x[1] - rc[1], r = x[2] - rc[2];
-        f->v[0][i] = (pl_real)(f->v[0][i] + (w[1] * r - w[2] * q));
-        f->v[1][i] = (pl_real)(f->v[1][i] + (w[2] * p - w[0] * r));
-        f->v[2][i] = (pl_real)(f->v[2][i] + (w[0] * q - w[1] * p));
-    }
+    double x[3];
+    pl_cell_rel(f, g, s, i, x);
+    const double p = x[0] - rc[0], q = x[1] - rc[1], r = x[2] - rc[2];
+    o[0] = w[1] * r - w[2] * q;
+    o[1] = w[2] * p - w[0] * r;
+    o[2] = w[0] * q - w[1] * p;
 }
 
 /* After the collision: the rigid rotation that gives back the angular
- * momentum a->L. */
-static inline void pl_cell_angular_restore(pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t e,
-                                           const pl_cell_angular_t *a)
+ * momentum a->L, with the cell's inertia I (pl_cell_inertia about a->rc). */
+static inline void pl_cell_angular_restore_with(pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t e,
+                                                const pl_cell_angular_t *a, const pl_cell_inertia_t *I)
 {
     double L[3], w[3];
     pl_cell_L(f, g, s, e, a->rc, L);
     const double dL[3] = {a->L[0] - L[0], a->L[1] - L[1], a->L[2] - L[2]};
-    if (pl_cell_omega(f, g, s, e, a->rc, dL, w)) pl_cell_add_rotation(f, g, s, e, a->rc, w);
+    if (!pl_cell_inertia_solve(I, dL, w)) return;
+    for (size_t i = s; i < e; ++i) {
+        double o[3];
+        pl_cell_spin(f, g, s, i, a->rc, w, o);
+        for (int d = 0; d < 3; ++d) f->v[d][i] = (pl_real)(f->v[d][i] + o[d]);
+    }
+}
+
+/* The same, the inertia computed here. */
+static inline void pl_cell_angular_restore(pl_fluid_t *f, const pl_grid_t *g, size_t s, size_t e,
+                                           const pl_cell_angular_t *a)
+{
+    pl_cell_inertia_t I;
+    pl_cell_inertia(f, g, s, e, a->rc, &I);
+    pl_cell_angular_restore_with(f, g, s, e, a, &I);
 }
 
 /* sum (v - u)^2 of particles [s, e) (u their mean velocity). */
