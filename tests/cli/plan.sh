@@ -8,9 +8,9 @@
 # Hasimoto's 2.837 R_h / L, and turns the colloid D's SE ~0.35/sqrt(N) into
 # the replicas the target needs (1 %: 8 runs of 173 colloids) with the
 # `peloid run --replicas` line, and names the matched resolution of coupling
-# I from the measured law of the scene's fluid with the run made at it; a bad --target, a missing one
-# and a scene without a physical{} suspension are refused with exit 2 and
-# one line.
+# I from the measured law of the scene's fluid with the run made at it; a
+# bad --target, a missing one and a scene without a physical{} suspension
+# are refused with exit 2 and one line.
 set -u
 PELOID=$(realpath "${1:-bin/peloid}")
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
@@ -61,7 +61,8 @@ assert abs(float(m.group(1)) - R) < 0.01 * R and abs(float(m.group(2)) - 1 / R) 
 PY
 then ok "plan hecht_table1: matched R_h = R at the law's R/a0 (calibration/rh_resolution-c1_hecht.json)"
 else bad "plan hecht_table1 matched: $(grep -A1 matched "$T/h.txt" | head -3)"; fi
-# the run at that resolution (rule R8, tools/rh_matched.py: the law file's "check") printed beside it, as the file has it
+# the run at that resolution (rule R8, tools/rh_matched.py: the law file's "check") printed beside it,
+# as the file has it
 if /usr/bin/python3 - "$T/h.txt" calibration/rh_resolution-c1_hecht.json <<'PY'
 import json, re, sys
 t, c = open(sys.argv[1]).read(), json.load(open(sys.argv[2]))["check"]["points"][0]

@@ -121,8 +121,8 @@ Test(mpc_viscosity, mpc_at_a_kinetic, .timeout = 3600)
 Test(mpc_viscosity, srd_a_over_srd, .timeout = 3600)
 {
     /* SRD+a against SRD at the same gamma = 10, lambda = 0.05, alpha = 130 deg (collisional 97 %), box and
-     * thermostat (rescale: both keep the energy, the forcing heats them): the ratio of the viscosities against the ratio of the theories,
-     * src/fluid/rule_srd_a.c's derived nu_col = 2/3 (1 - cos alpha) x MPC-AT+a's over PL Eq. 10.  The ratio,
+     * thermostat (rescale: both keep the energy, the forcing heats them): the ratio of the viscosities against
+     * the ratio of the theories, src/fluid/rule_srd_a.c's derived nu_col = 2/3 (1 - cos alpha) x MPC-AT+a's over PL Eq. 10.  The ratio,
      * not nu itself: at this lambda PL Eqs. 9-12 overestimate SRD's own nu by a few per cent (printed beside
      * it: the correlations of successive collisions the mean-field theory leaves out), and that part is
      * common to both rules.  Bound: 3 combined SE, the SE below 1.5 %.  The box of mpc_at_a_dense (+a's viscosity
