@@ -116,6 +116,7 @@ $(BUILD)/kernels/colloid_slow.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-mat
 # coupling_potential.c) also compile to more vector code with the two flags
 # (pl_coupling_wca_pair_block, the fused step's loop): the same values.
 $(BUILD)/kernels/coupling_select.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
+$(BUILD)/kernels/coupling_order.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 $(BUILD)/kernels/coupling_wca.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 $(BUILD)/kernels/coupling_potential.o: CFLAGS_ALL += -fno-math-errno -fno-trapping-math
 # The colloids' orientation update (kernels/colloid_integrate.h, in both the

@@ -32,9 +32,13 @@ void pl_coupling1_order(const pl_fluid_t *f, const pl_grid_t *g, const pl_coupli
 void pl_coupling1_chains(const pl_fluid_t *f, const pl_grid_t *g, const pl_c1_events_t *e, int nthreads,
                          size_t total, pl_coupling1_scratch_t *sc);
 
-/* The next event of colloid sc->k[j]'s chain (j its first event not yet
- * taken), or -1 when the chain is done. */
-int64_t pl_coupling1_next_event(const pl_c1_events_t *e, const pl_grid_t *g, const pl_coupling1_params_t *prm,
-                                const pl_fluid_t *f, const pl_coupling1_scratch_t *sc, size_t j);
+/* Colloid sc->k[j]'s chain from its head j gathered for
+ * pl_coupling1_chain_next; its number of untaken events. */
+size_t pl_coupling1_chain_gather(const pl_fluid_t *f, pl_coupling1_scratch_t *sc, size_t j);
+
+/* The next event of colloid k's gathered chain (*m left, one fewer after),
+ * or -1 when the chain is done. */
+int64_t pl_coupling1_chain_next(const pl_c1_events_t *e, const pl_grid_t *g, const pl_coupling1_params_t *prm,
+                                pl_coupling1_scratch_t *sc, int32_t k, size_t *m);
 
 #endif

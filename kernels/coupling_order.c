@@ -13,7 +13,7 @@
  *     colloids drifted towards -z (tests/physics/test_coupling_momentum.c).
  *  2. pl_coupling1_chains: the events of each colloid (its candidate: the
  *     first whose enlarged sphere holds the particle) in that order.
- *  3. pl_coupling1_next_event: a colloid's next event is, of those not
+ *  3. pl_coupling1_chain_next: a colloid's next event is, of those not
  *     taken, the one whose particle met it first on the path the events so
  *     far left it (its moved end position and its velocity now; meet_time),
  *     ties in the chain's order: event-driven order, O(n^2) in the
@@ -27,6 +27,7 @@
  * the sort and the chains are serial (events are few). */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "peloid/coupling_kernels.h"
 #include "peloid/rng.h"
@@ -86,31 +87,95 @@ static double entry_time(const pl_c1_events_t *e, const pl_grid_t *g, const pl_c
     return k < 0 ? 1.0 : meet_time(e, g, prm, k, r, v);
 }
 
-/* The next event of colloid sc->k[j]'s chain (j its first event not yet
- * taken): of those not taken, the one that met the colloid first on its
- * path as the events so far left it (meet_time; ties: the first in the
- * order), as an event-driven run would take them: an event changes the
- * colloid's path, and with it the times at which the later particles met
- * it (ordered by the MD's path alone, light colloids ran cold by ~(xi dt /
- * M)^2 / 20: 0.8 % at M = 33.5 m_f, R = 2 a0, dt = 0.1, stick).  -1 when
- * the chain is done.  O(events of the colloid) per event. */
-int64_t pl_coupling1_next_event(const pl_c1_events_t *e, const pl_grid_t *g, const pl_coupling1_params_t *prm,
-                                const pl_fluid_t *f, const pl_coupling1_scratch_t *sc, size_t j)
+/* The meet times (meet_time) of a chain's m untaken particles (r, v: its
+ * gathered copies, t: out) for colloid k as the events so far left it, in
+ * SIMD lanes: the same operations on the same operands as meet_time, so
+ * the same values (no fused multiply-adds: -ffp-contract=off; the lanes'
+ * division and square root are IEEE's, as the scalar ones).  A lane
+ * outside the sphere, or whose path does not cross it, computes on
+ * harmless operands and selects its 1 or 1/2. */
+static void chain_times(const pl_c1_events_t *e, const pl_grid_t *g, const pl_coupling1_params_t *prm, int32_t k,
+                        double *const r[7], size_t m)
 {
-    const int32_t k = sc->k[j];
-    int64_t best = -1;
-    double tb = INFINITY;
+    const double X = e->c.x[k], Y = e->c.y[k], Z = e->c.z[k];
+    const double VX = e->c.vx[k], VY = e->c.vy[k], VZ = e->c.vz[k];
+    const double R = e->c.rad[k], dt = prm->dt;
+    /* a closed axis subtracts L * 0: x - 0 is x exactly, as meet_time's skip */
+    double pL[3];
+    for (int a = 0; a < 3; ++a) pL[a] = g->walls[a] == PL_WALLS_NONE ? g->L[a] : 0.0;
+    const double L0 = g->L[0], L1 = g->L[1], L2 = g->L[2];
+    const double *restrict rx = r[0], *restrict ry = r[1], *restrict rz = r[2];
+    const double *restrict vx = r[3], *restrict vy = r[4], *restrict vz = r[5];
+    double *restrict t = r[6];
+#pragma omp simd
+    for (size_t q = 0; q < m; ++q) {
+        double px = rx[q] - X, py = ry[q] - Y, pz = rz[q] - Z;
+        px -= pL[0] * nearbyint(px / L0);
+        py -= pL[1] * nearbyint(py / L1);
+        pz -= pL[2] * nearbyint(pz / L2);
+        const double pp = px * px + py * py + pz * pz;
+        const double wx = vx[q] - VX, wy = vy[q] - VY, wz = vz[q] - VZ;
+        const double ww = wx * wx + wy * wy + wz * wz, pw = px * wx + py * wy + pz * wz;
+        const double disc = pw * pw - ww * (pp - R * R);
+        const int cross = ww > 0.0 && disc >= 0.0;
+        const double s = cross ? (pw + sqrt(cross ? disc : 0.0)) / (cross ? ww : 1.0) : -1.0;
+        const double tin = s > 0.0 && s <= dt ? 1.0 - s / dt : 0.5;
+        t[q] = pp >= R * R ? 1.0 : tin;
+    }
+}
+
+/* Colloid sc->k[j]'s chain from its head j: its untaken events' particles
+ * (r, v) copied in chain order to the chain's own part of sc->chain and
+ * sc->cq (sc->cbeg: threads taking other colloids write elsewhere); their
+ * number.  The copies stay true while the chain runs: an event changes its
+ * own particle only, and each particle is one event's. */
+size_t pl_coupling1_chain_gather(const pl_fluid_t *f, pl_coupling1_scratch_t *sc, size_t j)
+{
+    const int64_t base = sc->cbeg[sc->k[j]];
+    size_t m = 0;
     for (int64_t q = (int64_t)j; q >= 0; q = sc->next[q]) {
         if (sc->taken[q]) continue;
-        const size_t i = sc->idx[q];
-        const double r[3] = {f->r[0][i], f->r[1][i], f->r[2][i]}, v[3] = {f->v[0][i], f->v[1][i], f->v[2][i]};
-        const double t = meet_time(e, g, prm, k, r, v);
-        if (t < tb) {
-            tb = t;
+        const size_t i = sc->idx[q], s = (size_t)base + m++;
+        for (int d = 0; d < 3; ++d) {
+            sc->chain[(size_t)d * sc->cap + s] = f->r[d][i];
+            sc->chain[(size_t)(3 + d) * sc->cap + s] = f->v[d][i];
+        }
+        sc->cq[s] = q;
+    }
+    return m;
+}
+
+/* The next event of colloid k's gathered chain (*m untaken left): of
+ * those, the one that met the colloid first on its path as the events so
+ * far left it (meet_time; ties: the first in the chain's order), as an
+ * event-driven run would take them: an event changes the colloid's path,
+ * and with it the times at which the later particles met it (ordered by
+ * the MD's path alone, light colloids ran cold by ~(xi dt / M)^2 / 20: 0.8
+ * % at M = 33.5 m_f, R = 2 a0, dt = 0.1, stick).  It is taken out of the
+ * chain (the rest keep their order); -1 when the chain is done.  O(*m) per
+ * event, in SIMD lanes over contiguous copies: the linked chain's scattered
+ * reads of the fluid arrays, n^2 / 2 of them a step, were the cost of
+ * large colloids (bench/RESULTS.md). */
+int64_t pl_coupling1_chain_next(const pl_c1_events_t *e, const pl_grid_t *g, const pl_coupling1_params_t *prm,
+                                pl_coupling1_scratch_t *sc, int32_t k, size_t *m)
+{
+    if (*m == 0) return -1;
+    const size_t base = (size_t)sc->cbeg[k], n = *m;
+    double *r[7];
+    for (int d = 0; d < 7; ++d) r[d] = sc->chain + (size_t)d * sc->cap + base;
+    chain_times(e, g, prm, k, r, n);
+    size_t best = 0;
+    double tb = r[6][0];
+    for (size_t q = 1; q < n; ++q)
+        if (r[6][q] < tb) {
+            tb = r[6][q];
             best = q;
         }
-    }
-    return best;
+    const int64_t b = sc->cq[base + best];
+    for (int d = 0; d < 6; ++d) memmove(r[d] + best, r[d] + best + 1, (n - best - 1) * sizeof *r[d]);
+    memmove(sc->cq + base + best, sc->cq + base + best + 1, (n - best - 1) * sizeof *sc->cq);
+    *m = n - 1;
+    return b;
 }
 
 /* The step's first order (1 of the file header): by the time each
@@ -161,13 +226,14 @@ void pl_coupling1_chains(const pl_fluid_t *f, const pl_grid_t *g, const pl_c1_ev
         double q[3];
         sc->k[j] = pl_coupling_inside_cells(e->cb, g, e->cstart, e->clist, r, q);
     }
-    for (size_t k = 0; k < e->c.n; ++k) sc->head[k] = -1;
+    for (size_t k = 0; k <= e->c.n; ++k) sc->head[k] = -1, sc->cbeg[k] = 0;
     for (size_t j = total; j-- > 0;) {
         const int32_t k = sc->k[j];
         sc->next[j] = k >= 0 ? sc->head[k] : -1;
-        if (k >= 0) sc->head[k] = (int64_t)j;
+        if (k >= 0) sc->head[k] = (int64_t)j, sc->cbeg[k + 1]++;
         sc->taken[j] = 0;
         sc->done[j] = 0;
     }
+    for (size_t k = 0; k < e->c.n; ++k) sc->cbeg[k + 1] += sc->cbeg[k]; /* the chains' parts of sc->chain */
 }
 

@@ -390,7 +390,8 @@ static int parallel_events(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1
                 if (quit) break;
                 int rc = 0;
                 if (pass == 0) { /* colloid k's chain, in its event order */
-                    for (int64_t b; rc >= 0 && (b = pl_coupling1_next_event(e, g, prm, f, sc, j)) >= 0;) {
+                    size_t left = pl_coupling1_chain_gather(f, sc, j);
+                    for (int64_t b; rc >= 0 && (b = pl_coupling1_chain_next(e, g, prm, sc, k, &left)) >= 0;) {
                         sc->taken[b] = 1;
                         rc = par_event(f, g, prm, e, vel, hist, nthreads, sc, (size_t)b, mine);
                         more |= rc > 0;
@@ -504,7 +505,8 @@ void pl_coupling1_reflect(pl_fluid_t *f, const pl_grid_t *g, const pl_coupling1_
                 more |= serial_event(f, g, p, &e, vel, hist, nthreads, counts, sc, j);
                 continue;
             }
-            for (int64_t b; (b = pl_coupling1_next_event(&e, g, p, f, sc, j)) >= 0;) { /* colloid sc->k[j]'s chain */
+            size_t left = pl_coupling1_chain_gather(f, sc, j); /* colloid sc->k[j]'s chain */
+            for (int64_t b; (b = pl_coupling1_chain_next(&e, g, p, sc, sc->k[j], &left)) >= 0;) {
                 sc->taken[b] = 1;
                 more |= serial_event(f, g, p, &e, vel, hist, nthreads, counts, sc, (size_t)b);
             }

@@ -113,6 +113,9 @@ typedef struct {
     double *vsave;    /* vcap: the colloid velocities before the events */
     double *pos, *disp; /* vcap / 2 each: the colloids' moved end positions and displacements */
     int64_t *head;    /* vcap / 6 + 1: each colloid's first event (scratch of the chains) */
+    int64_t *cbeg;    /* vcap / 6 + 1: where each colloid's chain lies in chain and cq */
+    double *chain;    /* 7 x cap: the chains' untaken particles' r, v and meet times, by colloid */
+    int64_t *cq;      /* cap: their events, in chain order */
     unsigned long long parallel, gave_up; /* steps done in parallel; given up (a second colloid) */
 } pl_coupling1_scratch_t;
 

@@ -58,6 +58,9 @@ static void scratch_free(pl_coupling1_scratch_t *sc)
     free(sc->next);
     free(sc->taken);
     free(sc->head);
+    free(sc->cbeg);
+    free(sc->chain);
+    free(sc->cq);
     free(sc->done);
     free(sc->state);
     free(sc->vsave);
@@ -82,13 +85,16 @@ static int scratch_grow(pl_coupling1_scratch_t *sc, size_t n, size_t nc)
     sc->next = malloc(cap * sizeof *sc->next);
     sc->taken = malloc(cap * sizeof *sc->taken);
     sc->head = malloc((nc + 1) * sizeof *sc->head);
+    sc->cbeg = malloc((nc + 1) * sizeof *sc->cbeg);
+    sc->chain = malloc(7 * cap * sizeof *sc->chain);
+    sc->cq = malloc(cap * sizeof *sc->cq);
     sc->done = malloc(cap * sizeof *sc->done);
     sc->state = malloc(7 * cap * sizeof *sc->state);
     sc->vsave = malloc((6 * nc + 1) * sizeof *sc->vsave);
     sc->pos = malloc((3 * nc + 1) * sizeof *sc->pos);
     sc->disp = malloc((3 * nc + 1) * sizeof *sc->disp);
-    if (!sc->key || !sc->idx || !sc->owner || !sc->k || !sc->next || !sc->taken || !sc->head || !sc->done ||
-        !sc->state || !sc->vsave || !sc->pos || !sc->disp) {
+    if (!sc->key || !sc->idx || !sc->owner || !sc->k || !sc->next || !sc->taken || !sc->head || !sc->cbeg ||
+        !sc->chain || !sc->cq || !sc->done || !sc->state || !sc->vsave || !sc->pos || !sc->disp) {
         scratch_free(sc);
         return 0;
     }
