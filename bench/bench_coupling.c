@@ -9,7 +9,8 @@
  * (MD only), and the couplings hecht1 (stick_stochastic, entry placement),
  * hecht2 and potential (sigma_cf = 2 a0, epsilon_cf = 2.5 kT; colloid WCA
  * of PL Eq. 16 with sigma_cc = 4.3 a0), and potential-1: the potential
- * coupling with a single colloid (its cost where colloids are few).
+ * coupling with a single colloid (its cost where colloids are few), and
+ * hecht1-R6: one coupling I colloid of radius 6 a0 (its events' order).
  *
  * Per case and thread count: median (min..max) over `reps` repetitions of the
  * wall time per step per fluid particle, fluid particle-updates/s (per core),
@@ -71,6 +72,13 @@ static const case_t CASES[] = {
     {"potential", POTENTIAL, -1},
     /* one colloid: the selection's cost where colloids are few */
     {"potential-1", POTENTIAL, 1},
+    /* one large coupling I colloid (R = 6 a0, 905 cells): its events' order,
+     * O(n^2) in the n events a colloid has a step, n ~ R^2 */
+    {"hecht1-R6",
+     "colloids: { count = %d; radius = 6.0; mass_density = 5.0; temperature = 1.0;\n"
+     "  init = \"lattice\"; pairs = \"\"; substeps = 4; };\n"
+     "coupling: { method = \"hecht1\"; boundary = \"stick_stochastic\"; placement = \"entry\"; };\n",
+     1},
 };
 enum { NCASES = sizeof CASES / sizeof CASES[0] };
 
