@@ -340,6 +340,15 @@ typedef struct {
 typedef struct {
     int enabled;                   /* the scene has a physical{} section */
     int provisional;               /* PL_SCENE_PROVISIONAL: time-unit keys not compared with the file */
+    /* a provisional pass's time-unit keys the file gives: where, the value
+     * given and the value this pass's time unit derives (pl_scene_load_coupling_true
+     * brackets them before a calibration runs) */
+    int nheld;
+    struct {
+        size_t off;
+        const char *key, *from;
+        double given, derived;
+    } held[4];
     pl_scene_physical_t physical;
     pl_scene_cg_t cg;
     double kappa;                  /* 1/m, given or Debye-Hueckel */

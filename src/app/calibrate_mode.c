@@ -18,6 +18,7 @@
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "peloid/run.h"
@@ -74,6 +75,55 @@ void pl_calibrate_theory(const pl_scene_t *sc, pl_mapping_calibration_t *cal)
     cal->theory_hi = n > 0 ? hi : NAN;
 }
 
+/* Before a calibration: the time-unit keys the file gives (colloids.substeps,
+ * min_substeps, slow_interval, gravity: MD step counts and g t0^2 / a0) are
+ * compared in the calibrated pass, which needs the measured D; a value that
+ * no D from BRACKET[0] to BRACKET[1] times the coupling's theory derives is
+ * refused now, before the wait (the shipped calibrations measured 0.86 to
+ * 2.08 times theirs, THEORY_ROWS; the coarse coupling II suspension of
+ * tests/support/calibration_coarse_ii.inc 4.8: the bracket catches a unit
+ * slip or a stray digit, not a fine mismatch).  Its two provisional passes
+ * give the derived values at its ends (each key's is monotonic in t0); a
+ * pass that fails there (a check that the extreme t0 trips) leaves the
+ * comparison to the calibrated pass, as before. */
+static const double BRACKET[2] = {0.1, 10.0};
+
+static int bracket_held(const char *path, unsigned flags, const pl_scene_t *scene, pl_err_t *err)
+{
+    const pl_scene_mapping_t *mp = &scene->mapping;
+    if (mp->nheld == 0 || !(mp->map.d_col_theory > 0)) return 0;
+    pl_scene_t *b = malloc(2 * sizeof *b);
+    if (!b) return 0; /* an early answer only: the calibrated pass compares anyway */
+    int ends = 0;
+    for (int e = 0; e < 2; ++e) {
+        pl_mapping_calibration_t cal;
+        memset(&cal, 0, sizeof cal);
+        cal.d_theory = mp->map.d_col_theory;
+        cal.d_inf = BRACKET[e] * mp->map.d_col_theory;
+        pl_err_t ignored;
+        memset(&ignored, 0, sizeof ignored);
+        ends += !pl_scene_load_calibrated(path, flags | PL_SCENE_PROVISIONAL, &cal, b + e, &ignored) &&
+                b[e].mapping.nheld == mp->nheld;
+    }
+    int rc = 0;
+    for (int k = 0; ends == 2 && k < mp->nheld && !rc; ++k) {
+        const double d0 = b[0].mapping.held[k].derived, d1 = b[1].mapping.held[k].derived;
+        const double lo = fmin(d0, d1), hi = fmax(d0, d1), g = mp->held[k].given;
+        if (g >= lo - 1e-9 * fabs(lo) && g <= hi + 1e-9 * fabs(hi)) continue;
+        char range[160];
+        if (hi - lo <= 1e-9 * fabs(hi)) snprintf(range, sizeof range, "value %.6g here, whatever D it measures", lo);
+        else snprintf(range, sizeof range, "between %.6g and %.6g for any D from %g to %g times the coupling's "
+                      "theory", lo, hi, BRACKET[0], BRACKET[1]);
+        rc = pl_scene_fail(scene, err, mp->held[k].off, mp->held[k].key,
+                           "%.6g is derived from %s and the time unit the calibration sets from the measured colloid "
+                           "D (%s); remove it (a scene with physical{} gives the real suspension once), or give "
+                           "--calibrate never to compare it with the theory's value",
+                           g, mp->held[k].from, range);
+    }
+    free(b);
+    return rc;
+}
+
 int pl_scene_load_coupling_true(const char *path, unsigned flags, const char *shipped_dir, int nthreads,
                                 const pl_calibrate_opts_t *o, pl_scene_t *scene, pl_err_t *err)
 {
@@ -83,6 +133,7 @@ int pl_scene_load_coupling_true(const char *path, unsigned flags, const char *sh
     int rc = pl_scene_load_flags(path, flags | PL_SCENE_PROVISIONAL, scene, err);
     if (rc || !scene->mapping.enabled) return rc;
     if (!pl_calibration_needed(scene)) return pl_scene_load_flags(path, flags, scene, err);
+    if (o->mode != PL_CALIBRATE_NEVER && (rc = bracket_held(path, flags, scene, err))) return rc;
     pl_mapping_calibration_t cal;
     memset(&cal, 0, sizeof cal);
     if (o->mode != PL_CALIBRATE_NEVER &&

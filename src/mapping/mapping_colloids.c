@@ -43,13 +43,21 @@ static int given(const pl_scene_t *s, size_t off) { return pl_scene_line_of(s, o
 /* A derived key in the file: refused unless it carries the derived value (an echoed scene
  * reloads); in a provisional pass (PL_SCENE_PROVISIONAL) the keys of the time unit a calibration
  * replaces (MD step counts, model gravity g t0^2 / a0) wait for the calibrated pass. */
-static int refuse(const pl_scene_t *s, pl_err_t *err, size_t off, const char *key, const char *from,
+static int refuse(pl_scene_t *s, pl_err_t *err, size_t off, const char *key, const char *from,
                   double given_v, double derived, const char *shown)
 {
     const int time_unit = off == OFF(colloids.substeps) || off == OFF(colloids.min_substeps) ||
                           off == OFF(colloids.slow_interval) || off == OFF(colloids.gravity);
+    pl_scene_mapping_t *mp = &s->mapping;
+    if (given(s, off) && mp->provisional && time_unit && mp->nheld < (int)(sizeof mp->held / sizeof mp->held[0])) {
+        mp->held[mp->nheld].off = off;
+        mp->held[mp->nheld].key = key;
+        mp->held[mp->nheld].from = from;
+        mp->held[mp->nheld].given = given_v;
+        mp->held[mp->nheld++].derived = derived;
+    }
     if (!given(s, off) || fabs(given_v - derived) <= 1e-12 * fabs(derived)) return 0;
-    if (s->mapping.provisional && time_unit) return 0;
+    if (mp->provisional && time_unit) return 0;
     char v[64];
     if (shown) snprintf(v, sizeof v, "\"%s\"", shown);
     else snprintf(v, sizeof v, "%.6g", derived);

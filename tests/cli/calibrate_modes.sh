@@ -27,7 +27,12 @@
 #  6. the theory's stated error: the ratios of src/app/calibrate_mode.c
 #     equal measured / theory of `peloid params --json` of the scenes named
 #     there (shipped calibrations), and the relative error never states is
-#     their RMS per coupling.
+#     their RMS per coupling;
+#  7. a hand-typed time-unit key (colloids.substeps) that no colloid D from
+#     1/10 to 10 times the theory derives: run --calibrate auto exits 2 in
+#     < 5 s with one line, before any calibration (the binary of 7ba9dcd
+#     calibrated first: progress lines, a cache entry), and a calibrated
+#     run folder's echo still loads.
 # Shown to fail before --calibrate existed (cases 1-5: the option is
 # refused as unknown; 2: no estimate, no progress lines; 6: no
 # "calibration" object).
@@ -178,6 +183,23 @@ for method, rs in by.items():
 PY
 then ok "the stated theory errors equal the RMS of measured/theory - 1 over the shipped calibrations"
 else bad "the theory error table does not match the shipped calibrations"; fi
+
+# 7. a time-unit key given outside what any colloid D from 1/10 to 10 times the
+#    theory derives is refused before the calibration runs (it was refused
+#    only after it, its progress lines first); its run folder's echo, with
+#    the calibrated value, still loads
+export PELOID_NO_SHIPPED_CALIBRATION=1 PELOID_CACHE="$T/cache7"
+sed 's/colloids: { init = "lattice"; pairs = "hertz"; };/colloids: { init = "lattice"; pairs = "hertz"; substeps = 1000; };/' \
+  s.cfg > tu.cfg
+t1=$(now); "$PELOID" run tu.cfg --out tu_out --calibrate auto > tu.log 2>&1; rc=$?; t2=$(now)
+if [ $rc = 2 ] && [ "$(wc -l < tu.log)" = 1 ] && grep -q "tu.cfg:[0-9]*: key 'colloids.substeps': 1000 .*between" tu.log &&
+   ! grep -q "calibration:" tu.log && [ ! -e tu_out ] && [ -z "$(ls "$T/cache7" 2>/dev/null)" ] && fast "$t1" "$t2"; then
+  ok "a hand-typed colloids.substeps no calibration could derive: exit 2 at once, one line, nothing calibrated or written"
+else bad "substeps = 1000 (rc $rc): $(head -c 400 tu.log)"; fi
+if "$PELOID" run s.cfg --out plain_out --calibrate auto > plain.log 2>&1 &&
+   "$PELOID" check plain_out/scene.cfg --calibrate auto > echo.log 2>&1; then
+  ok "the run folder's echo (the calibrated time-unit keys in it) loads"
+else bad "echo of a calibrated run: $(tail -1 plain.log) / $(tail -1 echo.log)"; fi
 
 echo "calibrate modes: $pass passed, $fail failed"
 [ $fail = 0 ]
