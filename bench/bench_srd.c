@@ -49,6 +49,7 @@
 #include "bench_common.h"
 #include "peloid/sim.h"
 #include "peloid_build.h" /* PL_GIT_REV, PL_CFLAGS (generated) */
+#include "../src/fluid/srd_state.h" /* the fluid's kernels on its own scratch (hist, cell_start) */
 
 enum { MAX_SIZES = 8, MAX_REPS = 32, MAX_KERN = PL_MAX_STAGES + 1, MAX_TLIST = 64, MAX_THREADS = 1024 };
 

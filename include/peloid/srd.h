@@ -1,11 +1,13 @@
 /* The SRD fluid as a component (issue 46): what the fluid module
  * (src/fluid/) creates and its stages take as their context.  The particle
  * arrays (pl_sim_t.fluid) and the grid (pl_sim_t.grid) are the view that the
- * other components read and move; of this state the couplings use the
- * sort's order and borrow scratch of the fluid's shape through the ports
- * below; the whole-simulation checkpoint
- * (src/core/checkpoint.c) writes the field accumulators and kT_cell, the
- * fields writer reads the accumulators.  The rest only the fluid touches. */
+ * other components read and move; the fluid's own state is opaque here (its
+ * fields: src/fluid/srd_state.h, private to src/fluid/ and to the fluid's
+ * own unit test and kernel bench).  Through the ports below the couplings use
+ * the sort's order and borrow scratch of the fluid's shape, the
+ * whole-simulation checkpoint (src/core/checkpoint.c) writes and reads what
+ * the fluid keeps between steps, and the fields writer reads the
+ * accumulators. */
 #ifndef PELOID_SRD_H
 #define PELOID_SRD_H
 
@@ -15,33 +17,9 @@
 
 struct pl_collision_rule;
 
-typedef struct pl_srd {
-    const struct pl_collision_rule *rule; /* srd.rule's row (peloid/collision_rule.h) */
-    uint32_t *hist;       /* nthreads x ncells */
-    uint32_t *cell_start; /* ncells + 1 */
-    /* no particle moved since the last sort: the fluid is in collision-cell
-     * order under grid.shift, with cell_start (0 after creation or restart) */
-    int sorted;
-    /* this step's sort was the index sort (srd.sort_interval): cell c is the
-     * particles fluid.order[cell_start[c] .. cell_start[c+1]) */
-    int indexed;
-    double *block_sum;    /* 2 x ceil(ncells / PL_CELL_BLOCK) */
-    double *obs_scratch;  /* pl_srd_observe_scratch(n) */
-    double last_kT_meas;  /* PL Eq. A1 temperature of the last collision */
-    pl_collide_params_t collide; /* fixed when the plan is built; the stage sets the step */
-    int64_t *wall_acc;    /* nthreads x PL_WALL_ACC_STRIDE (streaming bounces; NULL without walls) */
-    double *wall_dp;      /* PL_WALL_ACC_N x blocks (virtual particles of the collision) */
-    /* fluid guard bounds (pl_fluid_guard_setup, src/fluid/fluid_guard.c) */
-    double guard_vmax;             /* largest speed allowed */
-    /* the collision's per-block speed flags (pl_collide_params_t.guard_bad)
-     * and the step whose collision wrote them (-1: none) */
-    unsigned char *guard_bad;
-    long long guard_bad_step;
-    double guard_kT_lo, guard_kT_hi; /* kT_cell band with a thermostat (else 0, inf) */
-    /* time-averaged fields (NULL without output.fields_interval) */
-    int64_t *field_acc;   /* 4 x L0 L1 L2, fixed point */
-    long long field_samples;
-} pl_srd_t;
+/* The fluid's state: its fields are the fluid's own (src/fluid/srd_state.h);
+ * other components use the ports below. */
+typedef struct pl_srd pl_srd_t;
 
 /* The fluid's ports (issue 46): what another component may use of this
  * state, by these functions and not by its fields (src/fluid/fluid_state.c).
@@ -60,5 +38,25 @@ double *pl_srd_scratch_observe(pl_srd_t *srd);
  * moves fluid particles off a wall adds what they gave it through
  * pl_sim_wall_add (the wall-impulse sink, peloid/sim.h). */
 int pl_srd_walls_measured(const pl_srd_t *srd);
+/* What the fluid keeps between steps beside its particles, which the
+ * checkpoint (src/core/checkpoint.c) writes and reads back: the
+ * time-averaged fields' fixed-point accumulator (4 x cells; NULL without
+ * output.fields_interval) and its sample count, and kT_cell of the last
+ * collision (PL Eq. A1), which the thermo row of a restart step prints. */
+typedef struct {
+    int64_t *field_acc;
+    long long *field_samples;
+    double *kT_cell;
+} pl_srd_kept_t;
+pl_srd_kept_t pl_srd_kept(pl_srd_t *srd);
+/* The time-averaged fields for a writer: the accumulator (NULL: none) and
+ * its sample count in *samples. */
+const int64_t *pl_srd_fields(const pl_srd_t *srd, long long *samples);
+/* The fluid guard's largest particle speed allowed (a restart checks the
+ * particles read against it). */
+double pl_srd_speed_bound(const pl_srd_t *srd);
+/* The particles were replaced (a restart): no cell order is valid until the
+ * next sort. */
+void pl_srd_order_lost(pl_srd_t *srd);
 
 #endif

@@ -149,8 +149,9 @@ static int write_summary(const writer_t *w, json_t *doc, const pl_sim_t *sim, lo
     pl_json_real(&b, doc, "wall_seconds", wall);
     pl_json_real(&b, doc, "cpu_seconds", cpu); /* the step loop's process CPU time, all threads */
     pl_json_real(&b, doc, "particle_updates_per_second", wall > 0 ? updates / wall : 0.0);
-    if (sim->srd->field_acc) /* 0: no sample was taken, no fields.h5 */
-        pl_json_int(&b, doc, "field_samples", sim->srd->field_samples);
+    long long field_samples;
+    if (pl_srd_fields(sim->srd, &field_samples)) /* 0: no sample was taken, no fields.h5 */
+        pl_json_int(&b, doc, "field_samples", field_samples);
     json_t *st = json_object();
     b.prefix = "stage_seconds";
     for (int k = 0; k < sim->nstages; ++k) pl_json_real(&b, st, sim->stages[k].name, sim->stages[k].seconds);

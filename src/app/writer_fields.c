@@ -9,7 +9,11 @@
 #include "peloid/progress.h"
 #include "peloid/writer.h"
 
-static int wanted(const pl_sim_t *sim) { return sim->srd->field_acc != NULL; }
+static int wanted(const pl_sim_t *sim)
+{
+    long long samples;
+    return pl_srd_fields(sim->srd, &samples) != NULL;
+}
 
 /* ctx: the path of fields.h5 */
 static int open_path(pl_sim_t *sim, const pl_writer_out_t *out, void **ctx, pl_err_t *err)
@@ -24,7 +28,9 @@ static int open_path(pl_sim_t *sim, const pl_writer_out_t *out, void **ctx, pl_e
 
 static int finish(pl_sim_t *sim, void *ctx, const pl_writer_out_t *out, pl_err_t *err)
 {
-    if (sim->srd->field_samples == 0) {
+    long long samples;
+    pl_srd_fields(sim->srd, &samples);
+    if (samples == 0) {
         pl_progress_note(out->pg, "no field sample was taken (output.fields_start = %lld, last step %lld): "
                                   "fields.h5 not written", sim->scene.output.fields_start, sim->step);
         return 0;

@@ -60,7 +60,8 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
     long long meta[8] = {sim->step, sc->run.seed, (long long)fl->n, sc->box.cells[0], sc->box.cells[1],
                          sc->box.cells[2], fl->tracked, (long long)sizeof(pl_real)};
     long long ncol = sim->colloids ? (long long)sim->colloids->n : 0;
-    long long samples = sim->srd->field_samples;
+    const pl_srd_kept_t kept = pl_srd_kept(sim->srd);
+    long long samples = *kept.field_samples;
     long long version = PL_CKPT_FORMAT;
     int bad = pl_ckpt_attr_i64(f, "format_version", &version, 1, 1);
     bad |= pl_ckpt_attr_i64(f, "peloid_checkpoint", meta, 8, 1);
@@ -77,16 +78,16 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
         if (fl->tracked) bad |= pl_ckpt_write_1d(g, dnames[d], H5T_NATIVE_DOUBLE, fl->disp[d], fl->n);
     }
     if (fl->tracked && g >= 0) bad |= pl_ckpt_write_1d(g, "id", H5T_NATIVE_UINT32, fl->id, fl->n);
-    if (sim->srd->field_acc) {
+    if (kept.field_acc) {
         size_t L3 = (size_t)sc->box.cells[0] * (size_t)sc->box.cells[1] * (size_t)sc->box.cells[2];
-        bad |= pl_ckpt_write_1d(f, "field_accumulator", H5T_NATIVE_INT64, sim->srd->field_acc, 4 * L3);
+        bad |= pl_ckpt_write_1d(f, "field_accumulator", H5T_NATIVE_INT64, kept.field_acc, 4 * L3);
     }
     if (g >= 0) H5Gclose(g);
     else bad = 1;
     for (int m = 0; pl_modules[m]; ++m) /* each module's items (colloids, coupling) */
         if (pl_modules[m]->checkpoint_write) bad |= pl_modules[m]->checkpoint_write(f, sim) != 0;
     /* kT_cell of the last collision: the thermo row at the restart step */
-    bad |= pl_ckpt_write_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, &sim->srd->last_kT_meas, 1);
+    bad |= pl_ckpt_write_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, kept.kT_cell, 1);
     if (bad) {
         char why[256];
         pl_h5_error_text(why, sizeof why); /* before H5Fclose clears the stack */
@@ -103,7 +104,7 @@ static int check_fluid(const pl_sim_t *sim, const char *path, pl_err_t *err)
 {
     const pl_fluid_t *fl = &sim->fluid;
     const pl_scene_t *sc = &sim->scene;
-    const double vmax = sim->srd->guard_vmax; /* the fluid guard's speed bound */
+    const double vmax = pl_srd_speed_bound(sim->srd); /* the fluid guard's speed bound */
     for (size_t i = 0; i < fl->n; ++i) {
         double v2 = 0.0;
         for (int d = 0; d < 3; ++d) {
@@ -139,18 +140,21 @@ static int check_fluid(const pl_sim_t *sim, const char *path, pl_err_t *err)
         }
         free(seen);
     }
-    if (sim->srd->field_acc) {
+    long long samples;
+    const int64_t *acc = pl_srd_fields(sim->srd, &samples);
+    if (acc) {
         size_t L3 = (size_t)sc->box.cells[0] * (size_t)sc->box.cells[1] * (size_t)sc->box.cells[2];
         for (size_t c = 0; c < L3; ++c)
-            if (sim->srd->field_acc[c] < 0)
+            if (acc[c] < 0)
                 return pl_err_set(err, PL_ERR_INPUT, "%s: field_accumulator count of cell %zu is negative (%lld)",
-                                  path, c, (long long)sim->srd->field_acc[c]);
+                                  path, c, (long long)acc[c]);
     }
-    if (sim->srd->field_samples < 0 || sim->srd->field_samples > sim->step)
-        return pl_err_set(err, PL_ERR_INPUT, "%s: field_samples = %lld; allowed 0 .. step %lld", path,
-                          sim->srd->field_samples, sim->step);
-    if (!(sim->srd->last_kT_meas >= 0.0 && isfinite(sim->srd->last_kT_meas)))
-        return pl_err_set(err, PL_ERR_INPUT, "%s: kT_cell = %g; allowed finite >= 0", path, sim->srd->last_kT_meas);
+    if (samples < 0 || samples > sim->step)
+        return pl_err_set(err, PL_ERR_INPUT, "%s: field_samples = %lld; allowed 0 .. step %lld", path, samples,
+                          sim->step);
+    const double kT_cell = *pl_srd_kept(sim->srd).kT_cell;
+    if (!(kT_cell >= 0.0 && isfinite(kT_cell)))
+        return pl_err_set(err, PL_ERR_INPUT, "%s: kT_cell = %g; allowed finite >= 0", path, kT_cell);
     return 0;
 }
 
@@ -171,7 +175,8 @@ int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, 
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: cannot open checkpoint (missing or not HDF5)", path);
         goto out;
     }
-    sim->srd->sorted = 0; /* cell_start is not stored */
+    pl_srd_order_lost(sim->srd); /* the cell order is not stored */
+    const pl_srd_kept_t kept = pl_srd_kept(sim->srd);
     long long meta[8];
     pl_fluid_t *fl = &sim->fluid;
     const pl_scene_t *sc = &sim->scene;
@@ -236,7 +241,7 @@ int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, 
                                      "the restart step", changed);
     }
     sim->step = meta[0];
-    if (pl_ckpt_attr_i64(f, "field_samples", &sim->srd->field_samples, 1, 0)) {
+    if (pl_ckpt_attr_i64(f, "field_samples", kept.field_samples, 1, 0)) {
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: unreadable attribute field_samples", path);
         goto close;
     }
@@ -252,15 +257,15 @@ int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, 
     }
     if (!rc && fl->tracked) rc = pl_ckpt_read_1d(g, "id", H5T_NATIVE_UINT32, fl->id, fl->n, path, err);
     H5Gclose(g);
-    if (!rc && sim->srd->field_acc) {
+    if (!rc && kept.field_acc) {
         size_t L3 = (size_t)sc->box.cells[0] * (size_t)sc->box.cells[1] * (size_t)sc->box.cells[2];
         if (H5Lexists(f, "field_accumulator", H5P_DEFAULT) > 0)
-            rc = pl_ckpt_read_1d(f, "field_accumulator", H5T_NATIVE_INT64, sim->srd->field_acc, 4 * L3, path, err);
+            rc = pl_ckpt_read_1d(f, "field_accumulator", H5T_NATIVE_INT64, kept.field_acc, 4 * L3, path, err);
         else
-            sim->srd->field_samples = 0;
+            *kept.field_samples = 0;
     }
     if (!rc && H5Lexists(f, "kT_cell", H5P_DEFAULT) > 0)
-        rc = pl_ckpt_read_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, &sim->srd->last_kT_meas, 1, path, err);
+        rc = pl_ckpt_read_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, kept.kT_cell, 1, path, err);
     if (!rc) rc = check_fluid(sim, path, err);
     for (int m = 0; !rc && pl_modules[m]; ++m)
         if (pl_modules[m]->checkpoint_read) rc = pl_modules[m]->checkpoint_read(f, sim, path, err);

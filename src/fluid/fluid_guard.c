@@ -31,6 +31,8 @@
 #include "peloid/coupling.h"
 #include "peloid/sim.h"
 
+#include "srd_state.h"
+
 void pl_fluid_guard_setup(pl_sim_t *sim)
 {
     const pl_scene_t *sc = &sim->scene;

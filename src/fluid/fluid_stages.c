@@ -14,6 +14,8 @@
 #include "peloid/module.h"
 #include "peloid/thermostat.h"
 
+#include "srd_state.h"
+
 /* ---- stages ------------------------------------------------------------ */
 
 void pl_sim_stream_params(const pl_sim_t *sim, pl_stream_params_t *p)

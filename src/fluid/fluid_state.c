@@ -11,6 +11,8 @@
 #include "peloid/collision_rule.h"
 #include "peloid/sim.h"
 
+#include "srd_state.h"
+
 static void srd_free(pl_srd_t *s)
 {
     if (!s) return;
@@ -99,3 +101,19 @@ uint32_t *pl_srd_scratch_counts(pl_srd_t *srd) { return srd->hist; }
 double *pl_srd_scratch_observe(pl_srd_t *srd) { return srd->obs_scratch; }
 
 int pl_srd_walls_measured(const pl_srd_t *srd) { return srd->wall_acc != NULL; }
+
+pl_srd_kept_t pl_srd_kept(pl_srd_t *srd)
+{
+    return (pl_srd_kept_t){.field_acc = srd->field_acc, .field_samples = &srd->field_samples,
+                           .kT_cell = &srd->last_kT_meas};
+}
+
+const int64_t *pl_srd_fields(const pl_srd_t *srd, long long *samples)
+{
+    *samples = srd->field_samples;
+    return srd->field_acc;
+}
+
+double pl_srd_speed_bound(const pl_srd_t *srd) { return srd->guard_vmax; }
+
+void pl_srd_order_lost(pl_srd_t *srd) { srd->sorted = 0; }

@@ -27,6 +27,8 @@
 #include "peloid/collision_rule.h"
 #include "peloid/mpc_at.h"
 
+#include "srd_state.h"
+
 /* nu0 = sqrt(kT/m) a0; nu0 * lambda = kT dt / m, nu0 / lambda = a0^2 / dt */
 static void theory(double g, double alpha, double nu0, pl_srd_theory_t *o)
 {

@@ -45,6 +45,8 @@
 #include "peloid/collision_rule.h"
 #include "peloid/mpc_at_a.h"
 
+#include "srd_state.h"
+
 static void theory(double g, double alpha, double nu0, pl_srd_theory_t *o)
 {
     (void)alpha;

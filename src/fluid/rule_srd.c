@@ -7,6 +7,8 @@
  * momentum. */
 #include "peloid/collision_rule.h"
 
+#include "srd_state.h"
+
 const pl_collision_rule_t pl_rule_random_axis = {
     .name = "random_axis",
     .doc = "rotate the velocities relative to the cell's mean by alpha about a random axis (PL Eq. 3)",

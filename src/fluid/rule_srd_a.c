@@ -45,6 +45,8 @@
 #include "peloid/collision_rule.h"
 #include "peloid/srd_a.h"
 
+#include "srd_state.h"
+
 static void theory(double g, double alpha, double nu0, pl_srd_theory_t *o)
 {
     pl_srd_theory_random_axis(g, alpha, nu0, o); /* kinetic part and D_f: SRD's (see above) */

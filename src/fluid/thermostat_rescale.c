@@ -9,6 +9,8 @@
 #include "peloid/sim.h"
 #include "peloid/thermostat.h"
 
+#include "srd_state.h"
+
 /* ctx: the fluid's state (peloid/srd.h) */
 static int stage_rescale(pl_sim_t *sim, void *ctx, pl_err_t *err)
 {

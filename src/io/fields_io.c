@@ -143,13 +143,15 @@ int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
         return pl_err_set(err, PL_ERR_NOMEM, "out of memory writing fields");
     }
     const double inv_fixed = 1.0 / (double)(1LL << PL_FIELD_FIXED_SHIFT);
-    double ns = sim->srd->field_samples > 0 ? (double)sim->srd->field_samples : 1.0;
+    long long samples;
+    const int64_t *acc = pl_srd_fields(sim->srd, &samples);
+    double ns = samples > 0 ? (double)samples : 1.0;
     for (size_t c = 0; c < L3; ++c) {
-        int64_t cnt = sim->srd->field_acc[c];
+        int64_t cnt = acc[c];
         rho[c] = (double)cnt / ns;
         for (int d = 0; d < 3; ++d)
             vel[3 * c + (size_t)d] =
-                cnt > 0 ? (double)sim->srd->field_acc[(size_t)(d + 1) * L3 + c] * inv_fixed / (double)cnt : 0.0;
+                cnt > 0 ? (double)acc[(size_t)(d + 1) * L3 + c] * inv_fixed / (double)cnt : 0.0;
     }
     char tmp[PATH_MAX + 8], why[256];
     pl_atomic_tmp(path, tmp, sizeof tmp);
@@ -180,7 +182,7 @@ int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
         if (sc->mapping.enabled)
             bad |= pl_h5_attr_doubles(obs, "a0_m", &sc->mapping.map.a0, 1) ||
                    pl_h5_attr_doubles(obs, "t0_s", &sc->mapping.map.t0, 1);
-        long long samples = sim->srd->field_samples, start = sc->output.fields_start;
+        long long start = sc->output.fields_start;
         bad |= pl_h5_write(obs, "samples", H5T_NATIVE_LLONG, 0, NULL, &samples);
         bad |= pl_h5_write(obs, "average_start", H5T_NATIVE_LLONG, 0, NULL, &start);
         if (H5Gclose(obs) < 0) bad = 1;

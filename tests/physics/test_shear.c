@@ -87,15 +87,16 @@ static void run_couette(const char *thermostat, double u, double *eta_out)
     pl_test_steps(sim, pl_test_quick() ? 200 : relax);
     size_t L2 = (size_t)L * (size_t)L, L3 = L2 * LZ;
     block_t bl[NB];
+    int64_t *const acc = pl_srd_kept(sim->srd).field_acc; /* the fluid's time-averaged fields */
     for (int b = 0; b < NB; ++b) {
-        memset(sim->srd->field_acc, 0, 4 * L3 * sizeof(int64_t));
+        memset(acc, 0, 4 * L3 * sizeof(int64_t));
         double imp0[2] = {sim->wall_impulse[0][0], sim->wall_impulse[1][0]};
         pl_test_steps(sim, per);
         for (int k = 0; k < LZ; ++k) {
             double cnt = 0, px = 0;
             for (size_t c = (size_t)k * L2; c < (size_t)(k + 1) * L2; ++c) {
-                cnt += (double)sim->srd->field_acc[c];
-                px += (double)sim->srd->field_acc[L3 + c] / (double)(1LL << PL_FIELD_FIXED_SHIFT);
+                cnt += (double)acc[c];
+                px += (double)acc[L3 + c] / (double)(1LL << PL_FIELD_FIXED_SHIFT);
             }
             bl[b].v[k] = px / cnt;
         }
@@ -127,7 +128,7 @@ static void run_couette(const char *thermostat, double u, double *eta_out)
            "chi2 %.1f (%d dof); stress bottom %.5f +- %.5f, top %.5f +- %.5f; eta %.4f +- %.4f vs "
            "PL %.4f (%+.2f%%); T %.4f\n",
            thermostat, u, slope, se_slope, expect, u / LZ, b_meas, b_se, chi2, LZ - 4, s0, se_s0, s1,
-           se_s1, eta_m, se_eta, eta_pl, 100 * (eta_m / eta_pl - 1), sim->srd->last_kT_meas);
+           se_s1, eta_m, se_eta, eta_pl, 100 * (eta_m / eta_pl - 1), *pl_srd_kept(sim->srd).kT_cell);
     if (getenv("PL_DEBUG"))
         for (int k = 0; k < LZ; ++k)
             printf("  z=%5.1f v=%+.5f +- %.5f line %+.5f\n", k + 0.5, vm[k], vse[k], a + bb * (k + 0.5));

@@ -35,9 +35,9 @@ Test(sort_interval, conserves_momentum_and_energy)
                                 "srd: { dt = 0.2; sort_interval = 7; };\n",
                                 2);
     pl_fluid_obs_t a, b;
-    pl_srd_observe(&sim->fluid, sim->srd->obs_scratch, &a, sim->nthreads);
+    pl_srd_observe(&sim->fluid, pl_srd_scratch_observe(sim->srd), &a, sim->nthreads);
     pl_test_steps(sim, 300);
-    pl_srd_observe(&sim->fluid, sim->srd->obs_scratch, &b, sim->nthreads);
+    pl_srd_observe(&sim->fluid, pl_srd_scratch_observe(sim->srd), &b, sim->nthreads);
     const double n = (double)sim->fluid.n, tol = sizeof(pl_real) == sizeof(float) ? 1e-6 : 1e-9;
     for (int d = 0; d < 3; ++d)
         cr_assert_lt(fabs(b.momentum[d] - a.momentum[d]) / n, tol, "momentum[%d]: %.17g -> %.17g", d, a.momentum[d],
@@ -64,7 +64,7 @@ static void kolmogorov(int k, double nu_theory, double *nu, double *nu_se, doubl
         for (int st = 0; st < 64; ++st) {
             pl_test_steps(sim, 1);
             pl_fluid_obs_t o;
-            pl_srd_observe(&sim->fluid, sim->srd->obs_scratch, &o, sim->nthreads);
+            pl_srd_observe(&sim->fluid, pl_srd_scratch_observe(sim->srd), &o, sim->nthreads);
             m += 2.0 * o.kinetic / (3.0 * (double)sim->fluid.n) / 64.0;
         }
         s += m;

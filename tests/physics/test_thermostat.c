@@ -24,10 +24,11 @@ enum { NBLK = 20 };
  * over sum 3 (M - 1); the fluid is in the cell order of the last sort. */
 static double cell_temperature(const pl_sim_t *sim)
 {
-    cr_assert(sim->srd->sorted, "the fluid is not in cell order after a step");
+    const uint32_t *cells = pl_srd_cells(sim->srd);
+    cr_assert(cells, "the fluid is not in cell order after a step");
     double s2 = 0.0, dof = 0.0;
     for (size_t c = 0; c < sim->grid.ncells; ++c) {
-        const size_t b = sim->srd->cell_start[c], e = sim->srd->cell_start[c + 1];
+        const size_t b = cells[c], e = cells[c + 1];
         if (e - b < 2) continue;
         double u[3] = {0, 0, 0};
         for (size_t i = b; i < e; ++i)

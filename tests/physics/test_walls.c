@@ -59,15 +59,16 @@ Test(walls, poiseuille_between_noslip_walls, .timeout = 300)
     pl_test_steps(sim, relax);
     size_t L2 = (size_t)L * (size_t)L, L3 = L2 * (size_t)Lz;
     double nu[NB], slip[NB];
+    int64_t *const acc = pl_srd_kept(sim->srd).field_acc; /* the fluid's time-averaged fields */
     for (int b = 0; b < NB; ++b) {
-        memset(sim->srd->field_acc, 0, 4 * L3 * sizeof(int64_t));
+        memset(acc, 0, 4 * L3 * sizeof(int64_t));
         pl_test_steps(sim, per);
         double v[64];
         for (int k = 0; k < Lz; ++k) {
             double cnt = 0, px = 0;
             for (size_t c = (size_t)k * L2; c < (size_t)(k + 1) * L2; ++c) {
-                cnt += (double)sim->srd->field_acc[c];
-                px += (double)sim->srd->field_acc[L3 + c] / (double)(1LL << PL_FIELD_FIXED_SHIFT);
+                cnt += (double)acc[c];
+                px += (double)acc[L3 + c] / (double)(1LL << PL_FIELD_FIXED_SHIFT);
             }
             v[k] = px / cnt;
         }

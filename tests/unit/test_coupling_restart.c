@@ -82,7 +82,7 @@ static void assert_same(const pl_sim_t *a, const pl_sim_t *b, size_t s)
                      pa->pot->near_total, pb->pot->near_total);
     SAME(pa->impulse, pb->impulse, sizeof pa->impulse, "scene %zu: pinned impulse", s);
     SAME(&pa->pinned_time, &pb->pinned_time, sizeof pa->pinned_time, "scene %zu: pinned_time", s);
-    SAME(&a->srd->last_kT_meas, &b->srd->last_kT_meas, sizeof a->srd->last_kT_meas, "scene %zu: kT_cell", s);
+    SAME(pl_srd_kept(a->srd).kT_cell, pl_srd_kept(b->srd).kT_cell, sizeof(double), "scene %zu: kT_cell", s);
 }
 
 /* The scenes really exercise what they are meant to (else the test proves little). */
@@ -104,9 +104,9 @@ static void poison(pl_sim_t *sim)
     if (cp->pot) cp->pot->near_total = 12345;
     for (int k = 0; k < 6; ++k) cp->impulse[k] = -7.0;
     cp->pinned_time = -7.0;
-    if (sim->srd->wall_acc) /* only scenes with walls have (and store) wall impulses */
+    if (pl_srd_walls_measured(sim->srd)) /* only scenes with walls have (and store) wall impulses */
         for (int k = 0; k < 6; ++k) sim->wall_impulse[k / 3][k % 3] = -7.0;
-    sim->srd->last_kT_meas = -7.0;
+    *pl_srd_kept(sim->srd).kT_cell = -7.0;
 }
 
 Test(coupling_restart, restart_continues_bitwise_with_counters, .timeout = 300)

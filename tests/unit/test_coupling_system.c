@@ -201,7 +201,8 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
         size_t listed = 0;
         for (long long s = 0; s < steps; ++s) {
             pl_test_steps(sim, 1);
-            cr_assert(sim->srd->sorted, "the sort is the last stage that moves particles");
+            const uint32_t *cells = pl_srd_cells(sim->srd);
+            cr_assert(cells, "the sort is the last stage that moves particles");
             for (int r = 0; r < 3; ++r) {
                 pl_coupling_colloids_t v = pl_coupling_view(sim->colloids);
                 for (size_t k = 0; k < v.n; ++k) rad[k] = radii[r];
@@ -225,7 +226,7 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
                     const int nt = run < 2 ? 1 : 3;
                     const pl_coupling_reach_t *rp = run % 2 ? &reach : NULL;
                     pl_coupling_find(f, &sim->grid, &v, rp, start, list, nt, fa, ga, ca);
-                    pl_coupling_find_sorted(f, &sim->grid, &v, rp, cstart, clist, sim->srd->cell_start, nt, fb, gb, cb);
+                    pl_coupling_find_sorted(f, &sim->grid, &v, rp, cstart, clist, cells, nt, fb, gb, cb);
                     for (int t = 0; t < nt; ++t) {
                         size_t lo, hi;
                         pl_chunk(f->n, t, nt, &lo, &hi);
@@ -255,7 +256,7 @@ Test(coupling_system, sorted_selection_equals_full_scan, .timeout = 120)
                             stage[t] = (pl_coupling_stage_t){.buf = sbuf + 6 * lo, .cap = hi - lo, .width = 6};
                         }
                         pl_coupling_select_ctx_t x = {.f = f, .g = &sim->grid, .c = v, .reach = reach, .cstart = cstart,
-                                                      .clist = clist, .cell_start = sim->srd->cell_start, .nthreads = nt,
+                                                      .clist = clist, .cell_start = cells, .nthreads = nt,
                                                       .found = fc, .found_cell = gc, .counts = cc, .stage = stage};
                         for (int t = 0; t < nt; ++t) {
                             size_t lo, hi;

@@ -12,6 +12,7 @@
 #include "colloid_test_util.h"
 #include "peloid/colloid_kernels.h"
 #include "support.h"
+#include "../../src/fluid/srd_state.h" /* the fluid component's own test: its guard's private state */
 
 static const char *const FLUID = "seed = 3;\nbox: { cells = [8, 8, 8]; };\nfluid: { density = 5.0; };\n";
 
@@ -70,7 +71,7 @@ Test(fluid_guard, speed_lowest_index_any_threads)
 {
     for (int t = 1; t <= 3; ++t) {
         pl_sim_t *sim = pl_test_sim(FLUID, t);
-        cr_assert(sim->srd->guard_vmax == 20.0, "bound %g", sim->srd->guard_vmax);
+        cr_assert(pl_srd_speed_bound(sim->srd) == 20.0, "bound %g", pl_srd_speed_bound(sim->srd));
         sim->fluid.v[0][2000] = (pl_real)25.0;
         sim->fluid.v[0][1500] = (pl_real)30.0;
         sim->fluid.v[0][100] = (pl_real)19.0;
@@ -148,13 +149,13 @@ Test(fluid_guard, temperature_band)
                                 "thermostat: { type = \"heyes\"; temperature = 1.0; };\n", 1);
     cr_expect(fabs(sim->srd->guard_kT_lo - 0.1) < 1e-15 && fabs(sim->srd->guard_kT_hi - 20.0) < 1e-15);
     pl_err_t err;
-    sim->srd->last_kT_meas = 19.0;
+    *pl_srd_kept(sim->srd).kT_cell = 19.0;
     cr_expect_eq(pl_fluid_guard_check(sim, 1, 1, &err), 0);
-    sim->srd->last_kT_meas = 21.0;
+    *pl_srd_kept(sim->srd).kT_cell = 21.0;
     cr_expect_eq(pl_fluid_guard_check(sim, 1, 1, &err), PL_ERR_GUARD);
     cr_expect(strstr(err.msg, "guard fluid_temperature: step 1") && strstr(err.msg, "bound [0.1, 20]"), "%s",
               err.msg);
-    sim->srd->last_kT_meas = NAN;
+    *pl_srd_kept(sim->srd).kT_cell = NAN;
     cr_expect_eq(pl_fluid_guard_check(sim, 1, 1, &err), PL_ERR_GUARD);
     pl_sim_free(sim);
 }

@@ -71,9 +71,9 @@ Test(thermostat_rows, rescale_adds_its_stage)
     /* it sets kT_cell to the target where it runs (step 0 -> 1), the
      * collision alone measures it (step 1 -> 2) */
     pl_test_steps(sim, 1);
-    cr_expect_eq(sim->srd->last_kT_meas, sim->scene.thermostat.temperature);
+    cr_expect_eq(*pl_srd_kept(sim->srd).kT_cell, sim->scene.thermostat.temperature);
     pl_test_steps(sim, 1);
-    cr_expect_neq(sim->srd->last_kT_meas, sim->scene.thermostat.temperature);
+    cr_expect_neq(*pl_srd_kept(sim->srd).kT_cell, sim->scene.thermostat.temperature);
     pl_sim_free(sim);
 }
 
