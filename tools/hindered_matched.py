@@ -8,7 +8,6 @@ tools/h5md_settling.py); U = u (1 - phi); U0 = F / (6 pi eta R_h) with rule R8's
 "check", calibration/rh_resolution-c1_hecht.json); y = 1 - R_h (2.837/L + 6 pi eta U/F) fitted as K phi.
 
     python3 tools/hindered_matched.py OUT/STUDY REPORT.md [COMMIT]     (prints the section; exit 0)"""
-import glob
 import json
 import math
 import os
@@ -17,7 +16,7 @@ import sys
 import numpy as np
 
 from hindered_settling import HASIMOTO, K_BATCHELOR, N_RZ, h5_slip, k_rp
-from rh_resolution import law_path
+from rh_resolution import law_path, settling_runs
 from validation.report_section import sections_in, study_section_main
 
 BEGIN = "<!-- hindered matched: {} (tools/hindered_matched.py) -->"  # .format(study name)
@@ -47,12 +46,7 @@ def r8_radius():
 
 def points(study):
     rows = []
-    for sp in sorted(glob.glob(os.path.join(study, "p*", "summary.json"))):
-        run = os.path.dirname(sp)
-        s = json.load(open(sp))
-        if s.get("interrupted") or "settling_velocity" not in s.get("observables", {}):
-            continue
-        sv = s["observables"]["settling_velocity"]
+    for run, s, sv in settling_runs(study):
         c = s["scene"]["colloids"]
         R, L, N = c["radius"], s["scene"]["box"]["cells"][0], c["count"]
         vol = 4.0 / 3.0 * math.pi * R ** 3

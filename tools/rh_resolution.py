@@ -98,16 +98,21 @@ def unbounded(xi_box, eta, L):
     return xi
 
 
+def settling_runs(study):
+    """The study's finished runs with a settling velocity, in point order: (run folder, its summary.json, the
+    summary's settling_velocity); also tools/hindered_matched.py's."""
+    for sp in sorted(glob.glob(os.path.join(study, "p*", "summary.json"))):
+        s = json.load(open(sp))
+        if s.get("interrupted") or "settling_velocity" not in s.get("observables", {}):
+            continue
+        yield os.path.dirname(sp), s, s["observables"]["settling_velocity"]
+
+
 @functools.lru_cache(maxsize=None)
 def points(study):
     """The study's finished points (read once per study: the section and the law file share them)."""
     rows = []
-    for sp in sorted(glob.glob(os.path.join(study, "p*", "summary.json"))):
-        run = os.path.dirname(sp)
-        s = json.load(open(sp))
-        if s.get("interrupted") or "settling_velocity" not in s.get("observables", {}):
-            continue
-        sv = s["observables"]["settling_velocity"]
+    for run, s, sv in settling_runs(study):
         c = s["scene"]["colloids"]
         R, L, eta = c["radius"], s["scene"]["box"]["cells"][0], s["derived"]["eta"]
         M = c["mass_density"] * 4.0 / 3.0 * math.pi * R ** 3
