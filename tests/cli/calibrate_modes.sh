@@ -30,7 +30,7 @@
 #     their RMS per coupling;
 #  7. a hand-typed time-unit key (colloids.substeps) that no colloid D from
 #     1/10 to 10 times the theory derives: run --calibrate auto exits 2 in
-#     < 5 s with one line, before any calibration (the binary of 7ba9dcd
+#     < 5 s with one line, before any calibration (the binary of 162a85d
 #     calibrated first: progress lines, a cache entry), and a calibrated
 #     run folder's echo still loads.
 # Shown to fail before --calibrate existed (cases 1-5: the option is
