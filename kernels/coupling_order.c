@@ -54,27 +54,39 @@ static int chunk_owner(size_t n, int nthreads, size_t i)
     }
 }
 
-/* The time within the step, as a fraction of it, at which the particle at
- * r (velocity v) met colloid k on the path the events so far left it (e:
- * its moved end position, its velocity now): 1 when outside k (in the
- * margin: met, if at all, once the events have moved the colloid), 1/2
- * when its path does not cross the surface within the step (placed as
- * Hecht method i).  A function of colloid k and the particle alone, so a
- * colloid's events choose the same way in the serial and the parallel
- * loop. */
+/* The time within the step, as a fraction of it, at which a particle at p
+ * (relative to colloid k's moved end position, minimum image taken) moving
+ * at w (relative to the colloid's velocity now) met k's sphere of radius R:
+ * 1 when outside it (in the margin: met, if at all, once the events have
+ * moved the colloid), 1/2 when its path does not cross the surface within
+ * the step dt (placed as Hecht method i).  Selects, no branch: chain_times
+ * runs it in SIMD lanes, where a lane that does not cross computes on
+ * harmless operands; the same values as a scalar call (no fused
+ * multiply-adds: -ffp-contract=off; division and square root are IEEE's in
+ * either). */
+static inline __attribute__((always_inline)) double meet_of(double px, double py, double pz, double wx, double wy,
+                                                            double wz, double R, double dt)
+{
+    const double pp = px * px + py * py + pz * pz;
+    const double ww = wx * wx + wy * wy + wz * wz, pw = px * wx + py * wy + pz * wz;
+    const double disc = pw * pw - ww * (pp - R * R);
+    const int cross = ww > 0.0 && disc >= 0.0;
+    const double s = cross ? (pw + sqrt(cross ? disc : 0.0)) / (cross ? ww : 1.0) : -1.0;
+    const double tin = s > 0.0 && s <= dt ? 1.0 - s / dt : 0.5;
+    return pp >= R * R ? 1.0 : tin;
+}
+
+/* meet_of for the particle at r (velocity v) and colloid k as the events
+ * so far left it (e: its moved end position, its velocity now).  A function
+ * of colloid k and the particle alone, so a colloid's events choose the
+ * same way in the serial and the parallel loop. */
 static double meet_time(const pl_c1_events_t *e, const pl_grid_t *g, const pl_coupling1_params_t *prm, int32_t k,
                         const double r[3], const double v[3])
 {
     double p[3] = {r[0] - e->c.x[k], r[1] - e->c.y[k], r[2] - e->c.z[k]};
     for (int a = 0; a < 3; ++a)
         if (g->walls[a] == PL_WALLS_NONE) p[a] -= g->L[a] * nearbyint(p[a] / g->L[a]);
-    const double R = e->c.rad[k], pp = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
-    if (pp >= R * R) return 1.0;
-    const double w[3] = {v[0] - e->c.vx[k], v[1] - e->c.vy[k], v[2] - e->c.vz[k]};
-    const double ww = w[0] * w[0] + w[1] * w[1] + w[2] * w[2], pw = p[0] * w[0] + p[1] * w[1] + p[2] * w[2];
-    const double disc = pw * pw - ww * (pp - R * R);
-    const double s = ww > 0.0 && disc >= 0.0 ? (pw + sqrt(disc)) / ww : -1.0;
-    return s > 0.0 && s <= prm->dt ? 1.0 - s / prm->dt : 0.5;
+    return meet_of(p[0], p[1], p[2], v[0] - e->c.vx[k], v[1] - e->c.vy[k], v[2] - e->c.vz[k], e->c.rad[k], prm->dt);
 }
 
 /* meet_time for the colloid the particle is inside (the first of its
@@ -89,11 +101,7 @@ static double entry_time(const pl_c1_events_t *e, const pl_grid_t *g, const pl_c
 
 /* The meet times (meet_time) of a chain's m untaken particles (r, v: its
  * gathered copies, t: out) for colloid k as the events so far left it, in
- * SIMD lanes: the same operations on the same operands as meet_time, so
- * the same values (no fused multiply-adds: -ffp-contract=off; the lanes'
- * division and square root are IEEE's, as the scalar ones).  A lane
- * outside the sphere, or whose path does not cross it, computes on
- * harmless operands and selects its 1 or 1/2. */
+ * SIMD lanes (meet_of; the minimum image as meet_time's). */
 static void chain_times(const pl_c1_events_t *e, const pl_grid_t *g, const pl_coupling1_params_t *prm, int32_t k,
                         double *const r[7], size_t m)
 {
@@ -113,14 +121,7 @@ static void chain_times(const pl_c1_events_t *e, const pl_grid_t *g, const pl_co
         px -= pL[0] * nearbyint(px / L0);
         py -= pL[1] * nearbyint(py / L1);
         pz -= pL[2] * nearbyint(pz / L2);
-        const double pp = px * px + py * py + pz * pz;
-        const double wx = vx[q] - VX, wy = vy[q] - VY, wz = vz[q] - VZ;
-        const double ww = wx * wx + wy * wy + wz * wz, pw = px * wx + py * wy + pz * wz;
-        const double disc = pw * pw - ww * (pp - R * R);
-        const int cross = ww > 0.0 && disc >= 0.0;
-        const double s = cross ? (pw + sqrt(cross ? disc : 0.0)) / (cross ? ww : 1.0) : -1.0;
-        const double tin = s > 0.0 && s <= dt ? 1.0 - s / dt : 0.5;
-        t[q] = pp >= R * R ? 1.0 : tin;
+        t[q] = meet_of(px, py, pz, vx[q] - VX, vy[q] - VY, vz[q] - VZ, R, dt);
     }
 }
 
