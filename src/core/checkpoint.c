@@ -140,21 +140,19 @@ static int check_fluid(const pl_sim_t *sim, const char *path, pl_err_t *err)
         }
         free(seen);
     }
-    long long samples;
-    const int64_t *acc = pl_srd_fields(sim->srd, &samples);
-    if (acc) {
+    const pl_srd_kept_t kept = pl_srd_kept(sim->srd); /* what the restart just read back */
+    if (kept.field_acc) {
         size_t L3 = (size_t)sc->box.cells[0] * (size_t)sc->box.cells[1] * (size_t)sc->box.cells[2];
         for (size_t c = 0; c < L3; ++c)
-            if (acc[c] < 0)
+            if (kept.field_acc[c] < 0)
                 return pl_err_set(err, PL_ERR_INPUT, "%s: field_accumulator count of cell %zu is negative (%lld)",
-                                  path, c, (long long)acc[c]);
+                                  path, c, (long long)kept.field_acc[c]);
     }
-    if (samples < 0 || samples > sim->step)
-        return pl_err_set(err, PL_ERR_INPUT, "%s: field_samples = %lld; allowed 0 .. step %lld", path, samples,
-                          sim->step);
-    const double kT_cell = *pl_srd_kept(sim->srd).kT_cell;
-    if (!(kT_cell >= 0.0 && isfinite(kT_cell)))
-        return pl_err_set(err, PL_ERR_INPUT, "%s: kT_cell = %g; allowed finite >= 0", path, kT_cell);
+    if (*kept.field_samples < 0 || *kept.field_samples > sim->step)
+        return pl_err_set(err, PL_ERR_INPUT, "%s: field_samples = %lld; allowed 0 .. step %lld", path,
+                          *kept.field_samples, sim->step);
+    if (!(*kept.kT_cell >= 0.0 && isfinite(*kept.kT_cell)))
+        return pl_err_set(err, PL_ERR_INPUT, "%s: kT_cell = %g; allowed finite >= 0", path, *kept.kT_cell);
     return 0;
 }
 
