@@ -27,45 +27,9 @@
 #include "peloid/colloid_pair.h"
 #include "peloid/colloid_integrator.h"
 
+#include "mapping_refuse.h"
+
 #define OFF(m) offsetof(pl_scene_t, m)
-
-void pl_mapping_prov(pl_mapping_colloid_t *c, const char *fmt, ...)
-{
-    if (c->nprov >= (int)(sizeof c->prov / sizeof c->prov[0])) return;
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(c->prov[c->nprov++], sizeof c->prov[0], fmt, ap);
-    va_end(ap);
-}
-
-static int given(const pl_scene_t *s, size_t off) { return pl_scene_line_of(s, off) > 0; }
-
-/* A derived key in the file: refused unless it carries the derived value (an echoed scene
- * reloads); in a provisional pass (PL_SCENE_PROVISIONAL) the keys of the time unit a calibration
- * replaces (MD step counts, model gravity g t0^2 / a0) wait for the calibrated pass. */
-static int refuse(pl_scene_t *s, pl_err_t *err, size_t off, const char *key, const char *from,
-                  double given_v, double derived, const char *shown)
-{
-    const int time_unit = off == OFF(colloids.substeps) || off == OFF(colloids.min_substeps) ||
-                          off == OFF(colloids.slow_interval) || off == OFF(colloids.gravity);
-    pl_scene_mapping_t *mp = &s->mapping;
-    if (given(s, off) && mp->provisional && time_unit && mp->nheld < (int)(sizeof mp->held / sizeof mp->held[0])) {
-        mp->held[mp->nheld].off = off;
-        mp->held[mp->nheld].key = key;
-        mp->held[mp->nheld].from = from;
-        mp->held[mp->nheld].given = given_v;
-        mp->held[mp->nheld++].derived = derived;
-    }
-    if (!given(s, off) || fabs(given_v - derived) <= 1e-12 * fabs(derived)) return 0;
-    if (mp->provisional && time_unit) return 0;
-    char v[64];
-    if (shown) snprintf(v, sizeof v, "\"%s\"", shown);
-    else snprintf(v, sizeof v, "%.6g", derived);
-    return pl_scene_fail(s, err, off, key,
-                         "is derived from %s (value %s here); remove it, a scene with physical{} "
-                         "gives the real suspension once (or remove physical{} and give model units)",
-                         from, v);
-}
 
 typedef struct {
     size_t off;
@@ -73,14 +37,6 @@ typedef struct {
     double derived, given;
     const char *shown; /* the derived value as a word (choices); NULL: the number */
 } derived_t;
-
-static int check_missing(const pl_scene_t *s, pl_err_t *err, size_t off, const char *key, const char *term,
-                         const char *needs, const char *missing)
-{
-    if (!missing[0]) return 0;
-    return pl_scene_fail(s, err, off, key, "the %s pair term needs the material constants %s; missing: %s (no "
-                         "material defaults: give them in physical{})", term, needs, missing);
-}
 
 /* Largest U'' (kT/a0^2) over the gaps a pair of reference diameter d can
  * reach: scanned inward from the pair cut-off, down to the largest overlap
@@ -126,13 +82,13 @@ static int pair_range(const pl_scene_t *s, const pl_colloid_pair_params_t *p, pl
     for (int k = 0; k < 3; ++k) {
         if (!p->periodic[k] || rc <= 0.5 * s->box.cells[k]) continue;
         int debye = (p->terms & PL_CT_DLVO) && ph->surface_potential != 0;
-        int box_given = given(s, OFF(mapping.physical.box)) || !given(s, OFF(box.cells));
+        int box_given = pl_mapping_given(s, OFF(mapping.physical.box)) || !pl_mapping_given(s, OFF(box.cells));
         size_t off = box_given ? OFF(mapping.physical.box) : OFF(box.cells);
         const char *key = box_given ? "physical.box" : "box.cells";
-        if (debye && given(s, OFF(mapping.physical.kappa))) {
+        if (debye && pl_mapping_given(s, OFF(mapping.physical.kappa))) {
             off = OFF(mapping.physical.kappa);
             key = "physical.kappa";
-        } else if (debye && given(s, OFF(mapping.physical.ionic_strength))) {
+        } else if (debye && pl_mapping_given(s, OFF(mapping.physical.ionic_strength))) {
             off = OFF(mapping.physical.ionic_strength);
             key = "physical.ionic_strength";
         }
@@ -207,12 +163,13 @@ static int mts_derive(pl_scene_t *s, const pl_colloid_pair_params_t *p, const pl
             k = q;
             break;
         }
-    if (refuse(s, err, OFF(colloids.slow_gap), "colloids.slow_gap",
-               "coarse_graining.multiple_time_stepping (the outer edge of the DLVO secondary minimum's well)",
-               cs->slow_gap, hin, NULL) ||
-        refuse(s, err, OFF(colloids.slow_interval), "colloids.slow_interval",
-               "coarse_graining.multiple_time_stepping (the longest outer step the slow share allows)",
-               (double)cs->slow_interval, (double)k, NULL))
+    if (pl_mapping_refuse_derived(s, err, OFF(colloids.slow_gap), "colloids.slow_gap",
+                                  "coarse_graining.multiple_time_stepping (the outer edge of the DLVO secondary "
+                                  "minimum's well)",
+                                  cs->slow_gap, hin, NULL) ||
+        pl_mapping_refuse_derived(s, err, OFF(colloids.slow_interval), "colloids.slow_interval",
+                                  "coarse_graining.multiple_time_stepping (the longest outer step the slow share allows)",
+                                  (double)cs->slow_interval, (double)k, NULL))
         return PL_ERR_INPUT;
     if (k < 2) {
         pl_mapping_warn(&s->mapping.map, PL_SEV_NOTE, "MTS_NOT_USED", kmax,
@@ -255,7 +212,7 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
         const char *key =
             info.fail_key ? pl_mapping_blame(s, dl, sizeof dl / sizeof dl[0], &off, why, sizeof why) : NULL;
         if (key) return pl_scene_fail(s, err, off, key, "%sthe derived DLVO potential: %s", why, e.msg);
-        if (info.fail_key && given(s, info.fail_off))
+        if (info.fail_key && pl_mapping_given(s, info.fail_off))
             return pl_scene_fail(s, err, info.fail_off, info.fail_key, "%s", e.msg);
         if (!info.fail_key) /* not the DLVO set-up: another term's own message */
             return pl_err_set(err, e.code, "%s", e.msg);
@@ -316,10 +273,10 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
         char bl[160];
         const char *key = pl_mapping_blame(s, from, sizeof from / sizeof from[0], &off, bl, sizeof bl);
         const size_t md = mp->cg.md_dt > 0 ? OFF(mapping.cg.md_dt) : OFF(mapping.cg.md_resolution);
-        if (!key && n == n_map && given(s, md)) {
+        if (!key && n == n_map && pl_mapping_given(s, md)) {
             off = md;
             key = mp->cg.md_dt > 0 ? "coarse_graining.md_dt" : "coarse_graining.md_resolution";
-        } else if (!key && given(s, OFF(mapping.cg.cell_size))) {
+        } else if (!key && pl_mapping_given(s, OFF(mapping.cg.cell_size))) {
             off = OFF(mapping.cg.cell_size);
             key = "coarse_graining.cell_size";
         }
@@ -352,7 +309,7 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
                         h_reach, e_reach);
     /* adaptive substeps by default where the contact guard sets the MD step
      * (velocity Verlet, equal colloids: what the reach table covers) */
-    if (!given(s, OFF(colloids.adaptive_substeps)))
+    if (!pl_mapping_given(s, OFF(colloids.adaptive_substeps)))
         cs->adaptive_substeps = strcmp(why, "contact guard") == 0 && pl_colloid_integrator(cs->integrator)->inertial &&
                                 cs->polydispersity == 0.0;
     if (mp->cg.multiple_time_stepping &&
@@ -363,9 +320,9 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
         snprintf(c->substeps_reason + strlen(c->substeps_reason), sizeof c->substeps_reason - strlen(c->substeps_reason),
                  "; rounded up to %lld, a multiple of colloids.slow_interval", n);
     }
-    if (refuse(s, err, OFF(colloids.substeps), "colloids.substeps",
-               "physical{} and coarse_graining{} (MD step, stiffest contact)", (double)cs->substeps, (double)n,
-               NULL))
+    if (pl_mapping_refuse_derived(s, err, OFF(colloids.substeps), "colloids.substeps",
+                                  "physical{} and coarse_graining{} (MD step, stiffest contact)", (double)cs->substeps,
+                                  (double)n, NULL))
         return PL_ERR_INPUT;
     cs->substeps = n;
     mp->map.md_substeps = n;
@@ -375,9 +332,9 @@ static int substeps(pl_scene_t *s, pl_err_t *err)
     pl_mapping_prov(c, "colloids.substeps = %lld (derived: %s)", n, c->substeps_reason);
     /* adaptive substeps: the mapping's own MD step is the floor */
     long long nmin = n_map < n ? n_map : n;
-    if (refuse(s, err, OFF(colloids.min_substeps), "colloids.min_substeps",
-               "physical{} and coarse_graining{} (the mapping's MD step)", (double)cs->min_substeps,
-               (double)nmin, NULL))
+    if (pl_mapping_refuse_derived(s, err, OFF(colloids.min_substeps), "colloids.min_substeps",
+                                  "physical{} and coarse_graining{} (the mapping's MD step)", (double)cs->min_substeps,
+                                  (double)nmin, NULL))
         return PL_ERR_INPUT;
     cs->min_substeps = nmin;
     if (cs->adaptive_substeps)
@@ -413,7 +370,8 @@ static int potential_keys(pl_scene_t *s, unsigned mask, pl_err_t *err)
     };
     /* the wca{} keys only where colloids.pairs switches the term on */
     for (size_t i = 0; i < (wca ? sizeof dk / sizeof dk[0] : 2); ++i)
-        if (refuse(s, err, dk[i].off, dk[i].key, dk[i].from, dk[i].given, dk[i].derived, dk[i].shown))
+        if (pl_mapping_refuse_derived(s, err, dk[i].off, dk[i].key, dk[i].from, dk[i].given, dk[i].derived,
+                                      dk[i].shown))
             return PL_ERR_INPUT;
     s->coupling.sigma_cf = sigma;
     s->coupling.epsilon_cf = PL_EPS_CF;
@@ -437,8 +395,9 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
                              "coupling II point colloids do not feel; allowed: false (Hecht Eq. 31: "
                              "weight minus buoyancy on the colloids alone)");
     const char *pairs_src = "given";
-    if (have && !given(s, OFF(colloids.pairs))) {
-        int dlvo = given(s, OFF(mapping.physical.surface_potential)) || given(s, OFF(mapping.physical.hamaker));
+    if (have && !pl_mapping_given(s, OFF(colloids.pairs))) {
+        int dlvo = pl_mapping_given(s, OFF(mapping.physical.surface_potential)) ||
+                   pl_mapping_given(s, OFF(mapping.physical.hamaker));
         const int pot = mp->cg.coupling == PL_COUPLE_POTENTIAL; /* PL Eq. 16 as the contact repulsion */
         /* potential + DLVO: contact at 2R, depletion compensated (mapping_potential.c) */
         snprintf(cs->pairs, sizeof cs->pairs, "%s",
@@ -456,24 +415,26 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     double kT = PL_KB * ph->temperature;
     double K = 0.0; /* hertz.K, from K_src */
     const char *K_src = "";
-    size_t pairs_off = given(s, OFF(colloids.pairs)) ? OFF(colloids.pairs) : OFF(mapping.physical.volume_fraction);
-    const char *pairs_key = given(s, OFF(colloids.pairs)) ? "colloids.pairs" : "physical.volume_fraction";
-    if (!given(s, OFF(colloids.pairs)) && mp->cg.coupling == PL_COUPLE_POTENTIAL && (mask & PL_CT_DLVO)) { /* Hertz */
-        const int sp = given(s, OFF(mapping.physical.surface_potential));
+    const int pairs_given = pl_mapping_given(s, OFF(colloids.pairs));
+    size_t pairs_off = pairs_given ? OFF(colloids.pairs) : OFF(mapping.physical.volume_fraction);
+    const char *pairs_key = pairs_given ? "colloids.pairs" : "physical.volume_fraction";
+    if (!pairs_given && mp->cg.coupling == PL_COUPLE_POTENTIAL && (mask & PL_CT_DLVO)) { /* Hertz */
+        const int sp = pl_mapping_given(s, OFF(mapping.physical.surface_potential));
         pairs_off = sp ? OFF(mapping.physical.surface_potential) : OFF(mapping.physical.hamaker);
         pairs_key = sp ? "physical.surface_potential" : "physical.hamaker";
     }
     if (mask & PL_CT_DLVO) { /* colloids.pairs derived: blamed on the key that switched the term on */
-        const int ham = given(s, OFF(mapping.physical.hamaker)), own = given(s, OFF(colloids.pairs));
+        const int ham = pl_mapping_given(s, OFF(mapping.physical.hamaker)), own = pairs_given;
         char miss[256] = "";
         if (!ham) strcat(miss, "physical.hamaker, ");
-        if (!given(s, OFF(mapping.physical.surface_potential))) strcat(miss, "physical.surface_potential, ");
+        if (!pl_mapping_given(s, OFF(mapping.physical.surface_potential))) strcat(miss, "physical.surface_potential, ");
         if (!(mp->kappa > 0)) strcat(miss, "physical.kappa or physical.ionic_strength, ");
         if (miss[0]) miss[strlen(miss) - 2] = '\0';
         const size_t on = own ? pairs_off : ham ? OFF(mapping.physical.hamaker) : OFF(mapping.physical.surface_potential);
-        if (check_missing(s, err, on, own ? pairs_key : ham ? "physical.hamaker" : "physical.surface_potential", "dlvo",
-                          "physical.hamaker, physical.surface_potential and physical.kappa (or "
-                          "physical.ionic_strength)", miss))
+        if (pl_mapping_refuse_missing(s, err, on,
+                                      own ? pairs_key : ham ? "physical.hamaker" : "physical.surface_potential", "dlvo",
+                                      "physical.hamaker, physical.surface_potential and physical.kappa (or "
+                                      "physical.ionic_strength)", miss))
             return PL_ERR_INPUT;
     }
     if (mask & PL_CT_HERTZ) {
@@ -485,7 +446,7 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
             K = ph->hertz_constant * pow(m->a0, 2.5) / kT;
             K_src = "derived: physical.hertz_constant a0^2.5 / kT (Hecht Eq. 3)";
             c->hertz_off = OFF(mapping.physical.hertz_constant), c->hertz_key = "physical.hertz_constant";
-        } else if (ph->young_modulus > 0 && given(s, OFF(mapping.physical.poisson_ratio))) {
+        } else if (ph->young_modulus > 0 && pl_mapping_given(s, OFF(mapping.physical.poisson_ratio))) {
             K = pl_mapping_hertz_K(ph->young_modulus, ph->poisson_ratio, ph->radius) * pow(m->a0, 2.5) / kT;
             K_src = "derived: Hertz theory from physical.young_modulus, poisson_ratio (Hecht Eq. 3)";
             c->hertz_off = OFF(mapping.physical.young_modulus), c->hertz_key = "physical.young_modulus";
@@ -493,13 +454,13 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
             char miss[200];
             snprintf(miss, sizeof miss, "%s",
                      ph->young_modulus > 0 ? "physical.poisson_ratio"
-                     : given(s, OFF(mapping.physical.poisson_ratio))
+                     : pl_mapping_given(s, OFF(mapping.physical.poisson_ratio))
                          ? "physical.young_modulus"
                          : "physical.young_modulus + physical.poisson_ratio, or physical.hertz_constant, or "
                            "coarse_graining.hertz_K");
-            if (check_missing(s, err, pairs_off, pairs_key, "hertz",
-                              "physical.young_modulus + physical.poisson_ratio (or physical.hertz_constant, "
-                              "or the model choice coarse_graining.hertz_K)", miss))
+            if (pl_mapping_refuse_missing(s, err, pairs_off, pairs_key, "hertz",
+                                          "physical.young_modulus + physical.poisson_ratio (or physical.hertz_constant, "
+                                          "or the model choice coarse_graining.hertz_K)", miss))
                 return PL_ERR_INPUT;
         }
     }
@@ -543,10 +504,11 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     /* without colloids (no volume fraction) only a hand-given count matters:
      * the other colloid keys act on nothing (an echoed scene prints them) */
     for (size_t i = 0; i < (have ? sizeof dk / sizeof dk[0] : 1); ++i)
-        if (refuse(s, err, dk[i].off, dk[i].key, dk[i].from, dk[i].given, dk[i].derived, dk[i].shown))
+        if (pl_mapping_refuse_derived(s, err, dk[i].off, dk[i].key, dk[i].from, dk[i].given, dk[i].derived,
+                                      dk[i].shown))
             return PL_ERR_INPUT;
     if (have && method == PL_COUPLE_POTENTIAL && potential_keys(s, mask, err)) return PL_ERR_INPUT;
-    if (have && given(s, OFF(colloids.gravity)) && (cs->gravity[0] != 0.0 || cs->gravity[1] != 0.0))
+    if (have && pl_mapping_given(s, OFF(colloids.gravity)) && (cs->gravity[0] != 0.0 || cs->gravity[1] != 0.0))
         return pl_scene_fail(s, err, OFF(colloids.gravity), "colloids.gravity",
                              "is derived from physical.gravity (along -z); remove it");
     if (!have) return 0;
@@ -578,7 +540,7 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
             "given %g, realised %.5g)",
          c->n_colloids, s->box.cells[0], s->box.cells[1], s->box.cells[2], c->phi_given, c->phi_realised);
     pl_mapping_prov(c, "colloids.radius = %.6g a0 (derived: R / a0, a0 = %s R)", cs->radius,
-         given(s, OFF(mapping.cg.cell_size)) ? "coarse_graining.cell_size" : "the coupling's default");
+         pl_mapping_given(s, OFF(mapping.cg.cell_size)) ? "coarse_graining.cell_size" : "the coupling's default");
     pl_mapping_prov(c, "colloids.mass_density = %.6g m_f/a0^3 (derived: gamma rho_p / rho_f, Hecht Sec. VII.B): M = %.6g "
             "m_f, I = 2/5 M R^2 = %.6g m_f a0^2",
          cs->mass_density, M, c->inertia);
@@ -588,9 +550,9 @@ int pl_mapping_colloids_apply(pl_scene_t *s, pl_err_t *err)
     if (mask & PL_CT_DLVO)
         pl_mapping_prov(c, "dlvo: psi0 = %.6g mV, kappa = %.6g /m (%s), hamaker = %.6g J, eps_r = %.6g (%s), z = %g, "
                 "T = %g K, length_unit = a0 = %.6g m (derived: Hecht Eqs. 1-2)",
-             cs->dlvo.psi0_mV, mp->kappa, given(s, OFF(mapping.physical.kappa)) ? "given" : "Debye-Hueckel",
+             cs->dlvo.psi0_mV, mp->kappa, pl_mapping_given(s, OFF(mapping.physical.kappa)) ? "given" : "Debye-Hueckel",
              ph->hamaker, ph->permittivity,
-             given(s, OFF(mapping.physical.permittivity)) ? "given" : "water at T, Malmberg & Maryott",
+             pl_mapping_given(s, OFF(mapping.physical.permittivity)) ? "given" : "water at T, Malmberg & Maryott",
              cs->dlvo.z, ph->temperature, m->a0);
     if (mask & PL_CT_HERTZ) pl_mapping_prov(c, "hertz.K = %.6g kT/a0^2.5 (%s)", K, K_src);
     pl_mapping_prov(c, "lubrication.viscosity = %.6g m_f/(a0 t0) (derived: eta = gamma nu_model, Hecht Eq. 4%s)", eta,

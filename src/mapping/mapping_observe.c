@@ -21,9 +21,9 @@
 #include "peloid/mapping.h"
 #include "peloid/scene.h"
 
-#define OFF(m) offsetof(pl_scene_t, m)
+#include "mapping_refuse.h"
 
-static int given(const pl_scene_t *s, size_t off) { return pl_scene_line_of(s, off) > 0; }
+#define OFF(m) offsetof(pl_scene_t, m)
 
 /* One row per observer length key: its SI twin in physical{} and the power
  * of a0 that converts it (1: a length, -1: an inverse length). */
@@ -73,7 +73,7 @@ int pl_mapping_observe_apply(pl_scene_t *s, pl_err_t *err)
         const double si = *at(s, rows[i].phys), model = rows[i].power > 0 ? si / a0 : si * a0;
         const char *unit = rows[i].power > 0 ? "m" : "1/m", *munit = rows[i].power > 0 ? "a0" : "1/a0";
         if (si == 0.0) {
-            if (given(s, rows[i].obs)) /* a model value in a physical scene: its SI value beside it */
+            if (pl_mapping_given(s, rows[i].obs)) /* a model value in a physical scene: its SI value beside it */
                 pl_mapping_prov(c, "observe.%s = %.6g %s (given in model units; = %.4g %s, physical.%s takes it in "
                                    "%s)", rows[i].key, *at(s, rows[i].obs), munit,
                                 rows[i].power > 0 ? *at(s, rows[i].obs) * a0 : *at(s, rows[i].obs) / a0, unit,
@@ -81,7 +81,7 @@ int pl_mapping_observe_apply(pl_scene_t *s, pl_err_t *err)
             continue;
         }
         const double have = *at(s, rows[i].obs);
-        if (given(s, rows[i].obs) && !(fabs(have - model) <= 1e-12 * fabs(model))) {
+        if (pl_mapping_given(s, rows[i].obs) && !(fabs(have - model) <= 1e-12 * fabs(model))) {
             char key[64];
             snprintf(key, sizeof key, "observe.%s", rows[i].key);
             return pl_scene_fail(s, err, rows[i].obs, key, "%g %s given beside physical.%s = %g %s (= %.6g %s); "
@@ -93,7 +93,8 @@ int pl_mapping_observe_apply(pl_scene_t *s, pl_err_t *err)
                         rows[i].key, si, unit);
     }
     pl_scene_observe_t *o = &s->observe;
-    if (!(o->clusters_interval > 0 && o->clusters_bond == PL_BOND_GAP) || given(s, OFF(observe.clusters_gap)) ||
+    if (!(o->clusters_interval > 0 && o->clusters_bond == PL_BOND_GAP) ||
+        pl_mapping_given(s, OFF(observe.clusters_gap)) ||
         s->mapping.physical.clusters_gap != 0.0 || s->colloids.count <= 0)
         return 0;
     double h;
