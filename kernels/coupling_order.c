@@ -108,19 +108,25 @@ static void chain_times(const pl_c1_events_t *e, const pl_grid_t *g, const pl_co
     const double X = e->c.x[k], Y = e->c.y[k], Z = e->c.z[k];
     const double VX = e->c.vx[k], VY = e->c.vy[k], VZ = e->c.vz[k];
     const double R = e->c.rad[k], dt = prm->dt;
-    /* a closed axis subtracts L * 0: x - 0 is x exactly, as meet_time's skip */
-    double pL[3];
-    for (int a = 0; a < 3; ++a) pL[a] = g->walls[a] == PL_WALLS_NONE ? g->L[a] : 0.0;
-    const double L0 = g->L[0], L1 = g->L[1], L2 = g->L[2];
+    /* the minimum image of meet_time, p - L nearbyint(p / L), without its division: |p| < 3L/2 here (both
+     * ends within a margin of the box), where nearbyint(p / L) is 1 exactly when p > L/2 (p / L then rounds
+     * above 1/2: p - L/2 is at least an ulp of L/2, more than 2^-54 L, and 1/2's upper neighbour is
+     * 1/2 + 2^-53), -1 when p < -L/2, else 0 (1/2 itself rounds to even); p - L and p + L are the products'
+     * differences exactly.  A closed axis subtracts nothing, as meet_time's skip. */
+    double pL[3], h[3];
+    for (int a = 0; a < 3; ++a) {
+        pL[a] = g->walls[a] == PL_WALLS_NONE ? g->L[a] : 0.0;
+        h[a] = 0.5 * g->L[a];
+    }
     const double *restrict rx = r[0], *restrict ry = r[1], *restrict rz = r[2];
     const double *restrict vx = r[3], *restrict vy = r[4], *restrict vz = r[5];
     double *restrict t = r[6];
 #pragma omp simd
     for (size_t q = 0; q < m; ++q) {
         double px = rx[q] - X, py = ry[q] - Y, pz = rz[q] - Z;
-        px -= pL[0] * nearbyint(px / L0);
-        py -= pL[1] * nearbyint(py / L1);
-        pz -= pL[2] * nearbyint(pz / L2);
+        px = px > h[0] ? px - pL[0] : px < -h[0] ? px + pL[0] : px;
+        py = py > h[1] ? py - pL[1] : py < -h[1] ? py + pL[1] : py;
+        pz = pz > h[2] ? pz - pL[2] : pz < -h[2] ? pz + pL[2] : pz;
         t[q] = meet_of(px, py, pz, vx[q] - VX, vy[q] - VY, vz[q] - VZ, R, dt);
     }
 }
@@ -133,6 +139,7 @@ static void chain_times(const pl_c1_events_t *e, const pl_grid_t *g, const pl_co
 size_t pl_coupling1_chain_gather(const pl_fluid_t *f, pl_coupling1_scratch_t *sc, size_t j)
 {
     const int64_t base = sc->cbeg[sc->k[j]];
+    sc->seen[8 * (size_t)sc->k[j] + 7] = 0.0; /* no meet times yet */
     size_t m = 0;
     for (int64_t q = (int64_t)j; q >= 0; q = sc->next[q]) {
         if (sc->taken[q]) continue;
@@ -156,7 +163,8 @@ size_t pl_coupling1_chain_gather(const pl_fluid_t *f, pl_coupling1_scratch_t *sc
  * chain (the rest keep their order); -1 when the chain is done.  O(*m) per
  * event, in SIMD lanes over contiguous copies: the linked chain's scattered
  * reads of the fluid arrays, n^2 / 2 of them a step, were the cost of
- * large colloids (bench/RESULTS.md). */
+ * large colloids (bench/RESULTS.md); the times are computed again only
+ * when the colloid's state changed since they were (sc->seen). */
 int64_t pl_coupling1_chain_next(const pl_c1_events_t *e, const pl_grid_t *g, const pl_coupling1_params_t *prm,
                                 pl_coupling1_scratch_t *sc, int32_t k, size_t *m)
 {
@@ -164,16 +172,25 @@ int64_t pl_coupling1_chain_next(const pl_c1_events_t *e, const pl_grid_t *g, con
     const size_t base = (size_t)sc->cbeg[k], n = *m;
     double *r[7];
     for (int d = 0; d < 7; ++d) r[d] = sc->chain + (size_t)d * sc->cap + base;
-    chain_times(e, g, prm, k, r, n);
+    /* the meet times are a function of the particles' copies and of colloid k's state alone: an event that
+     * left the colloid as it was (a particle in the margin, outside it) leaves the times as they were */
+    const double now[7] = {e->c.x[k], e->c.y[k], e->c.z[k], e->c.vx[k], e->c.vy[k], e->c.vz[k], e->c.rad[k]};
+    double *seen = sc->seen + 8 * (size_t)k;
+    if (!(seen[7] == 1.0 && !memcmp(seen, now, sizeof now))) {
+        chain_times(e, g, prm, k, r, n);
+        memcpy(seen, now, sizeof now);
+        seen[7] = 1.0;
+    }
+    /* the first minimum: the least time (a min in lanes: exact in any order, no time is NaN), then the first
+     * particle in chain order that has it */
+    const double *restrict tq = r[6];
+    double tb = tq[0];
+#pragma omp simd reduction(min : tb)
+    for (size_t q = 1; q < n; ++q) tb = tq[q] < tb ? tq[q] : tb;
     size_t best = 0;
-    double tb = r[6][0];
-    for (size_t q = 1; q < n; ++q)
-        if (r[6][q] < tb) {
-            tb = r[6][q];
-            best = q;
-        }
+    while (tq[best] != tb) ++best;
     const int64_t b = sc->cq[base + best];
-    for (int d = 0; d < 6; ++d) memmove(r[d] + best, r[d] + best + 1, (n - best - 1) * sizeof *r[d]);
+    for (int d = 0; d < 7; ++d) memmove(r[d] + best, r[d] + best + 1, (n - best - 1) * sizeof *r[d]);
     memmove(sc->cq + base + best, sc->cq + base + best + 1, (n - best - 1) * sizeof *sc->cq);
     *m = n - 1;
     return b;
