@@ -1,6 +1,6 @@
 /* Accuracy cost of the storage precision: kinematic viscosity from the decay
  * of a transverse shear wave, against SRD theory (PL Eqs. 9-12,
- * src/mapping/srd_theory.c).  Built as usual it measures double; built with
+ * src/fluid/srd_theory.c).  Built as usual it measures double; built with
  * `make BUILD=build-single DEFS=-DPL_SINGLE` it measures float.
  *
  * Scene: periodic box Lx x Ly x Lz, 10 particles per cell, alpha = 130 deg,

@@ -1,5 +1,5 @@
-/* Output files: directory handling, atomic writes, fields, thermo log,
- * summary (the checkpoint: peloid/checkpoint.h).  All writers go through a temporary name and rename()
+/* Output files: directory handling, atomic writes and file copies (the
+ * checkpoint: peloid/checkpoint.h).  All writers go through a temporary name and rename()
  * so a crash never leaves a half-written file under the final name. */
 #ifndef PELOID_IO_H
 #define PELOID_IO_H
@@ -7,7 +7,6 @@
 #include <stdio.h>
 
 #include "peloid/error.h"
-#include "peloid/sim.h"
 
 /* Resolves `dir` (realpath of the part that exists; the rest must be plain
  * names, no "." or "..") into `resolved` (n bytes) and creates what is
@@ -62,10 +61,5 @@ int pl_file_copy(const char *src, const char *path, pl_err_t *err);
  * 0, or -1 with errno. */
 int pl_fsync_path(const char *path, int dir);
 
-/* Time-averaged fields in H5MD layout (src/io/fields_io.c). */
-int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err);
-
-/* hwloc topology summary, e.g. "1 package, 2 cores, 2 PUs, 1 NUMA node". */
-void pl_topology_summary(char *buf, size_t n);
 
 #endif

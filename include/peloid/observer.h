@@ -21,7 +21,7 @@
 
 struct pl_json;
 struct json_t;
-struct pl_obs_point; /* an estimate at a run fraction (src/io/observables_out.h) */
+struct pl_obs_point; /* an estimate at a run fraction (src/observe/observables_out.h) */
 
 /* What every observer's hooks share: the run and its span. */
 typedef struct pl_obs_run {

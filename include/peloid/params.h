@@ -1,4 +1,4 @@
-/* The derived parameters of a scene (src/mapping/params.c): `peloid
+/* The derived parameters of a scene (src/app/params.c): `peloid
  * params` and `peloid check`, and summary.json "derived". */
 #ifndef PELOID_PARAMS_H
 #define PELOID_PARAMS_H

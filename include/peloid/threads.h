@@ -1,5 +1,5 @@
 /* The OpenMP team of a run: its default size and its binding to cores
- * (kernels/thread_bind.c), its validated count (src/core/threads.c).  Every
+ * (src/core/thread_bind.c), its validated count (src/core/threads.c).  Every
  * kernel is given the thread count (num_threads clauses); nothing sets a
  * process-wide count. */
 #ifndef PELOID_THREADS_H

@@ -15,6 +15,10 @@
 
 struct pl_progress;
 
+/* Time-averaged fields in H5MD layout, fields.h5 and fields.xdmf beside it
+ * (src/app/fields_io.c; the fields writer's row, src/app/writer_fields.c). */
+int pl_fields_write(const pl_sim_t *sim, const char *path, pl_err_t *err);
+
 /* What every writer is given: the run's output directory and how the run
  * starts there. */
 typedef struct {

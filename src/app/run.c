@@ -23,6 +23,7 @@
 #include "peloid/io.h"
 #include "peloid/mapping.h"
 #include "peloid/module.h"
+#include "peloid/topology.h"
 #include "peloid/progress.h"
 #include "peloid/run.h"
 #include "peloid/srd_theory.h"

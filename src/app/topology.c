@@ -2,7 +2,7 @@
 #include <hwloc.h>
 #include <stdio.h>
 
-#include "peloid/io.h"
+#include "peloid/topology.h"
 
 void pl_topology_summary(char *buf, size_t n)
 {

@@ -1,5 +1,5 @@
 /* The time-averaged fields as a writer row (peloid/writer.h): fields.h5
- * (H5MD) and fields.xdmf beside it (src/io/fields_io.c) at the end of a run
+ * (H5MD) and fields.xdmf beside it (src/app/fields_io.c) at the end of a run
  * with output.fields_interval, from the fluid's accumulators (its sampling
  * stage, src/fluid/fluid_stages.c); none when no sample was taken. */
 #include <limits.h>

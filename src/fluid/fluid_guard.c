@@ -28,7 +28,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "peloid/coupling.h"
+#include "peloid/coupling_scene.h"
 #include "peloid/sim.h"
 
 #include "srd_state.h"

@@ -2,7 +2,7 @@
  * v_i -> u + R (v_i - u) with R a rotation by alpha about a random axis (PL
  * Eq. 3) or by +-90 deg about a coordinate axis (Hecht Sec. III); the kernel
  * is kernels/srd_collide.c (with or without the Heyes thermostat), the
- * theory src/mapping/srd_theory.c (PL Eqs. 6, 9-12; Hecht Eq. 28).  Both
+ * theory src/fluid/srd_theory.c (PL Eqs. 6, 9-12; Hecht Eq. 28).  Both
  * conserve each cell's momentum and kinetic energy, not its angular
  * momentum. */
 #include "peloid/collision_rule.h"

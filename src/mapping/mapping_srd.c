@@ -12,7 +12,7 @@
 #include "peloid/mapping.h"
 #include "peloid/srd_theory.h"
 
-/* PL Eqs. 6 and 9-12 live in src/mapping/srd_theory.c; these evaluate them in the
+/* PL Eqs. 6 and 9-12 live in src/fluid/srd_theory.c; these evaluate them in the
  * mapping's units (kT = 1, dt = lambda). */
 static pl_srd_theory_t srd(double lambda, double gamma, int rule, double alpha)
 {

@@ -81,7 +81,7 @@ def fig11_reference(s, mass):
 
 
 def srd_eta(g, alpha_deg, lam, kT=1.0):
-    """Shear viscosity of the SRD fluid, PL Eqs. 9-15 (random-axis rule; src/mapping/srd_theory.c)."""
+    """Shear viscosity of the SRD fluid, PL Eqs. 9-15 (random-axis rule; src/fluid/srd_theory.c)."""
     import math
     a = math.radians(alpha_deg)
     fk = 15.0 * g / ((g - 1.0 + math.exp(-g)) * (4.0 - 2.0 * math.cos(a) - 2.0 * math.cos(2.0 * a))) - 1.5

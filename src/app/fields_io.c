@@ -33,6 +33,7 @@
 #include "peloid/h5.h"
 #include "peloid/io.h"
 #include "peloid/mapping.h"
+#include "peloid/writer.h"
 
 /* Dataset `name` of g: d[0..n) * f with attributes unit and to_si. */
 static int put_si(hid_t g, const char *name, int rank, const hsize_t *dims, const double *d, size_t n, double f,

@@ -1,11 +1,10 @@
-/* thermo.tsv columns (include/peloid/thermo.h): step and time, then each
- * module's columns (its thermo_columns, peloid/module.h), then the wall-clock
- * rate. */
-#include <errno.h>
+/* thermo.tsv's columns (include/peloid/thermo.h), core's registry: step and
+ * time, then each module's columns (its thermo_columns, peloid/module.h), the
+ * SI twins of a physical scene's model columns, then the wall-clock rate; a
+ * row's text.  The state a row shows is sampled, and the file kept, by the
+ * run (src/app/thermo_log.c). */
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 #include "observables_si.h"
 #include "peloid/module.h"
@@ -105,15 +104,6 @@ void pl_thermo_header(const pl_thermo_table_t *t, FILE *f)
     for (int k = 0; k < t->n; ++k) fprintf(f, "%s%c", t->col[k].name, k + 1 < t->n ? '\t' : '\n');
 }
 
-void pl_thermo_sample(const pl_sim_t *sim, double rate, pl_thermo_sample_t *s)
-{
-    memset(s, 0, sizeof *s);
-    s->sim = sim;
-    s->rate = rate;
-    pl_sim_observe(sim, &s->fluid, &s->kT);
-    if (sim->colloids) pl_colloid_energy(sim->colloids, &s->ce);
-}
-
 int pl_thermo_row(const pl_thermo_table_t *t, const pl_thermo_sample_t *s, FILE *f)
 {
     int r = 0;
@@ -125,45 +115,4 @@ int pl_thermo_row(const pl_thermo_table_t *t, const pl_thermo_sample_t *s, FILE 
         else r = fprintf(f, "%.10g%c", c->value(s, c->arg) * (c->to_si != 0.0 ? c->to_si : 1.0), sep);
     }
     return r;
-}
-
-int pl_thermo_open(const pl_thermo_table_t *t, const char *path, long long keep, FILE **out, pl_err_t *err)
-{
-    FILE *f = keep >= 0 ? fopen(path, "r+") : NULL;
-    if (!f && keep >= 0 && errno != ENOENT)
-        return pl_err_set(err, PL_ERR_IO, "%s: cannot open to continue: %s", path, strerror(errno));
-    if (!f) { /* a new file */
-        if (!(f = fopen(path, "w"))) return pl_err_set(err, PL_ERR_IO, "%s: cannot write: %s", path, strerror(errno));
-        pl_thermo_header(t, f);
-        *out = f;
-        return 0;
-    }
-    char *want = NULL, *line = NULL;
-    size_t cap = 0, want_len = 0;
-    FILE *header = open_memstream(&want, &want_len);
-    if (!header) {
-        fclose(f);
-        return pl_err_set(err, PL_ERR_NOMEM, "%s: no memory for its header", path);
-    }
-    pl_thermo_header(t, header);
-    int rc = 0;
-    if (fclose(header)) rc = pl_err_set(err, PL_ERR_NOMEM, "%s: no memory for its header", path);
-    else if (getline(&line, &cap, f) < 0 || strcmp(line, want) != 0) {
-        rc = pl_err_set(err, PL_ERR_INPUT, "%s: its columns are not this run's (another scene or other output "
-                        "options); resume with another --out", path);
-    } else { /* the whole rows of steps < keep stay (a row cut short by a crash has no newline) */
-        long at = ftell(f);
-        ssize_t len;
-        while ((len = getline(&line, &cap, f)) > 0 && line[len - 1] == '\n' && strtoll(line, NULL, 10) < keep)
-            at = ftell(f);
-        errno = 0;
-        if (at < 0 || fflush(f) || ftruncate(fileno(f), at) || fseek(f, 0, SEEK_END))
-            rc = pl_err_set(err, PL_ERR_IO, "%s: cannot cut it at step %lld: %s", path, keep,
-                            errno ? strerror(errno) : "stream error");
-    }
-    free(line);
-    free(want);
-    if (rc) fclose(f);
-    else *out = f;
-    return rc;
 }
