@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Equilibrium stickiness of Hecht's DLVO pair potential (issue 39, validation/RULES_issue39.md R1-R2).
+"""Equilibrium stickiness of Hecht's DLVO pair potential (issue 39, validation/RULES_disagreements.md R1-R2).
 
     /usr/bin/python3 tools/b2_stickiness.py [--png PATH]             the tables (and the plot)
     /usr/bin/python3 tools/b2_stickiness.py --selftest                 checks against analytic cases

@@ -353,7 +353,7 @@ def reduced_pl_fig10_vacf(sw):
                   f"C_FF(dt)/C_FF(0) = {r1:.3f} +- {r1se:.3f} -> tau_FP = {tfp:.3f} t0 (bound 0.3)")
 
 
-# Issue 39, R5 amended (validation/RULES_issue39.md, committed before the runs): studies/pl_fig10_vacf_l64.cfg.
+# Issue 39, R5 amended (validation/RULES_disagreements.md, committed before the runs): studies/pl_fig10_vacf_l64.cfg.
 PL10_L64_WINDOWS = (("8–16", 8.0, 16.0), ("16–32", 16.0, 32.0), ("32–64", 32.0, 64.0), ("16–64", 16.0, 64.0))
 
 

@@ -293,7 +293,7 @@ def reduced_pl_fig4_rdf(sw):
                   f"combined SE {se:.3f} < 0.25); chi2 {c['chi2']:.1f}/{c['dof']}, p = {c['p']:.2g} (bound 1e-4)")
 
 
-# Issue 39, R6 amended (validation/RULES_issue39.md, committed before the runs): studies/pl_fig4_rdf_long.cfg
+# Issue 39, R6 amended (validation/RULES_disagreements.md, committed before the runs): studies/pl_fig4_rdf_long.cfg
 # (4 replicas of SRD + depletion_comp at half PL's MD step) against studies/pl_fig4_rdf_bd_long.cfg (BD at 1/2
 # and 1/4 of PL's step, extrapolated to step 0).
 PL4_LONG_PEAK_SE_MAX = 0.025

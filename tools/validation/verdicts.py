@@ -1,4 +1,4 @@
-"""Issue 39: one verdict per disagreement row of validation/REPORT.md, by the rules of validation/RULES_issue39.md
+"""Issue 39: one verdict per disagreement row of validation/REPORT.md, by the rules of validation/RULES_disagreements.md
 (committed before the tool and the runs), with the evidence: tools/b2_stickiness.py (Hecht Eqs. 1-2 stickiness,
 Fig. 11's potentials), the kinematics of the Richardson-Zaki frames, and the studies hecht_fig9_lub (Fig. 9 with
 lubrication) and pl_fig11_dphi_bd (Brownian-dynamics reference of PL Fig. 11).
@@ -14,7 +14,7 @@ import os
 
 from validation.common import load, pyplot, save_figure
 
-# validation/REPORT.md's numbers the rules use where a study's outputs are not in `out` (RULES_issue39.md says which
+# validation/REPORT.md's numbers the rules use where a study's outputs are not in `out` (RULES_disagreements.md says which
 # were known when the rules were written): the coupling II rows from runs of 5459ad5, the PL rows from 493a6e8.
 RECORDED = {
     # REPORT.md's rows, runs of 5459ad5 (0.64 s; read from the sweeps instead when they are in OUT_STUDIES)
@@ -33,7 +33,7 @@ RECORDED = {
     "viscosity": [("ρ = 3, λ = 0.3", 0.3, 4.8, 0.8), ("ρ = 5, λ = 0.3", 0.3, 2.9, 0.7)],
 }
 FIG11_C = 1.1795
-VACF_DM_RULE = -0.311  # RULES_issue39.md R5 amended: the model's drop, fixed before the runs
+VACF_DM_RULE = -0.311  # RULES_disagreements.md R5 amended: the model's drop, fixed before the runs
 PHI_SIGMA_CF = 4.0 / 3.0 * math.pi * 2.0 ** 3 / 16.0 ** 3  # PL's phi per colloid, sigma_cf = 2 a0, L = 16 a0
 
 
@@ -608,7 +608,7 @@ def section(out, rdir, previous=None):
     except OSError:
         rev = "unknown"
     lines = ["## Verdicts of the disagreement rows", "", f"This section written at {rev} (tools/validation/verdicts.py).", "",
-             "Each disagreement row above, judged by the rule of validation/RULES_issue39.md fixed (and committed) before "
+             "Each disagreement row above, judged by the rule of validation/RULES_disagreements.md fixed (and committed) before "
              "the tool and the runs; no parameter was tuned.  Verdicts: agrees; disagrees — peloid (a defect); disagrees — "
              "set-up (a named difference, with the run that removes it); paper inconsistent (from the paper's own "
              "equations); not settled (the decisive run was not made: a provisional verdict from what exists).  CPU: the "
@@ -621,7 +621,7 @@ def section(out, rdir, previous=None):
         name, v, ev, rule, c, plots = r[:6]
         vv = v if v.startswith("not settled") else f"**{v}**"
         pl = ", ".join(f"[{p}]({p})" for p in plots) or "–"
-        lines.append(f"| {name} | {vv} | {ev} | RULES_issue39.md {rule} | {c:.0f} s | {pl} |")
+        lines.append(f"| {name} | {vv} | {ev} | RULES_disagreements.md {rule} | {c:.0f} s | {pl} |")
     lines += ["", "Departures from the rules, all stated here: (1) R1's escape time was written as Kramers' saddle formula, "
               "but the secondary well has no outer saddle (V rises monotonically to 0): the tool gives the radial "
               "mean first-passage time instead (to the well's edge and to one diameter away) and Kramers only for "
@@ -632,7 +632,7 @@ def section(out, rdir, previous=None):
               "1–2) was added after the rules as the equilibrium reference the issue asks for; it decides nothing.  "
               "(4) The issue's B2* values are reproduced only with another normalisation and other constants (the "
               "table's note).  (5) R5 and R6 were amended on branch exp39b with the decisive experiments' rules "
-              "(RULES_issue39.md, committed as 9ccedf1 before that branch's runs); the three study files were "
+              "(RULES_disagreements.md, committed as 9ccedf1 before that branch's runs); the three study files were "
               "written before the runs and committed at the first one's start (b88b1ba), unchanged since; the "
               "evaluation code was committed (932c7f1) before the BD reference and the VACF runs had started (one SRD "
               "replica had finished; its output, compared with itself, was the code's test input).  R5 fixes the model's "
