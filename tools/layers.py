@@ -50,6 +50,12 @@ def symbols(build):
         raise SystemExit(f"layers: no objects under {build}/src and {build}/kernels; build first (make)")
     for o in objs:
         folder = os.path.relpath(os.path.dirname(o), build)
+        dep = o[:-2] + ".d"  # make's dependency file names the source (its first prerequisite)
+        if os.path.exists(dep):
+            words = open(dep).read().split()
+            src = words[1] if len(words) > 1 else ""
+            if src and not os.path.exists(src):
+                continue  # the object of a source that moved or went: not this tree's
         out = subprocess.run(["nm", o], capture_output=True, text=True, check=True).stdout
         for line in out.splitlines():
             w = line.split()

@@ -88,7 +88,7 @@ size_t pl_fluid_bytes(const pl_fluid_t *fluid);
  * static schedule the kernels use, so pages land near their threads. */
 void *pl_alloc(size_t bytes, int nthreads);
 /* Zeroes bytes at mem page by page on nthreads threads, with the kernels'
- * static schedule (kernels/first_touch.c). */
+ * static schedule (src/core/first_touch.c). */
 void pl_first_touch(void *mem, size_t bytes, int nthreads);
 void pl_free(void *p);
 

@@ -1,7 +1,7 @@
 /* Thread placement (DESIGN.md "Performance contract"): the OpenMP team of a
  * run is bound to cores spread over the machine before the first allocation
  * (over the process's own CPU binding: a sweep's job, taskset, a Slurm task),
- * whose first touch (kernels/first_touch.c) then places each thread's pages
+ * whose first touch (src/core/first_touch.c) then places each thread's pages
  * on its own NUMA node.  The one parallel region of peloid that is not a loop
  * over data: each thread of the team binds itself. */
 #include <hwloc.h>

@@ -11,7 +11,7 @@
 #define OFF(m) offsetof(pl_scene_t, m)
 
 /* Bytes a run allocates, by O(1) arithmetic on the scene (src/core/sim.c,
- * src/fluid/fluid.c, src/coupling/coupling_potential.c): per fluid particle
+ * src/core/fluid.c, src/coupling/coupling_potential.c): per fluid particle
  * the positions and velocities with their sort twins (12 reals), the cell
  * index, with output.track_fluid ids and unwrapped displacements (twins),
  * with the potential coupling its two selection indices and its staging row;
