@@ -23,10 +23,6 @@ FOLDERS = ("kernels", "src/io", "src/scene", "src/mapping", "src/core") + COMPON
 
 # (from folder, to folder, the symbol): why it still runs that way
 KNOWN = {
-    ("src/scene", "src/core", "pl_modules"):
-        "scene_validate.c runs the modules' validate_scene (README: where the code still breaks the rules)",
-    ("src/scene", "src/mapping", "pl_mapping_scene_apply"):
-        "scene_validate.c runs the mapping's checks (README: where the code still breaks the rules)",
     ("src/scene", "src/fluid", "pl_collision_rule_names"):
         "the key schema lists the collision rules' names for srd.rule",
     ("src/scene", "src/fluid", "pl_thermostat_names"):

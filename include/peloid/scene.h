@@ -218,8 +218,10 @@ int pl_colloid_validate_scene(const pl_scene_t *scene, pl_err_t *err);
 /* Fills every key with its schema default. */
 void pl_scene_defaults(pl_scene_t *scene);
 
-/* Reads and validates `path`.  On error returns PL_ERR_INPUT with a one-line
- * message "FILE:LINE: key 'a.b': <what is wrong>; <what is allowed>". */
+/* Reads and validates `path` (src/app/scene_open.c: parsed, mapped, checked
+ * by the scene's and each module's checks).  On error returns PL_ERR_INPUT
+ * with a one-line message "FILE:LINE: key 'a.b': <what is wrong>; <what is
+ * allowed>". */
 int pl_scene_load(const char *path, pl_scene_t *scene, pl_err_t *err);
 
 /* Same, with PL_SCENE_* flags: PL_SCENE_INCLUDE_ANYWHERE lets @include name
@@ -242,10 +244,21 @@ int pl_scene_load_calibrated(const char *path, unsigned flags, const pl_mapping_
 int pl_scene_load_string(const char *text, const char *label, pl_scene_t *scene,
                          pl_err_t *err);
 
-/* Cross-key checks that a single key's range cannot express.  A scene with
- * a physical{} section first gets its SRD parameters from the mapping
- * (pl_mapping_scene_apply), hence the non-const scene. */
+/* Cross-key checks that a single key's range cannot express
+ * (src/app/scene_open.c).  A scene with a physical{} section first gets its
+ * SRD parameters from the mapping (pl_mapping_scene_apply), hence the
+ * non-const scene; then pl_scene_check_keys, then each module's
+ * validate_scene. */
 int pl_scene_validate(pl_scene_t *scene, pl_err_t *err);
+/* The scene layer's own part of it: box, fluid and output keys across each
+ * other and the memory check at 1 thread (src/scene/scene_validate.c). */
+int pl_scene_check_keys(pl_scene_t *scene, pl_err_t *err);
+/* The loaders' first part (src/scene/scene_load.c): the file (or text)
+ * parsed into the struct, every key against the schema, nothing across keys
+ * and no mapping; the loaders above then validate. */
+int pl_scene_parse_calibrated(const char *path, unsigned flags, const pl_mapping_calibration_t *calib,
+                              pl_scene_t *scene, pl_err_t *err);
+int pl_scene_parse_string(const char *text, const char *label, pl_scene_t *scene, pl_err_t *err);
 /* The memory a run of the scene at nthreads threads allocates (O(1)
  * estimate: fluid, cells, colloids) against the machine's physical memory:
  * PL_ERR_INPUT naming box.cells or fluid.density, the estimate and the

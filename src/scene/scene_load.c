@@ -368,11 +368,11 @@ static int load_text(const pl_scene_text_t *text, const char *label, const pl_ma
         if (apply_root(&c, config_root_setting(&cfg), scene) || default_name(scene, label, err)) rc = PL_ERR_INPUT;
     }
     config_destroy(&cfg);
-    return rc ? rc : pl_scene_validate(scene, err);
+    return rc;
 }
 
-int pl_scene_load_calibrated(const char *path, unsigned flags, const pl_mapping_calibration_t *calib,
-                             pl_scene_t *scene, pl_err_t *err)
+int pl_scene_parse_calibrated(const char *path, unsigned flags, const pl_mapping_calibration_t *calib,
+                              pl_scene_t *scene, pl_err_t *err)
 {
     if (strlen(path) >= sizeof scene->path)
         return pl_err_set(err, PL_ERR_INPUT, "%.100s...: scene path longer than %zu characters", path,
@@ -384,17 +384,7 @@ int pl_scene_load_calibrated(const char *path, unsigned flags, const pl_mapping_
     return rc;
 }
 
-int pl_scene_load_flags(const char *path, unsigned flags, pl_scene_t *scene, pl_err_t *err)
-{
-    return pl_scene_load_calibrated(path, flags, NULL, scene, err);
-}
-
-int pl_scene_load(const char *path, pl_scene_t *scene, pl_err_t *err)
-{
-    return pl_scene_load_flags(path, 0, scene, err);
-}
-
-int pl_scene_load_string(const char *text, const char *label, pl_scene_t *scene, pl_err_t *err)
+int pl_scene_parse_string(const char *text, const char *label, pl_scene_t *scene, pl_err_t *err)
 {
     pl_scene_text_t t;
     int rc = pl_scene_text_string(&t, text, label, err);

@@ -1,10 +1,12 @@
-/* Cross-key scene checks: what one key's range cannot express. */
+/* Cross-key scene checks of the scene's own sections (box, fluid, output):
+ * what one key's range cannot express; the run's memory against the
+ * machine's.  A scene is loaded (src/app/scene_open.c) by these after the
+ * mapping and before each module's own checks. */
 #include <math.h>
 #include <stdio.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
-#include "peloid/module.h"
 #include "peloid/real.h"
 #include "peloid/scene.h"
 
@@ -124,9 +126,8 @@ int pl_scene_memory_check(const pl_scene_t *scene, int nthreads, pl_err_t *err)
                          need / 1e9, np, per_p, cells, per_c, nthreads, scene->colloids.count, have / 1e9, what);
 }
 
-int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
+int pl_scene_check_keys(pl_scene_t *scene, pl_err_t *err)
 {
-    if (pl_mapping_scene_apply(scene, err)) return PL_ERR_INPUT; /* physical{} -> srd, fluid, box */
     const pl_scene_box_t *b = &scene->box;
     double ncells = (double)b->cells[0] * b->cells[1] * b->cells[2];
     size_t soff;
@@ -174,7 +175,5 @@ int pl_scene_validate(pl_scene_t *scene, pl_err_t *err)
         return pl_scene_fail(scene, err, OFF(output.colloids_xyz), "output.colloids_xyz",
                              "true without colloid frames; allowed: with colloids.count > 0 and "
                              "colloids.trajectory_interval > 0");
-    for (int m = 0; pl_modules[m]; ++m) /* each module its own sections (peloid/module.h) */
-        if (pl_modules[m]->validate_scene && pl_modules[m]->validate_scene(scene, err)) return PL_ERR_INPUT;
     return 0;
 }
