@@ -23,10 +23,6 @@ FOLDERS = ("kernels", "src/io", "src/scene", "src/mapping", "src/core") + COMPON
 
 # (from folder, to folder, the symbol): why it still runs that way
 KNOWN = {
-    ("src/scene", "src/fluid", "pl_collision_rule_names"):
-        "the key schema lists the collision rules' names for srd.rule",
-    ("src/scene", "src/fluid", "pl_thermostat_names"):
-        "the key schema lists the thermostats' names for thermostat.type",
     ("src/core", "src/fluid", "pl_srd_kept"):
         "checkpoint.c writes the fluid's accumulators and kT_cell (their place in the file keeps its bytes)",
     ("src/core", "src/fluid", "pl_srd_order_lost"):

@@ -1,27 +1,18 @@
 /* The collision rules of the fluid, one row each (peloid/collision_rule.h).
- * The list below is the only place that names them all: a new rule is its
- * own files (kernel, theory, row) plus one line here.  The scene stores a
+ * Their one list is include/peloid/collision_rule_list.h: a new rule is its
+ * own files (kernel, theory, row) plus one line there.  The scene stores a
  * rule as its index in this list (srd.rule); the two SRD rotations keep
  * their old indices PL_RULE_RANDOM_AXIS = 0 and PL_RULE_HECHT_AXES = 1, so
  * scenes and checkpoints read as before. */
 #include <stddef.h>
 
 #include "peloid/collision_rule.h"
-
-/* X(row, name): in srd.rule order */
-#define PL_COLLISION_RULES(X)                                                                                      \
-    X(pl_rule_random_axis, "random_axis")                                                                          \
-    X(pl_rule_hecht_axes, "hecht_axes")                                                                            \
-    X(pl_rule_mpc_at, "mpc_at")                                                                                    \
-    X(pl_rule_mpc_at_a, "mpc_at_a")                                                                                \
-    X(pl_rule_srd_a, "srd_a")
+#include "peloid/collision_rule_list.h"
 
 #define DECL(row, name) extern const pl_collision_rule_t row; /* in the rule's own file */
 PL_COLLISION_RULES(DECL)
 #define ROW(row, name) &row,
-#define NAME(row, name) name,
 static const pl_collision_rule_t *const rows[] = {PL_COLLISION_RULES(ROW)};
-const char *const pl_collision_rule_names[] = {PL_COLLISION_RULES(NAME) NULL};
 
 _Static_assert(PL_RULE_RANDOM_AXIS == 0 && PL_RULE_HECHT_AXES == 1, "the SRD rows keep their indices");
 

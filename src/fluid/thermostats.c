@@ -1,7 +1,7 @@
-/* The thermostats of the fluid, one row each (peloid/thermostat.h).  The
- * list below is the only place that names them all: a new thermostat is its
- * own file (row, stages; a kernel of its own under kernels/) plus one line
- * here.  The scene stores a thermostat as its index in this list
+/* The thermostats of the fluid, one row each (peloid/thermostat.h).  Their
+ * one list is include/peloid/thermostat_list.h: a new thermostat is its own
+ * file (row, stages; a kernel of its own under kernels/) plus one line
+ * there.  The scene stores a thermostat as its index in this list
  * (thermostat.type): none 0, heyes 1, rescale 2, as before the rows, so
  * scenes and checkpoints read as before.  Also the collision stage in its
  * two variants, which the row of the scene's thermostat chooses. */
@@ -10,24 +10,17 @@
 #include "peloid/scene.h"
 #include "peloid/sim.h"
 #include "peloid/thermostat.h"
+#include "peloid/thermostat_list.h"
 
 static const pl_thermostat_t none = {
     .name = "none",
     .doc = "no thermostat",
 };
 
-/* X(row, name): in thermostat.type order */
-#define PL_THERMOSTATS(X)                                                                                          \
-    X(none, "none")                                                                                                \
-    X(pl_thermostat_heyes, "heyes")                                                                                \
-    X(pl_thermostat_rescale, "rescale")
-
 extern const pl_thermostat_t pl_thermostat_heyes;   /* src/fluid/thermostat_heyes.c */
 extern const pl_thermostat_t pl_thermostat_rescale; /* src/fluid/thermostat_rescale.c */
 #define ROW(row, name) &row,
-#define NAME(row, name) name,
 static const pl_thermostat_t *const rows[] = {PL_THERMOSTATS(ROW)};
-const char *const pl_thermostat_names[] = {PL_THERMOSTATS(NAME) NULL};
 
 _Static_assert(PL_THERMO_NONE == 0, "row 0 is none");
 

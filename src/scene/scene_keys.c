@@ -6,8 +6,18 @@
 #include <stddef.h>
 
 #include "peloid/collision_rule.h" /* pl_collision_rule_names */
+#include "peloid/collision_rule_list.h"
 #include "peloid/scene.h"
 #include "peloid/thermostat.h" /* pl_thermostat_names */
+#include "peloid/thermostat_list.h"
+
+/* The choice words of srd.rule and thermostat.type, in the one list of each
+ * (the rows themselves are the fluid's: src/fluid/collision_rules.c,
+ * src/fluid/thermostats.c) */
+#define NAME(row, name) name,
+const char *const pl_collision_rule_names[] = {PL_COLLISION_RULES(NAME) NULL};
+const char *const pl_thermostat_names[] = {PL_THERMOSTATS(NAME) NULL};
+#undef NAME
 
 #define OFF(member) offsetof(pl_scene_t, member)
 #define N(a) (sizeof(a) / sizeof((a)[0]))
