@@ -5,7 +5,9 @@ its markers, and its plot.
 Per point (model units): the sedimentation observer's slip velocity u (summary.json, a0/t0, positive down) and, read
 independently with h5py from colloids.h5, the colloids' mean fall turned into u by the zero total momentum (H3,
 tools/h5md_settling.py); U = u (1 - phi); U0 = F / (6 pi eta R_h) with rule R8's measured R_h (the law file's
-"check", calibration/rh_resolution-c1_hecht.json); y = 1 - R_h (2.837/L + 6 pi eta U/F) fitted as K phi.
+"check", calibration/rh_resolution-c1_hecht.json); y = 1 - R_h (2.837/L + 6 pi eta U/F) fitted as K phi.  Rule H6's
+points (the study name + _rz) fit Richardson-Zaki's n; rule H7's point (+ _n27: 27 colloids at phi = 0.2) and H6's
+phi = 0.2 point extrapolate U linearly in N^(-1/3) to an infinite box (its own plot, + _n27.png).
 
     python3 tools/hindered_matched.py OUT/STUDY REPORT.md [COMMIT]     (prints the section; exit 0)"""
 import json
@@ -28,7 +30,12 @@ RESUMED = ("two points were stopped once by a signal at a checkpoint and resumed
            "binary of f434858's source (the string 5f2ba63-dirty: built before that commit), whose coupling I event "
            "order gives the same bits as the first part's binary (e0d8eab-dirty, the source of 162a85d; "
            "bench/RESULTS.md)")
+RESUMED_H7 = ("stopped once by a signal at a checkpoint and resumed by `peloid sweep` with the binary of dea23b2's "
+              "source (the string 84a8514-dirty: built before that commit), whose coupling I event order gives the same "
+              "bits as the first part's binary (a388366's; bench/RESULTS.md)")
 RZ_SUFFIX = "_rz"  # rule H6's points: the study name + this
+N27_SUFFIX = "_n27"  # rule H7's point: 27 colloids at phi = 0.2 (+ RZ_SUFFIX: rule H8's, at phi = 0.3)
+BG_VISCOSITY = (2.5, 6.2)  # eta/eta0 = 1 + 2.5 phi + 6.2 phi^2 (Einstein; Batchelor & Green), H7's aside
 LAW = "rh_resolution_c1_hecht"  # the resolution study whose R8 run measured R_h at this resolution
 
 
@@ -105,6 +112,101 @@ def fit_n(rows, rh, rh_se, box=True):
     n, se, vinf, chi = n_at(rh)
     shift = abs(n_at(rh + rh_se)[0] - n_at(rh - rh_se)[0]) / 2.0
     return n, math.hypot(se, shift), vinf, chi
+
+
+def u_over_u0(r, rh):
+    """U/U0 of a point (zero-volume-flux frame) and its SE, without a box term."""
+    U0 = r["F"] / (6.0 * math.pi * r["eta"] * rh * r["R"])
+    return r["u"] * (1.0 - r["phi"]) / U0, r["u_se"] * (1.0 - r["phi"]) / U0
+
+
+def extrapolate(r8, p27, rh, rh_se, r_slope=None):
+    """H7, H8: U/U0 at N = 8 (r8, an H6 point) and N = 27 (p27; with r_slope, the other H6 point, moved to r8's phi
+    by the N = 8 series' slope between the two), U_inf = U_27 + 2 (U_27 - U_8), c = 6 (U_27 - U_8), n_phi =
+    ln(U_inf/U0) / ln(1 - phi); n's SE from U_inf's and its shift under R_h +- SE."""
+    def at(x):
+        u8, s8 = u_over_u0(r8, x)
+        u27, s27 = u_over_u0(p27, x)
+        slope = 0.0
+        if r_slope is not None:
+            u3, _ = u_over_u0(r_slope, x)
+            slope = (u3 - u8) / (r_slope["phi"] - r8["phi"])
+        u27a = u27 + slope * (r8["phi"] - p27["phi"])
+        uinf = 3.0 * u27a - 2.0 * u8
+        return dict(u8=u8, s8=s8, u27=u27, s27=s27, u27a=u27a, slope=slope, uinf=uinf,
+                    se=math.sqrt(9.0 * s27 ** 2 + 4.0 * s8 ** 2), c=6.0 * (u27a - u8), c_se=6.0 * math.hypot(s27, s8),
+                    n=math.log(uinf) / math.log(1.0 - r8["phi"]))
+    d = at(rh)
+    d["lo"], d["hi"] = at(rh - rh_se), at(rh + rh_se)
+    shift = abs(d["hi"]["n"] - d["lo"]["n"]) / 2.0
+    d["n_se"] = math.hypot(d["se"] / d["uinf"] / abs(math.log(1.0 - r8["phi"])), shift)
+    d["phi"] = r8["phi"]
+    d["c_dil"] = 2.0 * HASIMOTO * rh * r8["R"] / r8["L"]
+    d["visc"] = 1.0 + BG_VISCOSITY[0] * r8["phi"] + BG_VISCOSITY[1] * r8["phi"] ** 2
+    return d
+
+
+def n_through_u0(ds):
+    """H8: ln(U_inf/U0) = n ln(1 - phi) through the origin over the infinite-box points ds, weights 1/SE(ln U_inf)^2;
+    SE(n) from the points combined with n's shift under R_h +- SE.  Returns (n, SE)."""
+    def fit(pts):
+        x = np.array([math.log(1.0 - d["phi"]) for d in ds])
+        y = np.log(np.array([q["uinf"] for q in pts]))
+        w = np.array([(q["uinf"] / q["se"]) ** 2 for q in pts])
+        return float((w * x * y).sum() / (w * x * x).sum()), float(1.0 / math.sqrt((w * x * x).sum()))
+    n, se = fit(ds)
+    shift = abs(fit([d["hi"] for d in ds])[0] - fit([d["lo"] for d in ds])[0]) / 2.0
+    return n, math.hypot(se, shift)
+
+
+def box_lines(d, rule, v, p, resumed=""):
+    """The report's lines of one infinite-box point (H7 or H8); resumed: how a point that was, was run."""
+    moved = (f", moved to φ = {d['phi']:.4f} by the N = 8 series' slope ({d['slope']:.2f} U0 per unit φ): "
+             f"{d['u27a']:.3f}" if d["slope"] != 0.0 else "")
+    return [
+        f"- **The box's share at φ = {d['phi']:.3f} ({rule}): {v}.**  {p['n']} colloids in {p['L']:g}³ cells (φ = "
+        f"{p['phi']:.4f}; run by {p['rev']}, CPU {p['cpu']:.0f} s from step {p['first']}"
+        f"{'; ' + resumed if p['first'] > 0 and resumed else ''}): U/U0 = {d['u27']:.3f} ± {d['s27']:.3f}{moved}; "
+        f"N = 8: {d['u8']:.3f} ± {d['s8']:.3f}.  Through both in N^(−1/3): U∞/U0 = {d['uinf']:.3f} ± {d['se']:.3f}, "
+        f"n_φ = {d['n']:.2f} ± {d['n_se']:.2f} against 4.65 ({(d['n'] - N_RZ) / d['n_se']:+.1f} SE; the bound: U∞/U0 "
+        f"between {(1 - d['phi']) ** (1.1 * N_RZ):.3f} and {(1 - d['phi']) ** (0.9 * N_RZ):.3f} before the SE).  "
+        f"Stationary and read again from colloids.h5: halves {p['h1']:.5f}, {p['h2']:.5f} a0/t0; h5py {p['u5']:.5f} ± "
+        f"{p['u5_se']:.5f} against the observer's {p['u']:.5f} ± {p['u_se']:.5f}.  Beside it, deciding nothing: the "
+        f"measured finite-size coefficient c = {d['c']:.3f} ± {d['c_se']:.3f} (U_N = U∞ − c N^(−1/3)) against H6's "
+        f"dilute box term, c = 2 × 2.837 R_h/L_8 = {d['c_dil']:.3f}, and that over Batchelor & Green's η/η0 = "
+        f"{d['visc']:.2f}: {d['c_dil'] / d['visc']:.3f}."]
+
+
+def plot_box(ds, path):
+    """U/U0 against N^(-1/3) at each phi of ds: the two boxes, the line to N -> infinity, R-Z's band (H7's and H8's
+    bound), H6's dilute box term through N = 8."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(7.2, 4.8))
+    x = np.array([0.5, 1.0 / 3.0])
+    xx = np.linspace(0.0, 0.55, 50)
+    for c, d in zip(("C0", "C3"), ds):
+        ax.errorbar(x, [d["u8"], d["u27a"]], yerr=[d["s8"], d["s27"]], fmt="o", color=c, capsize=3,
+                    label=f"φ = {d['phi']:.3f}: 8 and 27 colloids")
+        ax.plot(xx, d["uinf"] - d["c"] * xx, "-", color=c, lw=1,
+                label=f"φ = {d['phi']:.3f} through both: U∞/U0 = {d['uinf']:.3f} ± {d['se']:.3f}")
+        ax.errorbar([0.0], [d["uinf"]], yerr=[d["se"]], fmt="s", color=c, capsize=3)
+        lo, hi = (1.0 - d["phi"]) ** (1.1 * N_RZ), (1.0 - d["phi"]) ** (0.9 * N_RZ)
+        ax.fill_between([0.0, 0.04], [lo, lo], [hi, hi], color=c, alpha=0.15)
+        ax.plot([0.0, 0.55], [(1.0 - d["phi"]) ** N_RZ] * 2, "--", color=c, lw=0.8)
+        ax.plot(xx, d["u8"] + 0.5 * d["c_dil"] - d["c_dil"] * xx, ":", color=c, lw=1.2)
+    ax.plot([], [], "k--", lw=0.8, label="Richardson–Zaki (1 − φ)^4.65; band at N^(−1/3) = 0: n ± 10 %")
+    ax.plot([], [], "k:", lw=1.2, label="H6's assumption: the dilute box term through N = 8")
+    ax.set_xlim(-0.01, 0.55)
+    ax.set_xlabel("N^(−1/3)  (N colloids in the periodic box)")
+    ax.set_ylabel("U/U0  (zero-volume-flux frame)")
+    ax.set_title("H7, H8: the finite box, coupling I at R = 10 a0 (Hecht's fluid)", fontsize=9)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, loc="upper right")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
 
 
 def plot(rows, K, rh, path, all_rows=(), nfit=None):
@@ -206,6 +308,61 @@ def section(study, commit, png):
     else:
         n_lines = [f"- Richardson–Zaki's n (H6): {len(rz)} of its 2 points finished in {rz_dir}; not fitted."]
     plot(rows, K, rh, png, all_rows, (n, n_se, vinf, n0, vinf0) if len(rz) == 2 else None)
+    # rules H7 and H8: 27 colloids at phi = 0.2 and 0.3, each a study of its own
+    p27, p27rz = (points(os.path.normpath(study) + suf) if os.path.isdir(os.path.normpath(study) + suf) else []
+                  for suf in (N27_SUFFIX, N27_SUFFIX + RZ_SUFFIX))
+    box, png27 = [], png[:-4] + N27_SUFFIX + ".png"
+    ds = []
+    if p27 and len(rz) == 2:
+        d = extrapolate(rz[0], p27[0], rh, rh_se, r_slope=rz[1])
+        v7 = "agrees" if abs(d["n"] - N_RZ) <= 0.10 * N_RZ + 2 * d["n_se"] else "disagrees — peloid"
+        if bad(p27):
+            v7 = f"not settled ({v7})"
+        box += box_lines(d, "H7", v7, p27[0], RESUMED_H7)
+        ds.append(d)
+        # H7's aside: H6's fit with U_inf at phi = 0.2 from H7 in place of its dilute-box value
+        pts = [(r["phi"], 1.0 - y_of(r, rh)[0], y_of(r, rh)[1]) for r in all_rows
+               if abs(r["phi"] - d["phi"]) > 1e-9] + [(d["phi"], d["uinf"], d["se"])]
+        ph, vv, sv = (np.array(c) for c in zip(*pts))
+        X = np.vstack([np.ones(len(ph)), np.log(1.0 - ph)]).T
+        w = (vv / sv) ** 2
+        C = np.linalg.inv(X.T @ (X * w[:, None]))
+        b = C @ (X.T @ (w * np.log(vv)))
+        chi = float((w * (np.log(vv) - X @ b) ** 2).sum()) / max(len(ph) - 2, 1)
+        box.append(f"- Beside H7, deciding nothing: H6's fit with this U∞ at φ = {d['phi']:.3f} in place of the "
+                   f"dilute-box value (the other three points as H6): n = {b[1]:.2f} ± "
+                   f"{math.sqrt(C[1, 1]) * max(1.0, math.sqrt(chi)):.2f}, v∞/U0 = {math.exp(b[0]):.3f}, χ²/dof = "
+                   f"{chi:.1f}.  Two N fix a line, not the law's form (a third N, 64 colloids in ~110³ cells, would "
+                   "test it).")
+    if p27rz and len(rz) == 2:
+        d = extrapolate(rz[1], p27rz[0], rh, rh_se)
+        v8 = "agrees" if abs(d["n"] - N_RZ) <= 0.10 * N_RZ + 2 * d["n_se"] else "disagrees — peloid"
+        if bad(p27rz):
+            v8 = f"not settled ({v8})"
+        box += box_lines(d, "H8", v8, p27rz[0])
+        ds.append(d)
+        if len(ds) == 2:
+            n2, n2_se = n_through_u0(ds)
+            vn2 = "agrees" if abs(n2 - N_RZ) <= 0.10 * N_RZ + 2 * n2_se else "disagrees — peloid"
+            if bad(p27 + p27rz):
+                vn2 = f"not settled ({vn2})"
+            x1, x2 = (math.log(1.0 - q["phi"]) for q in ds)
+            y1, y2 = (math.log(q["uinf"]) for q in ds)
+            nf = (y2 - y1) / (x2 - x1)
+            box.append(
+                f"- **Richardson–Zaki's n from the two infinite-box points (H8): {vn2}.**  ln(U∞/U0) = n ln(1 − φ) "
+                f"through U0 (R8's isolated sphere) over φ = {ds[0]['phi']:.3f} and {ds[1]['phi']:.3f}: n = "
+                f"{n2:.2f} ± {n2_se:.2f} against 4.65 ({(n2 - N_RZ) / n2_se:+.1f} SE, {100 * (n2 / N_RZ - 1):+.0f} %).  "
+                f"Beside it, deciding nothing: with v∞ free (two points, no dof) n = {nf:.2f}, v∞/U0 = "
+                f"{math.exp(y1 - nf * x1):.3f}.")
+    if ds:
+        ratios = ", ".join(f"{q['c_dil'] / q['c']:.1f}× at φ = {q['phi']:.3f}" for q in ds if q["c"] > 0)
+        box.append("- For information (written after H7's and H8's runs, deciding nothing): the finite-size term the "
+                   f"dilute box correction assumes is larger than the measured one ({ratios}), so H5's K, which "
+                   "subtracts it at φ ≤ 0.1, rests on an assumption these runs contradict at higher φ; K itself was "
+                   "not measured with a second N.")
+        box += ["", f"![{os.path.basename(png27)[:-4]}]({os.path.basename(png27)})"]
+        plot_box(ds, png27)
     tab = ["| φ | colloids | L (a0) | u (a0/t0), observer | u, colloids.h5 | halves | U/U0 | box term | "
            "y/φ | Pe | Re at U0 | fluid kT | CPU-s (from step) |", "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     # for information, added once the runs were in (deciding nothing): the box-corrected U/U0 against Batchelor's
@@ -243,7 +400,10 @@ def section(study, commit, png):
         f"{rh_se:.3f}, measured by R8 ({r8}, the section above).  CPU-s: of the process that ran the point from the "
         f"step given" + (f"; H5's {RESUMED}." if any(r["first"] > 0 for r in rows) else ".") +
         (f"  Rule H6's points (φ ≥ 0.2): `peloid sweep studies/{name}{RZ_SUFFIX}.cfg --jobs 2 --threads 1`."
-         if rz else ""), ""] + tab + [
+         if rz else "") +
+        (f"  Rules H7's and H8's points (27 colloids at φ = 0.2 and 0.3): `peloid sweep studies/{name}{N27_SUFFIX}.cfg "
+         f"--jobs 1 --threads 1` and `peloid sweep studies/{name}{N27_SUFFIX}{RZ_SUFFIX}.cfg --jobs 1 --threads 1`"
+         f" ({sum(p['cpu'] for p in p27 + p27rz):.0f} CPU-s more)." if ds else ""), ""] + tab + [
         "",
         f"- **Batchelor's K at the matched resolution: {v}.**  K = {K:.2f} ± {K_se:.2f} (the points "
         f"{K_stat:.2f}, R8's R_h {K_rh:.2f}; {len(rows)} points, χ² = {chi2:.1f}) against 6.55 "
@@ -259,7 +419,7 @@ def section(study, commit, png):
         "there), so H1's and H5's line through the origin over φ ≤ 0.1 reads K low even for exact hydrodynamics.  "
         f"With N = 8 the subtracted box term is as large as the hindrance: the dilute point (φ = {lo['phi']:.3f}) "
         f"meets Batchelor's line only if the finite-N term were {need:.3f} instead of Hasimoto's "
-        f"{HASIMOTO * rh * lo['R'] / lo['L']:.3f}.{above}", ""] + info + ["",
+        f"{HASIMOTO * rh * lo['R'] / lo['L']:.3f}.{above}"] + box + [""] + info + ["",
         "- Stated by H5, not corrected: the box term's higher orders ((R/L)³ terms, below 0.01 of y), Re ~ 0.3, "
         "and N = 8 colloids a box (its finite-N term is the box term).  Not run at this resolution: D(φ).", "",
         f"![{os.path.basename(png)[:-4]}]({os.path.basename(png)})", "", END.format(name)]
