@@ -35,6 +35,7 @@ RESUMED_H7 = ("stopped once by a signal at a checkpoint and resumed by `peloid s
               "bits as the first part's binary (a388366's; bench/RESULTS.md)")
 RZ_SUFFIX = "_rz"  # rule H6's points: the study name + this
 N27_SUFFIX = "_n27"  # rule H7's point: 27 colloids at phi = 0.2 (+ RZ_SUFFIX: rule H8's, at phi = 0.3)
+K_SUFFIX = "_k"  # + N27_SUFFIX: rule H9's point, at H5's phi = 0.098
 BG_VISCOSITY = (2.5, 6.2)  # eta/eta0 = 1 + 2.5 phi + 6.2 phi^2 (Einstein; Batchelor & Green), H7's aside
 LAW = "rh_resolution_c1_hecht"  # the resolution study whose R8 run measured R_h at this resolution
 
@@ -172,8 +173,8 @@ def box_lines(d, rule, v, p, resumed=""):
         f"between {(1 - d['phi']) ** (1.1 * N_RZ):.3f} and {(1 - d['phi']) ** (0.9 * N_RZ):.3f} before the SE).  "
         f"Stationary and read again from colloids.h5: halves {p['h1']:.5f}, {p['h2']:.5f} a0/t0; h5py {p['u5']:.5f} ± "
         f"{p['u5_se']:.5f} against the observer's {p['u']:.5f} ± {p['u_se']:.5f}.  Beside it, deciding nothing: the "
-        f"measured finite-size coefficient c = {d['c']:.3f} ± {d['c_se']:.3f} (U_N = U∞ − c N^(−1/3)) against H6's "
-        f"dilute box term, c = 2 × 2.837 R_h/L_8 = {d['c_dil']:.3f}, and that over Batchelor & Green's η/η0 = "
+        f"measured finite-size coefficient c = {d['c']:.3f} ± {d['c_se']:.3f} (U_N = U∞ − c N^(−1/3)) against the "
+        f"dilute box term H5 and H6 subtract, c = 2 × 2.837 R_h/L_8 = {d['c_dil']:.3f}, and that over Batchelor & Green's η/η0 = "
         f"{d['visc']:.2f}: {d['c_dil'] / d['visc']:.3f}."]
 
 
@@ -183,10 +184,11 @@ def plot_box(ds, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(7.2, 4.8))
+    fig, ax = plt.subplots(figsize=(7.2, 6.0))
     x = np.array([0.5, 1.0 / 3.0])
     xx = np.linspace(0.0, 0.55, 50)
-    for c, d in zip(("C0", "C3"), ds):
+    for d in ds:
+        c = {0.1: "C2", 0.2: "C0", 0.3: "C3"}[round(d["phi"], 1)]
         ax.errorbar(x, [d["u8"], d["u27a"]], yerr=[d["s8"], d["s27"]], fmt="o", color=c, capsize=3,
                     label=f"φ = {d['phi']:.3f}: 8 and 27 colloids")
         ax.plot(xx, d["uinf"] - d["c"] * xx, "-", color=c, lw=1,
@@ -201,9 +203,9 @@ def plot_box(ds, path):
     ax.set_xlim(-0.01, 0.55)
     ax.set_xlabel("N^(−1/3)  (N colloids in the periodic box)")
     ax.set_ylabel("U/U0  (zero-volume-flux frame)")
-    ax.set_title("H7, H8: the finite box, coupling I at R = 10 a0 (Hecht's fluid)", fontsize=9)
+    ax.set_title("H7–H9: the finite box, coupling I at R = 10 a0 (Hecht's fluid)", fontsize=9)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, loc="upper right")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -309,8 +311,8 @@ def section(study, commit, png):
         n_lines = [f"- Richardson–Zaki's n (H6): {len(rz)} of its 2 points finished in {rz_dir}; not fitted."]
     plot(rows, K, rh, png, all_rows, (n, n_se, vinf, n0, vinf0) if len(rz) == 2 else None)
     # rules H7 and H8: 27 colloids at phi = 0.2 and 0.3, each a study of its own
-    p27, p27rz = (points(os.path.normpath(study) + suf) if os.path.isdir(os.path.normpath(study) + suf) else []
-                  for suf in (N27_SUFFIX, N27_SUFFIX + RZ_SUFFIX))
+    p27, p27rz, p27k = (points(os.path.normpath(study) + suf) if os.path.isdir(os.path.normpath(study) + suf) else []
+                        for suf in (N27_SUFFIX, N27_SUFFIX + RZ_SUFFIX, N27_SUFFIX + K_SUFFIX))
     box, png27 = [], png[:-4] + N27_SUFFIX + ".png"
     ds = []
     if p27 and len(rz) == 2:
@@ -355,12 +357,32 @@ def section(study, commit, png):
                 f"{n2:.2f} ± {n2_se:.2f} against 4.65 ({(n2 - N_RZ) / n2_se:+.1f} SE, {100 * (n2 / N_RZ - 1):+.0f} %).  "
                 f"Beside it, deciding nothing: with v∞ free (two points, no dof) n = {nf:.2f}, v∞/U0 = "
                 f"{math.exp(y1 - nf * x1):.3f}.")
+    if p27k and len(ds) == 2:  # rule H9: 27 colloids at H5's phi = 0.098
+        d = extrapolate(rows[-1], p27k[0], rh, rh_se)
+        v9 = "agrees" if abs(d["n"] - N_RZ) <= 0.10 * N_RZ + 2 * d["n_se"] else "disagrees — peloid"
+        if bad(p27k):
+            v9 = f"not settled ({v9})"
+        box += box_lines(d, "H9", v9, p27k[0])
+        ds.insert(0, d)
+        n3, n3_se = n_through_u0(ds)
+        vn3 = "agrees" if abs(n3 - N_RZ) <= 0.10 * N_RZ + 2 * n3_se else "disagrees — peloid"
+        if bad(p27 + p27rz + p27k):
+            vn3 = f"not settled ({vn3})"
+        rz_k = (1.0 - (1.0 - d["phi"]) ** N_RZ) / d["phi"]
+        box.append(
+            f"- **Richardson–Zaki's n from the three infinite-box points (H9): {vn3}.**  ln(U∞/U0) = n ln(1 − φ) "
+            f"through U0 over φ = {', '.join(format(q['phi'], '.3f') for q in ds)}: n = {n3:.2f} ± {n3_se:.2f} against "
+            f"4.65 ({(n3 - N_RZ) / n3_se:+.1f} SE, {100 * (n3 / N_RZ - 1):+.0f} %).  Beside it, deciding nothing: "
+            f"at φ = {d['phi']:.3f}, (1 − U∞/U0)/φ = {(1.0 - d['uinf']) / d['phi']:.2f} ± {d['se'] / d['phi']:.2f}, "
+            f"where Richardson–Zaki's curve gives {rz_k:.2f} (the rule's text says 3.8) and Batchelor's dilute "
+            f"slope 6.55: a line through the origin at φ = 0.1 is not the suspension, so this is no test of K.")
     if ds:
         ratios = ", ".join(f"{q['c_dil'] / q['c']:.1f}× at φ = {q['phi']:.3f}" for q in ds if q["c"] > 0)
-        box.append("- For information (written after H7's and H8's runs, deciding nothing): the finite-size term the "
+        box.append("- For information (written after the runs of H7" + ("–H9" if p27k else " and H8") + ", deciding nothing): the finite-size term the "
                    f"dilute box correction assumes is larger than the measured one ({ratios}), so H5's K, which "
-                   "subtracts it at φ ≤ 0.1, rests on an assumption these runs contradict at higher φ; K itself was "
-                   "not measured with a second N.")
+                   "subtracts it at φ ≤ 0.1, rests on an assumption these runs contradict" +
+                   ("; K itself was not measured with a second N." if not p27k else
+                    " (at φ = 0.098 too, H9); the dilute point φ = 0.049 was not run with a second N."))
         box += ["", f"![{os.path.basename(png27)[:-4]}]({os.path.basename(png27)})"]
         plot_box(ds, png27)
     tab = ["| φ | colloids | L (a0) | u (a0/t0), observer | u, colloids.h5 | halves | U/U0 | box term | "
@@ -403,7 +425,9 @@ def section(study, commit, png):
          if rz else "") +
         (f"  Rules H7's and H8's points (27 colloids at φ = 0.2 and 0.3): `peloid sweep studies/{name}{N27_SUFFIX}.cfg "
          f"--jobs 1 --threads 1` and `peloid sweep studies/{name}{N27_SUFFIX}{RZ_SUFFIX}.cfg --jobs 1 --threads 1`"
-         f" ({sum(p['cpu'] for p in p27 + p27rz):.0f} CPU-s more)." if ds else ""), ""] + tab + [
+         + (f"; rule H9's (φ = 0.1): `peloid sweep studies/{name}{N27_SUFFIX}{K_SUFFIX}.cfg --jobs 1 --threads 2`"
+            if p27k else "") +
+         f" ({sum(p['cpu'] for p in p27 + p27rz + p27k):.0f} CPU-s more)." if ds else ""), ""] + tab + [
         "",
         f"- **Batchelor's K at the matched resolution: {v}.**  K = {K:.2f} ± {K_se:.2f} (the points "
         f"{K_stat:.2f}, R8's R_h {K_rh:.2f}; {len(rows)} points, χ² = {chi2:.1f}) against 6.55 "
