@@ -121,7 +121,11 @@ static void chain_times(const pl_c1_events_t *e, const pl_grid_t *g, const pl_co
     const double *restrict rx = r[0], *restrict ry = r[1], *restrict rz = r[2];
     const double *restrict vx = r[3], *restrict vy = r[4], *restrict vz = r[5];
     double *restrict t = r[6];
+    /* gcc vectorises this loop only when asked; clang, asked, warns where
+     * its sqrt may set errno (as in peloid/srd_rules.h) */
+#if !defined(__clang__)
 #pragma omp simd
+#endif
     for (size_t q = 0; q < m; ++q) {
         double px = rx[q] - X, py = ry[q] - Y, pz = rz[q] - Z;
         px = px > h[0] ? px - pL[0] : px < -h[0] ? px + pL[0] : px;
@@ -181,12 +185,17 @@ int64_t pl_coupling1_chain_next(const pl_c1_events_t *e, const pl_grid_t *g, con
         memcpy(seen, now, sizeof now);
         seen[7] = 1.0;
     }
-    /* the first minimum: the least time (a min in lanes: exact in any order, no time is NaN), then the first
-     * particle in chain order that has it */
+    /* the first minimum: the least time, in eight independent lanes (a min is exact in any order; no time is
+     * NaN), then the first particle in chain order that has it */
     const double *restrict tq = r[6];
-    double tb = tq[0];
-#pragma omp simd reduction(min : tb)
-    for (size_t q = 1; q < n; ++q) tb = tq[q] < tb ? tq[q] : tb;
+    double lane[8];
+    for (size_t l = 0; l < 8; ++l) lane[l] = tq[0];
+    size_t q = 0;
+    for (; q + 8 <= n; q += 8)
+        for (size_t l = 0; l < 8; ++l) lane[l] = tq[q + l] < lane[l] ? tq[q + l] : lane[l];
+    for (; q < n; ++q) lane[0] = tq[q] < lane[0] ? tq[q] : lane[0];
+    double tb = lane[0];
+    for (size_t l = 1; l < 8; ++l) tb = lane[l] < tb ? lane[l] : tb;
     size_t best = 0;
     while (tq[best] != tb) ++best;
     const int64_t b = sc->cq[base + best];
