@@ -76,6 +76,18 @@ static inline __attribute__((always_inline)) double meet_of(double px, double py
     return pp >= R * R ? 1.0 : tin;
 }
 
+/* The minimum image of a separation p on an axis of length L (h = L/2;
+ * pL = L, or 0 on a closed axis, which subtracts nothing): |p| < 3L/2
+ * here (both ends within a margin of the box), where p - L nearbyint(p / L)
+ * is p - L exactly when p > L/2 (p / L then rounds above 1/2: p - L/2 is at
+ * least an ulp of L/2, more than 2^-54 L, and 1/2's upper neighbour is
+ * 1/2 + 2^-53), p + L when p < -L/2, else p (1/2 itself rounds to even):
+ * the same values without a division. */
+static inline __attribute__((always_inline)) double near_image(double p, double h, double pL)
+{
+    return p > h ? p - pL : p < -h ? p + pL : p;
+}
+
 /* meet_of for the particle at r (velocity v) and colloid k as the events
  * so far left it (e: its moved end position, its velocity now).  A function
  * of colloid k and the particle alone, so a colloid's events choose the
@@ -85,7 +97,7 @@ static double meet_time(const pl_c1_events_t *e, const pl_grid_t *g, const pl_co
 {
     double p[3] = {r[0] - e->c.x[k], r[1] - e->c.y[k], r[2] - e->c.z[k]};
     for (int a = 0; a < 3; ++a)
-        if (g->walls[a] == PL_WALLS_NONE) p[a] -= g->L[a] * nearbyint(p[a] / g->L[a]);
+        if (g->walls[a] == PL_WALLS_NONE) p[a] = near_image(p[a], 0.5 * g->L[a], g->L[a]);
     return meet_of(p[0], p[1], p[2], v[0] - e->c.vx[k], v[1] - e->c.vy[k], v[2] - e->c.vz[k], e->c.rad[k], prm->dt);
 }
 
@@ -108,11 +120,7 @@ static void chain_times(const pl_c1_events_t *e, const pl_grid_t *g, const pl_co
     const double X = e->c.x[k], Y = e->c.y[k], Z = e->c.z[k];
     const double VX = e->c.vx[k], VY = e->c.vy[k], VZ = e->c.vz[k];
     const double R = e->c.rad[k], dt = prm->dt;
-    /* the minimum image of meet_time, p - L nearbyint(p / L), without its division: |p| < 3L/2 here (both
-     * ends within a margin of the box), where nearbyint(p / L) is 1 exactly when p > L/2 (p / L then rounds
-     * above 1/2: p - L/2 is at least an ulp of L/2, more than 2^-54 L, and 1/2's upper neighbour is
-     * 1/2 + 2^-53), -1 when p < -L/2, else 0 (1/2 itself rounds to even); p - L and p + L are the products'
-     * differences exactly.  A closed axis subtracts nothing, as meet_time's skip. */
+    /* meet_time's minimum image (near_image); a closed axis subtracts nothing, as meet_time's skip */
     double pL[3], h[3];
     for (int a = 0; a < 3; ++a) {
         pL[a] = g->walls[a] == PL_WALLS_NONE ? g->L[a] : 0.0;
@@ -128,9 +136,9 @@ static void chain_times(const pl_c1_events_t *e, const pl_grid_t *g, const pl_co
 #endif
     for (size_t q = 0; q < m; ++q) {
         double px = rx[q] - X, py = ry[q] - Y, pz = rz[q] - Z;
-        px = px > h[0] ? px - pL[0] : px < -h[0] ? px + pL[0] : px;
-        py = py > h[1] ? py - pL[1] : py < -h[1] ? py + pL[1] : py;
-        pz = pz > h[2] ? pz - pL[2] : pz < -h[2] ? pz + pL[2] : pz;
+        px = near_image(px, h[0], pL[0]);
+        py = near_image(py, h[1], pL[1]);
+        pz = near_image(pz, h[2], pL[2]);
         t[q] = meet_of(px, py, pz, vx[q] - VX, vy[q] - VY, vz[q] - VZ, R, dt);
     }
 }
@@ -143,7 +151,6 @@ static void chain_times(const pl_c1_events_t *e, const pl_grid_t *g, const pl_co
 size_t pl_coupling1_chain_gather(const pl_fluid_t *f, pl_coupling1_scratch_t *sc, size_t j)
 {
     const int64_t base = sc->cbeg[sc->k[j]];
-    sc->seen[8 * (size_t)sc->k[j] + 7] = 0.0; /* no meet times yet */
     size_t m = 0;
     for (int64_t q = (int64_t)j; q >= 0; q = sc->next[q]) {
         if (sc->taken[q]) continue;
@@ -167,8 +174,7 @@ size_t pl_coupling1_chain_gather(const pl_fluid_t *f, pl_coupling1_scratch_t *sc
  * chain (the rest keep their order); -1 when the chain is done.  O(*m) per
  * event, in SIMD lanes over contiguous copies: the linked chain's scattered
  * reads of the fluid arrays, n^2 / 2 of them a step, were the cost of
- * large colloids (bench/RESULTS.md); the times are computed again only
- * when the colloid's state changed since they were (sc->seen). */
+ * large colloids (bench/RESULTS.md). */
 int64_t pl_coupling1_chain_next(const pl_c1_events_t *e, const pl_grid_t *g, const pl_coupling1_params_t *prm,
                                 pl_coupling1_scratch_t *sc, int32_t k, size_t *m)
 {
@@ -176,15 +182,7 @@ int64_t pl_coupling1_chain_next(const pl_c1_events_t *e, const pl_grid_t *g, con
     const size_t base = (size_t)sc->cbeg[k], n = *m;
     double *r[7];
     for (int d = 0; d < 7; ++d) r[d] = sc->chain + (size_t)d * sc->cap + base;
-    /* the meet times are a function of the particles' copies and of colloid k's state alone: an event that
-     * left the colloid as it was (a particle in the margin, outside it) leaves the times as they were */
-    const double now[7] = {e->c.x[k], e->c.y[k], e->c.z[k], e->c.vx[k], e->c.vy[k], e->c.vz[k], e->c.rad[k]};
-    double *seen = sc->seen + 8 * (size_t)k;
-    if (!(seen[7] == 1.0 && !memcmp(seen, now, sizeof now))) {
-        chain_times(e, g, prm, k, r, n);
-        memcpy(seen, now, sizeof now);
-        seen[7] = 1.0;
-    }
+    chain_times(e, g, prm, k, r, n);
     /* the first minimum: the least time, in eight independent lanes (a min is exact in any order; no time is
      * NaN), then the first particle in chain order that has it */
     const double *restrict tq = r[6];
@@ -199,7 +197,7 @@ int64_t pl_coupling1_chain_next(const pl_c1_events_t *e, const pl_grid_t *g, con
     size_t best = 0;
     while (tq[best] != tb) ++best;
     const int64_t b = sc->cq[base + best];
-    for (int d = 0; d < 7; ++d) memmove(r[d] + best, r[d] + best + 1, (n - best - 1) * sizeof *r[d]);
+    for (int d = 0; d < 6; ++d) memmove(r[d] + best, r[d] + best + 1, (n - best - 1) * sizeof *r[d]);
     memmove(sc->cq + base + best, sc->cq + base + best + 1, (n - best - 1) * sizeof *sc->cq);
     *m = n - 1;
     return b;

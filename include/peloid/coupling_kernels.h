@@ -116,8 +116,6 @@ typedef struct {
     int64_t *cbeg;    /* vcap / 6 + 1: where each colloid's chain lies in chain and cq */
     double *chain;    /* 7 x cap: the chains' untaken particles' r, v and meet times, by colloid */
     int64_t *cq;      /* cap: their events, in chain order */
-    double *seen;     /* 8 x (vcap / 6 + 1): per colloid, the state its chain's meet times were computed for (x, y,
-                       * z, vx, vy, vz, R) and whether they are (1) */
     unsigned long long parallel, gave_up; /* steps done in parallel; given up (a second colloid) */
 } pl_coupling1_scratch_t;
 

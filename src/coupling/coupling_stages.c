@@ -61,7 +61,6 @@ static void scratch_free(pl_coupling1_scratch_t *sc)
     free(sc->cbeg);
     free(sc->chain);
     free(sc->cq);
-    free(sc->seen);
     free(sc->done);
     free(sc->state);
     free(sc->vsave);
@@ -89,14 +88,13 @@ static int scratch_grow(pl_coupling1_scratch_t *sc, size_t n, size_t nc)
     sc->cbeg = malloc((nc + 1) * sizeof *sc->cbeg);
     sc->chain = malloc(7 * cap * sizeof *sc->chain);
     sc->cq = malloc(cap * sizeof *sc->cq);
-    sc->seen = malloc(8 * (nc + 1) * sizeof *sc->seen);
     sc->done = malloc(cap * sizeof *sc->done);
     sc->state = malloc(7 * cap * sizeof *sc->state);
     sc->vsave = malloc((6 * nc + 1) * sizeof *sc->vsave);
     sc->pos = malloc((3 * nc + 1) * sizeof *sc->pos);
     sc->disp = malloc((3 * nc + 1) * sizeof *sc->disp);
     if (!sc->key || !sc->idx || !sc->owner || !sc->k || !sc->next || !sc->taken || !sc->head || !sc->cbeg ||
-        !sc->chain || !sc->cq || !sc->seen || !sc->done || !sc->state || !sc->vsave || !sc->pos || !sc->disp) {
+        !sc->chain || !sc->cq || !sc->done || !sc->state || !sc->vsave || !sc->pos || !sc->disp) {
         scratch_free(sc);
         return 0;
     }
