@@ -94,6 +94,19 @@ def fit_k(rows, rh, rh_se):
     return K, math.hypot(se_stat, se_rh), se_stat, se_rh, chi2
 
 
+def rz_fit(phi, v, sv):
+    """ln v = ln v_inf + n ln(1 - phi), weights 1/SE(ln v)^2 = (v/sv)^2; SE(n) scaled by sqrt(chi2/dof) above 1.
+    Returns (n, SE, v_inf, chi2/dof)."""
+    phi, v, sv = np.asarray(phi), np.asarray(v), np.asarray(sv)
+    z = np.log(v)
+    X = np.vstack([np.ones(len(phi)), np.log(1.0 - phi)]).T
+    w = (v / sv) ** 2
+    C = np.linalg.inv(X.T @ (X * w[:, None]))
+    b = C @ (X.T @ (w * z))
+    chi = float((w * (z - X @ b) ** 2).sum()) / max(len(phi) - 2, 1)
+    return float(b[1]), float(math.sqrt(C[1, 1]) * max(1.0, math.sqrt(chi))), float(math.exp(b[0])), chi
+
+
 def fit_n(rows, rh, rh_se, box=True):
     """H6: ln(U/U0 + box term) = ln v_inf + n ln(1 - phi), weighted; SE scaled by sqrt(chi2/dof) above 1 and
     combined with n's shift under R_h +- SE.  Returns (n, SE, v_inf/U0, chi2/dof)."""
@@ -101,15 +114,7 @@ def fit_n(rows, rh, rh_se, box=True):
         y, sy = np.array([y_of(r, x) for r in rows]).T
         if not box:  # the fit without the box term: U/U0 alone
             y = y + np.array([HASIMOTO * x * r["R"] / r["L"] for r in rows])
-        v = 1.0 - y
-        z, sz = np.log(v), sy / v
-        X = np.vstack([np.ones(len(rows)), np.log(1.0 - np.array([r["phi"] for r in rows]))]).T
-        w = 1.0 / sz ** 2
-        C = np.linalg.inv(X.T @ (X * w[:, None]))
-        b = C @ (X.T @ (w * z))
-        dof = max(len(rows) - 2, 1)
-        chi = float((w * (z - X @ b) ** 2).sum()) / dof
-        return float(b[1]), float(math.sqrt(C[1, 1]) * max(1.0, math.sqrt(chi))), float(math.exp(b[0])), chi
+        return rz_fit([r["phi"] for r in rows], 1.0 - y, sy)
     n, se, vinf, chi = n_at(rh)
     shift = abs(n_at(rh + rh_se)[0] - n_at(rh - rh_se)[0]) / 2.0
     return n, math.hypot(se, shift), vinf, chi
@@ -325,15 +330,10 @@ def section(study, commit, png):
         # H7's aside: H6's fit with U_inf at phi = 0.2 from H7 in place of its dilute-box value
         pts = [(r["phi"], 1.0 - y_of(r, rh)[0], y_of(r, rh)[1]) for r in all_rows
                if abs(r["phi"] - d["phi"]) > 1e-9] + [(d["phi"], d["uinf"], d["se"])]
-        ph, vv, sv = (np.array(c) for c in zip(*pts))
-        X = np.vstack([np.ones(len(ph)), np.log(1.0 - ph)]).T
-        w = (vv / sv) ** 2
-        C = np.linalg.inv(X.T @ (X * w[:, None]))
-        b = C @ (X.T @ (w * np.log(vv)))
-        chi = float((w * (np.log(vv) - X @ b) ** 2).sum()) / max(len(ph) - 2, 1)
+        n_a, n_a_se, v_a, chi = rz_fit(*zip(*pts))
         box.append(f"- Beside H7, deciding nothing: H6's fit with this U∞ at φ = {d['phi']:.3f} in place of the "
-                   f"dilute-box value (the other three points as H6): n = {b[1]:.2f} ± "
-                   f"{math.sqrt(C[1, 1]) * max(1.0, math.sqrt(chi)):.2f}, v∞/U0 = {math.exp(b[0]):.3f}, χ²/dof = "
+                   f"dilute-box value (the other three points as H6): n = {n_a:.2f} ± {n_a_se:.2f}, v∞/U0 = {v_a:.3f}, "
+                   f"χ²/dof = "
                    f"{chi:.1f}.  Two N fix a line, not the law's form (a third N, 64 colloids in ~110³ cells, would "
                    "test it).")
     if p27rz and len(rz) == 2:
