@@ -108,9 +108,12 @@ typedef struct {
     int mode, source;
     double theory_error, theory_lo, theory_hi;
     int theory_files;
+    /* PL_CALSRC_TABLE: the law's R_h/R here and the measured R/a0 range it
+     * interpolates (cache: the law's file) */
+    double table_rh_over_R, table_R_lo, table_R_hi;
 } pl_mapping_calibration_t;
 
-/* --calibrate: AUTO the shipped set or the cache, else a calibration run;
+/* --calibrate: AUTO the shipped set or the cache or the resolution table, else a calibration run;
  * ALWAYS a calibration run (stored in the cache); NEVER the coupling's
  * theory (d_col_theory) with its stated error; STORED the shipped set or the
  * cache, else the theory with its stated error (never a run: check's
@@ -119,7 +122,7 @@ enum { PL_CALIBRATE_AUTO = 0, PL_CALIBRATE_NEVER = 1, PL_CALIBRATE_ALWAYS = 2, P
        PL_CALIBRATE_NMODES };
 /* Its --calibrate word ("?" for none of them). */
 const char *pl_calibrate_mode_name(int mode);
-enum { PL_CALSRC_NONE = 0, PL_CALSRC_SHIPPED, PL_CALSRC_CACHE, PL_CALSRC_RUN, PL_CALSRC_THEORY };
+enum { PL_CALSRC_NONE = 0, PL_CALSRC_SHIPPED, PL_CALSRC_CACHE, PL_CALSRC_RUN, PL_CALSRC_THEORY, PL_CALSRC_TABLE };
 
 /* ---- coarse-graining choices ------------------------------------------ */
 typedef struct {

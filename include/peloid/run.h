@@ -62,12 +62,18 @@ typedef struct {
 /* "never", "auto", "always", "stored" -> PL_CALIBRATE_*; -1 for anything else. */
 int pl_calibrate_mode_parse(const char *s, int *mode); /* names: pl_calibrate_mode_name (mapping.h) */
 /* The colloid D of the scene's model fluid and colloid, from
- * shipped_dir/calibration-<key>.json, else the user's cache, else a
- * calibration run (nthreads), cached; with PL_CALIBRATE_ALWAYS a calibration
- * run whatever is stored (the cache entry replaced); with PL_CALIBRATE_STORED
- * what is stored, else the coupling's theory (PL_CALSRC_THEORY), never a run. */
+ * shipped_dir/calibration-<key>.json, else the user's cache, else the
+ * shipped resolution table (pl_calibration_table), else a calibration run
+ * (nthreads), cached; with PL_CALIBRATE_ALWAYS a calibration run whatever is
+ * stored (the cache entry replaced); with PL_CALIBRATE_STORED what is stored
+ * or tabled, else the coupling's theory (PL_CALSRC_THEORY), never a run. */
 int pl_calibrate(const pl_scene_t *scene, const char *shipped_dir, int nthreads, const pl_calibrate_opts_t *o,
                  pl_mapping_calibration_t *cal, pl_err_t *err);
+/* Coupling I in a fluid whose resolution table is shipped in dir
+ * (rh_resolution-*.json) at an R/a0 inside its measured range: *cal from the
+ * table's law (PL_CALSRC_TABLE, d_inf and its SE; cal->d_theory kept), 1;
+ * else 0 and *cal unchanged (src/app/calibration_table.c). */
+int pl_calibration_table(const pl_scene_t *scene, const char *dir, pl_mapping_calibration_t *cal);
 /* The coupling theory's relative error (PL_CALSRC_THEORY fields of cal) for
  * the scene's coupling (src/app/calibrate_mode.c). */
 void pl_calibrate_theory(const pl_scene_t *scene, pl_mapping_calibration_t *cal);

@@ -303,7 +303,8 @@ int pl_plan_advise(const pl_scene_t *s, const char *path, double target, const c
         hms(o->cal_s_lo, a, sizeof a);
         hms(o->cal_s_hi, b, sizeof b);
         if (k == own && m->cg.d_col_calibrated > 0) snprintf(cal, sizeof cal, "done (%s)", m->calib.source == PL_CALSRC_SHIPPED ? "shipped"
-                                                                     : m->calib.source == PL_CALSRC_CACHE ? "cache" : "run");
+                                                                     : m->calib.source == PL_CALSRC_CACHE ? "cache"
+                                                                     : m->calib.source == PL_CALSRC_TABLE ? "table" : "run");
         else if (isfinite(o->cal_s_lo) && strcmp(a, b)) snprintf(cal, sizeof cal, "%s..%s (shipped)", a, b);
         else if (isfinite(o->cal_s_lo)) snprintf(cal, sizeof cal, "%s (shipped)", a);
         else snprintf(cal, sizeof cal, "unknown");

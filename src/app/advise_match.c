@@ -1,5 +1,6 @@
 /* The hydrodynamically matched resolution of coupling I for `peloid plan`
- * (issue 45).  A coupling I colloid's friction is its Stokes friction in
+ * and the resolution table of the calibration (calibration_table.c; issue
+ * 45).  A coupling I colloid's friction is its Stokes friction in
  * series with the finite friction of the fluid's collisions with its surface
  * (PL Eqs. 40-41), so its hydrodynamic radius R_h falls short of R by a
  * share that shrinks with the resolution R/a0.  A resolution study measured
@@ -53,6 +54,29 @@ static int same_fluid(const pl_scene_t *s, json_t *fl)
            !strcmp(str(fl, "boundary"), pl_coupling_boundary_names[s->coupling.boundary]);
 }
 
+/* The law's fit (tools/rh_resolution.py R4): form, (b, c), covariance. */
+static void read_fit(json_t *law, pl_advise_match_t *m)
+{
+    const char *form = str(law, "form");
+    const int np = !strcmp(form, "c a0/R") ? 1 : !strcmp(form, "b + c a0/R") ? 2 : 0;
+    json_t *cov = json_object_get(law, "covariance");
+    m->law_b = np == 2 ? num(law, "b") : 0.0;
+    m->law_c = num(law, "c");
+    m->law_chi2 = num(law, "chi2");
+    m->law_dof = (int)json_integer_value(json_object_get(law, "dof"));
+    int ok = np > 0 && json_array_size(cov) == (size_t)np && isfinite(m->law_b) && isfinite(m->law_c);
+    for (int i = 0; ok && i < np; ++i) {
+        json_t *row = json_array_get(cov, (size_t)i);
+        ok = json_array_size(row) == (size_t)np;
+        for (int j = 0; ok && j < np; ++j) {
+            json_t *v = json_array_get(row, (size_t)j);
+            m->law_cov[i][j] = json_is_number(v) ? json_number_value(v) : NAN;
+            ok = isfinite(m->law_cov[i][j]);
+        }
+    }
+    m->law_nparams = ok ? np : 0;
+}
+
 static void read_law(json_t *doc, const char *name, pl_advise_match_t *m)
 {
     json_t *fl = json_object_get(doc, "fluid"), *pts = json_object_get(doc, "points");
@@ -66,8 +90,11 @@ static void read_law(json_t *doc, const char *name, pl_advise_match_t *m)
     {
         if (m->npoints >= PL_MATCH_MAX_POINTS) break;
         m->R[m->npoints] = num(p, "R_over_a0");
+        m->rh_se[m->npoints] = num(p, "rh_over_R_se");
         m->rh[m->npoints++] = num(p, "rh_over_R");
     }
+    m->mass_density = num(fl, "mass_density");
+    read_fit(json_object_get(doc, "law"), m);
     m->R_match = num(doc, "matched_R_over_a0");
     m->R_match_se = num(doc, "matched_R_over_a0_se");
     m->have_match = isfinite(m->R_match) && m->R_match > 0;
@@ -95,7 +122,10 @@ void pl_advise_match(const pl_scene_t *s, const char *dir, pl_advise_match_t *m)
         char path[1400];
         snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
         json_t *doc = json_load_file(path, 0, NULL);
-        if (doc && same_fluid(s, json_object_get(doc, "fluid"))) read_law(doc, e->d_name, m);
+        if (doc && same_fluid(s, json_object_get(doc, "fluid"))) {
+            read_law(doc, e->d_name, m);
+            snprintf(m->path, sizeof m->path, "%s", path);
+        }
         json_decref(doc);
     }
     if (d) closedir(d);

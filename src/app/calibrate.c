@@ -483,12 +483,22 @@ int pl_calibrate(const pl_scene_t *sc, const char *shipped_dir, int nthreads, co
     char dir[512];
     pl_calcache_dir(dir, sizeof dir);
     pl_path_join(path, sizeof path, dir, name);
-    if (o->mode == PL_CALIBRATE_STORED) { /* read what is there, measure nothing, take no lock */
-        if (from_cache(path, &e, PL_CALSRC_CACHE, cal, why, sizeof why) != PL_CALCACHE_OK)
-            memset(cal, 0, sizeof *cal); /* source NONE: nothing stored (the caller takes the theory) */
-        free(c);
-        cal->mode = o->mode;
-        return 0;
+    /* stored and auto: the user's measurement first, then the shipped
+     * resolution table (not with PELOID_NO_SHIPPED_CALIBRATION, which asks
+     * for measurements), then stored gives up (theory) and auto measures */
+    if (o->mode == PL_CALIBRATE_STORED || o->mode == PL_CALIBRATE_AUTO) {
+        const int cached = from_cache(path, &e, PL_CALSRC_CACHE, cal, why, sizeof why) == PL_CALCACHE_OK;
+        if (!cached) {
+            memset(cal, 0, sizeof *cal);
+            cal->d_theory = e.d_theory;
+        }
+        const int tabled = !cached && !(no_shipped && *no_shipped) && pl_calibration_table(sc, shipped_dir, cal);
+        if (cached || tabled || o->mode == PL_CALIBRATE_STORED) {
+            if (!cached && !tabled) memset(cal, 0, sizeof *cal); /* source NONE: the caller takes the theory */
+            free(c);
+            cal->mode = o->mode;
+            return 0;
+        }
     }
     int lock = -1, store = 0, st = PL_CALCACHE_ABSENT, done = 0;
     if (pl_calcache_dir_prepare(dir, why, sizeof why)) {

@@ -52,7 +52,7 @@ static const char *source(const pl_mapping_t *m)
 
 static const char *const SOURCE_NAMES[] = {[PL_CALSRC_NONE] = "none", [PL_CALSRC_SHIPPED] = "shipped",
                                            [PL_CALSRC_CACHE] = "cache", [PL_CALSRC_RUN] = "calibration run",
-                                           [PL_CALSRC_THEORY] = "theory"};
+                                           [PL_CALSRC_THEORY] = "theory", [PL_CALSRC_TABLE] = "table"};
 
 static const char *source_name(int s)
 {
@@ -89,6 +89,12 @@ void pl_mapping_calibration_line(const pl_mapping_t *m, char *buf, size_t n)
                  c->mode == PL_CALIBRATE_STORED ? "; `peloid run` measures the calibration first (once, cached; "
                                                   "its size and estimated duration printed), --calibrate auto "
                                                   "measures it here" : "");
+    else if (c->source == PL_CALSRC_TABLE)
+        snprintf(buf, n, "calibration: --calibrate %s: the colloid D from the shipped resolution table %s (coupling I "
+                 "in this fluid, R/R_h - 1 = b + c a0/R fitted to R/a0 = %g..%g): R_h/R = %.4g here, D = kT / (6 pi "
+                 "eta R_h) = %.5g +- %.2g a0^2/t0 (relative error %.2g, the law's standard error); no calibration "
+                 "run (--calibrate always measures it)", pl_calibrate_mode_name(c->mode), c->cache, c->table_R_lo,
+                 c->table_R_hi, c->table_rh_over_R, c->d_inf, c->d_inf_se, c->d_inf_se / c->d_inf);
     else
         snprintf(buf, n, "calibration: --calibrate %s: the colloid D measured, %.5g +- %.2g a0^2/t0 (relative "
                  "error %.2g), %s %s", pl_calibrate_mode_name(c->mode), c->d_inf, c->d_inf_se, c->d_inf_se / c->d_inf,
@@ -119,9 +125,17 @@ json_t *pl_mapping_calibration_json(const pl_mapping_t *m)
             json_object_set_new(o, "measured_over_theory_max", json_real(c->theory_hi));
         }
     } else {
-        json_object_set_new(o, "relative_error_of", json_string("standard error of the measured D"));
+        const int tab = c->source == PL_CALSRC_TABLE;
+        json_object_set_new(o, "relative_error_of", json_string(tab ? "standard error of the resolution table's R_h "
+                                                                      "at this R/a0 (its law's covariance)"
+                                                                    : "standard error of the measured D"));
         json_object_set_new(o, "file", json_string(c->cache));
         json_object_set_new(o, "wall_s", json_real(c->wall_s));
+        if (tab) {
+            json_object_set_new(o, "table_rh_over_R", json_real(c->table_rh_over_R));
+            json_object_set_new(o, "table_R_over_a0_min", json_real(c->table_R_lo));
+            json_object_set_new(o, "table_R_over_a0_max", json_real(c->table_R_hi));
+        }
     }
     return o;
 }
@@ -135,7 +149,7 @@ void pl_mapping_diffusion_print(const pl_mapping_t *m, FILE *f)
         fprintf(f, " +- %.2g (%.1f %%)", c->d_inf_se, 100.0 * c->d_inf_se / c->d_inf);
     fprintf(f, "; real kT/(6 pi eta R) = %.4g m^2/s: model/real = %.4g%s\n", d_real, m->d_col_sim * si(m) / d_real,
             m->cg.match == PL_MATCH_DIFFUSION && m->cg.srd_dt <= 0 ? " (time matched on it)" : "");
-    if (c->d_inf > 0)
+    if (c->d_inf > 0 && c->source != PL_CALSRC_TABLE)
         fprintf(f, "    calibration: %d colloid(s) in %d^3 periodic cells (phi %.3g), %lld steps: D_box = %.5g +- %.2g, "
                    "+ %.4g hydrodynamic tail beyond the lags, + %.4g periodic images (Hasimoto); the coupling's theory "
                    "1/xi = %.5g (measured/theory %.3g); %s %s\n",

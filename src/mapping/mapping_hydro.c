@@ -57,7 +57,9 @@ void pl_mapping_hydro_print(const pl_mapping_t *m, FILE *f)
     fprintf(f, "    hydrodynamic radius: R_h = kT / (%d pi eta D) = %.4g", slip(m) ? 4 : 6, m->rh_over_R);
     if (isfinite(m->rh_over_R_se)) fprintf(f, " +- %.2g", m->rh_over_R_se);
     fprintf(f, " R = %.4g m (%s; %s surface, PL Eq. 39, eta = gamma nu = %.4g m_f/(a0 t0))",
-            m->rh_over_R * m->real.radius, calibrated(m) ? "from the calibrated D" : "theory, from the coupling's friction",
+            m->rh_over_R * m->real.radius,
+            !calibrated(m) ? "theory, from the coupling's friction"
+            : m->calib.source == PL_CALSRC_TABLE ? "from the D of the shipped resolution table" : "from the calibrated D",
             slip(m) ? "slip" : "stick", m->cg.gamma * m->nu_sim);
     if (slip(m)) fprintf(f, "; a stick sphere of the same friction: %.4g R", m->rh_stick_over_R);
     if (m->cg.coupling == PL_COUPLE_HECHT2) fprintf(f, "; coupling II colloids are points in the collision, the "
@@ -77,6 +79,8 @@ void pl_mapping_hydro_json(const pl_mapping_t *m, json_t *o)
     set_real(o, "hydrodynamic_radius_over_R_se", m->rh_over_R_se);
     set_real(o, "hydrodynamic_radius_m", m->rh_over_R * m->real.radius);
     set_real(o, "hydrodynamic_radius_stick_over_R", m->rh_stick_over_R);
-    json_object_set_new(o, "hydrodynamic_radius_source", json_string(calibrated(m) ? "calibration" : "theory"));
+    json_object_set_new(o, "hydrodynamic_radius_source", json_string(!calibrated(m) ? "theory"
+                                                                     : m->calib.source == PL_CALSRC_TABLE ? "table"
+                                                                                                           : "calibration"));
     json_object_set_new(o, "hydrodynamic_radius_boundary", json_string(slip(m) ? "slip" : "stick"));
 }
