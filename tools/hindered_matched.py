@@ -7,7 +7,9 @@ independently with h5py from colloids.h5, the colloids' mean fall turned into u 
 tools/h5md_settling.py); U = u (1 - phi); U0 = F / (6 pi eta R_h) with rule R8's measured R_h (the law file's
 "check", calibration/rh_resolution-c1_hecht.json); y = 1 - R_h (2.837/L + 6 pi eta U/F) fitted as K phi.  Rule H6's
 points (the study name + _rz) fit Richardson-Zaki's n; rule H7's point (+ _n27: 27 colloids at phi = 0.2) and H6's
-phi = 0.2 point extrapolate U linearly in N^(-1/3) to an infinite box (its own plot, + _n27.png).
+phi = 0.2 point extrapolate U linearly in N^(-1/3) to an infinite box (its own plot, + _n27.png); rules H8 and H9 do
+the same at phi = 0.3 and 0.1, and rule H10 at phi = 0.049 (+ _n27_dilute, with H5's N = 8 point pooled with a
+second seed, + _seed454), whose infinite-box point with H9's gives K from U_inf/U0 = 1 - K phi + K2 phi^2.
 
     python3 tools/hindered_matched.py OUT/STUDY REPORT.md [COMMIT]     (prints the section; exit 0)"""
 import json
@@ -36,6 +38,9 @@ RESUMED_H7 = ("stopped once by a signal at a checkpoint and resumed by `peloid s
 RZ_SUFFIX = "_rz"  # rule H6's points: the study name + this
 N27_SUFFIX = "_n27"  # rule H7's point: 27 colloids at phi = 0.2 (+ RZ_SUFFIX: rule H8's, at phi = 0.3)
 K_SUFFIX = "_k"  # + N27_SUFFIX: rule H9's point, at H5's phi = 0.098
+DILUTE_SUFFIX = "_dilute"  # + N27_SUFFIX: rule H10's point, 27 colloids at H5's phi = 0.049
+SEED_SUFFIX = "_seed454"  # rule H10's second seed of H5's N = 8 point at phi = 0.049
+K2_HS = 21.9  # U/U0 = 1 - 6.55 phi + 21.9 phi^2 (Cichocki, Ekiel-Jezewska, Szymczak & Wajnryb 2002), H10's aside
 BG_VISCOSITY = (2.5, 6.2)  # eta/eta0 = 1 + 2.5 phi + 6.2 phi^2 (Einstein; Batchelor & Green), H7's aside
 LAW = "rh_resolution_c1_hecht"  # the resolution study whose R8 run measured R_h at this resolution
 
@@ -152,6 +157,28 @@ def extrapolate(r8, p27, rh, rh_se, r_slope=None):
     return d
 
 
+def pooled(a, b):
+    """H10: H5's N = 8 point a and its second seed b as one point, u weighted by 1/SE^2."""
+    w = [1.0 / a["u_se"] ** 2, 1.0 / b["u_se"] ** 2]
+    return dict(a, u=(w[0] * a["u"] + w[1] * b["u"]) / sum(w), u_se=1.0 / math.sqrt(sum(w)))
+
+
+def k_quadratic(d1, d2):
+    """H10: U_inf/U0 = 1 - K phi + K2 phi^2 through U0 and the infinite-box points d1, d2 (two points, two
+    coefficients, exact); SE(K) from the points' SEs combined with K's shift under R_h +- SE.
+    Returns (K, SE, K2, SE(K2), SE of K from the points alone, shift)."""
+    def solve(a, b):
+        A = np.array([[d1["phi"], -d1["phi"] ** 2], [d2["phi"], -d2["phi"] ** 2]])
+        J = np.linalg.inv(A)
+        k = J @ np.array([1.0 - a["uinf"], 1.0 - b["uinf"]])
+        return k, J
+    k, J = solve(d1, d2)
+    s = np.array([d1["se"], d2["se"]])
+    se = np.sqrt((J ** 2) @ (s ** 2))
+    shift = abs(solve(d1["hi"], d2["hi"])[0][0] - solve(d1["lo"], d2["lo"])[0][0]) / 2.0
+    return float(k[0]), float(math.hypot(se[0], shift)), float(k[1]), float(se[1]), float(se[0]), shift
+
+
 def n_through_u0(ds):
     """H8: ln(U_inf/U0) = n ln(1 - phi) through the origin over the infinite-box points ds, weights 1/SE(ln U_inf)^2;
     SE(n) from the points combined with n's shift under R_h +- SE.  Returns (n, SE)."""
@@ -193,7 +220,7 @@ def plot_box(ds, path):
     x = np.array([0.5, 1.0 / 3.0])
     xx = np.linspace(0.0, 0.55, 50)
     for d in ds:
-        c = {0.1: "C2", 0.2: "C0", 0.3: "C3"}[round(d["phi"], 1)]
+        c = {0.0: "C1", 0.1: "C2", 0.2: "C0", 0.3: "C3"}[round(d["phi"], 1)]
         ax.errorbar(x, [d["u8"], d["u27a"]], yerr=[d["s8"], d["s27"]], fmt="o", color=c, capsize=3,
                     label=f"φ = {d['phi']:.3f}: 8 and 27 colloids")
         ax.plot(xx, d["uinf"] - d["c"] * xx, "-", color=c, lw=1,
@@ -208,7 +235,7 @@ def plot_box(ds, path):
     ax.set_xlim(-0.01, 0.55)
     ax.set_xlabel("N^(−1/3)  (N colloids in the periodic box)")
     ax.set_ylabel("U/U0  (zero-volume-flux frame)")
-    ax.set_title("H7–H9: the finite box, coupling I at R = 10 a0 (Hecht's fluid)", fontsize=9)
+    ax.set_title(f"H7–H{6 + len(ds)}: the finite box, coupling I at R = 10 a0 (Hecht's fluid)", fontsize=9)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2)
     fig.tight_layout()
@@ -376,13 +403,48 @@ def section(study, commit, png):
             f"at φ = {d['phi']:.3f}, (1 − U∞/U0)/φ = {(1.0 - d['uinf']) / d['phi']:.2f} ± {d['se'] / d['phi']:.2f}, "
             f"where Richardson–Zaki's curve gives {rz_k:.2f} (the rule's text says 3.8) and Batchelor's dilute "
             f"slope 6.55: a line through the origin at φ = 0.1 is not the suspension, so this is no test of K.")
+    p27d, p8s = (points(os.path.normpath(study) + suf) if os.path.isdir(os.path.normpath(study) + suf) else []
+                 for suf in (N27_SUFFIX + DILUTE_SUFFIX, SEED_SUFFIX))
+    if p27d and p8s and p27k and len(ds) == 3:  # rule H10: 27 colloids at H5's phi = 0.049, a second N = 8 seed
+        d = extrapolate(pooled(rows[0], p8s[0]), p27d[0], rh, rh_se)
+        v10 = "agrees" if abs(d["n"] - N_RZ) <= 0.10 * N_RZ + 2 * d["n_se"] else "disagrees — peloid"
+        if bad(p27d + p8s):
+            v10 = f"not settled ({v10})"
+        box += box_lines(d, "H10", v10, p27d[0])
+        s8 = [u_over_u0(q, rh) for q in (rows[0], p8s[0])]
+        box[-1] += (f"  The N = 8 side pools H5's seed 453 ({s8[0][0]:.3f} ± {s8[0][1]:.3f}) and seed 454 "
+                    f"({s8[1][0]:.3f} ± {s8[1][1]:.3f}; its halves {p8s[0]['h1']:.5f}, {p8s[0]['h2']:.5f} a0/t0, "
+                    f"h5py {p8s[0]['u5']:.5f} ± {p8s[0]['u5_se']:.5f} against the observer's {p8s[0]['u']:.5f} ± "
+                    f"{p8s[0]['u_se']:.5f}; CPU {p8s[0]['cpu']:.0f} s).")
+        d9 = ds[0]
+        K10, K10_se, K2, K2_se, K10_pts, K10_rh = k_quadratic(d, d9)
+        vk = "agrees" if abs(K10 - K_BATCHELOR) <= 0.15 * K_BATCHELOR + 2 * K10_se else "disagrees — peloid"
+        if bad(p27d + p8s + p27k + rows):
+            vk = f"not settled ({vk})"
+        quad = K_BATCHELOR - K2_HS * d["phi"]
+        box.append(
+            f"- **Batchelor's K from the two dilute infinite-box points (H10): {vk}.**  U∞/U0 = 1 − K φ + K₂ φ² "
+            f"through U0 and φ = {d['phi']:.3f}, {d9['phi']:.3f} (exact, two coefficients): K = {K10:.2f} ± "
+            f"{K10_se:.2f} (the points {K10_pts:.2f}, R8's R_h {K10_rh:.2f}) against 6.55 "
+            f"({(K10 - K_BATCHELOR) / K10_se:+.1f} SE, {100 * (K10 / K_BATCHELOR - 1):+.0f} %).  Beside it, deciding "
+            f"nothing: K₂ = {K2:.1f} ± {K2_se:.1f} against the hard spheres' {K2_HS}; at φ = {d['phi']:.3f}, "
+            f"(1 − U∞/U0)/φ = {(1.0 - d['uinf']) / d['phi']:.2f} ± {d['se'] / d['phi']:.2f} against that quadratic's "
+            f"{quad:.2f}; K from this point alone with K₂ = {K2_HS} assumed: "
+            f"{(1.0 - d['uinf']) / d['phi'] + K2_HS * d['phi']:.2f} ± {d['se'] / d['phi']:.2f}.")
+        ds.insert(0, d)
     if ds:
         ratios = ", ".join(f"{q['c_dil'] / q['c']:.1f}× at φ = {q['phi']:.3f}" for q in ds if q["c"] > 0)
-        box.append("- For information (written after the runs of H7" + ("–H9" if p27k else " and H8") + ", deciding nothing): the finite-size term the "
-                   f"dilute box correction assumes is larger than the measured one ({ratios}), so H5's K, which "
-                   "subtracts it at φ ≤ 0.1, rests on an assumption these runs contradict" +
-                   ("; K itself was not measured with a second N." if not p27k else
-                    " (at φ = 0.098 too, H9); the dilute point φ = 0.049 was not run with a second N."))
+        larger = all(q["c_dil"] > q["c"] for q in ds)
+        head = ("- For information (written after the runs of H7" + (f"–H{6 + len(ds)}" if p27k else " and H8") +
+                ", deciding nothing): the finite-size term the dilute box correction assumes is ")
+        if not larger:  # H10's dilute point may meet it
+            box.append(head + f"the measured one times {ratios}; where that is near 1 the dilute term holds.")
+        else:
+            box.append(head + f"larger than the measured one ({ratios}), so H5's K, which subtracts it at φ ≤ 0.1, "
+                       "rests on an assumption these runs contradict" +
+                       ("; K itself was not measured with a second N." if not p27k else
+                        " (at φ = 0.098 too, H9); the dilute point φ = 0.049 was not run with a second N."
+                        if len(ds) < 4 else " (at φ = 0.098 and 0.049 too, H9 and H10)."))
         box += ["", f"![{os.path.basename(png27)[:-4]}]({os.path.basename(png27)})"]
         plot_box(ds, png27)
     tab = ["| φ | colloids | L (a0) | u (a0/t0), observer | u, colloids.h5 | halves | U/U0 | box term | "
@@ -427,7 +489,10 @@ def section(study, commit, png):
          f"--jobs 1 --threads 1` and `peloid sweep studies/{name}{N27_SUFFIX}{RZ_SUFFIX}.cfg --jobs 1 --threads 1`"
          + (f"; rule H9's (φ = 0.1): `peloid sweep studies/{name}{N27_SUFFIX}{K_SUFFIX}.cfg --jobs 1 --threads 2`"
             if p27k else "") +
-         f" ({sum(p['cpu'] for p in p27 + p27rz + p27k):.0f} CPU-s more)." if ds else ""), ""] + tab + [
+         (f"; rule H10's (φ = 0.049, 27 colloids and a second seed of 8): `peloid sweep studies/{name}{N27_SUFFIX}"
+          f"{DILUTE_SUFFIX}.cfg --jobs 1 --threads 1` and `peloid sweep studies/{name}{SEED_SUFFIX}.cfg --jobs 1 "
+          f"--threads 1`" if p27d and p8s else "") +
+         f" ({sum(p['cpu'] for p in p27 + p27rz + p27k + p27d + p8s):.0f} CPU-s more)." if ds else ""), ""] + tab + [
         "",
         f"- **Batchelor's K at the matched resolution: {v}.**  K = {K:.2f} ± {K_se:.2f} (the points "
         f"{K_stat:.2f}, R8's R_h {K_rh:.2f}; {len(rows)} points, χ² = {chi2:.1f}) against 6.55 "
