@@ -23,12 +23,6 @@ FOLDERS = ("kernels", "src/io", "src/scene", "src/mapping", "src/core") + COMPON
 
 # (from folder, to folder, the symbol): why it still runs that way
 KNOWN = {
-    ("src/core", "src/fluid", "pl_srd_kept"):
-        "checkpoint.c writes the fluid's accumulators and kT_cell (their place in the file keeps its bytes)",
-    ("src/core", "src/fluid", "pl_srd_order_lost"):
-        "checkpoint.c tells the fluid that a restart replaced its particles (no cell order until the next sort)",
-    ("src/core", "src/fluid", "pl_srd_speed_bound"):
-        "checkpoint.c checks the velocities it reads back against the fluid guard's speed bound",
     ("src/core", "src/colloid", "pl_colloid_table_path"):
         "checkpoint_scene.c fingerprints a pair table by the bytes of the file the colloids read",
 }

@@ -48,6 +48,12 @@ typedef struct pl_module {
      * write: 0 or -1; read: 0 or PL_ERR_INPUT naming path and item. */
     int (*checkpoint_write)(int64_t file, const pl_sim_t *sim);
     int (*checkpoint_read)(int64_t file, pl_sim_t *sim, const char *path, pl_err_t *err);
+    /* Items in two more places of the file (NULL: none), so that the
+     * fluid's, which the core once wrote there, keep every checkpoint's
+     * bytes: root attributes after the format's own (before colloid_count),
+     * and items after every module's checkpoint_write; read by checkpoint_read. */
+    int (*checkpoint_attrs)(int64_t file, const pl_sim_t *sim);
+    int (*checkpoint_write_last)(int64_t file, const pl_sim_t *sim);
 } pl_module_t;
 
 /* The modules, NULL-terminated, in the order they are created, their stages

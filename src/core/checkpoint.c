@@ -7,6 +7,9 @@
  * observers their accumulated state, /observe and /stress (written by their
  * modules; fingerprint of the observe section: src/observe/checkpoint_observe.c;
  * absent in older files, which still load: the observers start afresh).
+ * The fluid's own items (field accumulator, field_samples, kT_cell) are its
+ * module's (src/fluid/checkpoint_fluid.c), in the places the core once wrote
+ * them (peloid/module.h: checkpoint_attrs, checkpoint_write_last).
  * Written atomically (pl_atomic_commit); the HDF5 helpers (checksummed 1-d
  * datasets, attributes) are in src/io/checkpoint_h5.c.
  * No object carries a time stamp, so the same state gives the same bytes.
@@ -36,7 +39,7 @@
 #define H5_REAL (sizeof(pl_real) == sizeof(double) ? H5T_NATIVE_DOUBLE : H5T_NATIVE_FLOAT)
 
 static const char *const rnames[3] = {"x", "y", "z"};
-static const char *const vnames[3] = {"vx", "vy", "vz"};
+static const char *const vnames[3] = {"vx", "vy", "vz"}; /* fluid/ velocities */
 static const char *const dnames[3] = {"disp_x", "disp_y", "disp_z"};
 
 static int write_failed(pl_err_t *err, const char *tmp, const char *what)
@@ -60,12 +63,11 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
     long long meta[8] = {sim->step, sc->run.seed, (long long)fl->n, sc->box.cells[0], sc->box.cells[1],
                          sc->box.cells[2], fl->tracked, (long long)sizeof(pl_real)};
     long long ncol = sim->colloids ? (long long)sim->colloids->n : 0;
-    const pl_srd_kept_t kept = pl_srd_kept(sim->srd);
-    long long samples = *kept.field_samples;
     long long version = PL_CKPT_FORMAT;
     int bad = pl_ckpt_attr_i64(f, "format_version", &version, 1, 1);
     bad |= pl_ckpt_attr_i64(f, "peloid_checkpoint", meta, 8, 1);
-    bad |= pl_ckpt_attr_i64(f, "field_samples", &samples, 1, 1);
+    for (int m = 0; pl_modules[m]; ++m) /* the modules' root attributes (the fluid's field_samples) */
+        if (pl_modules[m]->checkpoint_attrs) bad |= pl_modules[m]->checkpoint_attrs(f, sim) != 0;
     bad |= pl_ckpt_attr_i64(f, "colloid_count", &ncol, 1, 1);
     /* only with x/y walls, so that other checkpoints stay as they were */
     long long walls_xy = sc->box.walls_xy;
@@ -78,16 +80,12 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
         if (fl->tracked) bad |= pl_ckpt_write_1d(g, dnames[d], H5T_NATIVE_DOUBLE, fl->disp[d], fl->n);
     }
     if (fl->tracked && g >= 0) bad |= pl_ckpt_write_1d(g, "id", H5T_NATIVE_UINT32, fl->id, fl->n);
-    if (kept.field_acc) {
-        size_t L3 = (size_t)sc->box.cells[0] * (size_t)sc->box.cells[1] * (size_t)sc->box.cells[2];
-        bad |= pl_ckpt_write_1d(f, "field_accumulator", H5T_NATIVE_INT64, kept.field_acc, 4 * L3);
-    }
     if (g >= 0) H5Gclose(g);
     else bad = 1;
-    for (int m = 0; pl_modules[m]; ++m) /* each module's items (colloids, coupling) */
+    for (int m = 0; pl_modules[m]; ++m) /* each module's items (the fluid's accumulators, colloids, coupling) */
         if (pl_modules[m]->checkpoint_write) bad |= pl_modules[m]->checkpoint_write(f, sim) != 0;
-    /* kT_cell of the last collision: the thermo row at the restart step */
-    bad |= pl_ckpt_write_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, kept.kT_cell, 1);
+    for (int m = 0; pl_modules[m]; ++m) /* and the last ones (the fluid's kT_cell) */
+        if (pl_modules[m]->checkpoint_write_last) bad |= pl_modules[m]->checkpoint_write_last(f, sim) != 0;
     if (bad) {
         char why[256];
         pl_h5_error_text(why, sizeof why); /* before H5Fclose clears the stack */
@@ -99,32 +97,23 @@ int pl_checkpoint_write(const pl_sim_t *sim, const char *path, pl_err_t *err)
     return pl_atomic_commit(tmp, path, err);
 }
 
-/* Range checks of the fluid state just read (serial, once per restart). */
+/* Range checks of the particles just read (serial, once per restart); the
+ * fluid module checks their speeds and its own items (src/fluid/checkpoint_fluid.c). */
 static int check_fluid(const pl_sim_t *sim, const char *path, pl_err_t *err)
 {
     const pl_fluid_t *fl = &sim->fluid;
     const pl_scene_t *sc = &sim->scene;
-    const double vmax = pl_srd_speed_bound(sim->srd); /* the fluid guard's speed bound */
     for (size_t i = 0; i < fl->n; ++i) {
-        double v2 = 0.0;
         for (int d = 0; d < 3; ++d) {
-            const double x = fl->r[d][i], v = fl->v[d][i], L = sc->box.cells[d];
-            v2 += v * v;
+            const double x = fl->r[d][i], L = sc->box.cells[d];
             if (!(x >= 0.0 && x <= L))
                 return pl_err_set(err, PL_ERR_INPUT,
                                   "%s: fluid/%s[%zu] = %.17g is outside the box [0, %g] (corrupt checkpoint)",
                                   path, rnames[d], i, x, L);
-            if (!isfinite(v))
-                return pl_err_set(err, PL_ERR_INPUT, "%s: fluid/%s[%zu] = %g is not finite (corrupt checkpoint)",
-                                  path, vnames[d], i, v);
             if (fl->tracked && !isfinite(fl->disp[d][i]))
                 return pl_err_set(err, PL_ERR_INPUT, "%s: fluid/%s[%zu] = %g is not finite", path, dnames[d], i,
                                   fl->disp[d][i]);
         }
-        if (!(v2 <= vmax * vmax))
-            return pl_err_set(err, PL_ERR_INPUT,
-                              "%s: fluid particle %zu has speed %.4g; bound %.4g (the fluid guard's, src/"
-                              "fluid_guard.c; corrupt checkpoint)", path, i, sqrt(v2), vmax);
     }
     if (fl->tracked) { /* ids: a permutation of 0 .. n-1 */
         unsigned char *seen = calloc(fl->n ? fl->n : 1, 1);
@@ -140,19 +129,6 @@ static int check_fluid(const pl_sim_t *sim, const char *path, pl_err_t *err)
         }
         free(seen);
     }
-    const pl_srd_kept_t kept = pl_srd_kept(sim->srd); /* what the restart just read back */
-    if (kept.field_acc) {
-        size_t L3 = (size_t)sc->box.cells[0] * (size_t)sc->box.cells[1] * (size_t)sc->box.cells[2];
-        for (size_t c = 0; c < L3; ++c)
-            if (kept.field_acc[c] < 0)
-                return pl_err_set(err, PL_ERR_INPUT, "%s: field_accumulator count of cell %zu is negative (%lld)",
-                                  path, c, (long long)kept.field_acc[c]);
-    }
-    if (*kept.field_samples < 0 || *kept.field_samples > sim->step)
-        return pl_err_set(err, PL_ERR_INPUT, "%s: field_samples = %lld; allowed 0 .. step %lld", path,
-                          *kept.field_samples, sim->step);
-    if (!(*kept.kT_cell >= 0.0 && isfinite(*kept.kT_cell)))
-        return pl_err_set(err, PL_ERR_INPUT, "%s: kT_cell = %g; allowed finite >= 0", path, *kept.kT_cell);
     return 0;
 }
 
@@ -173,8 +149,6 @@ int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, 
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: cannot open checkpoint (missing or not HDF5)", path);
         goto out;
     }
-    pl_srd_order_lost(sim->srd); /* the cell order is not stored */
-    const pl_srd_kept_t kept = pl_srd_kept(sim->srd);
     long long meta[8];
     pl_fluid_t *fl = &sim->fluid;
     const pl_scene_t *sc = &sim->scene;
@@ -239,10 +213,6 @@ int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, 
                                      "the restart step", changed);
     }
     sim->step = meta[0];
-    if (pl_ckpt_attr_i64(f, "field_samples", kept.field_samples, 1, 0)) {
-        rc = pl_err_set(err, PL_ERR_INPUT, "%s: unreadable attribute field_samples", path);
-        goto close;
-    }
     hid_t g = H5Lexists(f, "fluid", H5P_DEFAULT) > 0 ? H5Gopen2(f, "fluid", H5P_DEFAULT) : -1;
     if (g < 0) {
         rc = pl_err_set(err, PL_ERR_INPUT, "%s: checkpoint has no /fluid group", path);
@@ -255,17 +225,8 @@ int pl_checkpoint_restart(pl_sim_t *sim, const char *path, const char *changed, 
     }
     if (!rc && fl->tracked) rc = pl_ckpt_read_1d(g, "id", H5T_NATIVE_UINT32, fl->id, fl->n, path, err);
     H5Gclose(g);
-    if (!rc && kept.field_acc) {
-        size_t L3 = (size_t)sc->box.cells[0] * (size_t)sc->box.cells[1] * (size_t)sc->box.cells[2];
-        if (H5Lexists(f, "field_accumulator", H5P_DEFAULT) > 0)
-            rc = pl_ckpt_read_1d(f, "field_accumulator", H5T_NATIVE_INT64, kept.field_acc, 4 * L3, path, err);
-        else
-            *kept.field_samples = 0;
-    }
-    if (!rc && H5Lexists(f, "kT_cell", H5P_DEFAULT) > 0)
-        rc = pl_ckpt_read_1d(f, "kT_cell", H5T_NATIVE_DOUBLE, kept.kT_cell, 1, path, err);
     if (!rc) rc = check_fluid(sim, path, err);
-    for (int m = 0; !rc && pl_modules[m]; ++m)
+    for (int m = 0; !rc && pl_modules[m]; ++m) /* the fluid's items and checks first */
         if (pl_modules[m]->checkpoint_read) rc = pl_modules[m]->checkpoint_read(f, sim, path, err);
 close:
     H5Fclose(f);

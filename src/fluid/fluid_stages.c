@@ -346,4 +346,8 @@ const pl_module_t pl_fluid_module = {
     .destroy = pl_fluid_state_free,
     .add_stages = fluid_stages,
     .thermo_columns = fluid_columns,
+    .checkpoint_attrs = pl_fluid_ckpt_attrs,
+    .checkpoint_write = pl_fluid_ckpt_write,
+    .checkpoint_write_last = pl_fluid_ckpt_write_last,
+    .checkpoint_read = pl_fluid_ckpt_read,
 };

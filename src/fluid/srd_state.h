@@ -5,6 +5,7 @@
 #ifndef PELOID_FLUID_SRD_STATE_H
 #define PELOID_FLUID_SRD_STATE_H
 
+#include "peloid/sim.h"
 #include "peloid/srd.h"
 
 struct pl_srd {
@@ -34,5 +35,12 @@ struct pl_srd {
     int64_t *field_acc;   /* 4 x L0 L1 L2, fixed point */
     long long field_samples;
 };
+
+/* The fluid's checkpoint items (checkpoint_fluid.c): the hooks of its row of
+ * the module table (peloid/module.h). */
+int pl_fluid_ckpt_attrs(int64_t file, const pl_sim_t *sim);
+int pl_fluid_ckpt_write(int64_t file, const pl_sim_t *sim);
+int pl_fluid_ckpt_write_last(int64_t file, const pl_sim_t *sim);
+int pl_fluid_ckpt_read(int64_t file, pl_sim_t *sim, const char *path, pl_err_t *err);
 
 #endif
