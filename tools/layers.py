@@ -23,8 +23,6 @@ FOLDERS = ("kernels", "src/io", "src/scene", "src/mapping", "src/core") + COMPON
 
 # (from folder, to folder, the symbol): why it still runs that way
 KNOWN = {
-    ("src/core", "src/colloid", "pl_colloid_table_path"):
-        "checkpoint_scene.c fingerprints a pair table by the bytes of the file the colloids read",
 }
 
 

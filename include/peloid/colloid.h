@@ -162,12 +162,6 @@ void pl_colloid_exchange_energy(pl_colloid_t *c);
  * scene's radii set.  Any malformed, missing, extra or out-of-range value
  * is PL_ERR_INPUT "FILE:LINE: column N (name): value 'TOKEN': allowed: ...". */
 int pl_colloid_read_init_file(const pl_scene_t *scene, pl_colloid_t *c, pl_err_t *err);
-/* The path colloids.init_file is opened at: relative to the scene file's
- * directory unless absolute. */
-void pl_colloid_init_path(const pl_scene_t *scene, char *buf, size_t n);
-/* The path of colloids.table_file as the loader opens it (relative to the
- * scene file's directory unless absolute). */
-void pl_colloid_table_path(const pl_scene_t *scene, char *buf, size_t n);
 /* The smallest radius a colloid of the scene can have: colloids.radius
  * (1 - sqrt(3) colloids.polydispersity), or with init = "file" the least
  * radius the file may give (src/colloid/colloid_init_file.c). */

@@ -277,6 +277,12 @@ int pl_scene_line_of(const pl_scene_t *scene, size_t offset);
 int pl_scene_fail(const pl_scene_t *scene, pl_err_t *err, size_t offset, const char *key,
                   const char *fmt, ...) __attribute__((format(printf, 5, 6)));
 
+/* The paths colloids.init_file and colloids.table_file are opened at:
+ * relative to the scene file's directory unless absolute
+ * (src/scene/scene_paths.c). */
+void pl_scene_init_file_path(const pl_scene_t *scene, char *buf, size_t n);
+void pl_scene_table_file_path(const pl_scene_t *scene, char *buf, size_t n);
+
 /* Markdown reference of every key (README "Scene file reference"). */
 void pl_scene_print_reference(void *file_ptr);
 

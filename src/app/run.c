@@ -237,11 +237,11 @@ static int write_scene_echo(const writer_t *w, const pl_scene_t *sc, pl_err_t *e
     char src[PATH_MAX];
     int rc = 0;
     if (uses_init_file(sc)) {
-        pl_colloid_init_path(sc, src, sizeof src);
+        pl_scene_init_file_path(sc, src, sizeof src);
         rc = copy_named(w, src, INIT_COPY, echo->colloids.init_file, sizeof echo->colloids.init_file, err);
     }
     if (!rc && uses_table_file(sc)) {
-        pl_colloid_table_path(sc, src, sizeof src);
+        pl_scene_table_file_path(sc, src, sizeof src);
         rc = copy_named(w, src, TABLE_COPY, echo->colloids.table_file, sizeof echo->colloids.table_file, err);
     }
     if (rc) {

@@ -30,16 +30,6 @@
 
 static const char *const col_name[4] = {"x", "y", "z", "R"};
 
-void pl_colloid_init_path(const pl_scene_t *scene, char *buf, size_t n)
-{
-    pl_path_beside(buf, n, scene->path, scene->colloids.init_file);
-}
-
-void pl_colloid_table_path(const pl_scene_t *scene, char *buf, size_t n)
-{
-    pl_path_beside(buf, n, scene->path, scene->colloids.table_file);
-}
-
 double pl_colloid_radius_min(const pl_scene_t *scene)
 {
     const pl_scene_colloids_t *cs = &scene->colloids;
@@ -169,7 +159,7 @@ static int check_cutoff(const reader_t *r, const pl_scene_t *scene, const pl_col
 int pl_colloid_read_init_file(const pl_scene_t *scene, pl_colloid_t *c, pl_err_t *err)
 {
     char path[PATH_MAX];
-    pl_colloid_init_path(scene, path, sizeof path);
+    pl_scene_init_file_path(scene, path, sizeof path);
     char why[160];
     FILE *f = pl_input_open(path, 0, why, sizeof why);
     if (!f)

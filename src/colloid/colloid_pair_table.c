@@ -398,7 +398,7 @@ int pl_colloid_term_setup_tab(const pl_scene_t *scene, pl_colloid_pair_params_t 
         return pl_scene_fail(scene, err, OFF(colloids.pairs), "colloids.pairs",
                              "the table pair term needs colloids.table_file");
     char path[640];
-    pl_colloid_table_path(scene, path, sizeof path);
+    pl_scene_table_file_path(scene, path, sizeof path);
     rows_t t = {0};
     int rc = read_rows(scene, path, &t, err);
     if (!rc) rc = check_force(scene, path, &t, err);

@@ -26,7 +26,7 @@
 
 #include "checkpoint_h5.h"
 #include "peloid/checkpoint.h"
-#include "peloid/colloid.h"
+#include "peloid/scene.h"
 #include "peloid/h5.h"
 #include "peloid/io.h"
 
@@ -56,7 +56,7 @@ static int not_compared(const char *name) { return !strcmp(name, "colloids.init_
 static void table_text(const pl_scene_t *scene, char *buf, size_t n)
 {
     char path[4096];
-    pl_colloid_table_path(scene, path, sizeof path);
+    pl_scene_table_file_path(scene, path, sizeof path);
     FILE *f = fopen(path, "rb");
     if (!f) {
         snprintf(buf, n, "\"(unreadable)\"");
