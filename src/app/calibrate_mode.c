@@ -11,7 +11,9 @@
  * stated for a coupling is the root mean square of D_meas / D_theory - 1
  * over that coupling's rows of THEORY_ROWS, their range given beside it.
  * The theory is biased rather than noisy (coupling II's points move ~2x
- * faster than its friction says, the potential coupling ~14 % slower), so
+ * faster than its friction says, the potential coupling ~14 % slower at
+ * sigma_cf = 2 a0: its friction there, as a pinned sphere's drag shows too,
+ * falling to the theory's by sigma_cf = 3-6 a0; validation/REPORT.md), so
  * the figure is a size of the error, not a standard error; a coupling with
  * no shipped row has none (NaN: "unknown").  tests/cli/calibrate_modes.sh
  * recomputes the rows from `peloid params --json` of the scenes named. */
