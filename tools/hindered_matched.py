@@ -35,6 +35,10 @@ RESUMED = ("two points were stopped once by a signal at a checkpoint and resumed
 RESUMED_H7 = ("stopped once by a signal at a checkpoint and resumed by `peloid sweep` with the binary of dea23b2's "
               "source (the string 84a8514-dirty: built before that commit), whose coupling I event order gives the same "
               "bits as the first part's binary (a388366's; bench/RESULTS.md)")
+RESUMED_H10 = ("stopped once by a signal at a checkpoint and resumed by `peloid sweep` with 2 threads and the binary of "
+               "237d398's source; the first part ran at 1 thread with the binary of 93dc3c9, whose coupling I and "
+               "fluid code is the same (76 regression hashes unchanged between them; any thread count gives the "
+               "same bits)")
 RZ_SUFFIX = "_rz"  # rule H6's points: the study name + this
 N27_SUFFIX = "_n27"  # rule H7's point: 27 colloids at phi = 0.2 (+ RZ_SUFFIX: rule H8's, at phi = 0.3)
 K_SUFFIX = "_k"  # + N27_SUFFIX: rule H9's point, at H5's phi = 0.098
@@ -410,7 +414,7 @@ def section(study, commit, png):
         v10 = "agrees" if abs(d["n"] - N_RZ) <= 0.10 * N_RZ + 2 * d["n_se"] else "disagrees — peloid"
         if bad(p27d + p8s):
             v10 = f"not settled ({v10})"
-        box += box_lines(d, "H10", v10, p27d[0])
+        box += box_lines(d, "H10", v10, p27d[0], RESUMED_H10)
         s8 = [u_over_u0(q, rh) for q in (rows[0], p8s[0])]
         box[-1] += (f"  The N = 8 side pools H5's seed 453 ({s8[0][0]:.3f} ± {s8[0][1]:.3f}) and seed 454 "
                     f"({s8[1][0]:.3f} ± {s8[1][1]:.3f}; its halves {p8s[0]['h1']:.5f}, {p8s[0]['h2']:.5f} a0/t0, "
@@ -431,6 +435,27 @@ def section(study, commit, png):
             f"(1 − U∞/U0)/φ = {(1.0 - d['uinf']) / d['phi']:.2f} ± {d['se'] / d['phi']:.2f} against that quadratic's "
             f"{quad:.2f}; K from this point alone with K₂ = {K2_HS} assumed: "
             f"{(1.0 - d['uinf']) / d['phi'] + K2_HS * d['phi']:.2f} ± {d['se'] / d['phi']:.2f}.")
+        # written after H10's runs, deciding nothing: each box against the Oseen length nu/u of its own slip
+        # velocity, beyond which the Stokes flow that the N^(-1/3) law assumes gives way to inertia
+        pairs = [(pooled(rows[0], p8s[0]), p27d[0]), (rows[-1], p27k[0])]
+        pairs += [(rz[0], p27[0])] if p27 and len(rz) == 2 else []
+        pairs += [(rz[1], p27rz[0])] if p27rz and len(rz) == 2 else []
+        def span(pp):  # the range of L / (nu/u) over the boxes of the pairs pp
+            x = [q["L"] * q["u"] / q["nu"] for pr in pp for q in pr]
+            return f"{min(x):.1f}–{max(x):.1f}" if x else "–"
+        osc = "; ".join(f"φ = {a['phi']:.3f}: L = {a['L']:g} and {b['L']:g} a0 against ν/u = {a['nu'] / a['u']:.0f} "
+                        f"and {b['nu'] / b['u']:.0f} a0" for a, b in pairs)
+        box.append(
+            "- For information (written after H10's runs, deciding nothing): at φ = 0.049 the two boxes differ by "
+            f"{d['u27'] - d['u8']:.3f} ± {math.hypot(d['s27'], d['s8']):.3f} U0 where the dilute finite-size term "
+            f"(Ladd; Phillips, Brady & Bossis) predicts {d['c_dil'] * (0.5 - 1.0 / 3.0):.3f}, and U∞/U0 comes out "
+            f"below φ = 0.098's ({d['uinf']:.3f} against {d9['uinf']:.3f}): the N^(−1/3) extrapolation does not hold "
+            "at this φ, so K rests on a law these boxes do not obey.  Each box against the Oseen length of its own "
+            f"slip velocity: {osc}.  In units of ν/u the boxes are {span(pairs[2:])} long at φ = 0.2 and 0.3, "
+            f"where the extrapolation agreed with Richardson–Zaki, {span(pairs[1:2])} at φ = 0.098 and "
+            f"{span(pairs[:1])} at φ = 0.049.  A plausible reason, not shown: beyond ν/u the colloids' inertia (Re 0.2–0.4) cuts off the Stokes "
+            "flow that the law assumes.  A run at a Reynolds number several times lower (a weaker force, far longer "
+            "runs for the same SE) would test that; not run.")
         ds.insert(0, d)
     if ds:
         ratios = ", ".join(f"{q['c_dil'] / q['c']:.1f}× at φ = {q['phi']:.3f}" for q in ds if q["c"] > 0)
