@@ -14,8 +14,8 @@ import math
 import os
 import sys
 
-from validation.common import load, pl_friction, pyplot, save_figure
-from validation.pl_drag import drag_blocks
+from validation.common import load, pyplot, save_figure
+from validation.pl_drag import drag_blocks, drag_theory
 from validation.report_section import sections_in, study_section_main
 
 BEGIN = "<!-- potential gap: {} (tools/potential_gap.py) -->"  # .format(study name)
@@ -45,17 +45,15 @@ def rows_of(study):
             continue
         sig, L = s["scene"]["coupling"]["sigma_cf"], s["scene"]["box"]["cells"][0]
         v0 = s["scene"]["coupling"]["flow_velocity"][0]
-        eta, rho, kT = s["derived"]["eta"], s["scene"]["fluid"]["density"], s["derived"]["kT"]
+        eta = s["derived"]["eta"]
         F, F_se, nb, first = fb
         xi, xi_se = F / v0, F_se / v0
-        xi_e, _, xi_pl_box = pl_friction(kT, rho, eta, sig, L)  # pinned: reduced mass m_f
-        xi_inf = 1.0 / (1.0 / (4.0 * math.pi * eta * sig) + 1.0 / xi_e)  # PL Eqs. 40-41, unbounded
+        xi_pl_box, xi_pf = drag_theory(s)  # PL's finite-box form; PL Eqs. 40-41 with the point-force images
         img = 2.837 / (6.0 * math.pi * eta * L)
-        xi_pf = 1.0 / (1.0 / xi_inf - img)
+        xi_inf = 1.0 / (1.0 / xi_pf + img)  # PL Eqs. 40-41, unbounded
         rows.append(dict(sig=sig, L=L, v0=v0, eta=eta, nu=s["derived"]["nu"], xi=xi, xi_se=xi_se, nb=nb, first=first,
                          xi_inf=xi_inf, xi_pf=xi_pf, xi_pl_box=xi_pl_box, img=img, e=xi / xi_pf - 1.0,
-                         e_se=xi_se / xi_pf, cpu=s.get("cpu_seconds", 0.0), rev=s["peloid"]["git_revision"],
-                         kT=kT))
+                         e_se=xi_se / xi_pf, cpu=s.get("cpu_seconds", 0.0), rev=s["peloid"]["git_revision"]))
     rows.sort(key=lambda r: r["sig"])
     return rows
 

@@ -71,8 +71,8 @@ int pl_calibrate(const pl_scene_t *scene, const char *shipped_dir, int nthreads,
                  pl_mapping_calibration_t *cal, pl_err_t *err);
 /* Coupling I in a fluid whose resolution table is shipped in dir
  * (rh_resolution-*.json) at an R/a0 inside its measured range: *cal from the
- * table's law (PL_CALSRC_TABLE, d_inf and its SE; cal->d_theory kept), 1;
- * else 0 and *cal unchanged (src/app/calibration_table.c). */
+ * table's law (PL_CALSRC_TABLE, d_inf and its SE; d_theory left 0 for the
+ * caller), 1; else 0 and *cal unchanged (src/app/calibration_table.c). */
 int pl_calibration_table(const pl_scene_t *scene, const char *dir, pl_mapping_calibration_t *cal);
 /* The coupling theory's relative error (PL_CALSRC_THEORY fields of cal) for
  * the scene's coupling (src/app/calibrate_mode.c). */

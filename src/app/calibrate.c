@@ -487,14 +487,13 @@ int pl_calibrate(const pl_scene_t *sc, const char *shipped_dir, int nthreads, co
      * resolution table (not with PELOID_NO_SHIPPED_CALIBRATION, which asks
      * for measurements), then stored gives up (theory) and auto measures */
     if (o->mode == PL_CALIBRATE_STORED || o->mode == PL_CALIBRATE_AUTO) {
-        const int cached = from_cache(path, &e, PL_CALSRC_CACHE, cal, why, sizeof why) == PL_CALCACHE_OK;
-        if (!cached) {
-            memset(cal, 0, sizeof *cal);
-            cal->d_theory = e.d_theory;
+        int found = from_cache(path, &e, PL_CALSRC_CACHE, cal, why, sizeof why) == PL_CALCACHE_OK;
+        if (!found && !(no_shipped && *no_shipped) && pl_calibration_table(sc, shipped_dir, cal)) {
+            cal->d_theory = e.d_theory; /* as from_cache sets it */
+            found = 1;
         }
-        const int tabled = !cached && !(no_shipped && *no_shipped) && pl_calibration_table(sc, shipped_dir, cal);
-        if (cached || tabled || o->mode == PL_CALIBRATE_STORED) {
-            if (!cached && !tabled) memset(cal, 0, sizeof *cal); /* source NONE: the caller takes the theory */
+        if (found || o->mode == PL_CALIBRATE_STORED) {
+            if (!found) memset(cal, 0, sizeof *cal); /* source NONE: the caller takes the theory */
             free(c);
             cal->mode = o->mode;
             return 0;

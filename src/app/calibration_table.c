@@ -61,9 +61,7 @@ int pl_calibration_table(const pl_scene_t *sc, const char *dir, pl_mapping_calib
         const double d = 1.0 / (6.0 * PL_PI * eta * rh); /* kT = 1 */
         hit = rh > 0 && isfinite(d) && var >= 0.0;
         if (hit) {
-            const double d_theory = cal->d_theory;
             memset(cal, 0, sizeof *cal);
-            cal->d_theory = d_theory;
             cal->d_inf = d;
             cal->d_inf_se = d * sqrt(var) / rh;
             cal->concentration = 1.0;
