@@ -410,7 +410,8 @@ def section(study, commit, png):
     p27d, p8s = (points(os.path.normpath(study) + suf) if os.path.isdir(os.path.normpath(study) + suf) else []
                  for suf in (N27_SUFFIX + DILUTE_SUFFIX, SEED_SUFFIX))
     if p27d and p8s and p27k and len(ds) == 3:  # rule H10: 27 colloids at H5's phi = 0.049, a second N = 8 seed
-        d = extrapolate(pooled(rows[0], p8s[0]), p27d[0], rh, rh_se)
+        p8 = pooled(rows[0], p8s[0])  # H5's seed and the second one
+        d = extrapolate(p8, p27d[0], rh, rh_se)
         v10 = "agrees" if abs(d["n"] - N_RZ) <= 0.10 * N_RZ + 2 * d["n_se"] else "disagrees — peloid"
         if bad(p27d + p8s):
             v10 = f"not settled ({v10})"
@@ -437,7 +438,7 @@ def section(study, commit, png):
             f"{(1.0 - d['uinf']) / d['phi'] + K2_HS * d['phi']:.2f} ± {d['se'] / d['phi']:.2f}.")
         # written after H10's runs, deciding nothing: each box against the Oseen length nu/u of its own slip
         # velocity, beyond which the Stokes flow that the N^(-1/3) law assumes gives way to inertia
-        pairs = [(pooled(rows[0], p8s[0]), p27d[0]), (rows[-1], p27k[0])]
+        pairs = [(p8, p27d[0]), (rows[-1], p27k[0])]
         pairs += [(rz[0], p27[0])] if p27 and len(rz) == 2 else []
         pairs += [(rz[1], p27rz[0])] if p27rz and len(rz) == 2 else []
         def span(pp):  # the range of L / (nu/u) over the boxes of the pairs pp
