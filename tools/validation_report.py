@@ -43,6 +43,7 @@ from validation.hecht_clusters import (fig14_msd, fig9_bonds, fig9_diagram, fig9
                                        reduced_fig9_bonds, reduced_fig9_diagram, reduced_fig9_kappa, reduced_fig9_phi)
 from validation.hecht_rdf import fig5_rdf, reduced_fig5_rdf
 from validation import hydro_section, rotating_section, verdicts
+import array_mobility
 import fluid_equilibrium
 import hindered_matched
 import hindered_settling
@@ -539,14 +540,14 @@ def main():
     lines += verdict_lines(out, rdir) + [""]
     # the sections other tools write between their markers (tools/validation/hydro_section.py,
     # tools/hindered_settling.py, tools/rh_resolution.py, tools/rh_matched.py, tools/hindered_matched.py,
-    # tools/potential_gap.py, tools/fluid_equilibrium.py), kept
+    # tools/array_mobility.py, tools/potential_gap.py, tools/fluid_equilibrium.py), kept
     old = open(report).read() if os.path.exists(report) else ""
     if hydro_section.BEGIN in old and hydro_section.END in old:
         lines += [old[old.index(hydro_section.BEGIN):old.index(hydro_section.END) + len(hydro_section.END)], ""]
     for sec in hindered_settling.sections(old):
         lines += [sec, ""]
     for sec in (rh_resolution.sections(old) + rh_matched.sections(old) + hindered_matched.sections(old) +
-                potential_gap.sections(old)):
+                array_mobility.sections(old) + potential_gap.sections(old)):
         lines += [sec, ""]
     if rotating_section.BEGIN in old and rotating_section.END in old:
         lines += [old[old.index(rotating_section.BEGIN):old.index(rotating_section.END) + len(rotating_section.END)], ""]
