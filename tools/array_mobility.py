@@ -17,7 +17,7 @@ import numpy as np
 from scipy import optimize, stats
 
 from h5md_settling import block_falls
-from rh_resolution import _window_kt, settling_runs
+from rh_resolution import _window_kt, array_inverse_drag, settling_runs
 from validation.report_section import sections_in, study_section_main
 
 BEGIN = "<!-- array mobility: {} (tools/array_mobility.py) -->"  # .format(study name)
@@ -41,9 +41,9 @@ def sections(text):
 
 
 def inverse_drag(chi):
-    """K^-1 of a simple cubic array (Sangani & Acrivos 1982), chi = (4 pi/3)^(1/3) radius / L: F = 6 pi eta a K U
-    with U the superficial velocity; gives Zick & Homsy's K = 2.008, 2.810, 4.292 at phi = 0.027, 0.064, 0.125."""
-    return 1.0 - 1.7601 * chi + chi ** 3 - 1.5593 * chi ** 6 + 3.9799 * chi ** 8 - 3.0734 * chi ** 10
+    """K^-1 of a simple cubic array, all five terms (rh_resolution.array_inverse_drag): gives Zick & Homsy's
+    K = 2.008, 2.810, 4.292 at phi = 0.027, 0.064, 0.125."""
+    return array_inverse_drag(chi)
 
 
 def chi_of(radius, L):
