@@ -46,6 +46,7 @@ from validation import hydro_section, rotating_section, verdicts
 import array_mobility
 import fluid_equilibrium
 import hindered_matched
+import hindered_nlaw
 import hindered_settling
 import potential_gap
 import rh_matched
@@ -540,14 +541,14 @@ def main():
     lines += verdict_lines(out, rdir) + [""]
     # the sections other tools write between their markers (tools/validation/hydro_section.py,
     # tools/hindered_settling.py, tools/rh_resolution.py, tools/rh_matched.py, tools/hindered_matched.py,
-    # tools/array_mobility.py, tools/potential_gap.py, tools/fluid_equilibrium.py), kept
+    # tools/array_mobility.py, tools/hindered_nlaw.py, tools/potential_gap.py, tools/fluid_equilibrium.py), kept
     old = open(report).read() if os.path.exists(report) else ""
     if hydro_section.BEGIN in old and hydro_section.END in old:
         lines += [old[old.index(hydro_section.BEGIN):old.index(hydro_section.END) + len(hydro_section.END)], ""]
     for sec in hindered_settling.sections(old):
         lines += [sec, ""]
     for sec in (rh_resolution.sections(old) + rh_matched.sections(old) + hindered_matched.sections(old) +
-                array_mobility.sections(old) + potential_gap.sections(old)):
+                array_mobility.sections(old) + hindered_nlaw.sections(old) + potential_gap.sections(old)):
         lines += [sec, ""]
     if rotating_section.BEGIN in old and rotating_section.END in old:
         lines += [old[old.index(rotating_section.BEGIN):old.index(rotating_section.END) + len(rotating_section.END)], ""]
