@@ -16,8 +16,8 @@ import sys
 import numpy as np
 from scipy import optimize, stats
 
-from h5md_settling import block_falls
-from rh_resolution import _window_kt, array_inverse_drag, settling_runs
+from rh_resolution import array_inverse_drag, run_row, settled, settling_runs
+from validation.common import pyplot, save_figure
 from validation.report_section import sections_in, study_section_main
 
 BEGIN = "<!-- array mobility: {} (tools/array_mobility.py) -->"  # .format(study name)
@@ -31,19 +31,14 @@ PROVENANCE = ("The three runs' binary was built from 58b784d's source with three
               "reverted before any commit (a division skipped inside the box in pl_colloid_wrap, the guard's "
               "finiteness test as a tree, fmax/fmin written as compares); a clean build of 58b784d writes a "
               "byte-identical checkpoint after 400 steps of the 40³ point at 2 threads.")
-H10 = {"N = 8": (0.530, 0.008), "N = 27": (0.541, 0.004)}  # H10's U/U0 at phi = 0.0492 (REPORT.md), stated by H11
+# H10's U/U0 at phi = 0.0492, R = 10 a0 (REPORT.md; N = 8 pooled over two seeds), stated by H11 and H12
+H10 = {8: (0.530, 0.008), 27: (0.541, 0.004)}  # colloids: (U/U0, SE)
 HASIMOTO = 2.837  # the leading box term, Hasimoto 1959: 1.7601 (4 pi / 3)^(1/3)
 
 
 def sections(text):
     """The array-mobility sections in a report's text, each from its begin to its end marker."""
     return sections_in(text, STUDIES, BEGIN, END)
-
-
-def inverse_drag(chi):
-    """K^-1 of a simple cubic array, all five terms (rh_resolution.array_inverse_drag): gives Zick & Homsy's
-    K = 2.008, 2.810, 4.292 at phi = 0.027, 0.064, 0.125."""
-    return array_inverse_drag(chi)
 
 
 def chi_of(radius, L):
@@ -56,7 +51,7 @@ def hydrodynamic_radius(xi_box, eta, L):
     (tools/rh_resolution.py, unbounded) does not converge here: its map's slope is about -1.76 chi / K^-1, past
     -1 in boxes below ~6 R."""
     def excess(rh):
-        return 6.0 * math.pi * eta * rh / inverse_drag(chi_of(rh, L)) - xi_box
+        return 6.0 * math.pi * eta * rh / array_inverse_drag(chi_of(rh, L)) - xi_box
     top = 0.65 * L / (4.0 * math.pi / 3.0) ** (1.0 / 3.0)
     return optimize.brentq(excess, 1e-9 * top, top, xtol=1e-14 * top, rtol=1e-14)
 
@@ -68,36 +63,22 @@ def boxes(study):
     r8 = os.path.join(os.path.dirname(os.path.normpath(study)), R8_STUDY)
     for folder, origin in ((study, "H11"), (r8, "R8")):
         for run, s, sv in settling_runs(folder):
-            c = s["scene"]["colloids"]
-            if c["count"] != 1:
+            if s["scene"]["colloids"]["count"] != 1:
                 continue
-            R, L, eta = c["radius"], s["scene"]["box"]["cells"][0], s["derived"]["eta"]
+            r = run_row(run, s, sv)
+            R, L, eta, F, u, u_se = r["R"], r["L"], r["eta"], r["F"], r["u"], r["u_se"]
             phi = 4.0 / 3.0 * math.pi * R ** 3 / L ** 3
-            M = c["mass_density"] * 4.0 / 3.0 * math.pi * R ** 3
-            F = -M * c["gravity"][2]
-            u, u_se = sv["value"], sv["stderr"]
             rh = lambda v: hydrodynamic_radius(F / ((1.0 - phi) * v), eta, L) / R  # noqa: E731
-            vb, _ = block_falls(run, 16, sv["average_from_time"])
-            rows.append(dict(
-                origin=origin, R=R, L=L, phi=phi, eta=eta, nu=s["derived"]["nu"], M=M, F=F, u=u, u_se=u_se,
-                xi_box=F / ((1.0 - phi) * u), rh=rh(u), rh_se=abs(rh(u + u_se) - rh(u - u_se)) / 2.0,
-                Re=u * R / s["derived"]["nu"], u5=float(vb.mean()), u5_se=float(vb.std(ddof=1) / 4.0),
-                h1=float(vb[:8].mean()), h2=float(vb[8:].mean()), hse=float(vb.std(ddof=1) / math.sqrt(8.0)),
-                kT=_window_kt(run, sv), start=sv["average_from_step"], steps=s["last_step"],
-                cpu=s.get("cpu_seconds", 0.0), rev=s["peloid"]["git_revision"]))
+            r.update(origin=origin, phi=phi, xi_box=F / ((1.0 - phi) * u), rh=rh(u),
+                     rh_se=abs(rh(u + u_se) - rh(u - u_se)) / 2.0)
+            rows.append(r)
     rows.sort(key=lambda r: r["L"])
     return rows
 
 
-def settled(r):
-    """R1 (h5py against the observer) and R2 (the window's halves), each within 3 combined SE."""
-    return (abs(r["u5"] - r["u"]) <= 3 * math.hypot(r["u5_se"], r["u_se"]) and
-            abs(r["h1"] - r["h2"]) <= 3 * math.sqrt(2) * r["hse"])
-
-
 def velocity(radius_h, r):
     """The slip velocity a sphere of hydrodynamic radius radius_h has in box r under r's force."""
-    return r["F"] / (6.0 * math.pi * r["eta"] * radius_h * (1.0 - r["phi"])) * inverse_drag(chi_of(radius_h, r["L"]))
+    return r["F"] / (6.0 * math.pi * r["eta"] * radius_h * (1.0 - r["phi"])) * array_inverse_drag(chi_of(radius_h, r["L"]))
 
 
 def predicted(r80, r):
@@ -118,9 +99,7 @@ def consistency(rows):
 
 
 def plot(rows, mean, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     fig, (a1, a2) = plt.subplots(1, 2, figsize=(11.0, 4.4))
     for r in rows:
         col = "C3" if r["origin"] == "R8" else "C0"
@@ -139,7 +118,7 @@ def plot(rows, mean, path):
     ff = np.linspace(0.0, 0.08, 200)
     rh = m * R
     chi = (ff * (rh / R) ** 3) ** (1.0 / 3.0)
-    a2.plot(ff, [inverse_drag(c) for c in chi], "C0-", lw=1,
+    a2.plot(ff, [array_inverse_drag(c) for c in chi], "C0-", lw=1,
             label="simple cubic array, Sangani & Acrivos, at the mean R_h")
     a2.plot(ff, 1.0 - HASIMOTO * (ff * (rh / R) ** 3 * 3.0 / (4.0 * math.pi)) ** (1.0 / 3.0), "C7--", lw=1,
             label="Hasimoto's leading term alone")
@@ -148,9 +127,9 @@ def plot(rows, mean, path):
         a2.errorbar([r["phi"]], [(1.0 - r["phi"]) * r["u"] / U0], yerr=[(1.0 - r["phi"]) * r["u_se"] / U0],
                     fmt="s" if r["origin"] == "R8" else "o", capsize=3, color="C3" if r["origin"] == "R8" else "C0")
     phi44 = 4.0 / 3.0 * math.pi / 44.0 ** 3 * 1000.0
-    for k, (name, (v, se)) in enumerate(H10.items()):
+    for k, (n, (v, se)) in enumerate(H10.items()):
         a2.errorbar([phi44 + 0.0015 * (k + 1)], [v], yerr=[se], fmt="^", capsize=3, color=f"C{k + 1}",
-                    label=f"H10's random suspension, {name} (its own box)")
+                    label=f"H10's random suspension, N = {n} (its own box)")
     a2.set_xlabel("φ")
     a2.set_ylabel("U / U0 = (1 − φ) u / (F / 6πη R_h)")
     a2.set_xlim(0.0, 0.08)
@@ -161,9 +140,7 @@ def plot(rows, mean, path):
     a2.legend(fontsize=7.5, loc="upper right")
     fig.suptitle("Coupling I at the matched resolution (R = 10 a0, Hecht's fluid): one colloid in a periodic cube, "
                  "a simple cubic array (rule H11)", fontsize=10)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(plt, fig, path)
 
 
 def section(study, commit, png):
@@ -207,7 +184,7 @@ def section(study, commit, png):
     theory = -HASIMOTO / (6.0 * math.pi * lo["eta"])
     rh_m = m * lo["R"]
     chord = float("nan") if lo is hi else (
-        (inverse_drag(chi_of(rh_m, lo["L"])) - inverse_drag(chi_of(rh_m, hi["L"]))) /
+        (array_inverse_drag(chi_of(rh_m, lo["L"])) - array_inverse_drag(chi_of(rh_m, hi["L"]))) /
         (6.0 * math.pi * lo["eta"] * rh_m * (1.0 / lo["L"] - 1.0 / hi["L"])))
     lines.append(f"- Beside it, deciding nothing: the slope of 1/ξ_box against 1/L between the {lo['L']:g}³ and "
                  f"{hi['L']:g}³ boxes, {slope:.5f} ± {slope_se:.5f} a0·t0/m_f, against Hasimoto's "
@@ -233,7 +210,7 @@ def section(study, commit, png):
         x, x_se = (1.0 - b44["phi"]) * b44["u"] / U0, (1.0 - b44["phi"]) * b44["u_se"] / U0
         lines.append(f"- Beside it, deciding nothing: at φ = {b44['phi']:.4f}, one colloid a box (an array) settles "
                      f"at U/U0 = {x:.3f} ± {x_se:.3f} (U0 with the mean R_h); H10's random suspensions at the same φ, "
-                     + ", ".join(f"{k}: {v:.3f} ± {se:.3f}" for k, (v, se) in H10.items()) + ".")
+                     + ", ".join(f"N = {n}: {v:.3f} ± {se:.3f}" for n, (v, se) in H10.items()) + ".")
     revs = ", ".join(sorted({r["rev"] for r in new}))
     return [
         BEGIN.format(name), "",

@@ -20,7 +20,8 @@ import sys
 import numpy as np
 
 from hindered_settling import HASIMOTO, K_BATCHELOR, N_RZ, h5_slip, k_rp
-from rh_resolution import law_path, settling_runs
+from rh_resolution import law_path, settled, settling_runs
+from validation.common import pyplot, save_figure
 from validation.report_section import sections_in, study_section_main
 
 BEGIN = "<!-- hindered matched: {} (tools/hindered_matched.py) -->"  # .format(study name)
@@ -217,9 +218,7 @@ def box_lines(d, rule, v, p, resumed=""):
 def plot_box(ds, path):
     """U/U0 against N^(-1/3) at each phi of ds: the two boxes, the line to N -> infinity, R-Z's band (H7's and H8's
     bound), H6's dilute box term through N = 8."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(7.2, 6.0))
     x = np.array([0.5, 1.0 / 3.0])
     xx = np.linspace(0.0, 0.55, 50)
@@ -242,16 +241,12 @@ def plot_box(ds, path):
     ax.set_title(f"H7–H{6 + len(ds)}: the finite box, coupling I at R = 10 a0 (Hecht's fluid)", fontsize=9)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2)
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(plt, fig, path)
 
 
 def plot(rows, K, rh, path, all_rows=(), nfit=None):
     """Left: y against phi with K (H5); right, with H6's points: U_inf/U0 against 1 - phi, log-log, with n."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     fig, axes = plt.subplots(1, 2 if nfit else 1, figsize=(11.5 if nfit else 6.4, 4.4), squeeze=False)
     ax = axes[0][0]
     phi = np.array([r["phi"] for r in rows])
@@ -296,9 +291,7 @@ def plot(rows, K, rh, path, all_rows=(), nfit=None):
         ax.set_title("Richardson–Zaki's n (H6), log-log", fontsize=9)
         ax.grid(alpha=0.3, which="both")
         ax.legend(fontsize=7, loc="lower right")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(plt, fig, path)
 
 
 def section(study, commit, png):
@@ -311,8 +304,7 @@ def section(study, commit, png):
     rh, rh_se, r8 = r8_radius()
     K, K_se, K_stat, K_rh, chi2 = fit_k(rows, rh, rh_se)
     all_rows = sorted(rows + rz, key=lambda r: r["phi"])
-    bad = lambda rr: [r for r in rr if abs(r["h1"] - r["h2"]) > 3 * math.sqrt(2) * r["hse"] or  # noqa: E731
-                      abs(r["u5"] - r["u"]) > 3 * math.hypot(r["u5_se"], r["u_se"])]
+    bad = lambda rr: [r for r in rr if not settled(r)]  # noqa: E731  H3
     stat_bad = [r for r in all_rows if abs(r["h1"] - r["h2"]) > 3 * math.sqrt(2) * r["hse"]]
     h5_bad = [r for r in all_rows if abs(r["u5"] - r["u"]) > 3 * math.hypot(r["u5_se"], r["u_se"])]
     v = "agrees" if abs(K - K_BATCHELOR) <= 0.15 * K_BATCHELOR + 2 * K_se else "disagrees — peloid"

@@ -14,10 +14,12 @@ import sys
 import numpy as np
 from scipy import stats
 
+from array_mobility import H10
 from hindered_matched import points
 from hindered_settling import HASIMOTO, K_BATCHELOR
 from rh_matched import predicted
-from rh_resolution import law_path
+from rh_resolution import law_path, settled
+from validation.common import pyplot, save_figure
 from validation.report_section import sections_in, study_section_main
 
 BEGIN = "<!-- hindered nlaw: {} (tools/hindered_nlaw.py) -->"  # .format(study name)
@@ -27,18 +29,11 @@ LAW = "rh_resolution_c1_hecht"
 P_MIN = 0.01  # the law holds: chi2 (1 dof) p > 0.01
 # H10 at R = 10 a0 (REPORT.md, stated by H12): c = 0.067 +- 0.052 against the dilute term's 0.625
 H10_RATIO = (0.067 / 0.625, 0.052 / 0.625)
-H10_POINTS = ((8, 0.530, 0.008), (27, 0.541, 0.004))  # U/U0 at phi = 0.0492, R = 10 a0 (N = 8 pooled)
 
 
 def sections(text):
     """The finite-size-law sections in a report's text, each from its begin to its end marker."""
     return sections_in(text, STUDIES, BEGIN, END)
-
-
-def settled(r):
-    """H3: the window's halves, and the h5py reading against the observer, each within 3 combined SE."""
-    return (abs(r["h1"] - r["h2"]) <= 3 * math.sqrt(2) * r["hse"] and
-            abs(r["u5"] - r["u"]) <= 3 * math.hypot(r["u5_se"], r["u_se"]))
 
 
 def line_fit(x, y, s):
@@ -53,9 +48,7 @@ def line_fit(x, y, s):
 
 
 def plot(rows, fit, cd, cd_eta, path):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.8, 4.6))
     x = np.array([r["x"] for r in rows])
     ax.errorbar(x, [r["U"] for r in rows], yerr=[r["U_se"] for r in rows], fmt="o", capsize=3, color="C0",
@@ -65,8 +58,8 @@ def plot(rows, fit, cd, cd_eta, path):
     ax.plot(xx, a - c * xx, "C0-", lw=1, label=f"fit U∞ − c N^(−1/3): c = {c:.3f}, χ² = {chi2:.2f} ({dof} dof)")
     ax.plot(xx, a - cd * xx, "C7--", lw=1, label=f"through U∞ with the dilute box term, c_d = {cd:.3f}")
     ax.plot(xx, a - cd_eta * xx, "C7:", lw=1, label=f"… viscosity-scaled, c_d η0/η = {cd_eta:.3f}")
-    ax.errorbar([n ** (-1.0 / 3.0) for n, _, _ in H10_POINTS], [v for _, v, _ in H10_POINTS],
-                yerr=[se for _, _, se in H10_POINTS], fmt="^", capsize=3, color="C3",
+    ax.errorbar([n ** (-1.0 / 3.0) for n in H10], [v for v, _ in H10.values()],
+                yerr=[se for _, se in H10.values()], fmt="^", capsize=3, color="C3",
                 label="R = 10 a0 (H10, the matched resolution): 8, 27 colloids")
     ax.set_xlim(0.0, 0.55)
     ax.set_xlabel("N^(−1/3)  (the box of N colloids at φ = 0.049)")
@@ -75,9 +68,7 @@ def plot(rows, fit, cd, cd_eta, path):
                  fontsize=9)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7.5, loc="lower left")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(plt, fig, path)
 
 
 def section(study, commit, png):

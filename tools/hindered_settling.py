@@ -19,6 +19,7 @@ import sys
 import numpy as np
 
 from h5md_settling import block_falls
+from validation.common import pyplot, save_figure
 from validation.report_section import sections_in, study_section_main
 
 BEGIN = "<!-- hindered settling: {} (tools/hindered_settling.py) -->"  # .format(study name)
@@ -154,9 +155,7 @@ def verdict(value, se, ref, tol, rh):
 
 
 def plot(rows, K, n, vinf, box, path, what):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     r0 = rows[0]
     phi = np.array([r["phi"] for r in rows])
     U = np.array([r["u"] * (1 - r["phi"]) for r in rows]) / r0["U0"]
@@ -180,9 +179,7 @@ def plot(rows, K, n, vinf, box, path, what):
                  fontsize=9)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7.5, loc="upper right")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(plt, fig, path)
 
 
 def section(study, commit, png):

@@ -17,6 +17,7 @@ import sys
 import numpy as np
 
 from rh_resolution import array_mobility, finish_plot, law_path, matched, point_table, points, settled, write_json
+from validation.common import pyplot
 from validation.report_section import sections_in, study_section_main
 
 BEGIN = "<!-- rh matched: {} (tools/rh_matched.py) -->"  # .format(study name)
@@ -52,9 +53,7 @@ def stokes_ratio(r):
 
 
 def plot(rows, doc, path, title):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     pts = doc["points"]
     ax.errorbar([1.0 / p["R_over_a0"] for p in pts], [p["rh_over_R"] for p in pts],

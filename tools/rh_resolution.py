@@ -26,6 +26,7 @@ import numpy as np
 from scipy import stats
 
 from h5md_settling import block_falls
+from validation.common import pyplot, save_figure
 from validation.report_section import sections_in, study_section_main
 
 BEGIN = "<!-- rh resolution: {} (tools/rh_resolution.py) -->"  # .format(study name)
@@ -121,25 +122,34 @@ def settling_runs(study):
         yield os.path.dirname(sp), s, s["observables"]["settling_velocity"]
 
 
+def run_row(run, s, sv):
+    """One free colloid's settling run (a settling_runs triple): its colloid, box, force and slip velocity u,
+    and R1's and R2's reading of colloids.h5 with h5py alone (16 blocks of the fall from the observer's window
+    start: their mean u5 and its SE, the halves h1, h2 and the SE of each half hse); also
+    tools/array_mobility.py's."""
+    c = s["scene"]["colloids"]
+    R, L, nu = c["radius"], s["scene"]["box"]["cells"][0], s["derived"]["nu"]
+    M = c["mass_density"] * 4.0 / 3.0 * math.pi * R ** 3
+    u = sv["value"]
+    vb, _ = block_falls(run, 16, sv["average_from_time"])
+    return dict(
+        R=R, L=L, eta=s["derived"]["eta"], nu=nu, M=M, F=-M * c["gravity"][2], u=u, u_se=sv["stderr"],
+        Re=u * R / nu, u5=float(vb.mean()), u5_se=float(vb.std(ddof=1) / 4.0), h1=float(vb[:8].mean()),
+        h2=float(vb[8:].mean()), hse=float(vb.std(ddof=1) / math.sqrt(8.0)), kT=_window_kt(run, sv),
+        start=sv["average_from_step"], steps=s["last_step"], cpu=s.get("cpu_seconds", 0.0),
+        rev=s["peloid"]["git_revision"])
+
+
 @functools.lru_cache(maxsize=None)
 def points(study):
     """The study's finished points (read once per study: the section and the law file share them)."""
     rows = []
     for run, s, sv in settling_runs(study):
-        c = s["scene"]["colloids"]
-        R, L, eta = c["radius"], s["scene"]["box"]["cells"][0], s["derived"]["eta"]
-        M = c["mass_density"] * 4.0 / 3.0 * math.pi * R ** 3
-        F = -M * c["gravity"][2]
-        u, u_se = sv["value"], sv["stderr"]
-        vb, _ = block_falls(run, 16, sv["average_from_time"])  # R1, R2: h5py alone
+        r = run_row(run, s, sv)
+        R, L, eta, F, u, u_se = r["R"], r["L"], r["eta"], r["F"], r["u"], r["u_se"]
         rh = lambda v: unbounded(F / v, eta, L) / (6.0 * math.pi * eta * R)  # noqa: E731
-        rows.append(dict(
-            R=R, L=L, eta=eta, nu=s["derived"]["nu"], M=M, F=F, u=u, u_se=u_se, xi_box=F / u,
-            rh=rh(u), rh_se=abs(rh(u + u_se) - rh(u - u_se)) / 2.0, Re=u * R / s["derived"]["nu"],
-            u5=float(vb.mean()), u5_se=float(vb.std(ddof=1) / 4.0), h1=float(vb[:8].mean()),
-            h2=float(vb[8:].mean()), hse=float(vb.std(ddof=1) / math.sqrt(8.0)), kT=_window_kt(run, sv),
-            start=sv["average_from_step"], steps=s["last_step"], cpu=s.get("cpu_seconds", 0.0),
-            rev=s["peloid"]["git_revision"]))
+        r.update(xi_box=F / u, rh=rh(u), rh_se=abs(rh(u + u_se) - rh(u - u_se)) / 2.0)
+        rows.append(r)
     rows.sort(key=lambda r: r["R"])
     return rows
 
@@ -202,9 +212,7 @@ def calibration_rh(info, rows):
 
 
 def plot(rows, fa, fb, need, path, title):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     x = np.array([1.0 / r["R"] for r in rows])
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     ax.errorbar(x, [r["rh"] for r in rows], yerr=[r["rh_se"] for r in rows], fmt="o", capsize=3, color="C0",
@@ -226,7 +234,7 @@ def plot(rows, fa, fb, need, path, title):
 
 def finish_plot(fig, ax, xlim, ylim, title, path):
     """The axes of an R_h/R against a0/R plot (this tool's and tools/rh_matched.py's), saved to path."""
-    import matplotlib.pyplot as plt
+    plt = pyplot()
     ax.set_xlim(*xlim)
     ax.set_ylim(*ylim)
     ax.set_xlabel("a0 / R  (cell size over colloid radius)")
@@ -234,9 +242,7 @@ def finish_plot(fig, ax, xlim, ylim, title, path):
     ax.set_title(title, fontsize=9)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7.5, loc="lower left")
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    save_figure(plt, fig, path)
 
 
 def _fit_text(name, f):
@@ -287,7 +293,8 @@ def matched(r):
 
 
 def settled(r):
-    """R1 (the h5py reading agrees with the observer) and R2 (the window's halves agree), each within 3 SE."""
+    """R1 (the h5py reading agrees with the observer) and R2 (the window's halves agree), each within 3 SE; also
+    H3's test of tools/hindered_matched.py, tools/hindered_nlaw.py and R1/R2 of tools/array_mobility.py."""
     return (abs(r["u5"] - r["u"]) <= 3 * math.hypot(r["u5_se"], r["u_se"]) and
             abs(r["h1"] - r["h2"]) <= 3 * math.sqrt(2) * r["hse"])
 
